@@ -1,0 +1,37 @@
+#pragma once
+// Result CSV files (DESIGN.md section 7): one row per measured configuration, header of column names.
+// Appending is atomic and loses nothing: the existing file is read, the new rows appended (the header
+// becomes the union of old and new columns, in first-seen order; cells of missing columns stay empty),
+// everything is written to "<file>.tmp.<pid>" in the same directory, flushed and fsync'ed, then
+// rename()d over the original. A crash at any point leaves either the old or the new file, never a
+// truncated one. Quoting follows RFC 4180 (fields with , " CR LF are quoted, quotes doubled).
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sb {
+
+/// One row: ordered (column, value) pairs. Order is the column order for a new file.
+using CsvRow = std::vector<std::pair<std::string, std::string>>;
+
+struct CsvTable {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows; ///< each row has header.size() cells
+};
+
+class CsvWriter {
+public:
+    /// Appends rows to `path` (creating it). Throws sb::Error(ExitCode::Failure) naming the path and
+    /// the OS error when the directory is missing or unwritable; the original file is then untouched.
+    static void appendRows(const std::string& path, const std::vector<CsvRow>& rows);
+    /// Checks up front that `path` can be written (directory exists and is writable, file writable if
+    /// present), so a bad --csv fails before minutes of measuring. Throws like appendRows.
+    static void checkWritable(const std::string& path);
+    /// Parses a CSV file written by appendRows (RFC 4180). Throws on a missing file or ragged rows.
+    static CsvTable read(const std::string& path);
+    static CsvTable parse(const std::string& text, const std::string& sourceName);
+    static std::string quote(const std::string& field);
+};
+
+} // namespace sb

@@ -1,0 +1,65 @@
+#pragma once
+// Program cache keyed by (shader files, sorted defines) (DESIGN.md section 4, STYLE.md: named, listable
+// permutations). Shader files are GLSL without a #version line; the cache prepends
+// "#version 450 compatibility", then one "#define NAME VALUE" per define (sorted), then the file with
+// `#include "common/x.glsl"` lines expanded (relative to shaders/). Compile errors throw sb::Error
+// naming the shader file and the line in that file (the #line bookkeeping maps back through includes).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+namespace sb {
+
+/// Sorted NAME -> VALUE list; the key of a permutation. VALUE "" means "#define NAME 1".
+using Defines = std::map<std::string, std::string>;
+/// "PCF_SIZE=3,SB_INSTANCED" style key: sorted, comma separated, VALUE 1 and "" omitted.
+std::string definesKey(const Defines& d);
+
+class Program {
+public:
+    Program(GLuint id, std::string key) : mId(id), mKey(std::move(key)) {}
+    ~Program();
+    Program(const Program&) = delete;
+    Program& operator=(const Program&) = delete;
+    GLuint id() const { return mId; }
+    const std::string& key() const { return mKey; }
+    /// Cached glGetUniformLocation (-1 when the uniform is absent or optimised out).
+    GLint uniform(const char* name) const;
+    void use() const { glUseProgram(mId); }
+
+private:
+    GLuint mId;
+    std::string mKey;
+    mutable std::map<std::string, GLint> mUniforms;
+};
+
+struct ShaderSources {
+    std::string vertex;   ///< path relative to shaders/, e.g. "shadowmap/lighting.vert"
+    std::string fragment; ///< may be "" for depth-only programs
+    std::string geometry; ///< optional
+};
+
+class ProgramCache {
+public:
+    /// `shaderRoot`: directory holding shaders/; "" = Paths::findResource("shaders").
+    explicit ProgramCache(std::string shaderRoot = "");
+    /// Returns the cached program or compiles and links it. The reference stays valid until clear().
+    const Program& get(const ShaderSources& sources, const Defines& defines);
+    size_t size() const { return mPrograms.size(); }
+    /// Number of compile+link operations so far (tests check caching).
+    size_t compileCount() const { return mCompiles; }
+    void clear();
+    /// Full source after #version/#define/#include processing (for tests and --dump-shaders).
+    std::string preprocess(const std::string& file, const Defines& defines, GLenum stage) const;
+
+private:
+    std::string mRoot;
+    std::map<std::string, std::unique_ptr<Program>> mPrograms;
+    size_t mCompiles = 0;
+};
+
+} // namespace sb

@@ -1,0 +1,54 @@
+#pragma once
+// Per-pass GPU timing from a ring of GL_TIMESTAMP queries read back frames later, never stalling
+// (DESIGN.md section 6). Each frame: beginFrame(), then mark(passName) at each pass boundary, then
+// endFrame(). Results of frame f become available from frame f + latency on; a frame whose queries
+// are not yet available when its slot is reused is counted as dropped rather than waited for.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+namespace sb {
+
+struct PassGpuTimes {
+    uint64_t frame = 0;
+    std::vector<std::pair<std::string, double>> passMs; ///< in pass order
+    double totalMs = 0.0;                               ///< first mark to endFrame
+};
+
+class TimerQueryRing {
+public:
+    explicit TimerQueryRing(int depth = 4, int maxPassesPerFrame = 16);
+    ~TimerQueryRing();
+    TimerQueryRing(const TimerQueryRing&) = delete;
+    TimerQueryRing& operator=(const TimerQueryRing&) = delete;
+
+    void beginFrame();
+    /// Starts pass `name` (ends the previous one). Names must stay valid (string literals / stable).
+    void beginPass(const char* name);
+    void endFrame();
+    /// Collects every completed frame without waiting (GL_QUERY_RESULT_AVAILABLE), oldest first.
+    std::vector<PassGpuTimes> collect();
+    /// Waits for all outstanding frames (only at the end of a run, outside timed frames).
+    std::vector<PassGpuTimes> drain();
+    uint64_t droppedFrames() const { return mDropped; }
+
+private:
+    struct Slot {
+        uint64_t frame = 0;
+        bool pending = false;
+        std::vector<GLuint> queries; ///< maxPasses + 1 timestamps
+        std::vector<const char*> names;
+        int used = 0;
+    };
+    std::optional<PassGpuTimes> read(Slot& s, bool wait);
+    std::vector<Slot> mSlots;
+    int mCurrent = -1;
+    uint64_t mFrame = 0;
+    uint64_t mDropped = 0;
+    int mMaxPasses;
+};
+
+} // namespace sb

@@ -1,0 +1,46 @@
+#pragma once
+// Indexed triangle mesh in object space: the one geometry format every technique and submitter reads.
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace sb {
+
+struct Aabb {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+    void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+    bool empty() const { return min.x > max.x; }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    glm::vec3 extent() const { return max - min; }
+};
+
+/// A named part of a mesh (a contiguous index range), e.g. the teapot's lid, spout, handle, body or
+/// the aircraft's tail fins. Later techniques (occluder planes, proxies) refer to parts by name.
+struct MeshPart {
+    std::string name;
+    uint32_t firstIndex = 0; ///< into Mesh::indices
+    uint32_t indexCount = 0;
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals; ///< per vertex, unit length, same count as positions
+    std::vector<uint32_t> indices;  ///< triangle list, counter-clockwise front faces
+    std::vector<MeshPart> parts;    ///< optional; empty means one part covering everything
+
+    size_t vertexCount() const { return positions.size(); }
+    size_t triangleCount() const { return indices.size() / 3; }
+    Aabb computeBounds() const {
+        Aabb b;
+        for (const auto& p : positions) b.extend(p);
+        return b;
+    }
+};
+
+} // namespace sb

@@ -1,0 +1,96 @@
+#pragma once
+// The scene model (DESIGN.md section 8): meshes, instances, lights, named cameras and the effects the
+// scene asks for. Built by SceneLoader from a JSON file; techniques only read it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/Mesh.h"
+
+namespace sb {
+
+/// Effects a scene can ask for and a technique can produce (DESIGN.md section 4). Bit flags.
+enum class Effect : uint32_t {
+    None = 0,
+    HardShadows = 1u << 0,
+    SoftShadows = 1u << 1,
+    SelfShadowing = 1u << 2,
+    ColourBleeding = 1u << 3,
+    NonPlanarReceivers = 1u << 4,
+    MultipleLights = 1u << 5,
+};
+using EffectMask = uint32_t;
+constexpr EffectMask operator|(Effect a, Effect b) { return uint32_t(a) | uint32_t(b); }
+constexpr EffectMask operator|(EffectMask a, Effect b) { return a | uint32_t(b); }
+constexpr bool hasEffect(EffectMask m, Effect e) { return (m & uint32_t(e)) != 0; }
+/// "hard_shadows", "soft_shadows", "self_shadowing", "colour_bleeding", "non_planar_receivers",
+/// "multiple_lights": the names used in scene files, --list and CSV.
+const char* effectName(Effect e);
+std::optional<Effect> parseEffect(const std::string& name);
+std::string effectMaskToString(EffectMask m); ///< "hard_shadows+self_shadowing"
+constexpr Effect kAllEffects[] = {Effect::HardShadows,   Effect::SoftShadows,        Effect::SelfShadowing,
+                                  Effect::ColourBleeding, Effect::NonPlanarReceivers, Effect::MultipleLights};
+
+struct Instance {
+    uint32_t mesh = 0;          ///< index into Scene::meshes
+    glm::vec3 position{0.0f};
+    glm::vec3 rotationDeg{0.0f}; ///< Euler XYZ, applied Z then Y then X (R = Rx * Ry * Rz)
+    float scale = 1.0f;          ///< uniform only: normals transform with mat3(model) / scale
+    glm::vec3 color{0.8f};
+    bool castsShadow = true;
+    bool receivesShadow = true;
+    bool fromLayout = false;     ///< placed by the random layout (these are what --scale scales)
+    glm::mat4 model{1.0f};       ///< derived from the above by Scene::updateTransforms()
+    uint32_t objectId = 0;       ///< 1-based, unique, written into the G-buffer (0 = background)
+};
+
+enum class LightType { Directional, Point, Spot };
+const char* lightTypeName(LightType t);
+std::optional<LightType> parseLightType(const std::string& name);
+
+struct Light {
+    LightType type = LightType::Directional;
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; ///< unit, from the light into the scene (directional, spot)
+    glm::vec3 position{0.0f, 10.0f, 0.0f};  ///< point, spot
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;          ///< point/spot: distance of zero contribution; 0 = unlimited
+    float spotOuterDeg = 30.0f;  ///< half-angle of the spot cone
+    float spotInnerDeg = 25.0f;  ///< half-angle of full intensity
+};
+
+struct CameraPreset {
+    std::string name;
+    glm::vec3 eye{0.0f, 5.0f, 10.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDeg = 45.0f;
+    float nearZ = 0.1f;
+    float farZ = 1000.0f;
+};
+
+struct Scene {
+    std::string name;       ///< "aircraft", or the file stem
+    std::string sourcePath; ///< the JSON file it came from ("" for purely built-in)
+    std::vector<Mesh> meshes;
+    std::vector<Instance> instances;
+    std::vector<Light> lights;
+    std::vector<CameraPreset> cameras;
+    EffectMask effects = uint32_t(Effect::HardShadows);
+    glm::vec3 ambient{0.15f};
+
+    /// Recomputes Instance::model and objectId from position/rotation/scale.
+    void updateTransforms();
+    /// World-space bounds of all instances (or only casters).
+    Aabb computeBounds(bool castersOnly = false) const;
+    const CameraPreset* findCamera(const std::string& name) const;
+    /// Hash over everything that changes an image (geometry, instances, lights, cameras), hex string.
+    /// Recorded in every CSV row so two rows can be trusted to describe the same content.
+    std::string computeContentHash() const;
+    size_t totalTriangles() const; ///< over all instances
+};
+
+} // namespace sb

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The one place that installs the Debian 12 packages shadowbench needs (build, run, test, plot).
+# Idempotent: packages already present are skipped, so it costs ~1 s on a provisioned machine.
+# Needs root (apt-get). Usage: bash scripts/install-deps.sh
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git
+  # GL platform: EGL + Mesa llvmpipe, OSMesa fallback, GLFW window, libepoxy loader
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libglfw3-dev libepoxy-dev
+  # maths, JSON, CLI, images, model files, ray tracing reference
+  libglm-dev nlohmann-json3-dev libcli11-dev libopenimageio-dev libassimp-dev libembree-dev
+  # tests
+  googletest libgtest-dev libgmock-dev xvfb xauth
+  # plotting (tools/plot.py runs with /usr/bin/python3)
+  python3-matplotlib python3-pandas
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  SUDO=sudo
+  command -v sudo >/dev/null || { echo "install-deps: need root to install: ${missing[*]}" >&2; exit 1; }
+else
+  SUDO=
+fi
+echo "install-deps: installing ${#missing[@]} packages: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"
