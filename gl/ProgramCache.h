@@ -26,6 +26,7 @@ public:
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;
     GLuint id() const { return mId; }
+    /// The permutation key (definesKey of the defines it was built with), logged in CSV rows.
     const std::string& key() const { return mKey; }
     /// Cached glGetUniformLocation (-1 when the uniform is absent or optimised out).
     GLint uniform(const char* name) const;
@@ -45,7 +46,8 @@ struct ShaderSources {
 
 class ProgramCache {
 public:
-    /// `shaderRoot`: directory holding shaders/; "" = Paths::findResource("shaders").
+    /// `shaderRoot`: the shaders/ directory itself (paths in ShaderSources are relative to it);
+    /// "" = the first "shaders" directory in Paths::searchRoots(), throwing sb::Error when there is none.
     explicit ProgramCache(std::string shaderRoot = "");
     /// Returns the cached program or compiles and links it. The reference stays valid until clear().
     const Program& get(const ShaderSources& sources, const Defines& defines);
@@ -53,7 +55,8 @@ public:
     /// Number of compile+link operations so far (tests check caching).
     size_t compileCount() const { return mCompiles; }
     void clear();
-    /// Full source after #version/#define/#include processing (for tests and --dump-shaders).
+    /// Full source after #version/#define/#include processing (for tests and --dump-shaders). `stage`
+    /// adds "#define SB_VERTEX_SHADER 1" (SB_FRAGMENT_SHADER, SB_GEOMETRY_SHADER) after the defines.
     std::string preprocess(const std::string& file, const Defines& defines, GLenum stage) const;
 
 private:

@@ -49,6 +49,9 @@ private:
     uint64_t mFrame = 0;
     uint64_t mDropped = 0;
     int mMaxPasses;
+    /// Added to the interface sketch: frames read in beginFrame() when their slot came round again while
+    /// complete; handed out by the next collect()/drain() so no completed frame is lost.
+    std::vector<PassGpuTimes> mReady;
 };
 
 } // namespace sb

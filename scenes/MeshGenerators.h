@@ -3,7 +3,8 @@
 // the vertex-load knob of the bottleneck studies (doubling it roughly quadruples the triangles of the
 // curved parts). All are closed, consistently wound (counter-clockwise outward) meshes with smooth or
 // faceted normals as noted, except the ground plane (a single-sided grid) and the teapot (the original
-// patches leave the bottom and the lid/body seam open, as every Utah teapot does).
+// patches leave the lid/body seam and the handle/spout joints open, as every Utah teapot does).
+// Tessellation below a generator's minimum (or above 4096) throws sb::Error.
 #include <string>
 
 #include "scenes/Mesh.h"
@@ -15,16 +16,23 @@ struct MeshGenerators {
     static Mesh sphere(int tess);
     /// Axis-aligned box with half extents `halfExtent`, each face split tess x tess, faceted normals.
     static Mesh box(glm::vec3 halfExtent, int tess);
-    /// Closed cylinder along +Y, radius 1, height 2 (y in [-1,1]), 2*tess segments, capped.
+    /// Closed cylinder along +Y, radius 1, height 2 (y in [-1,1]), 2*tess segments, tess rows, capped
+    /// by triangle fans. tess >= 2.
     static Mesh cylinder(int tess);
     /// Ground plane at y = 0 facing +Y, size x size, split tess x tess.
     static Mesh plane(float size, int tess);
     /// The F-35-role aircraft (thesis Figures 3-5, 13): fuselage along +X (nose at +X), planar wings and
     /// horizontal stabilisers in the y = 0 plane, two canted tail fins. Length ~ 2 units.
-    /// Parts: "fuselage", "wings", "stabilisers", "fin_left", "fin_right".
+    /// Parts: "fuselage", "wings", "stabilisers", "fin_left", "fin_right" (left = -Z: facing +X with +Y
+    /// up, +Z is the pilot's right). Fuselage: 2*tess rings x 2*tess segments; the flat parts are
+    /// closed slabs 0.02 x wingspan thick, subdivided max(1, tess/4). tess >= 2. 2624 triangles at 16.
     static Mesh aircraft(int tess);
     /// Utah teapot from the Bezier patch file (teapot.bpt format), each patch tessellated into
-    /// tess x tess quads. Parts: "rim", "body", "lid", "handle", "spout" (patch groups of the data).
+    /// tess x tess quads, converted from the data's Z-up to Y-up, standing on y = 0 (height 3.15).
+    /// Patch p owns the (tess+1)^2 consecutive vertices from p*(tess+1)^2 (row-major), nothing welded.
+    /// Parts, in the data's patch order of the standard 32-patch file: "rim" (0-3), "body" (4-11),
+    /// "handle" (12-15), "spout" (16-19), "lid" (20-27), "bottom" (28-31); another patch count gives
+    /// one part "patches".
     static Mesh teapot(const std::string& bptPath, int tess);
 };
 

@@ -15,6 +15,27 @@
 //   "effects": ["hard_shadows", "self_shadowing"],
 //   "ambient": [0.15, 0.15, 0.15]
 // }
+// Details:
+// - "description": free text, ignored. Files may contain // comments.
+// - meshes: exactly one of "generator" or "file". Generator parameters (each generator accepts only
+//   its own): sphere "radius" (1), box "half_extent" ([1,1,1]), cylinder "radius" (1), "height" (2),
+//   plane "size" (100); "tessellation" defaults: sphere/cylinder/aircraft/plane 16, teapot 8, box 1.
+//   SceneOptions::tessellation replaces it for every generator but the plane (the ground receiver).
+// - instances: "mesh" (required), "position", "rotation" (Euler degrees), "scale", "color",
+//   "casts_shadow", "receives_shadow". Explicit instances come first, then the layout's.
+// - layout: "mesh", "count" (<= 1000000), "region" required; "seed" (1), "scale" (1), "yaw_only"
+//   (true), "max_tilt" (degrees of pitch/roll when yaw_only is false, 10), "color", "casts_shadow",
+//   "receives_shadow". SplitMix64-seeded, identical on every platform.
+// - lights: "type", "direction", "position", "color", "intensity", "range", "spot_outer_deg",
+//   "spot_inner_deg". Without "lights", one default directional light.
+// - cameras: "name" (required, unique), "eye", "target", "up", "fov", "near", "far"; or "follow":
+//   "first_instance" with "offset" (in units of that instance's scale, so --scale keeps the framing):
+//   eye = first layout instance + offset * scale, target = that instance. An up parallel to the view
+//   direction (looking straight down) is replaced by -Z.
+// SceneOptions: --instances/--model need a layout (error otherwise); --light moves a directional
+// light to centre - direction * 2 * radius of the casters' bounds, a spot's cone then encloses them.
+// Memory estimate (limit SceneOptions::memoryLimitBytes): mesh vertex (24 B) + index bytes, plus per
+// instance its triangles * 3 * 24 B (immediate / display-list copies) + 128 B.
 // Every error throws sb::Error naming the file, the JSON path ("/meshes/2/generator") and what was
 // expected, e.g. `scenes/data/x.json: /layout/count: expected a positive integer, got "ten"`.
 #include <string>

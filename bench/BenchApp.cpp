@@ -1,0 +1,216 @@
+#include "bench/BenchApp.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "bench/ConsoleReport.h"
+#include "bench/CsvWriter.h"
+#include "bench/Environment.h"
+#include "bench/Harness.h"
+#include "bench/ImageWriter.h"
+#include "bench/ResultRow.h"
+#include "bench/SamplesFile.h"
+#include "bench/Viewer.h"
+#include "scenes/Error.h"
+#include "scenes/SceneLoader.h"
+#include "techniques/TechniqueRegistry.h"
+
+namespace sb {
+
+namespace {
+const char* kFooter = R"(Examples:
+  bench                                            shadowmap, aircraft x200, 1024x1024 (the default run)
+  bench -t none -t shadowmap --instances 200       baseline and technique side by side
+  bench -t shadowmap:resolution=4096:pcf=3         properties inline (see --list for every knob)
+  bench --submit immediate --frames 20             the CPU-bound submission path of the thesis
+  bench --scene teapot --camera near --scale 10    fill-bound variant
+  bench --csv results.csv --samples frames.csv     append a row per technique, keep per-frame samples
+  bench --screenshot out.png --visibility vis.png  images of the last frame
+  bench --model path/to/model.obj                  your own caster through assimp
+  bench --window                                   on-screen viewer (GLFW): drag to orbit, Tab switches
+
+Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 bad input, 3 unsupported on this GL context.)";
+
+std::string withSuffix(const std::string& path, const std::string& suffix) {
+    std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + "_" + suffix + p.extension().string())).string();
+}
+
+std::vector<std::unique_ptr<Technique>> createTechniques(const RunConfig& config) {
+    std::vector<std::unique_ptr<Technique>> out;
+    for (const TechniqueSpec& spec : config.techniques) out.push_back(TechniqueRegistry::create(spec));
+    return out;
+}
+
+void writeImages(const RunConfig& config, Harness& harness, const std::string& technique) {
+    bool several = config.techniques.size() > 1;
+    if (!config.screenshotPath.empty())
+        ImageWriter::writeColor(harness.targets(),
+                                several ? withSuffix(config.screenshotPath, technique) : config.screenshotPath);
+    if (!config.visibilityPath.empty()) {
+        std::string base = several ? withSuffix(config.visibilityPath, technique) : config.visibilityPath;
+        size_t lights = std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
+        for (size_t i = 0; i < lights; ++i)
+            ImageWriter::writeVisibility(harness.targets(), int(i),
+                                         i == 0 ? base : withSuffix(base, "light" + std::to_string(i)));
+    }
+}
+} // namespace
+
+std::pair<int, int> BenchApp::parseSize(const std::string& text) {
+    size_t x = text.find_first_of("xX");
+    auto bad = [&] { return Error("--size " + text + ": expected WIDTHxHEIGHT with each in [16, 16384], e.g. 1024x1024"); };
+    if (x == std::string::npos) throw bad();
+    try {
+        size_t a = 0, b = 0;
+        int w = std::stoi(text.substr(0, x), &a);
+        int h = std::stoi(text.substr(x + 1), &b);
+        if (a != x || b != text.size() - x - 1 || w < 16 || h < 16 || w > 16384 || h > 16384) throw bad();
+        return {w, h};
+    } catch (const std::logic_error&) {
+        throw bad();
+    }
+}
+
+int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
+    CLI::App app{"shadowbench: measure real-time shadow techniques on the same scenes", "bench"};
+    app.footer(kFooter);
+    app.get_formatter()->column_width(34);
+    std::vector<std::string> techniques;
+    std::string size = "1024x1024", submit = "retained", backend = "auto", light;
+    int instances = -1, tess = -1;
+    int64_t seed = -1;
+    double maxMemoryGiB = double(c.sceneOptions.memoryLimitBytes) / double(1ull << 30);
+    bool window = false, noTimerCheck = false;
+    app.add_flag("--list", listOnly, "list techniques (effects, passes, properties) and scenes, then exit");
+    app.add_option("-t,--technique", techniques,
+                   "technique[:prop=value...], repeatable (default shadowmap); see --list");
+    app.add_option("--scene", c.scene, "built-in scene name or scene JSON file")->capture_default_str();
+    app.add_option("--model", c.sceneOptions.modelPath, "model file (obj, gltf, 3ds ...) replacing the layout mesh");
+    app.add_option("-n,--instances", instances, "number of layout instances (scene default: 200 for aircraft)");
+    app.add_option("--scale", c.sceneOptions.scale, "scale of every layout instance (10: fill-bound, 0.01: vertex-bound)")
+        ->capture_default_str();
+    app.add_option("--seed", seed, "layout seed (same seed, same scene)");
+    app.add_option("--tess", tess, "tessellation of every generated mesh (vertex load)");
+    app.add_option("--light", light, "replace every light's type: directional, point, spot");
+    app.add_option("--camera", c.camera, "camera preset: far, mid, near, top")->capture_default_str();
+    app.add_option("--size", size, "render target WIDTHxHEIGHT")->capture_default_str();
+    app.add_option("--submit", submit, "submission: immediate, displaylist, retained, instanced")->capture_default_str();
+    app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
+    app.add_option("--seconds", c.seconds, "measure for this many seconds instead of --frames");
+    app.add_option("--warmup", c.warmup, "discarded warm-up frames")->capture_default_str();
+    app.add_option("--backend", backend, "auto, egl-surfaceless, egl-device, osmesa, glfw")->capture_default_str();
+    app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
+    app.add_flag("--window", window, "on-screen viewer (GLFW) instead of a measurement");
+    app.add_option("--csv", c.csvPath, "append one row per technique to this CSV file (atomic)");
+    app.add_option("--samples", c.samplesPath, "write per-frame samples to this CSV file");
+    app.add_option("--screenshot", c.screenshotPath, "write the last frame's colour image (PNG)");
+    app.add_option("--visibility", c.visibilityPath, "write the last frame's visibility target (PNG)");
+    app.add_flag("--no-timer-check", noTimerCheck, "skip the GPU-timer trust calibration (verdict: unchecked)");
+    app.add_option("--max-memory-gib", maxMemoryGiB, "refuse scenes estimated above this memory")->capture_default_str();
+    app.add_flag("-q,--quiet", c.quiet, "print only the table");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        throw Error(std::string(e.what()) + " (see bench --help)");
+    }
+    if (listOnly) return -1;
+    if (!techniques.empty()) {
+        c.techniques.clear();
+        for (const std::string& t : techniques) c.techniques.push_back(TechniqueSpec::parse(t));
+    }
+    std::tie(c.width, c.height) = parseSize(size);
+    auto mode = parseSubmitMode(submit);
+    if (!mode) throw Error("--submit " + submit + ": expected immediate, displaylist, retained or instanced");
+    c.submit = *mode;
+    c.context.backend = window ? Backend::Glfw : parseBackend(backend);
+    c.context.visibleWindow = window;
+    c.context.width = c.width;
+    c.context.height = c.height;
+    if (instances != -1) {
+        if (instances < 1) throw Error("--instances " + std::to_string(instances) + ": must be at least 1");
+        c.sceneOptions.instances = uint32_t(instances);
+    }
+    if (tess != -1) {
+        if (tess < 1 || tess > 1024) throw Error("--tess " + std::to_string(tess) + ": expected 1..1024");
+        c.sceneOptions.tessellation = tess;
+    }
+    if (seed != -1) {
+        if (seed < 0 || seed > 0xffffffffll) throw Error("--seed: expected 0..4294967295");
+        c.sceneOptions.seed = uint32_t(seed);
+    }
+    if (!light.empty()) {
+        auto t = parseLightType(light);
+        if (!t) throw Error("--light " + light + ": expected directional, point or spot");
+        c.sceneOptions.lightType = *t;
+    }
+    if (!(std::isfinite(c.sceneOptions.scale) && c.sceneOptions.scale > 0.0f && c.sceneOptions.scale <= 1e6f))
+        throw Error("--scale: expected a finite number in (0, 1e6]");
+    if (c.frames < 1) throw Error("--frames " + std::to_string(c.frames) + ": must be at least 1");
+    if (c.warmup < 0) throw Error("--warmup: must be 0 or more");
+    if (!(c.seconds >= 0.0 && c.seconds <= 86400.0)) throw Error("--seconds: expected 0..86400");
+    if (!(maxMemoryGiB > 0.0)) throw Error("--max-memory-gib: must be positive");
+    c.sceneOptions.memoryLimitBytes = uint64_t(maxMemoryGiB * double(1ull << 30));
+    c.checkTimer = !noTimerCheck;
+    return -1;
+}
+
+int BenchApp::run(const RunConfig& config) {
+    // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
+    auto techniques = createTechniques(config);
+    if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
+    if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
+
+    Harness harness(config);
+    if (config.context.backend == Backend::Glfw && config.context.visibleWindow)
+        return Viewer::run(harness, techniques);
+    if (!config.quiet) ConsoleReport::printHeader(std::cout, harness);
+    if (config.checkTimer) harness.calibrateTimer();
+    if (!config.quiet) ConsoleReport::printTimerVerdict(std::cout, harness.timerVerdict());
+
+    Environment env = Environment::capture();
+    std::vector<RunResult> results;
+    for (auto& technique : techniques) {
+        if (!config.quiet) std::cout << "measuring " << technique->name() << " ..." << std::flush;
+        RunResult r = harness.measure(*technique);
+        if (!config.quiet) std::cout << " " << r.wall.n << " frames, median " << r.wall.median << " ms\n";
+        env.timestamp = Environment::nowIso8601();
+        if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {ResultRow::build(harness, r, env)});
+        if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, r);
+        writeImages(config, harness, technique->name());
+        results.push_back(std::move(r));
+    }
+    ConsoleReport::printTable(std::cout, harness, results);
+    if (!config.csvPath.empty() && !config.quiet) std::cout << "rows appended to " << config.csvPath << "\n";
+    return 0;
+}
+
+int BenchApp::main(int argc, char** argv) {
+    try {
+        RunConfig config;
+        bool listOnly = false;
+        int code = parse(argc, argv, config, listOnly);
+        if (code >= 0) return code;
+        if (listOnly) {
+            ConsoleReport::printTechniqueList(std::cout);
+            return 0;
+        }
+        return run(config);
+    } catch (const Error& e) {
+        std::cerr << "bench: error: " << e.what() << "\n";
+        return int(e.code());
+    } catch (const std::exception& e) {
+        std::cerr << "bench: error: " << e.what() << "\n";
+        return int(ExitCode::Failure);
+    }
+}
+
+} // namespace sb

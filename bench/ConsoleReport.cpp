@@ -1,0 +1,89 @@
+#include "bench/ConsoleReport.h"
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include "scenes/SceneLoader.h"
+#include "techniques/TechniqueRegistry.h"
+
+namespace sb {
+
+namespace {
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+std::string pad(std::string s, size_t w) {
+    if (s.size() < w) s.append(w - s.size(), ' ');
+    return s;
+}
+
+std::string effectsText(EffectMask m) { return m ? effectMaskToString(m) : "(no shadows)"; }
+} // namespace
+
+void ConsoleReport::printHeader(std::ostream& os, const Harness& h) {
+    const Context& c = h.context();
+    const RunConfig& cfg = h.config();
+    size_t layout = 0;
+    for (const Instance& i : h.scene().instances) layout += i.fromLayout ? 1 : 0;
+    os << "backend   " << backendName(c.backend()) << (c.deviceName.empty() ? "" : " (" + c.deviceName + ")") << "\n"
+       << "renderer  " << c.renderer << "\n"
+       << "GL        " << c.version << "\n"
+       << "scene     " << h.scene().name << ": " << layout << " instances, scale " << cfg.sceneOptions.scale << ", "
+       << h.scene().totalTriangles() << " triangles, camera " << cfg.camera << ", " << cfg.width << "x" << cfg.height
+       << ", submit " << submitModeName(cfg.submit) << "\n"
+       << "frames    " << (cfg.seconds > 0 ? fmt("%.1f s", cfg.seconds) : std::to_string(cfg.frames)) << " after "
+       << cfg.warmup << " warm-up\n";
+}
+
+void ConsoleReport::printTimerVerdict(std::ostream& os, const TimerVerdict& v) {
+    os << "GPU timer " << v.label();
+    if (!v.reason.empty()) os << ": " << v.reason;
+    if (v.checked && !v.trusted) os << "\n          -> GPU times are not reported; use wall and CPU-submit times";
+    os << "\n";
+}
+
+void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::vector<RunResult>& results) {
+    const RunResult* base = nullptr;
+    for (const RunResult& r : results)
+        if (r.technique == "none") base = &r;
+    bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
+    os << "\n"
+       << pad("technique", 12) << pad("wall median", 13) << pad("p5", 9) << pad("p95", 9) << pad("MAD", 8)
+       << pad("cpu submit", 12) << (gpu ? pad("gpu", 10) : "") << pad("n", 5) << pad("vs none", 9) << "properties\n";
+    for (const RunResult& r : results) {
+        os << pad(r.technique, 12) << pad(fmt("%.2f ms", r.wall.median), 13) << pad(fmt("%.2f", r.wall.p5), 9)
+           << pad(fmt("%.2f", r.wall.p95), 9) << pad(fmt("%.2f", r.wall.mad), 8)
+           << pad(fmt("%.2f ms", r.cpuSubmit.median), 12)
+           << (gpu ? pad(r.gpuTotal.n ? fmt("%.2f ms", r.gpuTotal.median) : "n/a", 10) : "")
+           << pad(std::to_string(r.wall.n), 5)
+           << pad(base && base->wall.median > 0 ? fmt("%.2fx", r.wall.median / base->wall.median) : "-", 9)
+           << (r.properties.empty() ? "-" : r.properties) << "\n";
+    }
+}
+
+void ConsoleReport::printTechniqueList(std::ostream& os) {
+    for (const auto& entry : TechniqueRegistry::entries()) {
+        auto t = entry.create();
+        const TechniqueInfo& info = t->info();
+        os << info.name << "  " << info.description << "\n";
+        os << "  effects:  " << effectsText(info.effects) << "\n";
+        std::string passes;
+        for (const std::string& p : info.passes) passes += (passes.empty() ? "" : ", ") + p;
+        os << "  passes:   " << passes << "\n";
+        if (info.properties.empty()) os << "  properties: none\n";
+        for (const PropertyDesc& p : info.properties)
+            os << "  " << pad(p.name, 18) << pad(propertyTypeName(p.type), 7) << pad("default " + p.defaultValue, 16)
+               << pad(p.rangeText(), 16) << p.description << "\n";
+        os << "\n";
+    }
+    os << "scenes: ";
+    std::string scenes;
+    for (const std::string& s : SceneLoader::listBuiltinScenes()) scenes += (scenes.empty() ? "" : ", ") + s;
+    os << scenes << "\n";
+}
+
+} // namespace sb

@@ -1,0 +1,22 @@
+#pragma once
+// The readable console output: a header saying what runs where (backend, renderer, GL version, scene,
+// timer verdict with its evidence), then one table row per technique. GPU columns appear only when the
+// timer is trusted.
+#include <iosfwd>
+#include <vector>
+
+#include "bench/Harness.h"
+
+namespace sb {
+
+class ConsoleReport {
+public:
+    static void printHeader(std::ostream& os, const Harness& harness);
+    static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
+    /// The table; ratios are taken against the `none` row when there is one (the overhead baseline).
+    static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results);
+    /// `bench --list`: techniques with effects, passes, properties (name, type, default, range).
+    static void printTechniqueList(std::ostream& os);
+};
+
+} // namespace sb

@@ -1,0 +1,17 @@
+#pragma once
+// Facts about the machine and build recorded in every CSV row (DESIGN.md section 7).
+#include <string>
+
+namespace sb {
+
+struct Environment {
+    std::string timestamp; ///< ISO 8601 UTC, when the row was measured
+    std::string gitCommit; ///< `git describe --always --dirty` of the source tree, or "unknown"
+    std::string cpuModel;  ///< /proc/cpuinfo "model name"
+    int hardwareThreads = 0;
+    std::string lpNumThreads; ///< LP_NUM_THREADS if set (llvmpipe rasteriser threads), else ""
+    static Environment capture();
+    static std::string nowIso8601();
+};
+
+} // namespace sb

@@ -1,0 +1,18 @@
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sb {
+
+/// One measured frame (DESIGN.md section 6). CPU submit: first to last GL call of the frame (on
+/// llvmpipe this includes vertex shading and binning, which run inside the draw calls). Wall: submit
+/// plus the glFinish wait (rasterisation and fragment shading on llvmpipe's threads).
+struct FrameSample {
+    double cpuSubmitMs = 0.0;
+    double wallMs = 0.0;
+    std::vector<std::pair<std::string, double>> gpuPassMs; ///< raw timer-query values, pass order
+    double gpuTotalMs = -1.0;                              ///< -1: not (yet) available
+};
+
+} // namespace sb

@@ -1,0 +1,95 @@
+#pragma once
+// The run loop (DESIGN.md sections 3 and 6): one GL context, one scene, one set of frame targets and
+// one submitter, shared by every technique of a run so that they are measured on identical state.
+//
+// Per frame, in this order:
+//   t0  upload the frame uniforms, begin the timer-query frame, bind and clear the targets
+//       technique.execute() (its passes call PassTimer::begin)
+//   t1  end of the last GL call: CPU submit = t1 - t0
+//       glFinish()
+//   t2  wall = t2 - t0
+// GPU pass times are read back from the query ring frames later and never stall the loop. Warm-up
+// frames run the same path and are discarded.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench/FrameSample.h"
+#include "bench/RunConfig.h"
+#include "bench/Statistics.h"
+#include "bench/TimerTrust.h"
+#include "gl/Context.h"
+#include "gl/FrameTargets.h"
+#include "gl/ProgramCache.h"
+#include "gl/TimerQueryRing.h"
+#include "scenes/Scene.h"
+#include "techniques/FrameUniforms.h"
+#include "techniques/PassTimer.h"
+#include "techniques/Submitter.h"
+#include "techniques/Technique.h"
+
+namespace sb {
+
+struct RunResult {
+    std::string technique;
+    std::string properties;  ///< canonical PropertySet::toString()
+    std::string permutation; ///< program keys
+    Counters counters;       ///< of the last measured frame
+    std::vector<FrameSample> samples;
+    Statistics cpuSubmit, wall;
+    std::vector<std::pair<std::string, Statistics>> gpuPass; ///< per declared pass (raw timer values)
+    Statistics gpuTotal;
+    uint64_t gpuFramesMissing = 0; ///< measured frames whose queries never came back
+    double setupMs = 0.0;          ///< setScene + compile (untimed for the frames)
+};
+
+class Harness {
+public:
+    /// Creates the context, loads the scene, allocates targets and uploads geometry. Throws sb::Error.
+    explicit Harness(const RunConfig& config);
+    ~Harness();
+
+    const RunConfig& config() const { return mConfig; }
+    Context& context() { return *mContext; }
+    const Context& context() const { return *mContext; }
+    const Scene& scene() const { return mScene; }
+    FrameTargets& targets() { return *mTargets; }
+    Submitter& submitter() { return *mSubmitter; }
+    ProgramCache& programs() { return mPrograms; }
+    const CameraPreset& camera() const { return mCamera; }
+    const TimerVerdict& timerVerdict() const { return mVerdict; }
+    double sceneLoadMs() const { return mSceneLoadMs; }
+
+    /// Checks capabilities (throws ExitCode::Unsupported naming the missing one), then setScene and
+    /// compile.
+    void prepare(Technique& technique);
+    /// One frame, timed. Returns the CPU/wall sample; GPU times arrive later through the ring.
+    FrameSample renderFrame(Technique& technique);
+    /// Warm-up, then the measured frames (config frames or seconds), statistics.
+    RunResult measure(Technique& technique);
+    /// Moves the camera (the viewer's orbit); measurements use the configured preset.
+    void setCamera(const CameraPreset& camera);
+    /// Runs the timer-trust calibration (once; the verdict is cached).
+    const TimerVerdict& calibrateTimer();
+
+private:
+    void setFrameState();
+    RunResult summarize(Technique& technique, std::vector<FrameSample> samples, uint64_t firstFrame);
+    RunConfig mConfig;
+    std::unique_ptr<Context> mContext;
+    Scene mScene;
+    CameraPreset mCamera;
+    glm::mat4 mView{1.0f}, mProj{1.0f};
+    std::unique_ptr<FrameTargets> mTargets;
+    std::unique_ptr<Submitter> mSubmitter;
+    std::unique_ptr<FrameUniforms> mFrameUniforms;
+    FrameUniformData mFrameData{};
+    std::unique_ptr<TimerQueryRing> mRing;
+    std::unique_ptr<PassTimer> mPassTimer;
+    ProgramCache mPrograms;
+    TimerVerdict mVerdict;
+    uint64_t mFrameIndex = 0;
+    double mSceneLoadMs = 0.0;
+};
+
+} // namespace sb

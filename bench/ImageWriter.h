@@ -1,0 +1,19 @@
+#pragma once
+// PNG output through OpenImageIO: --screenshot (colour) and --visibility (the visibility target).
+#include <string>
+
+#include "gl/FrameTargets.h"
+
+namespace sb {
+
+class ImageWriter {
+public:
+    /// Colour attachment as 8-bit RGB, top row first. Throws sb::Error naming the path on failure.
+    static void writeColor(const FrameTargets& targets, const std::string& path);
+    /// Visibility of light `light` as 8-bit grey (1 lit = white, 0 shadowed = black; values clamped).
+    static void writeVisibility(const FrameTargets& targets, int light, const std::string& path);
+    /// Writes `channels` x 8-bit pixels (top row first) to `path`; the format follows the extension.
+    static void write(const std::string& path, int width, int height, int channels, const unsigned char* pixels);
+};
+
+} // namespace sb

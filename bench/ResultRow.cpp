@@ -1,0 +1,90 @@
+#include "bench/ResultRow.h"
+
+#include <cstdio>
+
+namespace sb {
+
+namespace {
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4f", v);
+    return buf;
+}
+
+void addStats(CsvRow& row, const std::string& prefix, const Statistics& s) {
+    row.emplace_back(prefix + "_median", num(s.median));
+    row.emplace_back(prefix + "_p5", num(s.p5));
+    row.emplace_back(prefix + "_p95", num(s.p95));
+    row.emplace_back(prefix + "_p99", num(s.p99));
+    row.emplace_back(prefix + "_mean", num(s.mean));
+    row.emplace_back(prefix + "_stddev", num(s.stddev));
+    row.emplace_back(prefix + "_mad", num(s.mad));
+}
+
+std::string lightsText(const Scene& scene) {
+    std::string out;
+    for (const Light& l : scene.lights) {
+        if (!out.empty()) out += '+';
+        out += lightTypeName(l.type);
+    }
+    return out.empty() ? "none" : out;
+}
+
+size_t layoutInstances(const Scene& scene) {
+    size_t n = 0;
+    for (const Instance& i : scene.instances) n += i.fromLayout ? 1 : 0;
+    return n;
+}
+} // namespace
+
+CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment& env) {
+    const RunConfig& c = h.config();
+    const Scene& scene = h.scene();
+    const Context& ctx = h.context();
+    const TimerVerdict& v = h.timerVerdict();
+    CsvRow row{
+        {"timestamp", env.timestamp},
+        {"git_commit", env.gitCommit},
+        {"status", "ok"},
+        {"renderer", ctx.renderer},
+        {"gl_version", ctx.version},
+        {"gl_vendor", ctx.vendor},
+        {"backend", backendName(ctx.backend())},
+        {"device", ctx.deviceName},
+        {"cpu_model", env.cpuModel},
+        {"hw_threads", std::to_string(env.hardwareThreads)},
+        {"lp_num_threads", env.lpNumThreads},
+        {"scene", scene.name},
+        {"scene_hash", scene.computeContentHash()},
+        {"scene_triangles", std::to_string(scene.totalTriangles())},
+        {"technique", r.technique},
+        {"properties", r.properties},
+        {"permutation", r.permutation},
+        {"instances", std::to_string(layoutInstances(scene))},
+        {"scale", num(c.sceneOptions.scale)},
+        {"tessellation", c.sceneOptions.tessellation ? std::to_string(*c.sceneOptions.tessellation) : "default"},
+        {"seed", c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
+        {"model", c.sceneOptions.modelPath},
+        {"submit", submitModeName(c.submit)},
+        {"camera", c.camera},
+        {"width", std::to_string(c.width)},
+        {"height", std::to_string(c.height)},
+        {"lights", lightsText(scene)},
+        {"frames", std::to_string(r.wall.n)},
+        {"warmup", std::to_string(c.warmup)},
+        {"setup_ms", num(r.setupMs)},
+    };
+    addStats(row, "wall_ms", r.wall);
+    addStats(row, "cpu_submit_ms", r.cpuSubmit);
+    row.emplace_back("fps_median", num(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
+    row.emplace_back("timer_verdict", v.label());
+    row.emplace_back("timer_reason", v.reason);
+    bool trusted = v.checked && v.trusted;
+    row.emplace_back("gpu_ms_median", trusted && r.gpuTotal.n ? num(r.gpuTotal.median) : "");
+    for (const auto& [pass, stats] : r.gpuPass)
+        row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? num(stats.median) : "");
+    for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, num(value));
+    return row;
+}
+
+} // namespace sb

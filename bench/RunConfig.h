@@ -1,0 +1,35 @@
+#pragma once
+// Everything that defines one measured configuration, as parsed from the command line. Recorded in
+// full in every CSV row so any row can be re-run exactly.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gl/Context.h"
+#include "scenes/SceneOptions.h"
+#include "techniques/PropertySet.h"
+#include "techniques/Submitter.h"
+
+namespace sb {
+
+struct RunConfig {
+    std::vector<TechniqueSpec> techniques{{"shadowmap", {}}};
+    std::string scene = "aircraft";
+    SceneOptions sceneOptions;
+    std::string camera = "far";
+    int width = 1024, height = 1024;
+    SubmitMode submit = SubmitMode::Retained;
+    int frames = 50;         ///< measured frames (ignored when seconds > 0)
+    double seconds = 0.0;    ///< measure for this long instead (at least kMinFrames frames)
+    int warmup = 5;          ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)
+    ContextOptions context;
+    std::string csvPath;        ///< --csv: append one row per technique
+    std::string samplesPath;    ///< --samples: per-frame samples
+    std::string screenshotPath; ///< --screenshot: colour PNG (technique name inserted when several)
+    std::string visibilityPath; ///< --visibility: visibility PNG
+    bool checkTimer = true;     ///< run the GPU-timer trust calibration
+    bool quiet = false;
+    static constexpr int kMinFrames = 5;
+};
+
+} // namespace sb

@@ -1,0 +1,38 @@
+#include "bench/SamplesFile.h"
+
+#include <cstdio>
+
+#include "bench/CsvWriter.h"
+
+namespace sb {
+
+namespace {
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4f", v);
+    return buf;
+}
+} // namespace
+
+void SamplesFile::append(const std::string& path, const Harness& harness, const RunResult& r) {
+    const TimerVerdict& v = harness.timerVerdict();
+    std::string prefix = v.checked && v.trusted ? "gpu_" : "timer_query_";
+    std::vector<CsvRow> rows;
+    rows.reserve(r.samples.size());
+    for (size_t i = 0; i < r.samples.size(); ++i) {
+        const FrameSample& s = r.samples[i];
+        CsvRow row{{"technique", r.technique},
+                   {"properties", r.properties},
+                   {"submit", submitModeName(harness.config().submit)},
+                   {"frame", std::to_string(i)},
+                   {"cpu_submit_ms", num(s.cpuSubmitMs)},
+                   {"wall_ms", num(s.wallMs)},
+                   {"timer_verdict", v.label()},
+                   {prefix + "total_ms", s.gpuTotalMs >= 0 ? num(s.gpuTotalMs) : ""}};
+        for (const auto& [pass, ms] : s.gpuPassMs) row.emplace_back(prefix + pass + "_ms", num(ms));
+        rows.push_back(std::move(row));
+    }
+    CsvWriter::appendRows(path, rows);
+}
+
+} // namespace sb

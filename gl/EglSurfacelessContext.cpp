@@ -1,0 +1,20 @@
+#include "gl/EglSurfacelessContext.h"
+
+#include "scenes/Error.h"
+
+namespace sb {
+
+EglSurfacelessContext::EglSurfacelessContext(const ContextOptions& options)
+    : EglContext(openDisplay(), options, "egl-surfaceless") {}
+
+EGLDisplay EglSurfacelessContext::openDisplay() {
+    // Client extensions are queried on EGL_NO_DISPLAY; a missing platform is a clear reason, not a crash.
+    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
+        throw Error("egl-surfaceless: EGL client extension EGL_MESA_platform_surfaceless missing",
+                    ExitCode::Unsupported);
+    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_base"))
+        throw Error("egl-surfaceless: EGL_EXT_platform_base missing", ExitCode::Unsupported);
+    return eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+}
+
+} // namespace sb

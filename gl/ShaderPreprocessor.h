@@ -1,0 +1,40 @@
+#pragma once
+// Builds the source of one shader stage for ProgramCache: "#version 450 compatibility", the sorted
+// defines, a stage define, then the file with `#include "common/x.glsl"` lines expanded (paths relative
+// to the shader root, each file included once per stage, like #pragma once). Every file gets a GLSL
+// source-string number through `#line LINE FILE_INDEX`, so a compile log line such as
+// "1:12(5): error: ..." maps back to "common/x.glsl:12:5: error: ...".
+#include <set>
+#include <string>
+#include <vector>
+
+#include "gl/ProgramCache.h"
+
+namespace sb {
+
+class ShaderPreprocessor {
+public:
+    explicit ShaderPreprocessor(std::string root) : mRoot(std::move(root)) {}
+
+    /// Throws sb::Error naming the missing file (and which file:line included it) or a bad define name.
+    std::string build(const std::string& file, const Defines& defines, GLenum stage);
+    /// Source-string number -> path relative to the root; 0 is the main file.
+    const std::vector<std::string>& files() const { return mFiles; }
+    /// Rewrites driver log lines "N:LINE(COL): msg" (Mesa) and "N(LINE) : msg" (NVIDIA) as
+    /// "path:LINE:COL: msg" / "path:LINE: msg"; other lines are kept as they are.
+    std::string mapLog(const std::string& log) const;
+
+    /// "SB_VERTEX_SHADER" etc.: defined to 1 in the stage being built, so a file can serve several stages.
+    static const char* stageDefine(GLenum stage);
+    static const char* stageName(GLenum stage); ///< "vertex", "fragment", "geometry"
+
+private:
+    void expand(const std::string& file, const std::string& includedFrom, std::string& out);
+    std::string readFile(const std::string& file, const std::string& includedFrom) const;
+
+    std::string mRoot;
+    std::vector<std::string> mFiles;
+    std::set<std::string> mIncluded;
+};
+
+} // namespace sb

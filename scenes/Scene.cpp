@@ -1,0 +1,177 @@
+#include "scenes/Scene.h"
+
+#include <cstdio>
+#include <cstring>
+
+#include "scenes/Math.h"
+
+namespace sb {
+namespace {
+
+struct EffectEntry {
+    Effect effect;
+    const char* name;
+};
+constexpr EffectEntry kEffectNames[] = {
+    {Effect::HardShadows, "hard_shadows"},
+    {Effect::SoftShadows, "soft_shadows"},
+    {Effect::SelfShadowing, "self_shadowing"},
+    {Effect::ColourBleeding, "colour_bleeding"},
+    {Effect::NonPlanarReceivers, "non_planar_receivers"},
+    {Effect::MultipleLights, "multiple_lights"},
+};
+
+/// FNV-1a 64: tiny, stable across platforms and standard libraries (std::hash is neither), and
+/// good enough to tell two scene contents apart; it is not a security hash.
+class Fnv1a {
+public:
+    void bytes(const void* data, size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < size; ++i) mHash = (mHash ^ p[i]) * 1099511628211ull;
+    }
+    template <typename T>
+    void value(const T& v) {
+        bytes(&v, sizeof(T));
+    }
+    template <typename T>
+    void vector(const std::vector<T>& v) {
+        value(uint64_t(v.size()));
+        if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
+    }
+    void string(const std::string& s) {
+        value(uint64_t(s.size()));
+        bytes(s.data(), s.size());
+    }
+    uint64_t result() const { return mHash; }
+
+private:
+    uint64_t mHash = 14695981039346656037ull;
+};
+
+void hashLight(Fnv1a& h, const Light& l) {
+    h.value(int(l.type));
+    h.value(l.direction);
+    h.value(l.position);
+    h.value(l.color);
+    h.value(l.intensity);
+    h.value(l.range);
+    h.value(l.spotOuterDeg);
+    h.value(l.spotInnerDeg);
+}
+
+void hashCamera(Fnv1a& h, const CameraPreset& c) {
+    h.string(c.name);
+    h.value(c.eye);
+    h.value(c.target);
+    h.value(c.up);
+    h.value(c.fovYDeg);
+    h.value(c.nearZ);
+    h.value(c.farZ);
+}
+
+void hashInstance(Fnv1a& h, const Instance& i) {
+    // The model matrix is derived, but hashing it too catches a forgotten updateTransforms().
+    h.value(i.mesh);
+    h.value(i.position);
+    h.value(i.rotationDeg);
+    h.value(i.scale);
+    h.value(i.color);
+    h.value(uint8_t(i.castsShadow) | uint8_t(i.receivesShadow) << 1 | uint8_t(i.fromLayout) << 2);
+    h.value(i.model);
+}
+
+} // namespace
+
+const char* effectName(Effect e) {
+    for (const auto& entry : kEffectNames)
+        if (entry.effect == e) return entry.name;
+    return "none";
+}
+
+std::optional<Effect> parseEffect(const std::string& name) {
+    for (const auto& entry : kEffectNames)
+        if (name == entry.name) return entry.effect;
+    return std::nullopt;
+}
+
+std::string effectMaskToString(EffectMask m) {
+    std::string out;
+    for (Effect e : kAllEffects) {
+        if (!hasEffect(m, e)) continue;
+        if (!out.empty()) out += '+';
+        out += effectName(e);
+    }
+    return out.empty() ? "none" : out;
+}
+
+const char* lightTypeName(LightType t) {
+    switch (t) {
+    case LightType::Directional:
+        return "directional";
+    case LightType::Point:
+        return "point";
+    case LightType::Spot:
+        return "spot";
+    }
+    return "directional";
+}
+
+std::optional<LightType> parseLightType(const std::string& name) {
+    for (LightType t : {LightType::Directional, LightType::Point, LightType::Spot})
+        if (name == lightTypeName(t)) return t;
+    return std::nullopt;
+}
+
+void Scene::updateTransforms() {
+    uint32_t id = 1;
+    for (auto& instance : instances) {
+        instance.model = composeTransform(instance.position, instance.rotationDeg, instance.scale);
+        instance.objectId = id++;
+    }
+}
+
+Aabb Scene::computeBounds(bool castersOnly) const {
+    Aabb bounds;
+    for (const auto& instance : instances) {
+        if (castersOnly && !instance.castsShadow) continue;
+        if (instance.mesh >= meshes.size()) continue;
+        bounds.extend(transformBounds(meshes[instance.mesh].computeBounds(), instance.model));
+    }
+    return bounds;
+}
+
+const CameraPreset* Scene::findCamera(const std::string& cameraName) const {
+    for (const auto& camera : cameras)
+        if (camera.name == cameraName) return &camera;
+    return nullptr;
+}
+
+std::string Scene::computeContentHash() const {
+    Fnv1a h;
+    h.value(uint64_t(meshes.size()));
+    for (const auto& mesh : meshes) {
+        h.vector(mesh.positions);
+        h.vector(mesh.normals);
+        h.vector(mesh.indices);
+    }
+    h.value(uint64_t(instances.size()));
+    for (const auto& instance : instances) hashInstance(h, instance);
+    h.value(uint64_t(lights.size()));
+    for (const auto& light : lights) hashLight(h, light);
+    h.value(uint64_t(cameras.size()));
+    for (const auto& camera : cameras) hashCamera(h, camera);
+    h.value(effects);
+    h.value(ambient);
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.result()));
+    return hex;
+}
+
+size_t Scene::totalTriangles() const {
+    size_t total = 0;
+    for (const auto& instance : instances)
+        if (instance.mesh < meshes.size()) total += meshes[instance.mesh].triangleCount();
+    return total;
+}
+
+} // namespace sb

@@ -1,0 +1,470 @@
+#include "scenes/SceneLoader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "scenes/Error.h"
+#include "scenes/JsonReader.h"
+#include "scenes/MeshGenerators.h"
+#include "scenes/ModelLoader.h"
+#include "scenes/Paths.h"
+#include "scenes/SplitMix64.h"
+
+namespace sb {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr uint32_t kMaxInstances = 1000000;
+constexpr const char* kTeapotResource = "scenes/data/teapot.bpt";
+constexpr const char* kGenerators = "sphere, box, cylinder, plane, aircraft, teapot";
+
+/// Bytes per retained vertex (position + normal, 2 x vec3) and per-instance bookkeeping (model
+/// matrix, colour, flags, uniforms) used by the memory estimate.
+constexpr uint64_t kVertexBytes = 24;
+constexpr uint64_t kInstanceBytes = 128;
+
+/// Everything the parsing steps share.
+struct Context {
+    Scene scene;
+    const SceneOptions& options;
+    std::string source;
+    std::map<std::string, uint32_t> meshByName;
+    std::vector<bool> meshIsPlane; ///< planes keep their own tessellation under --tess
+    std::optional<size_t> firstLayoutInstance;
+};
+
+// ---- meshes -------------------------------------------------------------------------------------
+
+int tessellationFor(const Context& ctx, const JsonReader& m, const std::string& generator, int fallback) {
+    const bool overridable = generator != "plane";
+    if (overridable && ctx.options.tessellation) return *ctx.options.tessellation;
+    return m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]"))
+                                 : fallback;
+}
+
+/// Scales a generated mesh; normals follow the inverse scale (exact for the axis-aligned scales used).
+void scaleMesh(Mesh& mesh, const glm::vec3& s) {
+    for (auto& p : mesh.positions) p *= s;
+    for (auto& n : mesh.normals) n = glm::normalize(n / s);
+}
+
+Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generator) {
+    // Each generator accepts its own parameters only, so a parameter given to the wrong generator
+    // (a "radius" on a box) is reported instead of ignored.
+    auto tess = [&](int fallback) { return tessellationFor(ctx, m, generator, fallback); };
+    if (generator == "sphere") {
+        m.requireObject({"name", "generator", "tessellation", "radius"});
+        Mesh mesh = MeshGenerators::sphere(tess(16));
+        if (m.has("radius")) scaleMesh(mesh, glm::vec3(m["radius"].positiveNumber()));
+        return mesh;
+    }
+    if (generator == "box") {
+        m.requireObject({"name", "generator", "tessellation", "half_extent"});
+        return MeshGenerators::box(m.has("half_extent") ? m["half_extent"].positiveVec3() : glm::vec3(1.0f),
+                                   tess(1));
+    }
+    if (generator == "cylinder") {
+        m.requireObject({"name", "generator", "tessellation", "radius", "height"});
+        Mesh mesh = MeshGenerators::cylinder(tess(16));
+        const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
+        const float height = m.has("height") ? m["height"].positiveNumber() : 2.0f;
+        scaleMesh(mesh, glm::vec3(radius, 0.5f * height, radius));
+        return mesh;
+    }
+    if (generator == "plane") {
+        m.requireObject({"name", "generator", "tessellation", "size"});
+        return MeshGenerators::plane(m.has("size") ? m["size"].positiveNumber() : 100.0f, tess(16));
+    }
+    if (generator == "aircraft") {
+        m.requireObject({"name", "generator", "tessellation"});
+        return MeshGenerators::aircraft(tess(16));
+    }
+    if (generator == "teapot") {
+        m.requireObject({"name", "generator", "tessellation"});
+        const std::string path = Paths::findResource(kTeapotResource);
+        if (path.empty()) m["generator"].error(std::string("cannot find ") + kTeapotResource);
+        return MeshGenerators::teapot(path, tess(8));
+    }
+    m["generator"].fail(std::string("one of ") + kGenerators);
+}
+
+/// Generator errors (a tessellation below the generator's minimum, an unreadable patch file) get the
+/// mesh's JSON path in front.
+Mesh generateMesh(Context& ctx, const JsonReader& m, const std::string& generator) {
+    try {
+        return callGenerator(ctx, m, generator);
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        if (message.rfind(ctx.source + ": ", 0) == 0) throw; // already located
+        m.error(message);
+    }
+}
+
+Mesh loadModelMesh(const Context& ctx, const JsonReader& m) {
+    m.requireObject({"name", "file"});
+    fs::path path = m["file"].string();
+    if (path.is_relative()) path = fs::path(ctx.source).parent_path() / path;
+    try {
+        return ModelLoader::load(path.string());
+    } catch (const Error& e) {
+        m["file"].error(e.what());
+    }
+}
+
+void parseMesh(Context& ctx, const JsonReader& m) {
+    if (!m.value().is_object()) m.fail("an object");
+    const std::string name = m["name"].string();
+    if (ctx.meshByName.count(name)) m["name"].error("duplicate mesh name \"" + name + "\"");
+    if (m.has("generator") == m.has("file")) m.error("expected exactly one of \"generator\" or \"file\"");
+    std::string generator = m.has("generator") ? m["generator"].string() : "";
+    Mesh mesh = m.has("file") ? loadModelMesh(ctx, m) : generateMesh(ctx, m, generator);
+    mesh.name = name;
+    ctx.meshByName[name] = uint32_t(ctx.scene.meshes.size());
+    ctx.meshIsPlane.push_back(generator == "plane");
+    ctx.scene.meshes.push_back(std::move(mesh));
+}
+
+uint32_t meshReference(const Context& ctx, const JsonReader& r) {
+    const std::string name = r.string();
+    const auto it = ctx.meshByName.find(name);
+    if (it != ctx.meshByName.end()) return it->second;
+    std::string known;
+    for (const auto& entry : ctx.meshByName) known += (known.empty() ? "" : ", ") + entry.first;
+    r.error("unknown mesh \"" + name + "\" (meshes: " + known + ")");
+}
+
+// ---- instances and layout -------------------------------------------------------------------------
+
+void parseInstanceFlags(Instance& inst, const JsonReader& r) {
+    if (r.has("color")) inst.color = r["color"].vec3();
+    if (r.has("casts_shadow")) inst.castsShadow = r["casts_shadow"].boolean();
+    if (r.has("receives_shadow")) inst.receivesShadow = r["receives_shadow"].boolean();
+}
+
+void parseInstance(Context& ctx, const JsonReader& r) {
+    r.requireObject({"mesh", "position", "rotation", "scale", "color", "casts_shadow", "receives_shadow"});
+    Instance inst;
+    inst.mesh = meshReference(ctx, r["mesh"]);
+    if (r.has("position")) inst.position = r["position"].vec3();
+    if (r.has("rotation")) inst.rotationDeg = r["rotation"].vec3();
+    if (r.has("scale")) inst.scale = r["scale"].positiveNumber();
+    parseInstanceFlags(inst, r);
+    ctx.scene.instances.push_back(inst);
+}
+
+std::string gib(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", double(bytes) / double(1ull << 30));
+    return text;
+}
+
+/// Estimated bytes: every mesh once (retained buffers), plus per instance the copy that immediate
+/// mode and display lists make of its triangles (3 vertices of 24 B each) and its instance data.
+uint64_t estimateMemory(const Scene& scene, uint32_t layoutMesh, uint64_t layoutCount) {
+    uint64_t bytes = 0;
+    for (const auto& mesh : scene.meshes)
+        bytes += mesh.vertexCount() * kVertexBytes + mesh.indices.size() * 4;
+    auto perInstance = [&](uint32_t mesh) {
+        return uint64_t(scene.meshes[mesh].triangleCount()) * 3 * kVertexBytes + kInstanceBytes;
+    };
+    for (const auto& inst : scene.instances) bytes += perInstance(inst.mesh);
+    return bytes + layoutCount * perInstance(layoutMesh);
+}
+
+/// The instance count of the layout: --instances wins over the file; both are bounded.
+uint32_t layoutCount(const Context& ctx, const JsonReader& layout) {
+    if (ctx.options.instances) {
+        const uint32_t n = *ctx.options.instances;
+        if (n == 0) throw Error("--instances must be at least 1");
+        if (n > kMaxInstances)
+            throw Error("--instances " + std::to_string(n) + ": more than the maximum of " +
+                        std::to_string(kMaxInstances));
+        return n;
+    }
+    const JsonReader count = layout["count"];
+    const int64_t n = count.integer(1, INT64_MAX, "a positive integer");
+    if (n > int64_t(kMaxInstances))
+        count.error(std::to_string(n) + " instances: more than the maximum of " +
+                    std::to_string(kMaxInstances));
+    return uint32_t(n);
+}
+
+/// `layout` is null for a scene without one (then only the explicit instances count).
+void checkMemory(const Context& ctx, const JsonReader& where, const JsonReader* layout, uint32_t layoutMesh,
+                 uint32_t count) {
+    const uint64_t bytes = estimateMemory(ctx.scene, layoutMesh, count);
+    if (bytes <= ctx.options.memoryLimitBytes) return;
+    const std::string what = "estimated memory " + gib(bytes) + " GiB exceeds the limit of " +
+                             gib(ctx.options.memoryLimitBytes) + " GiB";
+    if (!layout) where.error(what);
+    if (ctx.options.instances) throw Error("--instances " + std::to_string(count) + ": " + what);
+    (*layout)["count"].error(std::to_string(count) + " instances: " + what);
+}
+
+/// Centre and radius of the sphere around the AABB centre that holds every vertex.
+std::pair<glm::vec3, float> boundingSphere(const Mesh& mesh) {
+    const glm::vec3 centre = mesh.computeBounds().center();
+    float radius = 0.0f;
+    for (const auto& p : mesh.positions) radius = std::max(radius, glm::length(p - centre));
+    return {centre, radius};
+}
+
+/// --model: the layout's mesh becomes the model, moved and scaled onto the replaced mesh's bounding
+/// sphere so the layout, cameras and light fits of the scene still frame it.
+void replaceWithModel(Context& ctx, uint32_t meshIndex) {
+    Mesh model = ModelLoader::load(ctx.options.modelPath);
+    Mesh& old = ctx.scene.meshes[meshIndex];
+    const auto [oldCentre, oldRadius] = boundingSphere(old);
+    const auto [newCentre, newRadius] = boundingSphere(model);
+    const float s = newRadius > 0.0f ? oldRadius / newRadius : 1.0f;
+    for (auto& p : model.positions) p = (p - newCentre) * s + oldCentre;
+    model.name = old.name;
+    old = std::move(model);
+}
+
+/// Seeded uniform placement in the region box. Six numbers are drawn per instance whether or not
+/// they are used, so the positions do not depend on yaw_only.
+void placeLayout(Context& ctx, const JsonReader& layout, uint32_t mesh, uint32_t count) {
+    const auto region = layout["region"].elements();
+    if (region.size() != 2) layout["region"].fail("[[min x, y, z], [max x, y, z]]");
+    const glm::vec3 lo = region[0].vec3(), hi = region[1].vec3();
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) layout["region"].fail("a box with min <= max");
+    const uint64_t seed = ctx.options.seed ? *ctx.options.seed
+                          : layout.has("seed")
+                              ? uint64_t(layout["seed"].integer(0, INT64_MAX, "an integer >= 0"))
+                              : 1;
+    const float scale = (layout.has("scale") ? layout["scale"].positiveNumber() : 1.0f) * ctx.options.scale;
+    const bool yawOnly = layout.has("yaw_only") ? layout["yaw_only"].boolean() : true;
+    const double tilt =
+        layout.has("max_tilt") ? layout["max_tilt"].numberIn(0, 90, "an angle in [0, 90]") : 10.0;
+    Instance proto;
+    proto.mesh = mesh;
+    proto.scale = scale;
+    proto.fromLayout = true;
+    parseInstanceFlags(proto, layout);
+    SplitMix64 rng(seed);
+    ctx.firstLayoutInstance = ctx.scene.instances.size();
+    for (uint32_t i = 0; i < count; ++i) {
+        Instance inst = proto;
+        for (int a = 0; a < 3; ++a) inst.position[a] = float(rng.uniform(lo[a], hi[a]));
+        const float yaw = float(rng.uniform(-180.0, 180.0));
+        const float pitch = float(rng.uniform(-tilt, tilt)), roll = float(rng.uniform(-tilt, tilt));
+        inst.rotationDeg = yawOnly ? glm::vec3(0.0f, yaw, 0.0f) : glm::vec3(pitch, yaw, roll);
+        ctx.scene.instances.push_back(inst);
+    }
+}
+
+void parseLayout(Context& ctx, const JsonReader& layout) {
+    layout.requireObject({"mesh", "count", "seed", "region", "scale", "yaw_only", "max_tilt", "color",
+                          "casts_shadow", "receives_shadow"});
+    const uint32_t mesh = meshReference(ctx, layout["mesh"]);
+    if (!ctx.options.modelPath.empty()) replaceWithModel(ctx, mesh);
+    const uint32_t count = layoutCount(ctx, layout);
+    checkMemory(ctx, layout, &layout, mesh, count);
+    placeLayout(ctx, layout, mesh, count);
+}
+
+// ---- lights, cameras, effects ---------------------------------------------------------------------
+
+LightType lightType(const JsonReader& r) {
+    const auto type = parseLightType(r.string());
+    if (!type) r.fail("one of directional, point, spot");
+    return *type;
+}
+
+void parseLight(Context& ctx, const JsonReader& r) {
+    r.requireObject(
+        {"type", "direction", "position", "color", "intensity", "range", "spot_outer_deg", "spot_inner_deg"});
+    Light light;
+    if (r.has("type")) light.type = lightType(r["type"]);
+    if (r.has("direction")) light.direction = r["direction"].unitDirection();
+    if (r.has("position")) light.position = r["position"].vec3();
+    if (r.has("color")) light.color = r["color"].vec3();
+    if (r.has("intensity")) light.intensity = r["intensity"].nonNegativeNumber();
+    if (r.has("range")) light.range = r["range"].nonNegativeNumber();
+    if (r.has("spot_outer_deg"))
+        light.spotOuterDeg = r["spot_outer_deg"].numberIn(0.1, 89.9, "an angle in [0.1, 89.9]");
+    light.spotInnerDeg = std::min(light.spotInnerDeg, light.spotOuterDeg);
+    if (r.has("spot_inner_deg"))
+        light.spotInnerDeg =
+            r["spot_inner_deg"].numberIn(0.0, light.spotOuterDeg, "an angle in [0, spot_outer_deg]");
+    ctx.scene.lights.push_back(light);
+}
+
+/// lookAt needs an up vector that is not parallel to the view direction (a camera looking straight
+/// down with the default +Y up); -Z is then "up" on screen, i.e. north is at the top of the image.
+glm::vec3 validUp(const CameraPreset& c) {
+    const glm::vec3 dir = c.target - c.eye;
+    if (glm::length(glm::cross(dir, c.up)) > 1e-4f * glm::length(dir) * glm::length(c.up)) return c.up;
+    return std::abs(dir.z) > std::abs(dir.x) + std::abs(dir.y) ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, -1);
+}
+
+void followFirstInstance(const Context& ctx, CameraPreset& c, const JsonReader& r) {
+    if (r["follow"].string() != "first_instance") r["follow"].fail("\"first_instance\"");
+    if (!ctx.firstLayoutInstance) r["follow"].error("the scene has no layout whose first instance to follow");
+    if (r.has("eye") || r.has("target"))
+        r.error("\"follow\" computes eye and target; give \"offset\" instead");
+    const Instance& inst = ctx.scene.instances[*ctx.firstLayoutInstance];
+    // The offset is in units of the instance's scale, so --scale keeps the framing of the fill test.
+    const glm::vec3 offset = r.has("offset") ? r["offset"].vec3() : glm::vec3(0.0f, 3.0f, 0.0f);
+    c.target = inst.position;
+    c.eye = inst.position + offset * inst.scale;
+}
+
+void parseCamera(Context& ctx, const JsonReader& r) {
+    r.requireObject({"name", "eye", "target", "up", "fov", "near", "far", "follow", "offset"});
+    CameraPreset c;
+    c.name = r["name"].string();
+    if (ctx.scene.findCamera(c.name)) r["name"].error("duplicate camera name \"" + c.name + "\"");
+    if (r.has("follow"))
+        followFirstInstance(ctx, c, r);
+    else if (r.has("offset"))
+        r["offset"].error("\"offset\" is only used with \"follow\"");
+    if (r.has("eye")) c.eye = r["eye"].vec3();
+    if (r.has("target")) c.target = r["target"].vec3();
+    if (r.has("up")) c.up = r["up"].unitDirection();
+    if (r.has("fov")) c.fovYDeg = r["fov"].numberIn(0.1, 179.0, "a field of view in [0.1, 179] degrees");
+    if (r.has("near")) c.nearZ = r["near"].positiveNumber();
+    if (r.has("far")) c.farZ = r["far"].positiveNumber();
+    if (!(c.farZ > c.nearZ)) r.error("expected far > near");
+    if (glm::length(c.target - c.eye) < 1e-6f) r.error("expected eye and target to differ");
+    c.up = validUp(c);
+    ctx.scene.cameras.push_back(c);
+}
+
+EffectMask parseEffects(const JsonReader& r) {
+    EffectMask mask = 0;
+    for (const auto& e : r.elements()) {
+        const auto effect = parseEffect(e.string());
+        if (!effect) {
+            std::string valid;
+            for (Effect known : kAllEffects)
+                valid += (valid.empty() ? "" : ", ") + std::string(effectName(known));
+            e.fail("one of " + valid);
+        }
+        mask |= uint32_t(*effect);
+    }
+    return mask;
+}
+
+// ---- options applied after parsing ----------------------------------------------------------------
+
+/// --light TYPE: every light becomes TYPE. A directional light turned point/spot is placed on the
+/// far side of its direction at twice the scene's radius (so it sees the whole scene) and a spot's
+/// cone encloses the scene's bounding sphere; a point light turned directional/spot aims at the
+/// centre. The casters' bounds define "the scene" (the ground plane would push the light far away).
+void overrideLightType(Scene& scene, LightType type) {
+    Aabb bounds = scene.computeBounds(true);
+    if (bounds.empty()) bounds = scene.computeBounds(false);
+    if (bounds.empty()) bounds.extend(glm::vec3(0.0f));
+    const glm::vec3 centre = bounds.center();
+    const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
+    for (auto& light : scene.lights) {
+        if (light.type == type) continue;
+        if (light.type == LightType::Point) {
+            const glm::vec3 toCentre = centre - light.position;
+            if (glm::length(toCentre) > 1e-6f) light.direction = glm::normalize(toCentre);
+        } else if (light.type == LightType::Directional) {
+            light.position = centre - light.direction * (2.0f * radius);
+        }
+        if (type == LightType::Spot) {
+            const float distance = std::max(glm::length(centre - light.position), radius * 1.01f);
+            light.spotOuterDeg = std::min(glm::degrees(std::asin(radius / distance)) + 5.0f, 89.0f);
+            light.spotInnerDeg = std::max(light.spotOuterDeg - 5.0f, 0.0f);
+        }
+        light.type = type;
+    }
+}
+
+void checkOptionsApply(const Context& ctx, bool hasLayout) {
+    if (hasLayout) return;
+    if (ctx.options.instances)
+        throw Error("--instances " + std::to_string(*ctx.options.instances) + ": scene '" + ctx.source +
+                    "' has no layout to resize");
+    if (!ctx.options.modelPath.empty())
+        throw Error("--model " + ctx.options.modelPath + ": scene '" + ctx.source +
+                    "' has no layout mesh to replace");
+}
+
+void parseDocument(Context& ctx, const JsonReader& root) {
+    root.requireObject(
+        {"name", "description", "meshes", "instances", "layout", "lights", "cameras", "effects", "ambient"});
+    if (root.has("name")) ctx.scene.name = root["name"].string();
+    if (root.has("description")) root["description"].string();
+    for (const auto& m : root["meshes"].elements(true)) parseMesh(ctx, m);
+    if (root.has("instances"))
+        for (const auto& i : root["instances"].elements()) parseInstance(ctx, i);
+    checkOptionsApply(ctx, root.has("layout"));
+    if (root.has("layout"))
+        parseLayout(ctx, root["layout"]);
+    else
+        checkMemory(ctx, root, nullptr, 0, 0);
+    if (ctx.scene.instances.empty())
+        root.error("expected at least one instance (\"instances\" or \"layout\")");
+    if (root.has("lights"))
+        for (const auto& l : root["lights"].elements(true)) parseLight(ctx, l);
+    else
+        ctx.scene.lights.push_back(Light{});
+    if (root.has("cameras"))
+        for (const auto& c : root["cameras"].elements()) parseCamera(ctx, c);
+    if (root.has("effects")) ctx.scene.effects = parseEffects(root["effects"]);
+    if (root.has("ambient")) ctx.scene.ambient = root["ambient"].vec3();
+}
+
+bool looksLikePath(const std::string& s) {
+    return s.find('/') != std::string::npos || (s.size() > 5 && s.substr(s.size() - 5) == ".json");
+}
+
+} // namespace
+
+Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceName,
+                         const SceneOptions& options) {
+    nlohmann::json doc;
+    try {
+        doc = nlohmann::json::parse(jsonText, nullptr, true, /*ignore_comments=*/true);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw Error(sourceName + ": invalid JSON: " + e.what());
+    }
+    Context ctx{Scene{}, options, sourceName, {}, {}, {}};
+    ctx.scene.name = fs::path(sourceName).stem().string();
+    ctx.scene.sourcePath = sourceName;
+    parseDocument(ctx, JsonReader(doc, sourceName));
+    ctx.scene.updateTransforms();
+    if (options.lightType) overrideLightType(ctx.scene, *options.lightType);
+    return std::move(ctx.scene);
+}
+
+Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& options) {
+    std::error_code ec;
+    std::string path = nameOrPath;
+    if (!fs::is_regular_file(path, ec)) {
+        if (looksLikePath(nameOrPath)) throw Error("scene file '" + nameOrPath + "': no such file");
+        path = Paths::findResource("scenes/data/" + nameOrPath + ".json");
+        if (path.empty()) {
+            std::string known;
+            for (const auto& name : listBuiltinScenes()) known += (known.empty() ? "" : ", ") + name;
+            throw Error("unknown scene '" + nameOrPath + "': not a file, and not a built-in scene (" + known +
+                        ")");
+        }
+    }
+    return parse(Paths::readTextFile(path), path, options);
+}
+
+std::vector<std::string> SceneLoader::listBuiltinScenes() {
+    std::set<std::string> names;
+    for (const auto& root : Paths::searchRoots()) {
+        std::error_code ec;
+        for (fs::directory_iterator it(fs::path(root) / "scenes/data", ec), end; !ec && it != end;
+             it.increment(ec))
+            if (it->path().extension() == ".json") names.insert(it->path().stem().string());
+    }
+    return {names.begin(), names.end()};
+}
+
+} // namespace sb

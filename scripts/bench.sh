@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Quick start 1: install, build, run the default benchmark
+#   bench --technique shadowmap --instances 200   (built-in aircraft scene, 1024x1024)
+# Any arguments replace the defaults, e.g. `bash scripts/bench.sh -t none -t shadowmap --csv r.csv`.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$root/scripts/build.sh"
+if [ $# -eq 0 ]; then set -- --technique shadowmap --instances 200; fi
+exec "$root/build/bench" "$@"

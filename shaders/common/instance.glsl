@@ -1,0 +1,17 @@
+// Per-instance data as the Submitter provides it (techniques/Submitter.h):
+//  - immediate, displaylist, retained: uniforms at fixed locations, set before each draw;
+//  - instanced (SB_INSTANCED): per-instance vertex attributes (divisor 1).
+// Instances have uniform scale only, so mat3(model) transforms normals up to length.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+#ifdef SB_INSTANCED
+layout(location = 4) in mat4 aModel; // locations 4..7
+layout(location = 8) in vec4 aColorId;
+mat4 instanceModel() { return aModel; }
+vec4 instanceColorId() { return aColorId; }
+#else
+layout(location = 0) uniform mat4 uModel;
+layout(location = 4) uniform vec4 uColorId;
+mat4 instanceModel() { return uModel; }
+vec4 instanceColorId() { return uColorId; }
+#endif

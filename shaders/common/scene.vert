@@ -1,0 +1,23 @@
+// Vertex stage shared by the lit passes of `none` and `shadowmap`: world position, normal, colour.
+#include "common/frame.glsl"
+#include "common/instance.glsl"
+
+out vec3 vWorldPos;
+out vec3 vNormal;
+out vec4 vColorId;
+#ifdef SHADOW_MAP
+layout(location = 8) uniform mat4 uShadowMatrix[LIGHT_COUNT]; // bias * lightProj * lightView
+out vec4 vShadowCoord[LIGHT_COUNT];
+#endif
+
+void main() {
+    mat4 model = instanceModel();
+    vec4 world = model * vec4(aPosition, 1.0);
+    vWorldPos = world.xyz;
+    vNormal = mat3(model) * aNormal;
+    vColorId = instanceColorId();
+#ifdef SHADOW_MAP
+    for (int i = 0; i < LIGHT_COUNT; ++i) vShadowCoord[i] = uShadowMatrix[i] * world;
+#endif
+    gl_Position = uViewProj * world;
+}

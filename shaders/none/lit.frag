@@ -1,0 +1,18 @@
+// `none`: lit, unshadowed. Visibility is 1 for every light (the baseline of every overhead ratio).
+#include "common/frame.glsl"
+#include "common/lighting.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec4 vColorId;
+layout(location = 0) out vec4 oColor;
+layout(location = 1) out vec4 oVisibility;
+
+void main() {
+    vec3 n = normalize(vNormal);
+    if (!gl_FrontFacing) n = -n;
+    vec3 light = uAmbient.rgb;
+    for (int i = 0; i < LIGHT_COUNT; ++i) light += lightTerm(i, vWorldPos, n);
+    oColor = vec4(vColorId.rgb * light, 1.0);
+    oVisibility = vec4(1.0);
+}

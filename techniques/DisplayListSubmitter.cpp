@@ -1,0 +1,45 @@
+#include "techniques/DisplayListSubmitter.h"
+
+namespace sb {
+
+DisplayListSubmitter::~DisplayListSubmitter() { release(); }
+
+void DisplayListSubmitter::release() {
+    if (mListCount) glDeleteLists(mFirstList, mListCount);
+    mFirstList = 0;
+    mListCount = 0;
+}
+
+void DisplayListSubmitter::upload(const Scene& scene) {
+    release();
+    mScene = &scene;
+    mListCount = GLsizei(scene.meshes.size());
+    if (!mListCount) return;
+    glBindVertexArray(0);
+    mFirstList = glGenLists(mListCount);
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        glNewList(mFirstList + GLuint(m), GL_COMPILE);
+        glBegin(GL_TRIANGLES);
+        for (uint32_t idx : mesh.indices) {
+            glVertexAttrib3fv(1, &mesh.normals[idx].x);
+            glVertexAttrib3fv(0, &mesh.positions[idx].x);
+        }
+        glEnd();
+        glEndList();
+    }
+}
+
+void DisplayListSubmitter::draw(DrawSet set) {
+    glBindVertexArray(0);
+    for (const Instance& inst : mScene->instances) {
+        if (!inSet(inst, set)) continue;
+        setInstanceUniforms(inst);
+        glCallList(mFirstList + inst.mesh);
+        mStats.drawCalls += 1;
+        mStats.triangles += mScene->meshes[inst.mesh].triangleCount();
+        mStats.instances += 1;
+    }
+}
+
+} // namespace sb

@@ -1,0 +1,27 @@
+#pragma once
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "techniques/Submitter.h"
+
+namespace sb {
+
+/// One display list per mesh, compiled once at upload from the same glBegin/glEnd stream as the
+/// immediate mode; each instance sets its uniforms and calls the list. The retained path of the
+/// thesis era (section 6.2: "display lists ... greatly reduce the number of calls").
+class DisplayListSubmitter final : public Submitter {
+public:
+    ~DisplayListSubmitter() override;
+    SubmitMode mode() const override { return SubmitMode::DisplayList; }
+    void upload(const Scene& scene) override;
+    void draw(DrawSet set) override;
+
+private:
+    void release();
+    const Scene* mScene = nullptr;
+    GLuint mFirstList = 0;
+    GLsizei mListCount = 0;
+};
+
+} // namespace sb

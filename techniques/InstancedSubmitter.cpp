@@ -1,0 +1,71 @@
+#include "techniques/InstancedSubmitter.h"
+
+#include <algorithm>
+
+#include <glm/glm.hpp>
+
+namespace sb {
+
+namespace {
+struct InstanceRecord {
+    glm::mat4 model;
+    glm::vec4 colorId;
+};
+constexpr DrawSet kSets[] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers};
+} // namespace
+
+InstancedSubmitter::~InstancedSubmitter() { release(); }
+
+void InstancedSubmitter::release() {
+    if (mInstanceBuffer) glDeleteBuffers(1, &mInstanceBuffer);
+    mInstanceBuffer = 0;
+}
+
+void InstancedSubmitter::upload(const Scene& scene) {
+    release();
+    mScene = &scene;
+    mBuffers.upload(scene);
+    // One buffer holding, per draw set and mesh, that set's instances contiguously.
+    std::vector<InstanceRecord> records;
+    for (size_t s = 0; s < 3; ++s) {
+        mBatches[s].clear();
+        for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+            Batch b{m, uint32_t(records.size()), 0};
+            for (const Instance& inst : scene.instances) {
+                if (inst.mesh != m || !inSet(inst, kSets[s])) continue;
+                records.push_back({inst.model, glm::vec4(inst.color, float(inst.objectId))});
+                ++b.count;
+            }
+            if (b.count) mBatches[s].push_back(b);
+        }
+    }
+    glCreateBuffers(1, &mInstanceBuffer);
+    glNamedBufferStorage(mInstanceBuffer, GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
+                         records.empty() ? nullptr : records.data(), 0);
+    // A VAO per mesh: the shared mesh buffers at binding 0, the instance buffer at binding 1.
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        GLuint vao = mBuffers.vao(m);
+        glVertexArrayVertexBuffer(vao, 1, mInstanceBuffer, 0, sizeof(InstanceRecord));
+        glVertexArrayBindingDivisor(vao, 1, 1);
+        for (GLuint c = 0; c < 5; ++c) {
+            glEnableVertexArrayAttrib(vao, 4 + c);
+            glVertexArrayAttribFormat(vao, 4 + c, 4, GL_FLOAT, GL_FALSE, c * sizeof(glm::vec4));
+            glVertexArrayAttribBinding(vao, 4 + c, 1);
+        }
+    }
+}
+
+void InstancedSubmitter::draw(DrawSet set) {
+    for (const Batch& b : mBatches[size_t(set)]) {
+        glBindVertexArray(mBuffers.vao(b.mesh));
+        GLsizei count = mBuffers.indexCount(b.mesh);
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr, GLsizei(b.count),
+                                            b.first);
+        mStats.drawCalls += 1;
+        mStats.triangles += uint64_t(count) / 3 * b.count;
+        mStats.instances += b.count;
+    }
+    glBindVertexArray(0);
+}
+
+} // namespace sb

@@ -1,0 +1,34 @@
+#pragma once
+#include <array>
+#include <vector>
+
+#include "techniques/MeshBuffers.h"
+#include "techniques/Submitter.h"
+
+namespace sb {
+
+/// One glDrawElementsInstanced per (mesh, draw set). Per-instance model matrix and colour/id come from
+/// an instance buffer (attributes 4..8, divisor 1); each draw set has its own contiguous range so a
+/// caster-only pass is still one draw per mesh.
+class InstancedSubmitter final : public Submitter {
+public:
+    ~InstancedSubmitter() override;
+    SubmitMode mode() const override { return SubmitMode::Instanced; }
+    void upload(const Scene& scene) override;
+    void draw(DrawSet set) override;
+    Defines defines() const override { return {{"SB_INSTANCED", ""}}; }
+
+private:
+    struct Batch {
+        uint32_t mesh = 0;
+        uint32_t first = 0; ///< base instance in the instance buffer
+        uint32_t count = 0;
+    };
+    void release();
+    const Scene* mScene = nullptr;
+    MeshBuffers mBuffers;
+    GLuint mInstanceBuffer = 0;
+    std::array<std::vector<Batch>, 3> mBatches; ///< per DrawSet
+};
+
+} // namespace sb

@@ -1,0 +1,47 @@
+#include "techniques/MeshBuffers.h"
+
+#include <glm/glm.hpp>
+
+namespace sb {
+
+MeshBuffers::~MeshBuffers() { release(); }
+
+void MeshBuffers::release() {
+    for (Gpu& g : mMeshes) {
+        glDeleteVertexArrays(1, &g.vao);
+        glDeleteBuffers(1, &g.vbo);
+        glDeleteBuffers(1, &g.ibo);
+    }
+    mMeshes.clear();
+}
+
+void MeshBuffers::upload(const Scene& scene) {
+    release();
+    for (const Mesh& mesh : scene.meshes) {
+        // Interleaved (position, normal): one stream, one cache line per vertex fetch.
+        std::vector<glm::vec3> interleaved;
+        interleaved.reserve(mesh.positions.size() * 2);
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            interleaved.push_back(mesh.positions[i]);
+            interleaved.push_back(mesh.normals[i]);
+        }
+        Gpu g;
+        glCreateVertexArrays(1, &g.vao);
+        glCreateBuffers(1, &g.vbo);
+        glCreateBuffers(1, &g.ibo);
+        glNamedBufferStorage(g.vbo, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data(), 0);
+        glNamedBufferStorage(g.ibo, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(), 0);
+        glVertexArrayVertexBuffer(g.vao, 0, g.vbo, 0, GLsizei(2 * sizeof(glm::vec3)));
+        glVertexArrayElementBuffer(g.vao, g.ibo);
+        glEnableVertexArrayAttrib(g.vao, 0);
+        glEnableVertexArrayAttrib(g.vao, 1);
+        glVertexArrayAttribFormat(g.vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribFormat(g.vao, 1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3));
+        glVertexArrayAttribBinding(g.vao, 0, 0);
+        glVertexArrayAttribBinding(g.vao, 1, 0);
+        g.indexCount = GLsizei(mesh.indices.size());
+        mMeshes.push_back(g);
+    }
+}
+
+} // namespace sb

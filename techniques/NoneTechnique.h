@@ -1,0 +1,21 @@
+#pragma once
+#include "techniques/Technique.h"
+
+namespace sb {
+
+/// `none`: lit, unshadowed, one pass. The baseline every overhead ratio is taken against; visibility
+/// is 1 everywhere.
+class NoneTechnique final : public Technique {
+public:
+    NoneTechnique();
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+private:
+    const Program* mProgram = nullptr;
+    Counters mCounters;
+};
+
+} // namespace sb

@@ -1,0 +1,20 @@
+#include "techniques/PassTimer.h"
+
+#include "gl/DebugOutput.h"
+
+namespace sb {
+
+void PassTimer::begin(const char* pass) {
+    if (mOpen) DebugOutput::check(); // errors of the pass that just ended are reported with its name
+    DebugOutput::setCurrentPass(mTechnique.empty() ? std::string(pass) : mTechnique + "/" + pass);
+    if (mRing) mRing->beginPass(pass);
+    mOpen = true;
+}
+
+void PassTimer::end() {
+    if (mOpen) DebugOutput::check();
+    DebugOutput::setCurrentPass("");
+    mOpen = false;
+}
+
+} // namespace sb

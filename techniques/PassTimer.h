@@ -1,0 +1,28 @@
+#pragma once
+// What a technique calls at each of its passes: `ctx.passes.begin("depth")`. It names the pass for
+// GL error reports (DebugOutput), places a GPU timestamp (TimerQueryRing) and checks for GL errors of
+// the pass that just ended, so a failure says which pass caused it.
+#include <string>
+
+#include "gl/TimerQueryRing.h"
+
+namespace sb {
+
+class PassTimer {
+public:
+    explicit PassTimer(TimerQueryRing* ring) : mRing(ring) {}
+    /// `technique` prefixes pass names in error messages ("shadowmap/depth").
+    void setTechnique(const std::string& technique) { mTechnique = technique; }
+    /// Ends the previous pass (error check) and starts `pass`. `pass` must be a string literal or
+    /// otherwise outlive the frame (it is kept by pointer in the query ring).
+    void begin(const char* pass);
+    /// Ends the last pass of the frame (error check).
+    void end();
+
+private:
+    TimerQueryRing* mRing;
+    std::string mTechnique;
+    bool mOpen = false;
+};
+
+} // namespace sb

@@ -1,0 +1,23 @@
+#pragma once
+#include <vector>
+
+#include "techniques/MeshBuffers.h"
+#include "techniques/Submitter.h"
+
+namespace sb {
+
+/// VBO/IBO per mesh, one glDrawElements per instance with per-instance uniforms. Instances are drawn
+/// grouped by mesh (order fixed at upload) so the VAO changes once per mesh, not per instance.
+class RetainedSubmitter final : public Submitter {
+public:
+    SubmitMode mode() const override { return SubmitMode::Retained; }
+    void upload(const Scene& scene) override;
+    void draw(DrawSet set) override;
+
+private:
+    const Scene* mScene = nullptr;
+    MeshBuffers mBuffers;
+    std::vector<uint32_t> mOrder; ///< instance indices sorted by mesh
+};
+
+} // namespace sb

@@ -1,0 +1,63 @@
+#pragma once
+// Submission is orthogonal to technique (DESIGN.md section 5): techniques never loop over scene draws,
+// they ask a Submitter to draw a set of instances with the program they have bound. The four modes are
+// the four ways an application of each era fed geometry to GL, so the CPU cost of submission can be
+// varied without touching the technique:
+//   immediate   glBegin/glEnd with generic attributes, per-instance uniforms (the thesis's CPU-bound case)
+//   displaylist one display list per mesh, compiled at upload (the thesis's retained path)
+//   retained    one VAO (VBO+IBO) per mesh, one glDrawElements per instance
+//   instanced   one glDrawElementsInstanced per mesh and instance set, per-instance attributes
+// Vertex attributes: location 0 position, 1 normal. Per-instance data: uniforms at location 0 (mat4
+// model) and 4 (vec4 colour rgb + object id) or, instanced, attributes 4..7 and 8. Shaders include
+// shaders/common/instance.glsl, which reads either form depending on the SB_INSTANCED define.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gl/ProgramCache.h"
+#include "scenes/Scene.h"
+
+namespace sb {
+
+enum class SubmitMode { Immediate, DisplayList, Retained, Instanced };
+const char* submitModeName(SubmitMode m); ///< "immediate", "displaylist", "retained", "instanced"
+std::optional<SubmitMode> parseSubmitMode(const std::string& name);
+constexpr SubmitMode kAllSubmitModes[] = {SubmitMode::Immediate, SubmitMode::DisplayList,
+                                          SubmitMode::Retained, SubmitMode::Instanced};
+
+/// Which instances a draw covers: shadow casters, shadow receivers, or all.
+enum class DrawSet { All, Casters, Receivers };
+
+/// What the submitter sent since the last reset (counters of the CSV row, per frame).
+struct SubmitStats {
+    uint64_t drawCalls = 0;
+    uint64_t triangles = 0;
+    uint64_t instances = 0;
+};
+
+class Submitter {
+public:
+    virtual ~Submitter() = default;
+    static std::unique_ptr<Submitter> create(SubmitMode mode);
+
+    virtual SubmitMode mode() const = 0;
+    /// Untimed preparation for a scene: buffers, display lists, instance buffers, draw orders.
+    /// Must be called with a current context; may be called again for a new scene.
+    virtual void upload(const Scene& scene) = 0;
+    /// Draws every instance of `set` with the currently bound program.
+    virtual void draw(DrawSet set) = 0;
+    /// Defines the vertex stage needs for this mode (SB_INSTANCED for instanced).
+    virtual Defines defines() const { return {}; }
+
+    const SubmitStats& stats() const { return mStats; }
+    void resetStats() { mStats = {}; }
+
+protected:
+    static bool inSet(const Instance& inst, DrawSet set);
+    /// Sets the per-instance uniforms (locations 0 and 4) of the bound program.
+    static void setInstanceUniforms(const Instance& inst);
+    SubmitStats mStats;
+};
+
+} // namespace sb

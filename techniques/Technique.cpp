@@ -1,0 +1,19 @@
+#include "techniques/Technique.h"
+
+namespace sb {
+
+Technique::Technique(TechniqueInfo info) : mInfo(std::move(info)), mProperties(mInfo.name, mInfo.properties) {}
+
+std::string Technique::checkCapabilities(const Context& context) const {
+    for (const Capability& cap : mInfo.capabilities) {
+        bool versionOk = context.glMajor > cap.glMajor ||
+                         (context.glMajor == cap.glMajor && context.glMinor >= cap.glMinor);
+        bool extensionOk = cap.extension.empty() || context.hasExtension(cap.extension);
+        if (!versionOk || !extensionOk)
+            return mInfo.name + " needs " + cap.name + " (not available on " + context.renderer + ", GL " +
+                   context.version + ")";
+    }
+    return "";
+}
+
+} // namespace sb

@@ -1,0 +1,100 @@
+#pragma once
+// The technique interface (DESIGN.md section 4). A technique declares, before it does anything, its
+// name, effects, the GL capabilities it needs, its passes and its properties (TechniqueInfo); then the
+// harness calls setScene (untimed precompute), compile (programs for the current properties, scene
+// effects and submission mode) and execute once per measured frame. Every technique writes, besides
+// colour, the visibility target (FrameTargets attachment 1: channel i = light i, 1 lit, 0 shadowed).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/Context.h"
+#include "gl/FrameTargets.h"
+#include "gl/ProgramCache.h"
+#include "scenes/Scene.h"
+#include "techniques/PassTimer.h"
+#include "techniques/PropertySet.h"
+#include "techniques/Submitter.h"
+
+namespace sb {
+
+/// A GL requirement: a minimum version or an extension. Checked against the context before a run; a
+/// missing one is a clear skip (ExitCode::Unsupported), never a crash.
+struct Capability {
+    std::string name;      ///< shown to the user: "GL 4.5", "GL_ARB_depth_clamp"
+    int glMajor = 0;       ///< version requirement (0 = none)
+    int glMinor = 0;
+    std::string extension; ///< extension requirement ("" = none)
+};
+
+struct TechniqueInfo {
+    std::string name;        ///< registry name, lower case: "shadowmap"
+    std::string description; ///< one line for --list
+    EffectMask effects = 0;  ///< what it can produce
+    std::vector<Capability> capabilities;
+    std::vector<std::string> passes; ///< stable names: GPU timer scopes and CSV columns
+    std::vector<PropertyDesc> properties;
+};
+
+/// Named counters of the last frame ("triangles", "draw_calls", "shadow_map_texels" ...), in a stable
+/// order: they become CSV columns "counter_<name>".
+using Counters = std::vector<std::pair<std::string, double>>;
+
+struct CompileContext {
+    ProgramCache& programs;
+    const Scene& scene;
+    const Submitter& submitter; ///< its defines() go into every scene-drawing program
+    const Context& context;
+};
+
+struct FrameContext {
+    const Scene& scene;
+    glm::mat4 view{1.0f}, proj{1.0f};
+    glm::vec3 eye{0.0f};
+    FrameTargets& targets; ///< bound and cleared by the harness before execute()
+    Submitter& submitter;
+    PassTimer& passes;
+    uint64_t frameIndex = 0;
+};
+
+class Technique {
+public:
+    explicit Technique(TechniqueInfo info);
+    virtual ~Technique() = default;
+    Technique(const Technique&) = delete;
+    Technique& operator=(const Technique&) = delete;
+
+    const TechniqueInfo& info() const { return mInfo; }
+    const std::string& name() const { return mInfo.name; }
+    PropertySet& properties() { return mProperties; }
+    const PropertySet& properties() const { return mProperties; }
+
+    /// "" when every capability is present, else "shadowmap needs GL_ARB_x (not exposed by <renderer>)".
+    std::string checkCapabilities(const Context& context) const;
+
+    /// Untimed precompute for a scene (adjacency, planes, fitted cameras, GPU resources).
+    /// Throws sb::Error(ExitCode::Unsupported) for scenes it cannot handle (e.g. a light type).
+    virtual void setScene(const Scene& scene) = 0;
+    /// Builds the programs for the current properties, scene effects and submission mode.
+    virtual void compile(const CompileContext& ctx) = 0;
+    /// Renders one frame into ctx.targets, calling ctx.passes.begin() at each declared pass.
+    virtual void execute(FrameContext& ctx) = 0;
+    /// Counters of the last executed frame.
+    virtual Counters counters() const { return {}; }
+    /// Sorted, '|'-joined keys of the programs compile() selected: the permutation logged per row.
+    const std::string& permutationKey() const { return mPermutationKey; }
+
+protected:
+    void setPermutationKey(std::string key) { mPermutationKey = std::move(key); }
+
+private:
+    TechniqueInfo mInfo;
+    PropertySet mProperties;
+    std::string mPermutationKey;
+};
+
+} // namespace sb

@@ -1,0 +1,38 @@
+#include "techniques/TechniqueRegistry.h"
+
+#include "scenes/Error.h"
+#include "techniques/NoneTechnique.h"
+#include "techniques/ShadowMapTechnique.h"
+
+namespace sb {
+
+const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
+    // The one table of techniques. Order is the order of --list and of "all".
+    static const std::vector<Entry> kEntries = {
+        {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
+        {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
+    };
+    return kEntries;
+}
+
+std::vector<std::string> TechniqueRegistry::names() {
+    std::vector<std::string> out;
+    for (const Entry& e : entries()) out.emplace_back(e.name);
+    return out;
+}
+
+std::unique_ptr<Technique> TechniqueRegistry::create(const std::string& name) {
+    for (const Entry& e : entries())
+        if (name == e.name) return e.create();
+    std::string known;
+    for (const Entry& e : entries()) known += (known.empty() ? "" : ", ") + std::string(e.name);
+    throw Error("unknown technique '" + name + "' (known: " + known + ")");
+}
+
+std::unique_ptr<Technique> TechniqueRegistry::create(const TechniqueSpec& spec) {
+    auto t = create(spec.name);
+    t->properties().apply(spec.properties);
+    return t;
+}
+
+} // namespace sb

@@ -1,0 +1,194 @@
+// The bench binary end to end: --help, --list, a short run writing every documented CSV column, and
+// each bad input of the foundation issue: one clear line naming what was wrong, a non-zero exit code,
+// nothing already written lost.
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "bench/CsvWriter.h"
+#include "TestSupport.h"
+
+using namespace sb;
+using test::runCommand;
+
+namespace {
+
+const std::string kBench = SB_BENCH_BINARY;
+// Small and fast: the CLI tests check behaviour, not performance.
+const std::string kQuick = " --instances 4 --size 96x96 --frames 2 --warmup 1 --no-timer-check";
+
+std::string bench(const std::string& args) { return kBench + " " + args; }
+
+int countLines(const std::string& s, const std::string& prefix) {
+    int n = 0;
+    size_t pos = 0;
+    while ((pos = s.find(prefix, pos)) != std::string::npos) {
+        ++n;
+        pos += prefix.size();
+    }
+    return n;
+}
+
+// The column names the README documents (backticked names in the table of its "CSV columns" section).
+std::vector<std::string> documentedColumns() {
+    std::string readme = test::readFile(std::string(SB_SOURCE_DIR) + "/README.md");
+    size_t start = readme.find("## CSV columns");
+    size_t end = readme.find("\n## ", start + 5);
+    std::string section = readme.substr(start, end - start);
+    std::vector<std::string> cols;
+    std::regex row(R"(\n\| `([a-z0-9_<>]+)`)");
+    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator(); ++it)
+        cols.push_back((*it)[1]);
+    return cols;
+}
+
+bool headerHas(const std::vector<std::string>& header, const std::string& documented) {
+    size_t lt = documented.find('<');
+    if (lt == std::string::npos) return std::find(header.begin(), header.end(), documented) != header.end();
+    // A pattern such as gpu_<pass>_ms_median: some column with that prefix and suffix.
+    std::string prefix = documented.substr(0, lt), suffix = documented.substr(documented.find('>') + 1);
+    return std::any_of(header.begin(), header.end(), [&](const std::string& h) {
+        return h.size() > prefix.size() + suffix.size() && h.rfind(prefix, 0) == 0 &&
+               h.compare(h.size() - suffix.size(), suffix.size(), suffix) == 0;
+    });
+}
+
+TEST(Cli, HelpShowsExamples) {
+    auto r = runCommand(bench("--help"));
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.output.find("Examples:"), std::string::npos);
+    EXPECT_NE(r.output.find("--technique"), std::string::npos);
+}
+
+TEST(Cli, ListShowsTechniquesEffectsPassesAndProperties) {
+    auto r = runCommand(bench("--list"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* s : {"none", "shadowmap", "passes:   depth, lighting", "resolution", "bias_constant", "bias_slope",
+                          "pcf", "hardware_compare", "default 2048", "[16, 8192]", "hard_shadows", "aircraft"})
+        EXPECT_NE(r.output.find(s), std::string::npos) << "missing '" << s << "' in:\n" << r.output;
+}
+
+TEST(Cli, ShortRunWritesEveryDocumentedColumn) {
+    std::string dir = test::freshDir("cli-run");
+    std::string csv = dir + "/r.csv", samples = dir + "/s.csv", shot = dir + "/c.png", vis = dir + "/v.png";
+    auto r = runCommand(bench("-t none -t shadowmap:pcf=3" + kQuick + " --csv " + csv + " --samples " + samples +
+                              " --screenshot " + shot + " --visibility " + vis));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    CsvTable t = CsvWriter::read(csv);
+    ASSERT_EQ(t.rows.size(), 2u);
+    auto cols = documentedColumns();
+    ASSERT_GT(cols.size(), 30u) << "README CSV section not found or too short";
+    for (const std::string& c : cols) EXPECT_TRUE(headerHas(t.header, c)) << "documented column missing: " << c;
+    // Every column in the file is documented too.
+    for (const std::string& h : t.header)
+        EXPECT_TRUE(std::any_of(cols.begin(), cols.end(), [&](const std::string& c) { return headerHas({h}, c); }))
+            << "undocumented column: " << h;
+    auto col = [&](const std::string& name) {
+        return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
+    };
+    EXPECT_EQ(t.rows[0][col("technique")], "none");
+    EXPECT_EQ(t.rows[1][col("technique")], "shadowmap");
+    EXPECT_NE(t.rows[1][col("properties")].find("pcf=3"), std::string::npos);
+    EXPECT_EQ(t.rows[1][col("frames")], "2");
+    EXPECT_EQ(t.rows[1][col("instances")], "4");
+    EXPECT_EQ(t.rows[1][col("timer_verdict")], "unchecked");
+    CsvTable s = CsvWriter::read(samples);
+    EXPECT_EQ(s.rows.size(), 4u); // 2 techniques x 2 frames
+    EXPECT_TRUE(std::filesystem::exists(dir + "/c_none.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir + "/c_shadowmap.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir + "/v_shadowmap.png"));
+}
+
+TEST(Cli, TimerVerdictIsMeasuredAndUntrustedNumbersAreHidden) {
+    std::string dir = test::freshDir("cli-timer");
+    std::string csv = dir + "/r.csv";
+    auto r = runCommand(bench("-t shadowmap --instances 4 --size 96x96 --frames 2 --warmup 1 --csv " + csv));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    CsvTable t = CsvWriter::read(csv);
+    auto cell = [&](const std::string& name) {
+        return t.rows[0][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
+    };
+    std::string verdict = cell("timer_verdict");
+    ASSERT_TRUE(verdict == "trusted" || verdict == "untrusted") << verdict;
+    EXPECT_FALSE(cell("timer_reason").empty());
+    if (cell("renderer").find("llvmpipe") != std::string::npos) {
+        // DESIGN.md section 6: measured on Mesa 22.3 llvmpipe, TIME_ELAPSED does not follow the fill work.
+        EXPECT_EQ(verdict, "untrusted") << cell("timer_reason");
+    }
+    if (verdict == "untrusted") {
+        EXPECT_EQ(cell("gpu_ms_median"), "");
+        EXPECT_EQ(cell("gpu_depth_ms_median"), "");
+        EXPECT_NE(r.output.find("GPU times are not reported"), std::string::npos) << r.output;
+    } else {
+        EXPECT_NE(cell("gpu_ms_median"), "");
+    }
+}
+
+struct BadInput {
+    const char* name;
+    std::string args;
+    int exitCode;
+    const char* mustMention;
+};
+
+class BadInputs : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputs, OneClearLineAndNonZeroExit) {
+    const BadInput& b = GetParam();
+    std::string dir = test::freshDir(std::string("bad-") + b.name);
+    // A CSV with earlier results that must survive every failure byte for byte.
+    std::string csv = dir + "/keep.csv";
+    CsvWriter::appendRows(csv, {{{"technique", "earlier"}, {"wall_ms_median", "1.0"}}});
+    std::string before = test::readFile(csv);
+    std::string args = std::regex_replace(b.args, std::regex("\\$DIR"), dir);
+    if (args.find("--csv") == std::string::npos) args += " --csv " + csv;
+    auto r = runCommand(bench(args));
+    EXPECT_EQ(r.exitCode, b.exitCode) << r.output;
+    EXPECT_EQ(countLines(r.output, "bench: error:"), 1) << r.output;
+    std::string errorLine = r.output.substr(r.output.find("bench: error:"));
+    errorLine = errorLine.substr(0, errorLine.find('\n'));
+    EXPECT_NE(errorLine.find(b.mustMention), std::string::npos) << "error line: " << errorLine;
+    EXPECT_EQ(test::readFile(csv), before) << "the existing CSV changed";
+}
+
+const BadInput kBadInputs[] = {
+    {"unknown_technique", "-t shadowmapp" + kQuick, 2, "unknown technique 'shadowmapp'"},
+    {"unknown_property", "-t shadowmap:resolutoin=2048" + kQuick, 2, "resolutoin"},
+    {"out_of_range_property", "-t shadowmap:resolution=99999" + kQuick, 2, "[16, 8192]"},
+    {"bad_property_type", "-t shadowmap:pcf=three" + kQuick, 2, "pcf"},
+    {"property_without_value", "-t shadowmap:pcf" + kQuick, 2, "pcf"},
+    {"malformed_scene_json", "--scene " + std::string(SB_SOURCE_DIR) + "/tests/data/malformed.json" + kQuick, 2,
+     "malformed.json"},
+    {"scene_wrong_type", "--scene " + std::string(SB_SOURCE_DIR) + "/tests/data/wrong_type.json" + kQuick, 2,
+     "/layout/count"},
+    {"missing_scene", "--scene $DIR/nope.json" + kQuick, 2, "nope.json"},
+    {"missing_model", "--model $DIR/missing.obj" + kQuick, 2, "missing.obj"},
+    {"zero_instances", "--instances 0 --size 96x96 --frames 1", 2, "--instances"},
+    {"absurd_instances", "--instances 900000 --size 96x96 --frames 1", 2, "memory"},
+    {"bad_size", "--size 96by96", 2, "--size"},
+    {"bad_submit", "--submit sometimes" + kQuick, 2, "--submit"},
+    {"unknown_camera", "--camera sideways" + kQuick, 2, "sideways"},
+    {"unknown_backend", "--backend vulkan" + kQuick, 2, "vulkan"},
+    {"unknown_option", "--frobnicate" + kQuick, 2, "frobnicate"},
+    {"unsupported_point_light", "-t shadowmap --light point" + kQuick, 3, "point light"},
+    {"unwritable_csv", "-t none" + kQuick + " --csv /proc/shadowbench/r.csv", 1, "/proc/shadowbench/r.csv"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cli, BadInputs, ::testing::ValuesIn(kBadInputs),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
+    // none runs and appends its row; shadowmap then refuses the point light. The none row stays.
+    std::string dir = test::freshDir("cli-partial");
+    std::string csv = dir + "/r.csv";
+    auto r = runCommand(bench("-t none -t shadowmap --light point" + kQuick + " --csv " + csv));
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    CsvTable t = CsvWriter::read(csv);
+    ASSERT_EQ(t.rows.size(), 1u);
+    EXPECT_EQ(t.rows[0][size_t(std::find(t.header.begin(), t.header.end(), "technique") - t.header.begin())], "none");
+}
+
+} // namespace

@@ -1,0 +1,367 @@
+// Unit tests of scenes/SceneLoader: every error path names file, JSON path and expectation; the
+// layout is deterministic; command-line options act on what they promise and nothing else.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+#include <gtest/gtest.h>
+
+#include "scenes/Error.h"
+#include "scenes/Math.h"
+#include "scenes/SceneLoader.h"
+#include "scenes/SplitMix64.h"
+
+using namespace sb;
+
+namespace {
+
+const std::string kCube = std::string(SB_SOURCE_DIR) + "/tests/data/cube.obj";
+
+/// A small valid scene; `layoutExtra` is spliced into the layout object, `topExtra` at top level.
+std::string sceneJson(const std::string& layoutExtra = "", const std::string& topExtra = "") {
+    return R"({
+      "meshes": [{"name": "ball", "generator": "sphere", "tessellation": 4},
+                 {"name": "ground", "generator": "plane", "size": 50, "tessellation": 2}],
+      "instances": [{"mesh": "ground", "casts_shadow": false}],
+      "layout": {"mesh": "ball", "count": 10, "seed": 3, "region": [[-5, 1, -5], [5, 2, 5]])" +
+           layoutExtra + R"(},
+      "lights": [{"type": "directional", "direction": [0, -1, 0.5]}],
+      "cameras": [{"name": "far", "eye": [0, 20, 30]},
+                  {"name": "near", "follow": "first_instance", "offset": [0, 3, 0]}])" +
+           topExtra + "}";
+}
+
+std::string errorOf(const std::string& json, const SceneOptions& options = {}) {
+    try {
+        SceneLoader::parse(json, "test.json", options);
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::BadInput);
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::vector<glm::vec3> layoutPositions(const Scene& s) {
+    std::vector<glm::vec3> out;
+    for (const auto& i : s.instances)
+        if (i.fromLayout) out.push_back(i.position);
+    return out;
+}
+
+/// `json` with the first occurrence of `from` replaced by `to` (the test fails if it is missing).
+std::string replaced(std::string json, const std::string& from, const std::string& to) {
+    const size_t at = json.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? json : json.replace(at, from.size(), to);
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+    return haystack.find(needle) != std::string::npos;
+}
+
+} // namespace
+
+TEST(SceneLoaderTest, ValidSceneLoads) {
+    const Scene s = SceneLoader::parse(sceneJson(), "dir/test.json");
+    EXPECT_EQ(s.name, "test");
+    EXPECT_EQ(s.sourcePath, "dir/test.json");
+    ASSERT_EQ(s.instances.size(), 11u); // ground + 10 layout
+    EXPECT_FALSE(s.instances[0].fromLayout);
+    for (size_t i = 0; i < s.instances.size(); ++i) {
+        EXPECT_EQ(s.instances[i].objectId, i + 1) << "objectId is 1-based in instance order";
+        // updateTransforms() ran: the model matrix moves the origin to the position.
+        EXPECT_EQ(glm::vec3(s.instances[i].model[3]), s.instances[i].position);
+    }
+    for (const auto& p : layoutPositions(s)) {
+        EXPECT_TRUE(p.x >= -5 && p.x <= 5 && p.y >= 1 && p.y <= 2 && p.z >= -5 && p.z <= 5);
+    }
+    EXPECT_EQ(s.effects, uint32_t(Effect::HardShadows)); // the default
+    EXPECT_NEAR(glm::length(s.lights[0].direction), 1.0f, 1e-6f);
+    EXPECT_EQ(s.totalTriangles(), s.meshes[1].triangleCount() + 10 * s.meshes[0].triangleCount());
+}
+
+TEST(SceneLoaderTest, MalformedJsonGivesFileAndPosition) {
+    const std::string e = errorOf("{\n  \"meshes\": [\n  }\n");
+    EXPECT_TRUE(contains(e, "test.json: invalid JSON")) << e;
+    EXPECT_TRUE(contains(e, "line 3")) << e;
+}
+
+TEST(SceneLoaderTest, WrongTypesNameTheJsonPath) {
+    std::string json = sceneJson();
+    json = replaced(json, "\"count\": 10", "\"count\": \"ten\"");
+    EXPECT_EQ(errorOf(json), "test.json: /layout/count: expected a positive integer, got \"ten\"");
+    EXPECT_EQ(errorOf(sceneJson(", \"scale\": -2")),
+              "test.json: /layout/scale: expected a positive number, got -2");
+    std::string light = sceneJson();
+    light = replaced(light, "[0, -1, 0.5]", "[0, 0, 0]");
+    EXPECT_EQ(errorOf(light),
+              "test.json: /lights/0/direction: expected a non-zero direction [x, y, z], got [0,0,0]");
+    EXPECT_EQ(errorOf(sceneJson("", ", \"ambient\": [1, 2]")),
+              "test.json: /ambient: expected an array of 3 numbers, got [1,2]");
+    EXPECT_EQ(errorOf("[1, 2]"), "test.json: /: expected an object, got [1,2]");
+    EXPECT_TRUE(contains(errorOf("{\"meshes\": []}"), "/meshes: expected a non-empty array"));
+}
+
+TEST(SceneLoaderTest, UnknownKeysAreErrors) {
+    const std::string top = errorOf(sceneJson("", ", \"camreas\": []"));
+    EXPECT_TRUE(contains(top, "test.json: /camreas: unknown key (valid keys: name, description, meshes"))
+        << top;
+    std::string json = sceneJson();
+    json = replaced(json, "\"tessellation\": 4", "\"radiuss\": 4");
+    const std::string nested = errorOf(json);
+    EXPECT_TRUE(contains(nested, "test.json: /meshes/0/radiuss: unknown key")) << nested;
+    // A parameter of another generator is unknown too (a size on a sphere).
+    json = sceneJson();
+    json = replaced(json, "\"tessellation\": 4", "\"size\": 4");
+    EXPECT_TRUE(contains(errorOf(json), "/meshes/0/size: unknown key"));
+}
+
+TEST(SceneLoaderTest, UnknownGeneratorListsTheValidOnes) {
+    std::string json = sceneJson();
+    json = replaced(json, "\"sphere\"", "\"spere\"");
+    EXPECT_EQ(errorOf(json), "test.json: /meshes/0/generator: expected one of sphere, box, cylinder, plane, "
+                             "aircraft, teapot, got \"spere\"");
+}
+
+TEST(SceneLoaderTest, UnknownMeshReferenceIsNamed) {
+    std::string json = sceneJson();
+    json = replaced(json, "{\"mesh\": \"ground\"", "{\"mesh\": \"grund\"");
+    EXPECT_EQ(errorOf(json), "test.json: /instances/0/mesh: unknown mesh \"grund\" (meshes: ball, ground)");
+}
+
+TEST(SceneLoaderTest, InstanceCountsAreBounded) {
+    SceneOptions zero;
+    zero.instances = 0;
+    EXPECT_EQ(errorOf(sceneJson(), zero), "--instances must be at least 1");
+    std::string json = sceneJson();
+    json = replaced(json, "\"count\": 10", "\"count\": 0");
+    EXPECT_EQ(errorOf(json), "test.json: /layout/count: expected a positive integer, got 0");
+    SceneOptions tooMany;
+    tooMany.instances = 1000001;
+    EXPECT_TRUE(
+        contains(errorOf(sceneJson(), tooMany), "--instances 1000001: more than the maximum of 1000000"));
+}
+
+TEST(SceneLoaderTest, AbsurdInstancesExceedTheMemoryLimit) {
+    // 1e6 aircraft: ~2.6k triangles * 72 B each in display lists = ~190 GB, far over 8 GiB.
+    std::string json = sceneJson();
+    json = replaced(json, "\"generator\": \"sphere\", \"tessellation\": 4", "\"generator\": \"aircraft\"");
+    SceneOptions options;
+    options.instances = 1000000;
+    const std::string e = errorOf(json, options);
+    EXPECT_EQ(e.rfind("--instances 1000000: estimated memory ", 0), 0u) << e;
+    EXPECT_TRUE(contains(e, "GiB exceeds the limit of 8.0 GiB")) << e;
+    // The estimate is instances * (triangles * 72 + 128) + meshes: with a tiny limit even 10 fail.
+    SceneOptions tiny;
+    tiny.memoryLimitBytes = 1000;
+    EXPECT_TRUE(
+        contains(errorOf(sceneJson(), tiny), "test.json: /layout/count: 10 instances: estimated memory"));
+    tiny.memoryLimitBytes = 100000000;
+    EXPECT_NO_THROW(SceneLoader::parse(sceneJson(), "test.json", tiny));
+}
+
+TEST(SceneLoaderTest, MissingModelFileIsNamed) {
+    std::string json = sceneJson();
+    json = replaced(json, "\"generator\": \"sphere\", \"tessellation\": 4", "\"file\": \"nope.obj\"");
+    EXPECT_EQ(errorOf(json), "test.json: /meshes/0/file: model file 'nope.obj': no such file");
+    SceneOptions options;
+    options.modelPath = "/nonexistent/x.obj";
+    EXPECT_EQ(errorOf(sceneJson(), options), "model file '/nonexistent/x.obj': no such file");
+}
+
+TEST(SceneLoaderTest, ModelFileIsFoundRelativeToTheSceneFile) {
+    std::string json = sceneJson();
+    json = replaced(json, "\"generator\": \"sphere\", \"tessellation\": 4", "\"file\": \"data/cube.obj\"");
+    const Scene s = SceneLoader::parse(json, std::string(SB_SOURCE_DIR) + "/tests/scene.json");
+    EXPECT_EQ(s.meshes[0].triangleCount(), 12u);
+    EXPECT_EQ(s.meshes[0].name, "ball");
+}
+
+TEST(SceneLoaderTest, ModelOptionReplacesTheLayoutMeshAtTheSameSize) {
+    SceneOptions options;
+    options.modelPath = kCube;
+    const Scene s = SceneLoader::parse(sceneJson(), "test.json", options);
+    const Mesh& m = s.meshes[0];
+    EXPECT_EQ(m.triangleCount(), 12u);
+    // The cube (bounding-sphere radius sqrt 3) is scaled onto the unit sphere's radius 1: its corners
+    // end at distance 1 from the centre.
+    for (const auto& p : m.positions) EXPECT_NEAR(glm::length(p), 1.0f, 1e-5f);
+}
+
+TEST(SceneLoaderTest, LayoutIsDeterministicPerSeed) {
+    const auto a = layoutPositions(SceneLoader::parse(sceneJson(), "test.json"));
+    const auto b = layoutPositions(SceneLoader::parse(sceneJson(), "test.json"));
+    EXPECT_EQ(a, b);
+    SceneOptions other;
+    other.seed = 4;
+    const auto c = layoutPositions(SceneLoader::parse(sceneJson(), "test.json", other));
+    ASSERT_EQ(a.size(), c.size());
+    for (size_t i = 0; i < a.size(); ++i) EXPECT_NE(a[i], c[i]);
+    // The JSON seed 3 equals --seed 3.
+    other.seed = 3;
+    EXPECT_EQ(layoutPositions(SceneLoader::parse(sceneJson(), "test.json", other)), a);
+}
+
+TEST(SceneLoaderTest, LayoutRandomNumbersAreTheReferenceSplitMix64) {
+    // Published reference outputs of SplitMix64 with seed 0 (Vigna's splitmix64.c): the layout does
+    // not depend on the standard library's distributions.
+    SplitMix64 rng(0);
+    EXPECT_EQ(rng.next(), 0xe220a8397b1dcdafull);
+    EXPECT_EQ(rng.next(), 0x6e789e6aa1b965f4ull);
+    EXPECT_EQ(rng.next(), 0x06c45d188009454full);
+    // The first layout instance is therefore fixed: x = lo + (hi - lo) * (next() >> 11) / 2^53.
+    SplitMix64 ref(3);
+    const double u = double(ref.next() >> 11) / 9007199254740992.0;
+    EXPECT_FLOAT_EQ(layoutPositions(SceneLoader::parse(sceneJson(), "test.json"))[0].x,
+                    float(-5.0 + 10.0 * u));
+}
+
+TEST(SceneLoaderTest, InstancesOptionOverridesTheCount) {
+    SceneOptions options;
+    options.instances = 37;
+    const Scene s = SceneLoader::parse(sceneJson(), "test.json", options);
+    EXPECT_EQ(layoutPositions(s).size(), 37u);
+    // The first instances do not depend on the count (same stream).
+    const auto ten = layoutPositions(SceneLoader::parse(sceneJson(), "test.json"));
+    for (size_t i = 0; i < ten.size(); ++i) EXPECT_EQ(layoutPositions(s)[i], ten[i]);
+}
+
+TEST(SceneLoaderTest, ScaleOptionAppliesOnlyToLayoutInstances) {
+    SceneOptions options;
+    options.scale = 10.0f;
+    const Scene s = SceneLoader::parse(sceneJson(", \"scale\": 0.5"), "test.json", options);
+    for (const auto& i : s.instances) EXPECT_FLOAT_EQ(i.scale, i.fromLayout ? 5.0f : 1.0f);
+    // The near camera keeps its framing: offset 3 in units of the instance scale.
+    const CameraPreset* near = s.findCamera("near");
+    ASSERT_NE(near, nullptr);
+    EXPECT_NEAR(glm::length(near->eye - near->target), 15.0f, 1e-4f);
+}
+
+TEST(SceneLoaderTest, TessellationOptionOverridesAllButThePlane) {
+    SceneOptions options;
+    options.tessellation = 8;
+    const Scene s = SceneLoader::parse(sceneJson(), "test.json", options);
+    EXPECT_EQ(s.meshes[0].triangleCount(), size_t(4 * 8 * 7)); // sphere at tess 8
+    EXPECT_EQ(s.meshes[1].triangleCount(), size_t(2 * 2 * 2)); // plane keeps its own 2
+}
+
+TEST(SceneLoaderTest, LightTypeOverrideKeepsTheLightAimedAtTheScene) {
+    const Scene base = SceneLoader::parse(sceneJson(), "test.json");
+    const glm::vec3 dir = base.lights[0].direction;
+    const Aabb casters = base.computeBounds(true);
+    for (LightType type : {LightType::Point, LightType::Spot}) {
+        SceneOptions options;
+        options.lightType = type;
+        const Scene s = SceneLoader::parse(sceneJson(), "test.json", options);
+        const Light& l = s.lights[0];
+        EXPECT_EQ(l.type, type);
+        // The light sits up-light of the casters' centre, on the line along the old direction.
+        const glm::vec3 toCentre = casters.center() - l.position;
+        EXPECT_NEAR(glm::dot(glm::normalize(toCentre), dir), 1.0f, 1e-5f);
+        EXPECT_GT(glm::length(toCentre), 0.5f * glm::length(casters.extent()));
+        if (type != LightType::Spot) continue;
+        EXPECT_NEAR(glm::dot(l.direction, dir), 1.0f, 1e-6f);
+        // The cone encloses every corner of the casters' bounds.
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 p(c & 1 ? casters.max.x : casters.min.x, c & 2 ? casters.max.y : casters.min.y,
+                              c & 4 ? casters.max.z : casters.min.z);
+            const float angle =
+                glm::degrees(std::acos(glm::dot(glm::normalize(p - l.position), l.direction)));
+            EXPECT_LT(angle, l.spotOuterDeg);
+        }
+    }
+}
+
+TEST(SceneLoaderTest, EffectsAndUnknownEffect) {
+    const Scene s =
+        SceneLoader::parse(sceneJson("", ", \"effects\": [\"hard_shadows\", \"self_shadowing\"]"), "t.json");
+    EXPECT_EQ(effectMaskToString(s.effects), "hard_shadows+self_shadowing");
+    EXPECT_TRUE(contains(errorOf(sceneJson("", ", \"effects\": [\"soft\"]")),
+                         "/effects/0: expected one of hard_shadows"));
+}
+
+TEST(SceneLoaderTest, ContentHashChangesWithContentOnly) {
+    const Scene a = SceneLoader::parse(sceneJson(), "a.json");
+    const Scene b = SceneLoader::parse(sceneJson(), "b.json");
+    EXPECT_EQ(a.computeContentHash(), b.computeContentHash()); // the file name is not content
+    EXPECT_EQ(a.computeContentHash().size(), 16u);
+    Scene moved = a;
+    moved.lights[0].direction = glm::normalize(glm::vec3(0.1f, -1.0f, 0.5f));
+    EXPECT_NE(moved.computeContentHash(), a.computeContentHash());
+    Scene seeded = a;
+    seeded.instances.back().position.x += 0.001f;
+    seeded.updateTransforms();
+    EXPECT_NE(seeded.computeContentHash(), a.computeContentHash());
+}
+
+TEST(SceneLoaderTest, BuiltinScenesLoadWithTheFourCameras) {
+    const auto names = SceneLoader::listBuiltinScenes();
+    for (const char* name : {"aircraft", "teapot", "primitives", "sphere_plane"}) {
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+        const Scene s = SceneLoader::load(name);
+        EXPECT_EQ(s.name, name);
+        for (const char* cam : {"far", "mid", "near", "top"})
+            EXPECT_NE(s.findCamera(cam), nullptr) << name << " " << cam;
+        // "top" looks straight down.
+        const CameraPreset& top = *s.findCamera("top");
+        EXPECT_NEAR(glm::normalize(top.target - top.eye).y, -1.0f, 1e-6f) << name;
+        // The whole layout is in view of "far" (aspect 1, the narrowest a window gets here).
+        const CameraPreset& far = *s.findCamera("far");
+        const glm::mat4 vp = cameraProjection(far, 1.0f) * cameraView(far);
+        for (const auto& inst : s.instances) {
+            if (!inst.fromLayout) continue;
+            const Aabb b = transformBounds(s.meshes[inst.mesh].computeBounds(), inst.model);
+            for (int c = 0; c < 8; ++c) {
+                const glm::vec4 p = vp * glm::vec4(c & 1 ? b.max.x : b.min.x, c & 2 ? b.max.y : b.min.y,
+                                                   c & 4 ? b.max.z : b.min.z, 1.0f);
+                ASSERT_GT(p.w, 0.0f);
+                EXPECT_LE(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) / p.w, 1.0f) << name;
+            }
+        }
+    }
+}
+
+TEST(SceneLoaderTest, BuiltinLayoutScenesFollowTheFirstInstanceStraightDown) {
+    for (const char* name : {"aircraft", "teapot", "primitives"}) {
+        const Scene s = SceneLoader::load(name);
+        const auto first =
+            std::find_if(s.instances.begin(), s.instances.end(), [](auto& i) { return i.fromLayout; });
+        ASSERT_NE(first, s.instances.end());
+        const CameraPreset& near = *s.findCamera("near");
+        EXPECT_EQ(near.target, first->position) << name;
+        EXPECT_NEAR(glm::normalize(near.target - near.eye).y, -1.0f, 1e-6f) << name;
+        EXPECT_GT(glm::length(glm::cross(near.up, near.target - near.eye)), 0.0f)
+            << name << ": degenerate up";
+    }
+    const Scene aircraft = SceneLoader::load("aircraft");
+    EXPECT_EQ(layoutPositions(aircraft).size(), 200u);
+    EXPECT_EQ(effectMaskToString(aircraft.effects), "hard_shadows+self_shadowing");
+}
+
+TEST(SceneLoaderTest, SpherePlaneIsTheAnalyticSetup) {
+    const Scene s = SceneLoader::load("sphere_plane");
+    const auto sphere =
+        std::find_if(s.instances.begin(), s.instances.end(), [](auto& i) { return i.castsShadow; });
+    ASSERT_NE(sphere, s.instances.end());
+    EXPECT_EQ(sphere->position, glm::vec3(0, 3, 0));
+    const Aabb b = s.meshes[sphere->mesh].computeBounds();
+    EXPECT_NEAR(b.max.y, 1.0f, 1e-6f); // radius 1
+    EXPECT_NEAR(glm::dot(s.lights[0].direction, glm::normalize(glm::vec3(0.3f, -1, 0.2f))), 1.0f, 1e-6f);
+}
+
+TEST(SceneLoaderTest, UnknownSceneNameListsTheBuiltins) {
+    try {
+        SceneLoader::load("aircarft");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_TRUE(contains(e.what(), "unknown scene 'aircarft'")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "aircraft")) << e.what();
+    }
+    EXPECT_THROW(SceneLoader::load("/nonexistent/scene.json"), Error);
+}
+
+TEST(SceneLoaderTest, OptionsThatNeedALayoutSayWhenThereIsNone) {
+    SceneOptions options;
+    options.instances = 5;
+    EXPECT_THROW(SceneLoader::load("sphere_plane", options), Error);
+}

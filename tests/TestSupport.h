@@ -1,0 +1,87 @@
+#pragma once
+// Shared helpers of the GL and CLI tests: small run configurations, read-backs with world positions,
+// running the bench binary.
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bench/RunConfig.h"
+
+namespace sb::test {
+
+/// A quick configuration: tiny frame counts, no timer calibration, fixed size.
+inline RunConfig quickConfig(const std::string& scene, const std::string& camera, int size,
+                             SubmitMode submit = SubmitMode::Retained) {
+    RunConfig c;
+    c.scene = scene;
+    c.camera = camera;
+    c.width = c.height = size;
+    c.submit = submit;
+    c.frames = 1;
+    c.warmup = 0;
+    c.checkTimer = false;
+    c.quiet = true;
+    return c;
+}
+
+/// World position of every pixel from the depth buffer (row-major, bottom-up as GL reads). Pixels at
+/// depth 1 (background) get w = 0, others w = 1.
+inline std::vector<glm::vec4> unprojectDepth(const std::vector<float>& depth, int w, int h,
+                                             const glm::mat4& viewProj) {
+    glm::mat4 inv = glm::inverse(viewProj);
+    std::vector<glm::vec4> out(depth.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float d = depth[size_t(y) * size_t(w) + size_t(x)];
+            if (d >= 1.0f) continue;
+            glm::vec4 ndc((x + 0.5f) / float(w) * 2.0f - 1.0f, (y + 0.5f) / float(h) * 2.0f - 1.0f, d * 2.0f - 1.0f,
+                          1.0f);
+            glm::vec4 p = inv * ndc;
+            out[size_t(y) * size_t(w) + size_t(x)] = glm::vec4(glm::vec3(p) / p.w, 1.0f);
+        }
+    return out;
+}
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output; ///< stdout and stderr together
+};
+
+/// Runs a shell command, capturing stdout+stderr.
+inline CommandResult runCommand(const std::string& command) {
+    CommandResult r;
+    FILE* p = popen((command + " 2>&1").c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+    int status = pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+inline std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+/// A fresh empty directory under the build tree's temp area for one test.
+inline std::string freshDir(const std::string& name) {
+    auto dir = std::filesystem::temp_directory_path() / ("shadowbench-test-" + name + "-" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+} // namespace sb::test
