@@ -1,4 +1,5 @@
 #include "bench/ConsoleReport.h"
+#include "scenes/Strings.h"
 
 #include <cstdio>
 #include <ostream>
@@ -71,9 +72,7 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
         const TechniqueInfo& info = t->info();
         os << info.name << "  " << info.description << "\n";
         os << "  effects:  " << effectsText(info.effects) << "\n";
-        std::string passes;
-        for (const std::string& p : info.passes) passes += (passes.empty() ? "" : ", ") + p;
-        os << "  passes:   " << passes << "\n";
+        os << "  passes:   " << join(info.passes, ", ") << "\n";
         if (info.properties.empty()) os << "  properties: none\n";
         for (const PropertyDesc& p : info.properties)
             os << "  " << pad(p.name, 18) << pad(propertyTypeName(p.type), 7) << pad("default " + p.defaultValue, 16)
@@ -81,9 +80,7 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
         os << "\n";
     }
     os << "scenes: ";
-    std::string scenes;
-    for (const std::string& s : SceneLoader::listBuiltinScenes()) scenes += (scenes.empty() ? "" : ", ") + s;
-    os << scenes << "\n";
+    os << join(SceneLoader::listBuiltinScenes(), ", ") << "\n";
 }
 
 } // namespace sb

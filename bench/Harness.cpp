@@ -1,4 +1,5 @@
 #include "bench/Harness.h"
+#include "scenes/Strings.h"
 
 #include <chrono>
 #include <map>
@@ -18,8 +19,7 @@ double msSince(Clock::time_point a, Clock::time_point b) {
 
 const CameraPreset& pickCamera(const Scene& scene, const std::string& name) {
     if (const CameraPreset* c = scene.findCamera(name)) return *c;
-    std::string known;
-    for (const CameraPreset& c : scene.cameras) known += (known.empty() ? "" : ", ") + c.name;
+    std::string known = join(scene.cameras, ", ", [](const CameraPreset& c) { return c.name; });
     throw Error("--camera " + name + ": scene '" + scene.name + "' has no such camera (known: " + known + ")");
 }
 } // namespace

@@ -1,4 +1,5 @@
 #include "scenes/JsonReader.h"
+#include "scenes/Strings.h"
 
 #include <cmath>
 
@@ -15,10 +16,8 @@ void JsonReader::requireObject(std::initializer_list<std::string_view> allowed) 
         bool known = false;
         for (auto key : allowed) known = known || key == item.key();
         if (known) continue;
-        std::string valid;
-        for (auto key : allowed) valid += (valid.empty() ? "" : ", ") + std::string(key);
-        JsonReader(item.value(), mSource, mPath + "/" + item.key())
-            .error("unknown key (valid keys: " + valid + ")");
+        std::string valid = join(allowed, ", ", [](std::string_view k) { return std::string(k); });
+        JsonReader(item.value(), mSource, mPath + "/" + item.key()).error("unknown key (valid keys: " + valid + ")");
     }
 }
 

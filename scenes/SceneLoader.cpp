@@ -1,4 +1,5 @@
 #include "scenes/SceneLoader.h"
+#include "scenes/Strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -134,8 +135,7 @@ uint32_t meshReference(const Context& ctx, const JsonReader& r) {
     const std::string name = r.string();
     const auto it = ctx.meshByName.find(name);
     if (it != ctx.meshByName.end()) return it->second;
-    std::string known;
-    for (const auto& entry : ctx.meshByName) known += (known.empty() ? "" : ", ") + entry.first;
+    std::string known = join(ctx.meshByName, ", ", [](const auto& e) { return e.first; });
     r.error("unknown mesh \"" + name + "\" (meshes: " + known + ")");
 }
 
@@ -343,10 +343,7 @@ EffectMask parseEffects(const JsonReader& r) {
     for (const auto& e : r.elements()) {
         const auto effect = parseEffect(e.string());
         if (!effect) {
-            std::string valid;
-            for (Effect known : kAllEffects)
-                valid += (valid.empty() ? "" : ", ") + std::string(effectName(known));
-            e.fail("one of " + valid);
+            e.fail("one of " + join(kAllEffects, ", ", [](Effect k) { return std::string(effectName(k)); }));
         }
         mask |= uint32_t(*effect);
     }
@@ -447,8 +444,7 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
         if (looksLikePath(nameOrPath)) throw Error("scene file '" + nameOrPath + "': no such file");
         path = Paths::findResource("scenes/data/" + nameOrPath + ".json");
         if (path.empty()) {
-            std::string known;
-            for (const auto& name : listBuiltinScenes()) known += (known.empty() ? "" : ", ") + name;
+            std::string known = join(listBuiltinScenes(), ", ");
             throw Error("unknown scene '" + nameOrPath + "': not a file, and not a built-in scene (" + known +
                         ")");
         }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/Harness.h"
+#include "scenes/Error.h"
 #include "scenes/Math.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
