@@ -177,21 +177,22 @@ uint64_t estimateMemory(const Scene& scene, uint32_t layoutMesh, uint64_t layout
     return bytes + layoutCount * perInstance(layoutMesh);
 }
 
-/// The instance count of the layout: --instances wins over the file; both are bounded.
+/// The instance count of the layout: --instances wins over the file; both are bounded. The file's
+/// value is validated even when overridden, so a broken scene file never passes unnoticed.
 uint32_t layoutCount(const Context& ctx, const JsonReader& layout) {
-    if (ctx.options.instances) {
-        const uint32_t n = *ctx.options.instances;
-        if (n == 0) throw Error("--instances must be at least 1");
-        if (n > kMaxInstances)
-            throw Error("--instances " + std::to_string(n) + ": more than the maximum of " +
-                        std::to_string(kMaxInstances));
-        return n;
-    }
     const JsonReader count = layout["count"];
     const int64_t n = count.integer(1, INT64_MAX, "a positive integer");
     if (n > int64_t(kMaxInstances))
         count.error(std::to_string(n) + " instances: more than the maximum of " +
                     std::to_string(kMaxInstances));
+    if (ctx.options.instances) {
+        const uint32_t o = *ctx.options.instances;
+        if (o == 0) throw Error("--instances must be at least 1");
+        if (o > kMaxInstances)
+            throw Error("--instances " + std::to_string(o) + ": more than the maximum of " +
+                        std::to_string(kMaxInstances));
+        return o;
+    }
     return uint32_t(n);
 }
 

@@ -1,4 +1,5 @@
 #include "techniques/TechniqueRegistry.h"
+#include "scenes/Strings.h"
 
 #include "scenes/Error.h"
 #include "techniques/NoneTechnique.h"
@@ -24,8 +25,7 @@ std::vector<std::string> TechniqueRegistry::names() {
 std::unique_ptr<Technique> TechniqueRegistry::create(const std::string& name) {
     for (const Entry& e : entries())
         if (name == e.name) return e.create();
-    std::string known;
-    for (const Entry& e : entries()) known += (known.empty() ? "" : ", ") + std::string(e.name);
+    std::string known = join(names(), ", ");
     throw Error("unknown technique '" + name + "' (known: " + known + ")");
 }
 

@@ -133,6 +133,7 @@ struct BadInput {
     int exitCode;
     const char* mustMention;
 };
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
 
 class BadInputs : public ::testing::TestWithParam<BadInput> {};
 
@@ -178,7 +179,7 @@ const BadInput kBadInputs[] = {
 };
 
 INSTANTIATE_TEST_SUITE_P(Cli, BadInputs, ::testing::ValuesIn(kBadInputs),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
     // none runs and appends its row; shadowmap then refuses the point light. The none row stays.

@@ -23,6 +23,8 @@ struct SphereShadowCase {
     const char* techniqueProps; // applied to shadowmap
     SubmitMode submit;
 };
+// Names the case in gtest output instead of dumping its bytes.
+void PrintTo(const SphereShadowCase& c, std::ostream* os) { *os << c.name; }
 
 const SphereShadowCase kCases[] = {
     {"hw_compare_retained", "", SubmitMode::Retained},
@@ -119,7 +121,7 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadowMap, SphereShadow, ::testing::ValuesIn(kCases),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& p) { return std::string(p.param.name); });
 
 TEST(NoneTechnique, VisibilityIsOneEverywhere) {
     Harness h(test::quickConfig("sphere_plane", "top", 128));

@@ -38,6 +38,7 @@ struct ModeCase {
     const char* technique;
     SubmitMode mode;
 };
+void PrintTo(const ModeCase& c, std::ostream* os) { *os << c.technique << "/" << submitModeName(c.mode); }
 
 class SubmissionModes : public ::testing::TestWithParam<ModeCase> {};
 
@@ -70,8 +71,8 @@ const ModeCase kModeCases[] = {
     {"shadowmap", SubmitMode::Immediate},  {"shadowmap", SubmitMode::DisplayList}, {"shadowmap", SubmitMode::Instanced},
 };
 
-INSTANTIATE_TEST_SUITE_P(Submit, SubmissionModes, ::testing::ValuesIn(kModeCases), [](const auto& info) {
-    return std::string(info.param.technique) + "_" + submitModeName(info.param.mode);
+INSTANTIATE_TEST_SUITE_P(Submit, SubmissionModes, ::testing::ValuesIn(kModeCases), [](const auto& p) {
+    return std::string(p.param.technique) + "_" + submitModeName(p.param.mode);
 });
 
 struct Counts {
