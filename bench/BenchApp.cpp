@@ -106,6 +106,7 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("--backend", backend, "auto, egl-surfaceless, egl-device, osmesa, glfw")->capture_default_str();
     app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
     app.add_flag("--window", window, "on-screen viewer (GLFW) instead of a measurement");
+    app.add_option("--window-frames", c.windowFrames, "--window: quit after N frames (scripted checks; 0 = never)");
     app.add_option("--csv", c.csvPath, "append one row per technique to this CSV file (atomic)");
     app.add_option("--samples", c.samplesPath, "write per-frame samples to this CSV file");
     app.add_option("--screenshot", c.screenshotPath, "write the last frame's colour image (PNG)");
@@ -156,6 +157,7 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
         throw Error("--scale: expected a finite number in (0, 1e6]");
     if (c.frames < 1) throw Error("--frames " + std::to_string(c.frames) + ": must be at least 1");
     if (c.warmup < 0) throw Error("--warmup: must be 0 or more");
+    if (c.windowFrames < 0) throw Error("--window-frames: must be 0 or more");
     if (!(c.seconds >= 0.0 && c.seconds <= 86400.0)) throw Error("--seconds: expected 0..86400");
     if (!(maxMemoryGiB > 0.0)) throw Error("--max-memory-gib: must be positive");
     c.sceneOptions.memoryLimitBytes = uint64_t(maxMemoryGiB * double(1ull << 30));
@@ -170,8 +172,12 @@ int BenchApp::run(const RunConfig& config) {
     if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
 
     Harness harness(config);
-    if (config.context.backend == Backend::Glfw && config.context.visibleWindow)
-        return Viewer::run(harness, techniques);
+    if (config.context.backend == Backend::Glfw && config.context.visibleWindow) {
+        int code = Viewer::run(harness, techniques, config.windowFrames);
+        // The last frame shown, when asked for (the viewer draws with the same targets).
+        if (!config.screenshotPath.empty()) ImageWriter::writeColor(harness.targets(), config.screenshotPath);
+        return code;
+    }
     if (!config.quiet) ConsoleReport::printHeader(std::cout, harness);
     if (config.checkTimer) harness.calibrateTimer();
     if (!config.quiet) ConsoleReport::printTimerVerdict(std::cout, harness.timerVerdict());

@@ -69,8 +69,11 @@ public:
     RunResult measure(Technique& technique);
     /// Moves the camera (the viewer's orbit); measurements use the configured preset.
     void setCamera(const CameraPreset& camera);
-    /// Runs the timer-trust calibration (once; the verdict is cached).
+    /// Runs the timer-trust calibration (once; the verdict is cached). Where the verdict is
+    /// "untrusted", measured frames issue no timer queries at all: their numbers would never be shown,
+    /// and on llvmpipe each query is extra driver work inside the frame being measured.
     const TimerVerdict& calibrateTimer();
+    bool timerQueriesEnabled() const { return mTimerQueries; }
 
 private:
     void setFrameState();
@@ -89,6 +92,7 @@ private:
     ProgramCache mPrograms;
     TimerVerdict mVerdict;
     uint64_t mFrameIndex = 0;
+    bool mTimerQueries = true;
     double mSceneLoadMs = 0.0;
 };
 

@@ -28,6 +28,7 @@ struct RunConfig {
     std::string screenshotPath; ///< --screenshot: colour PNG (technique name inserted when several)
     std::string visibilityPath; ///< --visibility: visibility PNG
     bool checkTimer = true;     ///< run the GPU-timer trust calibration
+    int windowFrames = 0;       ///< --window: close after this many frames (0 = when the window closes)
     bool quiet = false;
     static constexpr int kMinFrames = 5;
 };

@@ -47,7 +47,7 @@ bool pressed(GLFWwindow* w, int key, std::set<int>& down) {
 }
 } // namespace
 
-int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techniques) {
+int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techniques, int maxFrames) {
     auto* window = static_cast<GLFWwindow*>(harness.context().nativeWindow());
     glfwSetScrollCallback(window, onScroll);
     const CameraPreset preset = harness.camera();
@@ -58,7 +58,8 @@ int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techn
     std::set<int> down;
     double lastX = 0, lastY = 0, wallEma = 0, cpuEma = 0;
     glfwGetCursorPos(window, &lastX, &lastY);
-    while (!harness.context().shouldClose()) {
+    int frames = 0;
+    while (!harness.context().shouldClose() && (maxFrames <= 0 || frames < maxFrames)) {
         if (!prepared[current]) {
             harness.prepare(*techniques[current]);
             prepared[current] = true;
@@ -100,6 +101,7 @@ int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techn
                       techniques[current]->name().c_str(), showVisibility ? " (visibility)" : "", wallEma, cpuEma);
         glfwSetWindowTitle(window, title);
         harness.context().present();
+        ++frames;
     }
     return 0;
 }

@@ -12,7 +12,8 @@ namespace sb {
 
 class Viewer {
 public:
-    static int run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techniques);
+    /// Runs until the window closes or Esc, or after `maxFrames` frames when it is positive.
+    static int run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techniques, int maxFrames = 0);
 };
 
 } // namespace sb

@@ -11,6 +11,8 @@ namespace sb {
 class PassTimer {
 public:
     explicit PassTimer(TimerQueryRing* ring) : mRing(ring) {}
+    /// nullptr: no GPU timestamps (the harness switches them off where the timer is untrusted).
+    void setRing(TimerQueryRing* ring) { mRing = ring; }
     /// `technique` prefixes pass names in error messages ("shadowmap/depth").
     void setTechnique(const std::string& technique) { mTechnique = technique; }
     /// Ends the previous pass (error check) and starts `pass`. `pass` must be a string literal or

@@ -1,6 +1,7 @@
 #include "techniques/PropertySet.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <optional>

@@ -181,6 +181,15 @@ const BadInput kBadInputs[] = {
 INSTANTIATE_TEST_SUITE_P(Cli, BadInputs, ::testing::ValuesIn(kBadInputs),
                          [](const auto& p) { return std::string(p.param.name); });
 
+TEST(Cli, WindowViewerRendersAndQuits) {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY (scripts/test.sh runs the suite under xvfb-run)";
+    std::string dir = test::freshDir("cli-window");
+    auto r = runCommand(bench("--window --window-frames 3 -t none -t shadowmap --instances 4 --size 96x96 "
+                              "--screenshot " + dir + "/w.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir + "/w.png"));
+}
+
 TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
     // none runs and appends its row; shadowmap then refuses the point light. The none row stays.
     std::string dir = test::freshDir("cli-partial");

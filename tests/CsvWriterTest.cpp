@@ -1,94 +1,293 @@
 // Atomic CSV appends (DESIGN.md section 7): nothing lost, header union, RFC 4180 quoting, failures that
-// leave the existing file byte-identical and no temporary files behind.
+// leave the existing file byte-identical and no temporary files behind. Every expected file content is
+// written out by hand; comparisons are exact (text, no tolerance).
+#include <cerrno>
+#include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "bench/CsvWriter.h"
 #include "scenes/Error.h"
-#include "TestSupport.h"
 
 using namespace sb;
 namespace fs = std::filesystem;
 
+// ---------------------------------------------------------------------------------------------------
+// rename() seam. This executable's definition takes precedence over the C library's for every call,
+// including the one inside CsvWriter, so a test can make the commit step fail or "crash" right after
+// the temp file was written, fsync'ed and closed. Off by default: it then forwards to renameat(),
+// which is what glibc's rename() does.
+namespace {
+enum class RenameMode { Real, Fail, Crash };
+RenameMode gRenameMode = RenameMode::Real;
+constexpr int kCrashExitCode = 42;
+} // namespace
+
+extern "C" int rename(const char* from, const char* to) noexcept {
+    switch (gRenameMode) {
+    case RenameMode::Fail: errno = EIO; return -1;
+    case RenameMode::Crash: _exit(kCrashExitCode); // dies like a killed process: no unwinding, no cleanup
+    case RenameMode::Real: break;
+    }
+    return renameat(AT_FDCWD, from, AT_FDCWD, to);
+}
+
 namespace {
 
-TEST(CsvWriterTest, NewFileThenAppendKeepsEarlierRows) {
-    std::string dir = test::freshDir("csv-append");
-    std::string path = dir + "/r.csv";
-    CsvWriter::appendRows(path, {{{"a", "1"}, {"b", "2"}}});
-    CsvWriter::appendRows(path, {{{"a", "3"}, {"b", "4"}}, {{"a", "5"}, {"b", "6"}}});
-    EXPECT_EQ(test::readFile(path), "a,b\n1,2\n3,4\n5,6\n");
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
 }
 
-TEST(CsvWriterTest, NewColumnsExtendTheHeaderWithEmptyCellsForOldRows) {
-    std::string path = test::freshDir("csv-union") + "/r.csv";
-    CsvWriter::appendRows(path, {{{"technique", "none"}, {"gpu_lighting_ms_median", "1"}}});
-    CsvWriter::appendRows(path, {{{"technique", "shadowmap"}, {"gpu_depth_ms_median", "2"}, {"gpu_lighting_ms_median", "3"}}});
-    EXPECT_EQ(test::readFile(path), "technique,gpu_lighting_ms_median,gpu_depth_ms_median\n"
-                                    "none,1,\n"
-                                    "shadowmap,3,2\n");
+void writeFile(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+class CsvWriterTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDir = (fs::temp_directory_path() /
+                ("shadowbench-csv-" + std::string(info->name()) + "-" + std::to_string(getpid())))
+                   .string();
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+        mPath = mDir + "/results.csv";
+    }
+    void TearDown() override {
+        gRenameMode = RenameMode::Real;
+        fs::permissions(mDir, fs::perms::owner_all); // in case a test made it read-only
+        fs::remove_all(mDir);
+    }
+    /// Names in the test directory other than `keep`: temp files a failed write left behind.
+    std::vector<std::string> strayFiles(const std::string& keep = "results.csv") const {
+        std::vector<std::string> out;
+        for (const auto& e : fs::directory_iterator(mDir))
+            if (e.path().filename() != keep) out.push_back(e.path().filename().string());
+        return out;
+    }
+    std::string errorOf(const std::vector<CsvRow>& rows, const std::string& path) {
+        try {
+            CsvWriter::appendRows(path, rows);
+        } catch (const Error& e) {
+            EXPECT_EQ(e.code(), ExitCode::Failure) << e.what();
+            return e.what();
+        }
+        ADD_FAILURE() << "appendRows(" << path << ") did not throw";
+        return "";
+    }
+    std::string mDir, mPath;
+};
+
+TEST_F(CsvWriterTest, NewFileGetsHeaderAndRowsInGivenColumnOrder) {
+    CsvWriter::appendRows(mPath, {{{"b", "1"}, {"a", "2"}}});
+    EXPECT_EQ(readFile(mPath), "b,a\n1,2\n");
+    EXPECT_TRUE(strayFiles().empty());
 }
 
-TEST(CsvWriterTest, QuotingRoundTrips) {
-    std::string path = test::freshDir("csv-quote") + "/r.csv";
-    const std::string tricky[] = {"a,b", "say \"hi\"", "two\nlines", "plain", "", "\r\n"};
+TEST_F(CsvWriterTest, AppendKeepsEarlierRows) {
+    CsvWriter::appendRows(mPath, {{{"a", "1"}, {"b", "2"}}});
+    CsvWriter::appendRows(mPath, {{{"a", "3"}, {"b", "4"}}, {{"a", "5"}, {"b", "6"}}});
+    EXPECT_EQ(readFile(mPath), "a,b\n1,2\n3,4\n5,6\n");
+}
+
+TEST_F(CsvWriterTest, NewColumnsExtendTheHeaderWithEmptyCellsForOldRows) {
+    CsvWriter::appendRows(mPath, {{{"technique", "none"}, {"gpu_lighting_ms_median", "1"}}});
+    CsvWriter::appendRows(mPath,
+                          {{{"technique", "shadowmap"}, {"gpu_depth_ms_median", "2"}, {"gpu_lighting_ms_median", "3"}},
+                           {{"technique", "x"}}}); // a row lacking columns leaves them empty
+    EXPECT_EQ(readFile(mPath), "technique,gpu_lighting_ms_median,gpu_depth_ms_median\n"
+                               "none,1,\n"
+                               "shadowmap,3,2\n"
+                               "x,,\n");
+}
+
+TEST_F(CsvWriterTest, QuotingRoundTripsCommasQuotesAndNewlines) {
+    const std::vector<std::string> tricky = {"a,b", "say \"hi\"", "two\nlines", "plain", "", "\r\n", "\"", ",\"\n"};
     CsvRow row;
-    for (size_t i = 0; i < std::size(tricky); ++i) row.emplace_back("c" + std::to_string(i), tricky[i]);
-    CsvWriter::appendRows(path, {row});
-    CsvTable t = CsvWriter::read(path);
-    ASSERT_EQ(t.rows.size(), 1u);
-    for (size_t i = 0; i < std::size(tricky); ++i) EXPECT_EQ(t.rows[0][i], tricky[i]) << i;
+    for (size_t i = 0; i < tricky.size(); ++i) row.emplace_back("c" + std::to_string(i), tricky[i]);
+    CsvWriter::appendRows(mPath, {row});
+    CsvWriter::appendRows(mPath, {row}); // re-reading and re-writing must not change quoted cells
+    CsvTable t = CsvWriter::read(mPath);
+    ASSERT_EQ(t.rows.size(), 2u);
+    for (const auto& r : t.rows)
+        for (size_t i = 0; i < tricky.size(); ++i) EXPECT_EQ(r[i], tricky[i]) << "cell " << i;
+    EXPECT_EQ(CsvWriter::quote("plain"), "plain");
     EXPECT_EQ(CsvWriter::quote("say \"hi\""), "\"say \"\"hi\"\"\"");
+    EXPECT_EQ(CsvWriter::quote("a,b"), "\"a,b\"");
+    EXPECT_EQ(CsvWriter::quote("x\ny"), "\"x\ny\"");
 }
 
-TEST(CsvWriterTest, RaggedRowsAreErrorsNamingTheFile) {
+TEST_F(CsvWriterTest, SingleEmptyCellSurvivesAsQuotedEmptyField) {
+    // One column and an empty value would be a blank line, which the reader skips; the writer quotes it.
+    CsvWriter::appendRows(mPath, {{{"note", ""}}, {{"note", "x"}}});
+    EXPECT_EQ(readFile(mPath), "note\n\"\"\nx\n");
+    EXPECT_EQ(CsvWriter::read(mPath).rows, (std::vector<std::vector<std::string>>{{""}, {"x"}}));
+}
+
+TEST_F(CsvWriterTest, ParseAcceptsCrLfAndBom) {
+    CsvTable t = CsvWriter::parse("\xEF\xBB\xBF" "a,b\r\n1,\"x\r\ny\"\r\n", "t.csv");
+    EXPECT_EQ(t.header, (std::vector<std::string>{"a", "b"}));
+    EXPECT_EQ(t.rows, (std::vector<std::vector<std::string>>{{"1", "x\r\ny"}}));
+    EXPECT_TRUE(CsvWriter::parse("", "empty.csv").header.empty());
+}
+
+struct BadCsv {
+    const char* name;
+    const char* text;
+    const char* where; ///< "file:line" the message must contain
+};
+const BadCsv kBadCsv[] = {
+    {"too many fields", "a,b\n1,2\n1,2,3\n", "x.csv:3"},
+    {"too few fields", "a,b\n1\n", "x.csv:2"},
+    // The quoted newline makes row 2 span lines 2-3, so the ragged row starts on line 4.
+    {"ragged after multi-line field", "a,b\n\"1\n2\",3\n4\n", "x.csv:4"},
+    {"unclosed quote", "a,b\n\"1,2\n", "x.csv:2"},
+    {"text after closing quote", "a,b\n\"1\"x,2\n", "x.csv:2"},
+    {"quote in unquoted field", "a,b\n1\"2,3\n", "x.csv:2"},
+    {"duplicate column", "a,a\n1,2\n", "x.csv:1"},
+};
+
+TEST_F(CsvWriterTest, MalformedFilesAreErrorsNamingFileAndLine) {
+    for (const BadCsv& c : kBadCsv) {
+        try {
+            CsvWriter::parse(c.text, "x.csv");
+            ADD_FAILURE() << c.name << ": accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(c.where), std::string::npos) << c.name << ": " << e.what();
+        }
+    }
+}
+
+TEST_F(CsvWriterTest, AppendToCorruptFileThrowsAndLeavesIt) {
+    writeFile(mPath, "a,b\n1,2,3\n");
+    EXPECT_THROW(CsvWriter::appendRows(mPath, {{{"a", "1"}}}), Error);
+    EXPECT_EQ(readFile(mPath), "a,b\n1,2,3\n");
+    EXPECT_TRUE(strayFiles().empty());
+}
+
+TEST_F(CsvWriterTest, ReadOfMissingFileThrowsNamingThePath) {
     try {
-        CsvWriter::parse("a,b\n1,2,3\n", "x.csv");
-        FAIL();
+        CsvWriter::read(mDir + "/nope.csv");
+        FAIL() << "no throw";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("x.csv"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(mDir + "/nope.csv"), std::string::npos) << e.what();
     }
 }
 
-TEST(CsvWriterTest, MissingDirectoryThrowsNamingThePath) {
-    std::string path = test::freshDir("csv-missing") + "/no/such/dir/r.csv";
-    try {
-        CsvWriter::appendRows(path, {{{"a", "1"}}});
-        FAIL();
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
-        EXPECT_EQ(e.code(), ExitCode::Failure);
-    }
+TEST_F(CsvWriterTest, MissingDirectoryThrowsNamingThePath) {
+    std::string path = mDir + "/no/such/dir/r.csv";
+    std::string e = errorOf({{{"a", "1"}}}, path);
+    EXPECT_NE(e.find(path), std::string::npos) << e;
+    EXPECT_NE(e.find("No such file or directory"), std::string::npos) << e; // the OS reason
+    EXPECT_THROW(CsvWriter::checkWritable(path), Error);
+    EXPECT_TRUE(strayFiles().empty());
 }
 
-TEST(CsvWriterTest, FailedRenameLeavesOriginalAndNoTempFile) {
-    // The target is a directory: the temp file is written, the rename must fail. The directory and its
-    // content stay as they were and the temp file is removed.
-    std::string dir = test::freshDir("csv-rename");
-    std::string path = dir + "/r.csv";
-    fs::create_directories(path);
-    std::ofstream(path + "/keep.txt") << "precious";
-    EXPECT_THROW(CsvWriter::appendRows(path, {{{"a", "1"}}}), Error);
-    EXPECT_EQ(test::readFile(path + "/keep.txt"), "precious");
-    for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename(), "r.csv") << e.path();
+TEST_F(CsvWriterTest, UnwritableDirectoryLeavesFileByteIdentical) {
+    if (geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions; see TempFileCannotBeCreated";
+    CsvWriter::appendRows(mPath, {{{"a", "1"}}});
+    std::string before = readFile(mPath);
+    fs::permissions(mDir, fs::perms::owner_read | fs::perms::owner_exec);
+    std::string e = errorOf({{{"a", "2"}}}, mPath);
+    EXPECT_NE(e.find(mPath), std::string::npos) << e;
+    EXPECT_THROW(CsvWriter::checkWritable(mPath), Error);
+    fs::permissions(mDir, fs::perms::owner_all);
+    EXPECT_EQ(readFile(mPath), before);
+    EXPECT_TRUE(strayFiles().empty());
 }
 
-TEST(CsvWriterTest, UnwritableDirectoryLeavesFileByteIdentical) {
-    if (geteuid() == 0) {
-        // root ignores directory permissions; use a path under /proc, which nobody can create files in.
-        // Root ignores directory permissions; /proc refuses new files even to root.
-        EXPECT_THROW(CsvWriter::appendRows("/proc/shadowbench-test/r.csv", {{{"a", "1"}}}), Error);
-        return;
-    }
-    std::string dir = test::freshDir("csv-ro");
-    std::string path = dir + "/r.csv";
-    CsvWriter::appendRows(path, {{{"a", "1"}}});
-    std::string before = test::readFile(path);
-    fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
-    EXPECT_THROW(CsvWriter::appendRows(path, {{{"a", "2"}}}), Error);
-    fs::permissions(dir, fs::perms::owner_all);
-    EXPECT_EQ(test::readFile(path), before);
+TEST_F(CsvWriterTest, TempFileCannotBeCreatedLeavesFileByteIdentical) {
+    // Works as root too: a 250-character name is valid, but "<name>.tmp.<pid>" exceeds NAME_MAX (255),
+    // so the temp file cannot be created in an otherwise writable directory.
+    std::string name = std::string(246, 'r') + ".csv";
+    std::string path = mDir + "/" + name;
+    writeFile(path, "a\n1\n");
+    std::string e = errorOf({{{"a", "2"}}}, path);
+    EXPECT_NE(e.find(path), std::string::npos) << e;
+    EXPECT_NE(e.find("File name too long"), std::string::npos) << e;
+    EXPECT_EQ(readFile(path), "a\n1\n");
+    EXPECT_TRUE(strayFiles(name).empty());
+    EXPECT_THROW(CsvWriter::checkWritable(path), Error); // the up-front check sees it too
 }
+
+TEST_F(CsvWriterTest, FailedRenameRemovesTempAndLeavesOriginal) {
+    CsvWriter::appendRows(mPath, {{{"a", "1"}}});
+    std::string before = readFile(mPath);
+    gRenameMode = RenameMode::Fail;
+    std::string e = errorOf({{{"a", "2"}}}, mPath);
+    EXPECT_NE(e.find(mPath), std::string::npos) << e;
+    EXPECT_NE(e.find("Input/output error"), std::string::npos) << e; // strerror(EIO) from the seam
+    EXPECT_EQ(readFile(mPath), before);
+    EXPECT_TRUE(strayFiles().empty());
+}
+
+TEST_F(CsvWriterTest, CrashBeforeRenameLeavesOriginalIntact) {
+    CsvWriter::appendRows(mPath, {{{"a", "1"}}});
+    std::string before = readFile(mPath);
+    // The child process writes and fsyncs the temp file, then dies where the rename would be.
+    EXPECT_EXIT(
+        {
+            gRenameMode = RenameMode::Crash;
+            CsvWriter::appendRows(mPath, {{{"a", "2"}}});
+        },
+        ::testing::ExitedWithCode(kCrashExitCode), "");
+    EXPECT_EQ(readFile(mPath), before);
+    // The crash left its complete temp file (another pid's name): proof the crash came after writing.
+    std::vector<std::string> stray = strayFiles();
+    ASSERT_EQ(stray.size(), 1u);
+    EXPECT_EQ(stray[0].rfind("results.csv.tmp.", 0), 0u) << stray[0];
+    EXPECT_EQ(readFile(mDir + "/" + stray[0]), "a\n1\n2\n");
+    // The next run is unaffected by the leftover.
+    CsvWriter::appendRows(mPath, {{{"a", "3"}}});
+    EXPECT_EQ(readFile(mPath), "a\n1\n3\n");
+}
+
+TEST_F(CsvWriterTest, TargetThatIsADirectoryThrowsAndChangesNothing) {
+    fs::create_directories(mPath);
+    writeFile(mPath + "/keep.txt", "precious");
+    std::string e = errorOf({{{"a", "1"}}}, mPath);
+    EXPECT_NE(e.find(mPath), std::string::npos) << e;
+    EXPECT_EQ(readFile(mPath + "/keep.txt"), "precious");
+    EXPECT_TRUE(strayFiles().empty());
+    EXPECT_THROW(CsvWriter::checkWritable(mPath), Error);
+}
+
+TEST_F(CsvWriterTest, CheckWritableAcceptsNewAndExistingFilesAndLeavesNothing) {
+    EXPECT_NO_THROW(CsvWriter::checkWritable(mPath));
+    EXPECT_FALSE(fs::exists(mPath));
+    CsvWriter::appendRows(mPath, {{{"a", "1"}}});
+    EXPECT_NO_THROW(CsvWriter::checkWritable(mPath));
+    EXPECT_EQ(readFile(mPath), "a\n1\n");
+    EXPECT_TRUE(strayFiles().empty());
+}
+
+TEST_F(CsvWriterTest, ReplacingKeepsTheFileMode) {
+    CsvWriter::appendRows(mPath, {{{"a", "1"}}});
+    fs::permissions(mPath, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+    CsvWriter::appendRows(mPath, {{{"a", "2"}}});
+    EXPECT_EQ(fs::status(mPath).permissions() & fs::perms::mask,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
+TEST_F(CsvWriterTest, NoRowsWritesNothing) {
+    CsvWriter::appendRows(mPath, {});
+    EXPECT_FALSE(fs::exists(mPath));
+}
+
+TEST_F(CsvWriterTest, RowNamingAColumnTwiceIsRejected) {
+    CsvWriter::appendRows(mPath, {{{"a", "1"}}});
+    std::string e = errorOf({{{"a", "2"}, {"a", "3"}}}, mPath);
+    EXPECT_NE(e.find("'a'"), std::string::npos) << e;
+    EXPECT_EQ(readFile(mPath), "a\n1\n");
+}
+
 } // namespace
