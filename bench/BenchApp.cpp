@@ -49,8 +49,8 @@ std::vector<std::unique_ptr<Technique>> createTechniques(const RunConfig& config
 void writeImages(const RunConfig& config, Harness& harness, const std::string& technique) {
     bool several = config.techniques.size() > 1;
     if (!config.screenshotPath.empty())
-        ImageWriter::writeColor(harness.targets(),
-                                several ? withSuffix(config.screenshotPath, technique) : config.screenshotPath);
+        ImageWriter::writeColor(harness.targets(), several ? withSuffix(config.screenshotPath, technique)
+                                                           : config.screenshotPath);
     if (!config.visibilityPath.empty()) {
         std::string base = several ? withSuffix(config.visibilityPath, technique) : config.visibilityPath;
         size_t lights = std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
@@ -63,7 +63,9 @@ void writeImages(const RunConfig& config, Harness& harness, const std::string& t
 
 std::pair<int, int> BenchApp::parseSize(const std::string& text) {
     size_t x = text.find_first_of("xX");
-    auto bad = [&] { return Error("--size " + text + ": expected WIDTHxHEIGHT with each in [16, 16384], e.g. 1024x1024"); };
+    auto bad = [&] {
+        return Error("--size " + text + ": expected WIDTHxHEIGHT with each in [16, 16384], e.g. 1024x1024");
+    };
     if (x == std::string::npos) throw bad();
     try {
         size_t a = 0, b = 0;
@@ -90,29 +92,37 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("-t,--technique", techniques,
                    "technique[:prop=value...], repeatable (default shadowmap); see --list");
     app.add_option("--scene", c.scene, "built-in scene name or scene JSON file")->capture_default_str();
-    app.add_option("--model", c.sceneOptions.modelPath, "model file (obj, gltf, 3ds ...) replacing the layout mesh");
-    app.add_option("-n,--instances", instances, "number of layout instances (scene default: 200 for aircraft)");
-    app.add_option("--scale", c.sceneOptions.scale, "scale of every layout instance (10: fill-bound, 0.01: vertex-bound)")
+    app.add_option("--model", c.sceneOptions.modelPath,
+                   "model file (obj, gltf, 3ds ...) replacing the layout mesh");
+    app.add_option("-n,--instances", instances,
+                   "number of layout instances (scene default: 200 for aircraft)");
+    app.add_option("--scale", c.sceneOptions.scale,
+                   "scale of every layout instance (10: fill-bound, 0.01: vertex-bound)")
         ->capture_default_str();
     app.add_option("--seed", seed, "layout seed (same seed, same scene)");
     app.add_option("--tess", tess, "tessellation of every generated mesh (vertex load)");
     app.add_option("--light", light, "replace every light's type: directional, point, spot");
     app.add_option("--camera", c.camera, "camera preset: far, mid, near, top")->capture_default_str();
     app.add_option("--size", size, "render target WIDTHxHEIGHT")->capture_default_str();
-    app.add_option("--submit", submit, "submission: immediate, displaylist, retained, instanced")->capture_default_str();
+    app.add_option("--submit", submit, "submission: immediate, displaylist, retained, instanced")
+        ->capture_default_str();
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
     app.add_option("--seconds", c.seconds, "measure for this many seconds instead of --frames");
     app.add_option("--warmup", c.warmup, "discarded warm-up frames")->capture_default_str();
-    app.add_option("--backend", backend, "auto, egl-surfaceless, egl-device, osmesa, glfw")->capture_default_str();
+    app.add_option("--backend", backend, "auto, egl-surfaceless, egl-device, osmesa, glfw")
+        ->capture_default_str();
     app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
     app.add_flag("--window", window, "on-screen viewer (GLFW) instead of a measurement");
-    app.add_option("--window-frames", c.windowFrames, "--window: quit after N frames (scripted checks; 0 = never)");
+    app.add_option("--window-frames", c.windowFrames,
+                   "--window: quit after N frames (scripted checks; 0 = never)");
     app.add_option("--csv", c.csvPath, "append one row per technique to this CSV file (atomic)");
     app.add_option("--samples", c.samplesPath, "write per-frame samples to this CSV file");
     app.add_option("--screenshot", c.screenshotPath, "write the last frame's colour image (PNG)");
     app.add_option("--visibility", c.visibilityPath, "write the last frame's visibility target (PNG)");
-    app.add_flag("--no-timer-check", noTimerCheck, "skip the GPU-timer trust calibration (verdict: unchecked)");
-    app.add_option("--max-memory-gib", maxMemoryGiB, "refuse scenes estimated above this memory")->capture_default_str();
+    app.add_flag("--no-timer-check", noTimerCheck,
+                 "skip the GPU-timer trust calibration (verdict: unchecked)");
+    app.add_option("--max-memory-gib", maxMemoryGiB, "refuse scenes estimated above this memory")
+        ->capture_default_str();
     app.add_flag("-q,--quiet", c.quiet, "print only the table");
     try {
         app.parse(argc, argv);
@@ -166,12 +176,16 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
 }
 
 int BenchApp::run(const RunConfig& config) {
+    // Declared before the techniques so that it is destroyed after them: techniques release GL objects
+    // in their destructors, which needs the harness's context (also when an exception unwinds).
+    std::unique_ptr<Harness> harnessOwner;
     // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
     auto techniques = createTechniques(config);
     if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
     if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
 
-    Harness harness(config);
+    harnessOwner = std::make_unique<Harness>(config);
+    Harness& harness = *harnessOwner;
     if (config.context.backend == Backend::Glfw && config.context.visibleWindow) {
         int code = Viewer::run(harness, techniques, config.windowFrames);
         // The last frame shown, when asked for (the viewer draws with the same targets).
@@ -189,7 +203,8 @@ int BenchApp::run(const RunConfig& config) {
         RunResult r = harness.measure(*technique);
         if (!config.quiet) std::cout << " " << r.wall.n << " frames, median " << r.wall.median << " ms\n";
         env.timestamp = Environment::nowIso8601();
-        if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {ResultRow::build(harness, r, env)});
+        if (!config.csvPath.empty())
+            CsvWriter::appendRows(config.csvPath, {ResultRow::build(harness, r, env)});
         if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, r);
         writeImages(config, harness, technique->name());
         results.push_back(std::move(r));

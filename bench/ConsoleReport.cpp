@@ -22,7 +22,9 @@ std::string pad(std::string s, size_t w) {
     return s;
 }
 
-std::string effectsText(EffectMask m) { return m ? effectMaskToString(m) : "(no shadows)"; }
+std::string effectsText(EffectMask m) {
+    return m ? effectMaskToString(m) : "(no shadows)";
+}
 } // namespace
 
 void ConsoleReport::printHeader(std::ostream& os, const Harness& h) {
@@ -30,20 +32,22 @@ void ConsoleReport::printHeader(std::ostream& os, const Harness& h) {
     const RunConfig& cfg = h.config();
     size_t layout = 0;
     for (const Instance& i : h.scene().instances) layout += i.fromLayout ? 1 : 0;
-    os << "backend   " << backendName(c.backend()) << (c.deviceName.empty() ? "" : " (" + c.deviceName + ")") << "\n"
+    os << "backend   " << backendName(c.backend()) << (c.deviceName.empty() ? "" : " (" + c.deviceName + ")")
+       << "\n"
        << "renderer  " << c.renderer << "\n"
        << "GL        " << c.version << "\n"
-       << "scene     " << h.scene().name << ": " << layout << " instances, scale " << cfg.sceneOptions.scale << ", "
-       << h.scene().totalTriangles() << " triangles, camera " << cfg.camera << ", " << cfg.width << "x" << cfg.height
-       << ", submit " << submitModeName(cfg.submit) << "\n"
-       << "frames    " << (cfg.seconds > 0 ? fmt("%.1f s", cfg.seconds) : std::to_string(cfg.frames)) << " after "
-       << cfg.warmup << " warm-up\n";
+       << "scene     " << h.scene().name << ": " << layout << " instances, scale " << cfg.sceneOptions.scale
+       << ", " << h.scene().totalTriangles() << " triangles, camera " << cfg.camera << ", " << cfg.width
+       << "x" << cfg.height << ", submit " << submitModeName(cfg.submit) << "\n"
+       << "frames    " << (cfg.seconds > 0 ? fmt("%.1f s", cfg.seconds) : std::to_string(cfg.frames))
+       << " after " << cfg.warmup << " warm-up\n";
 }
 
 void ConsoleReport::printTimerVerdict(std::ostream& os, const TimerVerdict& v) {
     os << "GPU timer " << v.label();
     if (!v.reason.empty()) os << ": " << v.reason;
-    if (v.checked && !v.trusted) os << "\n          -> GPU times are not reported; use wall and CPU-submit times";
+    if (v.checked && !v.trusted)
+        os << "\n          -> GPU times are not reported; use wall and CPU-submit times";
     os << "\n";
 }
 
@@ -54,7 +58,8 @@ void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::ve
     bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
     os << "\n"
        << pad("technique", 12) << pad("wall median", 13) << pad("p5", 9) << pad("p95", 9) << pad("MAD", 8)
-       << pad("cpu submit", 12) << (gpu ? pad("gpu", 10) : "") << pad("n", 5) << pad("vs none", 9) << "properties\n";
+       << pad("cpu submit", 12) << (gpu ? pad("gpu", 10) : "") << pad("n", 5) << pad("vs none", 9)
+       << "properties\n";
     for (const RunResult& r : results) {
         os << pad(r.technique, 12) << pad(fmt("%.2f ms", r.wall.median), 13) << pad(fmt("%.2f", r.wall.p5), 9)
            << pad(fmt("%.2f", r.wall.p95), 9) << pad(fmt("%.2f", r.wall.mad), 8)
@@ -75,8 +80,8 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
         os << "  passes:   " << join(info.passes, ", ") << "\n";
         if (info.properties.empty()) os << "  properties: none\n";
         for (const PropertyDesc& p : info.properties)
-            os << "  " << pad(p.name, 18) << pad(propertyTypeName(p.type), 7) << pad("default " + p.defaultValue, 16)
-               << pad(p.rangeText(), 16) << p.description << "\n";
+            os << "  " << pad(p.name, 18) << pad(propertyTypeName(p.type), 7)
+               << pad("default " + p.defaultValue, 16) << pad(p.rangeText(), 16) << p.description << "\n";
         os << "\n";
     }
     os << "scenes: ";

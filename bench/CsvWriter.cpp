@@ -24,7 +24,8 @@ constexpr mode_t kNewFileMode = 0666; // the umask decides, as for any file the 
 // I/O failures while writing results are run failures (ExitCode::Failure): the user asked for a
 // sensible thing, the system refused. The message carries the path and the OS reason.
 [[noreturn]] void failWrite(const std::string& path, const std::string& what, int err) {
-    throw Error("cannot write CSV '" + path + "': " + what + (err ? std::string(": ") + std::strerror(err) : ""),
+    throw Error("cannot write CSV '" + path + "': " + what +
+                    (err ? std::string(": ") + std::strerror(err) : ""),
                 ExitCode::Failure);
 }
 
@@ -40,7 +41,9 @@ std::string directoryOf(const std::string& path) {
 
 // The pid makes the name unique among concurrent writers; the temp lies in the target's directory
 // because rename() is only atomic within one file system.
-std::string tempPathFor(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
+std::string tempPathFor(const std::string& path) {
+    return path + ".tmp." + std::to_string(::getpid());
+}
 
 // ---------------------------------------------------------------------------------------------------
 // Reading
@@ -88,13 +91,15 @@ public:
     /// Next record and the line it starts on; false at the end of the text. Blank lines are skipped:
     /// the writer quotes a lone empty cell (""), so a blank line never stands for data.
     bool next(std::vector<std::string>& record, size_t& line) {
-        while (mPos < mText.size() && consumeLineBreak()) {}
+        while (mPos < mText.size() && consumeLineBreak()) {
+        }
         if (mPos >= mText.size()) return false;
         record.clear();
         line = mLine;
         do record.push_back(peek() == kQuote ? quotedField() : plainField());
         while (consume(kSeparator));
-        if (mPos < mText.size() && !consumeLineBreak()) fail(mLine, "unexpected character after a quoted field");
+        if (mPos < mText.size() && !consumeLineBreak())
+            fail(mLine, "unexpected character after a quoted field");
         return true;
     }
 
@@ -157,7 +162,8 @@ size_t columnIndex(const std::vector<std::string>& header, const std::string& co
 void mergeRows(CsvTable& table, const std::vector<CsvRow>& rows, const std::string& path) {
     for (const CsvRow& row : rows)
         for (const auto& cell : row)
-            if (columnIndex(table.header, cell.first) == table.header.size()) table.header.push_back(cell.first);
+            if (columnIndex(table.header, cell.first) == table.header.size())
+                table.header.push_back(cell.first);
     for (auto& old : table.rows) old.resize(table.header.size());
     for (const CsvRow& row : rows) {
         std::vector<std::string> cells(table.header.size());
@@ -250,7 +256,7 @@ void requireReplaceableFile(const std::string& path) {
         if (errno != ENOENT) failWrite(path, "cannot inspect it", errno);
         return;
     }
-    if (S_ISDIR(st.st_mode)) failWrite(path, "it is a directory", EISDIR);
+    if (S_ISDIR(st.st_mode)) failWrite(path, "it is a directory", 0);
     if (::access(path.c_str(), R_OK | W_OK) != 0) failWrite(path, "existing file", errno);
 }
 

@@ -52,7 +52,8 @@ Environment Environment::capture() {
     Environment e;
     e.timestamp = nowIso8601();
     // The source tree's state at run time (not at configure time, which goes stale between commits).
-    std::string commit = runCommand("git -C '" SHADOWBENCH_SOURCE_DIR "' describe --always --dirty --abbrev=12 2>/dev/null");
+    std::string commit =
+        runCommand("git -C '" SHADOWBENCH_SOURCE_DIR "' describe --always --dirty --abbrev=12 2>/dev/null");
     e.gitCommit = commit.empty() ? "unknown" : commit;
     e.cpuModel = readCpuModel();
     e.hardwareThreads = int(std::thread::hardware_concurrency());

@@ -37,8 +37,8 @@ std::vector<MeshGpu> uploadMeshes(const Scene& scene) {
     for (const Mesh& m : scene.meshes) {
         std::vector<float> v;
         for (size_t i = 0; i < m.positions.size(); ++i)
-            v.insert(v.end(), {m.positions[i].x, m.positions[i].y, m.positions[i].z, m.normals[i].x, m.normals[i].y,
-                               m.normals[i].z});
+            v.insert(v.end(), {m.positions[i].x, m.positions[i].y, m.positions[i].z, m.normals[i].x,
+                               m.normals[i].y, m.normals[i].z});
         GLuint vao, vbo, ibo;
         glGenVertexArrays(1, &vao);
         glBindVertexArray(vao);
@@ -47,7 +47,8 @@ std::vector<MeshGpu> uploadMeshes(const Scene& scene) {
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(float)), v.data(), GL_STATIC_DRAW);
         glGenBuffers(1, &ibo);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * 4), m.indices.data(), GL_STATIC_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * 4), m.indices.data(),
+                     GL_STATIC_DRAW);
         glEnableVertexAttribArray(0);
         glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 24, nullptr);
         glEnableVertexAttribArray(1);
@@ -104,9 +105,9 @@ int main(int argc, char** argv) {
         GLuint program = h.programs().get({"common/scene.vert", "none/lit.frag", ""}, d).id();
         GLuint ubo;
         glCreateBuffers(1, &ubo);
-        FrameUniformData data = FrameUniforms::compute(h.scene(), cameraView(h.camera()),
-                                                       cameraProjection(h.camera(), float(config.width) / float(config.height)),
-                                                       h.camera().eye);
+        FrameUniformData data = FrameUniforms::compute(
+            h.scene(), cameraView(h.camera()),
+            cameraProjection(h.camera(), float(config.width) / float(config.height)), h.camera().eye);
         glNamedBufferStorage(ubo, sizeof data, &data, GL_DYNAMIC_STORAGE_BIT);
         auto meshes = uploadMeshes(h.scene());
         // Draw in the retained submitter's order (grouped by mesh) so both do the same GPU work.
@@ -137,14 +138,16 @@ int main(int argc, char** argv) {
             harness.push_back(b);
             ratios.push_back(b / a);
         }
-        Statistics a = Statistics::compute(hand), b = Statistics::compute(harness), q = Statistics::compute(ratios);
-        std::printf("renderer %s\nscene %s, %zu triangles, %dx%d, %d frame pairs, interleaved frame by frame\n",
-                    h.context().renderer.c_str(), h.scene().name.c_str(), h.scene().totalTriangles(), config.width,
-                    config.height, pairs);
-        std::printf("hand-written loop  median %.3f ms  (p5 %.3f, p95 %.3f, MAD %.3f, n %zu)\n", a.median, a.p5, a.p95,
-                    a.mad, a.n);
-        std::printf("harness, none      median %.3f ms  (p5 %.3f, p95 %.3f, MAD %.3f, n %zu)\n", b.median, b.p5, b.p95,
-                    b.mad, b.n);
+        Statistics a = Statistics::compute(hand), b = Statistics::compute(harness),
+                   q = Statistics::compute(ratios);
+        std::printf(
+            "renderer %s\nscene %s, %zu triangles, %dx%d, %d frame pairs, interleaved frame by frame\n",
+            h.context().renderer.c_str(), h.scene().name.c_str(), h.scene().totalTriangles(), config.width,
+            config.height, pairs);
+        std::printf("hand-written loop  median %.3f ms  (p5 %.3f, p95 %.3f, MAD %.3f, n %zu)\n", a.median,
+                    a.p5, a.p95, a.mad, a.n);
+        std::printf("harness, none      median %.3f ms  (p5 %.3f, p95 %.3f, MAD %.3f, n %zu)\n", b.median,
+                    b.p5, b.p95, b.mad, b.n);
         std::printf("GPU timer %s (timer queries %s in measured frames)\n", verdict.label(),
                     h.timerQueriesEnabled() ? "on" : "off");
         std::printf("harness overhead   %+.2f %% median of paired frame ratios (p5 %+.2f %%, p95 %+.2f %%); "

@@ -20,7 +20,8 @@ double msSince(Clock::time_point a, Clock::time_point b) {
 const CameraPreset& pickCamera(const Scene& scene, const std::string& name) {
     if (const CameraPreset* c = scene.findCamera(name)) return *c;
     std::string known = join(scene.cameras, ", ", [](const CameraPreset& c) { return c.name; });
-    throw Error("--camera " + name + ": scene '" + scene.name + "' has no such camera (known: " + known + ")");
+    throw Error("--camera " + name + ": scene '" + scene.name + "' has no such camera (known: " + known +
+                ")");
 }
 } // namespace
 

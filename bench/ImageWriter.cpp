@@ -10,7 +10,8 @@
 
 namespace sb {
 
-void ImageWriter::write(const std::string& path, int width, int height, int channels, const unsigned char* pixels) {
+void ImageWriter::write(const std::string& path, int width, int height, int channels,
+                        const unsigned char* pixels) {
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw Error("cannot write image '" + path + "': " + OIIO::geterror(), ExitCode::Failure);
     OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
@@ -38,7 +39,8 @@ void ImageWriter::writeVisibility(const FrameTargets& targets, int light, const 
         for (int x = 0; x < w; ++x) {
             float v = vis[(size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4 + size_t(light)];
             if (!std::isfinite(v)) v = 0.0f;
-            grey[size_t(y) * size_t(w) + size_t(x)] = (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
+            grey[size_t(y) * size_t(w) + size_t(x)] =
+                (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
         }
     write(path, w, h, 1, grey.data());
 }

@@ -13,7 +13,8 @@ public:
     /// Visibility of light `light` as 8-bit grey (1 lit = white, 0 shadowed = black; values clamped).
     static void writeVisibility(const FrameTargets& targets, int light, const std::string& path);
     /// Writes `channels` x 8-bit pixels (top row first) to `path`; the format follows the extension.
-    static void write(const std::string& path, int width, int height, int channels, const unsigned char* pixels);
+    static void write(const std::string& path, int width, int height, int channels,
+                      const unsigned char* pixels);
 };
 
 } // namespace sb

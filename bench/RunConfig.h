@@ -19,9 +19,9 @@ struct RunConfig {
     std::string camera = "far";
     int width = 1024, height = 1024;
     SubmitMode submit = SubmitMode::Retained;
-    int frames = 50;         ///< measured frames (ignored when seconds > 0)
-    double seconds = 0.0;    ///< measure for this long instead (at least kMinFrames frames)
-    int warmup = 5;          ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)
+    int frames = 50;      ///< measured frames (ignored when seconds > 0)
+    double seconds = 0.0; ///< measure for this long instead (at least kMinFrames frames)
+    int warmup = 5;       ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)
     ContextOptions context;
     std::string csvPath;        ///< --csv: append one row per technique
     std::string samplesPath;    ///< --samples: per-frame samples

@@ -68,8 +68,9 @@ TimerVerdict TimerTrust::judge(double wallSmallMs, double wallLargeMs, double gp
     bool scales = gpuRatio >= 0.5 * pixelRatio;
     bool covers = coverage >= 0.5;
     v.trusted = scales && covers;
-    v.reason = fmt("%.0fx pixels: GPU timer %.2fx, wall %.2fx; timer covers %.0f%% of the wall time (%.2f ms)",
-                   pixelRatio, gpuRatio, wallRatio, 100.0 * coverage, wallLargeMs);
+    v.reason =
+        fmt("%.0fx pixels: GPU timer %.2fx, wall %.2fx; timer covers %.0f%% of the wall time (%.2f ms)",
+            pixelRatio, gpuRatio, wallRatio, 100.0 * coverage, wallLargeMs);
     if (!scales) v.reason += "; the timer does not grow with the fill work";
     if (!covers) v.reason += "; the timer misses most of the frame";
     return v;

@@ -14,7 +14,7 @@ namespace sb {
 struct TimerVerdict {
     bool checked = false;
     bool trusted = false;
-    std::string reason;             ///< one line with the evidence
+    std::string reason; ///< one line with the evidence
     double wallSmallMs = 0, wallLargeMs = 0, gpuSmallMs = 0, gpuLargeMs = 0;
     const char* label() const { return !checked ? "unchecked" : (trusted ? "trusted" : "untrusted"); }
 };

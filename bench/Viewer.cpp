@@ -27,7 +27,8 @@ struct Orbit {
     }
     CameraPreset apply(CameraPreset c) const {
         float p = std::clamp(pitch, -1.55f, 1.55f);
-        c.eye = target + distance * glm::vec3(std::cos(p) * std::sin(yaw), std::sin(p), std::cos(p) * std::cos(yaw));
+        c.eye = target +
+                distance * glm::vec3(std::cos(p) * std::sin(yaw), std::sin(p), std::cos(p) * std::cos(yaw));
         c.target = target;
         c.up = {0.0f, 1.0f, 0.0f};
         return c;
@@ -35,14 +36,18 @@ struct Orbit {
 };
 
 double gScroll = 0.0;
-void onScroll(GLFWwindow*, double, double dy) { gScroll += dy; }
+void onScroll(GLFWwindow*, double, double dy) {
+    gScroll += dy;
+}
 
 // Key edge detection: true once per press.
 bool pressed(GLFWwindow* w, int key, std::set<int>& down) {
     bool isDown = glfwGetKey(w, key) == GLFW_PRESS;
     bool edge = isDown && !down.count(key);
-    if (isDown) down.insert(key);
-    else down.erase(key);
+    if (isDown)
+        down.insert(key);
+    else
+        down.erase(key);
     return edge;
 }
 } // namespace
@@ -97,8 +102,11 @@ int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techn
                                GL_LINEAR);
         glNamedFramebufferReadBuffer(t.fbo(), GL_COLOR_ATTACHMENT0);
         char title[256];
-        std::snprintf(title, sizeof title, "shadowbench: %s%s  wall %.2f ms  cpu submit %.2f ms  [Tab/1-9 technique, V visibility, drag orbit]",
-                      techniques[current]->name().c_str(), showVisibility ? " (visibility)" : "", wallEma, cpuEma);
+        std::snprintf(title, sizeof title,
+                      "shadowbench: %s%s  wall %.2f ms  cpu submit %.2f ms  [Tab/1-9 technique, V "
+                      "visibility, drag orbit]",
+                      techniques[current]->name().c_str(), showVisibility ? " (visibility)" : "", wallEma,
+                      cpuEma);
         glfwSetWindowTitle(window, title);
         harness.context().present();
         ++frames;

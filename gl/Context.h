@@ -8,15 +8,15 @@
 namespace sb {
 
 enum class Backend { Auto, EglSurfaceless, EglDevice, OsMesa, Glfw };
-const char* backendName(Backend b); ///< "egl-surfaceless", "egl-device", "osmesa", "glfw", "auto"
+const char* backendName(Backend b);            ///< "egl-surfaceless", "egl-device", "osmesa", "glfw", "auto"
 Backend parseBackend(const std::string& name); ///< throws sb::Error listing the valid names
 
 struct ContextOptions {
     Backend backend = Backend::Auto;
-    int gpu = -1;          ///< EGL device index for egl-device (--gpu N); -1 = first usable
-    int width = 1024;      ///< window size for glfw; FBO sizes are separate
+    int gpu = -1;     ///< EGL device index for egl-device (--gpu N); -1 = first usable
+    int width = 1024; ///< window size for glfw; FBO sizes are separate
     int height = 1024;
-    bool debug = true;     ///< request a debug context (KHR_debug output is installed by DebugOutput)
+    bool debug = true;          ///< request a debug context (KHR_debug output is installed by DebugOutput)
     bool visibleWindow = false; ///< glfw only
 };
 
@@ -33,9 +33,9 @@ public:
     virtual void* nativeWindow() const { return nullptr; }
 
     // Filled from glGetString after creation (same for every backend).
-    std::string renderer;   ///< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
-    std::string version;    ///< GL_VERSION, e.g. "4.5 (Compatibility Profile) Mesa 22.3.6"
-    std::string vendor;     ///< GL_VENDOR
+    std::string renderer; ///< GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string version;  ///< GL_VERSION, e.g. "4.5 (Compatibility Profile) Mesa 22.3.6"
+    std::string vendor;   ///< GL_VENDOR
     std::string glslVersion;
     std::string deviceName; ///< egl-device: the EGL device's name/driver; others: ""
     int glMajor = 0, glMinor = 0;

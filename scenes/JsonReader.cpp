@@ -17,7 +17,8 @@ void JsonReader::requireObject(std::initializer_list<std::string_view> allowed) 
         for (auto key : allowed) known = known || key == item.key();
         if (known) continue;
         std::string valid = join(allowed, ", ", [](std::string_view k) { return std::string(k); });
-        JsonReader(item.value(), mSource, mPath + "/" + item.key()).error("unknown key (valid keys: " + valid + ")");
+        JsonReader(item.value(), mSource, mPath + "/" + item.key())
+            .error("unknown key (valid keys: " + valid + ")");
     }
 }
 

@@ -12,8 +12,16 @@ namespace sb {
 struct Aabb {
     glm::vec3 min{std::numeric_limits<float>::max()};
     glm::vec3 max{-std::numeric_limits<float>::max()};
-    void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
-    void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+    void extend(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Aabb& b) {
+        if (!b.empty()) {
+            extend(b.min);
+            extend(b.max);
+        }
+    }
     bool empty() const { return min.x > max.x; }
     glm::vec3 center() const { return 0.5f * (min + max); }
     glm::vec3 extent() const { return max - min; }

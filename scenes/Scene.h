@@ -23,28 +23,34 @@ enum class Effect : uint32_t {
     MultipleLights = 1u << 5,
 };
 using EffectMask = uint32_t;
-constexpr EffectMask operator|(Effect a, Effect b) { return uint32_t(a) | uint32_t(b); }
-constexpr EffectMask operator|(EffectMask a, Effect b) { return a | uint32_t(b); }
-constexpr bool hasEffect(EffectMask m, Effect e) { return (m & uint32_t(e)) != 0; }
+constexpr EffectMask operator|(Effect a, Effect b) {
+    return uint32_t(a) | uint32_t(b);
+}
+constexpr EffectMask operator|(EffectMask a, Effect b) {
+    return a | uint32_t(b);
+}
+constexpr bool hasEffect(EffectMask m, Effect e) {
+    return (m & uint32_t(e)) != 0;
+}
 /// "hard_shadows", "soft_shadows", "self_shadowing", "colour_bleeding", "non_planar_receivers",
 /// "multiple_lights": the names used in scene files, --list and CSV.
 const char* effectName(Effect e);
 std::optional<Effect> parseEffect(const std::string& name);
 std::string effectMaskToString(EffectMask m); ///< "hard_shadows+self_shadowing"
-constexpr Effect kAllEffects[] = {Effect::HardShadows,   Effect::SoftShadows,        Effect::SelfShadowing,
+constexpr Effect kAllEffects[] = {Effect::HardShadows,    Effect::SoftShadows,        Effect::SelfShadowing,
                                   Effect::ColourBleeding, Effect::NonPlanarReceivers, Effect::MultipleLights};
 
 struct Instance {
-    uint32_t mesh = 0;          ///< index into Scene::meshes
+    uint32_t mesh = 0; ///< index into Scene::meshes
     glm::vec3 position{0.0f};
     glm::vec3 rotationDeg{0.0f}; ///< Euler XYZ, applied Z then Y then X (R = Rx * Ry * Rz)
     float scale = 1.0f;          ///< uniform only: normals transform with mat3(model) / scale
     glm::vec3 color{0.8f};
     bool castsShadow = true;
     bool receivesShadow = true;
-    bool fromLayout = false;     ///< placed by the random layout (these are what --scale scales)
-    glm::mat4 model{1.0f};       ///< derived from the above by Scene::updateTransforms()
-    uint32_t objectId = 0;       ///< 1-based, unique, written into the G-buffer (0 = background)
+    bool fromLayout = false; ///< placed by the random layout (these are what --scale scales)
+    glm::mat4 model{1.0f};   ///< derived from the above by Scene::updateTransforms()
+    uint32_t objectId = 0;   ///< 1-based, unique, written into the G-buffer (0 = background)
 };
 
 enum class LightType { Directional, Point, Spot };
@@ -57,9 +63,9 @@ struct Light {
     glm::vec3 position{0.0f, 10.0f, 0.0f};  ///< point, spot
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
-    float range = 0.0f;          ///< point/spot: distance of zero contribution; 0 = unlimited
-    float spotOuterDeg = 30.0f;  ///< half-angle of the spot cone
-    float spotInnerDeg = 25.0f;  ///< half-angle of full intensity
+    float range = 0.0f;         ///< point/spot: distance of zero contribution; 0 = unlimited
+    float spotOuterDeg = 30.0f; ///< half-angle of the spot cone
+    float spotInnerDeg = 25.0f; ///< half-angle of full intensity
 };
 
 struct CameraPreset {

@@ -9,12 +9,12 @@
 namespace sb {
 
 struct SceneOptions {
-    std::optional<uint32_t> instances;   ///< overrides the layout's count (--instances N)
-    float scale = 1.0f;                  ///< multiplies the scale of every layout instance (--scale S)
-    std::optional<uint32_t> seed;        ///< overrides the layout's seed (--seed N)
-    std::optional<int> tessellation;     ///< overrides every generator's tessellation knob (--tess N)
-    std::optional<LightType> lightType;  ///< replaces the type of every light (--light TYPE)
-    std::string modelPath;               ///< replaces the layout mesh with a model file (--model PATH)
+    std::optional<uint32_t> instances;  ///< overrides the layout's count (--instances N)
+    float scale = 1.0f;                 ///< multiplies the scale of every layout instance (--scale S)
+    std::optional<uint32_t> seed;       ///< overrides the layout's seed (--seed N)
+    std::optional<int> tessellation;    ///< overrides every generator's tessellation knob (--tess N)
+    std::optional<LightType> lightType; ///< replaces the type of every light (--light TYPE)
+    std::string modelPath;              ///< replaces the layout mesh with a model file (--model PATH)
     /// Refuse scenes whose estimated GPU+CPU memory exceeds this many bytes (absurd --instances).
     uint64_t memoryLimitBytes = 8ull << 30;
 };

@@ -17,7 +17,8 @@ std::string join(const Range& items, const std::string& separator, Project proje
 
 template <typename Range>
 std::string join(const Range& items, const std::string& separator) {
-    return join(items, separator, [](const auto& s) -> const auto& { return s; });
+    return join(
+        items, separator, [](const auto& s) -> const auto& { return s; });
 }
 
 } // namespace sb

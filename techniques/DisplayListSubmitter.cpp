@@ -2,7 +2,9 @@
 
 namespace sb {
 
-DisplayListSubmitter::~DisplayListSubmitter() { release(); }
+DisplayListSubmitter::~DisplayListSubmitter() {
+    release();
+}
 
 void DisplayListSubmitter::release() {
     if (mListCount) glDeleteLists(mFirstList, mListCount);

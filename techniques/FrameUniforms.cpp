@@ -10,7 +10,9 @@ FrameUniforms::FrameUniforms() {
     glNamedBufferStorage(mBuffer, sizeof(FrameUniformData), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-FrameUniforms::~FrameUniforms() { glDeleteBuffers(1, &mBuffer); }
+FrameUniforms::~FrameUniforms() {
+    glDeleteBuffers(1, &mBuffer);
+}
 
 FrameUniformData FrameUniforms::compute(const Scene& scene, const glm::mat4& view, const glm::mat4& proj,
                                         const glm::vec3& eye) {

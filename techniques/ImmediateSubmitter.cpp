@@ -4,7 +4,9 @@
 
 namespace sb {
 
-void ImmediateSubmitter::upload(const Scene& scene) { mScene = &scene; }
+void ImmediateSubmitter::upload(const Scene& scene) {
+    mScene = &scene;
+}
 
 void ImmediateSubmitter::draw(DrawSet set) {
     glBindVertexArray(0);

@@ -14,7 +14,9 @@ struct InstanceRecord {
 constexpr DrawSet kSets[] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers};
 } // namespace
 
-InstancedSubmitter::~InstancedSubmitter() { release(); }
+InstancedSubmitter::~InstancedSubmitter() {
+    release();
+}
 
 void InstancedSubmitter::release() {
     if (mInstanceBuffer) glDeleteBuffers(1, &mInstanceBuffer);
@@ -40,7 +42,8 @@ void InstancedSubmitter::upload(const Scene& scene) {
         }
     }
     glCreateBuffers(1, &mInstanceBuffer);
-    glNamedBufferStorage(mInstanceBuffer, GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
+    glNamedBufferStorage(mInstanceBuffer,
+                         GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
                          records.empty() ? nullptr : records.data(), 0);
     // A VAO per mesh: the shared mesh buffers at binding 0, the instance buffer at binding 1.
     for (size_t m = 0; m < scene.meshes.size(); ++m) {

@@ -4,7 +4,9 @@
 
 namespace sb {
 
-MeshBuffers::~MeshBuffers() { release(); }
+MeshBuffers::~MeshBuffers() {
+    release();
+}
 
 void MeshBuffers::release() {
     for (Gpu& g : mMeshes) {
@@ -29,8 +31,10 @@ void MeshBuffers::upload(const Scene& scene) {
         glCreateVertexArrays(1, &g.vao);
         glCreateBuffers(1, &g.vbo);
         glCreateBuffers(1, &g.ibo);
-        glNamedBufferStorage(g.vbo, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data(), 0);
-        glNamedBufferStorage(g.ibo, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(), 0);
+        glNamedBufferStorage(g.vbo, GLsizeiptr(interleaved.size() * sizeof(glm::vec3)), interleaved.data(),
+                             0);
+        glNamedBufferStorage(g.ibo, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+                             0);
         glVertexArrayVertexBuffer(g.vao, 0, g.vbo, 0, GLsizei(2 * sizeof(glm::vec3)));
         glVertexArrayElementBuffer(g.vao, g.ibo);
         glEnableVertexArrayAttrib(g.vao, 0);

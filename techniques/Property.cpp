@@ -13,8 +13,9 @@ namespace {
 // (the same form PropertySet stores as canonical text), so "[0, 0.1]" means exactly what it says.
 std::string formatBound(double v, PropertyType type) {
     char buf[64];
-    std::to_chars_result r = type == PropertyType::Int ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed)
-                                                       : std::to_chars(buf, buf + sizeof buf, v);
+    std::to_chars_result r = type == PropertyType::Int
+                                 ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed)
+                                 : std::to_chars(buf, buf + sizeof buf, v);
     if (r.ec != std::errc()) return "?"; // cannot happen for 64 bytes; keeps the error path total
     return std::string(buf, r.ptr);
 }
@@ -29,10 +30,14 @@ std::string joinChoices(const std::vector<std::string>& choices) {
 
 const char* propertyTypeName(PropertyType t) {
     switch (t) {
-    case PropertyType::Int: return "int";
-    case PropertyType::Float: return "float";
-    case PropertyType::Bool: return "bool";
-    case PropertyType::Enum: return "enum";
+    case PropertyType::Int:
+        return "int";
+    case PropertyType::Float:
+        return "float";
+    case PropertyType::Bool:
+        return "bool";
+    case PropertyType::Enum:
+        return "enum";
     }
     return "unknown"; // only reachable through a cast of an out-of-range integer
 }
@@ -40,9 +45,12 @@ const char* propertyTypeName(PropertyType t) {
 std::string PropertyDesc::rangeText() const {
     switch (type) {
     case PropertyType::Int:
-    case PropertyType::Float: return "[" + formatBound(min, type) + ", " + formatBound(max, type) + "]";
-    case PropertyType::Bool: return "{true, false}";
-    case PropertyType::Enum: return joinChoices(choices);
+    case PropertyType::Float:
+        return "[" + formatBound(min, type) + ", " + formatBound(max, type) + "]";
+    case PropertyType::Bool:
+        return "{true, false}";
+    case PropertyType::Enum:
+        return joinChoices(choices);
     }
     return "";
 }

@@ -12,13 +12,13 @@ enum class PropertyType { Int, Float, Bool, Enum };
 const char* propertyTypeName(PropertyType t); ///< "int", "float", "bool", "enum"
 
 struct PropertyDesc {
-    std::string name;          ///< lower_snake_case, unique within a technique
+    std::string name; ///< lower_snake_case, unique within a technique
     PropertyType type = PropertyType::Int;
-    std::string defaultValue;  ///< canonical text form, e.g. "2048", "0.5", "true", "pcf"
-    double min = 0.0;          ///< Int/Float: inclusive range
+    std::string defaultValue; ///< canonical text form, e.g. "2048", "0.5", "true", "pcf"
+    double min = 0.0;         ///< Int/Float: inclusive range
     double max = 0.0;
     std::vector<std::string> choices; ///< Enum: allowed values
-    std::string description;   ///< one line for --list
+    std::string description;          ///< one line for --list
     /// "[256, 8192]" / "{on, off}" / "{true, false}": the range text used in --list and errors.
     std::string rangeText() const;
 };

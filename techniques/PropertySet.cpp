@@ -85,11 +85,15 @@ std::string canonicalFloat(const std::string& owner, const PropertyDesc& d, cons
 // Parses and validates `value` against `d`; returns the canonical text form stored and printed.
 std::string canonicalize(const std::string& owner, const PropertyDesc& d, const std::string& value) {
     if (value.empty())
-        throw Error(owner + ": property '" + d.name + "' has an empty value; expected " + propertyTypeName(d.type) +
-                    " " + d.rangeText());
+        throw Error(owner + ": property '" + d.name + "' has an empty value; expected " +
+                    propertyTypeName(d.type) +
+                    (d.type == PropertyType::Int || d.type == PropertyType::Float ? " in " : " one of ") +
+                    d.rangeText());
     switch (d.type) {
-    case PropertyType::Int: return canonicalInt(owner, d, value);
-    case PropertyType::Float: return canonicalFloat(owner, d, value);
+    case PropertyType::Int:
+        return canonicalInt(owner, d, value);
+    case PropertyType::Float:
+        return canonicalFloat(owner, d, value);
     case PropertyType::Bool:
         if (std::optional<bool> b = parseBool(value)) return *b ? "true" : "false";
         throwBadValue(owner, d, value, "is not a bool (also accepted: 1/0, on/off, yes/no); expected one of");
@@ -180,12 +184,15 @@ const std::string& PropertySet::getEnum(const std::string& name) const {
     return mValues[i];
 }
 
-const std::string& PropertySet::getText(const std::string& name) const { return mValues[indexOf(name)]; }
+const std::string& PropertySet::getText(const std::string& name) const {
+    return mValues[indexOf(name)];
+}
 
 std::string PropertySet::toString() const {
     std::string out;
     for (size_t i = 0; i < mDescs.size(); ++i)
-        out += (i ? std::string(1, kPairSeparator) : std::string()) + mDescs[i].name + kValueSeparator + mValues[i];
+        out += (i ? std::string(1, kPairSeparator) : std::string()) + mDescs[i].name + kValueSeparator +
+               mValues[i];
     return out;
 }
 
@@ -194,7 +201,8 @@ size_t PropertySet::indexOf(const std::string& name) const {
         if (mDescs[i].name == name) return i;
     std::string known;
     for (const PropertyDesc& d : mDescs) known += (known.empty() ? "" : ", ") + d.name;
-    throw Error(mOwner + ": unknown property '" + name + "' (known: " + (known.empty() ? "none" : known) + ")");
+    throw Error(mOwner + ": unknown property '" + name + "' (known: " + (known.empty() ? "none" : known) +
+                ")");
 }
 
 namespace {
@@ -227,7 +235,8 @@ TechniqueSpec TechniqueSpec::parse(const std::string& text) {
         throwBadSpec(text, "technique name '" + spec.name + "' contains '='");
     while (colon != std::string::npos) {
         size_t next = text.find(kPairSeparator, colon + 1);
-        std::string piece = text.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
+        std::string piece =
+            text.substr(colon + 1, next == std::string::npos ? std::string::npos : next - colon - 1);
         spec.properties.push_back(parsePair(text, piece));
         colon = next;
     }

@@ -23,7 +23,8 @@ constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert and common/sce
 std::array<glm::vec3, 8> corners(const Aabb& b) {
     std::array<glm::vec3, 8> c;
     for (int i = 0; i < 8; ++i)
-        c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+        c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                        (i & 4) ? b.max.z : b.min.z};
     return c;
 }
 
@@ -36,24 +37,42 @@ Aabb viewBounds(const glm::mat4& view, const Aabb& world) {
 } // namespace
 
 ShadowMapTechnique::ShadowMapTechnique()
-    : Technique({.name = "shadowmap",
-                 .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
-                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                            Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = {
-                     {kResolution, PropertyType::Int, "2048", 16, 8192, {}, "shadow map width and height (texels)"},
-                     {kBiasConstant, PropertyType::Float, "2", 0, 10000, {},
-                      "glPolygonOffset units: constant depth bias in depth-buffer steps"},
-                     {kBiasSlope, PropertyType::Float, "2", 0, 64, {},
-                      "glPolygonOffset factor: slope-scaled depth bias"},
-                     {kPcf, PropertyType::Int, "1", 1, 9, {}, "PCF kernel width: pcf x pcf taps one texel apart"},
-                     {kHardwareCompare, PropertyType::Bool, "true", 0, 0, {},
-                      "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"},
-                 }}) {}
+    : Technique(
+          {.name = "shadowmap",
+           .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
+           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                      Effect::MultipleLights,
+           .capabilities = {{"GL 4.5", 4, 5, ""}},
+           .passes = {"depth", "lighting"},
+           .properties = {
+               {kResolution, PropertyType::Int, "2048", 16, 8192, {}, "shadow map width and height (texels)"},
+               {kBiasConstant,
+                PropertyType::Float,
+                "2",
+                0,
+                10000,
+                {},
+                "glPolygonOffset units: constant depth bias in depth-buffer steps"},
+               {kBiasSlope,
+                PropertyType::Float,
+                "2",
+                0,
+                64,
+                {},
+                "glPolygonOffset factor: slope-scaled depth bias"},
+               {kPcf, PropertyType::Int, "1", 1, 9, {}, "PCF kernel width: pcf x pcf taps one texel apart"},
+               {kHardwareCompare,
+                PropertyType::Bool,
+                "true",
+                0,
+                0,
+                {},
+                "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"},
+           }}) {}
 
-ShadowMapTechnique::~ShadowMapTechnique() { releaseMaps(); }
+ShadowMapTechnique::~ShadowMapTechnique() {
+    releaseMaps();
+}
 
 glm::mat4 ShadowMapTechnique::computeLightViewProj(const Scene& scene, const Light& light) {
     Aabb all = scene.computeBounds(false);
@@ -84,7 +103,8 @@ void ShadowMapTechnique::setScene(const Scene& scene) {
     mLightViewProj.clear();
     mShadowMatrix.clear();
     size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
-    const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+    const glm::mat4 bias =
+        glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
         if (l.type == LightType::Point)

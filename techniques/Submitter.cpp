@@ -12,10 +12,14 @@ namespace sb {
 
 const char* submitModeName(SubmitMode m) {
     switch (m) {
-    case SubmitMode::Immediate: return "immediate";
-    case SubmitMode::DisplayList: return "displaylist";
-    case SubmitMode::Retained: return "retained";
-    case SubmitMode::Instanced: return "instanced";
+    case SubmitMode::Immediate:
+        return "immediate";
+    case SubmitMode::DisplayList:
+        return "displaylist";
+    case SubmitMode::Retained:
+        return "retained";
+    case SubmitMode::Instanced:
+        return "instanced";
     }
     return "?";
 }
@@ -28,19 +32,26 @@ std::optional<SubmitMode> parseSubmitMode(const std::string& name) {
 
 std::unique_ptr<Submitter> Submitter::create(SubmitMode mode) {
     switch (mode) {
-    case SubmitMode::Immediate: return std::make_unique<ImmediateSubmitter>();
-    case SubmitMode::DisplayList: return std::make_unique<DisplayListSubmitter>();
-    case SubmitMode::Retained: return std::make_unique<RetainedSubmitter>();
-    case SubmitMode::Instanced: return std::make_unique<InstancedSubmitter>();
+    case SubmitMode::Immediate:
+        return std::make_unique<ImmediateSubmitter>();
+    case SubmitMode::DisplayList:
+        return std::make_unique<DisplayListSubmitter>();
+    case SubmitMode::Retained:
+        return std::make_unique<RetainedSubmitter>();
+    case SubmitMode::Instanced:
+        return std::make_unique<InstancedSubmitter>();
     }
     return nullptr;
 }
 
 bool Submitter::inSet(const Instance& inst, DrawSet set) {
     switch (set) {
-    case DrawSet::All: return true;
-    case DrawSet::Casters: return inst.castsShadow;
-    case DrawSet::Receivers: return inst.receivesShadow;
+    case DrawSet::All:
+        return true;
+    case DrawSet::Casters:
+        return inst.castsShadow;
+    case DrawSet::Receivers:
+        return inst.receivesShadow;
     }
     return false;
 }

@@ -2,7 +2,8 @@
 
 namespace sb {
 
-Technique::Technique(TechniqueInfo info) : mInfo(std::move(info)), mProperties(mInfo.name, mInfo.properties) {}
+Technique::Technique(TechniqueInfo info)
+    : mInfo(std::move(info)), mProperties(mInfo.name, mInfo.properties) {}
 
 std::string Technique::checkCapabilities(const Context& context) const {
     for (const Capability& cap : mInfo.capabilities) {

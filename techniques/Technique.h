@@ -25,8 +25,8 @@ namespace sb {
 /// A GL requirement: a minimum version or an extension. Checked against the context before a run; a
 /// missing one is a clear skip (ExitCode::Unsupported), never a crash.
 struct Capability {
-    std::string name;      ///< shown to the user: "GL 4.5", "GL_ARB_depth_clamp"
-    int glMajor = 0;       ///< version requirement (0 = none)
+    std::string name; ///< shown to the user: "GL 4.5", "GL_ARB_depth_clamp"
+    int glMajor = 0;  ///< version requirement (0 = none)
     int glMinor = 0;
     std::string extension; ///< extension requirement ("" = none)
 };

@@ -6,10 +6,12 @@
 #include <regex>
 #include <set>
 
+#include <iostream>
+
 #include <gtest/gtest.h>
 
-#include "bench/CsvWriter.h"
 #include "TestSupport.h"
+#include "bench/CsvWriter.h"
 
 using namespace sb;
 using test::runCommand;
@@ -20,7 +22,9 @@ const std::string kBench = SB_BENCH_BINARY;
 // Small and fast: the CLI tests check behaviour, not performance.
 const std::string kQuick = " --instances 4 --size 96x96 --frames 2 --warmup 1 --no-timer-check";
 
-std::string bench(const std::string& args) { return kBench + " " + args; }
+std::string bench(const std::string& args) {
+    return kBench + " " + args;
+}
 
 int countLines(const std::string& s, const std::string& prefix) {
     int n = 0;
@@ -40,7 +44,8 @@ std::vector<std::string> documentedColumns() {
     std::string section = readme.substr(start, end - start);
     std::vector<std::string> cols;
     std::regex row(R"(\n\| `([a-z0-9_<>]+)`)");
-    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator(); ++it)
+    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator();
+         ++it)
         cols.push_back((*it)[1]);
     return cols;
 }
@@ -66,25 +71,28 @@ TEST(Cli, HelpShowsExamples) {
 TEST(Cli, ListShowsTechniquesEffectsPassesAndProperties) {
     auto r = runCommand(bench("--list"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* s : {"none", "shadowmap", "passes:   depth, lighting", "resolution", "bias_constant", "bias_slope",
-                          "pcf", "hardware_compare", "default 2048", "[16, 8192]", "hard_shadows", "aircraft"})
+    for (const char* s :
+         {"none", "shadowmap", "passes:   depth, lighting", "resolution", "bias_constant", "bias_slope",
+          "pcf", "hardware_compare", "default 2048", "[16, 8192]", "hard_shadows", "aircraft"})
         EXPECT_NE(r.output.find(s), std::string::npos) << "missing '" << s << "' in:\n" << r.output;
 }
 
 TEST(Cli, ShortRunWritesEveryDocumentedColumn) {
     std::string dir = test::freshDir("cli-run");
     std::string csv = dir + "/r.csv", samples = dir + "/s.csv", shot = dir + "/c.png", vis = dir + "/v.png";
-    auto r = runCommand(bench("-t none -t shadowmap:pcf=3" + kQuick + " --csv " + csv + " --samples " + samples +
-                              " --screenshot " + shot + " --visibility " + vis));
+    auto r = runCommand(bench("-t none -t shadowmap:pcf=3" + kQuick + " --csv " + csv + " --samples " +
+                              samples + " --screenshot " + shot + " --visibility " + vis));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 2u);
     auto cols = documentedColumns();
     ASSERT_GT(cols.size(), 30u) << "README CSV section not found or too short";
-    for (const std::string& c : cols) EXPECT_TRUE(headerHas(t.header, c)) << "documented column missing: " << c;
+    for (const std::string& c : cols)
+        EXPECT_TRUE(headerHas(t.header, c)) << "documented column missing: " << c;
     // Every column in the file is documented too.
     for (const std::string& h : t.header)
-        EXPECT_TRUE(std::any_of(cols.begin(), cols.end(), [&](const std::string& c) { return headerHas({h}, c); }))
+        EXPECT_TRUE(
+            std::any_of(cols.begin(), cols.end(), [&](const std::string& c) { return headerHas({h}, c); }))
             << "undocumented column: " << h;
     auto col = [&](const std::string& name) {
         return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
@@ -133,7 +141,9 @@ struct BadInput {
     int exitCode;
     const char* mustMention;
 };
-void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+void PrintTo(const BadInput& b, std::ostream* os) {
+    *os << b.name;
+}
 
 class BadInputs : public ::testing::TestWithParam<BadInput> {};
 
@@ -161,8 +171,8 @@ const BadInput kBadInputs[] = {
     {"out_of_range_property", "-t shadowmap:resolution=99999" + kQuick, 2, "[16, 8192]"},
     {"bad_property_type", "-t shadowmap:pcf=three" + kQuick, 2, "pcf"},
     {"property_without_value", "-t shadowmap:pcf" + kQuick, 2, "pcf"},
-    {"malformed_scene_json", "--scene " + std::string(SB_SOURCE_DIR) + "/tests/data/malformed.json" + kQuick, 2,
-     "malformed.json"},
+    {"malformed_scene_json", "--scene " + std::string(SB_SOURCE_DIR) + "/tests/data/malformed.json" + kQuick,
+     2, "malformed.json"},
     {"scene_wrong_type", "--scene " + std::string(SB_SOURCE_DIR) + "/tests/data/wrong_type.json" + kQuick, 2,
      "/layout/count"},
     {"missing_scene", "--scene $DIR/nope.json" + kQuick, 2, "nope.json"},
@@ -181,11 +191,32 @@ const BadInput kBadInputs[] = {
 INSTANTIATE_TEST_SUITE_P(Cli, BadInputs, ::testing::ValuesIn(kBadInputs),
                          [](const auto& p) { return std::string(p.param.name); });
 
+TEST(Cli, EveryHeadlessBackendRunsBothTechniques) {
+    // A whole run per backend, destructors included (GL objects must be released while the context
+    // still exists), and the backend recorded in the row.
+    for (const char* backend : {"egl-surfaceless", "egl-device", "osmesa"}) {
+        std::string csv = test::freshDir(std::string("cli-backend-") + backend) + "/r.csv";
+        auto r = runCommand(
+            bench(std::string("--backend ") + backend + " -t none -t shadowmap" + kQuick + " --csv " + csv));
+        if (r.exitCode == 3 && std::string(backend) == "egl-device") {
+            std::cout << "egl-device not available here: " << r.output << "\n";
+            continue;
+        }
+        ASSERT_EQ(r.exitCode, 0) << backend << ": " << r.output;
+        CsvTable t = CsvWriter::read(csv);
+        ASSERT_EQ(t.rows.size(), 2u) << backend;
+        EXPECT_EQ(
+            t.rows[1][size_t(std::find(t.header.begin(), t.header.end(), "backend") - t.header.begin())],
+            backend);
+    }
+}
+
 TEST(Cli, WindowViewerRendersAndQuits) {
     if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY (scripts/test.sh runs the suite under xvfb-run)";
     std::string dir = test::freshDir("cli-window");
     auto r = runCommand(bench("--window --window-frames 3 -t none -t shadowmap --instances 4 --size 96x96 "
-                              "--screenshot " + dir + "/w.png"));
+                              "--screenshot " +
+                              dir + "/w.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir + "/w.png"));
 }
@@ -198,7 +229,8 @@ TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
     EXPECT_EQ(r.exitCode, 3) << r.output;
     CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 1u);
-    EXPECT_EQ(t.rows[0][size_t(std::find(t.header.begin(), t.header.end(), "technique") - t.header.begin())], "none");
+    EXPECT_EQ(t.rows[0][size_t(std::find(t.header.begin(), t.header.end(), "technique") - t.header.begin())],
+              "none");
 }
 
 } // namespace

@@ -33,9 +33,13 @@ constexpr int kCrashExitCode = 42;
 
 extern "C" int rename(const char* from, const char* to) noexcept {
     switch (gRenameMode) {
-    case RenameMode::Fail: errno = EIO; return -1;
-    case RenameMode::Crash: _exit(kCrashExitCode); // dies like a killed process: no unwinding, no cleanup
-    case RenameMode::Real: break;
+    case RenameMode::Fail:
+        errno = EIO;
+        return -1;
+    case RenameMode::Crash:
+        _exit(kCrashExitCode); // dies like a killed process: no unwinding, no cleanup
+    case RenameMode::Real:
+        break;
     }
     return renameat(AT_FDCWD, from, AT_FDCWD, to);
 }
@@ -49,7 +53,9 @@ std::string readFile(const std::string& path) {
     return ss.str();
 }
 
-void writeFile(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
 
 class CsvWriterTest : public ::testing::Test {
 protected:
@@ -101,9 +107,9 @@ TEST_F(CsvWriterTest, AppendKeepsEarlierRows) {
 
 TEST_F(CsvWriterTest, NewColumnsExtendTheHeaderWithEmptyCellsForOldRows) {
     CsvWriter::appendRows(mPath, {{{"technique", "none"}, {"gpu_lighting_ms_median", "1"}}});
-    CsvWriter::appendRows(mPath,
-                          {{{"technique", "shadowmap"}, {"gpu_depth_ms_median", "2"}, {"gpu_lighting_ms_median", "3"}},
-                           {{"technique", "x"}}}); // a row lacking columns leaves them empty
+    CsvWriter::appendRows(
+        mPath, {{{"technique", "shadowmap"}, {"gpu_depth_ms_median", "2"}, {"gpu_lighting_ms_median", "3"}},
+                {{"technique", "x"}}}); // a row lacking columns leaves them empty
     EXPECT_EQ(readFile(mPath), "technique,gpu_lighting_ms_median,gpu_depth_ms_median\n"
                                "none,1,\n"
                                "shadowmap,3,2\n"
@@ -111,7 +117,8 @@ TEST_F(CsvWriterTest, NewColumnsExtendTheHeaderWithEmptyCellsForOldRows) {
 }
 
 TEST_F(CsvWriterTest, QuotingRoundTripsCommasQuotesAndNewlines) {
-    const std::vector<std::string> tricky = {"a,b", "say \"hi\"", "two\nlines", "plain", "", "\r\n", "\"", ",\"\n"};
+    const std::vector<std::string> tricky = {"a,b", "say \"hi\"", "two\nlines", "plain",
+                                             "",    "\r\n",       "\"",         ",\"\n"};
     CsvRow row;
     for (size_t i = 0; i < tricky.size(); ++i) row.emplace_back("c" + std::to_string(i), tricky[i]);
     CsvWriter::appendRows(mPath, {row});
@@ -134,7 +141,9 @@ TEST_F(CsvWriterTest, SingleEmptyCellSurvivesAsQuotedEmptyField) {
 }
 
 TEST_F(CsvWriterTest, ParseAcceptsCrLfAndBom) {
-    CsvTable t = CsvWriter::parse("\xEF\xBB\xBF" "a,b\r\n1,\"x\r\ny\"\r\n", "t.csv");
+    CsvTable t = CsvWriter::parse("\xEF\xBB\xBF"
+                                  "a,b\r\n1,\"x\r\ny\"\r\n",
+                                  "t.csv");
     EXPECT_EQ(t.header, (std::vector<std::string>{"a", "b"}));
     EXPECT_EQ(t.rows, (std::vector<std::vector<std::string>>{{"1", "x\r\ny"}}));
     EXPECT_TRUE(CsvWriter::parse("", "empty.csv").header.empty());

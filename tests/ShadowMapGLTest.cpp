@@ -7,12 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Error.h"
 #include "scenes/Math.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
-#include "TestSupport.h"
 
 using namespace sb;
 
@@ -24,7 +24,9 @@ struct SphereShadowCase {
     SubmitMode submit;
 };
 // Names the case in gtest output instead of dumping its bytes.
-void PrintTo(const SphereShadowCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const SphereShadowCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 const SphereShadowCase kCases[] = {
     {"hw_compare_retained", "", SubmitMode::Retained},
@@ -52,8 +54,8 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
     cfg.sceneOptions.lightType = LightType::Directional;
     Harness h(cfg);
     ShadowMapTechnique sm;
-    TechniqueSpec spec = TechniqueSpec::parse(std::string("shadowmap") + (*tc.techniqueProps ? ":" : "") +
-                                              tc.techniqueProps);
+    TechniqueSpec spec =
+        TechniqueSpec::parse(std::string("shadowmap") + (*tc.techniqueProps ? ":" : "") + tc.techniqueProps);
     sm.properties().apply(spec.properties);
     h.prepare(sm);
     h.renderFrame(sm);
@@ -65,7 +67,8 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
         if (i.castsShadow) sphere = &i;
     ASSERT_NE(sphere, nullptr);
     double meshRadius = 0.0;
-    for (const glm::vec3& p : scene.meshes[sphere->mesh].positions) meshRadius = std::max(meshRadius, double(glm::length(p)));
+    for (const glm::vec3& p : scene.meshes[sphere->mesh].positions)
+        meshRadius = std::max(meshRadius, double(glm::length(p)));
     glm::dvec3 centre = glm::dvec3(sphere->model * glm::vec4(0, 0, 0, 1));
     double radius = meshRadius * sphere->scale;
     glm::dvec3 toLight = -glm::normalize(glm::dvec3(scene.lights[0].direction));
@@ -77,7 +80,9 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
     glm::mat4 lightVP = ShadowMapTechnique::computeLightViewProj(scene, scene.lights[0]);
     // Orthographic light: row i of proj*view is (2 / extent_i) times a unit axis, so the extent of the
     // map in world units is 2 / |row|.
-    auto rowLength = [&](int r) { return glm::length(glm::vec3(lightVP[0][r], lightVP[1][r], lightVP[2][r])); };
+    auto rowLength = [&](int r) {
+        return glm::length(glm::vec3(lightVP[0][r], lightVP[1][r], lightVP[2][r]));
+    };
     double orthoWidth = 2.0 / std::min(rowLength(0), rowLength(1));
     int res = int(sm.properties().getInt("resolution"));
     int pcf = int(sm.properties().getInt("pcf"));
@@ -106,16 +111,17 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
             if (expectShadow != gotShadow) {
                 ++wrong;
                 if (wrong <= 5)
-                    ADD_FAILURE() << "pixel (" << x << "," << y << ") world " << world[i].x << "," << world[i].z
-                                  << " margin " << margin << " expected " << (expectShadow ? "shadow" : "lit")
-                                  << " got visibility " << vis[i * 4];
+                    ADD_FAILURE() << "pixel (" << x << "," << y << ") world " << world[i].x << ","
+                                  << world[i].z << " margin " << margin << " expected "
+                                  << (expectShadow ? "shadow" : "lit") << " got visibility " << vis[i * 4];
             }
         }
     // The ellipse must be substantially in view, or the test proves nothing.
     EXPECT_GT(ground, kSize * kSize / 4);
     EXPECT_GT(shadowedExpected, 500) << "the analytic shadow hardly covers any pixel";
     EXPECT_GT(judged, ground * 9 / 10) << "the tolerance band swallowed the image";
-    EXPECT_EQ(wrong, 0) << "pixels outside the edge band classified wrongly (band " << band << " world units)";
+    EXPECT_EQ(wrong, 0) << "pixels outside the edge band classified wrongly (band " << band
+                        << " world units)";
     // Shadow area agrees with the ellipse's within the band's share of pixels.
     EXPECT_NEAR(double(shadowedGot), double(shadowedExpected), 0.05 * shadowedExpected + 50);
 }
@@ -173,14 +179,16 @@ TEST(ShadowMapTechnique, SpotLightShadowsTheGroundUnderTheSphere) {
     ASSERT_NE(sphere, nullptr);
     glm::vec3 c = glm::vec3(sphere->model * glm::vec4(0, 0, 0, 1));
     double r = sphere->scale;
-    for (const glm::vec3& p : scene.meshes[sphere->mesh].positions) r = std::max(r, double(glm::length(p) * sphere->scale));
+    for (const glm::vec3& p : scene.meshes[sphere->mesh].positions)
+        r = std::max(r, double(glm::length(p) * sphere->scale));
     int checked = 0, wrong = 0;
     for (size_t i = 0; i < world.size(); ++i) {
         if (world[i].w == 0.0f || std::abs(world[i].y) > 1e-2f) continue;
         glm::dvec3 p(world[i]);
         glm::dvec3 toL = glm::normalize(glm::dvec3(light.position) - p);
         // outside the cone: the light term is zero anyway; skip
-        if (glm::dot(-toL, glm::normalize(glm::dvec3(light.direction))) < std::cos(glm::radians(light.spotOuterDeg)) + 0.02)
+        if (glm::dot(-toL, glm::normalize(glm::dvec3(light.direction))) <
+            std::cos(glm::radians(light.spotOuterDeg)) + 0.02)
             continue;
         glm::dvec3 pc = glm::dvec3(c) - p;
         double t = glm::dot(pc, toL);

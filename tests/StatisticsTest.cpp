@@ -106,7 +106,7 @@ TEST(StatisticsTest, PercentileSortedEndsInterpolationAndClamping) {
     EXPECT_EQ(Statistics::percentileSorted(sorted, 1.0), 6.0);
     EXPECT_NEAR(Statistics::percentileSorted(sorted, 0.25), 3.0, kEps); // h = 0.5
     EXPECT_NEAR(Statistics::percentileSorted(sorted, 0.75), 5.0, kEps); // h = 1.5
-    EXPECT_EQ(Statistics::percentileSorted(sorted, -1.0), 2.0);          // clamped, no out-of-bounds read
+    EXPECT_EQ(Statistics::percentileSorted(sorted, -1.0), 2.0);         // clamped, no out-of-bounds read
     EXPECT_EQ(Statistics::percentileSorted(sorted, 2.0), 6.0);
     EXPECT_EQ(Statistics::percentileSorted({}, 0.5), 0.0);
 }

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "TestSupport.h"
 #include "bench/Harness.h"
 #include "techniques/TechniqueRegistry.h"
-#include "TestSupport.h"
 
 using namespace sb;
 
@@ -38,7 +38,9 @@ struct ModeCase {
     const char* technique;
     SubmitMode mode;
 };
-void PrintTo(const ModeCase& c, std::ostream* os) { *os << c.technique << "/" << submitModeName(c.mode); }
+void PrintTo(const ModeCase& c, std::ostream* os) {
+    *os << c.technique << "/" << submitModeName(c.mode);
+}
 
 class SubmissionModes : public ::testing::TestWithParam<ModeCase> {};
 
@@ -56,19 +58,22 @@ TEST_P(SubmissionModes, SameImageAsRetained) {
     int maxDiff = 0;
     for (size_t p = 0; p < ref.color.size() / 4; ++p) {
         int d = 0;
-        for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int(ref.color[p * 4 + ch]) - int(got.color[p * 4 + ch])));
+        for (int ch = 0; ch < 3; ++ch)
+            d = std::max(d, std::abs(int(ref.color[p * 4 + ch]) - int(got.color[p * 4 + ch])));
         maxDiff = std::max(maxDiff, d);
         differentPixels += d > 1;
     }
     EXPECT_LE(differentPixels, ref.color.size() / 4 / 1000) << "max channel difference " << maxDiff;
     size_t visDiff = 0;
-    for (size_t i = 0; i < ref.visibility.size(); ++i) visDiff += std::abs(ref.visibility[i] - got.visibility[i]) > 0.01f;
+    for (size_t i = 0; i < ref.visibility.size(); ++i)
+        visDiff += std::abs(ref.visibility[i] - got.visibility[i]) > 0.01f;
     EXPECT_LE(visDiff, ref.visibility.size() / 1000);
 }
 
 const ModeCase kModeCases[] = {
-    {"none", SubmitMode::Immediate},       {"none", SubmitMode::DisplayList},     {"none", SubmitMode::Instanced},
-    {"shadowmap", SubmitMode::Immediate},  {"shadowmap", SubmitMode::DisplayList}, {"shadowmap", SubmitMode::Instanced},
+    {"none", SubmitMode::Immediate},        {"none", SubmitMode::DisplayList},
+    {"none", SubmitMode::Instanced},        {"shadowmap", SubmitMode::Immediate},
+    {"shadowmap", SubmitMode::DisplayList}, {"shadowmap", SubmitMode::Instanced},
 };
 
 INSTANTIATE_TEST_SUITE_P(Submit, SubmissionModes, ::testing::ValuesIn(kModeCases), [](const auto& p) {
@@ -107,7 +112,8 @@ TEST(Submitter, CountsWhatItDraws) {
     for (SubmitMode mode : kAllSubmitModes) {
         Counts c = countFrame(mode);
         EXPECT_EQ(c.triangles, c.expectedTriangles) << submitModeName(mode);
-        EXPECT_EQ(c.drawCalls, mode == SubmitMode::Instanced ? c.meshesUsed : c.instances) << submitModeName(mode);
+        EXPECT_EQ(c.drawCalls, mode == SubmitMode::Instanced ? c.meshesUsed : c.instances)
+            << submitModeName(mode);
     }
 }
 

@@ -4,12 +4,12 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -43,8 +43,8 @@ inline std::vector<glm::vec4> unprojectDepth(const std::vector<float>& depth, in
         for (int x = 0; x < w; ++x) {
             float d = depth[size_t(y) * size_t(w) + size_t(x)];
             if (d >= 1.0f) continue;
-            glm::vec4 ndc((x + 0.5f) / float(w) * 2.0f - 1.0f, (y + 0.5f) / float(h) * 2.0f - 1.0f, d * 2.0f - 1.0f,
-                          1.0f);
+            glm::vec4 ndc((x + 0.5f) / float(w) * 2.0f - 1.0f, (y + 0.5f) / float(h) * 2.0f - 1.0f,
+                          d * 2.0f - 1.0f, 1.0f);
             glm::vec4 p = inv * ndc;
             out[size_t(y) * size_t(w) + size_t(x)] = glm::vec4(glm::vec3(p) / p.w, 1.0f);
         }
@@ -78,7 +78,8 @@ inline std::string readFile(const std::string& path) {
 
 /// A fresh empty directory under the build tree's temp area for one test.
 inline std::string freshDir(const std::string& name) {
-    auto dir = std::filesystem::temp_directory_path() / ("shadowbench-test-" + name + "-" + std::to_string(getpid()));
+    auto dir = std::filesystem::temp_directory_path() /
+               ("shadowbench-test-" + name + "-" + std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
