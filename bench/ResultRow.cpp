@@ -1,24 +1,19 @@
 #include "bench/ResultRow.h"
 
-#include <cstdio>
+#include "bench/CsvNumber.h"
 
 namespace sb {
 
 namespace {
-std::string num(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.4f", v);
-    return buf;
-}
 
 void addStats(CsvRow& row, const std::string& prefix, const Statistics& s) {
-    row.emplace_back(prefix + "_median", num(s.median));
-    row.emplace_back(prefix + "_p5", num(s.p5));
-    row.emplace_back(prefix + "_p95", num(s.p95));
-    row.emplace_back(prefix + "_p99", num(s.p99));
-    row.emplace_back(prefix + "_mean", num(s.mean));
-    row.emplace_back(prefix + "_stddev", num(s.stddev));
-    row.emplace_back(prefix + "_mad", num(s.mad));
+    row.emplace_back(prefix + "_median", csvNumber(s.median));
+    row.emplace_back(prefix + "_p5", csvNumber(s.p5));
+    row.emplace_back(prefix + "_p95", csvNumber(s.p95));
+    row.emplace_back(prefix + "_p99", csvNumber(s.p99));
+    row.emplace_back(prefix + "_mean", csvNumber(s.mean));
+    row.emplace_back(prefix + "_stddev", csvNumber(s.stddev));
+    row.emplace_back(prefix + "_mad", csvNumber(s.mad));
 }
 
 std::string lightsText(const Scene& scene) {
@@ -61,7 +56,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"properties", r.properties},
         {"permutation", r.permutation},
         {"instances", std::to_string(layoutInstances(scene))},
-        {"scale", num(c.sceneOptions.scale)},
+        {"scale", csvNumber(c.sceneOptions.scale)},
         {"tessellation",
          c.sceneOptions.tessellation ? std::to_string(*c.sceneOptions.tessellation) : "default"},
         {"seed", c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
@@ -73,18 +68,18 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"lights", lightsText(scene)},
         {"frames", std::to_string(r.wall.n)},
         {"warmup", std::to_string(c.warmup)},
-        {"setup_ms", num(r.setupMs)},
+        {"setup_ms", csvNumber(r.setupMs)},
     };
     addStats(row, "wall_ms", r.wall);
     addStats(row, "cpu_submit_ms", r.cpuSubmit);
-    row.emplace_back("fps_median", num(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
+    row.emplace_back("fps_median", csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
     row.emplace_back("timer_verdict", v.label());
     row.emplace_back("timer_reason", v.reason);
     bool trusted = v.checked && v.trusted;
-    row.emplace_back("gpu_ms_median", trusted && r.gpuTotal.n ? num(r.gpuTotal.median) : "");
+    row.emplace_back("gpu_ms_median", trusted && r.gpuTotal.n ? csvNumber(r.gpuTotal.median) : "");
     for (const auto& [pass, stats] : r.gpuPass)
-        row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? num(stats.median) : "");
-    for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, num(value));
+        row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? csvNumber(stats.median) : "");
+    for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, csvNumber(value));
     return row;
 }
 

@@ -1,18 +1,9 @@
 #include "bench/SamplesFile.h"
 
-#include <cstdio>
-
+#include "bench/CsvNumber.h"
 #include "bench/CsvWriter.h"
 
 namespace sb {
-
-namespace {
-std::string num(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.4f", v);
-    return buf;
-}
-} // namespace
 
 void SamplesFile::append(const std::string& path, const Harness& harness, const RunResult& r) {
     const TimerVerdict& v = harness.timerVerdict();
@@ -25,11 +16,11 @@ void SamplesFile::append(const std::string& path, const Harness& harness, const 
                    {"properties", r.properties},
                    {"submit", submitModeName(harness.config().submit)},
                    {"frame", std::to_string(i)},
-                   {"cpu_submit_ms", num(s.cpuSubmitMs)},
-                   {"wall_ms", num(s.wallMs)},
+                   {"cpu_submit_ms", csvNumber(s.cpuSubmitMs)},
+                   {"wall_ms", csvNumber(s.wallMs)},
                    {"timer_verdict", v.label()},
-                   {prefix + "total_ms", s.gpuTotalMs >= 0 ? num(s.gpuTotalMs) : ""}};
-        for (const auto& [pass, ms] : s.gpuPassMs) row.emplace_back(prefix + pass + "_ms", num(ms));
+                   {prefix + "total_ms", s.gpuTotalMs >= 0 ? csvNumber(s.gpuTotalMs) : ""}};
+        for (const auto& [pass, ms] : s.gpuPassMs) row.emplace_back(prefix + pass + "_ms", csvNumber(ms));
         rows.push_back(std::move(row));
     }
     CsvWriter::appendRows(path, rows);

@@ -22,12 +22,7 @@ void DisplayListSubmitter::upload(const Scene& scene) {
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
         glNewList(mFirstList + GLuint(m), GL_COMPILE);
-        glBegin(GL_TRIANGLES);
-        for (uint32_t idx : mesh.indices) {
-            glVertexAttrib3fv(1, &mesh.normals[idx].x);
-            glVertexAttrib3fv(0, &mesh.positions[idx].x);
-        }
-        glEnd();
+        emitImmediate(mesh);
         glEndList();
     }
 }

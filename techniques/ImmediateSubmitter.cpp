@@ -14,12 +14,7 @@ void ImmediateSubmitter::draw(DrawSet set) {
         if (!inSet(inst, set)) continue;
         const Mesh& mesh = mScene->meshes[inst.mesh];
         setInstanceUniforms(inst);
-        glBegin(GL_TRIANGLES);
-        for (uint32_t idx : mesh.indices) {
-            glVertexAttrib3fv(1, &mesh.normals[idx].x);
-            glVertexAttrib3fv(0, &mesh.positions[idx].x);
-        }
-        glEnd();
+        emitImmediate(mesh);
         mStats.drawCalls += 1;
         mStats.triangles += mesh.triangleCount();
         mStats.instances += 1;

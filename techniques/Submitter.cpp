@@ -62,4 +62,13 @@ void Submitter::setInstanceUniforms(const Instance& inst) {
     glUniform4f(4, inst.color.r, inst.color.g, inst.color.b, float(inst.objectId));
 }
 
+void Submitter::emitImmediate(const Mesh& mesh) {
+    glBegin(GL_TRIANGLES);
+    for (uint32_t idx : mesh.indices) {
+        glVertexAttrib3fv(1, &mesh.normals[idx].x);
+        glVertexAttrib3fv(0, &mesh.positions[idx].x);
+    }
+    glEnd();
+}
+
 } // namespace sb

@@ -57,6 +57,9 @@ protected:
     static bool inSet(const Instance& inst, DrawSet set);
     /// Sets the per-instance uniforms (locations 0 and 4) of the bound program.
     static void setInstanceUniforms(const Instance& inst);
+    /// glBegin/glEnd stream of a mesh, one glVertexAttrib call per attribute and vertex (normal, then
+    /// position: attribute 0 provokes the vertex). Drawn per frame (immediate) or compiled (display lists).
+    static void emitImmediate(const Mesh& mesh);
     SubmitStats mStats;
 };
 
