@@ -57,6 +57,9 @@ void hashLight(Fnv1a& h, const Light& l) {
     h.value(l.range);
     h.value(l.spotOuterDeg);
     h.value(l.spotInnerDeg);
+    h.value(int(l.shape));
+    h.value(l.size);
+    h.value(l.angularRadiusDeg);
 }
 
 void hashCamera(Fnv1a& h, const CameraPreset& c) {
@@ -119,6 +122,26 @@ const char* lightTypeName(LightType t) {
 std::optional<LightType> parseLightType(const std::string& name) {
     for (LightType t : {LightType::Directional, LightType::Point, LightType::Spot})
         if (name == lightTypeName(t)) return t;
+    return std::nullopt;
+}
+
+const char* lightShapeName(LightShape s) {
+    switch (s) {
+    case LightShape::Point:
+        return "point";
+    case LightShape::Rect:
+        return "rect";
+    case LightShape::Disk:
+        return "disk";
+    case LightShape::Sphere:
+        return "sphere";
+    }
+    return "point";
+}
+
+std::optional<LightShape> parseLightShape(const std::string& name) {
+    for (LightShape s : {LightShape::Point, LightShape::Rect, LightShape::Disk, LightShape::Sphere})
+        if (name == lightShapeName(s)) return s;
     return std::nullopt;
 }
 

@@ -57,6 +57,14 @@ enum class LightType { Directional, Point, Spot };
 const char* lightTypeName(LightType t);
 std::optional<LightType> parseLightType(const std::string& name);
 
+/// The emitter's extent, for soft shadows (the reference's area sampling, soft techniques). `Point`
+/// is a delta light: hard shadows. Rect and disk lie in the plane through `position` perpendicular
+/// to `direction`; a sphere is centred at `position`. For a directional light, `Disk` with
+/// `angularRadiusDeg` is the sun's disk seen from the scene.
+enum class LightShape { Point, Rect, Disk, Sphere };
+const char* lightShapeName(LightShape s);
+std::optional<LightShape> parseLightShape(const std::string& name);
+
 struct Light {
     LightType type = LightType::Directional;
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; ///< unit, from the light into the scene (directional, spot)
@@ -66,6 +74,12 @@ struct Light {
     float range = 0.0f;         ///< point/spot: distance of zero contribution; 0 = unlimited
     float spotOuterDeg = 30.0f; ///< half-angle of the spot cone
     float spotInnerDeg = 25.0f; ///< half-angle of full intensity
+    LightShape shape = LightShape::Point;
+    /// rect: width and height (width along the rect's u axis, see reference/LightSampler.h);
+    /// disk and sphere: radius in x.
+    glm::vec2 size{0.0f};
+    float angularRadiusDeg = 0.0f; ///< directional + disk: angular radius of the emitter
+    bool isArea() const { return shape != LightShape::Point; }
 };
 
 struct CameraPreset {

@@ -279,9 +279,38 @@ LightType lightType(const JsonReader& r) {
     return *type;
 }
 
+/// "shape": point (default) | rect | disk | sphere; "size": [w, h] for rect, radius for disk/sphere;
+/// directional lights take "shape": "disk" with "angular_radius_deg" (the sun's disk) instead.
+void parseLightShapeKeys(const JsonReader& r, Light& light) {
+    if (!r.has("shape")) {
+        if (r.has("size") || r.has("angular_radius_deg")) r.error("\"size\"/\"angular_radius_deg\" need a \"shape\"");
+        return;
+    }
+    const auto shape = parseLightShape(r["shape"].string());
+    if (!shape) r["shape"].fail("one of point, rect, disk, sphere");
+    light.shape = *shape;
+    if (light.type == LightType::Directional) {
+        if (light.shape != LightShape::Disk && light.shape != LightShape::Point)
+            r["shape"].fail("\"disk\" (an angular disk) for a directional light");
+        if (light.shape == LightShape::Disk)
+            light.angularRadiusDeg = r["angular_radius_deg"].numberIn(0.0, 45.0, "an angle in [0, 45]");
+        return;
+    }
+    if (light.shape == LightShape::Rect) {
+        const JsonReader size = r["size"];
+        std::vector<double> wh;
+        for (const auto& e : size.elements()) wh.push_back(e.nonNegativeNumber());
+        if (wh.size() != 2) size.fail("[width, height]");
+        light.size = glm::vec2(float(wh[0]), float(wh[1]));
+    } else if (light.shape != LightShape::Point) {
+        light.size = glm::vec2(float(r["size"].nonNegativeNumber()), 0.0f);
+    }
+}
+
 void parseLight(Context& ctx, const JsonReader& r) {
     r.requireObject(
-        {"type", "direction", "position", "color", "intensity", "range", "spot_outer_deg", "spot_inner_deg"});
+        {"type", "direction", "position", "color", "intensity", "range", "spot_outer_deg", "spot_inner_deg", "shape",
+         "size", "angular_radius_deg"});
     Light light;
     if (r.has("type")) light.type = lightType(r["type"]);
     if (r.has("direction")) light.direction = r["direction"].unitDirection();
@@ -295,6 +324,7 @@ void parseLight(Context& ctx, const JsonReader& r) {
     if (r.has("spot_inner_deg"))
         light.spotInnerDeg =
             r["spot_inner_deg"].numberIn(0.0, light.spotOuterDeg, "an angle in [0, spot_outer_deg]");
+    parseLightShapeKeys(r, light);
     ctx.scene.lights.push_back(light);
 }
 
