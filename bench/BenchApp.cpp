@@ -8,10 +8,12 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/ConsoleReport.h"
+#include "bench/AccuracyEvaluator.h"
 #include "bench/CsvWriter.h"
 #include "bench/Environment.h"
 #include "bench/Harness.h"
 #include "bench/ImageWriter.h"
+#include "bench/QualitySweep.h"
 #include "bench/ResultRow.h"
 #include "bench/SamplesFile.h"
 #include "bench/Viewer.h"
@@ -22,7 +24,13 @@
 namespace sb {
 
 namespace {
-const char* kFooter = R"(Examples:
+const char* kFooter = R"(Modes:
+  bench [options]                  measure frame times (the default)
+  bench accuracy [options]         measure, then judge each technique's visibility against the exact
+                                   Embree reference at the same pixels (errors, NaN count, stability);
+                                   --sweep walks every quality knob (accuracy against time)
+
+Examples:
   bench                                            shadowmap, aircraft x200, 1024x1024 (the default run)
   bench -t none -t shadowmap --instances 200       baseline and technique side by side
   bench -t shadowmap:resolution=4096:pcf=3         properties inline (see --list for every knob)
@@ -32,6 +40,7 @@ const char* kFooter = R"(Examples:
   bench --screenshot out.png --visibility vis.png  images of the last frame
   bench --model path/to/model.obj                  your own caster through assimp
   bench --window                                   on-screen viewer (GLFW): drag to orbit, Tab switches
+  bench accuracy -t shadowmap --sweep --csv acc.csv  error against time for every shadowmap knob
 
 Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 bad input, 3 unsupported on this GL context.)";
 
@@ -124,6 +133,12 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("--max-memory-gib", maxMemoryGiB, "refuse scenes estimated above this memory")
         ->capture_default_str();
     app.add_flag("-q,--quiet", c.quiet, "print only the table");
+    bool noStability = false;
+    app.add_flag("--sweep", c.sweep, "accuracy: walk each technique's quality knobs (see --list)");
+    app.add_option("--light-index", c.accuracyLight, "accuracy: which light to judge")->capture_default_str();
+    app.add_option("--ref-samples", c.referenceSamples, "accuracy: reference samples per pixel (area lights)")
+        ->capture_default_str();
+    app.add_flag("--no-stability", noStability, "accuracy: skip perturbation gain and flicker");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -134,6 +149,12 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
         throw Error(std::string(e.what()) + " (see bench --help)");
     }
     if (listOnly) return -1;
+    c.stability = !noStability;
+    if (c.mode != RunConfig::Mode::Accuracy && (c.sweep || noStability))
+        throw Error("--sweep and --no-stability belong to `bench accuracy` (see bench --help)");
+    if (c.referenceSamples < 1 || c.referenceSamples > 4096) throw Error("--ref-samples: expected 1..4096");
+    if (c.accuracyLight < 0 || c.accuracyLight >= kMaxLights)
+        throw Error("--light-index: expected 0.." + std::to_string(kMaxLights - 1));
     if (!techniques.empty()) {
         c.techniques.clear();
         for (const std::string& t : techniques) c.techniques.push_back(TechniqueSpec::parse(t));
@@ -214,17 +235,66 @@ int BenchApp::run(const RunConfig& config) {
     return 0;
 }
 
+int BenchApp::runAccuracy(const RunConfig& config) {
+    std::unique_ptr<Harness> harnessOwner; // outlives the techniques and the evaluator (GL objects)
+    std::vector<TechniqueSpec> specs;
+    for (const TechniqueSpec& spec : config.techniques) {
+        auto expanded = config.sweep ? QualitySweep::expand(spec) : std::vector<TechniqueSpec>{spec};
+        specs.insert(specs.end(), expanded.begin(), expanded.end());
+    }
+    for (const TechniqueSpec& spec : specs) TechniqueRegistry::create(spec); // validate before GL
+    if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
+
+    harnessOwner = std::make_unique<Harness>(config);
+    Harness& harness = *harnessOwner;
+    if (!config.quiet) ConsoleReport::printHeader(std::cout, harness);
+    if (config.checkTimer) harness.calibrateTimer();
+    if (!config.quiet) ConsoleReport::printTimerVerdict(std::cout, harness.timerVerdict());
+    auto evaluator = std::make_unique<AccuracyEvaluator>(harness);
+    AccuracyOptions options;
+    options.light = config.accuracyLight;
+    options.referenceSamples = config.referenceSamples;
+    options.stability = config.stability;
+
+    Environment env = Environment::capture();
+    std::vector<std::pair<RunResult, AccuracyResult>> results;
+    for (size_t i = 0; i < specs.size(); ++i) {
+        auto technique = TechniqueRegistry::create(specs[i]);
+        if (!config.quiet)
+            std::cout << "[" << (i + 1) << "/" << specs.size() << "] " << technique->name() << " "
+                      << technique->properties().toString() << " ..." << std::flush;
+        RunResult r = harness.measure(*technique);
+        AccuracyResult a = evaluator->evaluate(*technique, options);
+        if (!config.quiet) std::cout << " " << r.wall.median << " ms, " << a.hard.wrongPct << "% wrong\n";
+        env.timestamp = Environment::nowIso8601();
+        CsvRow row = ResultRow::build(harness, r, env);
+        a.appendColumns(row);
+        if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {row});
+        writeImages(config, harness, technique->name());
+        results.emplace_back(std::move(r), a);
+    }
+    ConsoleReport::printAccuracyTable(std::cout, results);
+    if (!config.csvPath.empty() && !config.quiet) std::cout << "rows appended to " << config.csvPath << "\n";
+    return 0;
+}
+
 int BenchApp::main(int argc, char** argv) {
     try {
         RunConfig config;
         bool listOnly = false;
+        if (argc > 1 && std::string(argv[1]) == "accuracy") {
+            config.mode = RunConfig::Mode::Accuracy;
+            argv[1] = argv[0]; // the rest parses like a normal run
+            ++argv;
+            --argc;
+        }
         int code = parse(argc, argv, config, listOnly);
         if (code >= 0) return code;
         if (listOnly) {
             ConsoleReport::printTechniqueList(std::cout);
             return 0;
         }
-        return run(config);
+        return config.mode == RunConfig::Mode::Accuracy ? runAccuracy(config) : run(config);
     } catch (const Error& e) {
         std::cerr << "bench: error: " << e.what() << "\n";
         return int(e.code());

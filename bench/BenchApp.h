@@ -18,6 +18,8 @@ public:
     static int parse(int argc, char** argv, RunConfig& config, bool& listOnly);
     /// Measures every technique of `config` (the body of a normal run).
     static int run(const RunConfig& config);
+    /// `bench accuracy`: measures and judges every technique (or every sweep configuration).
+    static int runAccuracy(const RunConfig& config);
     /// "1024x768" -> (1024, 768); throws sb::Error naming the option.
     static std::pair<int, int> parseSize(const std::string& text);
 };

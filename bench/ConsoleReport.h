@@ -5,6 +5,7 @@
 #include <iosfwd>
 #include <vector>
 
+#include "bench/AccuracyEvaluator.h"
 #include "bench/Harness.h"
 
 namespace sb {
@@ -15,6 +16,9 @@ public:
     static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
     /// The table; ratios are taken against the `none` row when there is one (the overhead baseline).
     static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results);
+    /// `bench accuracy`: time against error, one row per configuration.
+    static void printAccuracyTable(std::ostream& os,
+                                   const std::vector<std::pair<RunResult, AccuracyResult>>& results);
     /// `bench --list`: techniques with effects, passes, properties (name, type, default, range).
     static void printTechniqueList(std::ostream& os);
 };

@@ -50,8 +50,29 @@ Harness::~Harness() = default;
 
 void Harness::setCamera(const CameraPreset& camera) {
     mCamera = camera;
+    updateFrameData();
+}
+
+void Harness::setPixelShift(const glm::vec2& pixels) {
+    mPixelShift = pixels;
+    updateFrameData();
+}
+
+void Harness::setLight(size_t index, const Light& light) {
+    if (index >= mScene.lights.size())
+        throw Error("light " + std::to_string(index) + " does not exist in scene '" + mScene.name + "'");
+    mScene.lights[index] = light;
+    updateFrameData();
+}
+
+void Harness::updateFrameData() {
     mView = cameraView(mCamera);
     mProj = cameraProjection(mCamera, float(mConfig.width) / float(mConfig.height));
+    // One pixel is 2/width in NDC; translating clip x by shift * w after projection moves every sample.
+    glm::mat4 shift(1.0f);
+    shift[3] = glm::vec4(2.0f * mPixelShift.x / float(mConfig.width), 2.0f * mPixelShift.y / float(mConfig.height), 0.0f,
+                         1.0f);
+    mProj = shift * mProj;
     mFrameData = FrameUniforms::compute(mScene, mView, mProj, mCamera.eye);
 }
 

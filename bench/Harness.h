@@ -69,6 +69,14 @@ public:
     RunResult measure(Technique& technique);
     /// Moves the camera (the viewer's orbit); measurements use the configured preset.
     void setCamera(const CameraPreset& camera);
+    /// Shifts the image by `pixels` (sub-pixel camera perturbations of the stability metrics): a
+    /// translation of the projection in NDC, so every sample moves by the same screen offset.
+    void setPixelShift(const glm::vec2& pixels);
+    /// Replaces light `index` (light perturbations). Techniques must be prepared again afterwards
+    /// (their light-dependent precompute lives in setScene).
+    void setLight(size_t index, const Light& light);
+    const glm::mat4& view() const { return mView; }
+    const glm::mat4& projection() const { return mProj; }
     /// Runs the timer-trust calibration (once; the verdict is cached). Where the verdict is
     /// "untrusted", measured frames issue no timer queries at all: their numbers would never be shown,
     /// and on llvmpipe each query is extra driver work inside the frame being measured.
@@ -83,6 +91,8 @@ private:
     Scene mScene;
     CameraPreset mCamera;
     glm::mat4 mView{1.0f}, mProj{1.0f};
+    glm::vec2 mPixelShift{0.0f};
+    void updateFrameData();
     std::unique_ptr<FrameTargets> mTargets;
     std::unique_ptr<Submitter> mSubmitter;
     std::unique_ptr<FrameUniforms> mFrameUniforms;

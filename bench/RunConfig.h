@@ -13,6 +13,8 @@
 namespace sb {
 
 struct RunConfig {
+    enum class Mode { Measure, Accuracy };
+    Mode mode = Mode::Measure; ///< `bench` or `bench accuracy`
     std::vector<TechniqueSpec> techniques{{"shadowmap", {}}};
     std::string scene = "aircraft";
     SceneOptions sceneOptions;
@@ -28,6 +30,10 @@ struct RunConfig {
     std::string screenshotPath; ///< --screenshot: colour PNG (technique name inserted when several)
     std::string visibilityPath; ///< --visibility: visibility PNG
     bool checkTimer = true;     ///< run the GPU-timer trust calibration
+    bool sweep = false;         ///< accuracy: walk each technique's quality knobs
+    int accuracyLight = 0;      ///< accuracy: which light is judged
+    int referenceSamples = 64;  ///< accuracy: reference samples per pixel for area lights
+    bool stability = true;      ///< accuracy: perturbation gain and flicker
     int windowFrames = 0;       ///< --window: close after this many frames (0 = when the window closes)
     bool quiet = false;
     static constexpr int kMinFrames = 5;

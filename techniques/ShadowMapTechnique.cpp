@@ -68,6 +68,13 @@ ShadowMapTechnique::ShadowMapTechnique()
                 0,
                 {},
                 "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"},
+           },
+           // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
+           .quality = {
+               {kResolution, {"256", "512", "1024", "2048", "4096"}},
+               {kPcf, {"1", "3", "5"}},
+               {kBiasConstant, {"0.5", "2", "8", "32"}},
+               {kBiasSlope, {"0.5", "2", "4"}},
            }}) {}
 
 ShadowMapTechnique::~ShadowMapTechnique() {

@@ -31,6 +31,12 @@ struct Capability {
     std::string extension; ///< extension requirement ("" = none)
 };
 
+/// A quality knob and the values `bench accuracy --sweep` walks (accuracy against time).
+struct QualityKnob {
+    std::string property;
+    std::vector<std::string> values;
+};
+
 struct TechniqueInfo {
     std::string name;        ///< registry name, lower case: "shadowmap"
     std::string description; ///< one line for --list
@@ -38,6 +44,7 @@ struct TechniqueInfo {
     std::vector<Capability> capabilities;
     std::vector<std::string> passes; ///< stable names: GPU timer scopes and CSV columns
     std::vector<PropertyDesc> properties;
+    std::vector<QualityKnob> quality; ///< knobs that trade accuracy for time, with sweep values
 };
 
 /// Named counters of the last frame ("triangles", "draw_calls", "shadow_map_texels" ...), in a stable

@@ -1,0 +1,110 @@
+// The hard-case table (issue 3): scenes and viewpoints where shadow techniques are known to break,
+// each judged against the exact Embree reference at the same pixels with bounds that must hold.
+// Every technique issue adds its rows here. Bounds are the measured values on Mesa llvmpipe with
+// headroom, and each says why that number; NaN/Inf/out-of-range counts must be zero everywhere.
+#include <iostream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/AccuracyEvaluator.h"
+#include "bench/Harness.h"
+#include "techniques/TechniqueRegistry.h"
+
+using namespace sb;
+
+namespace {
+
+struct HardCase {
+    const char* name;
+    const char* scene; ///< tests/hard/scenes/<scene>.json
+    const char* camera;
+    const char* technique; ///< spec, properties inline
+    int size;
+    double maxWrongPct;       ///< all evaluated pixels, edges included
+    double maxWrongNoEdgePct; ///< with the 1-px band around reference shadow edges left out
+    double maxCameraGain;     ///< 0.25 px camera shift: technique changes / max(1, reference changes)
+    double maxLightGain;      ///< 0.01 degree light turn, same ratio
+    double maxFlicker;        ///< 6-step camera drift, same ratio summed over the steps
+    const char* why;          ///< the reason for these numbers
+    /// Samples judged: n.L above this. The issue's default is 0.05; the grazing rows judge every
+    /// sample facing the light (0), or a ground lit at 89.9 degrees (n.L = 0.0017) would be left out
+    /// and its acne never seen.
+    float nDotL = 0.05f;
+    /// A lower bound for negative controls: the harness must see the error it is there to catch.
+    double minWrongNoEdgePct = 0.0;
+};
+
+void PrintTo(const HardCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
+// Measured on llvmpipe (2026-11-22) in parentheses; bounds leave ~3x headroom unless said otherwise.
+const HardCase kCases[] = {
+    {"shadowmap_baseline", "baseline", "top", "shadowmap", 384, 0.05, 0.01, 3, 3, 3,
+     "(0.002% wrong, all on the edge band; gains 0.9/1.0, flicker 1.0): a 2048^2 map over a 2-unit caster "
+     "has "
+     "1 mm texels, below a pixel: shadowmap is as stable as the reference"},
+    {"shadowmap_grazing_60", "grazing_60", "side", "shadowmap", 384, 0.05, 0.01, 5, 5, 5,
+     "(0.005%, none off the edge; 1.7/0.7/1.1): slope-scaled bias covers the receiver's depth slope", 0.0f},
+    {"shadowmap_grazing_80", "grazing_80", "side", "shadowmap", 384, 0.05, 0.02, 20, 20, 150,
+     "(0.005%, 0.002% off edge: a few acne speckles on the far ground; gains 5/1 and flicker 40 are raw "
+     "pixel "
+     "counts out of 97k because the reference does not change): acne stays bounded at 80 degrees",
+     0.0f},
+    {"shadowmap_grazing_89", "grazing_89", "side", "shadowmap", 384, 0.05, 0.02, 20, 20, 150,
+     "(0.001%; 2/2/7 pixels): the ground at n.L = 0.017 is judged, acne stays bounded", 0.0f},
+    {"shadowmap_grazing_89_9", "grazing_89_9", "side", "shadowmap", 384, 0.05, 0.02, 20, 20, 150,
+     "(0 wrong; 0/0/0): n.L = 0.0017 on the ground, the shadow ~1700 units long: the fit does not blow up",
+     0.0f},
+    {"shadowmap_grazing_80_no_bias", "grazing_80", "side", "shadowmap:bias_constant=0:bias_slope=0", 384, 100,
+     100, 1e9, 1e9, 1e9,
+     "negative control (1.76% wrong off the edge band, camera gain 1788): without bias the ground acnes, and "
+     "the harness must see it; upper bounds are open on purpose",
+     0.0f, 0.5},
+    {"shadowmap_edge_closeup", "edge_closeup", "edge", "shadowmap", 384, 0.3, 0.01, 3, 3, 3,
+     "(0.085%, none off the edge; 0.90/0.87/1.0): 0.44 units across 384 px puts a 1 mm texel on ~1 px, so "
+     "the map's staircase is the edge band's error and nothing else"},
+    {"shadowmap_large_coordinates", "large_coordinates", "top", "shadowmap", 384, 1.0, 0.6, 5, 100, 6,
+     "(0.30%, 0.19% off edge; light gain 33.5 = 67 px vs 2, flicker 1.9): at 1e5 float spacing is 7.8 mm, "
+     "8x the map texel, so light-space depth is quantised and speckles; a known weakness (camera-relative "
+     "light matrices would fix it), bounded here so it cannot get worse unnoticed"},
+    {"shadowmap_degenerate_triangle", "degenerate_triangle", "top", "shadowmap", 384, 0.05, 0.01, 3, 4, 3,
+     "(0.003%; 1.0/1.5/1.0): a zero-area triangle covers no pixel in map or reference: no effect, no NaN"},
+};
+
+class HardCases : public ::testing::TestWithParam<HardCase> {};
+
+TEST_P(HardCases, BoundsHold) {
+    const HardCase& c = GetParam();
+    RunConfig cfg = test::quickConfig(std::string(SB_SOURCE_DIR) + "/tests/hard/scenes/" + c.scene + ".json",
+                                      c.camera, c.size);
+    Harness harness(cfg);
+    auto technique = TechniqueRegistry::create(TechniqueSpec::parse(c.technique));
+    harness.prepare(*technique);
+    AccuracyEvaluator evaluator(harness);
+    AccuracyOptions options;
+    options.nDotLThreshold = c.nDotL;
+    AccuracyResult r = evaluator.evaluate(*technique, options);
+    std::cout << c.name << ": evaluated " << r.hard.evaluated << ", wrong " << r.hard.wrongPct
+              << "% (no edge " << r.hard.wrongNoEdgePct << "%), camera gain " << r.cameraGain << " ("
+              << r.cameraChangesTechnique << "/" << r.cameraChangesReference << "), light gain "
+              << r.lightGain << " (" << r.lightChangesTechnique << "/" << r.lightChangesReference
+              << "), flicker " << r.flicker << "\n";
+    EXPECT_GT(r.hard.evaluated, uint64_t(c.size * c.size / 20)) << "too few judged pixels to mean anything";
+    EXPECT_EQ(r.sanity.nan, 0u);
+    EXPECT_EQ(r.sanity.inf, 0u);
+    EXPECT_EQ(r.sanity.outOfRange, 0u);
+    EXPECT_LE(r.hard.wrongPct, c.maxWrongPct) << c.why;
+    EXPECT_LE(r.hard.wrongNoEdgePct, c.maxWrongNoEdgePct) << c.why;
+    EXPECT_LE(r.cameraGain, c.maxCameraGain) << c.why;
+    EXPECT_LE(r.lightGain, c.maxLightGain) << c.why;
+    EXPECT_LE(r.flicker, c.maxFlicker) << c.why;
+    EXPECT_GE(r.hard.wrongNoEdgePct, c.minWrongNoEdgePct) << c.why;
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, HardCases, ::testing::ValuesIn(kCases),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+} // namespace
