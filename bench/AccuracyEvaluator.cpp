@@ -34,6 +34,7 @@ AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness) {
     mEmbree = std::make_unique<EmbreeScene>(harness.scene());
     mTracer = std::make_unique<ReferenceTracer>(harness.scene(), *mEmbree);
     mGBuffer = std::make_unique<GBufferRenderer>(harness.config().width, harness.config().height);
+    mGBuffer->setScene(harness.scene()); // immediate/displaylist G-buffers draw per instance themselves
 }
 
 AccuracyEvaluator::~AccuracyEvaluator() = default;

@@ -7,9 +7,13 @@ namespace sb {
 
 namespace {
 // A technique sample is "shadowed" below half visibility; the reference is exact 0/1 for hard shadows.
-bool shadowed(float v) { return v < 0.5f; }
+bool shadowed(float v) {
+    return v < 0.5f;
+}
 
-double percent(uint64_t part, uint64_t whole) { return whole ? 100.0 * double(part) / double(whole) : 0.0; }
+double percent(uint64_t part, uint64_t whole) {
+    return whole ? 100.0 * double(part) / double(whole) : 0.0;
+}
 } // namespace
 
 std::vector<uint8_t> AccuracyMetrics::edgeMask(const std::vector<float>& reference, int width, int height) {
@@ -83,9 +87,12 @@ SoftMetrics AccuracyMetrics::soft(const std::vector<float>& technique, const std
 NumericSanity AccuracyMetrics::sanity(const std::vector<float>& values) {
     NumericSanity s;
     for (float v : values) {
-        if (std::isnan(v)) ++s.nan;
-        else if (std::isinf(v)) ++s.inf;
-        else if (v < 0.0f || v > 1.0f) ++s.outOfRange;
+        if (std::isnan(v))
+            ++s.nan;
+        else if (std::isinf(v))
+            ++s.inf;
+        else if (v < 0.0f || v > 1.0f)
+            ++s.outOfRange;
     }
     return s;
 }

@@ -31,12 +31,26 @@ public:
     glm::vec3 geometricNormal(uint32_t instance, uint32_t primitive) const;
 
 private:
+    /// Creates, fills and attaches instance `i`'s triangle geometry with geomID i.
+    void addInstance(const Scene& scene, size_t i);
+    /// Releases the scene and the device (also on a failed construction).
+    void release();
+    /// Fills mNormals from the world vertices (after all instances are added).
+    void computeNormals();
+    /// cross(b - a, c - a) normalised, zero when degenerate.
+    static glm::vec3 triangleNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
     RTCDevice mDevice = nullptr;
     RTCScene mScene = nullptr;
     size_t mTriangles = 0;
     /// Per instance: its world-space vertices and the mesh's indices (kept for normals).
     std::vector<std::vector<glm::vec3>> mWorldVertices;
     std::vector<const std::vector<uint32_t>*> mIndices;
+    /// Unit geometric normals of all triangles, instance after instance (mNormalBase[i] is instance
+    /// i's first): geometricNormal() is on the tracer's per-pixel path, a flat table keeps it to two
+    /// loads instead of a pointer chase, three vertex loads and a square root.
+    std::vector<glm::vec3> mNormals;
+    std::vector<size_t> mNormalBase;
 };
 
 } // namespace sb

@@ -5,7 +5,10 @@
 //       0 shadowed;
 //   soft (area lights: rect, disk, sphere; directional disk = angular sun): N stratified samples over
 //       the emitter, visibility = unoccluded fraction, with its noise bound.
-// Samples whose geometric normal faces away from the light (n.L <= 0) are 0 (no direct light). Rays
+// Samples whose geometric normal faces away from the light (n.L <= 0, L towards the light's centre)
+// are 0 (no direct light), and so are spot-light samples outside the outer cone (no light arrives
+// there; Light::range, an attenuation, is not applied). Soft: emitter samples below the receiver's
+// horizon count as not seen (see reference/LightSampler.h for what "fraction of the light" means). Rays
 // start at p + n * originEpsilon(p) on the light's side, where the epsilon grows with |p| (a fixed one
 // fails at |p| ~ 1e5). Rays go out in packets of 16 (rtcOccluded16) over image tiles, on a thread pool.
 #include <cstdint>
@@ -25,7 +28,7 @@ struct VisibilityImage {
 
 struct TraceStats {
     uint64_t rays = 0;
-    double seconds = 0.0;       ///< wall time of the tracing
+    double seconds = 0.0; ///< wall time of the tracing
     int threads = 1;
     double raysPerSecondPerThread = 0.0;
     /// Soft: the largest 95% half-width of a per-pixel estimate, 1.96 * sqrt(v(1-v)/N) at its worst
@@ -37,20 +40,22 @@ struct TraceStats {
 class ReferenceTracer {
 public:
     struct Options {
-        int softSamples = 64; ///< per pixel for area lights; rounded up to a square (stratified grid)
-        int threads = 0;      ///< 0 = std::thread::hardware_concurrency()
-        uint32_t seed = 1;    ///< jitter of the strata (same seed, same image)
+        int softSamples = 64;   ///< per pixel for area lights; rounded up to a square (stratified grid)
+        int threads = 0;        ///< 0 = std::thread::hardware_concurrency()
+        uint32_t seed = 1;      ///< jitter of the strata (same seed, same image)
         bool forceHard = false; ///< treat area lights as their centre point
     };
 
     ReferenceTracer(const Scene& scene, const EmbreeScene& embree);
     /// Visibility of `scene.lights[light]` at every covered sample. Throws sb::Error when `light` is
     /// out of range or the G-buffer is empty.
-    VisibilityImage trace(const GBuffer& gbuffer, int light, const Options& options, TraceStats* stats = nullptr) const;
+    VisibilityImage trace(const GBuffer& gbuffer, int light, const Options& options,
+                          TraceStats* stats = nullptr) const;
     /// Geometric normal of a covered sample (from EmbreeScene).
     glm::vec3 normalAt(const GBuffer& gbuffer, size_t pixel) const;
     /// Ray-origin offset for a point: grows with the largest coordinate magnitude (relative epsilon
-    /// on float precision) with an absolute floor for points near the origin.
+    /// on float precision) with an absolute floor for points near the origin:
+    /// max(1e-4, 2^-18 * max|p_i|), i.e. 32 float ulps of the largest coordinate (the why in the .cpp).
     static float originEpsilon(const glm::vec3& p);
 
 private:

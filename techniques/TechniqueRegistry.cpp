@@ -1,6 +1,7 @@
 #include "techniques/TechniqueRegistry.h"
 #include "scenes/Strings.h"
 
+#include "reference/ReferenceTechnique.h"
 #include "scenes/Error.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
@@ -12,6 +13,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
     static const std::vector<Entry> kEntries = {
         {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
         {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
+        {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
     };
     return kEntries;
 }

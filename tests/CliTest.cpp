@@ -20,7 +20,8 @@ namespace {
 
 const std::string kBench = SB_BENCH_BINARY;
 // Small and fast: the CLI tests check behaviour, not performance.
-const std::string kQuick = " --instances 4 --size 96x96 --frames 2 --warmup 1 --no-timer-check";
+const std::string kQuickNoLayout = " --size 96x96 --frames 2 --warmup 1 --no-timer-check";
+const std::string kQuick = " --instances 4" + kQuickNoLayout; // scenes with a layout
 
 std::string bench(const std::string& args) {
     return kBench + " " + args;
@@ -185,6 +186,13 @@ const BadInput kBadInputs[] = {
     {"unknown_backend", "--backend vulkan" + kQuick, 2, "vulkan"},
     {"unknown_option", "--frobnicate" + kQuick, 2, "frobnicate"},
     {"unsupported_point_light", "-t shadowmap --light point" + kQuick, 3, "point light"},
+    {"sweep_without_accuracy", "--sweep" + kQuick, 2, "--sweep"},
+    {"accuracy_nothing_faces_light",
+     "accuracy --scene " + std::string(SB_SOURCE_DIR) + "/tests/data/light_from_below.json" + kQuickNoLayout, 2,
+     "nothing to judge"},
+    {"accuracy_scene_embree_refuses",
+     "accuracy --scene " + std::string(SB_SOURCE_DIR) + "/tests/data/infinite_vertex.json" + kQuickNoLayout, 2,
+     "non-finite"},
     {"unwritable_csv", "-t none" + kQuick + " --csv /proc/shadowbench/r.csv", 1, "/proc/shadowbench/r.csv"},
 };
 
@@ -219,6 +227,29 @@ TEST(Cli, WindowViewerRendersAndQuits) {
                               dir + "/w.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir + "/w.png"));
+}
+
+TEST(Cli, AccuracyRowHasTimingAndEveryDocumentedAccuracyColumn) {
+    std::string csv = test::freshDir("cli-accuracy") + "/a.csv";
+    auto r = runCommand(bench("accuracy -t none -t shadowmap -t reference --scene sphere_plane --camera top "
+                              "--size 128x128 --frames 2 --warmup 1 --no-timer-check --csv " + csv));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    CsvTable t = CsvWriter::read(csv);
+    ASSERT_EQ(t.rows.size(), 3u);
+    auto cols = documentedColumns();
+    for (const std::string& h : t.header)
+        EXPECT_TRUE(std::any_of(cols.begin(), cols.end(), [&](const std::string& c) { return headerHas({h}, c); }))
+            << "undocumented column: " << h;
+    for (const char* c : {"wall_ms_median", "acc_wrong_pct", "acc_nan", "acc_gain_camera", "ref_rays"})
+        EXPECT_TRUE(headerHas(t.header, c)) << c;
+    auto cell = [&](size_t row, const std::string& name) {
+        return t.rows[row][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
+    };
+    // The reference judged against itself is exact; `none` misses the whole shadow (false light only).
+    EXPECT_EQ(std::stod(cell(2, "acc_wrong_pct")), 0.0);
+    EXPECT_GT(std::stod(cell(0, "acc_false_light_pct")), 1.0);
+    EXPECT_EQ(std::stod(cell(0, "acc_false_shadow_pct")), 0.0);
+    for (size_t i = 0; i < 3; ++i) EXPECT_EQ(cell(i, "acc_nan"), "0.0000");
 }
 
 TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {

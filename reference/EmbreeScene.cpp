@@ -1,0 +1,167 @@
+#include "reference/EmbreeScene.h"
+
+#include <cmath>
+#include <string>
+
+#include "scenes/Error.h"
+
+namespace sb {
+
+namespace {
+
+/// "verbose=0" keeps Embree from printing anything; errors come back through rtcGetDeviceError.
+constexpr const char* kDeviceConfig = "verbose=0";
+
+std::string embreeErrorName(RTCError e) {
+    switch (e) {
+    case RTC_ERROR_NONE:
+        return "no error";
+    case RTC_ERROR_INVALID_ARGUMENT:
+        return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+        return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+        return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+        return "unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+        return "cancelled";
+    default:
+        return "unknown error";
+    }
+}
+
+std::string sceneLabel(const Scene& scene) {
+    return "scene '" + scene.name + "'";
+}
+
+std::string instanceLabel(const Scene& scene, size_t i) {
+    const Instance& inst = scene.instances[i];
+    const std::string mesh = inst.mesh < scene.meshes.size() ? scene.meshes[inst.mesh].name : "?";
+    return sceneLabel(scene) + ": instance " + std::to_string(i) + " (mesh '" + mesh + "')";
+}
+
+void checkDevice(RTCDevice device, const std::string& where) {
+    const RTCError e = rtcGetDeviceError(device);
+    if (e != RTC_ERROR_NONE) throw Error(where + ": Embree error: " + embreeErrorName(e), ExitCode::Failure);
+}
+
+bool isFinite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// The GL vertex shader computes `model * vec4(p, 1)` in float; glm's float mat4 * vec4 is the same
+/// sum of scaled columns, so Embree traces the triangles GL rasterises (up to the GPU's FMA use).
+std::vector<glm::vec3> worldVertices(const Scene& scene, size_t i) {
+    const Instance& inst = scene.instances[i];
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    std::vector<glm::vec3> out;
+    out.reserve(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions) {
+        const glm::vec3 w = glm::vec3(inst.model * glm::vec4(p, 1.0f));
+        if (!isFinite(w)) throw Error(instanceLabel(scene, i) + " has a non-finite vertex");
+        out.push_back(w);
+    }
+    return out;
+}
+
+} // namespace
+
+EmbreeScene::EmbreeScene(const Scene& scene) {
+    mDevice = rtcNewDevice(kDeviceConfig);
+    if (!mDevice)
+        throw Error(sceneLabel(scene) + ": Embree device: " + embreeErrorName(rtcGetDeviceError(nullptr)),
+                    ExitCode::Failure);
+    try {
+        mScene = rtcNewScene(mDevice);
+        checkDevice(mDevice, sceneLabel(scene) + ": rtcNewScene");
+        rtcSetSceneBuildQuality(mScene, RTC_BUILD_QUALITY_HIGH);
+        mWorldVertices.resize(scene.instances.size());
+        mIndices.resize(scene.instances.size(), nullptr);
+        for (size_t i = 0; i < scene.instances.size(); ++i) addInstance(scene, i);
+        computeNormals();
+        rtcCommitScene(mScene);
+        checkDevice(mDevice, sceneLabel(scene) + ": rtcCommitScene");
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+void EmbreeScene::addInstance(const Scene& scene, size_t i) {
+    const Instance& inst = scene.instances[i];
+    if (inst.mesh >= scene.meshes.size())
+        throw Error(sceneLabel(scene) + ": instance " + std::to_string(i) + " names mesh " +
+                    std::to_string(inst.mesh) + " of " + std::to_string(scene.meshes.size()));
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    mWorldVertices[i] = worldVertices(scene, i);
+    mIndices[i] = &mesh.indices;
+    const size_t triangles = mesh.triangleCount();
+    mTriangles += triangles;
+    // Every instance gets its geometry, even an empty one, so geomID == instance index holds; an
+    // empty mesh simply stays uncommitted-free (zero primitives are legal in Embree).
+    RTCGeometry geom = rtcNewGeometry(mDevice, RTC_GEOMETRY_TYPE_TRIANGLE);
+    checkDevice(mDevice, instanceLabel(scene, i) + ": rtcNewGeometry");
+    // Shared buffers: Embree reads our vectors directly (no copy). It may read 16 bytes from the last
+    // vec3 (SSE loads), so the vertex vector gets one padding element that is not part of the count.
+    std::vector<glm::vec3>& v = mWorldVertices[i];
+    const size_t vertexCount = v.size();
+    v.reserve(vertexCount + 1);
+    v.push_back(glm::vec3(0.0f));
+    if (triangles > 0) {
+        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, v.data(), 0,
+                                   sizeof(glm::vec3), vertexCount);
+        rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
+                                   3 * sizeof(uint32_t), triangles);
+    } else {
+        rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, nullptr, 0,
+                             sizeof(glm::vec3), 0);
+        rtcSetGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, nullptr, 0,
+                             3 * sizeof(uint32_t), 0);
+    }
+    v.pop_back(); // capacity (and so the padding) stays; the pointer Embree holds stays valid
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(mScene, geom, unsigned(i));
+    rtcReleaseGeometry(geom);
+    checkDevice(mDevice, instanceLabel(scene, i) + ": attaching the triangle geometry");
+}
+
+void EmbreeScene::release() {
+    if (mScene) rtcReleaseScene(mScene);
+    if (mDevice) rtcReleaseDevice(mDevice);
+    mScene = nullptr;
+    mDevice = nullptr;
+}
+
+EmbreeScene::~EmbreeScene() {
+    release();
+}
+
+glm::vec3 EmbreeScene::triangleNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float len2 = glm::dot(n, n);
+    // A zero-area triangle (or one so thin its normal underflows) has no facing: zero, never NaN.
+    if (!(len2 > 0.0f)) return glm::vec3(0.0f);
+    if (std::isfinite(len2)) return n / std::sqrt(len2);
+    // Huge triangles overflow the squared length in float; double has the range.
+    const glm::dvec3 nd = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    return glm::vec3(glm::normalize(nd));
+}
+
+void EmbreeScene::computeNormals() {
+    mNormals.reserve(mTriangles);
+    mNormalBase.resize(mWorldVertices.size());
+    for (size_t i = 0; i < mWorldVertices.size(); ++i) {
+        mNormalBase[i] = mNormals.size();
+        const std::vector<glm::vec3>& v = mWorldVertices[i];
+        const std::vector<uint32_t>& idx = *mIndices[i];
+        for (size_t t = 0; t + 2 < idx.size(); t += 3)
+            mNormals.push_back(triangleNormal(v[idx[t]], v[idx[t + 1]], v[idx[t + 2]]));
+    }
+}
+
+glm::vec3 EmbreeScene::geometricNormal(uint32_t instance, uint32_t primitive) const {
+    return mNormals[mNormalBase[instance] + primitive];
+}
+
+} // namespace sb

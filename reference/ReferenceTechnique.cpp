@@ -1,0 +1,152 @@
+#include "reference/ReferenceTechnique.h"
+
+#include <algorithm>
+
+namespace sb {
+
+namespace {
+constexpr const char* kSamples = "samples";
+constexpr const char* kThreads = "threads";
+constexpr const char* kHard = "hard";
+constexpr uint32_t kSeed = 1; // fixed: the same frame traces to the same image, frame after frame
+} // namespace
+
+ReferenceTechnique::ReferenceTechnique()
+    : Technique(
+          {.name = "reference",
+           .description = "exact visibility by ray tracing (Intel Embree): the ground truth",
+           .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
+                      Effect::NonPlanarReceivers | Effect::MultipleLights,
+           .capabilities = {{"GL 4.5", 4, 5, ""}},
+           .passes = {"gbuffer", "trace", "shade"},
+           .properties = {
+               {kSamples, PropertyType::Int, "64", 1, 4096, {}, "area-light samples per pixel (stratified)"},
+               {kThreads, PropertyType::Int, "0", 0, 256, {}, "tracing threads, 0 = all"},
+               {kHard, PropertyType::Bool, "false", 0, 0, {}, "treat area lights as points"},
+           }}) {}
+
+ReferenceTechnique::~ReferenceTechnique() {
+    releaseTexture();
+}
+
+void ReferenceTechnique::setScene(const Scene& scene) {
+    // Tracer first: it holds a reference to the Embree scene it replaces.
+    mTracer.reset();
+    mEmbree = std::make_unique<EmbreeScene>(scene);
+    mTracer = std::make_unique<ReferenceTracer>(scene, *mEmbree);
+    mScene = &scene;
+    if (mGBufferRenderer) mGBufferRenderer->setScene(scene);
+}
+
+void ReferenceTechnique::compile(const CompileContext& ctx) {
+    mPrograms = &ctx.programs;
+    Defines base = ctx.submitter.defines();
+    // Compiled here so the JIT cost and any error fall into setup; the renderer finds it cached.
+    const Program& gbuffer = ctx.programs.get({"reference/gbuffer.vert", "reference/gbuffer.frag", ""}, base);
+    Defines shade = base;
+    shade["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    mShadeProgram = &ctx.programs.get({"common/scene.vert", "reference/shade.frag", ""}, shade);
+    setPermutationKey(gbuffer.key() + "|" + mShadeProgram->key());
+}
+
+void ReferenceTechnique::releaseTexture() {
+    if (mVisibilityTexture) glDeleteTextures(1, &mVisibilityTexture);
+    mVisibilityTexture = 0;
+}
+
+void ReferenceTechnique::ensureTargets(int width, int height) {
+    if (width == mWidth && height == mHeight && mGBufferRenderer) return;
+    releaseTexture();
+    mGBufferRenderer = std::make_unique<GBufferRenderer>(width, height);
+    mGBufferRenderer->setScene(*mScene);
+    glCreateTextures(GL_TEXTURE_2D, 1, &mVisibilityTexture);
+    glTextureStorage2D(mVisibilityTexture, 1, GL_RGBA32F, width, height);
+    glTextureParameteri(mVisibilityTexture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(mVisibilityTexture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    mWidth = width;
+    mHeight = height;
+}
+
+ReferenceTracer::Options ReferenceTechnique::tracerOptions() const {
+    const PropertySet& p = properties();
+    ReferenceTracer::Options o;
+    o.softSamples = int(p.getInt(kSamples));
+    o.threads = int(p.getInt(kThreads));
+    o.seed = kSeed;
+    o.forceHard = p.getBool(kHard);
+    return o;
+}
+
+void ReferenceTechnique::renderGBuffer(FrameContext& ctx) {
+    ensureTargets(ctx.targets.width(), ctx.targets.height());
+    // proj * view as the frame uniforms compute it (techniques/FrameUniforms.cpp): the same float
+    // matrix as the shade pass's uViewProj, so both passes rasterise identically.
+    mGBuffer = mGBufferRenderer->render(ctx.submitter, *mPrograms, ctx.proj * ctx.view);
+}
+
+void ReferenceTechnique::trace() {
+    const ReferenceTracer::Options options = tracerOptions();
+    size_t lights = std::min<size_t>(mScene->lights.size(), kMaxLights);
+    mVisibility.assign(lights, {});
+    mTraceStats.assign(lights, {});
+    for (size_t i = 0; i < lights; ++i)
+        mVisibility[i] = mTracer->trace(mGBuffer, int(i), options, &mTraceStats[i]);
+}
+
+void ReferenceTechnique::uploadVisibility() {
+    // Channel i = light i; channels without a light stay 1 (lit), as the cleared target would be.
+    std::vector<float> rgba(size_t(mWidth) * size_t(mHeight) * 4, 1.0f);
+    for (size_t light = 0; light < mVisibility.size(); ++light) {
+        const std::vector<float>& v = mVisibility[light].value;
+        for (size_t p = 0; p < v.size(); ++p) rgba[p * 4 + light] = v[p];
+    }
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glTextureSubImage2D(mVisibilityTexture, 0, 0, 0, mWidth, mHeight, GL_RGBA, GL_FLOAT, rgba.data());
+}
+
+void ReferenceTechnique::shade(FrameContext& ctx) {
+    // The harness cleared depth before execute() and the G-buffer pass drew into its own FBO, so the
+    // depth test (LESS) resolves the same visible surface per pixel as the G-buffer did.
+    ctx.targets.bind();
+    mShadeProgram->use();
+    glBindTextureUnit(0, mVisibilityTexture);
+    ctx.submitter.draw(DrawSet::All);
+    glBindTextureUnit(0, 0);
+}
+
+void ReferenceTechnique::execute(FrameContext& ctx) {
+    ctx.passes.begin("gbuffer");
+    renderGBuffer(ctx);
+    ctx.passes.begin("trace");
+    trace();
+    uploadVisibility();
+    ctx.passes.begin("shade");
+    ctx.submitter.resetStats();
+    shade(ctx);
+    updateCounters(ctx.submitter.stats());
+}
+
+void ReferenceTechnique::updateCounters(const SubmitStats& shadeStats) {
+    // Both passes' draws, the G-buffer's counted by its renderer (it may draw without the submitter).
+    const SubmitStats& g = mGBufferRenderer->lastStats();
+    SubmitStats s{g.drawCalls + shadeStats.drawCalls, g.triangles + shadeStats.triangles,
+                  g.instances + shadeStats.instances};
+    double rays = 0.0, threadSeconds = 0.0, noise = 0.0;
+    int spp = 0;
+    for (const TraceStats& t : mTraceStats) {
+        rays += double(t.rays);
+        threadSeconds += t.seconds * t.threads;
+        noise = std::max(noise, t.noiseBound);
+        spp = std::max(spp, t.samplesPerPixel);
+    }
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"rays", rays},
+                 {"rays_per_second_per_thread", threadSeconds > 0.0 ? rays / threadSeconds : 0.0},
+                 {"noise_bound", noise},
+                 {"samples_per_pixel", double(spp)}};
+}
+
+} // namespace sb

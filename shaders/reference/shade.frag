@@ -1,0 +1,25 @@
+// `reference` shade pass: lit like none/lit.frag, each light's term multiplied by the ray-traced
+// visibility uploaded per frame (RGBA32F, channel i = light i, at this pixel). The pass re-rasterises
+// the G-buffer's triangles with the same camera, so gl_FragCoord names this fragment's own sample.
+#include "common/frame.glsl"
+#include "common/lighting.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec4 vColorId;
+layout(location = 0) out vec4 oColor;
+layout(location = 1) out vec4 oVisibility;
+
+layout(binding = 0) uniform sampler2D uVisibility;
+
+void main() {
+    vec4 traced = texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0);
+    // -1 marks samples without geometry in the G-buffer: treated as lit, like the cleared target.
+    vec4 vis = mix(traced, vec4(1.0), lessThan(traced, vec4(0.0)));
+    vec3 n = normalize(vNormal);
+    if (!gl_FrontFacing) n = -n;
+    vec3 light = uAmbient.rgb;
+    for (int i = 0; i < LIGHT_COUNT; ++i) light += vis[i] * lightTerm(i, vWorldPos, n);
+    oColor = vec4(vColorId.rgb * light, 1.0);
+    oVisibility = vis;
+}
