@@ -21,11 +21,14 @@ glm::vec3 towardsLight(const Light& l, const glm::vec3& p) {
 // moved sideways by the same angle as seen from the scene's centre (point).
 Light turnLight(const Light& l, float deg, const glm::vec3& sceneCentre) {
     Light out = l;
-    glm::vec3 dir = l.type == LightType::Point ? glm::normalize(sceneCentre - l.position) : glm::normalize(l.direction);
+    glm::vec3 dir =
+        l.type == LightType::Point ? glm::normalize(sceneCentre - l.position) : glm::normalize(l.direction);
     glm::vec3 axis = glm::normalize(glm::cross(dir, anyPerpendicularUp(dir)));
     glm::mat3 r = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(deg), axis));
-    if (l.type == LightType::Point) out.position = sceneCentre - r * (sceneCentre - l.position);
-    else out.direction = r * dir;
+    if (l.type == LightType::Point)
+        out.position = sceneCentre - r * (sceneCentre - l.position);
+    else
+        out.direction = r * dir;
     return out;
 }
 } // namespace
@@ -46,7 +49,8 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, co
     Sample s;
     s.techniqueRgba = mHarness.targets().readVisibilityRGBA32F();
     s.technique = AccuracyMetrics::channel(s.techniqueRgba, o.light);
-    GBuffer g = mGBuffer->render(mHarness.submitter(), mHarness.programs(), mHarness.projection() * mHarness.view());
+    GBuffer g =
+        mGBuffer->render(mHarness.submitter(), mHarness.programs(), mHarness.projection() * mHarness.view());
     ReferenceTracer::Options ro;
     ro.softSamples = o.referenceSamples;
     VisibilityImage ref = mTracer->trace(g, o.light, ro, stats);
@@ -85,7 +89,8 @@ void AccuracyEvaluator::measureStability(Technique& technique, const AccuracyOpt
 
     // Light: a 0.01 degree turn (the technique re-runs its light-dependent precompute).
     const Light original = mHarness.scene().lights[size_t(o.light)];
-    mHarness.setLight(size_t(o.light), turnLight(original, o.lightTurnDeg, mHarness.scene().computeBounds().center()));
+    mHarness.setLight(size_t(o.light),
+                      turnLight(original, o.lightTurnDeg, mHarness.scene().computeBounds().center()));
     mHarness.prepare(technique);
     Sample turned = judgeFrame(technique, o, nullptr);
     r.lightChangesTechnique = techniqueChanges(base, turned);

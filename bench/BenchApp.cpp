@@ -7,8 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bench/ConsoleReport.h"
 #include "bench/AccuracyEvaluator.h"
+#include "bench/ConsoleReport.h"
 #include "bench/CsvWriter.h"
 #include "bench/Environment.h"
 #include "bench/Harness.h"

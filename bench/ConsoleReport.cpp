@@ -81,9 +81,10 @@ void ConsoleReport::printAccuracyTable(std::ostream& os,
         std::string bad = std::to_string(a.sanity.nan) + "/" + std::to_string(a.sanity.inf) + "/" +
                           std::to_string(a.sanity.outOfRange);
         auto opt = [&](double v) { return a.stabilityMeasured ? fmt("%.2f", v) : std::string("-"); };
-        os << pad(r.technique, 12) << pad(fmt("%.2f ms", r.wall.median), 13) << pad(fmt("%.3f", a.hard.wrongPct), 9)
-           << pad(fmt("%.3f", a.hard.wrongNoEdgePct), 11) << pad(fmt("%.4f", a.soft.rmse), 8) << pad(bad, 13)
-           << pad(opt(a.cameraGain), 10) << pad(opt(a.lightGain), 12) << pad(opt(a.flicker), 9)
+        os << pad(r.technique, 12) << pad(fmt("%.2f ms", r.wall.median), 13)
+           << pad(fmt("%.3f", a.hard.wrongPct), 9) << pad(fmt("%.3f", a.hard.wrongNoEdgePct), 11)
+           << pad(fmt("%.4f", a.soft.rmse), 8) << pad(bad, 13) << pad(opt(a.cameraGain), 10)
+           << pad(opt(a.lightGain), 12) << pad(opt(a.flicker), 9)
            << (r.properties.empty() ? "-" : r.properties) << "\n";
     }
 }
@@ -96,9 +97,9 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
         os << "  effects:  " << effectsText(info.effects) << "\n";
         os << "  passes:   " << join(info.passes, ", ") << "\n";
         if (!info.quality.empty())
-            os << "  sweep:    "
-               << join(info.quality, "; ", [](const QualityKnob& k) { return k.property + " " + join(k.values, "/"); })
-               << "  (bench accuracy --sweep)\n";
+            os << "  sweep:    " << join(info.quality, "; ", [](const QualityKnob& k) {
+                return k.property + " " + join(k.values, "/");
+            }) << "  (bench accuracy --sweep)\n";
         if (info.properties.empty()) os << "  properties: none\n";
         for (const PropertyDesc& p : info.properties)
             os << "  " << pad(p.name, 18) << pad(propertyTypeName(p.type), 7)

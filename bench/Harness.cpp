@@ -70,8 +70,8 @@ void Harness::updateFrameData() {
     mProj = cameraProjection(mCamera, float(mConfig.width) / float(mConfig.height));
     // One pixel is 2/width in NDC; translating clip x by shift * w after projection moves every sample.
     glm::mat4 shift(1.0f);
-    shift[3] = glm::vec4(2.0f * mPixelShift.x / float(mConfig.width), 2.0f * mPixelShift.y / float(mConfig.height), 0.0f,
-                         1.0f);
+    shift[3] = glm::vec4(2.0f * mPixelShift.x / float(mConfig.width),
+                         2.0f * mPixelShift.y / float(mConfig.height), 0.0f, 1.0f);
     mProj = shift * mProj;
     mFrameData = FrameUniforms::compute(mScene, mView, mProj, mCamera.eye);
 }
