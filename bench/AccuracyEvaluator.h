@@ -29,8 +29,8 @@ namespace sb {
 
 struct AccuracyOptions {
     int light = 0;
-    int referenceSamples = 64;  ///< per pixel for area lights
-    bool stability = true;      ///< perturbation gain and flicker (costs kDriftSteps + 2 extra frames)
+    int referenceSamples = 64; ///< per pixel for area lights
+    bool stability = true;     ///< perturbation gain and flicker (costs kDriftSteps + 2 extra frames)
     float cameraShiftPx = 0.25f;
     float lightTurnDeg = 0.01f;
     float nDotLThreshold = 0.05f;

@@ -7,6 +7,8 @@
 
 #include <epoxy/gl.h>
 
+#include "gl/TextureFramebuffer.h"
+
 namespace sb {
 
 constexpr int kMaxLights = 4; ///< one visibility channel per light
@@ -14,16 +16,15 @@ constexpr int kMaxLights = 4; ///< one visibility channel per light
 class FrameTargets {
 public:
     FrameTargets(int width, int height);
-    ~FrameTargets();
     FrameTargets(const FrameTargets&) = delete;
     FrameTargets& operator=(const FrameTargets&) = delete;
 
-    int width() const { return mWidth; }
-    int height() const { return mHeight; }
-    GLuint fbo() const { return mFbo; }
-    GLuint colorTexture() const { return mColor; }
-    GLuint visibilityTexture() const { return mVisibility; }
-    GLuint depthStencilTexture() const { return mDepthStencil; }
+    int width() const { return mTarget.width(); }
+    int height() const { return mTarget.height(); }
+    GLuint fbo() const { return mTarget.fbo(); }
+    GLuint colorTexture() const { return mTarget.color(0); }
+    GLuint visibilityTexture() const { return mTarget.color(1); }
+    GLuint depthStencilTexture() const { return mTarget.depthStencil(); }
     /// Binds the FBO, sets the viewport, enables draw buffers 0 and 1.
     void bind() const;
     /// Clears colour to `clearColor`, visibility to 1 (lit: pixels without geometry are lit), depth to
@@ -36,8 +37,7 @@ public:
     std::vector<float> readDepth() const;
 
 private:
-    int mWidth, mHeight;
-    GLuint mFbo = 0, mColor = 0, mVisibility = 0, mDepthStencil = 0;
+    TextureFramebuffer mTarget;
 };
 
 } // namespace sb

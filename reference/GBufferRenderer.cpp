@@ -10,16 +10,6 @@ namespace sb {
 
 namespace {
 constexpr GLint kViewProjLocation = 8; // reference/gbuffer.vert (0..3 and 4 are the instance uniforms)
-constexpr GLenum kDrawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-
-GLuint createTexture(GLenum format, int width, int height) {
-    GLuint texture = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    glTextureStorage2D(texture, 1, format, width, height);
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return texture;
-}
 
 /// The state render() changes, captured so it can be put back: a technique calls the renderer in the
 /// middle of its frame and must find its own state unchanged afterwards.
@@ -95,33 +85,8 @@ void setLightingPassState() {
 }
 } // namespace
 
-GBufferRenderer::GBufferRenderer(int width, int height) : mWidth(width), mHeight(height) {
-    if (width <= 0 || height <= 0)
-        throw Error("G-buffer: invalid size " + std::to_string(width) + "x" + std::to_string(height));
-    mPosition = createTexture(GL_RGBA32F, width, height);
-    mPrimitive = createTexture(GL_R32UI, width, height);
-    mDepthStencil = createTexture(GL_DEPTH24_STENCIL8, width, height);
-    glCreateFramebuffers(1, &mFbo);
-    glNamedFramebufferTexture(mFbo, GL_COLOR_ATTACHMENT0, mPosition, 0);
-    glNamedFramebufferTexture(mFbo, GL_COLOR_ATTACHMENT1, mPrimitive, 0);
-    glNamedFramebufferTexture(mFbo, GL_DEPTH_STENCIL_ATTACHMENT, mDepthStencil, 0);
-    glNamedFramebufferDrawBuffers(mFbo, 2, kDrawBuffers);
-    GLenum status = glCheckNamedFramebufferStatus(mFbo, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        glDeleteFramebuffers(1, &mFbo);
-        const GLuint textures[] = {mPosition, mPrimitive, mDepthStencil};
-        glDeleteTextures(3, textures);
-        throw Error("G-buffer " + std::to_string(width) + "x" + std::to_string(height) +
-                        " (RGBA32F + R32UI + DEPTH24_STENCIL8) incomplete: status " + std::to_string(status),
-                    ExitCode::Unsupported);
-    }
-}
-
-GBufferRenderer::~GBufferRenderer() {
-    glDeleteFramebuffers(1, &mFbo);
-    const GLuint textures[] = {mPosition, mPrimitive, mDepthStencil};
-    glDeleteTextures(3, textures);
-}
+GBufferRenderer::GBufferRenderer(int width, int height)
+    : mTarget("G-buffer", width, height, {GL_RGBA32F, GL_R32UI}) {}
 
 void GBufferRenderer::setScene(const Scene& scene) {
     mScene = &scene;
@@ -139,14 +104,13 @@ GBuffer GBufferRenderer::render(Submitter& submitter, ProgramCache& programs, co
 void GBufferRenderer::draw(Submitter& submitter, ProgramCache& programs, const glm::mat4& viewProj) {
     const Program& program =
         programs.get({"reference/gbuffer.vert", "reference/gbuffer.frag", ""}, submitter.defines());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, mFbo);
-    glViewport(0, 0, mWidth, mHeight);
+    mTarget.bind();
     setLightingPassState();
     const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
     const GLuint zeroId[] = {0u, 0u, 0u, 0u};
-    glClearNamedFramebufferfv(mFbo, GL_COLOR, 0, zero);
-    glClearNamedFramebufferuiv(mFbo, GL_COLOR, 1, zeroId);
-    glClearNamedFramebufferfi(mFbo, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glClearNamedFramebufferfv(mTarget.fbo(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferuiv(mTarget.fbo(), GL_COLOR, 1, zeroId);
+    glClearNamedFramebufferfi(mTarget.fbo(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     program.use();
     glUniformMatrix4fv(kViewProjLocation, 1, GL_FALSE, glm::value_ptr(viewProj));
     mStats = {};
@@ -187,17 +151,12 @@ void GBufferRenderer::drawIndexedPerInstance(SubmitMode mode) {
 
 GBuffer GBufferRenderer::readBack() const {
     GBuffer g;
-    g.width = mWidth;
-    g.height = mHeight;
+    g.width = width();
+    g.height = height();
     g.position.resize(g.size());
     g.primitive.resize(g.size());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFbo);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, mWidth, mHeight, GL_RGBA, GL_FLOAT, g.position.data());
-    glReadBuffer(GL_COLOR_ATTACHMENT1);
-    glReadPixels(0, 0, mWidth, mHeight, GL_RED_INTEGER, GL_UNSIGNED_INT, g.primitive.data());
+    mTarget.read(GL_COLOR_ATTACHMENT0, GL_RGBA, GL_FLOAT, g.position.data());
+    mTarget.read(GL_COLOR_ATTACHMENT1, GL_RED_INTEGER, GL_UNSIGNED_INT, g.primitive.data());
     return g;
 }
 

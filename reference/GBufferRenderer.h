@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/ProgramCache.h"
+#include "gl/TextureFramebuffer.h"
 #include "reference/GBuffer.h"
 #include "scenes/Scene.h"
 #include "techniques/MeshBuffers.h"
@@ -28,13 +29,10 @@ class GBufferRenderer {
 public:
     /// Allocates the FBO (throws sb::Error when it is incomplete). Needs a current context.
     GBufferRenderer(int width, int height);
-    ~GBufferRenderer();
-    GBufferRenderer(const GBufferRenderer&) = delete;
-    GBufferRenderer& operator=(const GBufferRenderer&) = delete;
 
-    int width() const { return mWidth; }
-    int height() const { return mHeight; }
-    GLuint fbo() const { return mFbo; }
+    int width() const { return mTarget.width(); }
+    int height() const { return mTarget.height(); }
+    GLuint fbo() const { return mTarget.fbo(); }
 
     /// The scene drawn in the modes whose submitter cannot number triangles per instance (immediate,
     /// displaylist; see above). Must outlive the renderer's use; its meshes are uploaded on first need.
@@ -55,11 +53,10 @@ private:
     void drawIndexedPerInstance(SubmitMode mode);
     GBuffer readBack() const;
 
-    int mWidth, mHeight;
+    TextureFramebuffer mTarget; ///< RGBA32F position + id, R32UI primitive, depth-stencil
     const Scene* mScene = nullptr;
     std::unique_ptr<MeshBuffers> mMeshes; ///< uploaded on first drawIndexedPerInstance()
     SubmitStats mStats;
-    GLuint mFbo = 0, mPosition = 0, mPrimitive = 0, mDepthStencil = 0;
 };
 
 } // namespace sb

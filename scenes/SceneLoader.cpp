@@ -283,7 +283,8 @@ LightType lightType(const JsonReader& r) {
 /// directional lights take "shape": "disk" with "angular_radius_deg" (the sun's disk) instead.
 void parseLightShapeKeys(const JsonReader& r, Light& light) {
     if (!r.has("shape")) {
-        if (r.has("size") || r.has("angular_radius_deg")) r.error("\"size\"/\"angular_radius_deg\" need a \"shape\"");
+        if (r.has("size") || r.has("angular_radius_deg"))
+            r.error("\"size\"/\"angular_radius_deg\" need a \"shape\"");
         return;
     }
     const auto shape = parseLightShape(r["shape"].string());
@@ -308,9 +309,8 @@ void parseLightShapeKeys(const JsonReader& r, Light& light) {
 }
 
 void parseLight(Context& ctx, const JsonReader& r) {
-    r.requireObject(
-        {"type", "direction", "position", "color", "intensity", "range", "spot_outer_deg", "spot_inner_deg", "shape",
-         "size", "angular_radius_deg"});
+    r.requireObject({"type", "direction", "position", "color", "intensity", "range", "spot_outer_deg",
+                     "spot_inner_deg", "shape", "size", "angular_radius_deg"});
     Light light;
     if (r.has("type")) light.type = lightType(r["type"]);
     if (r.has("direction")) light.direction = r["direction"].unitDirection();
