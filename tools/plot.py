@@ -64,8 +64,14 @@ def pareto(args):
             label="Pareto front")
     ax.set_xlabel("median frame time, wall (ms)")
     ax.set_ylabel(METRIC_LABELS.get(args.metric, args.metric))
-    if args.logy and (df[args.metric] > 0).all():
-        ax.set_yscale("log")
+    if args.logy:
+        positive = df[args.metric][df[args.metric] > 0]
+        if (df[args.metric] > 0).all():
+            ax.set_yscale("log")
+        elif len(positive):
+            # The reference (and any exact technique) sits at 0: a symmetric log axis keeps it on the
+            # chart, linear below the smallest non-zero error and logarithmic above it.
+            ax.set_yscale("symlog", linthresh=float(positive.min()))
     first = df.iloc[0]
     ax.set_title(args.title or f"Accuracy against time: {first.get('scene', '')}, "
                  f"{first.get('width', '')}x{first.get('height', '')}, {first.get('renderer', '')}", fontsize=9)
