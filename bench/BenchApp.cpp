@@ -8,17 +8,26 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/AccuracyEvaluator.h"
+#include "bench/CliParse.h"
 #include "bench/ConsoleReport.h"
 #include "bench/CsvWriter.h"
 #include "bench/Environment.h"
 #include "bench/Harness.h"
 #include "bench/ImageWriter.h"
+#include "bench/Measurement.h"
+#include "bench/RowExport.h"
 #include "bench/QualitySweep.h"
 #include "bench/ResultRow.h"
 #include "bench/SamplesFile.h"
+#include "bench/SweepCommand.h"
+#include "bench/SweepWorker.h"
+#include "bench/BottleneckCommand.h"
+#include "bench/MergeCommand.h"
+#include "bench/ExportCommand.h"
 #include "bench/Viewer.h"
 #include "scenes/Error.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/Strings.h"
 #include "techniques/TechniqueRegistry.h"
 
 namespace sb {
@@ -68,6 +77,32 @@ void writeImages(const RunConfig& config, Harness& harness, const std::string& t
                                          i == 0 ? base : withSuffix(base, "light" + std::to_string(i)));
     }
 }
+/// Progress and tables go to stdout, unless stdout carries the rows in a machine format (--format).
+std::ostream& logStream(const RunConfig& config) {
+    return config.format == RowFormat::Console ? std::cout : std::cerr;
+}
+
+/// The end of a run: the console table (and, with several rounds, the paired ratios), or the rows in
+/// the format --format asked for.
+void report(const RunConfig& config, const Harness& harness, const std::vector<Measurement>& results) {
+    std::ostream& log = logStream(config);
+    std::vector<RunResult> runs;
+    std::vector<CsvRow> rows;
+    for (const Measurement& m : results) {
+        runs.push_back(m.run);
+        rows.push_back(m.row);
+    }
+    if (config.mode == RunConfig::Mode::Accuracy) {
+        std::vector<std::pair<RunResult, AccuracyResult>> judged;
+        for (const Measurement& m : results) judged.emplace_back(m.run, *m.accuracy);
+        ConsoleReport::printAccuracyTable(log, judged);
+    } else {
+        ConsoleReport::printTable(log, harness, runs);
+    }
+    if (config.repeat > 1) ConsoleReport::printPairedRatios(log, runs, config.repeat);
+    if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
+    if (config.format != RowFormat::Console) std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
+}
 } // namespace
 
 std::pair<int, int> BenchApp::parseSize(const std::string& text) {
@@ -85,6 +120,19 @@ std::pair<int, int> BenchApp::parseSize(const std::string& text) {
     } catch (const std::logic_error&) {
         throw bad();
     }
+}
+
+RunConfig BenchApp::parseArgs(const std::vector<std::string>& args, RunConfig::Mode mode) {
+    std::vector<std::string> argv{"bench"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    std::vector<char*> pointers;
+    for (std::string& a : argv) pointers.push_back(a.data());
+    RunConfig config;
+    config.mode = mode;
+    bool listOnly = false;
+    if (parse(int(pointers.size()), pointers.data(), config, listOnly) >= 0 || listOnly)
+        throw Error("options '" + join(args, " ") + "': --help and --list do not belong here");
+    return config;
 }
 
 int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
@@ -110,6 +158,9 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
         ->capture_default_str();
     app.add_option("--seed", seed, "layout seed (same seed, same scene)");
     app.add_option("--tess", tess, "tessellation of every generated mesh (vertex load)");
+    app.add_option("--tess-factor", c.sceneOptions.tessellationFactor,
+                   "multiply every generated mesh's tessellation (0.5: vertex load down)")
+        ->capture_default_str();
     app.add_option("--light", light, "replace every light's type: directional, point, spot");
     app.add_option("--camera", c.camera, "camera preset: far, mid, near, top")->capture_default_str();
     app.add_option("--size", size, "render target WIDTHxHEIGHT")->capture_default_str();
@@ -133,23 +184,23 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("--max-memory-gib", maxMemoryGiB, "refuse scenes estimated above this memory")
         ->capture_default_str();
     app.add_flag("-q,--quiet", c.quiet, "print only the table");
+    app.add_option("--repeat", c.repeat,
+                   "rounds: measure the techniques in turn K times (A B, A B ...); ratios within a round")
+        ->capture_default_str();
+    std::string format = "console";
+    app.add_option("--format", format, "stdout: console (tables), csv, json or md (the rows)")
+        ->capture_default_str();
     bool noStability = false;
     app.add_flag("--sweep", c.sweep, "accuracy: walk each technique's quality knobs (see --list)");
     app.add_option("--light-index", c.accuracyLight, "accuracy: which light to judge")->capture_default_str();
     app.add_option("--ref-samples", c.referenceSamples, "accuracy: reference samples per pixel (area lights)")
         ->capture_default_str();
     app.add_flag("--no-stability", noStability, "accuracy: skip perturbation gain and flicker");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        throw Error(std::string(e.what()) + " (see bench --help)");
-    }
-    if (listOnly) return -1;
+    const int code = parseCli(app, argc, argv, c.mode == RunConfig::Mode::Accuracy ? "bench accuracy" : "bench");
+    if (code >= 0 || listOnly) return code;
     c.stability = !noStability;
+    c.format = parseRowFormat(format);
+    if (c.repeat < 1 || c.repeat > 1000) throw Error("--repeat " + std::to_string(c.repeat) + ": expected 1..1000");
     if (c.mode != RunConfig::Mode::Accuracy && (c.sweep || noStability))
         throw Error("--sweep and --no-stability belong to `bench accuracy` (see bench --help)");
     if (c.referenceSamples < 1 || c.referenceSamples > 4096) throw Error("--ref-samples: expected 1..4096");
@@ -184,6 +235,8 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
         if (!t) throw Error("--light " + light + ": expected directional, point or spot");
         c.sceneOptions.lightType = *t;
     }
+    if (!(c.sceneOptions.tessellationFactor >= 0.05f && c.sceneOptions.tessellationFactor <= 20.0f))
+        throw Error("--tess-factor: expected a number in [0.05, 20]");
     if (!(std::isfinite(c.sceneOptions.scale) && c.sceneOptions.scale > 0.0f && c.sceneOptions.scale <= 1e6f))
         throw Error("--scale: expected a finite number in (0, 1e6]");
     if (c.frames < 1) throw Error("--frames " + std::to_string(c.frames) + ": must be at least 1");
@@ -196,105 +249,108 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     return -1;
 }
 
-int BenchApp::run(const RunConfig& config) {
-    // Declared before the techniques so that it is destroyed after them: techniques release GL objects
-    // in their destructors, which needs the harness's context (also when an exception unwinds).
-    std::unique_ptr<Harness> harnessOwner;
-    // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
-    auto techniques = createTechniques(config);
-    if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
-    if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
-
-    harnessOwner = std::make_unique<Harness>(config);
-    Harness& harness = *harnessOwner;
-    if (config.context.backend == Backend::Glfw && config.context.visibleWindow) {
-        int code = Viewer::run(harness, techniques, config.windowFrames);
-        // The last frame shown, when asked for (the viewer draws with the same targets).
-        if (!config.screenshotPath.empty()) ImageWriter::writeColor(harness.targets(), config.screenshotPath);
-        return code;
-    }
-    if (!config.quiet) ConsoleReport::printHeader(std::cout, harness);
-    if (config.checkTimer) harness.calibrateTimer();
-    if (!config.quiet) ConsoleReport::printTimerVerdict(std::cout, harness.timerVerdict());
-
-    Environment env = Environment::capture();
-    std::vector<RunResult> results;
-    for (auto& technique : techniques) {
-        if (!config.quiet) std::cout << "measuring " << technique->name() << " ..." << std::flush;
-        RunResult r = harness.measure(*technique);
-        if (!config.quiet) std::cout << " " << r.wall.n << " frames, median " << r.wall.median << " ms\n";
-        env.timestamp = Environment::nowIso8601();
-        if (!config.csvPath.empty())
-            CsvWriter::appendRows(config.csvPath, {ResultRow::build(harness, r, env)});
-        if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, r);
-        writeImages(config, harness, technique->name());
-        results.push_back(std::move(r));
-    }
-    ConsoleReport::printTable(std::cout, harness, results);
-    if (!config.csvPath.empty() && !config.quiet) std::cout << "rows appended to " << config.csvPath << "\n";
-    return 0;
-}
-
-int BenchApp::runAccuracy(const RunConfig& config) {
-    std::unique_ptr<Harness> harnessOwner; // outlives the techniques and the evaluator (GL objects)
+std::vector<TechniqueSpec> BenchApp::configurations(const RunConfig& config) {
     std::vector<TechniqueSpec> specs;
     for (const TechniqueSpec& spec : config.techniques) {
         auto expanded = config.sweep ? QualitySweep::expand(spec) : std::vector<TechniqueSpec>{spec};
         specs.insert(specs.end(), expanded.begin(), expanded.end());
     }
-    for (const TechniqueSpec& spec : specs) TechniqueRegistry::create(spec); // validate before GL
+    return specs;
+}
+
+int BenchApp::run(const RunConfig& config) {
+    // Declared before the techniques so that it is destroyed after them: techniques release GL objects
+    // in their destructors, which needs the harness's context (also when an exception unwinds).
+    std::unique_ptr<Harness> harnessOwner;
+    const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
+    // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
+    const std::vector<TechniqueSpec> specs = configurations(config);
+    std::vector<std::unique_ptr<Technique>> techniques;
+    for (const TechniqueSpec& spec : specs) techniques.push_back(TechniqueRegistry::create(spec));
     if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
+    if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
 
     harnessOwner = std::make_unique<Harness>(config);
     Harness& harness = *harnessOwner;
-    if (!config.quiet) ConsoleReport::printHeader(std::cout, harness);
+    if (!accuracy && config.context.backend == Backend::Glfw && config.context.visibleWindow) {
+        int code = Viewer::run(harness, techniques, config.windowFrames);
+        // The last frame shown, when asked for (the viewer draws with the same targets).
+        if (!config.screenshotPath.empty()) ImageWriter::writeColor(harness.targets(), config.screenshotPath);
+        return code;
+    }
+    std::ostream& log = logStream(config);
+    if (!config.quiet) ConsoleReport::printHeader(log, harness);
     if (config.checkTimer) harness.calibrateTimer();
-    if (!config.quiet) ConsoleReport::printTimerVerdict(std::cout, harness.timerVerdict());
-    auto evaluator = std::make_unique<AccuracyEvaluator>(harness);
+    if (!config.quiet) ConsoleReport::printTimerVerdict(log, harness.timerVerdict());
+    std::unique_ptr<AccuracyEvaluator> evaluator;
+    if (accuracy) evaluator = std::make_unique<AccuracyEvaluator>(harness);
     AccuracyOptions options;
     options.light = config.accuracyLight;
     options.referenceSamples = config.referenceSamples;
     options.stability = config.stability;
 
     Environment env = Environment::capture();
-    std::vector<std::pair<RunResult, AccuracyResult>> results;
-    for (size_t i = 0; i < specs.size(); ++i) {
-        auto technique = TechniqueRegistry::create(specs[i]);
-        if (!config.quiet)
-            std::cout << "[" << (i + 1) << "/" << specs.size() << "] " << technique->name() << " "
-                      << technique->properties().toString() << " ..." << std::flush;
-        RunResult r = harness.measure(*technique);
-        AccuracyResult a = evaluator->evaluate(*technique, options);
-        if (!config.quiet) std::cout << " " << r.wall.median << " ms, " << a.hard.wrongPct << "% wrong\n";
-        env.timestamp = Environment::nowIso8601();
-        CsvRow row = ResultRow::build(harness, r, env);
-        a.appendColumns(row);
-        if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {row});
-        writeImages(config, harness, technique->name());
-        results.emplace_back(std::move(r), a);
+    std::vector<Measurement> results;
+    const std::string baseline = specs.front().toString();
+    const size_t total = specs.size() * size_t(config.repeat);
+    // Rounds interleave the techniques (A B C, A B C ...): ratios are taken within a round, between
+    // runs measured next to each other.
+    for (int round = 1; round <= config.repeat; ++round) {
+        std::optional<double> baselineWall;
+        for (size_t i = 0; i < techniques.size(); ++i) {
+            Technique& technique = *techniques[i];
+            if (!config.quiet)
+                log << "[" << results.size() + 1 << "/" << total << "] " << technique.name() << " "
+                    << technique.properties().toString() << " ..." << std::flush;
+            Measurement m = Measurement::take(harness, technique, evaluator.get(), options, env);
+            if (i == 0) baselineWall = m.run.wall.median;
+            m.addRound(round, baseline, baselineWall);
+            if (!config.quiet) {
+                log << " " << m.run.wall.n << " frames, median " << m.run.wall.median << " ms";
+                if (m.accuracy) log << ", " << m.accuracy->hard.wrongPct << "% wrong";
+                log << "\n";
+            }
+            if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
+            if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, m.run);
+            writeImages(config, harness, technique.name());
+            results.push_back(std::move(m));
+        }
     }
-    ConsoleReport::printAccuracyTable(std::cout, results);
-    if (!config.csvPath.empty() && !config.quiet) std::cout << "rows appended to " << config.csvPath << "\n";
+    report(config, harness, results);
     return 0;
+}
+
+int BenchApp::dispatch(int argc, char** argv) {
+    const std::string sub = argc > 1 ? argv[1] : "";
+    // Subcommands get argv from their own name on, as if they were programs of their own.
+    if (sub == "sweep") return SweepCommand::main(argc - 1, argv + 1);
+    if (sub == "bottleneck") return BottleneckCommand::main(argc - 1, argv + 1);
+    if (sub == "merge") return MergeCommand::main(argc - 1, argv + 1);
+    if (sub == "export") return ExportCommand::main(argc - 1, argv + 1);
+    if (sub == "sweep-worker") {
+        if (argc != 3) throw Error("usage: bench sweep-worker JOB.json (started by bench sweep, not by hand)");
+        return SweepWorker::run(argv[2]);
+    }
+    RunConfig config;
+    bool listOnly = false;
+    if (sub == "accuracy") {
+        config.mode = RunConfig::Mode::Accuracy;
+        argv[1] = argv[0]; // the rest parses like a normal run
+        ++argv;
+        --argc;
+    }
+    int code = parse(argc, argv, config, listOnly);
+    if (code >= 0) return code;
+    if (listOnly) {
+        ConsoleReport::printTechniqueList(std::cout);
+        return 0;
+    }
+    return run(config);
 }
 
 int BenchApp::main(int argc, char** argv) {
     try {
-        RunConfig config;
-        bool listOnly = false;
-        if (argc > 1 && std::string(argv[1]) == "accuracy") {
-            config.mode = RunConfig::Mode::Accuracy;
-            argv[1] = argv[0]; // the rest parses like a normal run
-            ++argv;
-            --argc;
-        }
-        int code = parse(argc, argv, config, listOnly);
-        if (code >= 0) return code;
-        if (listOnly) {
-            ConsoleReport::printTechniqueList(std::cout);
-            return 0;
-        }
-        return config.mode == RunConfig::Mode::Accuracy ? runAccuracy(config) : run(config);
+        return dispatch(argc, argv);
     } catch (const Error& e) {
         std::cerr << "bench: error: " << e.what() << "\n";
         return int(e.code());

@@ -71,6 +71,26 @@ void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::ve
     }
 }
 
+void ConsoleReport::printPairedRatios(std::ostream& os, const std::vector<RunResult>& results, int rounds) {
+    const size_t perRound = results.size() / size_t(rounds);
+    if (perRound == 0) return;
+    os << "\npaired over " << rounds << " rounds (ratio to " << results[0].technique
+       << " within each round: median [min, max])\n";
+    for (size_t i = 0; i < perRound; ++i) {
+        std::vector<double> wall, ratio;
+        for (size_t k = 0; k < size_t(rounds); ++k) {
+            const RunResult& r = results[k * perRound + i];
+            const RunResult& base = results[k * perRound];
+            wall.push_back(r.wall.median);
+            if (base.wall.median > 0) ratio.push_back(r.wall.median / base.wall.median);
+        }
+        const Statistics w = Statistics::compute(wall), q = Statistics::compute(ratio);
+        os << pad(results[i].technique, 12) << pad(fmt("%.2f ms", w.median), 13)
+           << pad(fmt("%.3fx", q.median), 9) << pad("[" + fmt("%.3f", q.min) + ", " + fmt("%.3f", q.max) + "]", 18)
+           << (results[i].properties.empty() ? "-" : results[i].properties) << "\n";
+    }
+}
+
 void ConsoleReport::printAccuracyTable(std::ostream& os,
                                        const std::vector<std::pair<RunResult, AccuracyResult>>& results) {
     os << "\n"

@@ -16,6 +16,10 @@ public:
     static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
     /// The table; ratios are taken against the `none` row when there is one (the overhead baseline).
     static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results);
+    /// After --repeat K: `results` holds K rounds of the same techniques in the same order; prints each
+    /// technique's median over the rounds and its ratio to the first technique, taken per round (runs
+    /// next to each other) and summarised as median [min, max].
+    static void printPairedRatios(std::ostream& os, const std::vector<RunResult>& results, int rounds);
     /// `bench accuracy`: time against error, one row per configuration.
     static void printAccuracyTable(std::ostream& os,
                                    const std::vector<std::pair<RunResult, AccuracyResult>>& results);

@@ -192,13 +192,6 @@ void appendLine(std::string& out, const std::vector<std::string>& cells) {
     out += '\n'; // LF rather than RFC 4180's CRLF: the files live in git and are read by Python/R
 }
 
-std::string serialize(const CsvTable& table) {
-    std::string out;
-    appendLine(out, table.header);
-    for (const auto& row : table.rows) appendLine(out, row);
-    return out;
-}
-
 bool writeAll(int fd, const std::string& text) {
     size_t done = 0;
     while (done < text.size()) {
@@ -260,7 +253,34 @@ void requireReplaceableFile(const std::string& path) {
     if (::access(path.c_str(), R_OK | W_OK) != 0) failWrite(path, "existing file", errno);
 }
 
+// Both ways of writing a file end here, so appends and whole-table writes are equally crash-safe.
+void replaceFile(const std::string& path, const std::string& text, std::optional<mode_t> keepMode) {
+    std::string tmp = tempPathFor(path);
+    writeTemp(path, tmp, text, keepMode);
+    commit(path, tmp);
+}
+
 } // namespace
+
+std::string CsvWriter::serialize(const CsvTable& table) {
+    std::string out;
+    appendLine(out, table.header);
+    for (const auto& row : table.rows) appendLine(out, row);
+    return out;
+}
+
+CsvTable CsvWriter::toTable(const std::vector<CsvRow>& rows) {
+    CsvTable table;
+    mergeRows(table, rows, "(rows)");
+    return table;
+}
+
+void CsvWriter::writeText(const std::string& path, const std::string& text) {
+    struct stat st {};
+    std::optional<mode_t> keepMode;
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) keepMode = st.st_mode & 07777;
+    replaceFile(path, text, keepMode);
+}
 
 std::string CsvWriter::quote(const std::string& field) {
     if (field.find_first_of(kNeedsQuoting) == std::string::npos) return field;
@@ -280,9 +300,20 @@ void CsvWriter::appendRows(const std::string& path, const std::vector<CsvRow>& r
     // A corrupt existing file is an error (BadInput, naming file and line), never silently replaced.
     CsvTable table = old ? parse(old->text, path) : CsvTable{};
     mergeRows(table, rows, path);
-    std::string tmp = tempPathFor(path);
-    writeTemp(path, tmp, serialize(table), old ? std::optional<mode_t>(old->mode) : std::nullopt);
-    commit(path, tmp);
+    replaceFile(path, serialize(table), old ? std::optional<mode_t>(old->mode) : std::nullopt);
+}
+
+// A ragged table would be written without complaint but could not be read back, so it is refused
+// before anything touches the disk. Only the mode of the old file is needed, so stat() suffices
+// where appendRows reads the whole file.
+void CsvWriter::writeTable(const std::string& path, const CsvTable& table) {
+    for (size_t i = 0; i < table.rows.size(); ++i)
+        if (table.rows[i].size() != table.header.size())
+            failWrite(path,
+                      "row " + std::to_string(i + 1) + " has " + std::to_string(table.rows[i].size()) +
+                          " cells but the header has " + std::to_string(table.header.size()),
+                      0);
+    writeText(path, serialize(table));
 }
 
 // Permission checks give the clear messages; the final probe (create and remove the temp file that

@@ -31,6 +31,20 @@ public:
     /// Parses a CSV file written by appendRows (RFC 4180). Throws on a missing file or ragged rows.
     static CsvTable read(const std::string& path);
     static CsvTable parse(const std::string& text, const std::string& sourceName);
+    /// Writes `table` to `path`, replacing any existing file atomically with the same temp file, fsync,
+    /// rename and directory fsync steps as appendRows (an existing file keeps its mode). Every row must
+    /// have header.size() cells. Throws like appendRows; on failure no temp file is left and the old
+    /// file, if any, is untouched.
+    static void writeTable(const std::string& path, const CsvTable& table);
+    /// The exact text appendRows writes for `table`: header line, then one line per row, RFC 4180
+    /// quoting, LF line ends.
+    static std::string serialize(const CsvTable& table);
+    /// Rows as a table: the header is the union of their columns in first-seen order, missing cells
+    /// empty (the same merge appendRows does into an existing file).
+    static CsvTable toTable(const std::vector<CsvRow>& rows);
+    /// Replaces `path` with `text` atomically (temp file, fsync, rename, directory fsync): for the
+    /// other formats of the same rows (bench export -o). Throws like appendRows.
+    static void writeText(const std::string& path, const std::string& text);
     static std::string quote(const std::string& field);
 };
 

@@ -159,7 +159,28 @@ RunResult Harness::measure(Technique& technique) {
     }
     RunResult r = summarize(technique, std::move(samples), firstFrame);
     r.setupMs = setupMs;
+    r.loads = measureLoads(technique);
     return r;
+}
+
+FrameLoads Harness::measureLoads(Technique& technique) {
+    FrameLoads loads;
+    const bool counting = PipelineStatistics::available(
+        mContext->glMajor, mContext->glMinor, mContext->hasExtension("GL_ARB_pipeline_statistics_query"));
+    if (counting && !mPipelineStatistics) mPipelineStatistics = std::make_unique<PipelineStatistics>();
+    const SubmitStats before = mSubmitter->lifetimeStats();
+    if (counting) mPipelineStatistics->begin();
+    renderFrame(technique);
+    if (counting) loads.pipeline = mPipelineStatistics->end();
+    loads.submitted = mSubmitter->lifetimeStats() - before;
+    DebugOutput::check();
+    return loads;
+}
+
+void Harness::setTimerVerdict(const TimerVerdict& verdict) {
+    mVerdict = verdict;
+    mTimerQueries = mVerdict.checked && mVerdict.trusted;
+    mPassTimer->setRing(mTimerQueries ? mRing.get() : nullptr);
 }
 
 RunResult Harness::summarize(Technique& technique, std::vector<FrameSample> samples, uint64_t) {

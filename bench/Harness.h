@@ -11,6 +11,7 @@
 // GPU pass times are read back from the query ring frames later and never stall the loop. Warm-up
 // frames run the same path and are discarded.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "bench/TimerTrust.h"
 #include "gl/Context.h"
 #include "gl/FrameTargets.h"
+#include "gl/PipelineStatistics.h"
 #include "gl/ProgramCache.h"
 #include "gl/TimerQueryRing.h"
 #include "scenes/Scene.h"
@@ -29,6 +31,14 @@
 #include "techniques/Technique.h"
 
 namespace sb {
+
+/// The loads of one untimed census frame (Harness::measureLoads): what the application submitted and,
+/// where the context can count them, what the pipeline processed. The bottleneck study relates frame
+/// time to these.
+struct FrameLoads {
+    SubmitStats submitted;
+    std::optional<PipelineCounts> pipeline; ///< empty without GL_ARB_pipeline_statistics_query
+};
 
 struct RunResult {
     std::string technique;
@@ -41,6 +51,7 @@ struct RunResult {
     Statistics gpuTotal;
     uint64_t gpuFramesMissing = 0; ///< measured frames whose queries never came back
     double setupMs = 0.0;          ///< setScene + compile (untimed for the frames)
+    FrameLoads loads;              ///< census frame after the measured ones
 };
 
 class Harness {
@@ -65,8 +76,14 @@ public:
     void prepare(Technique& technique);
     /// One frame, timed. Returns the CPU/wall sample; GPU times arrive later through the ring.
     FrameSample renderFrame(Technique& technique);
-    /// Warm-up, then the measured frames (config frames or seconds), statistics.
+    /// Warm-up, then the measured frames (config frames or seconds), statistics, then one untimed
+    /// census frame for the loads.
     RunResult measure(Technique& technique);
+    /// One extra frame, not timed, wrapped in pipeline-statistics queries where the context has them.
+    FrameLoads measureLoads(Technique& technique);
+    /// Uses a verdict measured elsewhere (a sweep calibrates once and hands it to every worker process)
+    /// instead of calibrating here.
+    void setTimerVerdict(const TimerVerdict& verdict);
     /// Moves the camera (the viewer's orbit); measurements use the configured preset.
     void setCamera(const CameraPreset& camera);
     /// Shifts the image by `pixels` (sub-pixel camera perturbations of the stability metrics): a
@@ -99,6 +116,7 @@ private:
     FrameUniformData mFrameData{};
     std::unique_ptr<TimerQueryRing> mRing;
     std::unique_ptr<PassTimer> mPassTimer;
+    std::unique_ptr<PipelineStatistics> mPipelineStatistics; ///< created on the first census
     ProgramCache mPrograms;
     TimerVerdict mVerdict;
     uint64_t mFrameIndex = 0;

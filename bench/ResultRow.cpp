@@ -25,6 +25,17 @@ std::string lightsText(const Scene& scene) {
     return out.empty() ? "none" : out;
 }
 
+/// The census frame's loads; the pipeline's cells stay empty where the context cannot count them.
+void addLoads(CsvRow& row, const FrameLoads& loads) {
+    const std::optional<PipelineCounts>& p = loads.pipeline;
+    auto count = [&](uint64_t PipelineCounts::*field) { return p ? std::to_string((*p).*field) : ""; };
+    row.emplace_back("load_gl_calls", std::to_string(loads.submitted.glCalls));
+    row.emplace_back("load_vertices", count(&PipelineCounts::vertexShaderInvocations));
+    row.emplace_back("load_primitives", count(&PipelineCounts::primitivesSubmitted));
+    row.emplace_back("load_clipped_primitives", count(&PipelineCounts::clippingOutputPrimitives));
+    row.emplace_back("load_fragments", count(&PipelineCounts::fragmentShaderInvocations));
+}
+
 size_t layoutInstances(const Scene& scene) {
     size_t n = 0;
     for (const Instance& i : scene.instances) n += i.fromLayout ? 1 : 0;
@@ -59,6 +70,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"scale", csvNumber(c.sceneOptions.scale)},
         {"tessellation",
          c.sceneOptions.tessellation ? std::to_string(*c.sceneOptions.tessellation) : "default"},
+        {"tess_factor", csvNumber(c.sceneOptions.tessellationFactor)},
         {"seed", c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
         {"model", c.sceneOptions.modelPath},
         {"submit", submitModeName(c.submit)},
@@ -80,6 +92,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
     for (const auto& [pass, stats] : r.gpuPass)
         row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? csvNumber(stats.median) : "");
     for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, csvNumber(value));
+    addLoads(row, r.loads);
     return row;
 }
 

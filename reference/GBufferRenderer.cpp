@@ -122,8 +122,7 @@ void GBufferRenderer::draw(Submitter& submitter, ProgramCache& programs, const g
     const SubmitStats before = submitter.stats();
     submitter.draw(DrawSet::All);
     const SubmitStats& after = submitter.stats();
-    mStats = {after.drawCalls - before.drawCalls, after.triangles - before.triangles,
-              after.instances - before.instances};
+    mStats = after - before;
 }
 
 void GBufferRenderer::drawIndexedPerInstance(SubmitMode mode) {
@@ -146,6 +145,7 @@ void GBufferRenderer::drawIndexedPerInstance(SubmitMode mode) {
         mStats.drawCalls += 1;
         mStats.triangles += mScene->meshes[inst.mesh].triangleCount();
         mStats.instances += 1;
+        mStats.glCalls += 4; // two uniforms, bind, draw
     }
 }
 

@@ -131,8 +131,7 @@ void ReferenceTechnique::execute(FrameContext& ctx) {
 void ReferenceTechnique::updateCounters(const SubmitStats& shadeStats) {
     // Both passes' draws, the G-buffer's counted by its renderer (it may draw without the submitter).
     const SubmitStats& g = mGBufferRenderer->lastStats();
-    SubmitStats s{g.drawCalls + shadeStats.drawCalls, g.triangles + shadeStats.triangles,
-                  g.instances + shadeStats.instances};
+    const SubmitStats s = g + shadeStats;
     double rays = 0.0, threadSeconds = 0.0, noise = 0.0;
     int spp = 0;
     for (const TraceStats& t : mTraceStats) {

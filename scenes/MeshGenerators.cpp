@@ -15,7 +15,8 @@ namespace {
 
 constexpr float kTwoPi = glm::two_pi<float>();
 
-void requireTessellation(const char* generator, int tess, int minimum) {
+void requireTessellation(const char* generator, int tess) {
+    const int minimum = MeshGenerators::minimumTessellation(generator);
     if (tess < minimum || tess > 4096)
         throw Error(std::string(generator) + ": tessellation must be in [" + std::to_string(minimum) +
                     ", 4096], got " + std::to_string(tess));
@@ -250,7 +251,7 @@ constexpr PatchGroup kTeapotGroups[] = {{"rim", 0, 4},    {"body", 4, 8}, {"hand
 } // namespace
 
 Mesh MeshGenerators::sphere(int tess) {
-    requireTessellation("sphere", tess, 3);
+    requireTessellation("sphere", tess);
     MeshBuilder b("sphere");
     const int rings = tess, segments = 2 * tess;
     for (int i = 0; i <= rings; ++i) {
@@ -269,7 +270,7 @@ Mesh MeshGenerators::sphere(int tess) {
 }
 
 Mesh MeshGenerators::box(glm::vec3 halfExtent, int tess) {
-    requireTessellation("box", tess, 1);
+    requireTessellation("box", tess);
     MeshBuilder b("box");
     for (int axis = 0; axis < 3; ++axis) {
         for (float sign : {1.0f, -1.0f}) {
@@ -283,7 +284,7 @@ Mesh MeshGenerators::box(glm::vec3 halfExtent, int tess) {
 }
 
 Mesh MeshGenerators::cylinder(int tess) {
-    requireTessellation("cylinder", tess, 2);
+    requireTessellation("cylinder", tess);
     MeshBuilder b("cylinder");
     const int rows = tess, segments = 2 * tess;
     // Side: rows from the top (y = 1) down, so cross(d/dsegment, d/drow) points outward.
@@ -316,7 +317,7 @@ Mesh MeshGenerators::cylinder(int tess) {
 }
 
 Mesh MeshGenerators::plane(float size, int tess) {
-    requireTessellation("plane", tess, 1);
+    requireTessellation("plane", tess);
     MeshBuilder b("plane");
     const float h = 0.5f * size;
     // Rows run from +z to -z so the grid is counter-clockwise seen from +Y.
@@ -330,7 +331,7 @@ Mesh MeshGenerators::plane(float size, int tess) {
 }
 
 Mesh MeshGenerators::aircraft(int tess) {
-    requireTessellation("aircraft", tess, 2);
+    requireTessellation("aircraft", tess);
     MeshBuilder b("aircraft");
     // The flat parts are subdivided too (more slowly than the curved fuselage) so the knob raises
     // the vertex load of every part, as the thesis's vertex-bound measurements need.
@@ -349,7 +350,7 @@ Mesh MeshGenerators::aircraft(int tess) {
 }
 
 Mesh MeshGenerators::teapot(const std::string& bptPath, int tess) {
-    requireTessellation("teapot", tess, 1);
+    requireTessellation("teapot", tess);
     const std::vector<BezierPatch> patches = BezierPatch::readBptFile(bptPath);
     MeshBuilder b("teapot");
     if (patches.size() != 32) {
@@ -363,6 +364,12 @@ Mesh MeshGenerators::teapot(const std::string& bptPath, int tess) {
         for (int p = group.first; p < group.first + group.count; ++p) addPatch(b, patches[size_t(p)], tess);
     }
     return b.finish();
+}
+
+int MeshGenerators::minimumTessellation(const std::string& generator) {
+    if (generator == "sphere") return 3;
+    if (generator == "cylinder" || generator == "aircraft") return 2;
+    return 1;
 }
 
 } // namespace sb

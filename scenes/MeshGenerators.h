@@ -34,6 +34,9 @@ struct MeshGenerators {
     /// "handle" (12-15), "spout" (16-19), "lid" (20-27), "bottom" (28-31); another patch count gives
     /// one part "patches".
     static Mesh teapot(const std::string& bptPath, int tess);
+    /// The smallest tessellation `generator` accepts ("sphere" 3, "cylinder" 2, "aircraft" 2, others
+    /// 1); 1 for names it does not know.
+    static int minimumTessellation(const std::string& generator);
 };
 
 } // namespace sb

@@ -1,8 +1,8 @@
 #include "scenes/Scene.h"
 
-#include <cstdio>
 #include <cstring>
 
+#include "scenes/Fnv1a.h"
 #include "scenes/Math.h"
 
 namespace sb {
@@ -19,33 +19,6 @@ constexpr EffectEntry kEffectNames[] = {
     {Effect::ColourBleeding, "colour_bleeding"},
     {Effect::NonPlanarReceivers, "non_planar_receivers"},
     {Effect::MultipleLights, "multiple_lights"},
-};
-
-/// FNV-1a 64: tiny, stable across platforms and standard libraries (std::hash is neither), and
-/// good enough to tell two scene contents apart; it is not a security hash.
-class Fnv1a {
-public:
-    void bytes(const void* data, size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < size; ++i) mHash = (mHash ^ p[i]) * 1099511628211ull;
-    }
-    template <typename T>
-    void value(const T& v) {
-        bytes(&v, sizeof(T));
-    }
-    template <typename T>
-    void vector(const std::vector<T>& v) {
-        value(uint64_t(v.size()));
-        if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
-    }
-    void string(const std::string& s) {
-        value(uint64_t(s.size()));
-        bytes(s.data(), s.size());
-    }
-    uint64_t result() const { return mHash; }
-
-private:
-    uint64_t mHash = 14695981039346656037ull;
 };
 
 void hashLight(Fnv1a& h, const Light& l) {
@@ -185,9 +158,7 @@ std::string Scene::computeContentHash() const {
     for (const auto& camera : cameras) hashCamera(h, camera);
     h.value(effects);
     h.value(ambient);
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.result()));
-    return hex;
+    return h.hex();
 }
 
 size_t Scene::totalTriangles() const {

@@ -44,9 +44,15 @@ struct Context {
 
 int tessellationFor(const Context& ctx, const JsonReader& m, const std::string& generator, int fallback) {
     const bool overridable = generator != "plane";
-    if (overridable && ctx.options.tessellation) return *ctx.options.tessellation;
-    return m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]"))
-                                 : fallback;
+    int tess = m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]"))
+                                     : fallback;
+    if (!overridable) return tess;
+    if (ctx.options.tessellation) tess = *ctx.options.tessellation;
+    if (ctx.options.tessellationFactor != 1.0f) {
+        const long scaled = std::lround(double(tess) * double(ctx.options.tessellationFactor));
+        tess = int(std::clamp<long>(scaled, MeshGenerators::minimumTessellation(generator), 4096));
+    }
+    return tess;
 }
 
 /// Scales a generated mesh; normals follow the inverse scale (exact for the axis-aligned scales used).

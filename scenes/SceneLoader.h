@@ -20,7 +20,8 @@
 // - meshes: exactly one of "generator" or "file". Generator parameters (each generator accepts only
 //   its own): sphere "radius" (1), box "half_extent" ([1,1,1]), cylinder "radius" (1), "height" (2),
 //   plane "size" (100); "tessellation" defaults: sphere/cylinder/aircraft/plane 16, teapot 8, box 1.
-//   SceneOptions::tessellation replaces it for every generator but the plane (the ground receiver).
+//   SceneOptions::tessellation replaces it for every generator but the plane (the ground receiver), and
+//   SceneOptions::tessellationFactor then multiplies it (rounded, clamped to the generator minimum).
 // - instances: "mesh" (required), "position", "rotation" (Euler degrees), "scale", "color",
 //   "casts_shadow", "receives_shadow". Explicit instances come first, then the layout's.
 // - layout: "mesh", "count" (<= 1000000), "region" required; "seed" (1), "scale" (1), "yaw_only"

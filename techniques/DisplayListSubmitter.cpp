@@ -29,6 +29,7 @@ void DisplayListSubmitter::upload(const Scene& scene) {
 
 void DisplayListSubmitter::draw(DrawSet set) {
     glBindVertexArray(0);
+    mStats.glCalls += 1;
     for (const Instance& inst : mScene->instances) {
         if (!inSet(inst, set)) continue;
         setInstanceUniforms(inst);
@@ -36,6 +37,7 @@ void DisplayListSubmitter::draw(DrawSet set) {
         mStats.drawCalls += 1;
         mStats.triangles += mScene->meshes[inst.mesh].triangleCount();
         mStats.instances += 1;
+        mStats.glCalls += kInstanceUniformCalls + 1;
     }
 }
 

@@ -10,6 +10,7 @@ void ImmediateSubmitter::upload(const Scene& scene) {
 
 void ImmediateSubmitter::draw(DrawSet set) {
     glBindVertexArray(0);
+    mStats.glCalls += 1;
     for (const Instance& inst : mScene->instances) {
         if (!inSet(inst, set)) continue;
         const Mesh& mesh = mScene->meshes[inst.mesh];
@@ -18,6 +19,7 @@ void ImmediateSubmitter::draw(DrawSet set) {
         mStats.drawCalls += 1;
         mStats.triangles += mesh.triangleCount();
         mStats.instances += 1;
+        mStats.glCalls += kInstanceUniformCalls + immediateCalls(mesh);
     }
 }
 

@@ -67,8 +67,10 @@ void InstancedSubmitter::draw(DrawSet set) {
         mStats.drawCalls += 1;
         mStats.triangles += uint64_t(count) / 3 * b.count;
         mStats.instances += b.count;
+        mStats.glCalls += 2; // bind, draw
     }
     glBindVertexArray(0);
+    mStats.glCalls += 1;
 }
 
 } // namespace sb

@@ -243,4 +243,10 @@ TechniqueSpec TechniqueSpec::parse(const std::string& text) {
     return spec;
 }
 
+std::string TechniqueSpec::toString() const {
+    std::string out = name;
+    for (const auto& [k, v] : properties) out += kPairSeparator + k + kValueSeparator + v;
+    return out;
+}
+
 } // namespace sb

@@ -46,6 +46,8 @@ struct TechniqueSpec {
     std::string name;
     std::vector<std::pair<std::string, std::string>> properties;
     static TechniqueSpec parse(const std::string& text);
+    /// The text parse() reads back: "name:k=v:k=v" (just "name" without properties).
+    std::string toString() const;
 };
 
 } // namespace sb

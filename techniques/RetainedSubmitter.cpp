@@ -23,14 +23,17 @@ void RetainedSubmitter::draw(DrawSet set) {
         if (inst.mesh != boundMesh) {
             glBindVertexArray(mBuffers.vao(inst.mesh));
             boundMesh = inst.mesh;
+            mStats.glCalls += 1;
         }
         setInstanceUniforms(inst);
         glDrawElements(GL_TRIANGLES, mBuffers.indexCount(inst.mesh), GL_UNSIGNED_INT, nullptr);
         mStats.drawCalls += 1;
         mStats.triangles += uint64_t(mBuffers.indexCount(inst.mesh)) / 3;
         mStats.instances += 1;
+        mStats.glCalls += kInstanceUniformCalls + 1;
     }
     glBindVertexArray(0);
+    mStats.glCalls += 1;
 }
 
 } // namespace sb

@@ -34,6 +34,23 @@ struct SubmitStats {
     uint64_t drawCalls = 0;
     uint64_t triangles = 0;
     uint64_t instances = 0;
+    /// GL calls the application issued to draw (uniforms, binds, draws, and in immediate mode one call
+    /// per vertex attribute): the CPU-side load of the bottleneck study. Counted per draw from the mesh
+    /// sizes, not per call, so counting costs nothing inside the immediate-mode loop.
+    uint64_t glCalls = 0;
+
+    SubmitStats& operator+=(const SubmitStats& o) {
+        drawCalls += o.drawCalls;
+        triangles += o.triangles;
+        instances += o.instances;
+        glCalls += o.glCalls;
+        return *this;
+    }
+    friend SubmitStats operator+(SubmitStats a, const SubmitStats& b) { return a += b; }
+    friend SubmitStats operator-(SubmitStats a, const SubmitStats& b) {
+        return {a.drawCalls - b.drawCalls, a.triangles - b.triangles, a.instances - b.instances,
+                a.glCalls - b.glCalls};
+    }
 };
 
 class Submitter {
@@ -50,8 +67,15 @@ public:
     /// Defines the vertex stage needs for this mode (SB_INSTANCED for instanced).
     virtual Defines defines() const { return {}; }
 
+    /// Since the last resetStats() (techniques reset at the start of a frame or pass).
     const SubmitStats& stats() const { return mStats; }
-    void resetStats() { mStats = {}; }
+    void resetStats() {
+        mLifetime += mStats;
+        mStats = {};
+    }
+    /// Everything since creation, unaffected by resets: the harness's census takes differences of it,
+    /// so a technique that resets between its passes cannot hide a pass's draws.
+    SubmitStats lifetimeStats() const { return mLifetime + mStats; }
 
 protected:
     static bool inSet(const Instance& inst, DrawSet set);
@@ -60,7 +84,13 @@ protected:
     /// glBegin/glEnd stream of a mesh, one glVertexAttrib call per attribute and vertex (normal, then
     /// position: attribute 0 provokes the vertex). Drawn per frame (immediate) or compiled (display lists).
     static void emitImmediate(const Mesh& mesh);
+    /// GL calls of emitImmediate(mesh): glBegin, two attributes per index, glEnd.
+    static uint64_t immediateCalls(const Mesh& mesh) { return 2 + 2 * uint64_t(mesh.indices.size()); }
+    static constexpr uint64_t kInstanceUniformCalls = 2; ///< setInstanceUniforms
     SubmitStats mStats;
+
+private:
+    SubmitStats mLifetime;
 };
 
 } // namespace sb

@@ -5,6 +5,7 @@
 #include "scenes/Error.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
+#include "techniques/SyntheticTechnique.h"
 
 namespace sb {
 
@@ -14,6 +15,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
         {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
         {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
+        // Not a shadow technique: the bottleneck study's calibration workloads.
+        {"synthetic", [] { return std::unique_ptr<Technique>(new SyntheticTechnique()); }},
     };
     return kEntries;
 }

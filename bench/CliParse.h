@@ -1,0 +1,26 @@
+#pragma once
+// The one way every bench subcommand runs CLI11: --help prints and ends the command (exit code 0),
+// a parse error becomes sb::Error(BadInput) naming the subcommand's help.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "scenes/Error.h"
+
+namespace sb {
+
+/// Returns -1 to go on, or the exit code when the command is finished (--help).
+inline int parseCli(CLI::App& app, int argc, char** argv, const std::string& helpCommand) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        throw Error(std::string(e.what()) + " (see " + helpCommand + " --help)");
+    }
+    return -1;
+}
+
+} // namespace sb

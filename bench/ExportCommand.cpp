@@ -1,0 +1,36 @@
+#include "bench/ExportCommand.h"
+
+#include <iostream>
+
+#include "bench/CliParse.h"
+#include "bench/CsvWriter.h"
+#include "bench/RowExport.h"
+
+namespace sb {
+
+
+int ExportCommand::main(int argc, char** argv) {
+    CLI::App app{"bench export: a result CSV as JSON, Markdown or CSV", "bench export"};
+    app.footer(R"(Examples:
+  bench export results.csv --format md                 key columns as a Markdown table on stdout
+  bench export results.csv --format md --all-columns   every column
+  bench export results.csv --format json -o results.json)");
+    std::string input, output, format = "json";
+    bool allColumns = false;
+    app.add_option("input", input, "a CSV written by bench")->required();
+    app.add_option("--format", format, "json, md or csv")->capture_default_str();
+    app.add_option("-o,--output", output, "write here (atomically) instead of stdout");
+    app.add_flag("--all-columns", allColumns, "md: every column instead of the key ones");
+    if (int code = parseCli(app, argc, argv, "bench export"); code >= 0) return code;
+    const RowFormat f = parseRowFormat(format);
+    if (f == RowFormat::Console) throw Error("--format console: export writes json, md or csv");
+    const CsvTable table = CsvWriter::read(input);
+    const std::string text = f == RowFormat::Markdown ? RowExport::toMarkdown(table, allColumns) : RowExport::format(table, f);
+    if (output.empty())
+        std::cout << text;
+    else
+        CsvWriter::writeText(output, text);
+    return 0;
+}
+
+} // namespace sb

@@ -1,0 +1,29 @@
+#pragma once
+#include "techniques/Technique.h"
+
+namespace sb {
+
+/// `synthetic`: not a shadow technique but a workload whose bottleneck is known by construction, to
+/// validate `bench bottleneck` on any GL implementation (issue 4) and to calibrate one's reading of it:
+///   fill-bound:   fragment_iterations=N (a full-screen pass with N arithmetic steps per pixel),
+///                 draw_scene=false;
+///   vertex-bound: the scene's triangles (many, tiny) with a minimal pipeline, vertex_iterations=N;
+///   CPU-bound:    many small instances in immediate mode (the draw calls dominate).
+/// Visibility is 1 everywhere (no shadows).
+class SyntheticTechnique final : public Technique {
+public:
+    SyntheticTechnique();
+    ~SyntheticTechnique() override;
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+private:
+    const Program* mScene = nullptr;
+    const Program* mFill = nullptr;
+    GLuint mEmptyVao = 0; ///< the full-screen triangle needs no buffers, but GL needs a VAO bound
+    Counters mCounters;
+};
+
+} // namespace sb
