@@ -8,22 +8,23 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/AccuracyEvaluator.h"
+#include "bench/BottleneckCommand.h"
 #include "bench/CliParse.h"
 #include "bench/ConsoleReport.h"
 #include "bench/CsvWriter.h"
 #include "bench/Environment.h"
+#include "bench/ExportCommand.h"
+#include "bench/FiguresCommand.h"
 #include "bench/Harness.h"
 #include "bench/ImageWriter.h"
 #include "bench/Measurement.h"
-#include "bench/RowExport.h"
+#include "bench/MergeCommand.h"
 #include "bench/QualitySweep.h"
 #include "bench/ResultRow.h"
+#include "bench/RowExport.h"
 #include "bench/SamplesFile.h"
 #include "bench/SweepCommand.h"
 #include "bench/SweepWorker.h"
-#include "bench/BottleneckCommand.h"
-#include "bench/MergeCommand.h"
-#include "bench/ExportCommand.h"
 #include "bench/Viewer.h"
 #include "scenes/Error.h"
 #include "scenes/SceneLoader.h"
@@ -38,6 +39,12 @@ const char* kFooter = R"(Modes:
   bench accuracy [options]         measure, then judge each technique's visibility against the exact
                                    Embree reference at the same pixels (errors, NaN count, stability);
                                    --sweep walks every quality knob (accuracy against time)
+  bench sweep [FILE.json] [axes]   every combination of techniques, scenes, instances, scale, submit,
+                                   camera, size, light; --resume, --shard i/N (bench sweep --help)
+  bench bottleneck [axes]          is each technique CPU-, vertex- or fill-limited here? (thesis 6.2)
+  bench figures                    rerun and replot the reproduced figures of results/figures/
+  bench merge -o OUT IN...         join the CSVs of a sharded sweep
+  bench export IN.csv --format md  a result CSV as a Markdown table, JSON or CSV
 
 Examples:
   bench                                            shadowmap, aircraft x200, 1024x1024 (the default run)
@@ -50,18 +57,16 @@ Examples:
   bench --model path/to/model.obj                  your own caster through assimp
   bench --window                                   on-screen viewer (GLFW): drag to orbit, Tab switches
   bench accuracy -t shadowmap --sweep --csv acc.csv  error against time for every shadowmap knob
+  bench -t none -t shadowmap --repeat 5            interleaved rounds: ratios from runs side by side
+  bench -t none -t shadowmap --format json         the rows as JSON on stdout (also csv, md)
+  bench sweep -t none -t shadowmap -n 1,50,100,200 --csv inst.csv
+  bench bottleneck -t none -t shadowmap -n 100 --csv bn.csv
 
 Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 bad input, 3 unsupported on this GL context.)";
 
 std::string withSuffix(const std::string& path, const std::string& suffix) {
     std::filesystem::path p(path);
     return (p.parent_path() / (p.stem().string() + "_" + suffix + p.extension().string())).string();
-}
-
-std::vector<std::unique_ptr<Technique>> createTechniques(const RunConfig& config) {
-    std::vector<std::unique_ptr<Technique>> out;
-    for (const TechniqueSpec& spec : config.techniques) out.push_back(TechniqueRegistry::create(spec));
-    return out;
 }
 
 void writeImages(const RunConfig& config, Harness& harness, const std::string& technique) {
@@ -101,7 +106,8 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
     }
     if (config.repeat > 1) ConsoleReport::printPairedRatios(log, runs, config.repeat);
     if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
-    if (config.format != RowFormat::Console) std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
+    if (config.format != RowFormat::Console)
+        std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
 }
 } // namespace
 
@@ -196,11 +202,13 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("--ref-samples", c.referenceSamples, "accuracy: reference samples per pixel (area lights)")
         ->capture_default_str();
     app.add_flag("--no-stability", noStability, "accuracy: skip perturbation gain and flicker");
-    const int code = parseCli(app, argc, argv, c.mode == RunConfig::Mode::Accuracy ? "bench accuracy" : "bench");
+    const int code =
+        parseCli(app, argc, argv, c.mode == RunConfig::Mode::Accuracy ? "bench accuracy" : "bench");
     if (code >= 0 || listOnly) return code;
     c.stability = !noStability;
     c.format = parseRowFormat(format);
-    if (c.repeat < 1 || c.repeat > 1000) throw Error("--repeat " + std::to_string(c.repeat) + ": expected 1..1000");
+    if (c.repeat < 1 || c.repeat > 1000)
+        throw Error("--repeat " + std::to_string(c.repeat) + ": expected 1..1000");
     if (c.mode != RunConfig::Mode::Accuracy && (c.sweep || noStability))
         throw Error("--sweep and --no-stability belong to `bench accuracy` (see bench --help)");
     if (c.referenceSamples < 1 || c.referenceSamples > 4096) throw Error("--ref-samples: expected 1..4096");
@@ -325,10 +333,12 @@ int BenchApp::dispatch(int argc, char** argv) {
     // Subcommands get argv from their own name on, as if they were programs of their own.
     if (sub == "sweep") return SweepCommand::main(argc - 1, argv + 1);
     if (sub == "bottleneck") return BottleneckCommand::main(argc - 1, argv + 1);
+    if (sub == "figures") return FiguresCommand::main(argc - 1, argv + 1);
     if (sub == "merge") return MergeCommand::main(argc - 1, argv + 1);
     if (sub == "export") return ExportCommand::main(argc - 1, argv + 1);
     if (sub == "sweep-worker") {
-        if (argc != 3) throw Error("usage: bench sweep-worker JOB.json (started by bench sweep, not by hand)");
+        if (argc != 3)
+            throw Error("usage: bench sweep-worker JOB.json (started by bench sweep, not by hand)");
         return SweepWorker::run(argv[2]);
     }
     RunConfig config;

@@ -365,7 +365,8 @@ BottleneckResult BottleneckClassifier::classify(const std::vector<BottleneckRun>
         const RunEvidence& e = result.evidence.back();
         if (!e.heldOut) continue;
         const double err = std::abs(e.timeRatio - e.fittedTimeRatio) / std::max(e.timeRatio, 1.0);
-        result.heldOutRelError = std::isnan(result.heldOutRelError) ? err : std::max(result.heldOutRelError, err);
+        result.heldOutRelError =
+            std::isnan(result.heldOutRelError) ? err : std::max(result.heldOutRelError, err);
     }
     return result;
 }

@@ -87,17 +87,17 @@ struct BottleneckResult {
     double shareCpu = 0, shareVertex = 0, shareFill = 0, shareFixed = 0;
     /// Fitted coefficients in normalised units (fractions of the baseline frame time per baseline load).
     double coefFixed = 0, coefCpu = 0, coefVertex = 0, coefFill = 0;
-    double r2 = 0;                     ///< 1 - SS_res / SS_tot on t (1 when SS_tot = 0)
+    double r2 = 0; ///< 1 - SS_res / SS_tot on t (1 when SS_tot = 0)
     /// Residuals relative to max(t_i, 1), i.e. to the run's time or, for runs faster than the baseline,
     /// the baseline's: an LP_NO_RAST run at 1% of the frame must not turn a 0.01 miss into 100%.
-    double maxRelResidual = 0;         ///< max |t_i - t_hat_i| / max(t_i, 1) over the runs in the fit
-    double rmsRelResidual = 0;         ///< root mean square of the same
+    double maxRelResidual = 0; ///< max |t_i - t_hat_i| / max(t_i, 1) over the runs in the fit
+    double rmsRelResidual = 0; ///< root mean square of the same
     /// rmsRelResidual > kPoorFitRmsRel: the linear model does not explain the times. Judged on the
     /// relative residual, not on R^2: a CPU-bound frame barely moves under any perturbation, so its
     /// SS_tot is timing noise and R^2 says nothing, while a model within a few percent of every run
     /// is a good fit whatever the spread.
     bool poorFit = false;
-    size_t runsInFit = 0;              ///< usable runs, baseline included
+    size_t runsInFit = 0; ///< usable runs, baseline included
     /// The largest relative error of the model's prediction for a held-out run (NaN without one):
     /// how well the fit carries over to the thesis's own tests.
     double heldOutRelError = 0;
@@ -106,7 +106,7 @@ struct BottleneckResult {
 
 class BottleneckClassifier {
 public:
-    static constexpr double kDominantShare = 0.5; ///< a share >= this names the bottleneck alone
+    static constexpr double kDominantShare = 0.5;  ///< a share >= this names the bottleneck alone
     static constexpr double kPoorFitRmsRel = 0.15; ///< 15%: several times this machine's timing noise
 
     /// The scale runs (scale_x10_near, scale_x0.01) are not fitted, only predicted. Each of the other

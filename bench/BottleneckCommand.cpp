@@ -3,14 +3,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "bench/BenchApp.h"
 #include "bench/BottleneckStudy.h"
 #include "bench/CliParse.h"
 #include "bench/RowExport.h"
 #include "bench/SweepOptions.h"
 #include "bench/SweepReport.h"
 #include "bench/SweepRunner.h"
-#include "scenes/SceneLoader.h"
 
 namespace sb {
 
@@ -32,20 +30,6 @@ Examples:
 
 Writes the measurement rows to --csv and the classification to --classes (default: <csv>_classes.csv).)";
 
-/// The scenes of the axes that have a 'near' camera (the thesis's fill test needs one).
-std::vector<std::string> scenesWithNear(const SweepDefinition& d) {
-    std::vector<std::string> out;
-    for (const std::string& name : d.axes.scenes.empty() ? std::vector<std::string>{"aircraft"} : d.axes.scenes)
-        if (SceneLoader::load(name).findCamera("near")) out.push_back(name);
-    return out;
-}
-
-/// Whether the workers will run on Mesa llvmpipe (then the study adds LP_NO_RAST=1).
-bool onLlvmpipe(const SweepDefinition& d) {
-    const RunConfig config = BenchApp::parseArgs(d.commonArgs, RunConfig::Mode::Measure);
-    return createContext(config.context)->renderer.find("llvmpipe") != std::string::npos;
-}
-
 std::string defaultClassesPath(const std::string& csv) {
     std::filesystem::path p(csv);
     return (p.parent_path() / (p.stem().string() + "_classes.csv")).string();
@@ -65,7 +49,8 @@ int classify(const std::string& csv, const std::string& classes, RowFormat forma
 } // namespace
 
 int BottleneckCommand::main(int argc, char** argv) {
-    CLI::App app{"bench bottleneck: is each technique CPU-, vertex- or fill-limited here?", "bench bottleneck"};
+    CLI::App app{"bench bottleneck: is each technique CPU-, vertex- or fill-limited here?",
+                 "bench bottleneck"};
     app.footer(kFooter);
     app.get_formatter()->column_width(34);
     SweepOptions axes;
@@ -75,7 +60,8 @@ int BottleneckCommand::main(int argc, char** argv) {
     app.add_option("--classes", classes, "the classification CSV (default <csv>_classes.csv)");
     app.add_option("--from", from, "classify the rows of this CSV instead of measuring");
     app.add_flag("--resume", resume, "continue a study in --csv");
-    app.add_option("--shard", shard, "run slice i of N (i/N); classify after bench merge")->capture_default_str();
+    app.add_option("--shard", shard, "run slice i of N (i/N); classify after bench merge")
+        ->capture_default_str();
     app.add_flag("--no-progress", noProgress, "no progress bar on stderr");
     app.add_option("--format", format, "stdout: console, csv, json or md (the classification)")
         ->capture_default_str();
@@ -83,15 +69,17 @@ int BottleneckCommand::main(int argc, char** argv) {
     if (int code = parseCli(app, argc, argv, "bench bottleneck"); code >= 0) return code;
     const RowFormat rowFormat = parseRowFormat(format);
     if (!from.empty()) return classify(from, classes.empty() ? defaultClassesPath(from) : classes, rowFormat);
-    if (csv.empty()) throw Error("bench bottleneck: --csv FILE is required (where the rows go), or --from FILE");
+    if (csv.empty())
+        throw Error("bench bottleneck: --csv FILE is required (where the rows go), or --from FILE");
 
     SweepDefinition definition;
     definition.name = "bottleneck";
     // Nine perturbations per technique: fewer frames than a single run by default.
     if (!axes.passes("--frames") && !axes.passes("--seconds")) definition.commonArgs = {"--frames", "20"};
-    if (!axes.passes("--warmup")) definition.commonArgs.insert(definition.commonArgs.end(), {"--warmup", "3"});
+    if (!axes.passes("--warmup"))
+        definition.commonArgs.insert(definition.commonArgs.end(), {"--warmup", "3"});
     axes.applyTo(definition);
-    const SweepPlan plan = BottleneckStudy::plan(definition, onLlvmpipe(definition), scenesWithNear(definition));
+    const SweepPlan plan = BottleneckStudy::plan(definition);
     SweepRunOptions options;
     options.csvPath = csv;
     options.resume = resume;

@@ -8,9 +8,11 @@
 #include <map>
 #include <ostream>
 
+#include "bench/BenchApp.h"
 #include "bench/CsvNumber.h"
 #include "bench/Statistics.h"
 #include "scenes/Error.h"
+#include "scenes/SceneLoader.h"
 
 namespace sb {
 
@@ -58,10 +60,10 @@ std::vector<Perturbation> perturbationsFor(const Setting& base, bool llvmpipe, b
     const double scale = base.number("scale"), factor = base.number("tess_factor");
     const int w = int(base.number("width")), h = int(base.number("height"));
     const bool immediate = base.get("submit") == "immediate";
-    std::vector<Perturbation> out{
-        {p::kBaseline, [](Setting&) {}},
-        {immediate ? p::kSubmitRetained : p::kSubmitImmediate,
-         [=](Setting& s) { s.set("--submit", "submit", immediate ? "retained" : "immediate"); }}};
+    std::vector<Perturbation> out{{p::kBaseline, [](Setting&) {}},
+                                  {immediate ? p::kSubmitRetained : p::kSubmitImmediate, [=](Setting& s) {
+                                       s.set("--submit", "submit", immediate ? "retained" : "immediate");
+                                   }}};
     if (hasNear)
         out.push_back({p::kScaleNear, [=](Setting& s) {
                            s.set("--scale", "scale", csvNumber(scale * 10.0));
@@ -70,9 +72,12 @@ std::vector<Perturbation> perturbationsFor(const Setting& base, bool llvmpipe, b
     out.push_back({p::kScaleSmall, [=](Setting& s) { s.set("--scale", "scale", csvNumber(scale * 0.01)); }});
     out.push_back({p::kSizeHalf, [=](Setting& s) { s.setSize(std::max(16, w / 2), std::max(16, h / 2)); }});
     out.push_back({p::kSizeDouble, [=](Setting& s) { s.setSize(w * 2, h * 2); }});
-    out.push_back({p::kTessHalf, [=](Setting& s) { s.set("--tess-factor", "tess_factor", csvNumber(factor * 0.5)); }});
-    out.push_back({p::kTessDouble, [=](Setting& s) { s.set("--tess-factor", "tess_factor", csvNumber(factor * 2.0)); }});
-    if (llvmpipe) out.push_back({p::kNoRasterizer, [](Setting& s) { s.env.emplace_back("LP_NO_RAST", "1"); }});
+    out.push_back(
+        {p::kTessHalf, [=](Setting& s) { s.set("--tess-factor", "tess_factor", csvNumber(factor * 0.5)); }});
+    out.push_back({p::kTessDouble,
+                   [=](Setting& s) { s.set("--tess-factor", "tess_factor", csvNumber(factor * 2.0)); }});
+    if (llvmpipe)
+        out.push_back({p::kNoRasterizer, [](Setting& s) { s.env.emplace_back("LP_NO_RAST", "1"); }});
     return out;
 }
 
@@ -136,8 +141,8 @@ struct Collected {
     std::vector<std::string> order;
 };
 
-const char* kIdentity[] = {"scene", "instances", "scale", "tessellation", "tess_factor", "submit",
-                           "camera",  "width",     "height", "lights",      "renderer"};
+const char* kIdentity[] = {"scene",  "instances", "scale",  "tessellation", "tess_factor", "submit",
+                           "camera", "width",     "height", "lights",       "renderer"};
 
 std::string fmt(const char* f, double v) {
     if (!std::isfinite(v)) return "-";
@@ -153,21 +158,39 @@ std::string pad(std::string s, size_t w) {
 
 const char* shortName(const std::string& perturbation) {
     static const std::map<std::string, const char*> names{
-        {p::kBaseline, "base"},       {p::kSubmitImmediate, "imm"},  {p::kSubmitRetained, "ret"},
-        {p::kScaleNear, "x10near"},   {p::kScaleSmall, "x0.01"},     {p::kSizeHalf, "res/2"},
-        {p::kSizeDouble, "res*2"},    {p::kTessHalf, "tess/2"},      {p::kTessDouble, "tess*2"},
+        {p::kBaseline, "base"},      {p::kSubmitImmediate, "imm"}, {p::kSubmitRetained, "ret"},
+        {p::kScaleNear, "x10near"},  {p::kScaleSmall, "x0.01"},    {p::kSizeHalf, "res/2"},
+        {p::kSizeDouble, "res*2"},   {p::kTessHalf, "tess/2"},     {p::kTessDouble, "tess*2"},
         {p::kNoRasterizer, "norast"}};
     const auto it = names.find(perturbation);
     return it == names.end() ? "?" : it->second;
 }
 
+/// The scenes of the axes that have a 'near' camera (the thesis's fill test needs one).
+std::vector<std::string> scenesWithNear(const SweepDefinition& d) {
+    std::vector<std::string> out;
+    for (const std::string& name :
+         d.axes.scenes.empty() ? std::vector<std::string>{"aircraft"} : d.axes.scenes)
+        if (SceneLoader::load(name).findCamera("near")) out.push_back(name);
+    return out;
+}
+
+/// Whether the workers will run on Mesa llvmpipe (then the study adds LP_NO_RAST=1).
+bool onLlvmpipe(const SweepDefinition& d) {
+    const RunConfig config = BenchApp::parseArgs(d.commonArgs, RunConfig::Mode::Measure);
+    return createContext(config.context)->renderer.find("llvmpipe") != std::string::npos;
+}
+
 } // namespace
 
+SweepPlan BottleneckStudy::plan(const SweepDefinition& base) {
+    return plan(base, onLlvmpipe(base), scenesWithNear(base));
+}
+
 const std::vector<std::string>& BottleneckStudy::perturbations() {
-    static const std::vector<std::string> kAll{p::kBaseline,  p::kSubmitImmediate, p::kSubmitRetained,
-                                               p::kScaleNear, p::kScaleSmall,      p::kSizeHalf,
-                                               p::kSizeDouble, p::kTessHalf,       p::kTessDouble,
-                                               p::kNoRasterizer};
+    static const std::vector<std::string> kAll{
+        p::kBaseline, p::kSubmitImmediate, p::kSubmitRetained, p::kScaleNear,  p::kScaleSmall,
+        p::kSizeHalf, p::kSizeDouble,      p::kTessHalf,       p::kTessDouble, p::kNoRasterizer};
     return kAll;
 }
 
@@ -180,12 +203,13 @@ SweepPlan BottleneckStudy::plan(const SweepDefinition& base, bool llvmpipe,
     out.commonArgs = bases.commonArgs;
     for (const SweepGroup& b : bases.groups) {
         const Setting setting{b.args, b.columns, {}};
-        const bool hasNear = std::count(scenesWithNear.begin(), scenesWithNear.end(), setting.get("scene")) > 0;
+        const bool hasNear =
+            std::count(scenesWithNear.begin(), scenesWithNear.end(), setting.get("scene")) > 0;
         for (const Perturbation& pert : perturbationsFor(setting, llvmpipe, hasNear)) {
             Setting s = setting;
             pert.apply(s);
             out.addGroup(s.args, s.columns, b.techniques, base.repeat, s.env,
-                         {{"perturbation", pert.name}, {"study_base", std::to_string(b.index)}});
+                         {{"perturbation", pert.name}, {"study_base", b.describe()}});
         }
     }
     return out;
@@ -253,7 +277,10 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
         for (const RunEvidence& ev : r.evidence)
             if (ev.perturbation != p::kBaseline)
                 evidence += std::string(shortName(ev.perturbation)) + " " + fmt("%.2f", ev.timeRatio) +
-                            (ev.heldOut ? "*" : ev.usedInFit ? "" : "!") + "  ";
+                            (ev.heldOut     ? "*"
+                             : ev.usedInFit ? ""
+                                            : "!") +
+                            "  ";
         os << pad(e.techniqueSpec + " ", 22) << pad(where, 22) << pad(r.label + (r.poorFit ? "?" : ""), 16)
            << pad(fmt("%.2f", r.shareCpu), 6) << pad(fmt("%.2f", r.shareVertex), 6)
            << pad(fmt("%.2f", r.shareFill), 6) << pad(fmt("%.0f%%", 100.0 * r.rmsRelResidual), 6)
@@ -261,7 +288,8 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
     }
     os << "\nshares: each stage's part of the baseline frame time in the fitted model T = a + c*calls + "
           "v*vertices + f*fragments\n(cpu includes the fixed part a); class: the stage with >= 0.5 of it, "
-          "else mixed; resid = rms residual of the fit relative to max(T, T0), ? = over 15%;\n* = predicted, not "
+          "else mixed; resid = rms residual of the fit relative to max(T, T0), ? = over 15%;\n* = predicted, "
+          "not "
           "fitted (the scale runs: they change more than the measured loads); ! = failed or loads unknown. "
           "Abbreviations: imm/ret submission switched, x10near/x0.01 scale,\nres resolution per axis, tess "
           "tessellation factor, norast LP_NO_RAST=1.\n";
@@ -284,7 +312,8 @@ CsvTable BottleneckStudy::table(const std::vector<BottleneckEntry>& entries) {
                                {"max_rel_residual", csvNumber(r.maxRelResidual)},
                                {"poor_fit", r.poorFit ? "true" : "false"},
                                {"runs_in_fit", std::to_string(r.runsInFit)},
-                               {"held_out_rel_error", std::isfinite(r.heldOutRelError) ? csvNumber(r.heldOutRelError) : ""}});
+                               {"held_out_rel_error",
+                                std::isfinite(r.heldOutRelError) ? csvNumber(r.heldOutRelError) : ""}});
         auto number = [](double v) { return std::isfinite(v) ? csvNumber(v) : std::string(); };
         for (const RunEvidence& ev : r.evidence) {
             row.emplace_back("time_ratio_" + ev.perturbation, number(ev.timeRatio));

@@ -28,9 +28,9 @@ namespace sb {
 /// One classified (base combination, technique).
 struct BottleneckEntry {
     std::string sweepId;
-    std::string studyBase;                 ///< the base combination's group index in its sweep
-    std::string techniqueSpec;             ///< as given to -t
-    KeyValues identity;                    ///< scene, instances, scale ... of the baseline row
+    std::string studyBase;     ///< the base combination ("scene=aircraft ... instances=100")
+    std::string techniqueSpec; ///< as given to -t
+    KeyValues identity;        ///< scene, instances, scale ... of the baseline row
     double baselineWallMs = 0;
     BottleneckResult result;
 };
@@ -41,7 +41,11 @@ public:
     /// what the study varies in a way it cannot, e.g. two tess factors are fine, each gets its own
     /// study). `llvmpipe` adds the LP_NO_RAST run; `scenesWithNear` lists the scenes that have a 'near'
     /// camera (the others get no scale_x10_near run).
-    static SweepPlan plan(const SweepDefinition& base, bool llvmpipe, const std::vector<std::string>& scenesWithNear);
+    static SweepPlan plan(const SweepDefinition& base, bool llvmpipe,
+                          const std::vector<std::string>& scenesWithNear);
+    /// The same for this machine: probes the GL renderer the workers will get (a context of the
+    /// definition's backend) and loads the scenes to see which have a 'near' camera.
+    static SweepPlan plan(const SweepDefinition& base);
     /// Classifies every (sweep, base, technique) found in `rows` (rows of other kinds are ignored).
     /// Throws sb::Error when the table holds no bottleneck rows at all.
     static std::vector<BottleneckEntry> analyse(const CsvTable& rows);

@@ -79,7 +79,8 @@ private:
 }
 
 /// Reads both pipes until both are closed.
-void pump(int outFd, int errFd, const ChildProcess::LineHandler& onStdoutLine, std::deque<std::string>& tail) {
+void pump(int outFd, int errFd, const ChildProcess::LineHandler& onStdoutLine,
+          std::deque<std::string>& tail) {
     LineBuffer outLines, errLines;
     auto keepTail = [&](const std::string& line) {
         tail.push_back(line);
@@ -126,7 +127,8 @@ ChildExit ChildProcess::run(const std::vector<std::string>& argvIn,
     std::vector<std::string> argvStrings = argvIn, envStrings = buildEnvironment(env);
     std::vector<char*> argv = pointers(argvStrings), envp = pointers(envStrings);
     int out[2], err[2];
-    if (::pipe2(out, O_CLOEXEC) != 0) throw Error(std::string("cannot create a pipe: ") + std::strerror(errno), ExitCode::Failure);
+    if (::pipe2(out, O_CLOEXEC) != 0)
+        throw Error(std::string("cannot create a pipe: ") + std::strerror(errno), ExitCode::Failure);
     if (::pipe2(err, O_CLOEXEC) != 0) {
         const int e = errno;
         ::close(out[0]);

@@ -16,8 +16,8 @@
 namespace sb {
 
 struct ChildExit {
-    int exitCode = -1; ///< valid when signal == 0
-    int signal = 0;    ///< the signal that killed it, 0 when it exited
+    int exitCode = -1;      ///< valid when signal == 0
+    int signal = 0;         ///< the signal that killed it, 0 when it exited
     std::string stderrTail; ///< the last lines the child wrote to stderr
     /// "exit code 2" or "killed by signal 11 (Segmentation fault)".
     std::string describe() const;

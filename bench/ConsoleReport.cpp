@@ -86,7 +86,8 @@ void ConsoleReport::printPairedRatios(std::ostream& os, const std::vector<RunRes
         }
         const Statistics w = Statistics::compute(wall), q = Statistics::compute(ratio);
         os << pad(results[i].technique, 12) << pad(fmt("%.2f ms", w.median), 13)
-           << pad(fmt("%.3fx", q.median), 9) << pad("[" + fmt("%.3f", q.min) + ", " + fmt("%.3f", q.max) + "]", 18)
+           << pad(fmt("%.3fx", q.median), 9)
+           << pad("[" + fmt("%.3f", q.min) + ", " + fmt("%.3f", q.max) + "]", 18)
            << (results[i].properties.empty() ? "-" : results[i].properties) << "\n";
     }
 }

@@ -8,7 +8,6 @@
 
 namespace sb {
 
-
 int ExportCommand::main(int argc, char** argv) {
     CLI::App app{"bench export: a result CSV as JSON, Markdown or CSV", "bench export"};
     app.footer(R"(Examples:
@@ -25,7 +24,8 @@ int ExportCommand::main(int argc, char** argv) {
     const RowFormat f = parseRowFormat(format);
     if (f == RowFormat::Console) throw Error("--format console: export writes json, md or csv");
     const CsvTable table = CsvWriter::read(input);
-    const std::string text = f == RowFormat::Markdown ? RowExport::toMarkdown(table, allColumns) : RowExport::format(table, f);
+    const std::string text =
+        f == RowFormat::Markdown ? RowExport::toMarkdown(table, allColumns) : RowExport::format(table, f);
     if (output.empty())
         std::cout << text;
     else

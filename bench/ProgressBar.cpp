@@ -52,7 +52,8 @@ std::string ProgressBar::status() const {
     // The mean time per configuration so far: configurations of one sweep differ, but shards take every
     // N-th group, so the mean settles quickly.
     std::string out = std::to_string(mBefore + mDone) + "/" + std::to_string(mTotal) +
-                      (mFailed ? ", " + std::to_string(mFailed) + " failed" : "") + ", " + formatDuration(elapsed);
+                      (mFailed ? ", " + std::to_string(mFailed) + " failed" : "") + ", " +
+                      formatDuration(elapsed);
     if (mDone && left) out += ", ~" + formatDuration(elapsed / double(mDone) * double(left)) + " left";
     return out;
 }

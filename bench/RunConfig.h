@@ -37,8 +37,8 @@ struct RunConfig {
     bool stability = true;      ///< accuracy: perturbation gain and flicker
     int windowFrames = 0;       ///< --window: close after this many frames (0 = when the window closes)
     bool quiet = false;
-    int repeat = 1;                          ///< rounds of interleaved measurement (--repeat)
-    RowFormat format = RowFormat::Console;   ///< what goes to stdout (--format); progress then goes to stderr
+    int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
+    RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
     static constexpr int kMinFrames = 5;
 };
 

@@ -15,7 +15,8 @@ namespace sb {
 
 namespace {
 
-const char* kFooter = R"(Every combination of the axes is one group, run in its own worker process; inside it the
+const char* kFooter =
+    R"(Every combination of the axes is one group, run in its own worker process; inside it the
 techniques are measured in rounds (--repeat) next to each other. Rows go to --csv as they finish.
 
 Examples:
@@ -59,7 +60,8 @@ int SweepCommand::main(int argc, char** argv) {
 
     const RowFormat format = parseRowFormat(cli.format);
     const auto [shard, shardCount] = parseShard(cli.shard);
-    SweepDefinition definition = cli.file.empty() ? SweepDefinition{} : SweepDefinition::fromJsonFile(cli.file);
+    SweepDefinition definition =
+        cli.file.empty() ? SweepDefinition{} : SweepDefinition::fromJsonFile(cli.file);
     cli.axes.applyTo(definition);
     if (!cli.name.empty()) definition.name = cli.name;
     if (cli.qualitySweep) definition.qualitySweep = true;
@@ -83,7 +85,8 @@ int SweepCommand::main(int argc, char** argv) {
     options.progress = !cli.noProgress;
     const SweepSummary summary = SweepRunner::run(plan, options);
     SweepReport::printSummary(log, plan, options, summary);
-    if (format != RowFormat::Console) std::cout << RowExport::format(SweepReport::shardRows(plan, options), format);
+    if (format != RowFormat::Console)
+        std::cout << RowExport::format(SweepReport::shardRows(plan, options), format);
     if (summary.interrupted) return 130;
     return summary.failed ? int(ExitCode::Failure) : 0;
 }

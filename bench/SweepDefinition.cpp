@@ -43,7 +43,8 @@ std::vector<std::string> axisValues(const JsonReader& r) {
     return out;
 }
 
-/// {"name": "shadowmap", "properties": {"resolution": [512, 1024], "pcf": 3}} -> "shadowmap:resolution=512,1024:pcf=3"
+/// {"name": "shadowmap", "properties": {"resolution": [512, 1024], "pcf": 3}} ->
+/// "shadowmap:resolution=512,1024:pcf=3"
 std::string techniqueFromJson(const JsonReader& r) {
     if (r.value().is_string()) return r.string();
     r.requireObject({"name", "properties"});
@@ -174,12 +175,18 @@ SweepDefinition SweepDefinition::fromJsonFile(const std::string& path) {
     } catch (const nlohmann::json::parse_error& e) {
         throw Error("sweep definition '" + path + "': not valid JSON: " + e.what());
     }
-    const JsonReader root(doc, path);
-    root.requireObject({"name", "mode", "quality_sweep", "techniques", "scenes", "instances", "scale", "tess",
-                        "tess_factor", "submit", "camera", "size", "light", "repeat", "frames", "warmup",
-                        "seconds", "seed", "backend", "ref_samples", "stability", "args"});
+    return fromJson(doc, path, "", std::filesystem::path(path).stem().string());
+}
+
+SweepDefinition SweepDefinition::fromJson(const nlohmann::json& doc, const std::string& source,
+                                          const std::string& path, const std::string& defaultName) {
+    const JsonReader root(doc, source, path);
+    root.requireObject({"name",    "mode",        "quality_sweep", "techniques", "scenes",  "instances",
+                        "scale",   "tess",        "tess_factor",   "submit",     "camera",  "size",
+                        "light",   "repeat",      "frames",        "warmup",     "seconds", "seed",
+                        "backend", "ref_samples", "stability",     "args"});
     SweepDefinition d;
-    d.name = root.has("name") ? root["name"].string() : std::filesystem::path(path).stem().string();
+    d.name = root.has("name") ? root["name"].string() : defaultName;
     if (root.has("mode")) {
         const std::string mode = root["mode"].string();
         if (mode != "measure" && mode != "accuracy") root["mode"].fail("\"measure\" or \"accuracy\"");
@@ -187,11 +194,17 @@ SweepDefinition SweepDefinition::fromJsonFile(const std::string& path) {
     }
     if (root.has("quality_sweep")) d.qualitySweep = root["quality_sweep"].boolean();
     if (root.has("techniques"))
-        for (const JsonReader& t : root["techniques"].elements(true)) d.axes.techniques.push_back(techniqueFromJson(t));
-    const std::pair<const char*, std::vector<std::string>*> axes[] = {
-        {"scenes", &d.axes.scenes}, {"instances", &d.axes.instances}, {"scale", &d.axes.scale},
-        {"tess", &d.axes.tess},     {"tess_factor", &d.axes.tessFactor}, {"submit", &d.axes.submit},
-        {"camera", &d.axes.camera}, {"size", &d.axes.size},           {"light", &d.axes.light}};
+        for (const JsonReader& t : root["techniques"].elements(true))
+            d.axes.techniques.push_back(techniqueFromJson(t));
+    const std::pair<const char*, std::vector<std::string>*> axes[] = {{"scenes", &d.axes.scenes},
+                                                                      {"instances", &d.axes.instances},
+                                                                      {"scale", &d.axes.scale},
+                                                                      {"tess", &d.axes.tess},
+                                                                      {"tess_factor", &d.axes.tessFactor},
+                                                                      {"submit", &d.axes.submit},
+                                                                      {"camera", &d.axes.camera},
+                                                                      {"size", &d.axes.size},
+                                                                      {"light", &d.axes.light}};
     for (const auto& [key, axis] : axes)
         if (root.has(key)) *axis = axisValues(root[key]);
     if (root.has("repeat")) d.repeat = int(root["repeat"].integer(1, 1000, "an integer in [1, 1000]"));
@@ -228,7 +241,8 @@ SweepPlan SweepDefinition::expand() const {
         }
     std::set<std::string> seen;
     for (const std::string& t : techniques)
-        if (!seen.insert(t).second) throw Error("sweep '" + name + "': technique '" + t + "' is listed twice");
+        if (!seen.insert(t).second)
+            throw Error("sweep '" + name + "': technique '" + t + "' is listed twice");
 
     const SweepAxes a{{},
                       orDefault(axes.scenes, std::string("aircraft")),
@@ -242,12 +256,15 @@ SweepPlan SweepDefinition::expand() const {
                       orDefault(axes.light, std::string("scene"))};
     validateScenes(a);
     // Outer to inner (see the header); an axis value equal to `omit` adds no option (bench's default).
-    const std::vector<Axis> product{
-        {"scene", "--scene", a.scenes, ""},          {"light", "--light", a.light, "scene"},
-        {"camera", "--camera", a.camera, ""},        {"size", "--size", a.size, ""},
-        {"submit", "--submit", a.submit, ""},        {"scale", "--scale", a.scale, ""},
-        {"tess", "--tess", a.tess, "default"},       {"tess_factor", "--tess-factor", a.tessFactor, ""},
-        {"instances", "--instances", a.instances, "default"}};
+    const std::vector<Axis> product{{"scene", "--scene", a.scenes, ""},
+                                    {"light", "--light", a.light, "scene"},
+                                    {"camera", "--camera", a.camera, ""},
+                                    {"size", "--size", a.size, ""},
+                                    {"submit", "--submit", a.submit, ""},
+                                    {"scale", "--scale", a.scale, ""},
+                                    {"tess", "--tess", a.tess, "default"},
+                                    {"tess_factor", "--tess-factor", a.tessFactor, ""},
+                                    {"instances", "--instances", a.instances, "default"}};
     forEachCombination(product, [&](const std::vector<std::string>& values) {
         std::vector<std::string> args;
         for (size_t i = 0; i < product.size(); ++i)
@@ -255,7 +272,8 @@ SweepPlan SweepDefinition::expand() const {
         std::vector<std::string> all = commonArgs;
         all.insert(all.end(), args.begin(), args.end());
         std::string where = "combination";
-        for (size_t i = 0; i < product.size(); ++i) where += std::string(" ") + product[i].column + "=" + values[i];
+        for (size_t i = 0; i < product.size(); ++i)
+            where += std::string(" ") + product[i].column + "=" + values[i];
         validateArgs(all, mode, where); // before identityColumns reads the numbers
         plan.addGroup(std::move(args), identityColumns(values), techniques, repeat);
     });

@@ -22,12 +22,15 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "bench/SweepPlan.h"
 
 namespace sb {
 
 struct SweepAxes {
-    std::vector<std::string> techniques, scenes, instances, scale, tess, tessFactor, submit, camera, size, light;
+    std::vector<std::string> techniques, scenes, instances, scale, tess, tessFactor, submit, camera, size,
+        light;
 };
 
 class SweepDefinition {
@@ -41,6 +44,10 @@ public:
 
     /// Reads a definition file; errors name the file and the JSON path.
     static SweepDefinition fromJsonFile(const std::string& path);
+    /// The same from a parsed value (a figure declaration's "sweep"); `source` and `path` name it in
+    /// errors, `defaultName` is used when it has no "name".
+    static SweepDefinition fromJson(const nlohmann::json& value, const std::string& source,
+                                    const std::string& path, const std::string& defaultName);
     /// Splits "a,b,c" into an axis (empty items are an error naming `option`).
     static std::vector<std::string> splitList(const std::string& text, const std::string& option);
     /// Expands property value lists of one spec: "shadowmap:resolution=512,1024:pcf=1,3" -> 4 specs.

@@ -36,7 +36,8 @@ void SweepJob::save(const std::string& path) const {
     if (timer)
         j["timer"] = {{"checked", timer->checked}, {"trusted", timer->trusted}, {"reason", timer->reason}};
     for (const auto& [round, wall] : baselineWalls) j["baseline_walls"].push_back({round, wall});
-    for (const PlannedRow& r : rows) j["rows"].push_back({{"index", r.index}, {"technique", r.technique}, {"round", r.round}});
+    for (const PlannedRow& r : rows)
+        j["rows"].push_back({{"index", r.index}, {"technique", r.technique}, {"round", r.round}});
     std::ofstream out(path);
     out << j.dump(1);
     if (!out.flush()) throw Error("cannot write sweep job file '" + path + "'", ExitCode::Failure);
@@ -61,9 +62,11 @@ SweepJob SweepJob::load(const std::string& path) {
             job.timer = v;
         }
         if (j.contains("baseline_walls"))
-            for (const auto& bw : j["baseline_walls"]) job.baselineWalls[bw.at(0).get<int>()] = bw.at(1).get<double>();
+            for (const auto& bw : j["baseline_walls"])
+                job.baselineWalls[bw.at(0).get<int>()] = bw.at(1).get<double>();
         for (const auto& r : j.at("rows"))
-            job.rows.push_back({r.at("index").get<size_t>(), r.at("technique").get<std::string>(), r.at("round").get<int>()});
+            job.rows.push_back({r.at("index").get<size_t>(), r.at("technique").get<std::string>(),
+                                r.at("round").get<int>()});
         return job;
     } catch (const nlohmann::json::exception& e) {
         throw Error("sweep-worker: job file '" + path + "' is malformed: " + e.what());

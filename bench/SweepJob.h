@@ -20,10 +20,10 @@ struct SweepJob {
     SweepPlan::Mode mode = SweepPlan::Mode::Measure;
     std::vector<std::string> args; ///< the run's options (common + group), without -t
     std::string csvPath;
-    KeyValues tags;                ///< columns added to every row (sweep_id ... perturbation)
-    std::string baseline;          ///< the group's first technique: ratios are taken against it
+    KeyValues tags;                    ///< columns added to every row (sweep_id ... perturbation)
+    std::string baseline;              ///< the group's first technique: ratios are taken against it
     std::optional<TimerVerdict> timer; ///< measured once by the runner; absent: the worker calibrates
-    std::vector<PlannedRow> rows;  ///< to measure, in this order
+    std::vector<PlannedRow> rows;      ///< to measure, in this order
     /// Wall medians of baseline rows measured by an earlier worker (--resume, a respawn after a
     /// failure), per round, so the rows of those rounds still get their ratio.
     std::map<int, double> baselineWalls;
@@ -36,9 +36,9 @@ struct SweepJob {
 struct WorkerMessage {
     enum class Kind { Begin, Done, Failed } kind;
     size_t index = 0;
-    double wallMs = 0.0;   ///< Done
-    int exitCode = 0;      ///< Failed
-    std::string message;   ///< Failed
+    double wallMs = 0.0; ///< Done
+    int exitCode = 0;    ///< Failed
+    std::string message; ///< Failed
     /// nullopt for lines that are not protocol lines (they are ignored).
     static std::optional<WorkerMessage> parse(const std::string& line);
     static std::string begin(size_t index);

@@ -20,10 +20,15 @@ void SweepOptions::add(CLI::App& app) {
     // Options of a single run that stay the same across the sweep; forwarded verbatim.
     auto forward = [&](const char* name, const char* help) {
         app.add_option_function<std::string>(
-            name, [this, name](const std::string& v) { passThrough.insert(passThrough.end(), {name, v}); }, help);
+            name,
+            [this, name](const std::string& v) {
+                passThrough.insert(passThrough.end(), {name, v});
+            },
+            help);
     };
     auto flag = [&](const char* name, const char* help) {
-        app.add_flag_function(name, [this, name](int64_t) { passThrough.push_back(name); }, help);
+        app.add_flag_function(
+            name, [this, name](int64_t) { passThrough.push_back(name); }, help);
     };
     forward("--frames", "measured frames per configuration");
     forward("--seconds", "measure each configuration for this long instead");

@@ -38,7 +38,8 @@ const char* SweepPlan::modeName(Mode m) {
 }
 
 SweepGroup& SweepPlan::addGroup(std::vector<std::string> args, KeyValues columns,
-                                std::vector<std::string> techniques, int rounds, KeyValues env, KeyValues tags) {
+                                std::vector<std::string> techniques, int rounds, KeyValues env,
+                                KeyValues tags) {
     SweepGroup g;
     g.index = groups.size();
     g.args = std::move(args);
@@ -51,6 +52,15 @@ SweepGroup& SweepPlan::addGroup(std::vector<std::string> args, KeyValues columns
         for (const std::string& t : g.techniques) g.rows.push_back({mConfigCount++, t, round});
     groups.push_back(std::move(g));
     return groups.back();
+}
+
+void SweepPlan::append(const SweepPlan& other) {
+    for (const SweepGroup& g : other.groups) {
+        std::vector<std::string> args = other.commonArgs;
+        args.insert(args.end(), g.args.begin(), g.args.end());
+        const int rounds = g.rows.empty() ? 1 : g.rows.back().round;
+        addGroup(std::move(args), g.columns, g.techniques, rounds, g.env, g.tags);
+    }
 }
 
 std::string SweepPlan::id() const {
@@ -91,7 +101,9 @@ std::vector<const SweepGroup*> SweepPlan::shard(int shardIndex, int count) const
 }
 
 std::pair<int, int> parseShard(const std::string& text, const std::string& option) {
-    auto bad = [&] { return Error(option + " " + text + ": expected i/N with 1 <= i <= N <= 10000, e.g. 2/4"); };
+    auto bad = [&] {
+        return Error(option + " " + text + ": expected i/N with 1 <= i <= N <= 10000, e.g. 2/4");
+    };
     const size_t slash = text.find('/');
     if (slash == std::string::npos) throw bad();
     try {

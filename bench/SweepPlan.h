@@ -34,9 +34,9 @@ struct SweepGroup {
     /// Identity columns of the group's rows (scene, instances, submit ...), written into the failed row
     /// of a configuration that never produced its own.
     KeyValues columns;
-    KeyValues tags;                   ///< extra columns on every row of the group (perturbation ...)
+    KeyValues tags;                      ///< extra columns on every row of the group (perturbation ...)
     std::vector<std::string> techniques; ///< declared order; techniques[0] is the round's baseline
-    std::vector<PlannedRow> rows;     ///< execution order: round by round
+    std::vector<PlannedRow> rows;        ///< execution order: round by round
     /// "scene=aircraft instances=200 submit=retained ..." for messages; with `only`, just those columns.
     std::string describe(const std::vector<std::string>* only = nullptr) const;
 };
@@ -46,15 +46,20 @@ public:
     enum class Mode { Measure, Accuracy };
     static const char* modeName(Mode m); ///< "measure", "accuracy"
 
-    std::string name;  ///< for messages ("instances", "bottleneck", a file stem)
+    std::string name; ///< for messages ("instances", "bottleneck", a file stem)
     Mode mode = Mode::Measure;
     std::vector<std::string> commonArgs; ///< given to every worker before the group's args
     std::vector<SweepGroup> groups;
 
     /// Adds a group whose rows are `rounds` rounds over `techniques`; indices are assigned here.
-    SweepGroup& addGroup(std::vector<std::string> args, KeyValues columns, std::vector<std::string> techniques,
-                         int rounds, KeyValues env = {}, KeyValues tags = {});
+    SweepGroup& addGroup(std::vector<std::string> args, KeyValues columns,
+                         std::vector<std::string> techniques, int rounds, KeyValues env = {},
+                         KeyValues tags = {});
     size_t configCount() const { return mConfigCount; }
+    /// Adds `other`'s groups after this plan's (re-indexed), each with `other`'s common options in
+    /// front of its own: one plan from several definitions (a figure of unlike workloads). This plan's
+    /// own common options stay; the combined plan is measured and resumed as one sweep.
+    void append(const SweepPlan& other);
     /// The identity columns whose value differs between groups (what a progress line needs to say).
     std::vector<std::string> varyingColumns() const;
     /// 16 hex digits over everything that defines the rows (mode, arguments, environment, tags,

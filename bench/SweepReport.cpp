@@ -16,12 +16,12 @@ size_t column(const CsvTable& t, const std::string& name) {
 } // namespace
 
 void SweepReport::printPlan(std::ostream& os, const SweepPlan& plan, int shard, int shardCount) {
-    os << "sweep '" << plan.name << "' (" << plan.id() << ", " << SweepPlan::modeName(plan.mode) << "): "
-       << plan.groups.size() << " combinations, " << plan.configCount() << " configurations\n";
+    os << "sweep '" << plan.name << "' (" << plan.id() << ", " << SweepPlan::modeName(plan.mode)
+       << "): " << plan.groups.size() << " combinations, " << plan.configCount() << " configurations\n";
     for (const SweepGroup& g : plan.groups) {
         const int owner = int(g.index % size_t(shardCount)) + 1;
-        os << (owner == shard ? "* " : "  ") << "group " << g.index << " (shard " << owner << "/" << shardCount
-           << "): " << g.describe();
+        os << (owner == shard ? "* " : "  ") << "group " << g.index << " (shard " << owner << "/"
+           << shardCount << "): " << g.describe();
         for (const auto& [k, v] : g.env) os << " " << k << "=" << v;
         os << "\n";
         for (const PlannedRow& r : g.rows)
@@ -40,7 +40,8 @@ void SweepReport::printSummary(std::ostream& os, const SweepPlan& plan, const Sw
     if (s.timer) os << "GPU timer " << s.timer->label() << ": " << s.timer->reason << "\n";
     if (s.failed) {
         const CsvTable t = shardRows(plan, options);
-        const size_t status = column(t, "status"), error = column(t, "error"), index = column(t, "config_index");
+        const size_t status = column(t, "status"), error = column(t, "error"),
+                     index = column(t, "config_index");
         size_t shown = 0;
         for (const auto& row : t.rows) {
             if (status >= row.size() || row[status] == "ok" || shown == kFailuresShown) continue;

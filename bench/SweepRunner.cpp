@@ -46,7 +46,8 @@ public:
     }
 
 private:
-    struct sigaction mOldInt {}, mOldTerm {};
+    struct sigaction mOldInt {
+    }, mOldTerm{};
 };
 
 /// A private directory for the job files, removed with everything in it.
@@ -106,9 +107,9 @@ Done readDone(const SweepPlan& plan, const SweepRunOptions& options) {
 
 /// The verdict every worker gets; nullopt when the sweep's options say --no-timer-check.
 std::optional<TimerVerdict> calibrateOnce(const SweepPlan& plan) {
-    const RunConfig config = BenchApp::parseArgs(
-        plan.commonArgs,
-        plan.mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy : RunConfig::Mode::Measure);
+    const RunConfig config = BenchApp::parseArgs(plan.commonArgs, plan.mode == SweepPlan::Mode::Accuracy
+                                                                      ? RunConfig::Mode::Accuracy
+                                                                      : RunConfig::Mode::Measure);
     if (!config.checkTimer) return std::nullopt;
     std::unique_ptr<Context> context = createContext(config.context);
     TimerVerdict v;
@@ -147,7 +148,8 @@ public:
     void run(std::vector<PlannedRow> pending, const std::map<size_t, double>& earlier) {
         for (const PlannedRow& r : mGroup.rows) {
             const auto it = earlier.find(r.index);
-            if (it != earlier.end() && r.technique == mGroup.techniques.front()) mBaselineWalls[r.round] = it->second;
+            if (it != earlier.end() && r.technique == mGroup.techniques.front())
+                mBaselineWalls[r.round] = it->second;
         }
         while (!pending.empty() && !gInterrupted) {
             Attempt a = attempt(pending);
@@ -156,7 +158,8 @@ public:
             std::vector<PlannedRow> failed = culprits(a, pending);
             recordFailures(failed, a);
             std::erase_if(pending, [&](const PlannedRow& r) {
-                return std::any_of(failed.begin(), failed.end(), [&](const PlannedRow& f) { return f.index == r.index; });
+                return std::any_of(failed.begin(), failed.end(),
+                                   [&](const PlannedRow& f) { return f.index == r.index; });
             });
         }
     }
@@ -191,7 +194,8 @@ private:
     void onLine(const std::string& line, const std::vector<PlannedRow>& rows, Attempt& a) {
         const std::optional<WorkerMessage> m = WorkerMessage::parse(line);
         if (!m) return;
-        const auto row = std::find_if(rows.begin(), rows.end(), [&](const PlannedRow& r) { return r.index == m->index; });
+        const auto row =
+            std::find_if(rows.begin(), rows.end(), [&](const PlannedRow& r) { return r.index == m->index; });
         if (row == rows.end()) return; // not one of this job's rows: ignore rather than trust it
         switch (m->kind) {
         case WorkerMessage::Kind::Begin:
@@ -217,7 +221,8 @@ private:
         if (a.exit.ok()) return pending; // ended without reporting them: a protocol failure
         std::optional<size_t> index = a.failure ? std::optional<size_t>(a.failure->index) : a.begun;
         if (!index) return pending;
-        const auto row = std::find_if(pending.begin(), pending.end(), [&](const PlannedRow& r) { return r.index == *index; });
+        const auto row = std::find_if(pending.begin(), pending.end(),
+                                      [&](const PlannedRow& r) { return r.index == *index; });
         if (row == pending.end()) return pending;
         const bool deterministic = a.failure && (a.failure->exitCode == int(ExitCode::BadInput) ||
                                                  a.failure->exitCode == int(ExitCode::Unsupported));
@@ -277,7 +282,8 @@ private:
 
 } // namespace
 
-KeyValues SweepRunner::sweepColumns(const SweepPlan& plan, const SweepGroup& group, const SweepRunOptions& options) {
+KeyValues SweepRunner::sweepColumns(const SweepPlan& plan, const SweepGroup& group,
+                                    const SweepRunOptions& options) {
     KeyValues kv{{"sweep_id", plan.id()},
                  {"sweep_name", plan.name},
                  {"sweep_configs", std::to_string(plan.configCount())},
@@ -308,7 +314,8 @@ SweepSummary SweepRunner::run(const SweepPlan& plan, const SweepRunOptions& opti
     TempDirectory jobs;
     ProgressBar bar(stderr, summary.planned, summary.alreadyDone, options.progress);
     for (auto& [group, pending] : work) {
-        GroupRun(plan, *group, options, summary.timer, jobs.path(), bar, summary).run(std::move(pending), done.wallMs);
+        GroupRun(plan, *group, options, summary.timer, jobs.path(), bar, summary)
+            .run(std::move(pending), done.wallMs);
         if (gInterrupted) break;
     }
     bar.close();

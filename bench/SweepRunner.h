@@ -40,7 +40,8 @@ public:
     /// anything when the CSV belongs to another sweep, or holds rows of this one without --resume.
     static SweepSummary run(const SweepPlan& plan, const SweepRunOptions& options);
     /// The columns a row of `plan` gets from its group (used by the worker jobs and the failed rows).
-    static KeyValues sweepColumns(const SweepPlan& plan, const SweepGroup& group, const SweepRunOptions& options);
+    static KeyValues sweepColumns(const SweepPlan& plan, const SweepGroup& group,
+                                  const SweepRunOptions& options);
 };
 
 } // namespace sb

@@ -18,8 +18,9 @@ namespace sb {
 namespace {
 
 RunConfig parseJobArgs(const SweepJob& job) {
-    RunConfig config = BenchApp::parseArgs(
-        job.args, job.mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy : RunConfig::Mode::Measure);
+    RunConfig config =
+        BenchApp::parseArgs(job.args, job.mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
+                                                                            : RunConfig::Mode::Measure);
     config.quiet = true;
     return config;
 }
@@ -64,7 +65,8 @@ void runRows(const SweepJob& job, const RunConfig& config, size_t& current) {
         current = row.index;
         std::cout << WorkerMessage::begin(row.index) << std::endl;
         injectFault(row.index);
-        Measurement m = Measurement::take(*harness, *techniques[row.technique], evaluator.get(), options, env);
+        Measurement m =
+            Measurement::take(*harness, *techniques[row.technique], evaluator.get(), options, env);
         if (row.technique == job.baseline) baselineWall[row.round] = m.run.wall.median;
         const auto base = baselineWall.find(row.round);
         m.addRound(row.round, job.baseline,

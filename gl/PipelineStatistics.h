@@ -15,7 +15,7 @@ namespace sb {
 
 struct PipelineCounts {
     uint64_t vertexShaderInvocations = 0;
-    uint64_t primitivesSubmitted = 0;   ///< primitives assembled from the draws (before clipping)
+    uint64_t primitivesSubmitted = 0; ///< primitives assembled from the draws (before clipping)
     uint64_t clippingOutputPrimitives = 0;
     uint64_t fragmentShaderInvocations = 0;
 };

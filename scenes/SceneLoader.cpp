@@ -44,8 +44,8 @@ struct Context {
 
 int tessellationFor(const Context& ctx, const JsonReader& m, const std::string& generator, int fallback) {
     const bool overridable = generator != "plane";
-    int tess = m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]"))
-                                     : fallback;
+    int tess =
+        m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]")) : fallback;
     if (!overridable) return tess;
     if (ctx.options.tessellation) tess = *ctx.options.tessellation;
     if (ctx.options.tessellationFactor != 1.0f) {

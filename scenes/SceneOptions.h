@@ -9,10 +9,10 @@
 namespace sb {
 
 struct SceneOptions {
-    std::optional<uint32_t> instances;  ///< overrides the layout's count (--instances N)
-    float scale = 1.0f;                 ///< multiplies the scale of every layout instance (--scale S)
-    std::optional<uint32_t> seed;       ///< overrides the layout's seed (--seed N)
-    std::optional<int> tessellation;    ///< overrides every generator's tessellation knob (--tess N)
+    std::optional<uint32_t> instances; ///< overrides the layout's count (--instances N)
+    float scale = 1.0f;                ///< multiplies the scale of every layout instance (--scale S)
+    std::optional<uint32_t> seed;      ///< overrides the layout's seed (--seed N)
+    std::optional<int> tessellation;   ///< overrides every generator's tessellation knob (--tess N)
     /// Multiplies every generator's tessellation (after --tess), rounded, at least the generator's
     /// minimum (--tess-factor F): the bottleneck study's vertex-load knob, which keeps each mesh's own
     /// proportions where one --tess N would not.

@@ -11,8 +11,8 @@ PACKAGES=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libglfw3-dev libepoxy-dev
   # maths, JSON, CLI, images, model files, ray tracing reference
   libglm-dev nlohmann-json3-dev libcli11-dev libopenimageio-dev libassimp-dev libembree-dev
-  # tests
-  googletest libgtest-dev libgmock-dev xvfb xauth
+  # tests (GNU parallel: the sharded-sweep test runs shards the way the README documents)
+  googletest libgtest-dev libgmock-dev xvfb xauth parallel
   # plotting (tools/plot.py runs with /usr/bin/python3)
   python3-matplotlib python3-pandas
 )

@@ -12,26 +12,28 @@ constexpr GLint kFragmentIterationsLocation = 0; // synthetic/fill.frag
 
 SyntheticTechnique::SyntheticTechnique()
     : Technique({.name = "synthetic",
-                 .description = "calibration workload of known bottleneck (no shadows): full-screen fill loop, "
-                                "vertex loop, or the scene's draws",
+                 .description =
+                     "calibration workload of known bottleneck (no shadows): full-screen fill loop, "
+                     "vertex loop, or the scene's draws",
                  .effects = 0,
                  .capabilities = {{"GL 4.5", 4, 5, ""}},
                  .passes = {"scene", "fill"},
-                 .properties = {{kFragmentIterations,
-                                 PropertyType::Int,
-                                 "0",
-                                 0,
-                                 100000,
-                                 {},
-                                 "arithmetic steps per pixel of a full-screen pass (0: no pass)"},
-                                {kVertexIterations,
-                                 PropertyType::Int,
-                                 "0",
-                                 0,
-                                 100000,
-                                 {},
-                                 "extra arithmetic steps per vertex of the scene pass"},
-                                {kDrawScene, PropertyType::Bool, "true", 0, 0, {}, "draw the scene's triangles"}}}) {}
+                 .properties = {
+                     {kFragmentIterations,
+                      PropertyType::Int,
+                      "0",
+                      0,
+                      100000,
+                      {},
+                      "arithmetic steps per pixel of a full-screen pass (0: no pass)"},
+                     {kVertexIterations,
+                      PropertyType::Int,
+                      "0",
+                      0,
+                      100000,
+                      {},
+                      "extra arithmetic steps per vertex of the scene pass"},
+                     {kDrawScene, PropertyType::Bool, "true", 0, 0, {}, "draw the scene's triangles"}}}) {}
 
 SyntheticTechnique::~SyntheticTechnique() {
     if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);
@@ -45,7 +47,8 @@ void SyntheticTechnique::compile(const CompileContext& ctx) {
     std::string key;
     mScene = mFill = nullptr;
     if (properties().getBool(kDrawScene)) {
-        mScene = &ctx.programs.get({"synthetic/scene.vert", "synthetic/scene.frag", ""}, ctx.submitter.defines());
+        mScene =
+            &ctx.programs.get({"synthetic/scene.vert", "synthetic/scene.frag", ""}, ctx.submitter.defines());
         key = mScene->key();
     }
     if (properties().getInt(kFragmentIterations) > 0) {
@@ -77,7 +80,8 @@ void SyntheticTechnique::execute(FrameContext& ctx) {
         glEnable(GL_DEPTH_TEST);
     }
     const SubmitStats& s = ctx.submitter.stats();
-    mCounters = {{"draw_calls", double(s.drawCalls) + (mFill ? 1.0 : 0.0)}, {"triangles", double(s.triangles)}};
+    mCounters = {{"draw_calls", double(s.drawCalls) + (mFill ? 1.0 : 0.0)},
+                 {"triangles", double(s.triangles)}};
 }
 
 } // namespace sb

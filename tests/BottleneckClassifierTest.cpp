@@ -445,7 +445,7 @@ TEST(BottleneckClassifierTest, FlatCpuBoundTimesAreAGoodFit) {
     // fit is not poor: rms relative residual = rms(|t - mean| / t) with mean t = 1.0 exactly:
     // residuals relative to max(t, 1): 0, 0.02/1.02, 0.02/1, 0.01/1.01, 0.01/1 -> rms 0.01406.
     std::vector<BottleneckRun> runs = {
-        {pert::kBaseline, 10.0, {1.6e5, 6e4, 7e4}},   {pert::kSizeHalf, 10.2, {1.6e5, 6e4, 1.7e4}},
+        {pert::kBaseline, 10.0, {1.6e5, 6e4, 7e4}},    {pert::kSizeHalf, 10.2, {1.6e5, 6e4, 1.7e4}},
         {pert::kSizeDouble, 9.8, {1.6e5, 6e4, 2.8e5}}, {pert::kTessHalf, 10.1, {1.6e5, 6e4, 7e4}},
         {pert::kTessDouble, 9.9, {1.6e5, 6e4, 7e4}},
     };

@@ -37,31 +37,6 @@ int countLines(const std::string& s, const std::string& prefix) {
     return n;
 }
 
-// The column names the README documents (backticked names in the table of its "CSV columns" section).
-std::vector<std::string> documentedColumns() {
-    std::string readme = test::readFile(std::string(SB_SOURCE_DIR) + "/README.md");
-    size_t start = readme.find("## CSV columns");
-    size_t end = readme.find("\n## ", start + 5);
-    std::string section = readme.substr(start, end - start);
-    std::vector<std::string> cols;
-    std::regex row(R"(\n\| `([a-z0-9_<>]+)`)");
-    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator();
-         ++it)
-        cols.push_back((*it)[1]);
-    return cols;
-}
-
-bool headerHas(const std::vector<std::string>& header, const std::string& documented) {
-    size_t lt = documented.find('<');
-    if (lt == std::string::npos) return std::find(header.begin(), header.end(), documented) != header.end();
-    // A pattern such as gpu_<pass>_ms_median: some column with that prefix and suffix.
-    std::string prefix = documented.substr(0, lt), suffix = documented.substr(documented.find('>') + 1);
-    return std::any_of(header.begin(), header.end(), [&](const std::string& h) {
-        return h.size() > prefix.size() + suffix.size() && h.rfind(prefix, 0) == 0 &&
-               h.compare(h.size() - suffix.size(), suffix.size(), suffix) == 0;
-    });
-}
-
 TEST(Cli, HelpShowsExamples) {
     auto r = runCommand(bench("--help"));
     EXPECT_EQ(r.exitCode, 0);
@@ -86,17 +61,18 @@ TEST(Cli, ShortRunWritesEveryDocumentedColumn) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 2u);
-    auto cols = documentedColumns();
+    auto cols = test::documentedColumns();
     ASSERT_GT(cols.size(), 30u) << "README CSV section not found or too short";
-    // Every documented column except those only `bench accuracy` writes (acc_*, ref_*).
+    // Every documented column except those only `bench accuracy` writes (acc_*, ref_*) and those only
+    // sweeps, bottleneck studies and failed configurations have (SweepCliTest checks those).
     for (const std::string& c : cols) {
-        if (c.rfind("acc_", 0) == 0 || c.rfind("ref_", 0) == 0) continue;
-        EXPECT_TRUE(headerHas(t.header, c)) << "documented column missing: " << c;
+        if (c.rfind("acc_", 0) == 0 || c.rfind("ref_", 0) == 0 || test::sweepOnlyColumns().count(c)) continue;
+        EXPECT_TRUE(test::headerHas(t.header, c)) << "documented column missing: " << c;
     }
     // Every column in the file is documented too.
     for (const std::string& h : t.header)
-        EXPECT_TRUE(
-            std::any_of(cols.begin(), cols.end(), [&](const std::string& c) { return headerHas({h}, c); }))
+        EXPECT_TRUE(std::any_of(cols.begin(), cols.end(),
+                                [&](const std::string& c) { return test::headerHas({h}, c); }))
             << "undocumented column: " << h;
     auto col = [&](const std::string& name) {
         return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
@@ -240,13 +216,15 @@ TEST(Cli, AccuracyRowHasTimingAndEveryDocumentedAccuracyColumn) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 3u);
-    auto cols = documentedColumns();
+    auto cols = test::documentedColumns();
     for (const std::string& h : t.header)
-        EXPECT_TRUE(
-            std::any_of(cols.begin(), cols.end(), [&](const std::string& c) { return headerHas({h}, c); }))
+        EXPECT_TRUE(std::any_of(cols.begin(), cols.end(),
+                                [&](const std::string& c) { return test::headerHas({h}, c); }))
             << "undocumented column: " << h;
-    for (const std::string& c : cols)
-        EXPECT_TRUE(headerHas(t.header, c)) << "documented column missing: " << c;
+    for (const std::string& c : cols) {
+        if (test::sweepOnlyColumns().count(c)) continue;
+        EXPECT_TRUE(test::headerHas(t.header, c)) << "documented column missing: " << c;
+    }
     auto cell = [&](size_t row, const std::string& name) {
         return t.rows[row][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
     };
@@ -270,3 +248,22 @@ TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
 }
 
 } // namespace
+
+TEST(Cli, RepeatInterleavesRoundsAndPairsRatios) {
+    std::string dir = test::freshDir("cli-repeat");
+    std::string csv = dir + "/r.csv";
+    auto r = runCommand(bench("-t none -t shadowmap --repeat 3" + kQuick + " --csv " + csv));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    CsvTable t = CsvWriter::read(csv);
+    ASSERT_EQ(t.rows.size(), 6u);
+    auto col = [&](const std::string& name) {
+        return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
+    };
+    // Written in measurement order: none, shadowmap per round, rounds 1..3.
+    for (size_t i = 0; i < 6; ++i) {
+        EXPECT_EQ(t.rows[i][col("technique")], i % 2 ? "shadowmap" : "none") << i;
+        EXPECT_EQ(t.rows[i][col("repeat")], std::to_string(i / 2 + 1)) << i;
+        EXPECT_EQ(t.rows[i][col("baseline")], "none");
+    }
+    EXPECT_NE(r.output.find("paired over 3 rounds"), std::string::npos) << r.output;
+}

@@ -1,11 +1,14 @@
 #pragma once
 // Shared helpers of the GL and CLI tests: small run configurations, read-backs with world positions,
 // running the bench binary.
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -83,6 +86,39 @@ inline std::string freshDir(const std::string& name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
+}
+
+// The column names the README documents (backticked names in the table of its "CSV columns" section).
+inline std::vector<std::string> documentedColumns() {
+    std::string readme = test::readFile(std::string(SB_SOURCE_DIR) + "/README.md");
+    size_t start = readme.find("## CSV columns");
+    size_t end = readme.find("\n## ", start + 5);
+    std::string section = readme.substr(start, end - start);
+    std::vector<std::string> cols;
+    std::regex row(R"(\n\| `([a-z0-9_<>]+)`)");
+    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator();
+         ++it)
+        cols.push_back((*it)[1]);
+    return cols;
+}
+
+inline bool headerHas(const std::vector<std::string>& header, const std::string& documented) {
+    size_t lt = documented.find('<');
+    if (lt == std::string::npos) return std::find(header.begin(), header.end(), documented) != header.end();
+    // A pattern such as gpu_<pass>_ms_median: some column with that prefix and suffix.
+    std::string prefix = documented.substr(0, lt), suffix = documented.substr(documented.find('>') + 1);
+    return std::any_of(header.begin(), header.end(), [&](const std::string& h) {
+        return h.size() > prefix.size() + suffix.size() && h.rfind(prefix, 0) == 0 &&
+               h.compare(h.size() - suffix.size(), suffix.size(), suffix) == 0;
+    });
+}
+
+/// Documented columns only sweeps, bottleneck studies and failed configurations write.
+inline const std::set<std::string>& sweepOnlyColumns() {
+    static const std::set<std::string> kColumns = {
+        "error",      "technique_spec", "config_index", "config_group", "sweep_id",
+        "sweep_name", "sweep_configs",  "shard",        "perturbation", "study_base"};
+    return kColumns;
 }
 
 } // namespace sb::test

@@ -4,7 +4,13 @@
 
   /usr/bin/python3 tools/plot.py pareto results/accuracy/aircraft.csv --out results/accuracy/pareto
       error against median frame time, one series per technique, the Pareto front highlighted;
-      writes OUT.png and OUT.svg.
+  /usr/bin/python3 tools/plot.py lines inst.csv --out inst --x instances [--y wall_ms_median]
+      a measure against an axis, one line per technique (median over rounds; bars: the spread over
+      rounds, or p5..p95 of the frames with a single round), one panel per --facet value;
+  /usr/bin/python3 tools/plot.py bottleneck bn_classes.csv --out bn
+      the bottleneck classification: each stage's share of the frame, and the evidence (T/T0 for
+      every perturbation).
+Each writes OUT.png and OUT.svg. `bench figures` calls it for every declared figure.
 """
 import argparse
 import sys
@@ -77,10 +83,101 @@ def pareto(args):
                  f"{first.get('width', '')}x{first.get('height', '')}, {first.get('renderer', '')}", fontsize=9)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
+    save(fig, args.out, f"{len(df)} points, {len(front)} on the front")
+
+
+def ok_rows(df):
+    return df[df["status"] == "ok"] if "status" in df.columns else df
+
+
+def series_label(row, columns):
+    return " ".join(str(row[c]) for c in columns)
+
+
+def lines(args):
+    df = ok_rows(pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True))
+    series = args.series.split(",")
+    if "technique_spec" in df.columns and series == ["technique"]:
+        series = ["technique_spec"]
+    for col in [args.x, args.y] + series + ([args.facet] if args.facet else []):
+        if col not in df.columns:
+            sys.exit(f"plot.py: {args.csv}: column '{col}' missing")
+    facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
+    fig, axes = plt.subplots(1, len(facets), figsize=(6.5 * len(facets), 4.8), dpi=120, squeeze=False)
+    for ax, facet in zip(axes[0], facets):
+        part = df if facet is None else df[df[args.facet] == facet]
+        for key, group in part.groupby(series if len(series) > 1 else series[0], sort=False):
+            key = key if isinstance(key, tuple) else (key,)
+            stats = group.groupby(args.x)[args.y].agg(["median", "min", "max", "count"]).sort_index()
+            lo, hi = stats["median"] - stats["min"], stats["max"] - stats["median"]
+            if stats["count"].max() <= 1 and args.y == "wall_ms_median" and "wall_ms_p5" in group.columns:
+                pct = group.groupby(args.x)[["wall_ms_p5", "wall_ms_p95"]].median().sort_index()
+                lo, hi = stats["median"] - pct["wall_ms_p5"], pct["wall_ms_p95"] - stats["median"]
+            ax.errorbar(stats.index, stats["median"], yerr=[lo.clip(lower=0), hi.clip(lower=0)], marker="o",
+                        ms=4, capsize=3, label=" ".join(str(k) for k in key))
+        ax.set_xlabel(args.x)
+        ax.set_ylabel(args.ylabel or args.y)
+        if args.logx:
+            ax.set_xscale("log")
+        if args.logy:
+            ax.set_yscale("log")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+        if facet is not None:
+            ax.set_title(f"{args.facet} = {facet}", fontsize=9)
+    first = df.iloc[0]
+    fig.suptitle(args.title or f"{args.y} against {args.x} ({first.get('renderer', '')})", fontsize=10)
+    save(fig, args.out, f"{len(df)} rows")
+
+
+def bottleneck(args):
+    df = pd.read_csv(args.csv[0])
+    for col in ("technique_spec", "share_cpu", "share_vertex", "share_fill", "class"):
+        if col not in df.columns:
+            sys.exit(f"plot.py: {args.csv[0]}: column '{col}' missing (written by bench bottleneck?)")
+    def where(r):
+        n = r.get("instances")
+        return f"{r['scene']}" + (f" x{int(n)}" if pd.notna(n) and n else "")
+
+    labels = [f"{r['technique_spec']} @ {where(r)}" for _, r in df.iterrows()]
+    perts = [c[len("time_ratio_"):] for c in df.columns if c.startswith("time_ratio_") and
+             c != "time_ratio_baseline"]
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 1.2 + 0.55 * len(df)), dpi=120,
+                                  gridspec_kw={"width_ratios": [1, 1.3]})
+    y = range(len(df))
+    left = [0.0] * len(df)
+    for col, name, color in (("share_cpu", "cpu", "#4c72b0"), ("share_vertex", "vertex", "#55a868"),
+                             ("share_fill", "fill", "#c44e52")):
+        ax.barh(y, df[col], left=left, color=color, label=name)
+        left = [a + b for a, b in zip(left, df[col])]
+    for i, (_, r) in enumerate(df.iterrows()):
+        poor = " ?" if str(r.get("poor_fit", False)).lower() == "true" else ""
+        ax.text(1.02, i, f"{r['class']}{poor}  ({r['wall_ms_baseline']:.1f} ms)", va="center", fontsize=8)
+    ax.set_yticks(list(y))
+    ax.set_yticklabels(labels, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlim(0, 1.45)
+    ax.set_xlabel("share of the baseline frame time (fitted)")
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.35 if len(df) < 4 else -0.12), ncol=3)
+    for j, p in enumerate(perts):
+        ax2.scatter(df[f"time_ratio_{p}"], [v + (j - len(perts) / 2) * 0.06 for v in y], s=18, label=p, zorder=3)
+    ax2.axvline(1.0, color="0.5", lw=0.8)
+    ax2.set_xscale("log")
+    ax2.set_yticks(list(y))
+    ax2.set_yticklabels([])
+    ax2.invert_yaxis()
+    ax2.set_xlabel("frame time / baseline frame time (evidence)")
+    ax2.grid(True, axis="x", alpha=0.3)
+    ax2.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.0, 0.5))
+    fig.suptitle(args.title or "Bottleneck classification", fontsize=10)
+    save(fig, args.out, f"{len(df)} classifications")
+
+
+def save(fig, out, what):
     fig.tight_layout()
     for ext in ("png", "svg"):
-        fig.savefig(f"{args.out}.{ext}")
-    print(f"wrote {args.out}.png and {args.out}.svg ({len(df)} points, {len(front)} on the front)")
+        fig.savefig(f"{out}.{ext}", bbox_inches="tight")
+    print(f"wrote {out}.png and {out}.svg ({what})")
 
 
 def main():
@@ -92,9 +189,23 @@ def main():
     p.add_argument("--metric", default="acc_wrong_pct", help="error column (default acc_wrong_pct)")
     p.add_argument("--title", default="")
     p.add_argument("--logy", action="store_true", help="logarithmic error axis")
+    q = sub.add_parser("lines", help="a measure against an axis, one line per series")
+    q.add_argument("csv", nargs="+")
+    q.add_argument("--out", required=True)
+    q.add_argument("--x", required=True, help="axis column (instances, scale, width ...)")
+    q.add_argument("--y", default="wall_ms_median")
+    q.add_argument("--ylabel", default="")
+    q.add_argument("--series", default="technique", help="comma-separated columns naming a line")
+    q.add_argument("--facet", default="", help="one panel per value of this column")
+    q.add_argument("--title", default="")
+    q.add_argument("--logx", action="store_true")
+    q.add_argument("--logy", action="store_true")
+    b = sub.add_parser("bottleneck", help="bottleneck classification (the _classes.csv of bench bottleneck)")
+    b.add_argument("csv", nargs=1)
+    b.add_argument("--out", required=True)
+    b.add_argument("--title", default="")
     args = parser.parse_args()
-    if args.kind == "pareto":
-        pareto(args)
+    {"pareto": pareto, "lines": lines, "bottleneck": bottleneck}[args.kind](args)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,86 @@
+// `bench bottleneck` end to end (issue 4): the classifier must name the bottleneck of workloads whose
+// bottleneck is known by construction (the independent answer), on whatever GL the test runs on:
+//   fill:   a full-screen pass of 100 arithmetic steps per pixel, no geometry;
+//   vertex: a million tiny triangles (synthetic_triangles: 256 spheres x 4032 triangles, a few pixels each);
+//   cpu:    10000 two-triangle quads in immediate mode (synthetic_draws: draw calls, next to no work).
+// The label needs a share >= 0.5; measured margins on llvmpipe are wide (fill 0.91-0.94, vertex 0.91-0.98,
+// cpu 0.89-0.95 at 128^2-512^2), so timing noise from tests running beside this one cannot flip it.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/CsvWriter.h"
+
+using namespace sb;
+using test::runCommand;
+
+namespace {
+
+const std::string kBench = SB_BENCH_BINARY;
+
+struct KnownWorkload {
+    const char* name;
+    const char* args;
+    const char* expected;
+};
+
+const KnownWorkload kWorkloads[] = {
+    {"fill", "-t synthetic:fragment_iterations=100:draw_scene=false --scene sphere_plane", "fill"},
+    {"vertex", "-t synthetic --scene synthetic_triangles", "vertex"},
+    {"cpu", "-t synthetic --scene synthetic_draws --submit immediate", "cpu"},
+};
+
+void PrintTo(const KnownWorkload& w, std::ostream* os) {
+    *os << w.name;
+}
+
+std::string column(const CsvTable& t, size_t row, const std::string& name) {
+    const auto it = std::find(t.header.begin(), t.header.end(), name);
+    return it == t.header.end() ? "<no column " + name + ">" : t.rows[row][size_t(it - t.header.begin())];
+}
+
+class KnownBottleneck : public ::testing::TestWithParam<KnownWorkload> {};
+
+TEST_P(KnownBottleneck, IsNamedCorrectly) {
+    const KnownWorkload& w = GetParam();
+    const std::string dir = test::freshDir(std::string("bottleneck-") + w.name);
+    const std::string csv = dir + "/bn.csv";
+    auto r = runCommand(kBench + " bottleneck " + w.args +
+                        " --size 256x256 --frames 4 --warmup 1 --no-progress --csv " + csv);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const CsvTable rows = CsvWriter::read(csv);
+    // baseline, the submission switch, two scale runs, two sizes, two tessellations (+ LP_NO_RAST on
+    // llvmpipe).
+    const bool llvmpipe = column(rows, 0, "renderer").find("llvmpipe") != std::string::npos;
+    EXPECT_EQ(rows.rows.size(), llvmpipe ? 9u : 8u);
+    const CsvTable classes = CsvWriter::read(dir + "/bn_classes.csv");
+    ASSERT_EQ(classes.rows.size(), 1u);
+    EXPECT_EQ(column(classes, 0, "class"), w.expected) << r.output;
+    const double share = std::stod(column(classes, 0, std::string("share_") + w.expected));
+    EXPECT_GE(share, 0.5) << r.output;
+    const double sum = std::stod(column(classes, 0, "share_cpu")) +
+                       std::stod(column(classes, 0, "share_vertex")) +
+                       std::stod(column(classes, 0, "share_fill"));
+    EXPECT_NEAR(sum, 1.0, 3e-4) << "shares add up (4-decimal CSV rounding)";
+    EXPECT_NE(r.output.find(std::string(w.expected)), std::string::npos);
+    // --from reclassifies the same rows to the same answer.
+    auto again = runCommand(kBench + " bottleneck --from " + csv + " --classes " + dir + "/again.csv");
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_EQ(column(CsvWriter::read(dir + "/again.csv"), 0, "class"), w.expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(Synthetic, KnownBottleneck, ::testing::ValuesIn(kWorkloads),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+TEST(BottleneckCli, FromACsvWithoutStudyRowsIsAClearError) {
+    const std::string dir = test::freshDir("bottleneck-from");
+    auto run = runCommand(kBench + " -t none --instances 2 --size 64x64 --frames 2 --warmup 1 --csv " + dir +
+                          "/r.csv");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    auto r = runCommand(kBench + " bottleneck --from " + dir + "/r.csv");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("no bottleneck rows"), std::string::npos) << r.output;
+}
+
+} // namespace
