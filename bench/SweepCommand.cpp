@@ -21,10 +21,10 @@ techniques are measured in rounds (--repeat) next to each other. Rows go to --cs
 
 Examples:
   bench sweep -t none -t shadowmap --instances 1,50,100,200 --csv inst.csv
-  bench sweep sweeps/instances.json --csv inst.csv --repeat 3
+  bench sweep sweeps/submission.json --csv sub.csv
   bench sweep -t shadowmap:resolution=512,1024,2048 --submit retained,immediate --csv r.csv
-  bench sweep sweeps/instances.json --csv inst.csv --resume          continue an interrupted sweep
-  bench sweep sweeps/instances.json --shard 2/4 --csv part2.csv      one of four slices
+  bench sweep sweeps/submission.json --csv sub.csv --resume         continue an interrupted sweep
+  bench sweep sweeps/submission.json --shard 2/4 --csv part2.csv     one of four slices
   parallel bench sweep s.json --shard {}/2 --csv part{}.csv ::: 1 2 && bench merge -o all.csv part1.csv part2.csv
   bench sweep s.json --dry-run                                       list the configurations only
 

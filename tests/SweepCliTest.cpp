@@ -298,3 +298,45 @@ TEST(SweepCli, DefinitionFileAndBadAxes) {
         EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv")) << args;
     }
 }
+
+// The example definitions in sweeps/ stay valid: each dry-runs, with the number of combinations and
+// configurations counted here from the JSON (product of the axes; per technique the product of its
+// property value lists; times the rounds).
+TEST(SweepCli, ExampleDefinitionsInSweepsFolderExpandAsCounted) {
+    const std::filesystem::path folder = std::filesystem::path(SB_SOURCE_DIR) / "sweeps";
+    size_t checked = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.path().extension() != ".json") continue;
+        const nlohmann::json j = nlohmann::json::parse(test::readFile(entry.path().string()));
+        size_t combinations = 1;
+        for (const char* axis :
+             {"scenes", "instances", "scale", "tess", "tess_factor", "submit", "camera", "size", "light"})
+            if (j.contains(axis) && j[axis].is_array()) combinations *= j[axis].size();
+        size_t perCombination = 0;
+        for (const auto& t : j["techniques"]) {
+            size_t variants = 1;
+            if (t.is_object() && t.contains("properties"))
+                for (const auto& [key, values] : t["properties"].items())
+                    variants *= values.is_array() ? values.size() : 1;
+            if (t.is_string()) {
+                const std::string spec = t.get<std::string>();
+                for (size_t eq = spec.find('='); eq != std::string::npos; eq = spec.find('=', eq + 1)) {
+                    const std::string value = spec.substr(eq + 1, spec.find(':', eq) - eq - 1);
+                    variants *= size_t(std::count(value.begin(), value.end(), ',')) + 1;
+                }
+            }
+            perCombination += variants;
+        }
+        const size_t rounds = j.value("repeat", 1);
+        const auto r = runCommand(bench("sweep " + entry.path().string() + " --dry-run"));
+        ASSERT_EQ(r.exitCode, 0) << entry.path() << "\n" << r.output;
+        const std::string expected = std::to_string(combinations) + " combinations, " +
+                                     std::to_string(combinations * perCombination * rounds) +
+                                     " configurations";
+        EXPECT_NE(r.output.find(expected), std::string::npos)
+            << entry.path() << ": expected " << expected << "\n"
+            << r.output.substr(0, 300);
+        ++checked;
+    }
+    EXPECT_GE(checked, 2u) << "the examples of the README are in sweeps/";
+}
