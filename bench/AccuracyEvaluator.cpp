@@ -42,6 +42,16 @@ AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness) {
 
 AccuracyEvaluator::~AccuracyEvaluator() = default;
 
+namespace {
+/// Beyond a point or spot light's range no light arrives, so whether a sample "sees" the light does
+/// not change the image: techniques that use the range (shadow volumes' range culling, scissor and
+/// finite volumes) may leave anything there, and such samples are not judged.
+bool withinRange(const Light& light, const glm::vec3& p) {
+    return light.type == LightType::Directional || light.range <= 0.0f ||
+           glm::length(light.position - p) < light.range;
+}
+} // namespace
+
 AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, const AccuracyOptions& o,
                                                         TraceStats* stats) {
     const Scene& scene = mHarness.scene();
@@ -60,7 +70,8 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, co
     for (size_t i = 0; i < g.size(); ++i) {
         if (!g.covered(i)) continue;
         glm::vec3 p(g.position[i]);
-        s.mask[i] = glm::dot(mTracer->normalAt(g, i), towardsLight(light, p)) > o.nDotLThreshold;
+        s.mask[i] = glm::dot(mTracer->normalAt(g, i), towardsLight(light, p)) > o.nDotLThreshold &&
+                    withinRange(light, p);
     }
     return s;
 }

@@ -199,7 +199,10 @@ RunResult Harness::summarize(Technique& technique, std::vector<FrameSample> samp
             continue;
         }
         total.push_back(s.gpuTotalMs);
-        for (const auto& [pass, ms] : s.gpuPassMs) perPass[pass].push_back(ms);
+        // A pass a technique enters several times a frame (once per light) is summed per frame.
+        std::map<std::string, double> frame;
+        for (const auto& [pass, ms] : s.gpuPassMs) frame[pass] += ms;
+        for (const auto& [pass, ms] : frame) perPass[pass].push_back(ms);
     }
     r.cpuSubmit = Statistics::compute(cpu);
     r.wall = Statistics::compute(wall);

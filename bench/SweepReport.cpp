@@ -35,17 +35,18 @@ void SweepReport::printSummary(std::ostream& os, const SweepPlan& plan, const Sw
     os << "sweep '" << plan.name << "' (" << plan.id() << ")";
     if (options.shardCount > 1) os << " shard " << options.shard << "/" << options.shardCount;
     os << ": " << s.planned << " configurations, " << s.ok << " measured, " << s.failed << " failed";
+    if (s.unsupported) os << ", " << s.unsupported << " unsupported here (skipped)";
     if (s.alreadyDone) os << ", " << s.alreadyDone << " done before";
     os << "\n";
     if (s.timer) os << "GPU timer " << s.timer->label() << ": " << s.timer->reason << "\n";
-    if (s.failed) {
+    if (s.failed || s.unsupported) {
         const CsvTable t = shardRows(plan, options);
         const size_t status = column(t, "status"), error = column(t, "error"),
                      index = column(t, "config_index");
         size_t shown = 0;
         for (const auto& row : t.rows) {
             if (status >= row.size() || row[status] == "ok" || shown == kFailuresShown) continue;
-            os << "  failed #" << (index < row.size() ? row[index] : "?") << ": "
+            os << "  " << row[status] << " #" << (index < row.size() ? row[index] : "?") << ": "
                << (error < row.size() ? row[error] : "") << "\n";
             ++shown;
         }

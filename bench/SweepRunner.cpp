@@ -243,6 +243,8 @@ private:
     void recordFailures(const std::vector<PlannedRow>& rows, const Attempt& a) {
         const Environment env = Environment::capture();
         const std::string why = message(a);
+        // Unsupported here (a missing extension) is a skip, not a failure: the context said no.
+        const bool unsupported = a.failure && a.failure->exitCode == int(ExitCode::Unsupported);
         const KeyValues tags = SweepRunner::sweepColumns(mPlan, mGroup, mOptions);
         std::vector<CsvRow> out;
         for (const PlannedRow& r : rows) {
@@ -252,7 +254,7 @@ private:
                 r.technique.size() > spec.name.size() ? r.technique.substr(spec.name.size() + 1) : "";
             CsvRow row{{"timestamp", Environment::nowIso8601()},
                        {"git_commit", env.gitCommit},
-                       {"status", "failed"},
+                       {"status", unsupported ? "unsupported" : "failed"},
                        {"error", why},
                        {"technique", spec.name},
                        {"properties", props},
@@ -263,7 +265,7 @@ private:
                                    {"config_index", std::to_string(r.index)}});
             row.insert(row.end(), tags.begin(), tags.end());
             out.push_back(std::move(row));
-            ++mSummary.failed;
+            ++(unsupported ? mSummary.unsupported : mSummary.failed);
             mBar.finished(label(mGroup, r, mVarying) + ": " + why, false);
         }
         CsvWriter::appendRows(mOptions.csvPath, out);

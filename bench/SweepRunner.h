@@ -30,6 +30,9 @@ struct SweepSummary {
     size_t planned = 0;     ///< configurations of this shard
     size_t alreadyDone = 0; ///< found in the CSV (--resume)
     size_t ok = 0, failed = 0;
+    /// Rows the GL context cannot run (exit code 3: a missing extension): status=unsupported, not a
+    /// failure of the sweep.
+    size_t unsupported = 0;
     bool interrupted = false;
     std::optional<TimerVerdict> timer;
 };

@@ -1,8 +1,11 @@
 #include "scenes/MeshGenerators.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -248,6 +251,124 @@ struct PatchGroup {
 constexpr PatchGroup kTeapotGroups[] = {{"rim", 0, 4},    {"body", 4, 8}, {"handle", 12, 4},
                                         {"spout", 16, 4}, {"lid", 20, 8}, {"bottom", 28, 4}};
 
+// ---- lantern ------------------------------------------------------------------------------------
+
+/// A face hole of the lantern in latitude (degrees above the equator) and longitude (degrees from +Z
+/// towards -X, i.e. phi - 90): rows whose centre latitude is in [latBottom, latTop] remove the cells
+/// whose centre longitude is within halfWidth(lat) of centreLon.
+struct LanternHole {
+    float centreLon, latBottom, latTop;
+    float (*halfWidth)(float lat);
+};
+
+/// Eyes: triangles with the apex up, 28 degrees wide at the base (8 degrees above the equator), 26 high.
+float eyeHalfWidth(float lat) {
+    return 14.0f * (34.0f - lat) / 26.0f;
+}
+/// Mouth: the lower half of an ellipse, flat top 12 degrees below the equator, 96 degrees wide, 28 deep.
+float mouthHalfWidth(float lat) {
+    const float t = (lat + 12.0f) / 28.0f;
+    return 48.0f * std::sqrt(std::max(0.0f, 1.0f - t * t));
+}
+constexpr LanternHole kLanternFaceHoles[] = {{-30.0f, 8.0f, 34.0f, eyeHalfWidth},
+                                             {30.0f, 8.0f, 34.0f, eyeHalfWidth},
+                                             {0.0f, -40.0f, -12.0f, mouthHalfWidth}};
+/// The bottom hole: every cell whose centre lies more than 62 degrees below the equator.
+constexpr float kLanternBottomLat = -62.0f;
+
+/// Hole id (0..3) of every grid cell (rows x segments, row-major), -1 where the shell is kept. Throws if
+/// the tessellation is too coarse for the holes (a hole without cells, two holes sharing a vertex, a
+/// face hole in a pole row).
+std::vector<int> lanternHoles(int rows, int segments) {
+    std::vector<int> hole(size_t(rows) * size_t(segments), -1);
+    auto cell = [&](int r, int c) -> int& { return hole[size_t(r) * size_t(segments) + size_t(c)]; };
+    const float rowDeg = 180.0f / float(rows), colDeg = 360.0f / float(segments);
+    for (int h = 0; h < 3; ++h) {
+        const LanternHole& shape = kLanternFaceHoles[h];
+        // Columns are numbered from phi = 0 (+X); longitude 0 is +Z (phi = 90 degrees).
+        const float centreCol = (shape.centreLon + 90.0f) / colDeg; // in column units, cell j spans [j, j+1)
+        std::vector<int> lo(size_t(rows), 0), hi(size_t(rows), -1); // empty where hi < lo
+        int first = rows, last = -1;
+        for (int r = 0; r < rows; ++r) {
+            const float lat = 90.0f - (float(r) + 0.5f) * rowDeg;
+            if (lat < shape.latBottom || lat > shape.latTop) continue;
+            const float w = shape.halfWidth(lat) / colDeg;
+            // Cells whose centre j + 0.5 lies in [centreCol - w, centreCol + w].
+            lo[size_t(r)] = int(std::ceil(centreCol - w - 0.5f));
+            hi[size_t(r)] = int(std::floor(centreCol + w - 0.5f));
+            if (hi[size_t(r)] < lo[size_t(r)]) continue;
+            first = std::min(first, r);
+            last = std::max(last, r);
+        }
+        const int centreCell = std::clamp(int(std::floor(centreCol)), 0, segments - 1);
+        if (last < 0) { // too coarse for the outline: the cell under its centre
+            const float lat = 0.5f * (shape.latBottom + shape.latTop);
+            first = last = std::clamp(int((90.0f - lat) / rowDeg), 0, rows - 1);
+            lo[size_t(first)] = hi[size_t(first)] = centreCell;
+        }
+        // Row intervals that do not overlap their predecessor (an empty row in between, or a step of
+        // the outline wider than a cell) would leave cells touching only at a corner: widen them, so
+        // the cells are 4-connected without pinches and the hole's border is one simple loop.
+        for (int r = first; r <= last; ++r) {
+            if (hi[size_t(r)] < lo[size_t(r)]) lo[size_t(r)] = hi[size_t(r)] = centreCell;
+            if (r > first) {
+                hi[size_t(r)] = std::max(hi[size_t(r)], lo[size_t(r) - 1]);
+                lo[size_t(r)] = std::min(lo[size_t(r)], hi[size_t(r) - 1]);
+            }
+        }
+        for (int r = first; r <= last; ++r) {
+            if (r == 0 || r == rows - 1 || lo[size_t(r)] < 0 || hi[size_t(r)] >= segments)
+                throw Error("lantern: tessellation " + std::to_string(rows) + " puts a face hole on a pole");
+            for (int c = lo[size_t(r)]; c <= hi[size_t(r)]; ++c) {
+                if (cell(r, c) >= 0)
+                    throw Error("lantern: tessellation " + std::to_string(rows) +
+                                " is too coarse for the holes");
+                cell(r, c) = h;
+            }
+        }
+    }
+    // The bottom hole: whole rows around the pole (the last row, the pole's fan, always qualifies).
+    for (int r = 0; r < rows; ++r)
+        if (90.0f - (float(r) + 0.5f) * rowDeg < kLanternBottomLat || r == rows - 1)
+            for (int c = 0; c < segments; ++c) {
+                if (cell(r, c) >= 0)
+                    throw Error("lantern: tessellation " + std::to_string(rows) +
+                                " is too coarse for the holes");
+                cell(r, c) = 3;
+            }
+    // No two holes may share a vertex: the kept cells between them must form a ring of shell.
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < segments; ++c)
+            for (int dr = -1; dr <= 1; ++dr)
+                for (int dc = -1; dc <= 1; ++dc) {
+                    const int rr = r + dr, cc = (c + dc + segments) % segments;
+                    if (rr < 0 || rr >= rows || cell(r, c) < 0 || cell(rr, cc) < 0) continue;
+                    if (cell(r, c) != cell(rr, cc))
+                        throw Error("lantern: tessellation " + std::to_string(rows) +
+                                    " makes two holes touch");
+                }
+    return hole;
+}
+
+/// Removes the vertices no triangle uses (the grid vertices inside the lantern's holes), keeping the
+/// order of the others.
+void dropUnusedVertices(Mesh& mesh) {
+    constexpr uint32_t kUnused = UINT32_MAX;
+    std::vector<uint32_t> remap(mesh.positions.size(), kUnused);
+    for (uint32_t i : mesh.indices) remap[i] = 0;
+    uint32_t next = 0;
+    for (size_t v = 0; v < remap.size(); ++v) {
+        if (remap[v] == kUnused) continue;
+        remap[v] = next;
+        mesh.positions[next] = mesh.positions[v];
+        mesh.normals[next] = mesh.normals[v];
+        ++next;
+    }
+    mesh.positions.resize(next);
+    mesh.normals.resize(next);
+    for (uint32_t& i : mesh.indices) i = remap[i];
+}
+
 } // namespace
 
 Mesh MeshGenerators::sphere(int tess) {
@@ -366,9 +487,103 @@ Mesh MeshGenerators::teapot(const std::string& bptPath, int tess) {
     return b.finish();
 }
 
+Mesh MeshGenerators::lantern(float thickness, int tess) {
+    requireTessellation("lantern", tess);
+    if (!(thickness > 0.0f && thickness < 1.0f))
+        throw Error("lantern: thickness must be in (0, 1) (the outer radius is 1), got " +
+                    std::to_string(thickness));
+    const int rows = tess, segments = 2 * tess;
+    const std::vector<int> hole = lanternHoles(rows, segments);
+    auto removed = [&](int r, int c) {
+        return hole[size_t(r) * size_t(segments) + size_t(c % segments)] >= 0;
+    };
+    const float innerRadius = 1.0f - thickness;
+    MeshBuilder b("lantern");
+    // The grid of sphere(tess), once at radius 1 (normals outward) and once at the inner radius
+    // (normals towards the centre: out of the solid shell).
+    std::vector<glm::vec3> grid;
+    grid.reserve(size_t(rows + 1) * size_t(segments + 1));
+    for (int i = 0; i <= rows; ++i) {
+        const float theta = glm::pi<float>() * float(i) / float(rows);
+        const float sinT = (i == 0 || i == rows) ? 0.0f : std::sin(theta);
+        const float cosT = i == 0 ? 1.0f : i == rows ? -1.0f : std::cos(theta);
+        for (int j = 0; j <= segments; ++j) {
+            const float phi = segmentAngle(j, segments);
+            grid.emplace_back(sinT * std::cos(phi), cosT, sinT * std::sin(phi));
+        }
+    }
+    const uint32_t outer = b.vertexCount();
+    for (const auto& p : grid) b.addVertex(p, p);
+    const uint32_t inner = b.vertexCount();
+    for (const auto& p : grid) b.addVertex(innerRadius * p, -p);
+    const uint32_t stride = uint32_t(segments + 1);
+    auto at = [&](int i, int j) { return uint32_t(i) * stride + uint32_t(j); };
+
+    b.beginPart("shell");
+    // The kept cells, triangulated as sphere() does (the pole rows as single triangles); the inner
+    // sphere with the reverse winding.
+    for (uint32_t base : {outer, inner}) {
+        for (int i = 0; i < rows; ++i) {
+            for (int j = 0; j < segments; ++j) {
+                if (removed(i, j)) continue;
+                const uint32_t a = base + at(i, j), bb = base + at(i, j + 1), d = base + at(i + 1, j),
+                               e = base + at(i + 1, j + 1);
+                if (base == outer) {
+                    if (i != 0) b.addTriangle(a, bb, e);
+                    if (i != rows - 1) b.addTriangle(a, e, d);
+                } else {
+                    if (i != 0) b.addTriangle(a, e, bb);
+                    if (i != rows - 1) b.addTriangle(a, d, e);
+                }
+            }
+        }
+    }
+
+    b.beginPart("holes");
+    // A kept outer cell runs its border (i,j) -> (i,j+1) -> (i+1,j+1) -> (i+1,j); where it meets a
+    // removed cell along u -> v, the wall quad v, u, u', v' (primes: inner sphere) uses v -> u on the
+    // outer and u' -> v' on the inner sphere, the reverses of the kept cells' edges there, and
+    // consecutive walls share their radial edges oppositely: closed. The quad is planar (u, v and the
+    // centre span it), so one faceted normal fits it.
+    auto wall = [&](int ui, int uj, int vi, int vj) {
+        const glm::vec3 uo = grid[at(ui, uj)], vo = grid[at(vi, vj)];
+        const glm::vec3 ui3 = innerRadius * uo, vi3 = innerRadius * vo;
+        const glm::vec3 n = glm::cross(uo - vo, ui3 - vo);
+        const uint32_t first = b.addVertex(vo, n);
+        b.addVertex(uo, n);
+        b.addVertex(ui3, n);
+        b.addVertex(vi3, n);
+        b.addQuad(first, first + 1, first + 2, first + 3);
+    };
+    // Edges along ring i between cell (i-1, j) above and (i, j) below (the pole rings have none).
+    for (int i = 1; i < rows; ++i)
+        for (int j = 0; j < segments; ++j) {
+            const bool above = removed(i - 1, j), below = removed(i, j);
+            if (above == below) continue;
+            if (above)
+                wall(i, j, i, j + 1); // kept below: its top edge runs (i,j) -> (i,j+1)
+            else
+                wall(i, j + 1, i, j); // kept above: its bottom edge runs (i,j+1) -> (i,j)
+        }
+    // Edges along meridian j between cell (i, j-1) on the left and (i, j) on the right.
+    for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < segments; ++j) {
+            const bool left = removed(i, j + segments - 1), right = removed(i, j);
+            if (left == right) continue;
+            if (left)
+                wall(i + 1, j, i, j); // kept right: its left edge runs (i+1,j) -> (i,j)
+            else
+                wall(i, j, i + 1, j); // kept left: its right edge runs (i,j) -> (i+1,j)
+        }
+    Mesh mesh = b.finish();
+    dropUnusedVertices(mesh);
+    return mesh;
+}
+
 int MeshGenerators::minimumTessellation(const std::string& generator) {
     if (generator == "sphere") return 3;
     if (generator == "cylinder" || generator == "aircraft") return 2;
+    if (generator == "lantern") return 8;
     return 1;
 }
 

@@ -23,7 +23,7 @@ namespace {
 
 constexpr uint32_t kMaxInstances = 1000000;
 constexpr const char* kTeapotResource = "scenes/data/teapot.bpt";
-constexpr const char* kGenerators = "sphere, box, cylinder, plane, aircraft, teapot";
+constexpr const char* kGenerators = "sphere, box, cylinder, plane, aircraft, teapot, lantern";
 
 /// Bytes per retained vertex (position + normal, 2 x vec3) and per-instance bookkeeping (model
 /// matrix, colour, flags, uniforms) used by the memory estimate.
@@ -97,6 +97,21 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
         const std::string path = Paths::findResource(kTeapotResource);
         if (path.empty()) m["generator"].error(std::string("cannot find ") + kTeapotResource);
         return MeshGenerators::teapot(path, tess(8));
+    }
+    if (generator == "lantern") {
+        // "radius" (outer) and "thickness" (the shell's, radius - thickness is the inner radius) in
+        // scene units; the generator builds outer radius 1, so the thickness is divided by the radius.
+        m.requireObject({"name", "generator", "tessellation", "radius", "thickness"});
+        const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
+        const float thickness = m.has("thickness") ? m["thickness"].positiveNumber() : 0.08f;
+        if (!(thickness < radius)) {
+            const std::string r = m.has("radius") ? m["radius"].value().dump() : "1";
+            if (m.has("thickness")) m["thickness"].fail("a thickness below the radius (" + r + ")");
+            m["radius"].fail("a radius above the default thickness 0.08");
+        }
+        Mesh mesh = MeshGenerators::lantern(thickness / radius, tess(16));
+        scaleMesh(mesh, glm::vec3(radius));
+        return mesh;
     }
     m["generator"].fail(std::string("one of ") + kGenerators);
 }

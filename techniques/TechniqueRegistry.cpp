@@ -6,6 +6,7 @@
 #include "techniques/NoneTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
 #include "techniques/SyntheticTechnique.h"
+#include "techniques/VolumeTechnique.h"
 
 namespace sb {
 
@@ -14,6 +15,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
     static const std::vector<Entry> kEntries = {
         {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
         {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
+        {"volume", [] { return std::unique_ptr<Technique>(new VolumeTechnique()); }},
         {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", [] { return std::unique_ptr<Technique>(new SyntheticTechnique()); }},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
@@ -332,4 +333,216 @@ TEST(MeshGeneratorsTest, TessellationOutOfRangeIsAnError) {
     EXPECT_THROW(MeshGenerators::sphere(2), std::runtime_error);
     EXPECT_THROW(MeshGenerators::box(glm::vec3(1), 0), std::runtime_error);
     EXPECT_THROW(MeshGenerators::teapot("/nonexistent/teapot.bpt", 4), std::runtime_error);
+}
+
+namespace {
+
+/// Union-find over vertex representatives, for counting connected pieces.
+struct Components {
+    std::vector<uint32_t> parent;
+    explicit Components(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t find(uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
+};
+
+/// V - E + F of the welded triangles of `r`: V counts the welded vertices the triangles use, E the
+/// undirected welded edges.
+long eulerCharacteristic(const Mesh& m, Range r) {
+    const auto rep = weld(m.positions);
+    std::set<uint32_t> vertices;
+    std::set<std::pair<uint32_t, uint32_t>> edges;
+    for (size_t t = r.firstTriangle; t < r.firstTriangle + r.triangleCount; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = rep[m.indices[3 * t + size_t(k)]],
+                           b = rep[m.indices[3 * t + size_t(k + 1) % 3]];
+            vertices.insert(a);
+            edges.insert({std::min(a, b), std::max(a, b)});
+        }
+    }
+    return long(vertices.size()) - long(edges.size()) + long(r.triangleCount);
+}
+
+/// Signed solid angle of the triangle a, b, c of unit vectors seen from the centre (Van Oosterom and
+/// Strackee 1983): positive when a, b, c run counter-clockwise seen from outside.
+double solidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    return 2.0 *
+           std::atan2(glm::dot(a, glm::cross(b, c)), 1.0 + glm::dot(a, b) + glm::dot(b, c) + glm::dot(c, a));
+}
+
+/// A hole of the lantern as seen on its outer sphere: the loop of tunnel wall edges with both ends at
+/// radius 1, its centre direction and its solid angle (of the spherical polygon of great-circle arcs
+/// that the loop's chords project to).
+struct HoleLoop {
+    glm::dvec3 centre;
+    double omega;
+};
+std::vector<HoleLoop> lanternHoleLoops(const Mesh& m) {
+    const auto rep = weld(m.positions);
+    const Range walls = partRange(m, "holes");
+    std::vector<std::pair<uint32_t, uint32_t>> rim; // directed outer edges of the walls
+    for (size_t t = walls.firstTriangle; t < walls.firstTriangle + walls.triangleCount; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = m.indices[3 * t + size_t(k)], b = m.indices[3 * t + size_t(k + 1) % 3];
+            if (std::abs(glm::length(m.positions[a]) - 1.0f) < 1e-5f &&
+                std::abs(glm::length(m.positions[b]) - 1.0f) < 1e-5f)
+                rim.push_back({rep[a], rep[b]});
+        }
+    }
+    Components pieces(m.vertexCount());
+    for (const auto& [a, b] : rim) pieces.unite(a, b);
+    std::map<uint32_t, std::vector<std::pair<uint32_t, uint32_t>>> loops;
+    for (const auto& e : rim) loops[pieces.find(e.first)].push_back(e);
+    std::vector<HoleLoop> holes;
+    for (const auto& [root, loop] : loops) {
+        glm::dvec3 centre(0.0);
+        for (const auto& [a, b] : loop) centre += glm::dvec3(m.positions[a]);
+        centre = glm::normalize(centre);
+        double omega = 0.0; // fan from the loop's centre direction; the walls run v -> u, around the hole
+        for (const auto& [a, b] : loop)
+            omega += solidAngle(centre, glm::dvec3(m.positions[a]), glm::dvec3(m.positions[b]));
+        holes.push_back({centre, omega});
+    }
+    return holes;
+}
+
+} // namespace
+
+TEST(MeshGeneratorsTest, LanternIsClosedWithFourTunnelsAndGenusThree) {
+    // 8..12 are the tessellations where the holes are one or two cells and could touch; the
+    // generator checks that they do not (and throws), these check the result.
+    for (int tess : {8, 9, 10, 11, 12, 16, 24, 32, 48}) {
+        const Mesh m = MeshGenerators::lantern(0.08f, tess);
+        const std::string what = "lantern " + std::to_string(tess);
+        expectClosed(m, wholeMesh(m), what);
+        EXPECT_EQ(checkNormals(m, what), 0.0);
+        ASSERT_EQ(m.parts.size(), 2u);
+        EXPECT_EQ(m.parts[0].name, "shell");
+        EXPECT_EQ(m.parts[1].name, "holes");
+        EXPECT_EQ(m.parts[0].indexCount + m.parts[1].indexCount, m.indices.size());
+        // The grid vertices inside the holes are dropped: every vertex is used.
+        std::vector<bool> referenced(m.vertexCount(), false);
+        for (uint32_t i : m.indices) referenced[i] = true;
+        EXPECT_EQ(std::count(referenced.begin(), referenced.end(), false), 0) << what;
+        // The tunnel walls form one closed band per hole: four connected pieces.
+        const auto rep = weld(m.positions);
+        const Range walls = partRange(m, "holes");
+        Components pieces(m.vertexCount());
+        std::set<uint32_t> used;
+        for (size_t t = walls.firstTriangle; t < walls.firstTriangle + walls.triangleCount; ++t)
+            for (int k = 0; k < 3; ++k) {
+                pieces.unite(rep[m.indices[3 * t + size_t(k)]], rep[m.indices[3 * t + size_t(k + 1) % 3]]);
+                used.insert(rep[m.indices[3 * t + size_t(k)]]);
+            }
+        std::set<uint32_t> roots;
+        for (uint32_t v : used) roots.insert(pieces.find(v));
+        const long holes = long(roots.size());
+        EXPECT_EQ(holes, 4) << what;
+        // Euler characteristic. The outer and the inner sphere grids are spheres (chi = 2 each). A hole
+        // removes an open disc of cells from each (chi 2 -> 1: the disc's V - E + F is 1) and adds its
+        // wall: b quads along the b border edges of the disc, adding b radial edges, b diagonals and 2b
+        // triangles but no vertex (b - b - b + 2b... i.e. -2b + 2b = 0). So chi = 2 * (2 - h) = 4 - 2h,
+        // which for a connected closed orientable surface is 2 - 2g: genus g = h - 1 = 3 (one hole
+        // turns the shell into a thick bowl, a sphere; each further one adds a handle). Not 2 - 2h: the
+        // brief's formula would count the shell itself as a handle.
+        EXPECT_EQ(eulerCharacteristic(m, wholeMesh(m)), 4 - 2 * holes) << what;
+        EXPECT_EQ(eulerCharacteristic(m, wholeMesh(m)), -4) << what;
+    }
+}
+
+TEST(MeshGeneratorsTest, LanternShellsFaceAwayFromTheSolid) {
+    const float thickness = 0.08f;
+    const Mesh m = MeshGenerators::lantern(thickness, 32);
+    const Range shell = partRange(m, "shell");
+    size_t outer = 0, inner = 0;
+    for (size_t t = shell.firstTriangle; t < shell.firstTriangle + shell.triangleCount; ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        const glm::vec3 g = glm::cross(b - a, c - a), centroid = (a + b + c) / 3.0f;
+        const float radius = glm::length(a);
+        ASSERT_NEAR(glm::length(b), radius, 1e-5f);
+        ASSERT_NEAR(glm::length(c), radius, 1e-5f);
+        if (std::abs(radius - 1.0f) < 1e-5f) {
+            ++outer;
+            EXPECT_GT(glm::dot(g, centroid), 0.0f) << "outer triangle " << t << " faces the centre";
+        } else {
+            EXPECT_NEAR(radius, 1.0f - thickness, 1e-5f);
+            ++inner;
+            EXPECT_LT(glm::dot(g, centroid), 0.0f) << "inner triangle " << t << " faces away from the centre";
+        }
+    }
+    EXPECT_EQ(outer, inner); // the same cells are cut from both
+    EXPECT_GT(outer, 0u);
+    // The tunnel walls are radial: each quad lies in a plane through the centre.
+    const Range walls = partRange(m, "holes");
+    EXPECT_GT(walls.triangleCount, 0u);
+    for (size_t t = walls.firstTriangle; t < walls.firstTriangle + walls.triangleCount; ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+        EXPECT_NEAR(glm::dot(n, glm::normalize(a + b + c)), 0.0f, 1e-4f) << "wall triangle " << t;
+    }
+}
+
+TEST(MeshGeneratorsTest, LanternVolumeIsTheShellLessItsTunnels) {
+    const double pi = glm::pi<double>();
+    const double k = 1.0 - 0.08; // inner radius (the outer one is 1)
+    for (int tess : {16, 32, 64}) {
+        const Mesh m = MeshGenerators::lantern(0.08f, tess);
+        // The tunnels: radial prisms between the two spheres through the holes' border loops; a
+        // solid angle omega of it holds omega * (1 - k^3) / 3.
+        const std::vector<HoleLoop> holes = lanternHoleLoops(m);
+        ASSERT_EQ(holes.size(), 4u);
+        double omegaHoles = 0.0;
+        for (const HoleLoop& h : holes) {
+            EXPECT_GT(h.omega, 0.0) << "tess " << tess; // the loops run around their holes consistently
+            omegaHoles += h.omega;
+        }
+        const double tunnels = omegaHoles * (1.0 - k * k * k) / 3.0;
+        const double ideal = 4.0 / 3.0 * pi * (1.0 - k * k * k) - tunnels;
+        // The mesh is that ideal shell with its spherical surfaces replaced by the chords of the sphere
+        // grid. The walls are planar through the centre, so they add nothing to the divergence sum, and
+        // each outer triangle's tetrahedron to the centre is smaller than the cone of its solid angle
+        // (the triangle lies inside the unit sphere), the inner ones scaled by k. So the mesh loses
+        // (1 - k^3) times the cone-minus-tetrahedron deficits of the kept cells: at most (1 - k^3)
+        // times the deficit of the whole sphere(tess), which shares the grid.
+        const Mesh sphere = MeshGenerators::sphere(tess);
+        const double sphereDeficit = 4.0 / 3.0 * pi - signedVolume(sphere, wholeMesh(sphere));
+        const double v = signedVolume(m, wholeMesh(m));
+        EXPECT_NEAR(signedVolume(m, partRange(m, "holes")), 0.0, 1e-6) << "tess " << tess;
+        EXPECT_LE(v, ideal + 1e-6) << "tess " << tess;
+        EXPECT_GE(v, ideal - (1.0 - k * k * k) * sphereDeficit - 1e-6) << "tess " << tess;
+        // The holes themselves: about 12% of the sphere, the mouth and the eyes on the +Z side, the
+        // bottom one around -Y: the rows whose centres lie more than 62 degrees below the equator, so its
+        // rim is a ring within half a row of 28 degrees from -Y, the polygon of its 2 * tess chords a
+        // little smaller than that ring's cap.
+        EXPECT_GT(omegaHoles, 0.08 * 4.0 * pi) << "tess " << tess;
+        EXPECT_LT(omegaHoles, 0.16 * 4.0 * pi) << "tess " << tess;
+        const double halfRow = 0.5 * pi / tess, cap = 28.0 * pi / 180.0;
+        int front = 0, bottom = 0;
+        for (const HoleLoop& h : holes) {
+            if (h.centre.y < -0.999) {
+                ++bottom;
+                EXPECT_LT(h.omega, 2.0 * pi * (1.0 - std::cos(cap + halfRow))) << "tess " << tess;
+                EXPECT_GT(h.omega, 0.95 * 2.0 * pi * (1.0 - std::cos(cap - halfRow))) << "tess " << tess;
+            } else if (h.centre.z > 0.7) {
+                ++front;
+            }
+        }
+        EXPECT_EQ(bottom, 1) << "tess " << tess;
+        EXPECT_EQ(front, 3) << "tess " << tess;
+    }
+}
+
+TEST(MeshGeneratorsTest, LanternHolesStayApartAtEveryTessellation) {
+    // The generator throws where its holes would touch or miss; from 12 on the gaps between the
+    // outlines (20 degrees of latitude, 32 of longitude) exceed one and two cells, the widening of a
+    // row by a cell included, so checking up to 128 covers every coarse case.
+    for (int tess = MeshGenerators::minimumTessellation("lantern"); tess <= 128; ++tess)
+        EXPECT_NO_THROW(MeshGenerators::lantern(0.08f, tess)) << "tess " << tess;
+    EXPECT_THROW(MeshGenerators::lantern(0.08f, 7), std::runtime_error);
+    EXPECT_THROW(MeshGenerators::lantern(0.0f, 16), std::runtime_error);
+    EXPECT_THROW(MeshGenerators::lantern(1.0f, 16), std::runtime_error);
 }

@@ -120,7 +120,7 @@ TEST(SceneLoaderTest, UnknownGeneratorListsTheValidOnes) {
     std::string json = sceneJson();
     json = replaced(json, "\"sphere\"", "\"spere\"");
     EXPECT_EQ(errorOf(json), "test.json: /meshes/0/generator: expected one of sphere, box, cylinder, plane, "
-                             "aircraft, teapot, got \"spere\"");
+                             "aircraft, teapot, lantern, got \"spere\"");
 }
 
 TEST(SceneLoaderTest, UnknownMeshReferenceIsNamed) {
@@ -296,7 +296,8 @@ TEST(SceneLoaderTest, ContentHashChangesWithContentOnly) {
 
 TEST(SceneLoaderTest, BuiltinScenesLoadWithTheFourCameras) {
     const auto names = SceneLoader::listBuiltinScenes();
-    for (const char* name : {"aircraft", "teapot", "primitives", "sphere_plane"}) {
+    for (const char* name :
+         {"aircraft", "teapot", "primitives", "sphere_plane", "city", "point_light", "jack_o_lantern"}) {
         EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
         const Scene s = SceneLoader::load(name);
         EXPECT_EQ(s.name, name);
@@ -364,4 +365,119 @@ TEST(SceneLoaderTest, OptionsThatNeedALayoutSayWhenThereIsNone) {
     SceneOptions options;
     options.instances = 5;
     EXPECT_THROW(SceneLoader::load("sphere_plane", options), Error);
+}
+
+TEST(SceneLoaderTest, LanternTakesRadiusAndThicknessInSceneUnits) {
+    std::string json = sceneJson();
+    json = replaced(json, "\"generator\": \"sphere\", \"tessellation\": 4",
+                    "\"generator\": \"lantern\", \"radius\": 2, \"thickness\": 0.3, \"tessellation\": 12");
+    const Scene s = SceneLoader::parse(json, "test.json");
+    const Mesh& m = s.meshes[0];
+    float inner = 1e9f, outer = 0.0f;
+    for (const auto& p : m.positions) {
+        inner = std::min(inner, glm::length(p));
+        outer = std::max(outer, glm::length(p));
+    }
+    EXPECT_NEAR(outer, 2.0f, 1e-5f);
+    EXPECT_NEAR(inner, 1.7f, 1e-5f);
+    EXPECT_EQ(m.parts.size(), 2u);
+    // The --tess knob reaches it, clamped to its minimum of 8 by the factor.
+    SceneOptions coarse;
+    coarse.tessellationFactor = 0.1f;
+    EXPECT_NO_THROW(SceneLoader::parse(json, "test.json", coarse));
+    // Errors name the key.
+    EXPECT_TRUE(contains(errorOf(replaced(json, "\"thickness\": 0.3", "\"thickness\": 2")),
+                         "/meshes/0/thickness: expected a thickness below the radius (2), got 2"));
+    EXPECT_TRUE(contains(errorOf(replaced(json, "\"tessellation\": 12", "\"tessellation\": 7")),
+                         "/meshes/0: lantern: tessellation must be in [8, 4096], got 7"));
+    EXPECT_TRUE(
+        contains(errorOf(replaced(json, "\"radius\": 2", "\"size\": 2")), "/meshes/0/size: unknown key"));
+}
+
+namespace {
+const Instance* firstCaster(const Scene& s) {
+    for (const auto& i : s.instances)
+        if (i.castsShadow) return &i;
+    return nullptr;
+}
+} // namespace
+
+TEST(SceneLoaderTest, CityIsATopViewOfBlocksUnderASteepSun) {
+    const Scene s = SceneLoader::load("city");
+    size_t casters = 0;
+    float tallest = 0.0f;
+    for (const auto& inst : s.instances) {
+        if (!inst.castsShadow) continue;
+        ++casters;
+        tallest = std::max(tallest, transformBounds(s.meshes[inst.mesh].computeBounds(), inst.model).max.y);
+    }
+    EXPECT_EQ(casters, 144u);
+    EXPECT_EQ(s.instances.size(), 145u); // and the ground, which does not cast
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    EXPECT_NEAR(glm::dot(s.lights[0].direction, glm::normalize(glm::vec3(0.35f, -1, 0.25f))), 1.0f, 1e-6f);
+    // The chapter's ideal case: every camera above all the blocks, "far" looking steeply down.
+    for (const auto& c : s.cameras) EXPECT_GT(c.eye.y, tallest) << c.name;
+    const CameraPreset& far = *s.findCamera("far");
+    EXPECT_LT(glm::normalize(far.target - far.eye).y, -0.8f);
+}
+
+TEST(SceneLoaderTest, PointLightSceneGivesRangeCullingAndScissoringWork) {
+    const Scene s = SceneLoader::load("point_light");
+    ASSERT_EQ(s.lights.size(), 1u);
+    const Light& light = s.lights[0];
+    EXPECT_EQ(light.type, LightType::Point);
+    ASSERT_GT(light.range, 0.0f);
+    // Casters wholly outside the range (culled by 9.5.2) and casters inside it.
+    size_t outside = 0, inside = 0;
+    for (const auto& inst : s.instances) {
+        if (!inst.castsShadow) continue;
+        const Aabb b = transformBounds(s.meshes[inst.mesh].computeBounds(), inst.model);
+        const glm::vec3 nearest = glm::clamp(light.position, b.min, b.max);
+        (glm::length(nearest - light.position) > light.range ? outside : inside)++;
+    }
+    EXPECT_GE(outside, 10u);
+    EXPECT_GE(inside, 10u);
+    // From "far", the range sphere's screen bounds (its bounding box projected) cover only part of the
+    // screen: the scissor rectangle of 9.6.2 is smaller than the viewport.
+    const CameraPreset& far = *s.findCamera("far");
+    const glm::mat4 vp = cameraProjection(far, 1.0f) * cameraView(far);
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner =
+            light.position + light.range * glm::vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
+        const glm::vec4 p = vp * glm::vec4(corner, 1.0f);
+        ASSERT_GT(p.w, 0.0f);
+        lo = glm::min(lo, glm::vec2(p) / p.w);
+        hi = glm::max(hi, glm::vec2(p) / p.w);
+    }
+    lo = glm::max(lo, glm::vec2(-1.0f));
+    hi = glm::min(hi, glm::vec2(1.0f));
+    EXPECT_LT((hi.x - lo.x) * (hi.y - lo.y) / 4.0f, 0.75f) << "scissor covers the whole screen";
+}
+
+TEST(SceneLoaderTest, JackOLanternHasTheLightInsideTheClosedShell) {
+    const Scene s = SceneLoader::load("jack_o_lantern");
+    const Instance* lantern = firstCaster(s);
+    ASSERT_NE(lantern, nullptr);
+    EXPECT_EQ(s.meshes[lantern->mesh].parts.size(), 2u); // the lantern generator's shell and holes
+    size_t casters = 0;
+    for (const auto& inst : s.instances) casters += inst.castsShadow ? 1 : 0;
+    EXPECT_EQ(casters, 1u); // the ground does not cast
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Point);
+    // The light is at the lantern's centre, well inside its inner sphere.
+    float inner = 1e9f;
+    for (const auto& p : s.meshes[lantern->mesh].positions)
+        inner = std::min(inner, glm::length(p) * lantern->scale);
+    EXPECT_LT(glm::length(s.lights[0].position - lantern->position), 0.5f * inner);
+    // No range, or one that reaches the whole ground.
+    const Aabb ground = s.computeBounds(false);
+    for (int c = 0; c < 4; ++c) {
+        const glm::vec3 corner(c & 1 ? ground.max.x : ground.min.x, 0.0f,
+                               c & 2 ? ground.max.z : ground.min.z);
+        if (s.lights[0].range > 0.0f) {
+            EXPECT_GT(s.lights[0].range, glm::length(corner - s.lights[0].position));
+        }
+    }
 }

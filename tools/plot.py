@@ -10,6 +10,9 @@
   /usr/bin/python3 tools/plot.py bottleneck bn_classes.csv --out bn
       the bottleneck classification: each stage's share of the frame, and the evidence (T/T0 for
       every perturbation).
+  /usr/bin/python3 tools/plot.py bars vol.csv --out vol [--facet scene] [--strip volume:]
+      one bar per configuration (technique_spec, in the order measured; median over rounds), labelled
+      with its speed-up over the first bar of its panel (e.g. every optimisation off).
 Each writes OUT.png and OUT.svg. `bench figures` calls it for every declared figure.
 """
 import argparse
@@ -173,6 +176,36 @@ def bottleneck(args):
     save(fig, args.out, f"{len(df)} classifications")
 
 
+def bars(args):
+    df = ok_rows(pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True))
+    for col in ["technique_spec", args.y] + ([args.facet] if args.facet else []):
+        if col not in df.columns:
+            sys.exit(f"plot.py: {args.csv}: column '{col}' missing")
+    facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
+    fig, axes = plt.subplots(len(facets), 1, figsize=(9, 0.45 * df["technique_spec"].nunique() * len(facets) + 1.5),
+                             dpi=120, squeeze=False)
+    for ax, facet in zip(axes[:, 0], facets):
+        part = df if facet is None else df[df[args.facet] == facet]
+        order = list(dict.fromkeys(part["technique_spec"]))
+        med = part.groupby("technique_spec")[args.y].median().reindex(order)
+        labels = [spec.replace(args.strip, "", 1) if args.strip else spec for spec in order]
+        ax.barh(range(len(order)), med.values, color="#4c72b0")
+        ax.set_yticks(range(len(order)))
+        ax.set_yticklabels(labels, fontsize=7)
+        ax.invert_yaxis()
+        base = med.values[0]
+        for i, v in enumerate(med.values):
+            ax.text(v, i, f"  {v:.1f} ms  ({base / v:.2f}x)", va="center", fontsize=7)
+        ax.set_xlim(0, med.max() * 1.35)
+        ax.set_xlabel(args.ylabel or args.y)
+        ax.grid(True, axis="x", alpha=0.3)
+        if facet is not None:
+            ax.set_title(f"{args.facet} = {facet}", fontsize=9)
+    first = df.iloc[0]
+    fig.suptitle(args.title or f"{args.y} per configuration ({first.get('renderer', '')})", fontsize=10)
+    save(fig, args.out, f"{len(df)} rows")
+
+
 def save(fig, out, what):
     fig.tight_layout()
     for ext in ("png", "svg"):
@@ -204,8 +237,16 @@ def main():
     b.add_argument("csv", nargs=1)
     b.add_argument("--out", required=True)
     b.add_argument("--title", default="")
+    c = sub.add_parser("bars", help="one bar per configuration, speed-up over the first")
+    c.add_argument("csv", nargs="+")
+    c.add_argument("--out", required=True)
+    c.add_argument("--y", default="wall_ms_median")
+    c.add_argument("--ylabel", default="")
+    c.add_argument("--facet", default="", help="one panel per value of this column")
+    c.add_argument("--strip", default="", help="prefix removed from the labels (e.g. volume:)")
+    c.add_argument("--title", default="")
     args = parser.parse_args()
-    {"pareto": pareto, "lines": lines, "bottleneck": bottleneck}[args.kind](args)
+    {"pareto": pareto, "lines": lines, "bottleneck": bottleneck, "bars": bars}[args.kind](args)
 
 
 if __name__ == "__main__":

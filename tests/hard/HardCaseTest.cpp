@@ -72,6 +72,35 @@ const HardCase kCases[] = {
      "light matrices would fix it), bounded here so it cannot get worse unnoticed"},
     {"shadowmap_degenerate_triangle", "degenerate_triangle", "top", "shadowmap", 384, 0.05, 0.01, 3, 4, 3,
      "(0.003%; 1.0/1.5/1.0): a zero-area triangle covers no pixel in map or reference: no effect, no NaN"},
+    // Shadow volumes (issue 5). Exact up to rasterisation, so the bounds are the edge band's few pixels
+    // (sample positions on either side of an exact edge) with headroom; the negative controls show the
+    // failure the chapter describes and the harness must see it.
+    {"volume_camera_inside_zfail", "volume_camera_inside", "inside", "volume:mode=zfail", 384, 0.05, 0.01, 5,
+     5, 5, "the eye inside the sphere's volume: z-fail counts behind the visible point, unaffected"},
+    {"volume_camera_inside_auto", "volume_camera_inside", "inside", "volume", 384, 0.05, 0.01, 5, 5, 5,
+     "auto must see the caster's volume reach the viewport (occlusion pyramid) and pick z-fail"},
+    {"volume_camera_inside_zpass", "volume_camera_inside", "inside", "volume:mode=zpass", 384, 100, 100, 1e9,
+     1e9, 1e9, "negative control: z-pass is off by the one volume enclosing the eye everywhere (100% wrong)",
+     0.05f, 50},
+    {"volume_near_slice_auto", "volume_near_slice", "slice", "volume", 384, 0.05, 0.01, 5, 5, 5,
+     "the near plane cuts the volume: auto falls back to z-fail with caps for that caster"},
+    {"volume_near_slice_zpass", "volume_near_slice", "slice", "volume:mode=zpass", 384, 100, 100, 1e9, 1e9,
+     1e9, "negative control: z-pass loses the volume's part in front of the near plane (86% wrong measured)",
+     0.05f, 20},
+    {"volume_axis_light_all_off", "volume_axis_light", "oblique",
+     "volume:mode=zfail:directional=false:range_cull=false:frustum_cull=false:scissor=false", 384, 0.05, 0.01,
+     5, 5, 5,
+     "light exactly along -Y: box sides have N.L = 0 and classify as light-facing, the volume stays closed"},
+    {"volume_axis_light", "volume_axis_light", "oblique", "volume", 384, 0.05, 0.01, 5, 5, 5,
+     "the same with every optimisation on (directional form: sides converge on one point)"},
+    {"volume_open_mesh_multiplicity", "volume_open_mesh", "top", "volume:open_edges=multiplicity", 384, 0.05,
+     0.01, 5, 5, 5, "the open teapot (128 open edges): per-edge multiplicities give closed volumes, exact"},
+    {"volume_degenerate_triangle", "degenerate_triangle", "top", "volume:open_edges=multiplicity", 384, 0.05,
+     0.01, 5, 5, 5, "a zero-area triangle in an open mesh: zero normal, light-facing, no NaN, no streak"},
+    {"volume_overlap_256", "volume_overlap_256", "under", "volume", 384, 20, 20, 1e9, 1e9, 1e9,
+     "known limit: an 8-bit stencil wraps, so ground under exactly 256 volumes counts 0 and comes out lit "
+     "(6.4% of judged pixels at 256^2); bounded above so it cannot spread, and below so it is seen",
+     0.05f, 1.0},
 };
 
 class HardCases : public ::testing::TestWithParam<HardCase> {};

@@ -1,0 +1,38 @@
+// `volume` shadow-volume geometry (GPU Gems ch. 9, Listing 9-3). Two inputs:
+//  - CPU silhouettes (default): the doubled vertex buffer, (x, y, z, 1) for the object and
+//    (x, y, z, 0) for the copies the shader sends to infinity away from the light;
+//  - VS_EXTRUSION (McGuire and Hughes 2003): every vertex carries the normal of the face it stands
+//    for and is sent to infinity when that face points away from the light, so the silhouette is found
+//    here instead of on the CPU.
+// FINITE (section 9.6.1): extrude by the light's range instead of to infinity.
+#include "common/frame.glsl"
+
+#ifdef VS_EXTRUSION
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aFaceNormal;
+#else
+layout(location = 0) in vec4 aPosition;
+#endif
+layout(location = 0) uniform mat4 uModel;
+layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) or (towards light, 0)
+layout(location = 2) uniform float uRange;       // FINITE: object-space extrusion length
+
+
+vec4 extrude(vec3 p) {
+    vec3 away = p * uLightObject.w - uLightObject.xyz; // from the light through p (Listing 9-3)
+#ifdef FINITE
+    return vec4(p + normalize(away) * uRange, 1.0);
+#else
+    return vec4(away, 0.0);
+#endif
+}
+
+void main() {
+#ifdef VS_EXTRUSION
+    bool back = dot(aFaceNormal, uLightObject.xyz - aPosition * uLightObject.w) < 0.0;
+    vec4 p = back ? extrude(aPosition) : vec4(aPosition, 1.0);
+#else
+    vec4 p = aPosition.w == 0.0 ? extrude(aPosition.xyz) : aPosition;
+#endif
+    gl_Position = uViewProj * (uModel * p);
+}

@@ -1,0 +1,100 @@
+#include "techniques/VolumeMeshBuffers.h"
+
+#include <algorithm>
+
+#include <glm/glm.hpp>
+
+namespace sb {
+
+VolumeMeshBuffers::~VolumeMeshBuffers() {
+    release();
+}
+
+void VolumeMeshBuffers::release() {
+    for (Gpu& g : mMeshes) {
+        glDeleteVertexArrays(1, &g.doubledVao);
+        glDeleteBuffers(1, &g.doubledVbo);
+        glDeleteVertexArrays(1, &g.extrusionVao);
+        glDeleteBuffers(1, &g.extrusionVbo);
+        glDeleteBuffers(1, &g.extrusionIbo);
+    }
+    mMeshes.clear();
+    if (mStream) glDeleteBuffers(1, &mStream);
+    mStream = 0;
+    mStreamCapacity = 0;
+}
+
+namespace {
+
+void uploadDoubled(VolumeMeshBuffers::Gpu& g, GLuint stream) {
+    const std::vector<glm::vec4> vertices = g.mesh->doubledVertices();
+    glCreateVertexArrays(1, &g.doubledVao);
+    glCreateBuffers(1, &g.doubledVbo);
+    glNamedBufferStorage(g.doubledVbo, GLsizeiptr(vertices.size() * sizeof(glm::vec4)), vertices.data(), 0);
+    glVertexArrayVertexBuffer(g.doubledVao, 0, g.doubledVbo, 0, GLsizei(sizeof(glm::vec4)));
+    glEnableVertexArrayAttrib(g.doubledVao, 0);
+    glVertexArrayAttribFormat(g.doubledVao, 0, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(g.doubledVao, 0, 0);
+    glVertexArrayElementBuffer(g.doubledVao, stream);
+}
+
+void uploadExtrusion(VolumeMeshBuffers::Gpu& g) {
+    const ExtrusionMesh m = g.mesh->buildExtrusionMesh();
+    std::vector<glm::vec3> interleaved;
+    interleaved.reserve(m.positions.size() * 2);
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+        interleaved.push_back(m.positions[i]);
+        interleaved.push_back(m.faceNormals[i]);
+    }
+    std::vector<uint32_t> indices = m.capIndices;
+    indices.insert(indices.end(), m.sideIndices.begin(), m.sideIndices.end());
+    glCreateVertexArrays(1, &g.extrusionVao);
+    glCreateBuffers(1, &g.extrusionVbo);
+    glCreateBuffers(1, &g.extrusionIbo);
+    glNamedBufferStorage(g.extrusionVbo,
+                         GLsizeiptr(std::max<size_t>(1, interleaved.size()) * sizeof(glm::vec3)),
+                         interleaved.data(), 0);
+    glNamedBufferStorage(g.extrusionIbo, GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(uint32_t)),
+                         indices.data(), 0);
+    glVertexArrayVertexBuffer(g.extrusionVao, 0, g.extrusionVbo, 0, GLsizei(2 * sizeof(glm::vec3)));
+    glVertexArrayElementBuffer(g.extrusionVao, g.extrusionIbo);
+    for (GLuint a : {0u, 1u}) {
+        glEnableVertexArrayAttrib(g.extrusionVao, a);
+        glVertexArrayAttribFormat(g.extrusionVao, a, 3, GL_FLOAT, GL_FALSE, GLuint(a * sizeof(glm::vec3)));
+        glVertexArrayAttribBinding(g.extrusionVao, a, 0);
+    }
+    g.extrusionCapIndices = GLsizei(m.capIndices.size());
+    g.extrusionSideIndices = GLsizei(m.sideIndices.size());
+}
+
+} // namespace
+
+void VolumeMeshBuffers::upload(const Scene& scene, bool extrusion) {
+    release();
+    glCreateBuffers(1, &mStream);
+    mMeshes.resize(scene.meshes.size());
+    std::vector<bool> casts(scene.meshes.size(), false);
+    for (const Instance& inst : scene.instances)
+        if (inst.castsShadow) casts[inst.mesh] = true;
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        if (!casts[i]) continue;
+        Gpu& g = mMeshes[i];
+        g.mesh = std::make_unique<ShadowVolumeMesh>(scene.meshes[i]);
+        uploadDoubled(g, mStream);
+        if (extrusion) uploadExtrusion(g);
+    }
+}
+
+void VolumeMeshBuffers::streamIndices(const std::vector<uint32_t>& indices) {
+    const size_t bytes = std::max<size_t>(indices.size(), 1) * sizeof(uint32_t);
+    if (bytes > mStreamCapacity) {
+        // Grow geometrically so a frame with a few more silhouette edges does not reallocate.
+        mStreamCapacity = std::max(bytes, mStreamCapacity * 2);
+        glNamedBufferData(mStream, GLsizeiptr(mStreamCapacity), nullptr, GL_STREAM_DRAW);
+    } else {
+        glInvalidateBufferData(mStream); // orphan: no wait on last frame's draws
+    }
+    glNamedBufferSubData(mStream, 0, GLsizeiptr(indices.size() * sizeof(uint32_t)), indices.data());
+}
+
+} // namespace sb

@@ -1,0 +1,407 @@
+#include "techniques/VolumeTechnique.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/Error.h"
+
+namespace sb {
+
+namespace {
+constexpr const char* kMode = "mode";
+constexpr const char* kExtrusion = "extrusion";
+constexpr const char* kFar = "far";
+constexpr const char* kOpenEdges = "open_edges";
+constexpr const char* kDirectional = "directional";
+constexpr const char* kRangeCull = "range_cull";
+constexpr const char* kFrustumCull = "frustum_cull";
+constexpr const char* kScissor = "scissor";
+constexpr const char* kFiniteVolumes = "finite_volumes";
+constexpr const char* kDepthBounds = "depth_bounds";
+// shaders/volume/extrude.vert and light.frag
+constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLightIndexLocation = 12;
+
+PropertyDesc flag(const char* name, const char* def, const char* description) {
+    return {name, PropertyType::Bool, def, 0, 0, {}, description};
+}
+
+glm::vec4 worldLight(const Light& l) {
+    // The chapter's L: the position for point and spot lights, the vector towards a directional one.
+    return l.type == LightType::Directional ? glm::vec4(-glm::normalize(l.direction), 0.0f)
+                                            : glm::vec4(l.position, 1.0f);
+}
+
+Aabb transformBounds(const glm::mat4& m, const Aabb& b) {
+    Aabb out;
+    for (const glm::vec4& c : VolumeGeometry::corners(b)) out.extend(glm::vec3(m * c));
+    return out;
+}
+
+bool finiteFor(const Light& l, bool finiteVolumes) {
+    return finiteVolumes && l.type != LightType::Directional && l.range > 0.0f;
+}
+} // namespace
+
+VolumeTechnique::VolumeTechnique()
+    : Technique(
+          {.name = "volume",
+           .description = "stencil shadow volumes (GPU Gems ch. 9), each optimisation a switch",
+           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                      Effect::MultipleLights,
+           .capabilities = {{"GL 4.5", 4, 5, ""}},
+           .passes = {"ambient", "mark", "lighting"},
+           .properties =
+               {
+                   {kMode,
+                    PropertyType::Enum,
+                    "auto",
+                    0,
+                    0,
+                    {"zfail", "zpass", "auto"},
+                    "stencil counting: z-fail with caps, z-pass without, or per caster (occlusion pyramid)"},
+                   {kExtrusion,
+                    PropertyType::Enum,
+                    "cpu",
+                    0,
+                    0,
+                    {"cpu", "vertex"},
+                    "silhouettes on the CPU per caster (chapter) or in the vertex shader (McGuire-Hughes)"},
+                   {kFar,
+                    PropertyType::Enum,
+                    "infinite",
+                    0,
+                    0,
+                    {"infinite", "depth_clamp", "finite"},
+                    "far plane at infinity, depth clamping, or the camera's (negative control)"},
+                   {kOpenEdges,
+                    PropertyType::Enum,
+                    "refuse",
+                    0,
+                    0,
+                    {"refuse", "multiplicity"},
+                    "casters with open edges: refuse naming the mesh, or count per-edge multiplicities"},
+                   flag(kDirectional, "true",
+                        "directional lights: sides as triangles to one point, no dark cap"),
+                   flag(kRangeCull, "true", "point/spot: casters outside the light's range cast nothing"),
+                   flag(kFrustumCull, "true", "cull light cap, dark cap and sides against the view frustum"),
+                   flag(kScissor, "true", "scissor marking and lighting to the light range's screen bounds"),
+                   flag(kFiniteVolumes, "false",
+                        "point/spot with range: extrude by the range, not to infinity"),
+                   flag(kDepthBounds, "false",
+                        "depth bounds test of the light range (GL_EXT_depth_bounds_test)"),
+               },
+           .quality = {}}) {}
+
+VolumeTechnique::~VolumeTechnique() {
+    for (auto& slot : mQueries)
+        if (slot[0]) glDeleteQueries(GLsizei(slot.size()), slot.data());
+}
+
+glm::mat4 VolumeTechnique::infiniteFrom(const glm::mat4& proj) {
+    // glm::perspective: [2][2] = -(f + n) / (f - n), [3][2] = -2 f n / (f - n), so
+    // n = [3][2] / ([2][2] - 1). Only the depth row changes (Listing 9-2's limit with the epsilon
+    // guard of VolumeGeometry::infinitePerspective); the x and y rows are kept as they are, so a
+    // sub-pixel jitter or off-centre frustum of the camera (the accuracy harness's shifts) survives.
+    const float nearZ = proj[3][2] / (proj[2][2] - 1.0f);
+    const glm::mat4 limit =
+        VolumeGeometry::infinitePerspective(2.0f * std::atan(1.0f / proj[1][1]), 1.0f, nearZ);
+    glm::mat4 out = proj;
+    out[2][2] = limit[2][2];
+    out[3][2] = limit[3][2];
+    return out;
+}
+
+VolumeTechnique::Settings VolumeTechnique::readSettings() const {
+    const PropertySet& p = properties();
+    Settings s;
+    const std::string& mode = p.getEnum(kMode);
+    s.mode = mode == "zfail" ? Mode::ZFail : mode == "zpass" ? Mode::ZPass : Mode::Auto;
+    const std::string& far = p.getEnum(kFar);
+    s.far = far == "depth_clamp" ? Far::DepthClamp : far == "finite" ? Far::Finite : Far::Infinite;
+    s.vertexExtrusion = p.getEnum(kExtrusion) == "vertex";
+    s.policy =
+        p.getEnum(kOpenEdges) == "multiplicity" ? OpenEdgePolicy::Multiplicity : OpenEdgePolicy::Closed;
+    s.directional = p.getBool(kDirectional);
+    s.rangeCull = p.getBool(kRangeCull);
+    s.frustumCull = p.getBool(kFrustumCull);
+    s.scissor = p.getBool(kScissor);
+    s.finiteVolumes = p.getBool(kFiniteVolumes);
+    s.depthBounds = p.getBool(kDepthBounds);
+    return s;
+}
+
+void VolumeTechnique::checkClosed(const Scene& scene) const {
+    if (mSettings.policy != OpenEdgePolicy::Closed) return;
+    for (size_t m = 0; m < mBuffers.size(); ++m) {
+        const ShadowVolumeMesh* mesh = mBuffers.mesh(m).mesh.get();
+        if (!mesh || mesh->closed()) continue;
+        throw Error("volume: caster mesh '" + scene.meshes[m].name + "' has " +
+                        std::to_string(mesh->openEdgeCount()) +
+                        " open edges after welding (shadow volumes of open meshes leak streaks, GPU Gems "
+                        "9.1.1); use -t volume:open_edges=multiplicity, or make the instance not cast",
+                    ExitCode::Unsupported);
+    }
+}
+
+void VolumeTechnique::setScene(const Scene& scene) {
+    mSettings = readSettings();
+    mScene = &scene;
+    mBuffers.upload(scene, mSettings.vertexExtrusion);
+    checkClosed(scene);
+    mCasters.clear();
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        if (!inst.castsShadow) continue;
+        Caster c;
+        c.instance = i;
+        c.mesh = inst.mesh;
+        c.model = inst.model;
+        c.inverseModel = glm::inverse(inst.model);
+        c.bounds = transformBounds(inst.model, scene.meshes[inst.mesh].computeBounds());
+        c.scale = inst.scale;
+        mCasters.push_back(c);
+    }
+    // Draw order inside a light: by mesh, so the VAO changes once per mesh.
+    std::stable_sort(mCasters.begin(), mCasters.end(),
+                     [](const Caster& a, const Caster& b) { return a.mesh < b.mesh; });
+}
+
+void VolumeTechnique::compile(const CompileContext& ctx) {
+    mSettings = readSettings();
+    mHasDepthBounds = ctx.context.hasExtension("GL_EXT_depth_bounds_test");
+    if (mSettings.depthBounds && !mHasDepthBounds)
+        throw Error("volume: depth_bounds needs GL_EXT_depth_bounds_test, which '" + ctx.context.renderer +
+                        "' does not expose: unsupported here, skipped (run without depth_bounds=true)",
+                    ExitCode::Unsupported);
+    Defines scene = ctx.submitter.defines();
+    mAmbientProgram = &ctx.programs.get({"common/scene.vert", "volume/ambient.frag", ""}, scene);
+    mLightProgram = &ctx.programs.get({"common/scene.vert", "volume/light.frag", ""}, scene);
+    Defines volume;
+    if (mSettings.vertexExtrusion) volume["VS_EXTRUSION"] = "";
+    mVolumeProgram = &ctx.programs.get({"volume/extrude.vert", "volume/stencil.frag", ""}, volume);
+    volume["FINITE"] = "";
+    mFiniteProgram = mSettings.finiteVolumes
+                         ? &ctx.programs.get({"volume/extrude.vert", "volume/stencil.frag", ""}, volume)
+                         : nullptr;
+    std::string key = mAmbientProgram->key() + "|" + mLightProgram->key() + "|" + mVolumeProgram->key();
+    if (mFiniteProgram) key += "|" + mFiniteProgram->key();
+    setPermutationKey(key);
+    if (!mFrameUniforms) mFrameUniforms = std::make_unique<FrameUniforms>();
+    if (!mQueries[0][0])
+        for (auto& slot : mQueries) glGenQueries(GLsizei(slot.size()), slot.data());
+}
+
+void VolumeTechnique::renderAmbient(FrameContext& ctx) {
+    // Listing 9-1's ambient + emissive pass: depth written once; the light passes only add.
+    mAmbientProgram->use();
+    ctx.submitter.draw(DrawSet::All);
+}
+
+void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameStats& stats) {
+    mDraws.clear();
+    mStream.clear();
+    const glm::vec4 lw = worldLight(light);
+    const bool finite = finiteFor(light, mSettings.finiteVolumes);
+    for (const Caster& c : mCasters) {
+        if (mSettings.rangeCull && !VolumeGeometry::lightReaches(light, c.bounds)) {
+            ++stats.rangeCulled;
+            continue;
+        }
+        Draw d;
+        d.caster = &c;
+        d.lightObject = c.inverseModel * lw;
+        d.zfail =
+            mSettings.mode == Mode::ZFail ||
+            (mSettings.mode == Mode::Auto && VolumeGeometry::mayShadowViewport(view.nearRect, lw, c.bounds));
+        VolumeGeometry::CapCull cull;
+        if (mSettings.frustumCull) cull = VolumeGeometry::cullVolume(view.frustum, c.bounds, lw);
+        if (finite) cull.darkCap = false; // the finite dark cap is near the caster, not at infinity
+        const VolumeMeshBuffers::Gpu& gpu = mBuffers.mesh(c.mesh);
+        if (mSettings.vertexExtrusion) {
+            // Light and dark caps are the same triangles here (the shader decides which each is).
+            const bool caps = d.zfail && !(cull.lightCap && cull.darkCap);
+            d.capCount = caps ? gpu.extrusionCapIndices : 0;
+            d.sideCount = cull.sides ? 0 : gpu.extrusionSideIndices;
+            if (d.capCount + d.sideCount == 0) continue;
+            stats.volumeTriangles += double(d.capCount + d.sideCount) / 3.0;
+        } else {
+            VolumeRequest r;
+            r.light = d.lightObject;
+            r.caps = d.zfail;
+            r.lightCap = !cull.lightCap;
+            r.darkCap = !cull.darkCap;
+            r.sides = !cull.sides;
+            r.directionalForm = mSettings.directional && lw.w == 0.0f;
+            r.policy = mSettings.policy;
+            gpu.mesh->buildVolume(r, mVolume);
+            d.first = GLint(mStream.size());
+            for (const auto* part : {&mVolume.lightCap, &mVolume.darkCap, &mVolume.sides})
+                mStream.insert(mStream.end(), part->begin(), part->end());
+            d.count = GLsizei(mStream.size()) - d.first;
+            if (d.count == 0) continue;
+            stats.silhouetteEdges += mVolume.silhouetteEdges;
+            stats.volumeTriangles += double(d.count) / 3.0;
+        }
+        if (d.zfail) stats.capsCulled += double(cull.lightCap) + double(cull.darkCap);
+        (d.zfail ? stats.zfail : stats.zpass) += 1;
+        mDraws.push_back(d);
+    }
+    // z-fail casters first, then z-pass: one change of the stencil operations per light.
+    std::stable_partition(mDraws.begin(), mDraws.end(), [](const Draw& d) { return d.zfail; });
+    if (!mSettings.vertexExtrusion) mBuffers.streamIndices(mStream);
+}
+
+void VolumeTechnique::setStencilCounting(bool zfail) const {
+    if (zfail) {
+        // Listing 9-4: count intersections behind the visible point (depth test fails).
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    } else {
+        // Section 9.5.4: count towards the viewer (depth test passes); no caps needed.
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    }
+}
+
+void VolumeTechnique::markShadows(int lightIndex) {
+    const Light& light = mScene->lights[size_t(lightIndex)];
+    glStencilMask(0xff);
+    glClear(GL_STENCIL_BUFFER_BIT); // inside the scissor rectangle when scissoring
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    // LESS: the light cap lies on the caster's lit surface at the same depth and must count as behind
+    // it in z-fail (the point just under that surface is inside the volume); same vertex arithmetic as
+    // the ambient pass, so the depths are equal, not merely close.
+    glDepthFunc(GL_LESS);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    const Program* program = finiteFor(light, mSettings.finiteVolumes) ? mFiniteProgram : mVolumeProgram;
+    program->use();
+    const GLuint query = mQueries[mQueryFrame % 2][size_t(lightIndex)];
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    int counting = -1;
+    uint32_t boundMesh = UINT32_MAX;
+    for (const Draw& d : mDraws) {
+        if (int(d.zfail) != counting) setStencilCounting(d.zfail), counting = int(d.zfail);
+        const VolumeMeshBuffers::Gpu& gpu = mBuffers.mesh(d.caster->mesh);
+        if (d.caster->mesh != boundMesh) {
+            glBindVertexArray(mSettings.vertexExtrusion ? gpu.extrusionVao : gpu.doubledVao);
+            boundMesh = d.caster->mesh;
+        }
+        glUniformMatrix4fv(kModelLocation, 1, GL_FALSE, glm::value_ptr(d.caster->model));
+        glUniform4fv(kLightLocation, 1, glm::value_ptr(d.lightObject));
+        if (program == mFiniteProgram) glUniform1f(kRangeLocation, light.range / d.caster->scale);
+        if (!mSettings.vertexExtrusion) {
+            glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(size_t(d.first) * sizeof(uint32_t)));
+            continue;
+        }
+        if (d.capCount) glDrawElements(GL_TRIANGLES, d.capCount, GL_UNSIGNED_INT, nullptr);
+        if (d.sideCount)
+            glDrawElements(GL_TRIANGLES, d.sideCount, GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(size_t(gpu.extrusionCapIndices) * sizeof(uint32_t)));
+    }
+    glEndQuery(GL_SAMPLES_PASSED);
+    mQueriesIssued[mQueryFrame % 2] = std::max(mQueriesIssued[mQueryFrame % 2], lightIndex + 1);
+    glBindVertexArray(0);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void VolumeTechnique::renderLight(FrameContext& ctx, int lightIndex) {
+    // Listing 9-1's light pass: add this light where the stencil count is 0, on the surfaces the
+    // ambient pass left in the depth buffer.
+    glDepthFunc(GL_EQUAL);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    // Visibility by MAX, not ADD: coincident triangles (a mesh's duplicated seams) pass depth EQUAL
+    // twice and would count a light twice; the colour keeps the chapter's additive blend.
+    glBlendEquationi(1, GL_MAX);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    mLightProgram->use();
+    glUniform1i(kLightIndexLocation, lightIndex);
+    ctx.submitter.draw(DrawSet::All);
+    glBlendEquationi(1, GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+}
+
+void VolumeTechnique::readStencilQuery() {
+    // This slot's queries were issued two frames ago; read them if the GPU has them, never wait.
+    const size_t slot = mQueryFrame % 2;
+    double sum = 0;
+    for (int i = 0; i < mQueriesIssued[slot]; ++i) {
+        GLuint available = 0;
+        glGetQueryObjectuiv(mQueries[slot][size_t(i)], GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) return;
+        GLuint64 samples = 0;
+        glGetQueryObjectui64v(mQueries[slot][size_t(i)], GL_QUERY_RESULT, &samples);
+        sum += double(samples);
+    }
+    if (mQueriesIssued[slot]) mStencilSamples = sum;
+    mQueriesIssued[slot] = 0;
+}
+
+void VolumeTechnique::execute(FrameContext& ctx) {
+    ctx.submitter.resetStats();
+    View view;
+    const glm::mat4 proj = mSettings.far == Far::Infinite ? infiniteFrom(ctx.proj) : ctx.proj;
+    view.viewProj = proj * ctx.view;
+    view.frustum = VolumeGeometry::frustumPlanes(view.viewProj);
+    view.nearRect = VolumeGeometry::nearRectangle(view.viewProj);
+    view.width = ctx.targets.width();
+    view.height = ctx.targets.height();
+    // The scene passes must use the same projection as the volumes: this technique's own frame block.
+    mFrameUniforms->upload(FrameUniforms::compute(*mScene, ctx.view, proj, ctx.eye));
+    if (mSettings.far == Far::DepthClamp) glEnable(GL_DEPTH_CLAMP);
+
+    ctx.passes.begin("ambient");
+    renderAmbient(ctx);
+    readStencilQuery();
+    FrameStats stats;
+    const int lights = std::min<int>(int(mScene->lights.size()), kMaxLights);
+    for (int i = 0; i < lights; ++i) {
+        const Light& light = mScene->lights[size_t(i)];
+        if (mSettings.scissor) {
+            const std::optional<glm::ivec4> r =
+                VolumeGeometry::scissorRect(light, view.viewProj, view.width, view.height);
+            if (!r) continue; // the light's range is off screen: it adds nothing to this frame
+            glScissor(r->x, r->y, r->z, r->w);
+            glEnable(GL_SCISSOR_TEST);
+        }
+        std::optional<glm::vec2> bounds;
+        if (mSettings.depthBounds && mHasDepthBounds)
+            bounds = VolumeGeometry::depthBounds(light, ctx.view, proj);
+        if (bounds) {
+            glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
+            glDepthBoundsEXT(bounds->x, bounds->y);
+        }
+        ctx.passes.begin("mark");
+        collectDraws(light, view, stats);
+        markShadows(i);
+        ctx.passes.begin("lighting");
+        renderLight(ctx, i);
+        glDisable(GL_SCISSOR_TEST);
+        if (bounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
+    }
+    ++mQueryFrame;
+    glDisable(GL_DEPTH_CLAMP);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+
+    const SubmitStats& s = ctx.submitter.stats();
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"volume_triangles", stats.volumeTriangles},
+                 {"casters_zfail", stats.zfail},
+                 {"casters_zpass", stats.zpass},
+                 {"casters_range_culled", stats.rangeCulled},
+                 {"caps_culled", stats.capsCulled},
+                 {"stencil_samples_passed", mStencilSamples}};
+    // The vertex-shader path finds silhouettes on the GPU: there is no count to report.
+    if (!mSettings.vertexExtrusion) mCounters.emplace_back("silhouette_edges", stats.silhouetteEdges);
+}
+
+} // namespace sb

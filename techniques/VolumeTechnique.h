@@ -1,0 +1,127 @@
+#pragma once
+// `volume`: stencil shadow volumes as in McGuire, "Efficient Shadow Volume Rendering" (GPU Gems
+// ch. 9), with each of the chapter's optimisations a property that can be switched off to measure it.
+//
+// Program structure (Listing 9-1): an ambient pass writes depth and the ambient colour; then per light
+// the stencil is cleared, every caster's shadow volume is counted into it with two-sided wrapping
+// increment/decrement (colour and depth writes off), and the light's diffuse term is added where the
+// count is 0 (depth EQUAL, blend ONE, ONE). The visibility target gets 1 in light i's channel where
+// that light pass drew.
+//
+// Volumes (sections 9.2-9.3): light cap (light-facing faces), dark cap (the others sent to infinity
+// through w = 0) and sides extruded from silhouette edges, from the CPU per caster and light
+// (extrusion=cpu, the chapter's method) or found and extruded in the vertex shader from a mesh with a
+// degenerate quad per edge (extrusion=vertex, McGuire and Hughes 2003). The far plane is at infinity
+// (Listing 9-2 with an epsilon guard) or replaced by depth clamping (far=depth_clamp); far=finite keeps
+// the camera's far plane: a negative control where z-fail loses volumes clipped by it.
+//
+// Optimisations (properties): mode=auto (z-pass without caps for casters whose volume cannot reach the
+// viewport, section 9.5.4; else z-fail), directional (sides as triangles to one point, no dark cap,
+// 9.5.1), range_cull (point/spot casters outside the light's range mark nothing, 9.5.2), frustum_cull
+// (caps and sides culled separately, 9.5.3), scissor (the light's range rectangle, 9.6.2),
+// finite_volumes (extrude by the light's range, 9.6.1), depth_bounds (9.6.3; needs
+// GL_EXT_depth_bounds_test, which llvmpipe does not expose: the run is skipped as unsupported there).
+//
+// Casters must be closed (every edge two faces, after welding). open_edges=refuse names the mesh and
+// its open edge count; open_edges=multiplicity counts every face as a double-sided occluder with per-
+// edge multiplicities, which is exact for open meshes too (see ShadowVolumeMesh.h).
+#include <array>
+#include <memory>
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "techniques/FrameUniforms.h"
+#include "techniques/ShadowVolumeMesh.h"
+#include "techniques/Technique.h"
+#include "techniques/VolumeGeometry.h"
+#include "techniques/VolumeMeshBuffers.h"
+
+namespace sb {
+
+class VolumeTechnique final : public Technique {
+public:
+    VolumeTechnique();
+    ~VolumeTechnique() override;
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+    /// The camera projection with its far plane moved to infinity (Listing 9-2 plus the epsilon guard),
+    /// from a glm::perspective-style matrix. Public for tests.
+    static glm::mat4 infiniteFrom(const glm::mat4& proj);
+
+private:
+    enum class Mode { ZFail, ZPass, Auto };
+    enum class Far { Infinite, DepthClamp, Finite };
+    struct Settings {
+        Mode mode = Mode::Auto;
+        Far far = Far::Infinite;
+        bool vertexExtrusion = false, directional = true, rangeCull = true, frustumCull = true,
+             scissor = true, finiteVolumes = false, depthBounds = false;
+        OpenEdgePolicy policy = OpenEdgePolicy::Closed;
+    };
+    struct Caster {
+        uint32_t instance = 0, mesh = 0;
+        glm::mat4 model{1.0f}, inverseModel{1.0f};
+        Aabb bounds; ///< world space
+        float scale = 1.0f;
+    };
+    /// One caster's draw for the current light.
+    struct Draw {
+        const Caster* caster = nullptr;
+        glm::vec4 lightObject{0.0f};
+        GLint first = 0;       ///< CPU path: into the stream buffer; vertex path: into the static IBO
+        GLsizei count = 0;     ///< CPU path: all of its volume
+        GLsizei capCount = 0;  ///< vertex path: caps drawn (0 or all)
+        GLsizei sideCount = 0; ///< vertex path
+        bool zfail = true;
+    };
+    struct FrameStats {
+        double silhouetteEdges = 0, volumeTriangles = 0, rangeCulled = 0, capsCulled = 0, zpass = 0,
+               zfail = 0;
+    };
+    struct View {
+        glm::mat4 viewProj{1.0f};
+        std::array<Plane, 5> frustum{};
+        std::array<glm::vec3, 4> nearRect{};
+        int width = 0, height = 0;
+    };
+
+    Settings readSettings() const;
+    void checkClosed(const Scene& scene) const;
+    void renderAmbient(FrameContext& ctx);
+    /// Builds the draws of light `i` (CPU silhouettes streamed into one buffer) and counts them.
+    void collectDraws(const Light& light, const View& view, FrameStats& stats);
+    void markShadows(int light);
+    void renderLight(FrameContext& ctx, int light);
+    void setStencilCounting(bool zfail) const;
+    void readStencilQuery();
+
+    Settings mSettings;
+    const Scene* mScene = nullptr;
+    std::vector<Caster> mCasters;
+    VolumeMeshBuffers mBuffers;
+    std::unique_ptr<FrameUniforms> mFrameUniforms; ///< created in compile(): needs a context
+    const Program* mAmbientProgram = nullptr;
+    const Program* mLightProgram = nullptr;
+    const Program* mVolumeProgram = nullptr;
+    const Program* mFiniteProgram = nullptr; ///< finite_volumes: extrusion by the light range
+    bool mHasDepthBounds = false;
+
+    // Per-frame scratch, kept to avoid allocation in the measured frames.
+    std::vector<Draw> mDraws;
+    std::vector<uint32_t> mStream;
+    VolumeIndices mVolume;
+
+    // GL_SAMPLES_PASSED of the marking passes, read one frame late so the frame never waits on it.
+    std::array<std::array<GLuint, kMaxLights>, 2> mQueries{};
+    std::array<int, 2> mQueriesIssued{}; ///< lights queried in each slot's frame
+    uint64_t mQueryFrame = 0;
+    double mStencilSamples = 0;
+    Counters mCounters;
+};
+
+} // namespace sb
