@@ -1,5 +1,7 @@
 #include "bench/BottleneckStudy.h"
 
+#include "bench/TextColumns.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -144,16 +146,13 @@ struct Collected {
 const char* kIdentity[] = {"scene",  "instances", "scale",  "tessellation", "tess_factor", "submit",
                            "camera", "width",     "height", "lights",       "renderer"};
 
+/// Missing evidence (a failed run) prints as "-".
 std::string fmt(const char* f, double v) {
-    if (!std::isfinite(v)) return "-";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
+    return std::isfinite(v) ? formatNumber(f, v) : "-";
 }
 
 std::string pad(std::string s, size_t w) {
-    if (s.size() < w) s.append(w - s.size(), ' ');
-    return s;
+    return padRight(std::move(s), w);
 }
 
 const char* shortName(const std::string& perturbation) {

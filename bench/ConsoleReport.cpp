@@ -1,4 +1,6 @@
 #include "bench/ConsoleReport.h"
+
+#include "bench/TextColumns.h"
 #include "scenes/Strings.h"
 
 #include <cstdio>
@@ -12,14 +14,11 @@ namespace sb {
 
 namespace {
 std::string fmt(const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
+    return formatNumber(f, v);
 }
 
 std::string pad(std::string s, size_t w) {
-    if (s.size() < w) s.append(w - s.size(), ' ');
-    return s;
+    return padRight(std::move(s), w);
 }
 
 std::string effectsText(EffectMask m) {
