@@ -19,7 +19,9 @@
 // - "description": free text, ignored. Files may contain // comments.
 // - meshes: exactly one of "generator" or "file". Generator parameters (each generator accepts only
 //   its own): sphere "radius" (1), box "half_extent" ([1,1,1]), cylinder "radius" (1), "height" (2),
-//   plane "size" (100); "tessellation" defaults: sphere/cylinder/aircraft/plane 16, teapot 8, box 1.
+//   plane "size" (100), lantern "radius" (1), "thickness" (0.08) (a closed shell with four holes cut
+//   through, the jack-o'-lantern of GPU Gems 9); "tessellation" defaults: sphere/cylinder/aircraft/
+//   plane/lantern 16, teapot 8, box 1.
 //   SceneOptions::tessellation replaces it for every generator but the plane (the ground receiver), and
 //   SceneOptions::tessellationFactor then multiplies it (rounded, clamped to the generator minimum).
 // - instances: "mesh" (required), "position", "rotation" (Euler degrees), "scale", "color",

@@ -332,39 +332,86 @@ void ShadowVolumeMesh::buildVolume(const VolumeRequest& request, VolumeIndices& 
     }
 }
 
-ExtrusionMesh ShadowVolumeMesh::buildExtrusionMesh() const {
+namespace {
+
+/// Appends the McGuire-Hughes quad of one matched pair of half-edges: face A traverses p -> q, face B
+/// q -> p. Vertices [q, p] carry A's plane and [p, q] B's: off the silhouette both pairs move together
+/// and the quad stays degenerate; on it one pair goes to infinity and the quad opens into Listing
+/// 9-7's side (with A back: (q', p', p, q), the cycle of the side (p, q, q', p')).
+void pushEdgeQuad(ExtrusionMesh& m, const glm::vec3& p, const glm::vec3& q, const glm::vec4& planeA,
+                  const glm::vec4& planeB) {
+    const uint32_t first = uint32_t(m.positions.size());
+    for (const glm::vec3& v : {q, p}) m.positions.push_back(v), m.facePlanes.push_back(planeA);
+    for (const glm::vec3& v : {p, q}) m.positions.push_back(v), m.facePlanes.push_back(planeB);
+    pushTriangle(m.sideIndices, first, first + 1, first + 2);
+    pushTriangle(m.sideIndices, first, first + 2, first + 3);
+}
+
+} // namespace
+
+glm::vec4 ShadowVolumeMesh::facePlane(size_t f) const {
+    const glm::vec3& n = mFaceNormals[f];
+    return {n, glm::dot(n, mPositions[mFaces[3 * f]])};
+}
+
+bool ShadowVolumeMesh::pairedInMesh(size_t face, size_t k) const {
+    const uint32_t fe = mFaceEdges[3 * face + k];
+    const Edge& e = mEdges[fe & ~kReversed];
+    // A face traversing v0 -> v1 is matched when it is the edge's face0 and a face1 exists, and the
+    // other way round; open edges and the extra faces of a non-manifold edge are unmatched.
+    return (fe & kReversed) ? (e.face1 == face && e.face0 != kNoFace)
+                            : (e.face0 == face && e.face1 != kNoFace);
+}
+
+ExtrusionMesh ShadowVolumeMesh::buildExtrusionMesh(OpenEdgePolicy policy) const {
     // McGuire and Hughes (2003): the shader extrudes a vertex iff the face it belongs to is light-back,
-    // so each face needs its own 3 vertices (light cap or dark cap), and each edge a quad of two
-    // vertex pairs carrying the two faces' normals. Off the silhouette both pairs move together and the
-    // quad stays degenerate; on it one pair goes to infinity and the quad opens into Listing 9-7's side.
+    // so each face needs its own 3 vertices (light cap or dark cap), and each edge a quad of two vertex
+    // pairs carrying the two faces' planes. The classification uses the face plane (N, dot(N, P0)),
+    // identical in every vertex of the face, so the vertices of one face can never disagree (per-vertex
+    // dot(N, L - P) would, in float, when the light grazes the face: cracks).
+    //
+    // An open mesh under Multiplicity becomes a two-sheet closed surface: every face plus its twin
+    // (reversed winding, negated plane), exactly one of which faces the light. Matched edges get a quad
+    // on each sheet, every unmatched half-edge a quad between the face and its own twin, which is
+    // always a silhouette: the crack's side. That is the thin solid the CPU's multiplicity volume
+    // describes (count 2 behind a wall, like it), at twice the caps and sides of the closed path.
+    const bool twoSheets = policy == OpenEdgePolicy::Multiplicity && !closed();
+    const size_t sheets = twoSheets ? 2 : 1;
     ExtrusionMesh m;
-    size_t closedEdges = 0;
-    for (const Edge& e : mEdges) closedEdges += e.face0 != kNoFace && e.face1 != kNoFace;
-    m.positions.reserve(3 * faceCount() + 4 * closedEdges);
-    m.faceNormals.reserve(m.positions.capacity());
-    m.capIndices.reserve(3 * faceCount());
-    m.sideIndices.reserve(6 * closedEdges);
-    for (size_t f = 0; f < faceCount(); ++f) {
-        for (int k = 0; k < 3; ++k) {
-            m.capIndices.push_back(uint32_t(m.positions.size()));
-            m.positions.push_back(mPositions[mFaces[3 * f + size_t(k)]]);
-            m.faceNormals.push_back(mFaceNormals[f]);
+    m.twoSheets = twoSheets;
+    size_t matched = 0;
+    for (const Edge& e : mEdges) matched += e.face0 != kNoFace && e.face1 != kNoFace;
+    const size_t unmatched = twoSheets ? 3 * faceCount() - 2 * matched : 0;
+    const size_t quads = sheets * matched + unmatched;
+    m.positions.reserve(3 * sheets * faceCount() + 4 * quads);
+    m.facePlanes.reserve(m.positions.capacity());
+    m.capIndices.reserve(3 * sheets * faceCount());
+    m.sideIndices.reserve(6 * quads);
+    for (size_t sheet = 0; sheet < sheets; ++sheet)
+        for (size_t f = 0; f < faceCount(); ++f) {
+            const glm::vec4 plane = sheet ? -facePlane(f) : facePlane(f);
+            const size_t order[2][3] = {{0, 1, 2}, {0, 2, 1}};
+            for (size_t k : order[sheet]) {
+                m.capIndices.push_back(uint32_t(m.positions.size()));
+                m.positions.push_back(mPositions[mFaces[3 * f + k]]);
+                m.facePlanes.push_back(plane);
+            }
         }
-    }
     for (const Edge& e : mEdges) {
         if (e.face0 == kNoFace || e.face1 == kNoFace) continue;
-        const uint32_t first = uint32_t(m.positions.size());
-        // [v1, v0] of face0 then [v0, v1] of face1: with face0 back this is (v1', v0', v0, v1), the
-        // cycle of Listing 9-7's quad (v0, v1, v1', v0'); with face1 back, (v1, v0, v0', v1').
-        const uint32_t vertices[4] = {e.v1, e.v0, e.v0, e.v1};
-        const uint32_t faces[4] = {e.face0, e.face0, e.face1, e.face1};
-        for (int k = 0; k < 4; ++k) {
-            m.positions.push_back(mPositions[vertices[k]]);
-            m.faceNormals.push_back(mFaceNormals[faces[k]]);
-        }
-        pushTriangle(m.sideIndices, first, first + 1, first + 2);
-        pushTriangle(m.sideIndices, first, first + 2, first + 3);
+        const glm::vec3 &p = mPositions[e.v0], &q = mPositions[e.v1];
+        pushEdgeQuad(m, p, q, facePlane(e.face0), facePlane(e.face1));
+        // The twins: face1's twin traverses v0 -> v1, face0's v1 -> v0.
+        if (twoSheets) pushEdgeQuad(m, p, q, -facePlane(e.face1), -facePlane(e.face0));
     }
+    if (twoSheets)
+        for (size_t f = 0; f < faceCount(); ++f)
+            for (size_t k = 0; k < 3; ++k) {
+                if (pairedInMesh(f, k)) continue;
+                const glm::vec3& p = mPositions[mFaces[3 * f + k]];
+                const glm::vec3& q = mPositions[mFaces[3 * f + (k + 1) % 3]];
+                pushEdgeQuad(m, p, q, facePlane(f), -facePlane(f));
+            }
     return m;
 }
 

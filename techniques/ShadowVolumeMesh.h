@@ -62,16 +62,19 @@ struct VolumeRequest {
     OpenEdgePolicy policy = OpenEdgePolicy::Closed;
 };
 
-/// The McGuire-Hughes extrusion mesh: every vertex carries the normal of the face it stands for
-/// (attribute `faceNormal`), and the vertex shader sends it to infinity when that face points away
-/// from the light. Each face is emitted with its three vertices (light cap when lit, dark cap when
-/// not) and each edge as a degenerate quad [v1(face0), v0(face0), v0(face1), v1(face1)] that opens
-/// into a side exactly when the edge is a silhouette. Open edges (one face) get no quad.
+/// The McGuire-Hughes extrusion mesh: every vertex carries the plane of the face it stands for
+/// (attribute `facePlane`: unnormalised N and dot(N, P0)), and the vertex shader sends it to infinity
+/// when dot(N, L.xyz) - L.w * plane.w < 0 (Listing 9-5 in plane form). Each face is emitted with its
+/// three vertices (light cap when lit, dark cap when not) and each edge as a degenerate quad
+/// [v1(face0), v0(face0), v0(face1), v1(face1)] that opens into a side exactly when the edge is a
+/// silhouette. Under OpenEdgePolicy::Closed open edges get no quad; under Multiplicity an open mesh is
+/// emitted as two sheets (see buildExtrusionMesh).
 struct ExtrusionMesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> faceNormals; ///< unnormalised, per vertex: the normal of its face
-    std::vector<uint32_t> capIndices;   ///< 3 per face
-    std::vector<uint32_t> sideIndices;  ///< 6 per closed edge (two triangles of the quad)
+    std::vector<glm::vec4> facePlanes; ///< per vertex: (N, dot(N, P0)) of its face, N unnormalised
+    std::vector<uint32_t> capIndices;  ///< 3 per face and sheet
+    std::vector<uint32_t> sideIndices; ///< 6 per quad
+    bool twoSheets = false;            ///< the open-mesh form: every face and its reversed twin
 };
 
 class ShadowVolumeMesh {
@@ -103,8 +106,12 @@ public:
     /// The volume of this mesh for one light (Listings 9-6, 9-7 and section 9.5.1). Reuses `out`'s
     /// storage: no allocation per frame once the vectors have grown.
     void buildVolume(const VolumeRequest& request, VolumeIndices& out) const;
-    /// The precomputed mesh for vertex-shader extrusion (McGuire and Hughes 2003).
-    ExtrusionMesh buildExtrusionMesh() const;
+    /// The precomputed mesh for vertex-shader extrusion (McGuire and Hughes 2003). Multiplicity on a
+    /// mesh with open edges adds the reversed twin of every face, so that the surface is closed and
+    /// every crack gets its side (the vertex-shader counterpart of buildVolume's multiplicity).
+    ExtrusionMesh buildExtrusionMesh(OpenEdgePolicy policy = OpenEdgePolicy::Closed) const;
+    /// (N, dot(N, P0)) of face f.
+    glm::vec4 facePlane(size_t f) const;
 
     struct Edge {
         uint32_t v0 = 0, v1 = 0; ///< v0 < v1 for edges without a face0 (then face1 is the one face)
@@ -121,6 +128,9 @@ public:
     static constexpr uint32_t kReversed = 0x80000000u;
 
 private:
+    /// Whether the k-th directed edge of `face` has a partner of the opposite direction in edges().
+    bool pairedInMesh(size_t face, size_t k) const;
+
     std::string mName;
     std::vector<glm::vec3> mPositions;
     std::vector<uint32_t> mFaces;

@@ -38,13 +38,14 @@ void uploadDoubled(VolumeMeshBuffers::Gpu& g, GLuint stream) {
     glVertexArrayElementBuffer(g.doubledVao, stream);
 }
 
-void uploadExtrusion(VolumeMeshBuffers::Gpu& g) {
-    const ExtrusionMesh m = g.mesh->buildExtrusionMesh();
-    std::vector<glm::vec3> interleaved;
+void uploadExtrusion(VolumeMeshBuffers::Gpu& g, OpenEdgePolicy policy) {
+    const ExtrusionMesh m = g.mesh->buildExtrusionMesh(policy);
+    // Interleaved (x, y, z, 1) position and (N, dot(N, P0)) plane: 32 bytes, two aligned vec4 loads.
+    std::vector<glm::vec4> interleaved;
     interleaved.reserve(m.positions.size() * 2);
     for (size_t i = 0; i < m.positions.size(); ++i) {
-        interleaved.push_back(m.positions[i]);
-        interleaved.push_back(m.faceNormals[i]);
+        interleaved.push_back(glm::vec4(m.positions[i], 1.0f));
+        interleaved.push_back(m.facePlanes[i]);
     }
     std::vector<uint32_t> indices = m.capIndices;
     indices.insert(indices.end(), m.sideIndices.begin(), m.sideIndices.end());
@@ -52,15 +53,16 @@ void uploadExtrusion(VolumeMeshBuffers::Gpu& g) {
     glCreateBuffers(1, &g.extrusionVbo);
     glCreateBuffers(1, &g.extrusionIbo);
     glNamedBufferStorage(g.extrusionVbo,
-                         GLsizeiptr(std::max<size_t>(1, interleaved.size()) * sizeof(glm::vec3)),
+                         GLsizeiptr(std::max<size_t>(1, interleaved.size()) * sizeof(glm::vec4)),
                          interleaved.data(), 0);
     glNamedBufferStorage(g.extrusionIbo, GLsizeiptr(std::max<size_t>(1, indices.size()) * sizeof(uint32_t)),
                          indices.data(), 0);
-    glVertexArrayVertexBuffer(g.extrusionVao, 0, g.extrusionVbo, 0, GLsizei(2 * sizeof(glm::vec3)));
+    glVertexArrayVertexBuffer(g.extrusionVao, 0, g.extrusionVbo, 0, GLsizei(2 * sizeof(glm::vec4)));
     glVertexArrayElementBuffer(g.extrusionVao, g.extrusionIbo);
     for (GLuint a : {0u, 1u}) {
         glEnableVertexArrayAttrib(g.extrusionVao, a);
-        glVertexArrayAttribFormat(g.extrusionVao, a, 3, GL_FLOAT, GL_FALSE, GLuint(a * sizeof(glm::vec3)));
+        glVertexArrayAttribFormat(g.extrusionVao, a, a == 0 ? 3 : 4, GL_FLOAT, GL_FALSE,
+                                  GLuint(a * sizeof(glm::vec4)));
         glVertexArrayAttribBinding(g.extrusionVao, a, 0);
     }
     g.extrusionCapIndices = GLsizei(m.capIndices.size());
@@ -69,7 +71,7 @@ void uploadExtrusion(VolumeMeshBuffers::Gpu& g) {
 
 } // namespace
 
-void VolumeMeshBuffers::upload(const Scene& scene, bool extrusion) {
+void VolumeMeshBuffers::upload(const Scene& scene, bool extrusion, OpenEdgePolicy policy) {
     release();
     glCreateBuffers(1, &mStream);
     mMeshes.resize(scene.meshes.size());
@@ -81,7 +83,7 @@ void VolumeMeshBuffers::upload(const Scene& scene, bool extrusion) {
         Gpu& g = mMeshes[i];
         g.mesh = std::make_unique<ShadowVolumeMesh>(scene.meshes[i]);
         uploadDoubled(g, mStream);
-        if (extrusion) uploadExtrusion(g);
+        if (extrusion) uploadExtrusion(g, policy);
     }
 }
 

@@ -2,7 +2,7 @@
 // GPU side of `volume`'s casters, built once per scene (untimed): per caster mesh its
 // ShadowVolumeMesh (welded, with adjacency), the doubled vertex buffer (w = 1 and w = 0 copies) in a
 // VAO whose element buffer is one shared stream buffer that the CPU path refills every frame, and the
-// McGuire-Hughes extrusion mesh (positions + face normals, caps then sides in a static index buffer)
+// McGuire-Hughes extrusion mesh (positions + face planes, caps then sides in a static index buffer)
 // for the vertex-shader path.
 #include <memory>
 #include <vector>
@@ -28,8 +28,9 @@ public:
     VolumeMeshBuffers(const VolumeMeshBuffers&) = delete;
     VolumeMeshBuffers& operator=(const VolumeMeshBuffers&) = delete;
 
-    /// Prepares every mesh a shadow-casting instance uses. `extrusion`: also the vertex-shader mesh.
-    void upload(const Scene& scene, bool extrusion);
+    /// Prepares every mesh a shadow-casting instance uses. `extrusion`: also the vertex-shader mesh,
+    /// built for `policy` (two sheets for open meshes under multiplicity).
+    void upload(const Scene& scene, bool extrusion, OpenEdgePolicy policy);
     const Gpu& mesh(size_t index) const { return mMeshes[index]; }
     size_t size() const { return mMeshes.size(); }
 

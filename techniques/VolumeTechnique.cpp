@@ -148,7 +148,7 @@ void VolumeTechnique::checkClosed(const Scene& scene) const {
 void VolumeTechnique::setScene(const Scene& scene) {
     mSettings = readSettings();
     mScene = &scene;
-    mBuffers.upload(scene, mSettings.vertexExtrusion);
+    mBuffers.upload(scene, mSettings.vertexExtrusion, mSettings.policy);
     checkClosed(scene);
     mCasters.clear();
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {

@@ -24,7 +24,8 @@
 //
 // Casters must be closed (every edge two faces, after welding). open_edges=refuse names the mesh and
 // its open edge count; open_edges=multiplicity counts every face as a double-sided occluder with per-
-// edge multiplicities, which is exact for open meshes too (see ShadowVolumeMesh.h).
+// edge multiplicities, which is exact for open meshes too (see ShadowVolumeMesh.h); the vertex path
+// gets the same volume from a two-sheet extrusion mesh (every face and its reversed twin).
 #include <array>
 #include <memory>
 #include <vector>

@@ -211,6 +211,7 @@ TEST(ShadowVolumeMeshTest, SingleTriangleHasThreeOpenEdgesInTheChaptersConventio
     EXPECT_EQ(m.openEdgeCount(), 3u);
     // Unnormalised normal: cross((2,0,0), (0,3,0)) = (0, 0, 6), twice the area along +z.
     EXPECT_EQ(m.faceNormals()[0], glm::vec3(0.0f, 0.0f, 6.0f));
+    EXPECT_EQ(m.facePlane(0), glm::vec4(0.0f, 0.0f, 6.0f, 0.0f));
     const auto& e = m.edges();
     const auto& fe = m.faceEdges();
     ASSERT_EQ(fe.size(), 3u);
@@ -540,28 +541,33 @@ glm::vec4 extrude(const glm::vec3& p, const glm::vec4& light) {
     return glm::vec4(p * light.w - glm::vec3(light), 0.0f);
 }
 
+/// The VS_EXTRUSION vertex shader on the CPU: vertex i of `x` in homogeneous object space.
+Hom shadeExtrusion(const ExtrusionMesh& x, uint32_t i, const glm::vec4& light) {
+    const glm::vec4& plane = x.facePlanes[i];
+    const bool back = glm::dot(glm::vec3(plane), glm::vec3(light)) - light.w * plane.w < 0.0f;
+    return hom(back ? extrude(x.positions[i], light) : glm::vec4(x.positions[i], 1.0f));
+}
+
 } // namespace
 
 TEST(ShadowVolumeMeshTest, ExtrusionMeshInTheVertexShaderReproducesTheClosedVolume) {
-    // The shader (VS_EXTRUSION) simulated on the CPU: a vertex goes to infinity iff
-    // dot(faceNormal, L.xyz - P L.w) < 0 for its own position. Side triangles that open must be
-    // exactly buildVolume's Closed sides (same homogeneous vertices, same winding: the two paths
-    // compute the same float expressions), the others must collapse (two identical vertices: zero
-    // area); caps must be Closed's light cap plus dark cap.
+    // The shader (VS_EXTRUSION) simulated on the CPU: a vertex goes to infinity iff its face's plane
+    // (N, d) has dot(N, L.xyz) - L.w d < 0. Side triangles that open must be exactly buildVolume's
+    // Closed sides (same homogeneous vertices, same winding; the lights are in general position, so
+    // the plane form and Listing 9-5's dot(N, L - P0 L.w) classify alike despite rounding), the
+    // others must collapse (two identical vertices: zero area); caps must be Closed's light cap plus
+    // dark cap.
     for (const auto& [name, mesh] : closedMeshes()) {
         const ShadowVolumeMesh m(mesh);
         const ExtrusionMesh x = m.buildExtrusionMesh();
-        ASSERT_EQ(x.positions.size(), x.faceNormals.size());
+        ASSERT_EQ(x.positions.size(), x.facePlanes.size());
+        EXPECT_FALSE(x.twoSheets);
         EXPECT_EQ(x.capIndices.size(), 3 * m.faceCount());
         EXPECT_EQ(x.sideIndices.size(), 6 * m.edgeCount()); // closed: every edge has both faces
         EXPECT_EQ(x.positions.size(), 3 * m.faceCount() + 4 * m.edgeCount());
         const uint32_t n = m.vertexCount();
         for (const glm::vec4& light : kLights) {
-            auto shade = [&](uint32_t i) {
-                const bool back =
-                    glm::dot(x.faceNormals[i], glm::vec3(light) - x.positions[i] * light.w) < 0.0f;
-                return hom(back ? extrude(x.positions[i], light) : glm::vec4(x.positions[i], 1.0f));
-            };
+            auto shade = [&](uint32_t i) { return shadeExtrusion(x, i, light); };
             auto doubled = [&](uint32_t i) {
                 return hom(i < n ? glm::vec4(m.positions()[i], 1.0f) : extrude(m.positions()[i - n], light));
             };
@@ -607,13 +613,94 @@ TEST(ShadowVolumeMeshTest, ExtrusionMeshInTheVertexShaderReproducesTheClosedVolu
     }
 }
 
-TEST(ShadowVolumeMeshTest, ExtrusionMeshSkipsOpenEdges) {
+TEST(ShadowVolumeMeshTest, ExtrusionMeshSkipsOpenEdgesUnderClosed) {
     const ShadowVolumeMesh m(triangleMesh({{0, 0, 0}, {2, 0, 0}, {0, 3, 0}}, {0, 1, 2}));
-    const ExtrusionMesh x = m.buildExtrusionMesh();
+    const ExtrusionMesh x = m.buildExtrusionMesh(OpenEdgePolicy::Closed);
     EXPECT_EQ(x.positions.size(), 3u);
     EXPECT_EQ(x.capIndices, (std::vector<uint32_t>{0, 1, 2}));
     EXPECT_TRUE(x.sideIndices.empty());
-    EXPECT_EQ(x.faceNormals[2], glm::vec3(0.0f, 0.0f, 6.0f));
+    // N = (2,0,0) x (0,3,0) = (0,0,6); the plane passes through the origin.
+    EXPECT_EQ(x.facePlanes[2], glm::vec4(0.0f, 0.0f, 6.0f, 0.0f));
+}
+
+TEST(ShadowVolumeMeshTest, ExtrusionMeshVerticesOfOneFaceCarryOnePlane) {
+    // The shader's classification reads only the plane and the light: the vertices of a face (and of
+    // each half of an edge quad) must carry the same plane, or a grazing light could split a face.
+    const ShadowVolumeMesh m(MeshGenerators::aircraft(8));
+    const ExtrusionMesh x = m.buildExtrusionMesh();
+    for (size_t t = 0; t < x.capIndices.size(); t += 3) {
+        ASSERT_EQ(x.facePlanes[x.capIndices[t]], x.facePlanes[x.capIndices[t + 1]]);
+        ASSERT_EQ(x.facePlanes[x.capIndices[t]], x.facePlanes[x.capIndices[t + 2]]);
+    }
+    // The plane offset is dot(N, P) for every vertex of the face, up to float rounding relative to
+    // |N| |P| (the mesh spans a few units).
+    for (size_t i = 0; i < x.positions.size(); ++i) {
+        const glm::vec3 n(x.facePlanes[i]);
+        const float scale = glm::length(n) * std::max(1.0f, glm::length(x.positions[i]));
+        EXPECT_NEAR(glm::dot(n, x.positions[i]), x.facePlanes[i].w, 1e-5f * scale) << i;
+    }
+}
+
+TEST(ShadowVolumeMeshTest, TwoSheetExtrusionClosesOpenMeshesLikeMultiplicity) {
+    // Multiplicity on an open mesh: the vertex-shader volume, as the shader would place its vertices,
+    // must be a closed oriented surface (every directed edge between homogeneous points matched by its
+    // reverse) for the teapot (cracks, pole fans) and a lone triangle, under every test light; the
+    // lone triangle's must be exactly the CPU multiplicity volume (hand-checked in
+    // MultiplicityOnOneTriangleMatchesTheHandBuiltVolume).
+    const ShadowVolumeMesh pot(teapot());
+    const ShadowVolumeMesh tri(triangleMesh({{0, 0, 0}, {2, 0, 0}, {0, 3, 0}}, {0, 1, 2}));
+    for (const ShadowVolumeMesh* m : {&pot, &tri}) {
+        const ExtrusionMesh x = m->buildExtrusionMesh(OpenEdgePolicy::Multiplicity);
+        EXPECT_TRUE(x.twoSheets);
+        EXPECT_EQ(x.capIndices.size(), 6 * m->faceCount());
+        for (const glm::vec4& light : kLights) {
+            std::map<std::pair<Hom, Hom>, int> balance;
+            size_t openSides = 0;
+            for (const auto* list : {&x.capIndices, &x.sideIndices})
+                for (size_t t = 0; t < list->size(); t += 3) {
+                    const Hom v[3] = {shadeExtrusion(x, (*list)[t], light),
+                                      shadeExtrusion(x, (*list)[t + 1], light),
+                                      shadeExtrusion(x, (*list)[t + 2], light)};
+                    if (list == &x.sideIndices && v[0] != v[1] && v[1] != v[2] && v[2] != v[0]) ++openSides;
+                    for (size_t k = 0; k < 3; ++k) {
+                        const Hom &a = v[k], &b = v[(k + 1) % 3];
+                        if (a < b)
+                            ++balance[{a, b}];
+                        else if (b < a)
+                            --balance[{b, a}];
+                    }
+                }
+            const size_t unbalanced = size_t(
+                std::count_if(balance.begin(), balance.end(), [](const auto& e) { return e.second != 0; }));
+            EXPECT_EQ(unbalanced, 0u) << m->name() << " light " << (&light - kLights);
+            EXPECT_GT(openSides, 0u) << m->name();
+        }
+    }
+    // The lone triangle lit from above by a point light: one light cap, one dark cap, and each of
+    // the three edges opens into a quad (two triangles), as buildVolume's multiplicity sides.
+    const ExtrusionMesh x = tri.buildExtrusionMesh(OpenEdgePolicy::Multiplicity);
+    const glm::vec4 light(0.5f, 0.5f, 4.0f, 1.0f);
+    VolumeRequest r;
+    r.light = light;
+    r.policy = OpenEdgePolicy::Multiplicity;
+    VolumeIndices v;
+    tri.buildVolume(r, v);
+    auto doubled = [&](uint32_t i) {
+        return hom(i < 3 ? glm::vec4(tri.positions()[i], 1.0f) : extrude(tri.positions()[i - 3], light));
+    };
+    std::vector<std::array<Hom, 3>> gpu, cpu;
+    for (const auto* list : {&x.capIndices, &x.sideIndices})
+        for (size_t t = 0; t < list->size(); t += 3) {
+            const Hom a = shadeExtrusion(x, (*list)[t], light), b = shadeExtrusion(x, (*list)[t + 1], light),
+                      c = shadeExtrusion(x, (*list)[t + 2], light);
+            if (a != b && b != c && c != a) gpu.push_back(canonical(a, b, c));
+        }
+    for (const auto* list : {&v.lightCap, &v.darkCap, &v.sides})
+        for (size_t t = 0; t < list->size(); t += 3)
+            cpu.push_back(canonical(doubled((*list)[t]), doubled((*list)[t + 1]), doubled((*list)[t + 2])));
+    std::sort(gpu.begin(), gpu.end());
+    std::sort(cpu.begin(), cpu.end());
+    EXPECT_EQ(gpu, cpu);
 }
 
 TEST(ShadowVolumeMeshTest, NonFinitePositionIsAnError) {

@@ -1,15 +1,16 @@
 // `volume` shadow-volume geometry (GPU Gems ch. 9, Listing 9-3). Two inputs:
 //  - CPU silhouettes (default): the doubled vertex buffer, (x, y, z, 1) for the object and
 //    (x, y, z, 0) for the copies the shader sends to infinity away from the light;
-//  - VS_EXTRUSION (McGuire and Hughes 2003): every vertex carries the normal of the face it stands
-//    for and is sent to infinity when that face points away from the light, so the silhouette is found
-//    here instead of on the CPU.
+//  - VS_EXTRUSION (McGuire and Hughes 2003): every vertex carries the plane (N, dot(N, P0)) of the
+//    face it stands for and is sent to infinity when that face points away from the light, so the
+//    silhouette is found here instead of on the CPU. The test uses the plane, not this vertex's
+//    position: all vertices of a face get the same inputs and agree even when the light grazes it.
 // FINITE (section 9.6.1): extrude by the light's range instead of to infinity.
 #include "common/frame.glsl"
 
 #ifdef VS_EXTRUSION
 layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aFaceNormal;
+layout(location = 1) in vec4 aFacePlane;
 #else
 layout(location = 0) in vec4 aPosition;
 #endif
@@ -29,7 +30,8 @@ vec4 extrude(vec3 p) {
 
 void main() {
 #ifdef VS_EXTRUSION
-    bool back = dot(aFaceNormal, uLightObject.xyz - aPosition * uLightObject.w) < 0.0;
+    // Listing 9-5 in plane form: dot(N, L.xyz - P0 L.w) = dot(N, L.xyz) - L.w dot(N, P0).
+    bool back = dot(aFacePlane.xyz, uLightObject.xyz) - uLightObject.w * aFacePlane.w < 0.0;
     vec4 p = back ? extrude(aPosition) : vec4(aPosition, 1.0);
 #else
     vec4 p = aPosition.w == 0.0 ? extrude(aPosition.xyz) : aPosition;
