@@ -238,4 +238,19 @@ std::optional<glm::vec2> VolumeGeometry::depthBounds(const Light& light, const g
     return glm::vec2(zMin, std::max(zMin, zMax));
 }
 
+float VolumeGeometry::boundedExtrusion(const Aabb& scene, const Aabb& caster, const glm::vec3& dir,
+                                       float margin) {
+    float length = std::numeric_limits<float>::max();
+    for (int i = 0; i < 3; ++i) {
+        if (dir[i] == 0.0f) continue; // never leaves through this slab
+        // (bound - X_i) / dir_i is largest at the caster corner farthest back along dir.
+        const float bound = dir[i] > 0.0f ? scene.max[i] : scene.min[i];
+        const float from = dir[i] > 0.0f ? caster.min[i] : caster.max[i];
+        length = std::min(length, (bound - from) / dir[i]);
+    }
+    if (length == std::numeric_limits<float>::max()) return 0.0f;
+    // Plus 1e-4 of the scene's size, so a caster resting on the receiver still gets a volume.
+    return std::max(length, 0.0f) * (1.0f + margin) + 1e-4f * glm::length(scene.extent());
+}
+
 } // namespace sb

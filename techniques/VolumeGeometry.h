@@ -62,6 +62,17 @@ struct VolumeGeometry {
     /// range 0 reach everything.
     static bool lightReaches(const Light& light, const Aabb& worldBounds);
 
+    /// Past section 9.6.1 (finite volumes, there for ranged point lights): a directional light's volume
+    /// need only reach past the scene. The extrusion length D along the unit direction `dir` (the
+    /// way the light travels) such that extruding the caster by D keeps every point of its infinite
+    /// volume that lies in `scene`: with X in the caster's box and P = X + t dir inside the convex
+    /// scene box, t is at most the ray's exit distance min_i (bound_i - X_i) / dir_i, and each term is
+    /// affine in X, so min_i max_corners bounds it. The dark cap then lies beyond every receiver.
+    /// `margin` (relative, plus 1e-4 of the scene's diagonal) keeps that cap off receivers lying
+    /// exactly on the box. 0 if dir is zero.
+    static float boundedExtrusion(const Aabb& scene, const Aabb& caster, const glm::vec3& dir,
+                                  float margin = 0.01f);
+
     /// Section 9.6.2: pixel rectangle {x, y, width, height} covering the light's range cube (centre
     /// light.position, half extent light.range) clipped to the near plane and projected with
     /// `viewProj` onto a viewport of `width` x `height`; nullopt when the cube is entirely outside the

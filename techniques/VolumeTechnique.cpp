@@ -19,6 +19,7 @@ constexpr const char* kRangeCull = "range_cull";
 constexpr const char* kFrustumCull = "frustum_cull";
 constexpr const char* kScissor = "scissor";
 constexpr const char* kFiniteVolumes = "finite_volumes";
+constexpr const char* kBoundedVolumes = "bounded_volumes";
 constexpr const char* kDepthBounds = "depth_bounds";
 // shaders/volume/extrude.vert and light.frag
 constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLightIndexLocation = 12;
@@ -39,7 +40,7 @@ Aabb transformBounds(const glm::mat4& m, const Aabb& b) {
     return out;
 }
 
-bool finiteFor(const Light& l, bool finiteVolumes) {
+bool rangedFinite(const Light& l, bool finiteVolumes) {
     return finiteVolumes && l.type != LightType::Directional && l.range > 0.0f;
 }
 } // namespace
@@ -89,6 +90,8 @@ VolumeTechnique::VolumeTechnique()
                    flag(kScissor, "true", "scissor marking and lighting to the light range's screen bounds"),
                    flag(kFiniteVolumes, "false",
                         "point/spot with range: extrude by the range, not to infinity"),
+                   flag(kBoundedVolumes, "true",
+                        "directional: extrude only past the scene's bounds, not to infinity (beyond 9.6.1)"),
                    flag(kDepthBounds, "false",
                         "depth bounds test of the light range (GL_EXT_depth_bounds_test)"),
                },
@@ -113,6 +116,10 @@ glm::mat4 VolumeTechnique::infiniteFrom(const glm::mat4& proj) {
     return out;
 }
 
+bool VolumeTechnique::boundedFor(const Light& light) const {
+    return mSettings.boundedVolumes && light.type == LightType::Directional && !mSceneBounds.empty();
+}
+
 VolumeTechnique::Settings VolumeTechnique::readSettings() const {
     const PropertySet& p = properties();
     Settings s;
@@ -128,6 +135,7 @@ VolumeTechnique::Settings VolumeTechnique::readSettings() const {
     s.frustumCull = p.getBool(kFrustumCull);
     s.scissor = p.getBool(kScissor);
     s.finiteVolumes = p.getBool(kFiniteVolumes);
+    s.boundedVolumes = p.getBool(kBoundedVolumes);
     s.depthBounds = p.getBool(kDepthBounds);
     return s;
 }
@@ -151,15 +159,20 @@ void VolumeTechnique::setScene(const Scene& scene) {
     mBuffers.upload(scene, mSettings.vertexExtrusion, mSettings.policy);
     checkClosed(scene);
     mCasters.clear();
+    mSceneBounds = Aabb{};
+    std::vector<Aabb> meshBounds(scene.meshes.size());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) meshBounds[m] = scene.meshes[m].computeBounds();
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
+        const Aabb bounds = transformBounds(inst.model, meshBounds[inst.mesh]);
+        mSceneBounds.extend(bounds);
         if (!inst.castsShadow) continue;
         Caster c;
         c.instance = i;
         c.mesh = inst.mesh;
         c.model = inst.model;
         c.inverseModel = glm::inverse(inst.model);
-        c.bounds = transformBounds(inst.model, scene.meshes[inst.mesh].computeBounds());
+        c.bounds = bounds;
         c.scale = inst.scale;
         mCasters.push_back(c);
     }
@@ -182,7 +195,7 @@ void VolumeTechnique::compile(const CompileContext& ctx) {
     if (mSettings.vertexExtrusion) volume["VS_EXTRUSION"] = "";
     mVolumeProgram = &ctx.programs.get({"volume/extrude.vert", "volume/stencil.frag", ""}, volume);
     volume["FINITE"] = "";
-    mFiniteProgram = mSettings.finiteVolumes
+    mFiniteProgram = mSettings.finiteVolumes || mSettings.boundedVolumes
                          ? &ctx.programs.get({"volume/extrude.vert", "volume/stencil.frag", ""}, volume)
                          : nullptr;
     std::string key = mAmbientProgram->key() + "|" + mLightProgram->key() + "|" + mVolumeProgram->key();
@@ -203,7 +216,8 @@ void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameSt
     mDraws.clear();
     mStream.clear();
     const glm::vec4 lw = worldLight(light);
-    const bool finite = finiteFor(light, mSettings.finiteVolumes);
+    const bool bounded = boundedFor(light);
+    const bool finite = bounded || rangedFinite(light, mSettings.finiteVolumes);
     for (const Caster& c : mCasters) {
         if (mSettings.rangeCull && !VolumeGeometry::lightReaches(light, c.bounds)) {
             ++stats.rangeCulled;
@@ -212,12 +226,15 @@ void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameSt
         Draw d;
         d.caster = &c;
         d.lightObject = c.inverseModel * lw;
+        if (finite)
+            d.extrusion = bounded ? VolumeGeometry::boundedExtrusion(mSceneBounds, c.bounds, -glm::vec3(lw))
+                                  : light.range;
         d.zfail =
             mSettings.mode == Mode::ZFail ||
             (mSettings.mode == Mode::Auto && VolumeGeometry::mayShadowViewport(view.nearRect, lw, c.bounds));
         VolumeGeometry::CapCull cull;
         if (mSettings.frustumCull) cull = VolumeGeometry::cullVolume(view.frustum, c.bounds, lw);
-        if (finite) cull.darkCap = false; // the finite dark cap is near the caster, not at infinity
+        if (finite) cull.darkCap = false; // the finite dark cap is near the scene, not at infinity
         const VolumeMeshBuffers::Gpu& gpu = mBuffers.mesh(c.mesh);
         if (mSettings.vertexExtrusion) {
             // Light and dark caps are the same triangles here (the shader decides which each is).
@@ -233,7 +250,8 @@ void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameSt
             r.lightCap = !cull.lightCap;
             r.darkCap = !cull.darkCap;
             r.sides = !cull.sides;
-            r.directionalForm = mSettings.directional && lw.w == 0.0f;
+            // A finite volume needs its dark cap: the directional form closes sides at infinity.
+            r.directionalForm = mSettings.directional && lw.w == 0.0f && !finite;
             r.policy = mSettings.policy;
             gpu.mesh->buildVolume(r, mVolume);
             d.first = GLint(mStream.size());
@@ -277,7 +295,8 @@ void VolumeTechnique::markShadows(int lightIndex) {
     glDepthFunc(GL_LESS);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xff);
-    const Program* program = finiteFor(light, mSettings.finiteVolumes) ? mFiniteProgram : mVolumeProgram;
+    const bool finite = boundedFor(light) || rangedFinite(light, mSettings.finiteVolumes);
+    const Program* program = finite ? mFiniteProgram : mVolumeProgram;
     program->use();
     const GLuint query = mQueries[mQueryFrame % 2][size_t(lightIndex)];
     glBeginQuery(GL_SAMPLES_PASSED, query);
@@ -292,7 +311,7 @@ void VolumeTechnique::markShadows(int lightIndex) {
         }
         glUniformMatrix4fv(kModelLocation, 1, GL_FALSE, glm::value_ptr(d.caster->model));
         glUniform4fv(kLightLocation, 1, glm::value_ptr(d.lightObject));
-        if (program == mFiniteProgram) glUniform1f(kRangeLocation, light.range / d.caster->scale);
+        if (finite) glUniform1f(kRangeLocation, d.extrusion / d.caster->scale);
         if (!mSettings.vertexExtrusion) {
             glDrawElements(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(size_t(d.first) * sizeof(uint32_t)));

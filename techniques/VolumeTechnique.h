@@ -19,7 +19,9 @@
 // viewport, section 9.5.4; else z-fail), directional (sides as triangles to one point, no dark cap,
 // 9.5.1), range_cull (point/spot casters outside the light's range mark nothing, 9.5.2), frustum_cull
 // (caps and sides culled separately, 9.5.3), scissor (the light's range rectangle, 9.6.2),
-// finite_volumes (extrude by the light's range, 9.6.1), depth_bounds (9.6.3; needs
+// finite_volumes (extrude by the light's range, 9.6.1), bounded_volumes (past the chapter: directional
+// volumes extruded only until they have left the scene's bounds, VolumeGeometry::boundedExtrusion),
+// depth_bounds (9.6.3; needs
 // GL_EXT_depth_bounds_test, which llvmpipe does not expose: the run is skipped as unsupported there).
 //
 // Casters must be closed (every edge two faces, after welding). open_edges=refuse names the mesh and
@@ -61,7 +63,7 @@ private:
         Mode mode = Mode::Auto;
         Far far = Far::Infinite;
         bool vertexExtrusion = false, directional = true, rangeCull = true, frustumCull = true,
-             scissor = true, finiteVolumes = false, depthBounds = false;
+             scissor = true, finiteVolumes = false, boundedVolumes = true, depthBounds = false;
         OpenEdgePolicy policy = OpenEdgePolicy::Closed;
     };
     struct Caster {
@@ -78,6 +80,7 @@ private:
         GLsizei count = 0;     ///< CPU path: all of its volume
         GLsizei capCount = 0;  ///< vertex path: caps drawn (0 or all)
         GLsizei sideCount = 0; ///< vertex path
+        float extrusion = 0;   ///< world-space extrusion length of a finite volume (range or bounded)
         bool zfail = true;
     };
     struct FrameStats {
@@ -92,6 +95,8 @@ private:
     };
 
     Settings readSettings() const;
+    /// bounded_volumes applies to this light (directional, scene not empty).
+    bool boundedFor(const Light& light) const;
     void checkClosed(const Scene& scene) const;
     void renderAmbient(FrameContext& ctx);
     /// Builds the draws of light `i` (CPU silhouettes streamed into one buffer) and counts them.
@@ -104,6 +109,7 @@ private:
     Settings mSettings;
     const Scene* mScene = nullptr;
     std::vector<Caster> mCasters;
+    Aabb mSceneBounds; ///< world space, every instance: the receivers a bounded volume must reach past
     VolumeMeshBuffers mBuffers;
     std::unique_ptr<FrameUniforms> mFrameUniforms; ///< created in compile(): needs a context
     const Program* mAmbientProgram = nullptr;

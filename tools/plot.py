@@ -10,13 +10,15 @@
   /usr/bin/python3 tools/plot.py bottleneck bn_classes.csv --out bn
       the bottleneck classification: each stage's share of the frame, and the evidence (T/T0 for
       every perturbation).
-  /usr/bin/python3 tools/plot.py bars vol.csv --out vol [--facet scene] [--strip volume:]
+  /usr/bin/python3 tools/plot.py bars vol.csv --out vol [--facet scene] [--strip volume: | --diff-labels]
       one bar per configuration (technique_spec, in the order measured; median over rounds), labelled
-      with its speed-up over the first bar of its panel (e.g. every optimisation off).
+      with its speed-up over the first bar of its panel (e.g. every optimisation off); --diff-labels
+      names each bar by the properties that differ from the first.
 Each writes OUT.png and OUT.svg. `bench figures` calls it for every declared figure.
 """
 import argparse
 import sys
+import textwrap
 
 import matplotlib
 
@@ -176,6 +178,30 @@ def bottleneck(args):
     save(fig, args.out, f"{len(df)} classifications")
 
 
+def spec_properties(spec):
+    """'volume:mode=zfail:scissor=true' -> ('volume', {'mode': 'zfail', 'scissor': 'true'})."""
+    name, _, rest = spec.partition(":")
+    props = dict(p.split("=", 1) for p in rest.split(":") if "=" in p)
+    return name, props
+
+
+def diff_labels(specs):
+    """Each configuration named by what differs from the first (the baseline): 'scissor' for a switch
+    turned on, 'no scissor' for one turned off, 'mode=auto' otherwise."""
+    _, base = spec_properties(specs[0])
+    labels = []
+    for i, spec in enumerate(specs):
+        name, props = spec_properties(spec)
+        parts = []
+        for key, value in props.items():
+            if base.get(key) == value:
+                continue
+            parts.append(key if value == "true" else f"no {key}" if value == "false" else f"{key}={value}")
+        labels.append("baseline" if i == 0 else ", ".join(parts) or name)
+    # Long lists wrap so the axis stays readable.
+    return ["\n".join(textwrap.wrap(label, 60)) for label in labels]
+
+
 def bars(args):
     df = ok_rows(pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True))
     for col in ["technique_spec", args.y] + ([args.facet] if args.facet else []):
@@ -188,7 +214,8 @@ def bars(args):
         part = df if facet is None else df[df[args.facet] == facet]
         order = list(dict.fromkeys(part["technique_spec"]))
         med = part.groupby("technique_spec")[args.y].median().reindex(order)
-        labels = [spec.replace(args.strip, "", 1) if args.strip else spec for spec in order]
+        labels = diff_labels(order) if args.diff_labels else \
+            [spec.replace(args.strip, "", 1) if args.strip else spec for spec in order]
         ax.barh(range(len(order)), med.values, color="#4c72b0")
         ax.set_yticks(range(len(order)))
         ax.set_yticklabels(labels, fontsize=7)
@@ -244,6 +271,8 @@ def main():
     c.add_argument("--ylabel", default="")
     c.add_argument("--facet", default="", help="one panel per value of this column")
     c.add_argument("--strip", default="", help="prefix removed from the labels (e.g. volume:)")
+    c.add_argument("--diff-labels", action="store_true",
+                   help="label each bar by the properties that differ from the first (the baseline)")
     c.add_argument("--title", default="")
     args = parser.parse_args()
     {"pareto": pareto, "lines": lines, "bottleneck": bottleneck, "bars": bars}[args.kind](args)

@@ -88,8 +88,9 @@ const HardCase kCases[] = {
      1e9, "negative control: z-pass loses the volume's part in front of the near plane (86% wrong measured)",
      0.05f, 20},
     {"volume_axis_light_all_off", "volume_axis_light", "oblique",
-     "volume:mode=zfail:directional=false:range_cull=false:frustum_cull=false:scissor=false", 384, 0.05, 0.01,
-     5, 5, 5,
+     "volume:mode=zfail:directional=false:range_cull=false:frustum_cull=false:scissor=false:bounded_volumes="
+     "false",
+     384, 0.05, 0.01, 5, 5, 5,
      "light exactly along -Y: box sides have N.L = 0 and classify as light-facing, the volume stays closed"},
     {"volume_axis_light", "volume_axis_light", "oblique", "volume", 384, 0.05, 0.01, 5, 5, 5,
      "the same with every optimisation on (directional form: sides converge on one point)"},
@@ -99,13 +100,15 @@ const HardCase kCases[] = {
      384, 0.05, 0.01, 5, 5, 5,
      "(0%; 0.67% before the two-sheet mesh) the vertex-shader path: every face and its reversed twin, each "
      "crack a side between them, exact as the CPU's multiplicities"},
-    {"volume_far_plane_zfail", "volume_far_plane", "top", "volume:mode=zfail", 384, 0.05, 0.01, 5, 5, 5,
+    {"volume_far_plane_zfail", "volume_far_plane", "top", "volume:mode=zfail:bounded_volumes=false", 384,
+     0.05, 0.01, 5, 5, 5,
      "(0%) receivers 1.5 inside the camera's far plane: z-fail with the infinite far plane keeps the volume "
-     "faces behind them"},
-    {"volume_far_plane_depth_clamp", "volume_far_plane", "top", "volume:mode=zfail:far=depth_clamp", 384,
-     0.05, 0.01, 5, 5, 5, "(0%) the same with the camera's far plane and depth clamping instead"},
-    {"volume_far_plane_finite", "volume_far_plane", "top", "volume:mode=zfail:far=finite", 384, 100, 100, 1e9,
-     1e9, 1e9,
+     "faces behind them (bounded volumes off, so the volumes do reach past the far plane)"},
+    {"volume_far_plane_depth_clamp", "volume_far_plane", "top",
+     "volume:mode=zfail:far=depth_clamp:bounded_volumes=false", 384, 0.05, 0.01, 5, 5, 5,
+     "(0%) the same with the camera's far plane and depth clamping instead"},
+    {"volume_far_plane_finite", "volume_far_plane", "top",
+     "volume:mode=zfail:far=finite:bounded_volumes=false", 384, 100, 100, 1e9, 1e9, 1e9,
      "negative control (2.5% off the edge band: the whole shadow, ~3% of the image): the far plane clips "
      "the volume's faces behind the ground and z-fail counts 0",
      0.05f, 1.0},
