@@ -203,33 +203,46 @@ def diff_labels(specs):
 
 
 def bars(args):
-    df = ok_rows(pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True))
+    every = pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True)
+    df = ok_rows(every)
     for col in ["technique_spec", args.y] + ([args.facet] if args.facet else []):
-        if col not in df.columns:
+        if col not in every.columns:
             sys.exit(f"plot.py: {args.csv}: column '{col}' missing")
-    facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
-    fig, axes = plt.subplots(len(facets), 1, figsize=(9, 0.45 * df["technique_spec"].nunique() * len(facets) + 1.5),
-                             dpi=120, squeeze=False)
+    facets = list(dict.fromkeys(every[args.facet])) if args.facet else [None]
+    specs = list(dict.fromkeys(every["technique_spec"]))
+    names = dict(zip(specs, diff_labels(specs))) if args.diff_labels else \
+        {spec: spec.replace(args.strip, "", 1) if args.strip else spec for spec in specs}
+    height = 0.45 * len(specs) * len(facets) + 1.5
+    fig, axes = plt.subplots(len(facets), 1, figsize=(9, height), dpi=120, squeeze=False)
     for ax, facet in zip(axes[:, 0], facets):
         part = df if facet is None else df[df[args.facet] == facet]
-        order = list(dict.fromkeys(part["technique_spec"]))
+        everyPart = every if facet is None else every[every[args.facet] == facet]
+        # Every configuration keeps its row, measured or not: a skipped one (unsupported here) is a
+        # labelled gap, not a silently missing bar.
+        order = list(dict.fromkeys(everyPart["technique_spec"]))
         med = part.groupby("technique_spec")[args.y].median().reindex(order)
-        labels = diff_labels(order) if args.diff_labels else \
-            [spec.replace(args.strip, "", 1) if args.strip else spec for spec in order]
-        ax.barh(range(len(order)), med.values, color="#4c72b0")
+        ax.barh(range(len(order)), med.fillna(0).values, color="#4c72b0")
         ax.set_yticks(range(len(order)))
-        ax.set_yticklabels(labels, fontsize=7)
+        ax.set_yticklabels([names[spec] for spec in order], fontsize=7)
         ax.invert_yaxis()
         base = med.values[0]
-        for i, v in enumerate(med.values):
-            ax.text(v, i, f"  {v:.1f} ms  ({base / v:.2f}x)", va="center", fontsize=7)
+        for i, (spec, v) in enumerate(med.items()):
+            if pd.isna(v):
+                status = everyPart[everyPart["technique_spec"] == spec]["status"].iloc[0] \
+                    if "status" in everyPart.columns else "no data"
+                ax.text(0, i, f"  {status} (not measured)", va="center", fontsize=7, color="#a33")
+            else:
+                ax.text(v, i, f"  {v:.1f} ms  ({base / v:.2f}x)", va="center", fontsize=7)
         ax.set_xlim(0, med.max() * 1.35)
         ax.set_xlabel(args.ylabel or args.y)
         ax.grid(True, axis="x", alpha=0.3)
         if facet is not None:
             ax.set_title(f"{args.facet} = {facet}", fontsize=9)
     first = df.iloc[0]
-    fig.suptitle(args.title or f"{args.y} per configuration ({first.get('renderer', '')})", fontsize=10)
+    # Above the first panel's title (tight_layout does not make room for a suptitle; bbox "tight"
+    # saving keeps what lies above 1.0).
+    fig.suptitle(args.title or f"{args.y} per configuration ({first.get('renderer', '')})", fontsize=10,
+                 y=1.0 + 0.3 / height)
     save(fig, args.out, f"{len(df)} rows")
 
 
