@@ -14,25 +14,17 @@
 
 #include <gtest/gtest.h>
 
+#include "TestSupport.h"
 #include "bench/CsvMerge.h"
 #include "bench/CsvWriter.h"
 #include "scenes/Error.h"
 
 using namespace sb;
+using test::readFile;
+using test::writeFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
 
 std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
     for (size_t pos = s.find(from); pos != std::string::npos; pos = s.find(from, pos + to.size()))
@@ -46,15 +38,7 @@ constexpr const char* kHeader = "sweep_id,sweep_configs,config_index,shard,statu
 /// A fresh directory per test; helpers take names relative to it.
 class MergeFixture {
 protected:
-    void makeDir() {
-        const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string(info->test_suite_name()) + "-" + info->name();
-        std::replace(name.begin(), name.end(), '/', '-'); // parameterised names contain '/'
-        mDir = (fs::temp_directory_path() / ("shadowbench-merge-" + name + "-" + std::to_string(getpid())))
-                   .string();
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
+    void makeDir() { mDir = test::freshTestDir("merge"); }
     void removeDir() {
         std::error_code ec;
         fs::remove_all(mDir, ec);

@@ -14,10 +14,13 @@
 
 #include <gtest/gtest.h>
 
+#include "TestSupport.h"
 #include "bench/CsvWriter.h"
 #include "scenes/Error.h"
 
 using namespace sb;
+using test::readFile;
+using test::writeFile;
 namespace fs = std::filesystem;
 
 // ---------------------------------------------------------------------------------------------------
@@ -46,26 +49,10 @@ extern "C" int rename(const char* from, const char* to) noexcept {
 
 namespace {
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
 class CsvWriterTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = (fs::temp_directory_path() /
-                ("shadowbench-csv-" + std::string(info->name()) + "-" + std::to_string(getpid())))
-                   .string();
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
+        mDir = test::freshTestDir("csv");
         mPath = mDir + "/results.csv";
     }
     void TearDown() override {

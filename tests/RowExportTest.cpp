@@ -11,32 +11,20 @@
 
 #include <gtest/gtest.h>
 
+#include "TestSupport.h"
 #include "bench/CsvWriter.h"
 #include "bench/RowExport.h"
 #include "scenes/Error.h"
 
 using namespace sb;
+using test::readFile;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 class RowExportTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = (fs::temp_directory_path() /
-                ("shadowbench-rowexport-" + std::string(info->name()) + "-" + std::to_string(getpid())))
-                   .string();
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
+    void SetUp() override { mDir = test::freshTestDir("rowexport"); }
     void TearDown() override { fs::remove_all(mDir); }
     std::string mDir;
 };

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 #include "bench/RunConfig.h"
 
@@ -77,6 +78,23 @@ inline std::string readFile(const std::string& path) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+inline void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+/// A fresh empty directory for the running gtest test: `prefix`, suite and test name (a parameterised
+/// name's '/' made '-') and the process id, so parallel ctest runs never share one.
+inline std::string freshTestDir(const std::string& prefix) {
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "-" + info->name();
+    std::replace(name.begin(), name.end(), '/', '-');
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("shadowbench-" + prefix + "-" + name + "-" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
 }
 
 /// A fresh empty directory under the build tree's temp area for one test.
