@@ -1,0 +1,60 @@
+#pragma once
+// A shadow plane of the occluder-texture technique (Coleman, "Fast Self-Shadowing Using Occluder
+// Textures", sections 4.1 and 4.3): a rectangle in a mesh's object space that stands for a flat
+// shadow-casting part (wings, a tail fin), with an occluder texture holding the part's silhouette
+// (black = occluder) on it.
+//
+// A receiving point p0 is shadowed by the plane when the ray towards the light, p(s) = p0 + s L
+// (equation 2), meets the plane (equations 3-6)
+//     s_I = n . (o - p0) / (n . L)
+// on the light's side of p0 (s_I > 0: the appendix's false-shadow test) inside a black texel. The
+// texture coordinate of the hit (equation 8) is taken, as the appendix's shaders do, from the texture's
+// corner o:
+//     uv = (right . (p(s_I) - o) / width, up . (p(s_I) - o) / height)
+// (equation 8 writes o - p(s_I): the same with right and up pointing the other way).
+//
+// This is the CPU form of what shaders/occluder/ computes per vertex; the technique uses it for the
+// per-instance light and the tests use it as the independent answer.
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace sb {
+
+/// Where a receiving point projects onto a shadow plane along the light.
+struct ShadowCoord {
+    glm::vec2 uv{0.0f}; ///< texture coordinates, unclamped (the fragment stage clamps, Appendix B)
+    /// The ray parameter s_I of equation 6: > 0 when the plane lies between the point and the light
+    /// (only then may it shadow), <= 0 for a plane behind the point (a false shadow if used).
+    float s = 0.0f;
+};
+
+struct ShadowPlane {
+    std::string name;          ///< e.g. "wings", "fin_left"
+    glm::vec3 origin{0.0f};    ///< the texture's (0, 0) corner, object space
+    glm::vec3 normal{0, 0, 1}; ///< unit
+    glm::vec3 right{1, 0, 0};  ///< unit, in the plane: texture u
+    glm::vec3 up{0, 1, 0};     ///< unit, in the plane: texture v
+    float width = 1.0f, height = 1.0f;
+    /// Solid occluder (the thesis's teapot handle): every uv in [0, 1]^2 is shadow, no texture fetch.
+    bool solid = false;
+    /// Mesh parts whose geometry the plane stands for (the automatic occluder texture renders these).
+    std::vector<std::string> parts;
+
+    /// Below this |n . L| (unit vectors: the cosine between the light and the plane, ~6e-5 degrees
+    /// from parallel) the denominator of equation 6 is held at +-kMinCosine: s_I stays finite (huge),
+    /// the coordinates clamp to the border, and n . L = 0 exactly gives no NaN (0 / 0).
+    static constexpr float kMinCosine = 1e-6f;
+
+    /// Equations 6 and 8 for a point p0 and a unit vector L towards the light (object space).
+    ShadowCoord project(const glm::vec3& p0, const glm::vec3& towardLight) const;
+    /// True when the plane shadows p0 for a solid occluder: s_I > 0 and uv in [0, 1]^2.
+    bool solidShadows(const glm::vec3& p0, const glm::vec3& towardLight) const;
+
+    /// Throws sb::Error naming `where` when the frame is not orthonormal (1e-3) or a size is not
+    /// positive and finite.
+    void validate(const std::string& where) const;
+};
+
+} // namespace sb
