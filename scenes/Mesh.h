@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/ShadowPlane.h"
+
 namespace sb {
 
 struct Aabb {
@@ -41,6 +43,9 @@ struct Mesh {
     std::vector<glm::vec3> normals; ///< per vertex, unit length, same count as positions
     std::vector<uint32_t> indices;  ///< triangle list, counter-clockwise front faces
     std::vector<MeshPart> parts;    ///< optional; empty means one part covering everything
+    /// Occluder-texture shadow planes in object space (the `occluder` technique): declared per mesh in
+    /// the scene file or built in for generated content (scenes/BuiltinShadowPlanes.h).
+    std::vector<ShadowPlane> shadowPlanes;
 
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return indices.size() / 3; }

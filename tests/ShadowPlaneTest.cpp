@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "scenes/Error.h"
-#include "techniques/ShadowPlane.h"
+#include "scenes/ShadowPlane.h"
 
 using namespace sb;
 

@@ -1,4 +1,4 @@
-#include "techniques/ShadowPlane.h"
+#include "scenes/ShadowPlane.h"
 
 #include <cmath>
 

@@ -39,8 +39,17 @@ struct ShadowPlane {
     float width = 1.0f, height = 1.0f;
     /// Solid occluder (the thesis's teapot handle): every uv in [0, 1]^2 is shadow, no texture fetch.
     bool solid = false;
-    /// Mesh parts whose geometry the plane stands for (the automatic occluder texture renders these).
+    /// Mesh parts whose geometry the plane stands for: the automatic occluder texture renders these
+    /// (all of the mesh when empty).
     std::vector<std::string> parts;
+    /// Where the occluder texture comes from when not solid: "auto" bakes it from `parts` at the
+    /// technique's resolution (the thesis's future work); anything else is an image file read with
+    /// OpenImageIO (the scene loader makes it absolute, relative to the scene file). Image convention:
+    /// dark = occluder, the image's bottom-left corner is uv (0, 0).
+    std::string texture = "auto";
+    /// Non-empty: use the texture of the named plane of the same mesh (the thesis's two tail fins
+    /// share one); the two planes' frames must map the shared silhouette alike.
+    std::string textureOf;
 
     /// Below this |n . L| (unit vectors: the cosine between the light and the plane, ~6e-5 degrees
     /// from parallel) the denominator of equation 6 is held at +-kMinCosine: s_I stays finite (huge),
