@@ -48,7 +48,18 @@ Mesh ModelLoader::load(const std::string& path) {
         fail(path, importer.GetErrorString()[0] ? importer.GetErrorString() : "cannot be read");
     Mesh mesh;
     mesh.name = std::filesystem::path(path).stem().string();
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) appendMesh(mesh, *scene->mMeshes[m]);
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        // Each assimp mesh (an OBJ group or object, a glTF primitive ...) becomes a named part, so a
+        // scene file can refer to it (occluder planes bake their texture from named parts). Unnamed
+        // ones get "part<N>"; PreTransformVertices may already have joined meshes sharing a material.
+        const aiMesh& in = *scene->mMeshes[m];
+        MeshPart part;
+        part.name = in.mName.length ? std::string(in.mName.C_Str()) : "part" + std::to_string(m);
+        part.firstIndex = uint32_t(mesh.indices.size());
+        appendMesh(mesh, in);
+        part.indexCount = uint32_t(mesh.indices.size()) - part.firstIndex;
+        if (part.indexCount) mesh.parts.push_back(part);
+    }
     if (mesh.indices.empty()) fail(path, "contains no triangles");
     return mesh;
 }

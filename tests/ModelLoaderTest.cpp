@@ -71,3 +71,23 @@ TEST(ModelLoaderTest, FileWithoutTrianglesIsRejected) {
     EXPECT_EQ(error.rfind("model file '" + path + "': ", 0), 0u) << error;
     std::remove(path.c_str());
 }
+
+TEST(ModelLoaderTest, ObjGroupsBecomeNamedParts) {
+    // Two groups with their own materials (so the pre-transform step cannot join them): a plate of
+    // 2 triangles at y = 1 and a base quad of 2 triangles at y = 0. Each group is a named part covering
+    // exactly its own triangles.
+    const std::string path = writeTemp("sb_parts.obj", "v 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\n"
+                                                       "v -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\n"
+                                                       "g plate\nusemtl plateMaterial\nf 1 3 2\nf 1 4 3\n"
+                                                       "g base\nusemtl baseMaterial\nf 5 7 6\nf 5 8 7\n");
+    const Mesh m = ModelLoader::load(path);
+    ASSERT_EQ(m.parts.size(), 2u);
+    for (const MeshPart& part : m.parts) {
+        ASSERT_EQ(part.indexCount, 6u) << part.name;
+        const float y = part.name == "plate" ? 1.0f : 0.0f;
+        EXPECT_TRUE(part.name == "plate" || part.name == "base") << part.name;
+        for (uint32_t k = part.firstIndex; k < part.firstIndex + part.indexCount; ++k)
+            EXPECT_EQ(m.positions[m.indices[k]].y, y) << part.name;
+    }
+    std::remove(path.c_str());
+}
