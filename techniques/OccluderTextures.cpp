@@ -1,0 +1,345 @@
+#include "techniques/OccluderTextures.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include <OpenImageIO/imageio.h>
+
+#include "gl/TextureFramebuffer.h"
+#include "scenes/Error.h"
+
+namespace sb {
+namespace {
+
+constexpr int kMaxResolution = 16384;
+constexpr uint8_t kClear = 255;
+constexpr uint8_t kOccluder = 0;
+
+std::string planeLabel(const ShadowPlane& plane) {
+    return "shadow plane '" + plane.name + "'";
+}
+
+/// The index ranges plane.parts names; the whole mesh when the list is empty.
+std::vector<MeshPart> selectParts(const Mesh& mesh, const ShadowPlane& plane) {
+    if (plane.parts.empty()) return {MeshPart{"", 0, uint32_t(mesh.indices.size())}};
+    std::vector<MeshPart> ranges;
+    for (const std::string& name : plane.parts) {
+        auto it = std::find_if(mesh.parts.begin(), mesh.parts.end(),
+                               [&](const MeshPart& part) { return part.name == name; });
+        if (it == mesh.parts.end()) {
+            std::string known;
+            for (const MeshPart& part : mesh.parts) known += (known.empty() ? "" : ", ") + part.name;
+            throw Error(planeLabel(plane) + " of mesh '" + mesh.name + "': no part '" + name +
+                        "' (parts: " + (known.empty() ? "none" : known) + ")");
+        }
+        ranges.push_back(*it);
+    }
+    return ranges;
+}
+
+void validate(const Mesh& mesh, const ShadowPlane& plane, const OccluderBakeOptions& options) {
+    plane.validate("occluder texture bake");
+    if (options.resolution < 1 || options.resolution > kMaxResolution)
+        throw Error(planeLabel(plane) + ": occluder texture resolution must be in [1, " +
+                    std::to_string(kMaxResolution) + "], got " + std::to_string(options.resolution));
+    if (options.dilate < 0 || options.dilate > options.resolution)
+        throw Error(planeLabel(plane) + ": dilate must be in [0, resolution " +
+                    std::to_string(options.resolution) + "], got " + std::to_string(options.dilate));
+    if (mesh.indices.size() % 3 != 0)
+        throw Error(planeLabel(plane) + ": mesh '" + mesh.name + "' index count is not a multiple of 3");
+}
+
+/// The GL state bake() changes, restored on destruction (also when an exception leaves bake()).
+class GlStateGuard {
+public:
+    GlStateGuard() {
+        glGetIntegerv(GL_VIEWPORT, mViewport.data());
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &mDrawFbo);
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &mReadFbo);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &mProgram);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &mVao);
+        for (size_t i = 0; i < kEnables.size(); ++i) mEnabled[i] = glIsEnabled(kEnables[i]);
+        glGetBooleanv(GL_COLOR_WRITEMASK, mColorMask.data());
+        glGetBooleanv(GL_DEPTH_WRITEMASK, &mDepthMask);
+        glGetIntegerv(GL_PACK_ALIGNMENT, &mPackAlignment);
+        glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &mPackBuffer);
+        for (size_t f = 0; f < 2; ++f) {
+            const bool back = f == 1;
+            glGetIntegerv(back ? GL_STENCIL_BACK_WRITEMASK : GL_STENCIL_WRITEMASK, &mStencil[f].writeMask);
+            glGetIntegerv(back ? GL_STENCIL_BACK_FUNC : GL_STENCIL_FUNC, &mStencil[f].func);
+            glGetIntegerv(back ? GL_STENCIL_BACK_REF : GL_STENCIL_REF, &mStencil[f].ref);
+            glGetIntegerv(back ? GL_STENCIL_BACK_VALUE_MASK : GL_STENCIL_VALUE_MASK, &mStencil[f].valueMask);
+            glGetIntegerv(back ? GL_STENCIL_BACK_FAIL : GL_STENCIL_FAIL, &mStencil[f].fail);
+            glGetIntegerv(back ? GL_STENCIL_BACK_PASS_DEPTH_FAIL : GL_STENCIL_PASS_DEPTH_FAIL,
+                          &mStencil[f].depthFail);
+            glGetIntegerv(back ? GL_STENCIL_BACK_PASS_DEPTH_PASS : GL_STENCIL_PASS_DEPTH_PASS,
+                          &mStencil[f].pass);
+        }
+    }
+    ~GlStateGuard() {
+        glViewport(mViewport[0], mViewport[1], mViewport[2], mViewport[3]);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(mDrawFbo));
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(mReadFbo));
+        glUseProgram(GLuint(mProgram));
+        glBindVertexArray(GLuint(mVao));
+        for (size_t i = 0; i < kEnables.size(); ++i)
+            mEnabled[i] ? glEnable(kEnables[i]) : glDisable(kEnables[i]);
+        glColorMask(mColorMask[0], mColorMask[1], mColorMask[2], mColorMask[3]);
+        glDepthMask(mDepthMask);
+        glPixelStorei(GL_PACK_ALIGNMENT, mPackAlignment);
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(mPackBuffer));
+        for (size_t f = 0; f < 2; ++f) {
+            const GLenum face = f == 1 ? GL_BACK : GL_FRONT;
+            glStencilMaskSeparate(face, GLuint(mStencil[f].writeMask));
+            glStencilFuncSeparate(face, GLenum(mStencil[f].func), mStencil[f].ref,
+                                  GLuint(mStencil[f].valueMask));
+            glStencilOpSeparate(face, GLenum(mStencil[f].fail), GLenum(mStencil[f].depthFail),
+                                GLenum(mStencil[f].pass));
+        }
+    }
+    GlStateGuard(const GlStateGuard&) = delete;
+    GlStateGuard& operator=(const GlStateGuard&) = delete;
+
+private:
+    static constexpr std::array<GLenum, 6> kEnables = {GL_DEPTH_TEST, GL_CULL_FACE,    GL_STENCIL_TEST,
+                                                       GL_BLEND,      GL_SCISSOR_TEST, GL_CLIP_DISTANCE0};
+    struct Stencil {
+        GLint writeMask, func, ref, valueMask, fail, depthFail, pass;
+    };
+    std::array<GLint, 4> mViewport{};
+    GLint mDrawFbo = 0, mReadFbo = 0, mProgram = 0, mVao = 0, mPackAlignment = 4, mPackBuffer = 0;
+    std::array<GLboolean, kEnables.size()> mEnabled{};
+    std::array<GLboolean, 4> mColorMask{};
+    GLboolean mDepthMask = GL_TRUE;
+    std::array<Stencil, 2> mStencil{};
+};
+
+/// Positions and indices of a mesh on the GPU for the bake (attribute 0 only).
+class BakeGeometry {
+public:
+    explicit BakeGeometry(const Mesh& mesh) {
+        glCreateVertexArrays(1, &mVao);
+        glCreateBuffers(1, &mVbo);
+        glCreateBuffers(1, &mIbo);
+        // Storage of at least one element: a zero-size buffer store is an error.
+        const glm::vec3 none(0.0f);
+        const uint32_t noIndex = 0;
+        glNamedBufferStorage(mVbo, GLsizeiptr(std::max<size_t>(1, mesh.positions.size()) * sizeof(glm::vec3)),
+                             mesh.positions.empty() ? &none : mesh.positions.data(), 0);
+        glNamedBufferStorage(mIbo, GLsizeiptr(std::max<size_t>(1, mesh.indices.size()) * sizeof(uint32_t)),
+                             mesh.indices.empty() ? &noIndex : mesh.indices.data(), 0);
+        glVertexArrayVertexBuffer(mVao, 0, mVbo, 0, GLsizei(sizeof(glm::vec3)));
+        glVertexArrayElementBuffer(mVao, mIbo);
+        glEnableVertexArrayAttrib(mVao, 0);
+        glVertexArrayAttribFormat(mVao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(mVao, 0, 0);
+    }
+    ~BakeGeometry() {
+        glDeleteVertexArrays(1, &mVao);
+        glDeleteBuffers(1, &mVbo);
+        glDeleteBuffers(1, &mIbo);
+    }
+    BakeGeometry(const BakeGeometry&) = delete;
+    BakeGeometry& operator=(const BakeGeometry&) = delete;
+    GLuint vao() const { return mVao; }
+
+    static void draw(uint32_t firstIndex, uint32_t count) {
+        if (count == 0) return;
+        glDrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(uintptr_t(firstIndex) * sizeof(uint32_t)));
+    }
+
+private:
+    GLuint mVao = 0, mVbo = 0, mIbo = 0;
+};
+
+/// A new R8 texture holding `texels` (row 0 = v near 0), filtered as the technique samples it: LINEAR
+/// (the thesis's bilinear magnification softens the jaggies), clamped to the border texels.
+GLuint createOccluderTexture(const std::vector<uint8_t>& texels, int width, int height) {
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, GL_R8, width, height);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GLint unpackAlignment = 4, unpackBuffer = 0;
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glTextureSubImage2D(texture, 0, 0, 0, width, height, GL_RED, GL_UNSIGNED_BYTE, texels.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpackBuffer));
+    return texture;
+}
+
+/// Rec. 709 luma of 8-bit encoded values (no linearisation: the image's own encoding is the convention).
+uint8_t luma(float r, float g, float b) {
+    const float y = 0.2126f * r + 0.7152f * g + 0.0722f * b;
+    return uint8_t(std::lround(std::clamp(y, 0.0f, 255.0f)));
+}
+
+} // namespace
+
+GLuint OccluderTextures::bake(ProgramCache& programs, const Mesh& mesh, const ShadowPlane& plane,
+                              const OccluderBakeOptions& options) {
+    validate(mesh, plane, options);
+    const std::vector<MeshPart> parts = selectParts(mesh, plane);
+    // Programs first: a compile error throws before any GL state is touched.
+    const ShaderSources sources{"occluder/bake.vert", "occluder/bake.frag", ""};
+    const Program& draw = programs.get(sources, {});
+    const Program& clipped = programs.get(sources, {{"BAKE_CLIP", ""}});
+    const Program& fill = programs.get(sources, {{"BAKE_FULLSCREEN", ""}});
+
+    GlStateGuard guard;
+    const int n = options.resolution;
+    TextureFramebuffer target(planeLabel(plane) + " occluder bake", n, n, {GL_R8});
+    BakeGeometry geometry(mesh);
+    target.bind();
+    for (GLenum e :
+         {GL_DEPTH_TEST, GL_CULL_FACE, GL_STENCIL_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_CLIP_DISTANCE0})
+        glDisable(e);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilMask(0xFF);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const GLint zero = 0;
+    glClearNamedFramebufferfv(target.fbo(), GL_COLOR, 0, white);
+    glClearNamedFramebufferiv(target.fbo(), GL_STENCIL, 0, &zero);
+
+    const glm::vec3 right = plane.right / plane.width, up = plane.up / plane.height;
+    for (const Program* program : {&draw, &clipped}) {
+        glProgramUniform3fv(program->id(), 0, 1, &plane.origin.x);
+        glProgramUniform3fv(program->id(), 1, 1, &right.x);
+        glProgramUniform3fv(program->id(), 2, 1, &up.x);
+    }
+    glProgramUniform3fv(clipped.id(), 3, 1, &plane.normal.x); // only BAKE_CLIP reads the normal
+    draw.use();
+    glBindVertexArray(geometry.vao());
+
+    // The silhouette: the parts' triangles, both facings, black on white.
+    if (options.silhouette)
+        for (const MeshPart& part : parts) BakeGeometry::draw(part.firstIndex, part.indexCount);
+
+    if (options.crossSection) {
+        // The cross-section (thesis section 5, the fin extended down into the body), marked where the
+        // plane point lies inside the solid of the whole mesh. Every triangle on the normal's side of
+        // the plane is counted in the stencil, +1 for one facing and -1 for the other: the sum is the
+        // winding number of the plane point along the ray that leaves it along +normal, non-zero exactly
+        // inside a closed, consistently wound surface. The non-zero rule rather than parity (GL_INVERT)
+        // because meshes are unions of overlapping closed parts (the aircraft's fins and stabilisers
+        // reach into the fuselage): inside two of them the parity is even, the winding number 2.
+        // Safe: a receiver p0 is shadowed by the plane point q only when q lies between p0 and the
+        // light (s_I > 0), and then the segment p0 -> light passes through q inside the solid, so the
+        // mesh itself occludes that ray (or p0 faces away from the light, the ray entering the solid
+        // at p0): marking q can add no shadow the geometry does not cast.
+        clipped.use();
+        glEnable(GL_CLIP_DISTANCE0);
+        glEnable(GL_STENCIL_TEST);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+        BakeGeometry::draw(0, uint32_t(mesh.indices.size()));
+        glDisable(GL_CLIP_DISTANCE0);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        fill.use();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    std::vector<uint8_t> texels(size_t(n) * size_t(n));
+    target.read(GL_COLOR_ATTACHMENT0, GL_RED, GL_UNSIGNED_BYTE, texels.data());
+    if (options.dilate > 0) texels = dilate(texels, n, n, options.dilate);
+    return createOccluderTexture(texels, n, n);
+}
+
+std::vector<uint8_t> OccluderTextures::dilate(const std::vector<uint8_t>& texels, int width, int height,
+                                              int k) {
+    if (k <= 0) return texels;
+    // A square's min filter is separable: rows, then columns. O(k) per texel is fine for setup work.
+    auto pass = [&](const std::vector<uint8_t>& in, int dx, int dy) {
+        std::vector<uint8_t> out(in.size());
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                uint8_t m = kClear;
+                for (int d = -k; d <= k; ++d) {
+                    const int sx = std::clamp(x + d * dx, 0, width - 1),
+                              sy = std::clamp(y + d * dy, 0, height - 1);
+                    m = std::min(m, in[size_t(sy) * size_t(width) + size_t(sx)]);
+                }
+                out[size_t(y) * size_t(width) + size_t(x)] = m;
+            }
+        return out;
+    };
+    return pass(pass(texels, 1, 0), 0, 1);
+}
+
+GLuint OccluderTextures::load(const std::string& path) {
+    const std::string what = "occluder texture '" + path + "'";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw Error(what + ": no such file");
+    // Alpha is ignored, so it must not be multiplied in either: OpenImageIO associates (premultiplies)
+    // the colour of PNG and similar files unless asked for the stored values.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
+    if (!in) throw Error(what + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    const int w = spec.width, h = spec.height, channels = spec.nchannels;
+    if (w <= 0 || h <= 0 || channels <= 0)
+        throw Error(what + ": zero size (" + std::to_string(w) + "x" + std::to_string(h) + ", " +
+                    std::to_string(channels) + " channels)");
+    // Float, so 8-bit values come through exactly (x / 255 * 255) and 16-bit ones are rounded once.
+    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+        throw Error(what + ": cannot read image: " + in->geterror());
+    in->close();
+    std::vector<uint8_t> texels(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = &pixels[(size_t(y) * size_t(w) + size_t(x)) * size_t(channels)];
+            const uint8_t value = channels >= 3 ? luma(p[0] * 255.0f, p[1] * 255.0f, p[2] * 255.0f)
+                                                : uint8_t(std::lround(std::clamp(p[0], 0.0f, 1.0f) * 255.0f));
+            texels[size_t(h - 1 - y) * size_t(w) + size_t(x)] = value; // images are top-down
+        }
+    return createOccluderTexture(texels, w, h);
+}
+
+std::vector<uint8_t> OccluderTextures::readBack(GLuint texture, int& width, int& height) {
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &width);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &height);
+    std::vector<uint8_t> texels(size_t(std::max(width, 0)) * size_t(std::max(height, 0)));
+    GLint packAlignment = 4, packBuffer = 0;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+    glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glGetTextureImage(texture, 0, GL_RED, GL_UNSIGNED_BYTE, GLsizei(texels.size()), texels.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(packBuffer));
+    return texels;
+}
+
+void OccluderTextures::write(const std::string& path, const std::vector<uint8_t>& texels, int width,
+                             int height) {
+    const std::string what = "occluder texture '" + path + "'";
+    if (width <= 0 || height <= 0 || texels.size() != size_t(width) * size_t(height))
+        throw Error(what + ": " + std::to_string(texels.size()) + " texels do not make " +
+                    std::to_string(width) + "x" + std::to_string(height));
+    std::vector<uint8_t> image(texels.size());
+    for (int y = 0; y < height; ++y) // texture rows are bottom-up, images top-down
+        std::copy_n(&texels[size_t(height - 1 - y) * size_t(width)], size_t(width),
+                    &image[size_t(y) * size_t(width)]);
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw Error(what + ": cannot write image: " + OIIO::geterror(), ExitCode::Failure);
+    const OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::UINT8);
+    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.data()) || !out->close())
+        throw Error(what + ": cannot write image: " + out->geterror(), ExitCode::Failure);
+}
+
+} // namespace sb
