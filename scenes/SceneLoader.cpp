@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenes/BuiltinShadowPlanes.h"
 #include "scenes/Error.h"
 #include "scenes/JsonReader.h"
 #include "scenes/MeshGenerators.h"
@@ -66,18 +67,18 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
     // (a "radius" on a box) is reported instead of ignored.
     auto tess = [&](int fallback) { return tessellationFor(ctx, m, generator, fallback); };
     if (generator == "sphere") {
-        m.requireObject({"name", "generator", "tessellation", "radius"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "radius"});
         Mesh mesh = MeshGenerators::sphere(tess(16));
         if (m.has("radius")) scaleMesh(mesh, glm::vec3(m["radius"].positiveNumber()));
         return mesh;
     }
     if (generator == "box") {
-        m.requireObject({"name", "generator", "tessellation", "half_extent"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "half_extent"});
         return MeshGenerators::box(m.has("half_extent") ? m["half_extent"].positiveVec3() : glm::vec3(1.0f),
                                    tess(1));
     }
     if (generator == "cylinder") {
-        m.requireObject({"name", "generator", "tessellation", "radius", "height"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "radius", "height"});
         Mesh mesh = MeshGenerators::cylinder(tess(16));
         const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
         const float height = m.has("height") ? m["height"].positiveNumber() : 2.0f;
@@ -85,15 +86,15 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
         return mesh;
     }
     if (generator == "plane") {
-        m.requireObject({"name", "generator", "tessellation", "size"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "size"});
         return MeshGenerators::plane(m.has("size") ? m["size"].positiveNumber() : 100.0f, tess(16));
     }
     if (generator == "aircraft") {
-        m.requireObject({"name", "generator", "tessellation"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation"});
         return MeshGenerators::aircraft(tess(16));
     }
     if (generator == "teapot") {
-        m.requireObject({"name", "generator", "tessellation"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation"});
         const std::string path = Paths::findResource(kTeapotResource);
         if (path.empty()) m["generator"].error(std::string("cannot find ") + kTeapotResource);
         return MeshGenerators::teapot(path, tess(8));
@@ -101,7 +102,7 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
     if (generator == "lantern") {
         // "radius" (outer) and "thickness" (the shell's, radius - thickness is the inner radius) in
         // scene units; the generator builds outer radius 1, so the thickness is divided by the radius.
-        m.requireObject({"name", "generator", "tessellation", "radius", "thickness"});
+        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "radius", "thickness"});
         const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
         const float thickness = m.has("thickness") ? m["thickness"].positiveNumber() : 0.08f;
         if (!(thickness < radius)) {
@@ -129,7 +130,7 @@ Mesh generateMesh(Context& ctx, const JsonReader& m, const std::string& generato
 }
 
 Mesh loadModelMesh(const Context& ctx, const JsonReader& m) {
-    m.requireObject({"name", "file"});
+    m.requireObject({"name", "file", "shadow_planes"});
     fs::path path = m["file"].string();
     if (path.is_relative()) path = fs::path(ctx.source).parent_path() / path;
     try {
@@ -137,6 +138,119 @@ Mesh loadModelMesh(const Context& ctx, const JsonReader& m) {
     } catch (const Error& e) {
         m["file"].error(e.what());
     }
+}
+
+// ---- shadow planes -------------------------------------------------------------------------------
+
+/// The tolerance of ShadowPlane::validate for unit vectors.
+constexpr float kUnitTolerance = 1e-3f;
+
+/// A frame vector of a shadow plane: read as given (a user error is reported, not normalised away).
+glm::vec3 planeVector(const JsonReader& r) {
+    const glm::vec3 v = r.vec3();
+    const float length = glm::length(v);
+    if (!(std::abs(length - 1.0f) <= kUnitTolerance)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", double(length));
+        r.error("expected a unit vector (length 1 within 1e-3; shadow plane vectors are not normalised on "
+                "load), got " +
+                r.value().dump() + " of length " + text);
+    }
+    return v;
+}
+
+std::string partNames(const Mesh& mesh) {
+    if (mesh.parts.empty()) return "the mesh has no named parts";
+    return "parts: " + join(mesh.parts, ", ", [](const MeshPart& p) { return p.name; });
+}
+
+/// "texture": "auto" or an image file, made absolute relative to the scene file's directory.
+std::string planeTexture(const Context& ctx, const JsonReader& r) {
+    const std::string text = r.string();
+    if (text == "auto") return text;
+    if (text.empty()) r.fail("\"auto\" or an image file path");
+    fs::path path = text;
+    if (path.is_relative()) path = fs::path(ctx.source).parent_path() / path;
+    path = fs::absolute(path).lexically_normal();
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) r.error("texture file '" + path.string() + "' not found");
+    return path.string();
+}
+
+ShadowPlane parseShadowPlane(const Context& ctx, const JsonReader& r, const Mesh& mesh) {
+    r.requireObject({"name", "origin", "normal", "right", "up", "width", "height", "solid", "parts",
+                     "texture", "texture_of"});
+    ShadowPlane plane;
+    plane.name = r["name"].string();
+    if (plane.name.empty()) r["name"].fail("a non-empty name");
+    plane.origin = r["origin"].vec3();
+    plane.normal = planeVector(r["normal"]);
+    plane.right = planeVector(r["right"]);
+    plane.up = planeVector(r["up"]);
+    plane.width = r["width"].positiveNumber();
+    plane.height = r["height"].positiveNumber();
+    if (r.has("solid")) plane.solid = r["solid"].boolean();
+    if (r.has("parts")) {
+        for (const auto& e : r["parts"].elements()) {
+            const std::string part = e.string();
+            const bool known = std::any_of(mesh.parts.begin(), mesh.parts.end(),
+                                           [&](const MeshPart& p) { return p.name == part; });
+            if (!known)
+                e.error("unknown part \"" + part + "\" of mesh \"" + mesh.name + "\" (" + partNames(mesh) +
+                        ")");
+            plane.parts.push_back(part);
+        }
+    }
+    if (r.has("texture")) {
+        plane.texture = planeTexture(ctx, r["texture"]);
+        if (plane.solid && plane.texture != "auto")
+            r["texture"].error(
+                "a solid plane has no texture (every uv in [0, 1]^2 is shadow): remove \"texture\" "
+                "or \"solid\"");
+    }
+    if (r.has("texture_of")) {
+        plane.textureOf = r["texture_of"].string();
+        if (plane.textureOf.empty()) r["texture_of"].fail("the name of another shadow plane of the mesh");
+        if (plane.solid)
+            r["texture_of"].error("a solid plane uses no texture: remove \"texture_of\" or \"solid\"");
+        if (r.has("texture"))
+            r["texture"].error("\"texture\" and \"texture_of\" both give the texture: keep one");
+    }
+    // Frame orthogonality and sizes (the non-unit cases were named at their keys above).
+    plane.validate(ctx.source + ": " + r.path());
+    return plane;
+}
+
+/// The "shadow_planes" of a mesh: names unique, texture_of naming another plane that owns a texture.
+std::vector<ShadowPlane> parseShadowPlanes(const Context& ctx, const JsonReader& list, const Mesh& mesh) {
+    const std::vector<JsonReader> entries = list.elements();
+    std::vector<ShadowPlane> planes;
+    for (const auto& e : entries) {
+        ShadowPlane plane = parseShadowPlane(ctx, e, mesh);
+        for (const auto& other : planes)
+            if (other.name == plane.name)
+                e["name"].error("duplicate shadow plane name \"" + plane.name + "\" in mesh \"" + mesh.name +
+                                "\"");
+        planes.push_back(std::move(plane));
+    }
+    for (size_t i = 0; i < planes.size(); ++i) {
+        if (planes[i].textureOf.empty()) continue;
+        const JsonReader r = entries[i]["texture_of"];
+        const std::string& target = planes[i].textureOf;
+        if (target == planes[i].name) r.error("a plane cannot use its own texture");
+        const auto it = std::find_if(planes.begin(), planes.end(),
+                                     [&](const ShadowPlane& p) { return p.name == target; });
+        if (it == planes.end()) {
+            const std::string known = join(planes, ", ", [](const ShadowPlane& p) { return p.name; });
+            r.error("no shadow plane \"" + target + "\" in mesh \"" + mesh.name + "\" (planes: " + known +
+                    ")");
+        }
+        if (!it->textureOf.empty())
+            r.error("shadow plane \"" + target + "\" itself uses the texture of \"" + it->textureOf +
+                    "\": name the plane that owns the texture");
+        if (it->solid) r.error("shadow plane \"" + target + "\" is solid and has no texture to share");
+    }
+    return planes;
 }
 
 void parseMesh(Context& ctx, const JsonReader& m) {
@@ -147,6 +261,17 @@ void parseMesh(Context& ctx, const JsonReader& m) {
     std::string generator = m.has("generator") ? m["generator"].string() : "";
     Mesh mesh = m.has("file") ? loadModelMesh(ctx, m) : generateMesh(ctx, m, generator);
     mesh.name = name;
+    // Planes live in the object space of the final mesh (after tessellation options and scaling).
+    // Declared planes replace the built-in ones ([] means none); model files only get declared ones.
+    if (m.has("shadow_planes")) {
+        mesh.shadowPlanes = parseShadowPlanes(ctx, m["shadow_planes"], mesh);
+    } else if (!generator.empty()) {
+        try {
+            mesh.shadowPlanes = BuiltinShadowPlanes::forGenerator(generator, mesh);
+        } catch (const Error& e) {
+            m["generator"].error(e.what());
+        }
+    }
     ctx.meshByName[name] = uint32_t(ctx.scene.meshes.size());
     ctx.meshIsPlane.push_back(generator == "plane");
     ctx.scene.meshes.push_back(std::move(mesh));
@@ -247,6 +372,7 @@ void replaceWithModel(Context& ctx, uint32_t meshIndex) {
     const float s = newRadius > 0.0f ? oldRadius / newRadius : 1.0f;
     for (auto& p : model.positions) p = (p - newCentre) * s + oldCentre;
     model.name = old.name;
+    model.shadowPlanes.clear(); // the replaced mesh's planes were for its geometry; a model file has none
     old = std::move(model);
 }
 

@@ -24,6 +24,22 @@
 //   plane/lantern 16, teapot 8, box 1.
 //   SceneOptions::tessellation replaces it for every generator but the plane (the ground receiver), and
 //   SceneOptions::tessellationFactor then multiplies it (rounded, clamped to the generator minimum).
+// - meshes, "shadow_planes" (either kind of mesh): the occluder technique's planes (scenes/ShadowPlane.h)
+//   in the object space of the final mesh (after tessellation and "radius"/"size" scaling):
+//     "shadow_planes": [ {"name": "fin", "origin": [x,y,z], "normal": [x,y,z], "right": [x,y,z],
+//                         "up": [x,y,z], "width": w, "height": h, "solid": false, "parts": ["fin_right"],
+//                         "texture": "auto" | "textures/fin.png", "texture_of": "other plane"} ]
+//   "name", "origin" (the texture's (0, 0) corner), "normal", "right", "up", "width", "height" required.
+//   normal, right and up must be unit (within 1e-3; not normalised on load: a wrong vector is an error)
+//   and perpendicular to each other; width and height > 0. "parts" (default: the whole mesh) must name
+//   parts of the mesh. "texture": "auto" (default: baked from the parts) or an image file, relative to
+//   the JSON file's directory, made absolute, and it must exist. "texture_of": another plane of the same
+//   mesh whose texture this one uses; that plane may not itself have a texture_of, nor be solid.
+//   "solid": true (every uv in [0, 1]^2 is shadow) takes neither a texture file nor texture_of. Names
+//   are unique per mesh. Without the key a generated mesh gets its built-in planes
+//   (scenes/BuiltinShadowPlanes.h: aircraft 3, teapot 11, the other generators none) and a model file
+//   none; "shadow_planes": [] means none. A mesh that --model replaces takes no planes along (its
+//   planes were for the replaced geometry): the model has none.
 // - instances: "mesh" (required), "position", "rotation" (Euler degrees), "scale", "color",
 //   "casts_shadow", "receives_shadow". Explicit instances come first, then the layout's.
 // - layout: "mesh", "count" (<= 1000000), "region" required; "seed" (1), "scale" (1), "yaw_only"
