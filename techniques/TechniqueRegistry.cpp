@@ -4,6 +4,7 @@
 #include "reference/ReferenceTechnique.h"
 #include "scenes/Error.h"
 #include "techniques/NoneTechnique.h"
+#include "techniques/OccluderTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
 #include "techniques/SyntheticTechnique.h"
 #include "techniques/VolumeTechnique.h"
@@ -16,6 +17,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
         {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
         {"volume", [] { return std::unique_ptr<Technique>(new VolumeTechnique()); }},
+        {"occluder", [] { return std::unique_ptr<Technique>(new OccluderTechnique()); }},
         {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", [] { return std::unique_ptr<Technique>(new SyntheticTechnique()); }},

@@ -1,0 +1,82 @@
+// `occluder` (Coleman, "Fast Self-Shadowing Using Occluder Textures", section 4 and Appendix A): the
+// vertex stage projects the vertex onto each shadow plane of its mesh along the light (equations 6 and
+// 8) and passes (u, v, s_I) per light and plane; the fragment stage (occluder/lit.frag) looks up the
+// occluder textures. For a directional light u, v and s_I are affine in the vertex position, so the
+// interpolated values are exact; for point lights they are per-vertex approximations.
+//
+// Defines: LIGHT_COUNT, PLANE_COUNT (the most planes any mesh uses, >= 1), LIGHT_PER_INSTANCE (the
+// thesis's proposed optimisation: the light in model space computed once per instance on the CPU;
+// without it every vertex transforms the light into model space, as the thesis's shader does).
+#include "common/frame.glsl"
+#include "common/instance.glsl"
+
+struct OccluderPlane {
+    vec4 origin; // xyz: texture corner (object space); w: texture layer, < 0 for a solid occluder
+    vec4 normal; // xyz: unit normal
+    vec4 right;  // xyz: right / width
+    vec4 up;     // xyz: up / height
+};
+layout(std430, binding = 2) readonly buffer OccluderPlanes {
+    OccluderPlane uPlanes[];
+};
+// Per instance (object id - 1): x = first plane, y = plane count; then, with LIGHT_PER_INSTANCE, the
+// lights in the instance's model space ((direction towards the light, 0) or (position, 1)).
+struct OccluderInstance {
+    uvec4 planes;
+    vec4 light[LIGHT_COUNT];
+};
+layout(std430, binding = 3) readonly buffer OccluderInstances {
+    OccluderInstance uInstances[];
+};
+
+out vec3 vWorldPos;
+out vec3 vNormal;
+out vec4 vColorId;
+out vec4 vOccluder[LIGHT_COUNT * PLANE_COUNT]; // (u, v, s_I, 1 = plane used) per light and plane
+flat out vec4 vLayer[(PLANE_COUNT + 3) / 4];   // texture layer per plane, < 0: solid
+
+// The light in model space, as the thesis's vertex shader computes it for every vertex: instances have
+// uniform scale, so the inverse of mat3(model) is its transpose over the squared scale.
+vec4 lightInModelSpace(int i, mat4 model) {
+    mat3 m = mat3(model);
+    float scale2 = dot(m[0], m[0]);
+    if (uLightPos[i].w == 0.0) return vec4(normalize(transpose(m) * -uLightDir[i].xyz), 0.0);
+    return vec4(transpose(m) * (uLightPos[i].xyz - model[3].xyz) / scale2, 1.0);
+}
+
+void main() {
+    mat4 model = instanceModel();
+    vec4 world = model * vec4(aPosition, 1.0);
+    vWorldPos = world.xyz;
+    vNormal = mat3(model) * aNormal;
+    vColorId = instanceColorId();
+    gl_Position = uViewProj * world;
+
+    OccluderInstance inst = uInstances[int(vColorId.w) - 1];
+    int first = int(inst.planes.x), count = min(int(inst.planes.y), PLANE_COUNT);
+    for (int j = 0; j < PLANE_COUNT; ++j) vLayer[j / 4][j % 4] = j < count ? uPlanes[first + j].origin.w : 0.0;
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
+#ifdef LIGHT_PER_INSTANCE
+        vec4 l = inst.light[i];
+#else
+        vec4 l = lightInModelSpace(i, model);
+#endif
+        // Unit vector towards the light from this vertex (equation 2's L).
+        vec3 towardLight = l.w == 0.0 ? l.xyz : normalize(l.xyz - aPosition);
+        for (int j = 0; j < PLANE_COUNT; ++j) {
+            if (j >= count) {
+                vOccluder[i * PLANE_COUNT + j] = vec4(0.0);
+                continue;
+            }
+            OccluderPlane p = uPlanes[first + j];
+            // Equation 6, its denominator held away from 0 with its sign (ShadowPlane::kMinCosine):
+            // a light parallel to the plane gives a huge but finite s_I, never 0 / 0.
+            float cosine = dot(p.normal.xyz, towardLight);
+            cosine = abs(cosine) < 1e-6 ? (cosine < 0.0 ? -1e-6 : 1e-6) : cosine;
+            float s = dot(p.normal.xyz, p.origin.xyz - aPosition) / cosine;
+            vec3 d = aPosition + s * towardLight - p.origin.xyz; // p(s_I) - o
+            // Equation 8 (from the texture's corner, as Appendix A computes it).
+            vOccluder[i * PLANE_COUNT + j] = vec4(dot(p.right.xyz, d), dot(p.up.xyz, d), s, 1.0);
+        }
+    }
+}

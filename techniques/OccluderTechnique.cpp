@@ -1,0 +1,289 @@
+#include "techniques/OccluderTechnique.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <utility>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/Error.h"
+#include "techniques/OccluderTextures.h"
+
+namespace sb {
+
+namespace {
+constexpr const char* kLightSpace = "light_space";
+constexpr const char* kPlanes = "planes";
+constexpr const char* kResolution = "resolution";
+constexpr const char* kDilate = "dilate";
+constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3; // shaders/occluder/scene.vert
+
+/// Bilinear resample of a single-channel image (loaded textures of another size than `resolution`).
+std::vector<uint8_t> resample(const std::vector<uint8_t>& src, int w, int h, int size) {
+    if (w == size && h == size) return src;
+    std::vector<uint8_t> out(size_t(size) * size_t(size));
+    auto at = [&](int x, int y) {
+        return float(src[size_t(std::clamp(y, 0, h - 1)) * size_t(w) + size_t(std::clamp(x, 0, w - 1))]);
+    };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float fx = (float(x) + 0.5f) * float(w) / float(size) - 0.5f;
+            const float fy = (float(y) + 0.5f) * float(h) / float(size) - 0.5f;
+            const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+            const float tx = fx - float(x0), ty = fy - float(y0);
+            const float v = glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), tx),
+                                     glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), tx), ty);
+            out[size_t(y) * size_t(size) + size_t(x)] = uint8_t(std::lround(std::clamp(v, 0.0f, 255.0f)));
+        }
+    return out;
+}
+/// Whitens the outermost texel ring. Lookups are clamped to [0, 1] (Appendix B), so every projection
+/// that leaves the plane's rectangle reads a border texel: a black border would extend the occluder to
+/// infinity along it (a silhouette or cross-section touching the rectangle's edge does that).
+void clearBorder(std::vector<uint8_t>& texels, int size) {
+    for (int i = 0; i < size; ++i) {
+        texels[size_t(i)] = texels[size_t(size - 1) * size_t(size) + size_t(i)] = 255;
+        texels[size_t(i) * size_t(size)] = texels[size_t(i) * size_t(size) + size_t(size - 1)] = 255;
+    }
+}
+} // namespace
+
+OccluderTechnique::OccluderTechnique()
+    : Technique(
+          {.name = "occluder",
+           .description = "occluder textures on shadow planes: single-pass self-shadowing (Coleman 2006)",
+           // Self-shadowing from each mesh's own planes only: no shadows on other objects or the
+           // ground, and the planes approximate the casters (the thesis's missing shadows).
+           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                      Effect::MultipleLights,
+           .capabilities = {{"GL 4.5", 4, 5, ""}},
+           .passes = {"lighting"},
+           .properties =
+               {
+                   {kLightSpace,
+                    PropertyType::Enum,
+                    "per_vertex",
+                    0,
+                    0,
+                    {"per_vertex", "per_instance"},
+                    "light into model space in every vertex (thesis) or once per instance on the CPU"},
+                   {kPlanes,
+                    PropertyType::Int,
+                    "16",
+                    0,
+                    kMaxPlanes,
+                    {},
+                    "use only the first N shadow planes of each mesh (cost per plane)"},
+                   {kResolution,
+                    PropertyType::Int,
+                    "512",
+                    8,
+                    8192,
+                    {},
+                    "occluder texture size (texels per side; baked and loaded textures alike)"},
+                   {kDilate,
+                    PropertyType::Int,
+                    "0",
+                    0,
+                    64,
+                    {},
+                    "texels the baked silhouette grows by (section 5; measured: 1 texel adds false shadows "
+                    "along edges)"},
+               },
+           .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}}) {}
+
+OccluderTechnique::~OccluderTechnique() {
+    release();
+}
+
+void OccluderTechnique::release() {
+    if (mTextures) glDeleteTextures(1, &mTextures);
+    if (mPlaneBuffer) glDeleteBuffers(1, &mPlaneBuffer);
+    if (mInstanceBuffer) glDeleteBuffers(1, &mInstanceBuffer);
+    mTextures = mPlaneBuffer = mInstanceBuffer = 0;
+    mResolution = mLayers = 0;
+}
+
+void OccluderTechnique::collectPlanes(const Scene& scene) {
+    const int limit = int(properties().getInt(kPlanes));
+    mPlanes.clear();
+    mPlaneSource.clear();
+    mMeshFirst.assign(scene.meshes.size(), 0);
+    mMeshCount.assign(scene.meshes.size(), 0);
+    std::vector<bool> drawn(scene.meshes.size(), false);
+    for (const Instance& inst : scene.instances) drawn[inst.mesh] = true;
+    mPlaneSlots = 1;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        if (!drawn[m]) continue;
+        if (mesh.shadowPlanes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
+            throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(mesh.shadowPlanes.size()) +
+                            " shadow planes; at most " + std::to_string(kMaxPlanes) + " are used per mesh",
+                        ExitCode::Unsupported);
+        const int count = std::min<int>(int(mesh.shadowPlanes.size()), limit);
+        mMeshFirst[m] = uint32_t(mPlanes.size());
+        mMeshCount[m] = uint32_t(count);
+        mPlaneSlots = std::max(mPlaneSlots, count);
+        for (int k = 0; k < count; ++k) {
+            const ShadowPlane& p = mesh.shadowPlanes[size_t(k)];
+            p.validate("occluder: mesh '" + mesh.name + "'");
+            GpuPlane g;
+            g.origin = glm::vec4(p.origin, -1.0f); // layer set in buildTextures
+            g.normal = glm::vec4(p.normal, 0.0f);
+            g.right = glm::vec4(p.right / p.width, 0.0f);
+            g.up = glm::vec4(p.up / p.height, 0.0f);
+            mPlanes.push_back(g);
+            mPlaneSource.emplace_back(int(m), k);
+        }
+    }
+}
+
+void OccluderTechnique::setScene(const Scene& scene) {
+    mScene = &scene;
+    mLights = std::clamp<int>(int(scene.lights.size()), 1, kMaxLights);
+    mPerInstance = properties().getEnum(kLightSpace) == "per_instance";
+    collectPlanes(scene);
+    mInverseModel.clear();
+    for (const Instance& inst : scene.instances) mInverseModel.push_back(glm::inverse(inst.model));
+    // Per instance: (first plane, plane count, 0, 0) as raw bits, then one vec4 per light.
+    const size_t stride = 1 + size_t(mLights);
+    mInstanceData.assign(scene.instances.size() * stride, glm::vec4(0.0f));
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const uint32_t mesh = scene.instances[i].mesh;
+        glm::uvec4 range(mMeshFirst[mesh], mMeshCount[mesh], 0, 0);
+        std::memcpy(&mInstanceData[i * stride], &range, sizeof(range));
+    }
+}
+
+void OccluderTechnique::buildTextures(const CompileContext& ctx) {
+    const int resolution = int(properties().getInt(kResolution));
+    OccluderBakeOptions options;
+    options.resolution = resolution;
+    options.dilate = int(properties().getInt(kDilate));
+    // One layer per texture owner: a plane with its own texture, or the plane another names in
+    // texture_of (the thesis's two tail fins share one), whether or not the owner itself is used.
+    std::map<std::pair<int, int>, int> layerOf;
+    std::vector<std::vector<uint8_t>> layers;
+    for (size_t e = 0; e < mPlanes.size(); ++e) {
+        const auto [m, k] = std::pair<int, int>(mPlaneSource[e].x, mPlaneSource[e].y);
+        const Mesh& mesh = ctx.scene.meshes[size_t(m)];
+        const ShadowPlane& plane = mesh.shadowPlanes[size_t(k)];
+        if (plane.solid) continue; // layer -1: no texture
+        int owner = k;
+        if (!plane.textureOf.empty()) {
+            auto it = std::find_if(mesh.shadowPlanes.begin(), mesh.shadowPlanes.end(),
+                                   [&](const ShadowPlane& p) { return p.name == plane.textureOf; });
+            if (it == mesh.shadowPlanes.end())
+                throw Error("occluder: mesh '" + mesh.name + "': plane '" + plane.name +
+                            "' takes the texture of '" + plane.textureOf + "', which the mesh does not have");
+            owner = int(it - mesh.shadowPlanes.begin());
+        }
+        auto [it, added] = layerOf.emplace(std::make_pair(m, owner), int(layers.size()));
+        if (added) {
+            const ShadowPlane& source = mesh.shadowPlanes[size_t(owner)];
+            const GLuint texture = source.texture == "auto"
+                                       ? OccluderTextures::bake(ctx.programs, mesh, source, options)
+                                       : OccluderTextures::load(source.texture);
+            int w = 0, h = 0;
+            std::vector<uint8_t> texels = OccluderTextures::readBack(texture, w, h);
+            glDeleteTextures(1, &texture);
+            layers.push_back(resample(texels, w, h, resolution));
+            if (source.texture == "auto") clearBorder(layers.back(), resolution);
+            // SB_DUMP_OCCLUDERS=DIR writes every texture as DIR/<mesh>_<plane>.png (to inspect bakes).
+            if (const char* dir = std::getenv("SB_DUMP_OCCLUDERS"))
+                OccluderTextures::write(std::string(dir) + "/" + mesh.name + "_" + source.name + ".png",
+                                        layers.back(), resolution, resolution);
+        }
+        mPlanes[e].origin.w = float(it->second);
+    }
+    if (mTextures) glDeleteTextures(1, &mTextures);
+    mLayers = std::max<int>(1, int(layers.size()));
+    mResolution = resolution;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mTextures);
+    glTextureStorage3D(mTextures, 1, GL_R8, resolution, resolution, mLayers);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (size_t l = 0; l < layers.size(); ++l)
+        glTextureSubImage3D(mTextures, 0, 0, 0, GLint(l), resolution, resolution, 1, GL_RED, GL_UNSIGNED_BYTE,
+                            layers[l].data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // Bilinear magnification (section 5: "enabling bilinear filtering ... minimizes the artifacts");
+    // clamping happens in the shader, as Appendix B does.
+    glTextureParameteri(mTextures, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(mTextures, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(mTextures, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(mTextures, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void OccluderTechnique::compile(const CompileContext& ctx) {
+    GLint components = 0;
+    glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &components);
+    const int needed = 4 * (mLights * mPlaneSlots + (mPlaneSlots + 3) / 4 + 3);
+    if (needed > components)
+        throw Error("occluder: " + std::to_string(mLights) + " lights x " + std::to_string(mPlaneSlots) +
+                        " planes need " + std::to_string(needed) + " vertex output components, '" +
+                        ctx.context.renderer + "' has " + std::to_string(components) +
+                        "; use fewer planes (-t occluder:planes=N) or lights",
+                    ExitCode::Unsupported);
+    buildTextures(ctx);
+    if (!mPlaneBuffer) glCreateBuffers(1, &mPlaneBuffer);
+    if (!mInstanceBuffer) glCreateBuffers(1, &mInstanceBuffer);
+    const GpuPlane none{};
+    glNamedBufferData(mPlaneBuffer, GLsizeiptr(std::max<size_t>(1, mPlanes.size()) * sizeof(GpuPlane)),
+                      mPlanes.empty() ? &none : mPlanes.data(), GL_STATIC_DRAW);
+    glNamedBufferData(mInstanceBuffer,
+                      GLsizeiptr(std::max<size_t>(1, mInstanceData.size()) * sizeof(glm::vec4)), nullptr,
+                      GL_DYNAMIC_DRAW);
+    uploadInstances(false);
+    Defines d = ctx.submitter.defines();
+    d["LIGHT_COUNT"] = std::to_string(mLights);
+    d["PLANE_COUNT"] = std::to_string(mPlaneSlots);
+    if (mPerInstance) d["LIGHT_PER_INSTANCE"] = "";
+    mProgram = &ctx.programs.get({"occluder/scene.vert", "occluder/lit.frag", ""}, d);
+    setPermutationKey(mProgram->key());
+}
+
+void OccluderTechnique::uploadInstances(bool lights) {
+    const size_t stride = 1 + size_t(mLights);
+    if (lights) {
+        // The thesis's proposed optimisation: the light in each instance's model space, once per
+        // instance and frame on the CPU, instead of once per vertex in the shader.
+        for (size_t i = 0; i < mScene->instances.size(); ++i)
+            for (int l = 0; l < mLights && l < int(mScene->lights.size()); ++l) {
+                const Light& light = mScene->lights[size_t(l)];
+                glm::vec4& out = mInstanceData[i * stride + 1 + size_t(l)];
+                if (light.type == LightType::Directional)
+                    out = glm::vec4(
+                        glm::normalize(glm::vec3(mInverseModel[i] * glm::vec4(-light.direction, 0.0f))),
+                        0.0f);
+                else
+                    out = glm::vec4(glm::vec3(mInverseModel[i] * glm::vec4(light.position, 1.0f)), 1.0f);
+            }
+    }
+    if (!mInstanceData.empty())
+        glNamedBufferSubData(mInstanceBuffer, 0, GLsizeiptr(mInstanceData.size() * sizeof(glm::vec4)),
+                             mInstanceData.data());
+}
+
+void OccluderTechnique::execute(FrameContext& ctx) {
+    ctx.submitter.resetStats();
+    ctx.passes.begin("lighting");
+    if (mPerInstance) uploadInstances(true);
+    mProgram->use();
+    glBindTextureUnit(0, mTextures);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPlaneBinding, mPlaneBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, mInstanceBuffer);
+    ctx.submitter.draw(DrawSet::All);
+    glBindTextureUnit(0, 0);
+    const SubmitStats& s = ctx.submitter.stats();
+    double planeInstances = 0;
+    for (const Instance& inst : ctx.scene.instances) planeInstances += mMeshCount[inst.mesh];
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"shadow_planes", planeInstances},
+                 {"occluder_texels", double(mResolution) * mResolution * double(mLayers)}};
+}
+
+} // namespace sb

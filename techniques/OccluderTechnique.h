@@ -1,0 +1,71 @@
+#pragma once
+// `occluder`: single-pass self-shadowing from shadow planes with occluder textures (Coleman, "Fast
+// Self-Shadowing Using Occluder Textures", sections 4-5 and Appendices A-B).
+//
+// Every mesh may carry shadow planes (scenes/ShadowPlane.h: declared in the scene file or built in for
+// the aircraft and the teapot). One pass draws the scene: the vertex stage projects each vertex onto
+// its mesh's planes along the light (equations 6 and 8) and the fragment stage multiplies the occluder
+// texture values where s_I > 0 (shaders/occluder/). An instance is shadowed only by its own mesh's
+// planes, which is the thesis's technique: self-shadowing; receivers without planes (the ground) get no
+// shadow, and the accuracy numbers count that.
+//
+// Occluder textures are baked from the plane's mesh parts (OccluderTextures: the thesis's future work,
+// automated) at `resolution`, or read from the image the scene names, and kept as layers of one
+// texture array so a draw needs no per-mesh binding. Plane data and per-instance records live in two
+// storage buffers indexed by plane and by instance (object id - 1).
+//
+// Properties: light_space per_vertex (every vertex transforms the light into model space, the
+// thesis's shader) or per_instance (the thesis's proposed optimisation: once per instance on the CPU,
+// read by the shader from the instance record); planes (use only the first N planes of each mesh, to
+// sweep the cost per plane); resolution (baked texture size); dilate (texels the baked silhouette is
+// grown by, thesis section 5).
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "techniques/Technique.h"
+
+namespace sb {
+
+class OccluderTechnique final : public Technique {
+public:
+    OccluderTechnique();
+    ~OccluderTechnique() override;
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+    /// Most planes per mesh the vertex stage passes on (varying budget: 16 planes x 1 light).
+    static constexpr int kMaxPlanes = 16;
+
+private:
+    /// std430 mirror of OccluderPlane in shaders/occluder/scene.vert.
+    struct GpuPlane {
+        glm::vec4 origin; ///< w: texture layer, -1 for a solid occluder
+        glm::vec4 normal;
+        glm::vec4 right; ///< right / width
+        glm::vec4 up;    ///< up / height
+    };
+
+    void collectPlanes(const Scene& scene);
+    void buildTextures(const CompileContext& ctx);
+    void uploadInstances(bool lights);
+    void release();
+
+    const Scene* mScene = nullptr;
+    int mLights = 1, mPlaneSlots = 1;
+    bool mPerInstance = false;
+    std::vector<GpuPlane> mPlanes;                ///< every mesh's used planes, contiguous per mesh
+    std::vector<uint32_t> mMeshFirst, mMeshCount; ///< per mesh: range in mPlanes
+    std::vector<glm::ivec2> mPlaneSource;         ///< per entry of mPlanes: mesh, plane index
+    std::vector<glm::mat4> mInverseModel;         ///< per instance (the per_instance light space)
+    std::vector<glm::vec4> mInstanceData;         ///< per instance: (first, count) then the lights
+    GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0;
+    int mResolution = 0, mLayers = 0;
+    const Program* mProgram = nullptr;
+    Counters mCounters;
+};
+
+} // namespace sb
