@@ -188,7 +188,7 @@ def spec_properties(spec):
 def diff_labels(specs):
     """Each configuration named by what differs from the first (the baseline): 'scissor' for a switch
     turned on, 'no scissor' for one turned off, 'mode=auto' otherwise."""
-    _, base = spec_properties(specs[0])
+    baseName, base = spec_properties(specs[0])
     labels = []
     for i, spec in enumerate(specs):
         name, props = spec_properties(spec)
@@ -197,7 +197,10 @@ def diff_labels(specs):
             if base.get(key) == value:
                 continue
             parts.append(key if value == "true" else f"no {key}" if value == "false" else f"{key}={value}")
-        labels.append("baseline" if i == 0 else ", ".join(parts) or name)
+        label = ", ".join(parts)
+        if name != baseName:
+            label = f"{name}: {label}" if label else name
+        labels.append(f"baseline ({name})" if i == 0 else label or name)
     # Long lists wrap so the axis stays readable.
     return ["\n".join(textwrap.wrap(label, 60)) for label in labels]
 
