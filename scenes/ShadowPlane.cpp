@@ -17,6 +17,18 @@ ShadowCoord ShadowPlane::project(const glm::vec3& p0, const glm::vec3& towardLig
     return c;
 }
 
+std::array<glm::vec4, 3> ShadowPlane::textureMatrix(const glm::vec3& towardLight) const {
+    float cosine = glm::dot(normal, towardLight);
+    if (std::abs(cosine) < kMinCosine) cosine = std::signbit(cosine) ? -kMinCosine : kMinCosine;
+    // s(p) = (n.o - n.p) / (n.L); d = p + s(p) L - o; u = (right / width).d, v = (up / height).d.
+    const glm::vec4 s(-normal / cosine, glm::dot(normal, origin) / cosine);
+    auto row = [&](const glm::vec3& axis) {
+        const float along = glm::dot(axis, towardLight);
+        return glm::vec4(axis + along * glm::vec3(s), along * s.w - glm::dot(axis, origin));
+    };
+    return {row(right / width), row(up / height), s};
+}
+
 bool ShadowPlane::solidShadows(const glm::vec3& p0, const glm::vec3& towardLight) const {
     const ShadowCoord c = project(p0, towardLight);
     return c.s > 0.0f && c.uv.x >= 0.0f && c.uv.x <= 1.0f && c.uv.y >= 0.0f && c.uv.y <= 1.0f;

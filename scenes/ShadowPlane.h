@@ -15,6 +15,7 @@
 //
 // This is the CPU form of what shaders/occluder/ computes per vertex; the technique uses it for the
 // per-instance light and the tests use it as the independent answer.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,10 @@ struct ShadowPlane {
 
     /// Equations 6 and 8 for a point p0 and a unit vector L towards the light (object space).
     ShadowCoord project(const glm::vec3& p0, const glm::vec3& towardLight) const;
+    /// For a directional light (unit `towardLight`, object space) u, v and s_I are affine in p0: the
+    /// rows (u, v, s) of the 3x4 "texture matrix" with (u, v, s_I) = rows . (p0, 1), the projection the
+    /// thesis names as future work. Same guard as project().
+    std::array<glm::vec4, 3> textureMatrix(const glm::vec3& towardLight) const;
     /// True when the plane shadows p0 for a solid occluder: s_I > 0 and uv in [0, 1]^2.
     bool solidShadows(const glm::vec3& p0, const glm::vec3& towardLight) const;
 

@@ -19,7 +19,7 @@ constexpr const char* kLightSpace = "light_space";
 constexpr const char* kPlanes = "planes";
 constexpr const char* kResolution = "resolution";
 constexpr const char* kDilate = "dilate";
-constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3; // shaders/occluder/scene.vert
+constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4; // shaders/occluder/scene.vert
 
 /// Bilinear resample of a single-channel image (loaded textures of another size than `resolution`).
 std::vector<uint8_t> resample(const std::vector<uint8_t>& src, int w, int h, int size) {
@@ -68,8 +68,10 @@ OccluderTechnique::OccluderTechnique()
                     "per_vertex",
                     0,
                     0,
-                    {"per_vertex", "per_instance"},
-                    "light into model space in every vertex (thesis) or once per instance on the CPU"},
+                    {"per_vertex", "per_instance", "texture_matrix"},
+                    "light into model space in every vertex (thesis), once per instance on the CPU (its "
+                    "proposal), or equations 6 and 8 folded into a matrix per instance and plane (its "
+                    "future work; directional lights)"},
                    {kPlanes,
                     PropertyType::Int,
                     "16",
@@ -103,7 +105,8 @@ void OccluderTechnique::release() {
     if (mTextures) glDeleteTextures(1, &mTextures);
     if (mPlaneBuffer) glDeleteBuffers(1, &mPlaneBuffer);
     if (mInstanceBuffer) glDeleteBuffers(1, &mInstanceBuffer);
-    mTextures = mPlaneBuffer = mInstanceBuffer = 0;
+    if (mMatrixBuffer) glDeleteBuffers(1, &mMatrixBuffer);
+    mTextures = mPlaneBuffer = mInstanceBuffer = mMatrixBuffer = 0;
     mResolution = mLayers = 0;
 }
 
@@ -144,7 +147,16 @@ void OccluderTechnique::collectPlanes(const Scene& scene) {
 void OccluderTechnique::setScene(const Scene& scene) {
     mScene = &scene;
     mLights = std::clamp<int>(int(scene.lights.size()), 1, kMaxLights);
-    mPerInstance = properties().getEnum(kLightSpace) == "per_instance";
+    const std::string& space = properties().getEnum(kLightSpace);
+    mPerInstance = space == "per_instance";
+    mTextureMatrix = space == "texture_matrix";
+    if (mTextureMatrix)
+        for (const Light& l : scene.lights)
+            if (l.type != LightType::Directional)
+                throw Error(
+                    "occluder: light_space=texture_matrix needs directional lights (for a point light the "
+                    "projection onto a plane is not affine in the vertex); use per_instance",
+                    ExitCode::Unsupported);
     collectPlanes(scene);
     mInverseModel.clear();
     for (const Instance& inst : scene.instances) mInverseModel.push_back(glm::inverse(inst.model));
@@ -230,6 +242,13 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
     buildTextures(ctx);
     if (!mPlaneBuffer) glCreateBuffers(1, &mPlaneBuffer);
     if (!mInstanceBuffer) glCreateBuffers(1, &mInstanceBuffer);
+    if (mTextureMatrix) {
+        if (!mMatrixBuffer) glCreateBuffers(1, &mMatrixBuffer);
+        mMatrices.assign(mScene->instances.size() * size_t(mLights * mPlaneSlots) * 3, glm::vec4(0.0f));
+        glNamedBufferData(mMatrixBuffer,
+                          GLsizeiptr(std::max<size_t>(1, mMatrices.size()) * sizeof(glm::vec4)), nullptr,
+                          GL_DYNAMIC_DRAW);
+    }
     const GpuPlane none{};
     glNamedBufferData(mPlaneBuffer, GLsizeiptr(std::max<size_t>(1, mPlanes.size()) * sizeof(GpuPlane)),
                       mPlanes.empty() ? &none : mPlanes.data(), GL_STATIC_DRAW);
@@ -241,6 +260,7 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
     d["LIGHT_COUNT"] = std::to_string(mLights);
     d["PLANE_COUNT"] = std::to_string(mPlaneSlots);
     if (mPerInstance) d["LIGHT_PER_INSTANCE"] = "";
+    if (mTextureMatrix) d["TEXTURE_MATRIX"] = "";
     mProgram = &ctx.programs.get({"occluder/scene.vert", "occluder/lit.frag", ""}, d);
     setPermutationKey(mProgram->key());
 }
@@ -267,10 +287,37 @@ void OccluderTechnique::uploadInstances(bool lights) {
                              mInstanceData.data());
 }
 
+void OccluderTechnique::uploadMatrices() {
+    // Per instance, light and used plane: equations 6 and 8 as one affine map (ShadowPlane::
+    // textureMatrix), from the light in the instance's model space. The CPU work the vertex stage saves.
+    const size_t slots = size_t(mPlaneSlots);
+    for (size_t i = 0; i < mScene->instances.size(); ++i) {
+        const uint32_t mesh = mScene->instances[i].mesh;
+        for (int l = 0; l < mLights && l < int(mScene->lights.size()); ++l) {
+            const glm::vec3 toward = glm::normalize(
+                glm::vec3(mInverseModel[i] * glm::vec4(-mScene->lights[size_t(l)].direction, 0.0f)));
+            for (uint32_t j = 0; j < mMeshCount[mesh]; ++j) {
+                const glm::ivec2 src = mPlaneSource[mMeshFirst[mesh] + j];
+                const auto rows =
+                    mScene->meshes[size_t(src.x)].shadowPlanes[size_t(src.y)].textureMatrix(toward);
+                const size_t base = ((i * size_t(mLights) + size_t(l)) * slots + j) * 3;
+                std::copy(rows.begin(), rows.end(), mMatrices.begin() + std::ptrdiff_t(base));
+            }
+        }
+    }
+    if (!mMatrices.empty())
+        glNamedBufferSubData(mMatrixBuffer, 0, GLsizeiptr(mMatrices.size() * sizeof(glm::vec4)),
+                             mMatrices.data());
+}
+
 void OccluderTechnique::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     ctx.passes.begin("lighting");
     if (mPerInstance) uploadInstances(true);
+    if (mTextureMatrix) {
+        uploadMatrices();
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMatrixBinding, mMatrixBuffer);
+    }
     mProgram->use();
     glBindTextureUnit(0, mTextures);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPlaneBinding, mPlaneBuffer);

@@ -15,8 +15,10 @@
 // storage buffers indexed by plane and by instance (object id - 1).
 //
 // Properties: light_space per_vertex (every vertex transforms the light into model space, the
-// thesis's shader) or per_instance (the thesis's proposed optimisation: once per instance on the CPU,
-// read by the shader from the instance record); planes (use only the first N planes of each mesh, to
+// thesis's shader), per_instance (the thesis's proposed optimisation: once per instance on the CPU,
+// read by the shader from the instance record) or texture_matrix (its future work: for directional
+// lights equations 6 and 8 folded on the CPU into one 3x4 matrix per instance and plane, three dot
+// products per plane in the vertex stage); planes (use only the first N planes of each mesh, to
 // sweep the cost per plane); resolution (baked texture size); dilate (texels the baked silhouette is
 // grown by, thesis section 5).
 #include <vector>
@@ -52,17 +54,19 @@ private:
     void collectPlanes(const Scene& scene);
     void buildTextures(const CompileContext& ctx);
     void uploadInstances(bool lights);
+    void uploadMatrices();
     void release();
 
     const Scene* mScene = nullptr;
     int mLights = 1, mPlaneSlots = 1;
-    bool mPerInstance = false;
+    bool mPerInstance = false, mTextureMatrix = false;
     std::vector<GpuPlane> mPlanes;                ///< every mesh's used planes, contiguous per mesh
     std::vector<uint32_t> mMeshFirst, mMeshCount; ///< per mesh: range in mPlanes
     std::vector<glm::ivec2> mPlaneSource;         ///< per entry of mPlanes: mesh, plane index
     std::vector<glm::mat4> mInverseModel;         ///< per instance (the per_instance light space)
     std::vector<glm::vec4> mInstanceData;         ///< per instance: (first, count) then the lights
-    GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0;
+    std::vector<glm::vec4> mMatrices;             ///< texture_matrix: 3 rows per instance, light, plane
+    GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0, mMatrixBuffer = 0;
     int mResolution = 0, mLayers = 0;
     const Program* mProgram = nullptr;
     Counters mCounters;

@@ -113,6 +113,17 @@ TEST(OccluderGLTest, BakedPlateShadowMatchesTheClosedForm) {
     for (size_t i = 0; i < perVertex.size(); i += 4)
         differ += std::abs(perVertex[i] - perInstance[i]) > 0.02f;
     EXPECT_LE(differ, 20u) << "pixels whose visibility differs between per_vertex and per_instance";
+    // The texture matrix (the thesis's future work) folds the same equations into an affine map: the
+    // same shadow, judged against the closed form and compared with per_vertex alike.
+    std::vector<float> matrix;
+    const Judged c = judge(
+        scene, "occluder:resolution=256:light_space=texture_matrix",
+        [](const glm::dvec3& p) { return squareMargin(p, -0.5, 0.5); }, band, &matrix);
+    EXPECT_EQ(c.wrong, 0);
+    EXPECT_EQ(c.shadowed > 100, true);
+    differ = 0;
+    for (size_t i = 0; i < perVertex.size(); i += 4) differ += std::abs(perVertex[i] - matrix[i]) > 0.02f;
+    EXPECT_LE(differ, 20u) << "pixels whose visibility differs between per_vertex and texture_matrix";
 }
 
 TEST(OccluderGLTest, SolidPlaneShadowsItsRectangle) {

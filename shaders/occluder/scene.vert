@@ -6,7 +6,10 @@
 //
 // Defines: LIGHT_COUNT, PLANE_COUNT (the most planes any mesh uses, >= 1), LIGHT_PER_INSTANCE (the
 // thesis's proposed optimisation: the light in model space computed once per instance on the CPU;
-// without it every vertex transforms the light into model space, as the thesis's shader does).
+// without it every vertex transforms the light into model space, as the thesis's shader does),
+// TEXTURE_MATRIX (the thesis's future work, "texture matrices to perform the projection": for a
+// directional light (u, v, s_I) are affine in the vertex, so the CPU folds equations 6 and 8 into one
+// 3x4 matrix per instance, light and plane and the vertex stage does three dot products per plane).
 #include "common/frame.glsl"
 #include "common/instance.glsl"
 
@@ -28,6 +31,14 @@ struct OccluderInstance {
 layout(std430, binding = 3) readonly buffer OccluderInstances {
     OccluderInstance uInstances[];
 };
+
+#ifdef TEXTURE_MATRIX
+// Per instance, light and plane: rows u, v, s of the affine map, at
+// ((instance * LIGHT_COUNT + light) * PLANE_COUNT + plane) * 3.
+layout(std430, binding = 4) readonly buffer OccluderMatrices {
+    vec4 uMatrices[];
+};
+#endif
 
 out vec3 vWorldPos;
 out vec3 vNormal;
@@ -55,6 +66,17 @@ void main() {
     OccluderInstance inst = uInstances[int(vColorId.w) - 1];
     int first = int(inst.planes.x), count = min(int(inst.planes.y), PLANE_COUNT);
     for (int j = 0; j < PLANE_COUNT; ++j) vLayer[j / 4][j % 4] = j < count ? uPlanes[first + j].origin.w : 0.0;
+#ifdef TEXTURE_MATRIX
+    int instanceIndex = int(vColorId.w) - 1;
+    vec4 p1 = vec4(aPosition, 1.0);
+    for (int i = 0; i < LIGHT_COUNT; ++i)
+        for (int j = 0; j < PLANE_COUNT; ++j) {
+            int m = ((instanceIndex * LIGHT_COUNT + i) * PLANE_COUNT + j) * 3;
+            vOccluder[i * PLANE_COUNT + j] = j < count ? vec4(dot(uMatrices[m], p1), dot(uMatrices[m + 1], p1),
+                                                              dot(uMatrices[m + 2], p1), 1.0)
+                                                       : vec4(0.0);
+        }
+#else
     for (int i = 0; i < LIGHT_COUNT; ++i) {
 #ifdef LIGHT_PER_INSTANCE
         vec4 l = inst.light[i];
@@ -79,4 +101,5 @@ void main() {
             vOccluder[i * PLANE_COUNT + j] = vec4(dot(p.right.xyz, d), dot(p.up.xyz, d), s, 1.0);
         }
     }
+#endif
 }
