@@ -253,6 +253,7 @@ void addLidPlanes(std::vector<ShadowPlane>& planes, const Mesh& mesh, const glm:
     knob.extend(g.knobRadius, g.knobRadius);
     planes.push_back(rectanglePlane("lid_knob", knobCentre, g.axis, sideRight, glm::cross(g.axis, sideRight),
                                     knob, knob.margin(), {"lid"}));
+    planes.back().sectionOnly = true; // the disc of the knob's widest ring, not the dome's silhouette
 }
 
 void addSpoutPlanes(std::vector<ShadowPlane>& planes, const Mesh& mesh, const glm::vec3& teapotUp) {

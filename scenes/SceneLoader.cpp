@@ -179,7 +179,7 @@ std::string planeTexture(const Context& ctx, const JsonReader& r) {
 
 ShadowPlane parseShadowPlane(const Context& ctx, const JsonReader& r, const Mesh& mesh) {
     r.requireObject({"name", "origin", "normal", "right", "up", "width", "height", "solid", "parts",
-                     "texture", "texture_of"});
+                     "texture", "texture_of", "section_only"});
     ShadowPlane plane;
     plane.name = r["name"].string();
     if (plane.name.empty()) r["name"].fail("a non-empty name");
@@ -190,6 +190,7 @@ ShadowPlane parseShadowPlane(const Context& ctx, const JsonReader& r, const Mesh
     plane.width = r["width"].positiveNumber();
     plane.height = r["height"].positiveNumber();
     if (r.has("solid")) plane.solid = r["solid"].boolean();
+    if (r.has("section_only")) plane.sectionOnly = r["section_only"].boolean();
     if (r.has("parts")) {
         for (const auto& e : r["parts"].elements()) {
             const std::string part = e.string();

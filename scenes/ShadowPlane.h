@@ -51,6 +51,10 @@ struct ShadowPlane {
     /// Non-empty: use the texture of the named plane of the same mesh (the thesis's two tail fins
     /// share one); the two planes' frames must map the shared silhouette alike.
     std::string textureOf;
+    /// Bake the plane's cross-section with the solid only, not the parts' orthographic silhouette: for
+    /// a plane standing for the part of a solid it cuts (the teapot knob's widest ring, whose lid dome
+    /// below would fill the silhouette).
+    bool sectionOnly = false;
 
     /// Below this |n . L| (unit vectors: the cosine between the light and the plane, ~6e-5 degrees
     /// from parallel) the denominator of equation 6 is held at +-kMinCosine: s_I stays finite (huge),

@@ -196,8 +196,10 @@ void OccluderTechnique::buildTextures(const CompileContext& ctx) {
         auto [it, added] = layerOf.emplace(std::make_pair(m, owner), int(layers.size()));
         if (added) {
             const ShadowPlane& source = mesh.shadowPlanes[size_t(owner)];
+            OccluderBakeOptions planeOptions = options;
+            planeOptions.silhouette = !source.sectionOnly;
             const GLuint texture = source.texture == "auto"
-                                       ? OccluderTextures::bake(ctx.programs, mesh, source, options)
+                                       ? OccluderTextures::bake(ctx.programs, mesh, source, planeOptions)
                                        : OccluderTextures::load(source.texture);
             int w = 0, h = 0;
             std::vector<uint8_t> texels = OccluderTextures::readBack(texture, w, h);

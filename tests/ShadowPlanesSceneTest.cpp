@@ -524,7 +524,7 @@ TEST(ShadowPlanesSceneTest, DeclaredPlanesRoundTrip) {
        "up": [0.8, 0, -0.6], "width": 2.5, "height": 0.75, "solid": false, "parts": ["wings", "fuselage"],
        "texture": "tex/../tex/fin.png"},
       {"name": "twin", "origin": [0, 0, 0], "normal": [0, 0, 1], "right": [1, 0, 0], "up": [0, 1, 0],
-       "width": 1, "height": 2, "texture_of": "top"},
+       "width": 1, "height": 2, "texture_of": "top", "section_only": true},
       {"name": "block", "origin": [0, 1, 0], "normal": [1, 0, 0], "right": [0, 0, -1], "up": [0, 1, 0],
        "width": 0.5, "height": 0.25, "solid": true, "texture": "auto", "parts": ["fin_left"]}])";
     const Scene s = SceneLoader::load(writeAircraftScene(dir, planes));
@@ -542,7 +542,9 @@ TEST(ShadowPlanesSceneTest, DeclaredPlanesRoundTrip) {
     EXPECT_TRUE(fs::path(top.texture).is_absolute()) << top.texture;
     EXPECT_EQ(top.texture, fs::absolute(fs::path(dir) / "tex/fin.png").lexically_normal().string());
     EXPECT_TRUE(top.textureOf.empty());
+    EXPECT_FALSE(top.sectionOnly);
     const ShadowPlane& twin = m.shadowPlanes[1];
+    EXPECT_TRUE(twin.sectionOnly);
     EXPECT_EQ(twin.textureOf, "top");
     EXPECT_EQ(twin.texture, "auto");
     EXPECT_TRUE(twin.parts.empty()); // the whole mesh
