@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/Error.h"
+#include "scenes/Math.h"
 #include "techniques/OccluderTextures.h"
 
 namespace sb {
@@ -19,6 +20,8 @@ constexpr const char* kLightSpace = "light_space";
 constexpr const char* kPlanes = "planes";
 constexpr const char* kResolution = "resolution";
 constexpr const char* kDilate = "dilate";
+constexpr const char* kReceivers = "receivers";
+constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6;               // shaders/occluder/lit.frag
 constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4; // shaders/occluder/scene.vert
 
 /// Bilinear resample of a single-channel image (loaded textures of another size than `resolution`).
@@ -94,6 +97,14 @@ OccluderTechnique::OccluderTechnique()
                     {},
                     "texels the baked silhouette grows by (section 5; measured: 1 texel adds false shadows "
                     "along edges)"},
+                   {kReceivers,
+                    PropertyType::Enum,
+                    "self",
+                    0,
+                    0,
+                    {"self", "all"},
+                    "self: each mesh shadowed by its own planes (the thesis); all: also by other instances' "
+                    "planes, per fragment in world space (shadows on the ground and other objects)"},
                },
            .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}}) {}
 
@@ -106,7 +117,9 @@ void OccluderTechnique::release() {
     if (mPlaneBuffer) glDeleteBuffers(1, &mPlaneBuffer);
     if (mInstanceBuffer) glDeleteBuffers(1, &mInstanceBuffer);
     if (mMatrixBuffer) glDeleteBuffers(1, &mMatrixBuffer);
-    mTextures = mPlaneBuffer = mInstanceBuffer = mMatrixBuffer = 0;
+    if (mWorldPlaneBuffer) glDeleteBuffers(1, &mWorldPlaneBuffer);
+    if (mCandidateBuffer) glDeleteBuffers(1, &mCandidateBuffer);
+    mTextures = mPlaneBuffer = mInstanceBuffer = mMatrixBuffer = mWorldPlaneBuffer = mCandidateBuffer = 0;
     mResolution = mLayers = 0;
 }
 
@@ -160,6 +173,8 @@ void OccluderTechnique::setScene(const Scene& scene) {
     collectPlanes(scene);
     mInverseModel.clear();
     for (const Instance& inst : scene.instances) mInverseModel.push_back(glm::inverse(inst.model));
+    mReceiveAll = properties().getEnum(kReceivers) == "all";
+    if (mReceiveAll) collectCandidates(scene);
     // Per instance: (first plane, plane count, 0, 0) as raw bits, then one vec4 per light.
     const size_t stride = 1 + size_t(mLights);
     mInstanceData.assign(scene.instances.size() * stride, glm::vec4(0.0f));
@@ -168,6 +183,105 @@ void OccluderTechnique::setScene(const Scene& scene) {
         glm::uvec4 range(mMeshFirst[mesh], mMeshCount[mesh], 0, 0);
         std::memcpy(&mInstanceData[i * stride], &range, sizeof(range));
     }
+}
+
+namespace {
+/// 2D bounds of a box's corners in the basis (a, b) perpendicular to the light, and its extent along d.
+struct LightSpaceBounds {
+    glm::vec2 lo{1e30f}, hi{-1e30f};
+    float nearest = 1e30f, farthest = -1e30f; ///< along d, the direction the light travels
+};
+LightSpaceBounds lightSpace(const Aabb& box, const glm::vec3& a, const glm::vec3& b, const glm::vec3& d) {
+    LightSpaceBounds r;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 c((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                          (i & 4) ? box.max.z : box.min.z);
+        const glm::vec2 q(glm::dot(a, c), glm::dot(b, c));
+        r.lo = glm::min(r.lo, q);
+        r.hi = glm::max(r.hi, q);
+        r.nearest = std::min(r.nearest, glm::dot(d, c));
+        r.farthest = std::max(r.farthest, glm::dot(d, c));
+    }
+    return r;
+}
+} // namespace
+
+void OccluderTechnique::collectCandidates(const Scene& scene) {
+    // receivers=all: for every receiver instance, the other instances whose planes may shadow it. For
+    // directional lights a caster can only shadow a receiver whose bounds its own bounds overlap seen
+    // along the light, and only if some of the caster lies before some of the receiver along it; point
+    // and spot lights keep every pair (their shadows diverge; conservative). Instance planes are in the
+    // world list in instance order, so a candidate is an instance (its planes are contiguous).
+    const size_t n = scene.instances.size();
+    std::vector<Aabb> bounds(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Instance& inst = scene.instances[i];
+        for (const glm::vec3& p : scene.meshes[inst.mesh].positions)
+            bounds[i].extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+    }
+    bool directional = !scene.lights.empty();
+    for (const Light& l : scene.lights) directional = directional && l.type == LightType::Directional;
+    mCandidates.clear();
+    mCandidateRange.assign(n, glm::uvec2(0));
+    std::vector<std::vector<LightSpaceBounds>> views;
+    std::vector<glm::vec3> dirs;
+    if (directional)
+        for (const Light& l : scene.lights) {
+            const glm::vec3 d = glm::normalize(l.direction);
+            const glm::vec3 e1 = glm::normalize(glm::cross(anyPerpendicularUp(d), d)), e2 = glm::cross(d, e1);
+            std::vector<LightSpaceBounds> v(n);
+            for (size_t i = 0; i < n; ++i) v[i] = lightSpace(bounds[i], e1, e2, d);
+            views.push_back(std::move(v));
+        }
+    for (size_t r = 0; r < n; ++r) {
+        mCandidateRange[r].x = uint32_t(mCandidates.size());
+        for (size_t c = 0; c < n; ++c) {
+            if (c == r || mMeshCount[scene.instances[c].mesh] == 0) continue;
+            bool may = !directional;
+            for (const auto& v : views) {
+                const LightSpaceBounds &rc = v[r], &cc = v[c];
+                may = may || (cc.lo.x <= rc.hi.x && rc.lo.x <= cc.hi.x && cc.lo.y <= rc.hi.y &&
+                              rc.lo.y <= cc.hi.y && cc.nearest <= rc.farthest);
+            }
+            if (may) mCandidates.push_back(uint32_t(c));
+        }
+        mCandidateRange[r].y = uint32_t(mCandidates.size()) - mCandidateRange[r].x;
+    }
+}
+
+void OccluderTechnique::uploadWorldPlanes() {
+    // Every instance's planes in world space (instances have uniform scale: M = T R s), in the units
+    // of equations 6 and 8: u = (R right).(p - M o) / (s width).
+    std::vector<GpuPlane> world;
+    mInstancePlaneFirst.assign(mScene->instances.size(), 0);
+    for (size_t i = 0; i < mScene->instances.size(); ++i) {
+        const Instance& inst = mScene->instances[i];
+        mInstancePlaneFirst[i] = uint32_t(world.size());
+        const glm::mat3 m(inst.model);
+        const float scale = glm::length(m[0]);
+        for (uint32_t j = 0; j < mMeshCount[inst.mesh]; ++j) {
+            const GpuPlane& p = mPlanes[mMeshFirst[inst.mesh] + j];
+            GpuPlane w;
+            w.origin = glm::vec4(glm::vec3(inst.model * glm::vec4(glm::vec3(p.origin), 1.0f)), p.origin.w);
+            w.normal = glm::vec4(glm::normalize(m * glm::vec3(p.normal)), 0.0f);
+            w.right = glm::vec4(m * glm::vec3(p.right) / (scale * scale), 0.0f);
+            w.up = glm::vec4(m * glm::vec3(p.up) / (scale * scale), 0.0f);
+            world.push_back(w);
+        }
+    }
+    // Candidates as (first world plane, plane count) pairs after the per-instance ranges.
+    std::vector<glm::uvec2> table(mCandidateRange);
+    for (uint32_t c : mCandidates)
+        table.emplace_back(mInstancePlaneFirst[c], mMeshCount[mScene->instances[c].mesh]);
+    if (!mWorldPlaneBuffer) glCreateBuffers(1, &mWorldPlaneBuffer);
+    if (!mCandidateBuffer) glCreateBuffers(1, &mCandidateBuffer);
+    const GpuPlane none{};
+    glNamedBufferData(mWorldPlaneBuffer, GLsizeiptr(std::max<size_t>(1, world.size()) * sizeof(GpuPlane)),
+                      world.empty() ? &none : world.data(), GL_STATIC_DRAW);
+    const glm::uvec2 zero(0);
+    glNamedBufferData(mCandidateBuffer, GLsizeiptr(std::max<size_t>(1, table.size()) * sizeof(glm::uvec2)),
+                      table.empty() ? &zero : table.data(), GL_STATIC_DRAW);
+    mWorldPlanes = world.size();
 }
 
 void OccluderTechnique::buildTextures(const CompileContext& ctx) {
@@ -263,6 +377,11 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
     d["PLANE_COUNT"] = std::to_string(mPlaneSlots);
     if (mPerInstance) d["LIGHT_PER_INSTANCE"] = "";
     if (mTextureMatrix) d["TEXTURE_MATRIX"] = "";
+    if (mReceiveAll) {
+        d["RECEIVE_OTHERS"] = "";
+        d["INSTANCE_COUNT"] = std::to_string(std::max<size_t>(1, mScene->instances.size()));
+        uploadWorldPlanes();
+    }
     mProgram = &ctx.programs.get({"occluder/scene.vert", "occluder/lit.frag", ""}, d);
     setPermutationKey(mProgram->key());
 }
@@ -324,6 +443,10 @@ void OccluderTechnique::execute(FrameContext& ctx) {
     glBindTextureUnit(0, mTextures);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPlaneBinding, mPlaneBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, mInstanceBuffer);
+    if (mReceiveAll) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorldPlaneBinding, mWorldPlaneBuffer);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCandidateBinding, mCandidateBuffer);
+    }
     ctx.submitter.draw(DrawSet::All);
     glBindTextureUnit(0, 0);
     const SubmitStats& s = ctx.submitter.stats();
@@ -332,7 +455,8 @@ void OccluderTechnique::execute(FrameContext& ctx) {
     mCounters = {{"draw_calls", double(s.drawCalls)},
                  {"triangles", double(s.triangles)},
                  {"shadow_planes", planeInstances},
-                 {"occluder_texels", double(mResolution) * mResolution * double(mLayers)}};
+                 {"occluder_texels", double(mResolution) * mResolution * double(mLayers)},
+                 {"receiver_candidates", double(mCandidates.size())}};
 }
 
 } // namespace sb

@@ -19,8 +19,9 @@
 // read by the shader from the instance record) or texture_matrix (its future work: for directional
 // lights equations 6 and 8 folded on the CPU into one 3x4 matrix per instance and plane, three dot
 // products per plane in the vertex stage); planes (use only the first N planes of each mesh, to
-// sweep the cost per plane); resolution (baked texture size); dilate (texels the baked silhouette is
-// grown by, thesis section 5).
+// sweep the cost per plane); receivers (self, the thesis; all: every receiver also tests the planes of
+// the other instances that may shadow it, per fragment in world space); resolution (baked texture size);
+// dilate (texels the baked silhouette is grown by, thesis section 5).
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -55,18 +56,25 @@ private:
     void buildTextures(const CompileContext& ctx);
     void uploadInstances(bool lights);
     void uploadMatrices();
+    void collectCandidates(const Scene& scene);
+    void uploadWorldPlanes();
     void release();
 
     const Scene* mScene = nullptr;
     int mLights = 1, mPlaneSlots = 1;
-    bool mPerInstance = false, mTextureMatrix = false;
+    bool mPerInstance = false, mTextureMatrix = false, mReceiveAll = false;
+    // receivers=all: per receiver instance (first, count) into mCandidates (caster instances).
+    std::vector<glm::uvec2> mCandidateRange;
+    std::vector<uint32_t> mCandidates, mInstancePlaneFirst;
+    size_t mWorldPlanes = 0;
     std::vector<GpuPlane> mPlanes;                ///< every mesh's used planes, contiguous per mesh
     std::vector<uint32_t> mMeshFirst, mMeshCount; ///< per mesh: range in mPlanes
     std::vector<glm::ivec2> mPlaneSource;         ///< per entry of mPlanes: mesh, plane index
     std::vector<glm::mat4> mInverseModel;         ///< per instance (the per_instance light space)
     std::vector<glm::vec4> mInstanceData;         ///< per instance: (first, count) then the lights
     std::vector<glm::vec4> mMatrices;             ///< texture_matrix: 3 rows per instance, light, plane
-    GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0, mMatrixBuffer = 0;
+    GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0, mMatrixBuffer = 0, mWorldPlaneBuffer = 0,
+           mCandidateBuffer = 0;
     int mResolution = 0, mLayers = 0;
     const Program* mProgram = nullptr;
     Counters mCounters;

@@ -165,3 +165,30 @@ TEST(OccluderGLTest, LoadedTextureShadowsOnlyItsDarkHalf) {
     EXPECT_GT(j.judged, 10000);
     EXPECT_EQ(j.wrong, 0) << "of " << j.judged;
 }
+
+TEST(OccluderGLTest, ReceiversAllCastsOntoOtherInstances) {
+    // The plate alone is one mesh (with the plane), the floor another instance of a generated plane:
+    // with receivers=self the floor gets no shadow at all (the thesis's self-shadowing), with
+    // receivers=all it gets the plate's, judged against the same closed form in world space.
+    const std::string dir = test::freshTestDir("occluder");
+    test::writeFile(dir + "/plate.obj", "v -0.5 1 -0.5\nv 0.5 1 -0.5\nv 0.5 1 0.5\nv -0.5 1 0.5\n"
+                                        "g plate\nf 1 4 3\nf 1 3 2\n");
+    const std::string scene = dir + "/scene.json";
+    test::writeFile(scene, std::string(R"({"name": "plate_ground",
+  "meshes": [{"name": "plate", "file": "plate.obj", "shadow_planes": [)") +
+                               kPlanePlate + R"(]},
+             {"name": "ground", "generator": "plane", "size": 6, "tessellation": 4}],
+  "instances": [{"mesh": "plate", "position": [0, 0, 0]},
+                {"mesh": "ground", "position": [0, 0, 0], "casts_shadow": false}],
+  "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}],
+  "cameras": [{"name": "top", "eye": [0, 8, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov": 60,
+               "near": 0.5, "far": 50}]})");
+    auto margin = [](const glm::dvec3& p) { return squareMargin(p, -0.5, 0.5); };
+    const double band = 2.0 / 256.0 * 1.1;
+    const Judged self = judge(scene, "occluder:resolution=256", margin, band);
+    EXPECT_EQ(self.shadowed, 0) << "receivers=self must not shadow another instance";
+    const Judged all = judge(scene, "occluder:resolution=256:receivers=all", margin, band);
+    EXPECT_GT(all.judged, 10000);
+    EXPECT_GT(all.shadowed, 100);
+    EXPECT_EQ(all.wrong, 0) << "of " << all.judged;
+}

@@ -11,6 +11,8 @@ in vec4 vColorId;
 in vec4 vOccluder[LIGHT_COUNT * PLANE_COUNT];
 flat in vec4 vLayer[(PLANE_COUNT + 3) / 4];
 layout(binding = 0) uniform sampler2DArray uOccluders;
+
+
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
@@ -20,6 +22,49 @@ float planeVisibility(vec4 c, float layer) {
     return texture(uOccluders, vec3(clamp(c.xy, 0.0, 1.0), layer)).r;
 }
 
+#ifdef RECEIVE_OTHERS
+// receivers=all: every instance's planes in world space (same layout as OccluderPlane in scene.vert),
+// and per receiver instance a (first, count) range of candidate casters, each a (first world plane,
+// plane count) pair stored after the INSTANCE_COUNT ranges.
+struct WorldPlane {
+    vec4 origin; // w: texture layer, < 0 solid
+    vec4 normal;
+    vec4 right;  // right / width (world units)
+    vec4 up;     // up / height
+};
+layout(std430, binding = 5) readonly buffer OccluderWorldPlanes {
+    WorldPlane uWorldPlanes[];
+};
+layout(std430, binding = 6) readonly buffer OccluderCandidates {
+    uvec2 uCandidates[];
+};
+
+// Equations 6 and 8 per fragment, in world space, for a plane of another instance.
+float worldPlaneVisibility(WorldPlane p, vec3 pos, vec3 towardLight) {
+    float cosine = dot(p.normal.xyz, towardLight);
+    cosine = abs(cosine) < 1e-6 ? (cosine < 0.0 ? -1e-6 : 1e-6) : cosine;
+    float s = dot(p.normal.xyz, p.origin.xyz - pos) / cosine;
+    if (s <= 0.0) return 1.0;
+    vec3 d = pos + s * towardLight - p.origin.xyz;
+    vec2 uv = vec2(dot(p.right.xyz, d), dot(p.up.xyz, d));
+    // Outside the rectangle no fetch: a baked texture's border is clear there anyway, and another
+    // instance's loaded image does not stretch its border across the scene.
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    return planeVisibility(vec4(uv, s, 1.0), p.origin.w);
+}
+
+float othersVisibility(int light) {
+    uvec2 range = uCandidates[int(vColorId.w) - 1];
+    vec3 towardLight = toLight(light, vWorldPos);
+    float v = 1.0;
+    for (uint k = 0u; k < range.y && v > 0.0; ++k) {
+        uvec2 planes = uCandidates[uint(INSTANCE_COUNT) + range.x + k];
+        for (uint j = 0u; j < planes.y; ++j) v *= worldPlaneVisibility(uWorldPlanes[planes.x + j], vWorldPos, towardLight);
+    }
+    return v;
+}
+#endif
+
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
@@ -28,6 +73,9 @@ void main() {
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         float v = 1.0;
         for (int j = 0; j < PLANE_COUNT; ++j) v *= planeVisibility(vOccluder[i * PLANE_COUNT + j], vLayer[j / 4][j % 4]);
+#ifdef RECEIVE_OTHERS
+        v *= othersVisibility(i);
+#endif
         visibility[i] = v;
         light += v * lightTerm(i, vWorldPos, n);
     }
