@@ -1,5 +1,5 @@
 #pragma once
-// A shadow proxy of the ShadowProxies technique (Ritsema van Eck, "ShadowProxies", OpenGL Insights,
+// A shadow proxy of the ShadowProxies technique (van der Spek, "ShadowProxies", OpenGL Insights,
 // sections 1.2-1.5): an analytic sphere, box or cylinder standing for an object, whose influence
 // volume (the points within ProxyOffset of its surface) darkens and tints receivers.
 //
