@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ShadowPlane.h"
+#include "scenes/ShadowProxy.h"
 
 namespace sb {
 
@@ -46,6 +47,11 @@ struct Mesh {
     /// Occluder-texture shadow planes in object space (the `occluder` technique): declared per mesh in
     /// the scene file or built in for generated content (scenes/BuiltinShadowPlanes.h).
     std::vector<ShadowPlane> shadowPlanes;
+    /// ShadowProxies in object space (the `proxy` technique), declared per mesh in the scene file
+    /// ("proxies"); when not declared (proxiesDeclared false) the technique fits the tightest sphere,
+    /// box or cylinder to each instance (ShadowProxy::fit). Declared and empty: the mesh has none.
+    std::vector<ShadowProxy> proxies;
+    bool proxiesDeclared = false;
 
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return indices.size() / 3; }

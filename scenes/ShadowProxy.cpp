@@ -1,5 +1,7 @@
 #include "scenes/ShadowProxy.h"
 
+#include "scenes/Mesh.h"
+
 #include <algorithm>
 #include <cmath>
 

@@ -17,16 +17,20 @@
 
 #include <glm/glm.hpp>
 
-#include "scenes/Mesh.h"
 
 namespace sb {
+
+struct Mesh;
 
 struct ShadowProxy {
     enum class Shape { Sphere, Box, Cylinder };
     Shape shape = Shape::Sphere;
     glm::mat4 frame{1.0f};      ///< unit shape -> world (position, orientation, size)
     glm::vec3 diffuse{0.5f};    ///< colour of the object (colour bleeding)
-    glm::vec3 reflective{0.0f}; ///< reflective colour (bleeding towards the light's far side)
+    glm::vec3 reflective{0.0f}; ///< colour reflected whatever the light's direction (ambient bleeding)
+    /// Fitted proxies, and declared ones without "diffuse", take the colour of the instance they stand
+    /// for (so a mesh's proxy can be declared once for differently coloured instances).
+    bool diffuseFromInstance = true;
 
     /// Listing 1.1: the nearest point on the proxy's surface to `p` (world space). Points inside the
     /// box or cylinder map to themselves (distance 0: fully inside the influence volume). The sphere's

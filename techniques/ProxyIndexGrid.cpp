@@ -35,7 +35,8 @@ void ProxyIndexGrid::build(const std::vector<ShadowProxy>& proxies, const glm::m
     mIndices.assign(cells * size_t(mCapacity), 0u);
     mCounts.assign(cells, 0u);
     mVisible.clear();
-    mOverflow = 0;
+    mOverflow = mEntries = 0;
+    mMaxCount = 0;
     for (uint32_t i = 0; i < proxies.size(); ++i) {
         std::array<glm::vec4, 8> clip;
         const std::array<glm::vec4, 8> corners = influenceCorners(proxies[i], proxyOffset);
@@ -77,6 +78,8 @@ void ProxyIndexGrid::build(const std::vector<ShadowProxy>& proxies, const glm::m
                     continue;
                 }
                 mIndices[c * size_t(mCapacity) + mCounts[c]++] = index + 1;
+                ++mEntries;
+                mMaxCount = std::max(mMaxCount, mCounts[c]);
             }
     }
 }

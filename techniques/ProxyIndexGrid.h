@@ -40,6 +40,9 @@ public:
     }
     /// (Proxy, cell) pairs that did not fit because the cell was full, since the last build().
     uint64_t overflow() const { return mOverflow; }
+    /// Indices stored over all cells, and the most in one cell, since the last build().
+    uint64_t entries() const { return mEntries; }
+    uint32_t maxCount() const { return mMaxCount; }
     /// The GPU layout: per cell `capacity` entries, each a visible index + 1, 0 ending the list (the
     /// chapter's convention: 0 means no more proxies).
     const std::vector<uint32_t>& texels() const { return mIndices; }
@@ -47,7 +50,8 @@ public:
 private:
     std::vector<uint32_t> mVisible, mIndices, mCounts;
     int mCellsX = 0, mCellsY = 0, mCapacity = 0;
-    uint64_t mOverflow = 0;
+    uint64_t mOverflow = 0, mEntries = 0;
+    uint32_t mMaxCount = 0;
 };
 
 } // namespace sb

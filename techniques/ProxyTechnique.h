@@ -1,0 +1,75 @@
+#pragma once
+// `proxy`: ShadowProxies (van der Spek, "ShadowProxies", OpenGL Insights): analytic sphere, box and
+// cylinder volumes around the casters darken (and tint) the receivers within ProxyOffset of them.
+// Soft, "infinitely soft" shadows and colour bleeding for a diffusely lit scene; not exact shadows.
+//
+// The pipeline of section 1.3, per frame:
+//   1. the proxies: declared per mesh in the scene file (Mesh::proxies) or fitted to each caster
+//      instance (ShadowProxy::fit: the tightest of sphere, box, cylinder), world frames precomputed in
+//      setScene (instances do not move);
+//   2. clipped against the view frustum and numbered, and 3. the IndexMap built (ProxyIndexGrid: the
+//      viewport split into cells x cells, each proxy's index in every cell its projected influence
+//      box overlaps), both on the CPU inside the timed frame as the chapter does;
+//   4. the parameters of the proxies in view and the IndexMap uploaded to two storage buffers, and the
+//      scene drawn once with the proxy-enabled fragment shader (shaders/proxy/lit.frag: Listings
+//      1.1-1.4, the self-shadow skip).
+//
+// Past the chapter: indices are 32-bit (its bytes capped them at 255); the cell capacity and grid size
+// are properties and a proxy that does not fit a full cell is counted (counter `grid_overflow`, and a
+// warning once), never silently dropped; grid=off tests every proxy in view (the grid's value,
+// measured); the exponent shapes the attenuation as section 1.2 describes (exponent_on=factor
+// reproduces Listing 1.3 as printed); multiple coloured lights each get their own modulated shadow
+// (the chapter's suggested extension). Colour bleeding is compiled in only when the scene asks for
+// colour_bleeding, the directional modulation only when the scene has a light to modulate towards.
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "scenes/ShadowProxy.h"
+#include "techniques/ProxyIndexGrid.h"
+#include "techniques/Technique.h"
+
+namespace sb {
+
+class ProxyTechnique final : public Technique {
+public:
+    ProxyTechnique();
+    ~ProxyTechnique() override;
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+    /// The world-space proxies of `scene` as the technique uses them: per caster instance its mesh's
+    /// declared proxies through the instance's model, or the fitted one (`fitAll`: ignore
+    /// declarations). Frames are made invertible (sanitizeFrame). Public for tests.
+    static std::vector<ShadowProxy> collect(const Scene& scene, bool fitAll, std::vector<uint32_t>* owners);
+    /// A frame whose columns (the scaled axes) have zero or near-zero length gets `minimum`-long axes
+    /// there, perpendicular to the others: a zero-radius sphere becomes a point-sized one, a box with
+    /// zero extent on one axis a flat one. Its inverse is then finite. Everything else is unchanged.
+    static glm::mat4 sanitizeFrame(const glm::mat4& frame, float minimum);
+
+private:
+    /// std430 mirror of `struct Proxy` in shaders/proxy/lit.frag.
+    struct GpuProxy {
+        glm::mat4 toLocal, toWorld;
+        glm::vec4 diffuse;    ///< w: shape
+        glm::vec4 reflective; ///< w: owner object id
+    };
+    void uploadFrame(FrameContext& ctx);
+    void release();
+
+    std::vector<ShadowProxy> mProxies; ///< world space, every caster's
+    std::vector<GpuProxy> mRecords;    ///< per entry of mProxies
+    std::vector<GpuProxy> mInView;     ///< this frame's upload, in the grid's numbering
+    ProxyIndexGrid mGrid;
+    bool mUseGrid = true, mModulate = false, mBleed = false, mWarnedOverflow = false;
+    int mLights = 1, mCells = 64, mCapacity = 16;
+    GLuint mProxyBuffer = 0, mIndexBuffer = 0;
+    size_t mProxyCapacity = 0, mIndexCapacity = 0; ///< buffer sizes in elements
+    const Program* mProgram = nullptr;
+    Counters mCounters;
+};
+
+} // namespace sb

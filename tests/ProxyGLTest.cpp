@@ -1,0 +1,259 @@
+// `proxy` against closed forms. A ball of radius R at height H over a floor (the floor casts nothing):
+// the fitted proxy is that sphere (the sphere mesh's vertices lie on it, the sphere is the tightest
+// fit), so at a floor point p the distance to the proxy is |p - c| - R, the direction the shadow is
+// cast along is (p - c) / |p - c|, and Listings 1.3 and 1.4 give the visibility in closed form:
+//   v = 1 - clamp(pow(1 - min(d / offset, 1), falloff) * shadow * clamp(dot(L, n), cutoff, 1), 0, 1).
+// Every floor pixel is judged at the world position unprojected from the depth buffer.
+// Tolerance 2e-3: the position the test unprojects and the one the rasteriser interpolates agree to
+// ~1e-5 units (float matrices, 24-bit depth at 8 units), which moves v by ~1e-5 / offset; the rest is
+// headroom for the shader's float arithmetic. A wrong sign of the modulation, a missing exponent or a
+// proxy dropped by the grid moves v by far more than that on hundreds of pixels.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/Harness.h"
+#include "scenes/Math.h"
+#include "techniques/ProxyTechnique.h"
+
+using namespace sb;
+
+namespace {
+
+constexpr int kSize = 192;
+constexpr double kRadius = 0.5, kHeight = 1.2;
+
+/// Floor [-3, 3]^2 at y = 0 (receives, casts nothing) and a ball at (0, kHeight, 0); `lights` and
+/// `effects` are JSON arrays.
+std::string writeScene(const std::string& dir, const std::string& lights, const std::string& effects) {
+    const std::string path = dir + "/scene.json";
+    test::writeFile(path, R"({"name": "ball_floor",
+  "meshes": [{"name": "ball", "generator": "sphere", "radius": 0.5, "tessellation": 24},
+             {"name": "floor", "generator": "plane", "size": 6, "tessellation": 1}],
+  "instances": [{"mesh": "floor", "position": [0, 0, 0], "casts_shadow": false, "color": [0.5, 0.5, 0.5]},
+                {"mesh": "ball", "position": [0, 1.2, 0], "color": [0.9, 0.2, 0.1]}],
+  "lights": )" + lights + R"(,
+  "effects": )" + effects + R"(,
+  "cameras": [{"name": "top", "eye": [0, 8, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov": 50,
+               "near": 0.5, "far": 50}]})");
+    return path;
+}
+
+const char* kOneLight = R"([{"type": "directional", "direction": [0.4, -1, 0.1]}])";
+
+struct Frame {
+    std::vector<float> visibility;
+    std::vector<unsigned char> colour;
+    std::vector<glm::vec4> world;
+    std::string permutation;
+    Counters counters;
+};
+
+Frame render(const std::string& scene, const std::string& spec) {
+    Harness h(test::quickConfig(scene, "top", kSize));
+    auto t = std::make_unique<ProxyTechnique>();
+    t->properties().apply(TechniqueSpec::parse(spec).properties);
+    h.prepare(*t);
+    h.renderFrame(*t);
+    Frame f;
+    f.visibility = h.targets().readVisibilityRGBA32F();
+    f.colour = h.targets().readColorRGBA8();
+    const glm::mat4 viewProj = cameraProjection(h.camera(), 1.0f) * cameraView(h.camera());
+    f.world = test::unprojectDepth(h.targets().readDepth(), kSize, kSize, viewProj);
+    f.permutation = t->permutationKey();
+    f.counters = t->counters();
+    return f;
+}
+
+struct Shading {
+    double offset = 1.0, shadow = 1.0, falloff = 1.0, cutoff = 0.0;
+    bool exponentOnFactor = false, modulate = true;
+};
+
+/// The closed form at floor point p for a light travelling along `travel`.
+double expected(const glm::dvec3& p, const glm::dvec3& travel, const Shading& s) {
+    const glm::dvec3 c(0.0, kHeight, 0.0);
+    const double d = std::max(glm::length(p - c) - kRadius, 0.0);
+    if (d > s.offset) return 1.0;
+    const double base = s.offset > 0.0 ? 1.0 - std::min(d / s.offset, 1.0) : (d <= 0.0 ? 1.0 : 0.0);
+    double shadow =
+        s.exponentOnFactor ? base * std::pow(s.shadow, s.falloff) : std::pow(base, s.falloff) * s.shadow;
+    if (s.modulate)
+        shadow *= std::clamp(glm::dot(glm::normalize(travel), glm::normalize(p - c)), s.cutoff, 1.0);
+    return 1.0 - std::clamp(shadow, 0.0, 1.0);
+}
+
+bool isFloor(const glm::vec4& w) {
+    return w.w != 0.0f && std::abs(w.y) < 1e-3f;
+}
+
+/// Largest |visibility - closed form| over floor pixels, channel `light`; `shadowed` counts v < 0.99.
+double worstError(const Frame& f, int light, const glm::dvec3& travel, const Shading& s, int* shadowed) {
+    double worst = 0.0;
+    *shadowed = 0;
+    for (size_t i = 0; i < f.world.size(); ++i) {
+        if (!isFloor(f.world[i])) continue;
+        const double v = f.visibility[i * 4 + size_t(light)];
+        EXPECT_TRUE(std::isfinite(v));
+        *shadowed += v < 0.99;
+        worst = std::max(worst, std::abs(v - expected(glm::dvec3(f.world[i]), travel, s)));
+    }
+    return worst;
+}
+
+const glm::dvec3 kTravel(0.4, -1.0, 0.1);
+
+} // namespace
+
+TEST(ProxyGLTest, ModulatedShadowMatchesTheClosedForm) {
+    const std::string scene = writeScene(test::freshTestDir("proxy"), kOneLight, "[]");
+    Shading s;
+    s.offset = 2.0;
+    int shadowed = 0;
+    const Frame grid = render(scene, "proxy:offset=2");
+    EXPECT_LT(worstError(grid, 0, kTravel, s, &shadowed), 2e-3);
+    // The halo reaches the floor (d = 0.7 under the ball against offset 2): thousands of pixels.
+    EXPECT_GT(shadowed, 1000);
+    // The ball's own pixels are skipped by its own proxy (Listing 1.2's self-shadow test): fully lit.
+    for (size_t i = 0; i < grid.world.size(); ++i)
+        if (grid.world[i].w != 0.0f && grid.world[i].y > 0.5f) EXPECT_EQ(grid.visibility[i * 4], 1.0f);
+    // grid=off tests the same proxy in every fragment: the same image, bit for bit.
+    const Frame brute = render(scene, "proxy:offset=2:grid=false");
+    EXPECT_EQ(grid.visibility, brute.visibility);
+    EXPECT_NE(grid.permutation.find("PROXY_GRID"), std::string::npos);
+    EXPECT_EQ(brute.permutation.find("PROXY_GRID"), std::string::npos);
+}
+
+TEST(ProxyGLTest, FalloffCutoffAndTheListingAsPrinted) {
+    const std::string scene = writeScene(test::freshTestDir("proxy"), kOneLight, "[]");
+    int shadowed = 0;
+    Shading a;
+    a.offset = 1.5, a.falloff = 2.5, a.shadow = 0.8, a.cutoff = 0.3;
+    EXPECT_LT(worstError(render(scene, "proxy:offset=1.5:falloff=2.5:shadow=0.8:cutoff=0.3"), 0, kTravel, a,
+                         &shadowed),
+              2e-3);
+    EXPECT_GT(shadowed, 500);
+    Shading b = a;
+    b.exponentOnFactor = true;
+    EXPECT_LT(
+        worstError(render(scene, "proxy:offset=1.5:falloff=2.5:shadow=0.8:cutoff=0.3:exponent_on=factor"), 0,
+                   kTravel, b, &shadowed),
+        2e-3);
+    Shading c;
+    c.offset = 2.0, c.modulate = false;
+    EXPECT_LT(worstError(render(scene, "proxy:offset=2:modulate=off"), 0, kTravel, c, &shadowed), 2e-3);
+}
+
+TEST(ProxyGLTest, OffsetZeroAndTinyAreFiniteAndLit) {
+    // ProxyOffset 0 (the listing divides by it) and 1e-9: the volume shrinks to the surface, which no
+    // floor point touches: every floor pixel lit, nothing NaN.
+    const std::string scene = writeScene(test::freshTestDir("proxy"), kOneLight, "[]");
+    for (const char* spec : {"proxy:offset=0", "proxy:offset=1e-9"}) {
+        const Frame f = render(scene, spec);
+        for (size_t i = 0; i < f.world.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(f.visibility[i * 4])) << spec;
+            if (isFloor(f.world[i])) EXPECT_EQ(f.visibility[i * 4], 1.0f) << spec;
+        }
+    }
+}
+
+TEST(ProxyGLTest, EachColouredLightGetsItsOwnModulatedShadow) {
+    const std::string scene =
+        writeScene(test::freshTestDir("proxy"),
+                   R"([{"type": "directional", "direction": [0.4, -1, 0.1], "color": [1, 0.5, 0.2]},
+                                             {"type": "directional", "direction": [-0.6, -1, -0.3], "color": [0.2, 0.4, 1]}])",
+                   "[]");
+    const Frame f = render(scene, "proxy:offset=2");
+    Shading s;
+    s.offset = 2.0;
+    int shadowed0 = 0, shadowed1 = 0;
+    EXPECT_LT(worstError(f, 0, kTravel, s, &shadowed0), 2e-3);
+    EXPECT_LT(worstError(f, 1, glm::dvec3(-0.6, -1.0, -0.3), s, &shadowed1), 2e-3);
+    EXPECT_GT(shadowed0, 1000);
+    EXPECT_GT(shadowed1, 1000);
+    // The two shadows lean opposite ways: the channels must differ somewhere by a lot.
+    double most = 0.0;
+    for (size_t i = 0; i < f.world.size(); ++i)
+        if (isFloor(f.world[i]))
+            most = std::max<double>(most, std::abs(f.visibility[i * 4] - f.visibility[i * 4 + 1]));
+    EXPECT_GT(most, 0.3);
+}
+
+TEST(ProxyGLTest, ColourBleedingOnlyWhenTheSceneAsksAndTowardsTheLight) {
+    // Bleeding adds bleed * pow(base, falloff) * max(clamp(dot(-L, n), cutoff, 1), 0) * ball colour *
+    // light colour to the floor's light, times the floor's albedo 0.5: compared with the same frame
+    // without bleeding in 8-bit colour (tolerance 2/255: two roundings of the colour target).
+    const std::string dir = test::freshTestDir("proxy");
+    // A low light: the floor on its side of the ball faces the ball's lit half within the offset.
+    const char* low = R"([{"type": "directional", "direction": [1, -0.3, 0]}])";
+    const std::string plain = writeScene(dir, low, "[]");
+    const Frame without = render(plain, "proxy:offset=2:bleed=0.8");
+    EXPECT_EQ(without.permutation.find("PROXY_BLEED"), std::string::npos) << "compiled in unasked";
+    const std::string asked = writeScene(test::freshTestDir("proxy"), low, R"(["colour_bleeding"])");
+    const Frame with = render(asked, "proxy:offset=2:bleed=0.8");
+    EXPECT_NE(with.permutation.find("PROXY_BLEED"), std::string::npos);
+    EXPECT_EQ(with.visibility, without.visibility) << "bleeding must not change visibility";
+    const glm::dvec3 ball(0.9, 0.2, 0.1), c(0.0, kHeight, 0.0), toLight = -glm::normalize(glm::dvec3(1.0, -0.3, 0.0));
+    int judged = 0, tinted = 0;
+    double worst = 0.0;
+    for (size_t i = 0; i < with.world.size(); ++i) {
+        if (!isFloor(with.world[i])) continue;
+        const glm::dvec3 p(with.world[i]);
+        const double d = std::max(glm::length(p - c) - kRadius, 0.0);
+        const double base = 1.0 - std::min(d / 2.0, 1.0);
+        const double towards = std::max(std::clamp(glm::dot(toLight, glm::normalize(p - c)), 0.0, 1.0), 0.0);
+        for (int ch = 0; ch < 3; ++ch) {
+            const double added = 0.5 * 0.8 * base * towards * ball[ch];
+            const double got =
+                (double(with.colour[i * 4 + size_t(ch)]) - double(without.colour[i * 4 + size_t(ch)])) /
+                255.0;
+            // Saturated pixels cannot show what was added.
+            if (with.colour[i * 4 + size_t(ch)] == 255) continue;
+            worst = std::max(worst, std::abs(got - added));
+            ++judged;
+            tinted += ch == 0 && got > 0.05;
+        }
+    }
+    EXPECT_GT(judged, 10000);
+    EXPECT_GT(tinted, 200) << "the red ball bleeds red onto the floor on the light's side";
+    EXPECT_LT(worst, 2.5 / 255.0);
+}
+
+TEST(ProxyGLTest, GridOverflowIsCountedAndIndicesPass255) {
+    // 300 balls crowded under the camera (all in the middle cells): with capacity 4 most cells overflow
+    // (counted, not silent); with capacity 400 nothing does, and the image equals grid=off's (indices above
+    // 255 reach the shader intact: the chapter's bytes would wrap them onto other proxies).
+    const std::string dir = test::freshTestDir("proxy");
+    std::string instances = R"({"mesh": "floor", "position": [0, 0, 0], "casts_shadow": false})";
+    for (int i = 0; i < 300; ++i)
+        instances += R"(, {"mesh": "ball", "position": [)" + std::to_string(-0.15 + 0.001 * i) + ", 0.6, " +
+                     std::to_string(0.05 * std::sin(i * 0.7)) + R"(], "scale": 0.2})";
+    const std::string path = dir + "/many.json";
+    test::writeFile(path, R"({"name": "many",
+  "meshes": [{"name": "ball", "generator": "sphere", "radius": 0.5, "tessellation": 8},
+             {"name": "floor", "generator": "plane", "size": 6, "tessellation": 1}],
+  "instances": [)" + instances +
+                              R"(],
+  "lights": [{"type": "directional", "direction": [0, -1, 0]}],
+  "cameras": [{"name": "top", "eye": [0, 8, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov": 50,
+               "near": 0.5, "far": 50}]})");
+    auto counter = [](const Frame& f, const std::string& name) {
+        for (const auto& [k, v] : f.counters)
+            if (k == name) return v;
+        ADD_FAILURE() << "no counter " << name;
+        return -1.0;
+    };
+    const Frame small = render(path, "proxy:offset=1:capacity=4");
+    EXPECT_EQ(counter(small, "proxies_in_view"), 300.0);
+    EXPECT_GT(counter(small, "grid_overflow"), 0.0);
+    const Frame big = render(path, "proxy:offset=1:capacity=400");
+    EXPECT_EQ(counter(big, "grid_overflow"), 0.0);
+    EXPECT_GT(counter(big, "grid_max_per_cell"), 255.0) << "the case must put more than 255 in one cell";
+    const Frame brute = render(path, "proxy:offset=1:grid=false");
+    EXPECT_EQ(big.visibility, brute.visibility);
+    EXPECT_NE(small.visibility, brute.visibility) << "overflowed cells must lose shadow (and say so)";
+}
