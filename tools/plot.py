@@ -24,6 +24,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 METRIC_LABELS = {
@@ -108,6 +109,7 @@ def lines(args):
         if col not in df.columns:
             sys.exit(f"plot.py: {args.csv}: column '{col}' missing")
     facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
+    fits = []
     fig, axes = plt.subplots(1, len(facets), figsize=(6.5 * len(facets), 4.8), dpi=120, squeeze=False)
     for ax, facet in zip(axes[0], facets):
         part = df if facet is None else df[df[args.facet] == facet]
@@ -118,8 +120,16 @@ def lines(args):
             if stats["count"].max() <= 1 and args.y == "wall_ms_median" and "wall_ms_p5" in group.columns:
                 pct = group.groupby(args.x)[["wall_ms_p5", "wall_ms_p95"]].median().sort_index()
                 lo, hi = stats["median"] - pct["wall_ms_p5"], pct["wall_ms_p95"] - stats["median"]
-            ax.errorbar(stats.index, stats["median"], yerr=[lo.clip(lower=0), hi.clip(lower=0)], marker="o",
-                        ms=4, capsize=3, label=" ".join(str(k) for k in key))
+            label = " ".join(str(k) for k in key)
+            if args.fit and len(stats) >= 2:
+                fit = linear_fit(stats.index.to_numpy(float), stats["median"].to_numpy(float))
+                fits.append({"facet": "" if facet is None else facet, "series": label, **fit})
+                label += f"  (fit {fit['slope']:.4g}/unit, R² {fit['r2']:.3f})"
+            line = ax.errorbar(stats.index, stats["median"], yerr=[lo.clip(lower=0), hi.clip(lower=0)], marker="o",
+                               ms=4, capsize=3, label=label)
+            if args.fit and len(stats) >= 2:
+                xs = stats.index.to_numpy(float)
+                ax.plot(xs, fit["intercept"] + fit["slope"] * xs, "--", lw=0.8, color=line[0].get_color())
         ax.set_xlabel(args.x)
         ax.set_ylabel(args.ylabel or args.y)
         if args.logx:
@@ -133,6 +143,19 @@ def lines(args):
     first = df.iloc[0]
     fig.suptitle(args.title or f"{args.y} against {args.x} ({first.get('renderer', '')})", fontsize=10)
     save(fig, args.out, f"{len(df)} rows")
+    if args.fit:
+        # The fit of each line, for write-ups: y = intercept + slope * x over the medians.
+        pd.DataFrame(fits).to_csv(args.out + "_fit.csv", index=False, float_format="%.6g")
+        print(f"plot.py: wrote {args.out}_fit.csv ({len(fits)} fits)")
+
+
+def linear_fit(x, y):
+    """Least squares y = a + b x, with R^2 (1 when the medians lie on the line)."""
+    b, a = np.polyfit(x, y, 1)
+    residual = y - (a + b * x)
+    total = ((y - y.mean()) ** 2).sum()
+    r2 = 1.0 - (residual ** 2).sum() / total if total > 0 else 1.0
+    return {"intercept": a, "slope": b, "r2": r2, "points": len(x)}
 
 
 def bottleneck(args):
@@ -235,7 +258,11 @@ def bars(args):
                     if "status" in everyPart.columns else "no data"
                 ax.text(0, i, f"  {status} (not measured)", va="center", fontsize=7, color="#a33")
             else:
-                ax.text(v, i, f"  {v:.1f} ms  ({base / v:.2f}x)", va="center", fontsize=7)
+                if args.y.startswith(("wall_ms", "cpu_ms", "gpu_ms")):
+                    ax.text(v, i, f"  {v:.1f} ms  ({base / v:.2f}x)", va="center", fontsize=7)
+                else:  # an error or a count: the value and its share of the baseline's
+                    ax.text(v, i, f"  {v:.4g}  ({v / base:.2f} of baseline)" if base else f"  {v:.4g}",
+                            va="center", fontsize=7)
         ax.set_xlim(0, med.max() * 1.35)
         ax.set_xlabel(args.ylabel or args.y)
         ax.grid(True, axis="x", alpha=0.3)
@@ -276,6 +303,8 @@ def main():
     q.add_argument("--title", default="")
     q.add_argument("--logx", action="store_true")
     q.add_argument("--logy", action="store_true")
+    q.add_argument("--fit", action="store_true",
+                   help="least-squares line per series (dashed), slope and R² in the legend, written to OUT_fit.csv")
     b = sub.add_parser("bottleneck", help="bottleneck classification (the _classes.csv of bench bottleneck)")
     b.add_argument("csv", nargs=1)
     b.add_argument("--out", required=True)
