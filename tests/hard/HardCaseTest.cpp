@@ -176,6 +176,32 @@ const HardCase kCases[] = {
      "(3.98%, 2.27%; 1.14% / 0.67% at the origin) at (1e5, 0, 1e5) the rasterised positions snap to 7.8 mm "
      "while the planes' coordinates stay exact in object space, so shadow edges and pixels disagree by ~1 "
      "px"},
+    // ShadowProxies (issue 7). Proxies approximate soft shadows: against the hard reference they miss
+    // shadow cast far along the light and add halo where none is, so the bounds are the measured,
+    // deterministic errors with ~25% headroom (they are what the technique is, not noise); the rows
+    // exist for the sanity counts (no NaN at ProxyOffset 0, up close, with 300+ proxies) and to pin
+    // the errors so a change that moves them is seen.
+    {"proxy_ball", "proxy_ball", "top", "proxy", 384, 1.2, 1.0, 3, 3, 3,
+     "(0.925%, 0.799% off edge; 0/0/0): the ball's halo under it stays above v = 0.5 (d = 0.5 of offset "
+     "1), so hard-wise the shadow the reference casts along the light is missed: the same as `none`"},
+    {"proxy_offset_0", "proxy_ball", "top", "proxy:offset=0", 384, 1.2, 1.0, 3, 3, 3,
+     "(0.925%, 0.799%): ProxyOffset 0, which Listing 1.3 divides by, shrinks the volume to the surface: "
+     "no halo, no NaN"},
+    {"proxy_offset_1em9", "proxy_ball", "top", "proxy:offset=1e-9", 384, 1.2, 1.0, 3, 3, 3,
+     "(0.925%, 0.799%): ProxyOffset 1e-9: d / offset overflows to the clamp, no Inf reaches the image"},
+    {"proxy_closeup_1em4", "proxy_ball", "closeup", "proxy:offset=2", 384, 0.05, 0.01, 3, 3, 3,
+     "(0 wrong: the halo's v = 0.77 is lit, like the reference): the camera 1e-4 above the ground with a "
+     "1e-5 near plane; ProxyGLTest.InfinitelySoftUpClose checks the values against the closed form"},
+    {"proxy_influence_boundary", "proxy_ball", "boundary", "proxy:offset=2", 384, 0.05, 0.01, 3, 3, 3,
+     "(0 wrong, RMSE 0.003): 0.05 above the edge of the influence volume, where the halo reaches 1"},
+    {"proxy_300_over_capacity", "proxy_many", "top", "proxy", 384, 23.0, 19.5, 3, 3, 3,
+     "(18.43%, 15.50% off edge; 1.15/0.07/1.12): 320 proxies in view, up to ~20 halos per cell against "
+     "the default capacity 16: 20088 entries counted as grid_overflow (ProxyGLTest checks the counter); "
+     "the halos between the balls are mostly false shadow"},
+    {"proxy_300_capacity_512", "proxy_many", "top", "proxy:capacity=512", 384, 23.0, 19.5, 3, 3, 3,
+     "(18.44%, 15.51%; 1.17/0.07/1.11): room for every proxy: the same image as grid=off"},
+    {"proxy_300_capacity_4", "proxy_many", "top", "proxy:capacity=4", 384, 19.0, 11.0, 3, 3, 3,
+     "(14.99%, 8.50%): four per cell drop most halos (counted): less false shadow, fewer true ones"},
 };
 
 class HardCases : public ::testing::TestWithParam<HardCase> {};
