@@ -8,11 +8,13 @@
 #include <map>
 #include <set>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "scenes/BuiltinShadowPlanes.h"
 #include "scenes/Error.h"
 #include "scenes/JsonReader.h"
+#include "scenes/Math.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/ModelLoader.h"
 #include "scenes/Paths.h"
@@ -67,18 +69,19 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
     // (a "radius" on a box) is reported instead of ignored.
     auto tess = [&](int fallback) { return tessellationFor(ctx, m, generator, fallback); };
     if (generator == "sphere") {
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "radius"});
+        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation", "radius"});
         Mesh mesh = MeshGenerators::sphere(tess(16));
         if (m.has("radius")) scaleMesh(mesh, glm::vec3(m["radius"].positiveNumber()));
         return mesh;
     }
     if (generator == "box") {
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "half_extent"});
+        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation", "half_extent"});
         return MeshGenerators::box(m.has("half_extent") ? m["half_extent"].positiveVec3() : glm::vec3(1.0f),
                                    tess(1));
     }
     if (generator == "cylinder") {
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "radius", "height"});
+        m.requireObject(
+            {"name", "generator", "shadow_planes", "proxies", "tessellation", "radius", "height"});
         Mesh mesh = MeshGenerators::cylinder(tess(16));
         const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
         const float height = m.has("height") ? m["height"].positiveNumber() : 2.0f;
@@ -86,15 +89,15 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
         return mesh;
     }
     if (generator == "plane") {
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "size"});
+        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation", "size"});
         return MeshGenerators::plane(m.has("size") ? m["size"].positiveNumber() : 100.0f, tess(16));
     }
     if (generator == "aircraft") {
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation"});
+        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation"});
         return MeshGenerators::aircraft(tess(16));
     }
     if (generator == "teapot") {
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation"});
+        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation"});
         const std::string path = Paths::findResource(kTeapotResource);
         if (path.empty()) m["generator"].error(std::string("cannot find ") + kTeapotResource);
         return MeshGenerators::teapot(path, tess(8));
@@ -102,7 +105,8 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generat
     if (generator == "lantern") {
         // "radius" (outer) and "thickness" (the shell's, radius - thickness is the inner radius) in
         // scene units; the generator builds outer radius 1, so the thickness is divided by the radius.
-        m.requireObject({"name", "generator", "shadow_planes", "tessellation", "radius", "thickness"});
+        m.requireObject(
+            {"name", "generator", "shadow_planes", "proxies", "tessellation", "radius", "thickness"});
         const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
         const float thickness = m.has("thickness") ? m["thickness"].positiveNumber() : 0.08f;
         if (!(thickness < radius)) {
@@ -130,7 +134,7 @@ Mesh generateMesh(Context& ctx, const JsonReader& m, const std::string& generato
 }
 
 Mesh loadModelMesh(const Context& ctx, const JsonReader& m) {
-    m.requireObject({"name", "file", "shadow_planes"});
+    m.requireObject({"name", "file", "shadow_planes", "proxies"});
     fs::path path = m["file"].string();
     if (path.is_relative()) path = fs::path(ctx.source).parent_path() / path;
     try {
@@ -254,6 +258,47 @@ std::vector<ShadowPlane> parseShadowPlanes(const Context& ctx, const JsonReader&
     return planes;
 }
 
+/// A colour [r, g, b] with every channel in [0, 1].
+glm::vec3 colour(const JsonReader& r) {
+    const glm::vec3 c = r.vec3();
+    if (glm::any(glm::lessThan(c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(c, glm::vec3(1.0f))))
+        r.fail("a colour with channels in [0, 1]");
+    return c;
+}
+
+/// One entry of a mesh's "proxies" (object space): frame = T(position) * Rx * Ry * Rz * S(size).
+ShadowProxy parseProxy(const JsonReader& r) {
+    r.requireObject({"shape", "position", "rotation", "size", "diffuse", "reflective"});
+    ShadowProxy p;
+    const std::string shape = r["shape"].string();
+    if (shape == "sphere")
+        p.shape = ShadowProxy::Shape::Sphere;
+    else if (shape == "box")
+        p.shape = ShadowProxy::Shape::Box;
+    else if (shape == "cylinder")
+        p.shape = ShadowProxy::Shape::Cylinder;
+    else
+        r["shape"].fail("one of sphere, box, cylinder");
+    if (!r.has("size")) r.error("missing \"size\" (radii / half extents; a number or [x, y, z])");
+    // Zero sizes are allowed (the technique makes degenerate proxies point- or sheet-like); negative
+    // ones are errors.
+    const JsonReader sz = r["size"];
+    glm::vec3 size(0.0f);
+    if (sz.value().is_number()) {
+        size = glm::vec3(sz.nonNegativeNumber());
+    } else {
+        size = sz.vec3();
+        if (glm::any(glm::lessThan(size, glm::vec3(0.0f)))) sz.fail("sizes >= 0");
+    }
+    const glm::vec3 position = r.has("position") ? r["position"].vec3() : glm::vec3(0.0f);
+    const glm::vec3 rotation = r.has("rotation") ? r["rotation"].vec3() : glm::vec3(0.0f);
+    p.frame = composeTransform(position, rotation, 1.0f) * glm::scale(glm::mat4(1.0f), size);
+    p.diffuseFromInstance = !r.has("diffuse");
+    if (r.has("diffuse")) p.diffuse = colour(r["diffuse"]);
+    if (r.has("reflective")) p.reflective = colour(r["reflective"]);
+    return p;
+}
+
 void parseMesh(Context& ctx, const JsonReader& m) {
     if (!m.value().is_object()) m.fail("an object");
     const std::string name = m["name"].string();
@@ -272,6 +317,11 @@ void parseMesh(Context& ctx, const JsonReader& m) {
         } catch (const Error& e) {
             m["generator"].error(e.what());
         }
+    }
+    // Proxies (the `proxy` technique) in the mesh's object space; [] means none, no key: fitted.
+    if (m.has("proxies")) {
+        mesh.proxiesDeclared = true;
+        for (const auto& e : m["proxies"].elements()) mesh.proxies.push_back(parseProxy(e));
     }
     ctx.meshByName[name] = uint32_t(ctx.scene.meshes.size());
     ctx.meshIsPlane.push_back(generator == "plane");
@@ -620,7 +670,12 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
     std::error_code ec;
     std::string path = nameOrPath;
     if (!fs::is_regular_file(path, ec)) {
-        if (looksLikePath(nameOrPath)) throw Error("scene file '" + nameOrPath + "': no such file");
+        // A relative path not found from here may be one of the source tree's (results/proxy/scenes/...),
+        // so figure declarations and hard-case paths work from any working directory.
+        const std::string inTree = fs::path(nameOrPath).is_relative() ? Paths::findResource(nameOrPath) : "";
+        if (looksLikePath(nameOrPath) && inTree.empty())
+            throw Error("scene file '" + nameOrPath + "': no such file");
+        if (!inTree.empty()) return parse(Paths::readTextFile(inTree), inTree, options);
         path = Paths::findResource("scenes/data/" + nameOrPath + ".json");
         if (path.empty()) {
             std::string known = join(listBuiltinScenes(), ", ");

@@ -42,6 +42,16 @@
 //   (scenes/BuiltinShadowPlanes.h: aircraft 3, teapot 11, the other generators none) and a model file
 //   none; "shadow_planes": [] means none. A mesh that --model replaces takes no planes along (its
 //   planes were for the replaced geometry): the model has none.
+// - meshes, "proxies" (either kind of mesh): the proxy technique's ShadowProxies (scenes/ShadowProxy.h)
+//   in the mesh's object space:
+//     "proxies": [ {"shape": "sphere" | "box" | "cylinder", "position": [x,y,z], "rotation": [deg x,y,z],
+//                   "size": s | [x, y, z], "diffuse": [r,g,b], "reflective": [r,g,b]} ]
+//   frame = T(position) * Rx * Ry * Rz * S(size) maps the unit shape (sphere radius 1, box [-1, 1]^3,
+//   cylinder radius 1 around z, z in [-1, 1]): "size" is radii / half extents / (radius x, radius y,
+//   half height), required, each >= 0 (zero: a degenerate proxy, allowed). "diffuse" (the colour bled
+//   towards the light) defaults to the colour of each instance; "reflective" (bled whatever the light)
+//   to black; channels in [0, 1]. Without the key the technique fits the tightest sphere, box or
+//   cylinder; "proxies": [] means none. A mesh that --model replaces gets fitted proxies.
 // - instances: "mesh" (required), "position", "rotation" (Euler degrees), "scale", "color",
 //   "casts_shadow", "receives_shadow". Explicit instances come first, then the layout's.
 // - layout: "mesh", "count" (<= 1000000), "region" required; "seed" (1), "scale" (1), "yaw_only"
