@@ -202,6 +202,14 @@ const HardCase kCases[] = {
      "(18.44%, 15.51%; 1.17/0.07/1.11): room for every proxy: the same image as grid=off"},
     {"proxy_300_capacity_4", "proxy_many", "top", "proxy:capacity=4", 384, 19.0, 11.0, 3, 3, 3,
      "(14.99%, 8.50%): four per cell drop most halos (counted): less false shadow, fewer true ones"},
+    {"proxy_inside_and_on", "proxy_inside", "top", "proxy", 384, 20.5, 20.5, 3, 3, 8,
+     "(16.40%, 16.34% off edge; 0.38/0/5.49): ground fragments inside a box proxy and exactly on a flat "
+     "one's face get distance 0, the full shadow times Listing 1.4's face normal: finite, and wrong "
+     "against the reference by design (the proxies are declared 5x larger than their meshes); flicker "
+     "5.5 is 11 pixels of the inside edge against 2 of the reference"},
+    {"proxy_degenerate_sizes", "proxy_degenerate", "top", "proxy", 384, 0.9, 0.6, 3, 3, 3,
+     "(0.605%, 0.351%; none 0.527%): a zero-radius sphere, a zero-height box and a zero-radius cylinder "
+     "become a point, a square and a segment (frames made invertible): no NaN, halos around each"},
 };
 
 class HardCases : public ::testing::TestWithParam<HardCase> {};
