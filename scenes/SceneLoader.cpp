@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <set>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -266,11 +268,47 @@ glm::vec3 colour(const JsonReader& r) {
     return c;
 }
 
-/// One entry of a mesh's "proxies" (object space): frame = T(position) * Rx * Ry * Rz * S(size).
+/// A number of a proxy's frame as a float: finite and within float range (a 1e39 would become inf).
+bool finiteFloat(const nlohmann::json& v) {
+    return v.is_number() && std::abs(v.get<double>()) <= double(std::numeric_limits<float>::max());
+}
+
+/// A proxy's "position" or "rotation": [x, y, z], finite (an infinite frame poisons every distance).
+glm::vec3 finiteVec3(const JsonReader& r) {
+    // Checked before the conversion to float; vec3() reports the other mistakes (length, types).
+    const nlohmann::json& v = r.value();
+    if (v.is_array() && v.size() == 3)
+        for (const auto& e : v)
+            if (e.is_number() && !finiteFloat(e)) r.fail("an array of 3 finite numbers");
+    return r.vec3();
+}
+
+/// A proxy's "size": one number for all three axes or [x, y, z], each finite and >= 0. Zero sizes are
+/// allowed (degenerate, point- or sheet-like proxies are a hard case the technique must survive).
+glm::vec3 proxySize(const JsonReader& r) {
+    const nlohmann::json& v = r.value();
+    std::vector<double> xyz;
+    if (v.is_number()) {
+        xyz.assign(3, v.get<double>());
+    } else if (v.is_array() && v.size() == 3 &&
+               std::all_of(v.begin(), v.end(), [](const auto& e) { return e.is_number(); })) {
+        for (const auto& e : v) xyz.push_back(e.get<double>());
+    } else {
+        r.fail("a number or an array of 3 numbers");
+    }
+    for (size_t i = 0; i < 3; ++i)
+        if (!(xyz[i] >= 0.0) || !finiteFloat(v.is_number() ? v : v[i]))
+            r.fail("sizes >= 0 and finite (zero is allowed)");
+    return glm::vec3(float(xyz[0]), float(xyz[1]), float(xyz[2]));
+}
+
+/// One entry of a mesh's "proxies" (object space): frame = T(position) * Rx * Ry * Rz * S(size), the
+/// instances' Euler convention (composeTransform).
 ShadowProxy parseProxy(const JsonReader& r) {
     r.requireObject({"shape", "position", "rotation", "size", "diffuse", "reflective"});
     ShadowProxy p;
-    const std::string shape = r["shape"].string();
+    const JsonReader shapeKey = r["shape"];
+    const std::string shape = shapeKey.value().is_string() ? shapeKey.string() : "";
     if (shape == "sphere")
         p.shape = ShadowProxy::Shape::Sphere;
     else if (shape == "box")
@@ -278,20 +316,12 @@ ShadowProxy parseProxy(const JsonReader& r) {
     else if (shape == "cylinder")
         p.shape = ShadowProxy::Shape::Cylinder;
     else
-        r["shape"].fail("one of sphere, box, cylinder");
-    if (!r.has("size")) r.error("missing \"size\" (radii / half extents; a number or [x, y, z])");
-    // Zero sizes are allowed (the technique makes degenerate proxies point- or sheet-like); negative
-    // ones are errors.
-    const JsonReader sz = r["size"];
-    glm::vec3 size(0.0f);
-    if (sz.value().is_number()) {
-        size = glm::vec3(sz.nonNegativeNumber());
-    } else {
-        size = sz.vec3();
-        if (glm::any(glm::lessThan(size, glm::vec3(0.0f)))) sz.fail("sizes >= 0");
-    }
-    const glm::vec3 position = r.has("position") ? r["position"].vec3() : glm::vec3(0.0f);
-    const glm::vec3 rotation = r.has("rotation") ? r["rotation"].vec3() : glm::vec3(0.0f);
+        shapeKey.fail("one of sphere, box, cylinder");
+    if (!r.has("size"))
+        r.error("missing required key \"size\" (radii / half extents: a number or [x, y, z])");
+    const glm::vec3 size = proxySize(r["size"]);
+    const glm::vec3 position = r.has("position") ? finiteVec3(r["position"]) : glm::vec3(0.0f);
+    const glm::vec3 rotation = r.has("rotation") ? finiteVec3(r["rotation"]) : glm::vec3(0.0f);
     p.frame = composeTransform(position, rotation, 1.0f) * glm::scale(glm::mat4(1.0f), size);
     p.diffuseFromInstance = !r.has("diffuse");
     if (r.has("diffuse")) p.diffuse = colour(r["diffuse"]);
@@ -424,6 +454,9 @@ void replaceWithModel(Context& ctx, uint32_t meshIndex) {
     for (auto& p : model.positions) p = (p - newCentre) * s + oldCentre;
     model.name = old.name;
     model.shadowPlanes.clear(); // the replaced mesh's planes were for its geometry; a model file has none
+    // Its declared proxies too: the technique fits new ones to the model.
+    model.proxies.clear();
+    model.proxiesDeclared = false;
     old = std::move(model);
 }
 

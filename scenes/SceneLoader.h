@@ -46,12 +46,15 @@
 //   in the mesh's object space:
 //     "proxies": [ {"shape": "sphere" | "box" | "cylinder", "position": [x,y,z], "rotation": [deg x,y,z],
 //                   "size": s | [x, y, z], "diffuse": [r,g,b], "reflective": [r,g,b]} ]
-//   frame = T(position) * Rx * Ry * Rz * S(size) maps the unit shape (sphere radius 1, box [-1, 1]^3,
-//   cylinder radius 1 around z, z in [-1, 1]): "size" is radii / half extents / (radius x, radius y,
-//   half height), required, each >= 0 (zero: a degenerate proxy, allowed). "diffuse" (the colour bled
-//   towards the light) defaults to the colour of each instance; "reflective" (bled whatever the light)
-//   to black; channels in [0, 1]. Without the key the technique fits the tightest sphere, box or
-//   cylinder; "proxies": [] means none. A mesh that --model replaces gets fitted proxies.
+//   frame = T(position) * Rx * Ry * Rz * S(size) (the instances' Euler convention) maps the unit shape
+//   (sphere radius 1, box [-1, 1]^3, cylinder radius 1 around z, z in [-1, 1]): "size" is radii / half
+//   extents / (radius x, radius y, half height), one number for all three or [x, y, z], required, each
+//   finite and >= 0 (zero: a degenerate proxy, allowed). "position" and "rotation" (degrees) default
+//   to 0. "diffuse" (the colour bled towards the light) defaults to the colour of each instance
+//   (ShadowProxy::diffuseFromInstance); "reflective" (bled whatever the light) to black; channels in
+//   [0, 1]. Without the key the technique fits the tightest sphere, box or cylinder to each instance;
+//   "proxies": [] means none. A mesh that --model replaces takes no proxies along (they were for the
+//   replaced geometry): the model gets fitted ones.
 // - instances: "mesh" (required), "position", "rotation" (Euler degrees), "scale", "color",
 //   "casts_shadow", "receives_shadow". Explicit instances come first, then the layout's.
 // - layout: "mesh", "count" (<= 1000000), "region" required; "seed" (1), "scale" (1), "yaw_only"
