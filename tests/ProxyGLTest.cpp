@@ -243,18 +243,13 @@ TEST(ProxyGLTest, GridOverflowIsCountedAndIndicesPass255) {
   "lights": [{"type": "directional", "direction": [0, -1, 0]}],
   "cameras": [{"name": "top", "eye": [0, 8, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov": 50,
                "near": 0.5, "far": 50}]})");
-    auto counter = [](const Frame& f, const std::string& name) {
-        for (const auto& [k, v] : f.counters)
-            if (k == name) return v;
-        ADD_FAILURE() << "no counter " << name;
-        return -1.0;
-    };
     const Frame small = render(path, "proxy:offset=1:capacity=4");
-    EXPECT_EQ(counter(small, "proxies_in_view"), 300.0);
-    EXPECT_GT(counter(small, "grid_overflow"), 0.0);
+    EXPECT_EQ(test::counter(small.counters, "proxies_in_view"), 300.0);
+    EXPECT_GT(test::counter(small.counters, "grid_overflow"), 0.0);
     const Frame big = render(path, "proxy:offset=1:capacity=400");
-    EXPECT_EQ(counter(big, "grid_overflow"), 0.0);
-    EXPECT_GT(counter(big, "grid_max_per_cell"), 255.0) << "the case must put more than 255 in one cell";
+    EXPECT_EQ(test::counter(big.counters, "grid_overflow"), 0.0);
+    EXPECT_GT(test::counter(big.counters, "grid_max_per_cell"), 255.0)
+        << "the case must put more than 255 in one cell";
     const Frame brute = render(path, "proxy:offset=1:grid=false");
     EXPECT_EQ(big.visibility, brute.visibility);
     EXPECT_NE(small.visibility, brute.visibility) << "overflowed cells must lose shadow (and say so)";

@@ -75,13 +75,6 @@ Frame renderReference(Harness& h, ReferenceTechnique& ref) {
     return f;
 }
 
-double counter(const Counters& counters, const std::string& name) {
-    for (const auto& [n, v] : counters)
-        if (n == name) return v;
-    ADD_FAILURE() << "no counter " << name;
-    return 0.0;
-}
-
 class HardShadow : public ::testing::TestWithParam<SubmitMode> {};
 
 TEST_P(HardShadow, MatchesAnalyticEllipse) {
@@ -124,12 +117,12 @@ TEST_P(HardShadow, MatchesAnalyticEllipse) {
     EXPECT_EQ(notBinary, 0) << "a point light casts only 0 or 1";
 
     Counters c = ref.counters();
-    EXPECT_GT(counter(c, "rays"), 0.0);
-    EXPECT_GT(counter(c, "rays_per_second_per_thread"), 0.0);
-    EXPECT_EQ(counter(c, "samples_per_pixel"), 1.0);
-    EXPECT_EQ(counter(c, "noise_bound"), 0.0);
+    EXPECT_GT(test::counter(c, "rays"), 0.0);
+    EXPECT_GT(test::counter(c, "rays_per_second_per_thread"), 0.0);
+    EXPECT_EQ(test::counter(c, "samples_per_pixel"), 1.0);
+    EXPECT_EQ(test::counter(c, "noise_bound"), 0.0);
     // Both passes draw the whole scene, in every submission mode (the G-buffer's own draws included).
-    EXPECT_EQ(counter(c, "triangles"), 2.0 * double(scene.totalTriangles()));
+    EXPECT_EQ(test::counter(c, "triangles"), 2.0 * double(scene.totalTriangles()));
     ASSERT_EQ(ref.lastVisibility().size(), 1u);
     EXPECT_EQ(ref.lastGBuffer().width, kSize);
     EXPECT_EQ(ref.lastVisibility()[0].value.size(), size_t(kSize) * kSize);
@@ -207,9 +200,9 @@ TEST(ReferenceTechnique, SoftShadowOfASunDisk) {
     EXPECT_EQ(visibilityAt({-4.0, 0.0, -4.0}), 1.0f);
 
     Counters c = ref.counters();
-    EXPECT_GT(counter(c, "rays"), double(lit));
-    EXPECT_GE(counter(c, "samples_per_pixel"), 64.0);
-    EXPECT_GT(counter(c, "noise_bound"), 0.0);
+    EXPECT_GT(test::counter(c, "rays"), double(lit));
+    EXPECT_GE(test::counter(c, "samples_per_pixel"), 64.0);
+    EXPECT_GT(test::counter(c, "noise_bound"), 0.0);
 }
 
 TEST(ReferenceTechnique, HardPropertyTreatsAreaLightsAsPoints) {
@@ -226,7 +219,7 @@ TEST(ReferenceTechnique, HardPropertyTreatsAreaLightsAsPoints) {
     }
     EXPECT_GT(shadowed, 0);
     EXPECT_EQ(fractional, 0);
-    EXPECT_EQ(counter(ref.counters(), "samples_per_pixel"), 1.0);
+    EXPECT_EQ(test::counter(ref.counters(), "samples_per_pixel"), 1.0);
 }
 
 } // namespace

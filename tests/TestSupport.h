@@ -13,6 +13,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -35,6 +36,14 @@ inline RunConfig quickConfig(const std::string& scene, const std::string& camera
     c.checkTimer = false;
     c.quiet = true;
     return c;
+}
+
+/// The value of counter `name` in a technique's counters() (a failure, and 0, when it is missing).
+inline double counter(const std::vector<std::pair<std::string, double>>& counters, const std::string& name) {
+    for (const auto& [n, v] : counters)
+        if (n == name) return v;
+    ADD_FAILURE() << "no counter " << name;
+    return 0.0;
 }
 
 /// World position of every pixel from the depth buffer (row-major, bottom-up as GL reads). Pixels at

@@ -136,7 +136,9 @@ void applyProxy(int index, int self, inout Accum acc) {
     int shape = int(p.diffuse.w + 0.5);
     vec3 local = (p.toLocal * vec4(vWorldPos, 1.0)).xyz;
     vec3 closest = closestLocal(shape, local);
-    float dist = insideLocal(shape, local) ? 0.0 : distance((p.toWorld * vec4(closest, 1.0)).xyz, vWorldPos);
+    vec3 surface = (p.toWorld * vec4(closest, 1.0)).xyz;
+    vec3 away = vWorldPos - surface;
+    float dist = insideLocal(shape, local) ? 0.0 : length(away);
     if (!(dist > 0.0)) dist = 0.0; // a fragment on the surface within rounding
     if (dist > uShading.x) return; // outside the influence volume
     float shadow = attenuation(dist, uShading.y);
@@ -149,9 +151,7 @@ void applyProxy(int index, int self, inout Accum acc) {
     // Section 1.5: the direction the shadow is cast along is the one from the closest surface point to
     // the fragment; on the surface (or inside) the surface normal. Unlike the normal of the face a
     // point is pushed onto, it turns continuously round a box's edges and corners (no seams).
-    vec3 surface = (p.toWorld * vec4(closest, 1.0)).xyz;
-    vec3 away = vWorldPos - surface;
-    vec3 n = dist > 0.0 ? away / length(away) : surfaceNormal(shape, local, closest, p.toLocal);
+    vec3 n = dist > 0.0 ? away / dist : surfaceNormal(shape, local, closest, p.toLocal);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec3 travel = lightTravel(i, surface);
         // Listing 1.4: the shadow stretched away from the light (normal along the light's travel) ...
@@ -162,10 +162,12 @@ void applyProxy(int index, int self, inout Accum acc) {
 #endif
     }
 #else
-    for (int i = 0; i < LIGHT_COUNT; ++i) acc.visibility[i] *= 1.0 - clamp(shadow, 0.0, 1.0);
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
+        acc.visibility[i] *= 1.0 - clamp(shadow, 0.0, 1.0);
 #ifdef PROXY_BLEED
-    for (int i = 0; i < LIGHT_COUNT; ++i) acc.bleed += bleed * p.diffuse.rgb * uLightColor[i].rgb;
+        acc.bleed += bleed * p.diffuse.rgb * uLightColor[i].rgb;
 #endif
+    }
 #endif
 }
 
