@@ -11,7 +11,8 @@ struct InstanceRecord {
     glm::mat4 model;
     glm::vec4 colorId;
 };
-constexpr DrawSet kSets[] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers};
+constexpr DrawSet kSets[kDrawSetCount] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers,
+                                          DrawSet::NonCasters};
 } // namespace
 
 InstancedSubmitter::~InstancedSubmitter() {
@@ -29,7 +30,7 @@ void InstancedSubmitter::upload(const Scene& scene) {
     mBuffers.upload(scene);
     // One buffer holding, per draw set and mesh, that set's instances contiguously.
     std::vector<InstanceRecord> records;
-    for (size_t s = 0; s < 3; ++s) {
+    for (size_t s = 0; s < kDrawSetCount; ++s) {
         mBatches[s].clear();
         for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
             Batch b{m, uint32_t(records.size()), 0};

@@ -28,7 +28,7 @@ private:
     const Scene* mScene = nullptr;
     MeshBuffers mBuffers;
     GLuint mInstanceBuffer = 0;
-    std::array<std::vector<Batch>, 3> mBatches; ///< per DrawSet
+    std::array<std::vector<Batch>, kDrawSetCount> mBatches; ///< per DrawSet
 };
 
 } // namespace sb

@@ -52,6 +52,8 @@ bool Submitter::inSet(const Instance& inst, DrawSet set) {
         return inst.castsShadow;
     case DrawSet::Receivers:
         return inst.receivesShadow;
+    case DrawSet::NonCasters:
+        return !inst.castsShadow;
     }
     return false;
 }

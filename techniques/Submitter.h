@@ -26,8 +26,10 @@ std::optional<SubmitMode> parseSubmitMode(const std::string& name);
 constexpr SubmitMode kAllSubmitModes[] = {SubmitMode::Immediate, SubmitMode::DisplayList,
                                           SubmitMode::Retained, SubmitMode::Instanced};
 
-/// Which instances a draw covers: shadow casters, shadow receivers, or all.
-enum class DrawSet { All, Casters, Receivers };
+/// Which instances a draw covers: shadow casters, shadow receivers, or all; NonCasters are the
+/// instances that cast no shadow (grounds, walls): what `projective` textures, its casters staying lit.
+enum class DrawSet { All, Casters, Receivers, NonCasters };
+constexpr size_t kDrawSetCount = 4;
 
 /// What the submitter sent since the last reset (counters of the CSV row, per frame).
 struct SubmitStats {
