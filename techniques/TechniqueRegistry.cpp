@@ -2,9 +2,11 @@
 #include "scenes/Strings.h"
 
 #include "reference/ReferenceTechnique.h"
+#include "techniques/BlobTechnique.h"
 #include "scenes/Error.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/OccluderTechnique.h"
+#include "techniques/PlanarTechnique.h"
 #include "techniques/ProxyTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
 #include "techniques/SyntheticTechnique.h"
@@ -20,6 +22,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"volume", [] { return std::unique_ptr<Technique>(new VolumeTechnique()); }},
         {"occluder", [] { return std::unique_ptr<Technique>(new OccluderTechnique()); }},
         {"proxy", [] { return std::unique_ptr<Technique>(new ProxyTechnique()); }},
+        {"planar", [] { return std::unique_ptr<Technique>(new PlanarTechnique()); }},
+        {"blob", [] { return std::unique_ptr<Technique>(new BlobTechnique()); }},
         {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", [] { return std::unique_ptr<Technique>(new SyntheticTechnique()); }},

@@ -1,0 +1,20 @@
+// `planar` shadow polygons: remove light LIGHT (uniform) from the receiver where a flattened occluder
+// lands. Blending (PlanarTechnique): colour = dst - src (reverse subtract), visibility = dst * src.
+#include "common/frame.glsl"
+#include "common/lighting.glsl"
+
+in vec4 vFlat;
+layout(location = 12) uniform vec4 uPlane;
+layout(location = 14) uniform vec4 uAlbedoLight; // rgb: the receiver's albedo; w: light index
+layout(location = 15) uniform float uDarkness;   // 1: the light is fully removed
+layout(location = 0) out vec4 oColor;
+layout(location = 1) out vec4 oVisibility;
+
+void main() {
+    int light = int(uAlbedoLight.w);
+    vec3 p = vFlat.xyz / vFlat.w;
+    oColor = vec4(uDarkness * uAlbedoLight.rgb * lightTerm(light, p, uPlane.xyz), 0.0);
+    vec4 v = vec4(1.0);
+    v[light] = 1.0 - uDarkness;
+    oVisibility = v;
+}

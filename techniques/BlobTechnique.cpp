@@ -1,0 +1,233 @@
+#include "techniques/BlobTechnique.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/Math.h"
+
+namespace sb {
+
+namespace {
+constexpr const char* kOpacity = "opacity";
+constexpr const char* kSoftness = "softness";
+constexpr const char* kFade = "fade";
+constexpr GLint kPlaneLocation = 12, kAlbedoLocation = 14; // shaders/blob/blob.frag
+constexpr GLuint kBlobBinding = 4;                         // shaders/blob/blob.vert
+
+std::array<glm::vec3, 8> corners(const Aabb& b) {
+    std::array<glm::vec3, 8> c;
+    for (int i = 0; i < 8; ++i)
+        c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                        (i & 4) ? b.max.z : b.min.z};
+    return c;
+}
+
+/// `p` projected onto the plane along the light: from a point light's position (a point level with
+/// the light or above it is held just below it, 1% of the light's height), along a directional one.
+glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, const glm::vec4& light) {
+    const float h = plane.distance(p);
+    if (light.w == 0.0f) { // directional: light.xyz points towards the light
+        const glm::vec3 dir = -glm::vec3(light);
+        return p - dir * (h / glm::dot(plane.normal, dir));
+    }
+    const glm::vec3 l(light);
+    const float hl = plane.distance(l);
+    const float hp = std::min(h, 0.99f * hl);
+    return l + (p - l) * (hl / (hl - hp));
+}
+} // namespace
+
+BlobTechnique::BlobTechnique()
+    : Technique({.name = "blob",
+                 .description =
+                     "fake blob shadows: a soft ellipse on the ground under each caster per light, "
+                     "sized from its bounds (no self-shadowing, ground plane only)",
+                 .effects = Effect::SoftShadows | Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"lighting", "blobs"},
+                 .properties =
+                     {
+                         {kOpacity, PropertyType::Float, "1", 0, 1, {}, "opacity of a blob on the ground"},
+                         {kSoftness,
+                          PropertyType::Float,
+                          "0.5",
+                          0,
+                          1,
+                          {},
+                          "width of the soft edge as a fraction of the ellipse's radius (0: hard)"},
+                         {kFade,
+                          PropertyType::Float,
+                          "8",
+                          0.01,
+                          1e6,
+                          {},
+                          "height (in bounding radii) of the caster's bottom at which its blob vanishes"},
+                     },
+                 .quality = {
+                     {kSoftness, {"0", "0.25", "0.5", "1"}},
+                     {kFade, {"2", "8", "32"}},
+                 }}) {}
+
+BlobTechnique::~BlobTechnique() {
+    release();
+}
+
+void BlobTechnique::release() {
+    if (mBlobBuffer) glDeleteBuffers(1, &mBlobBuffer);
+    if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);
+    mBlobBuffer = mEmptyVao = 0;
+    mCapacity = 0;
+}
+
+std::optional<ReceiverPlane> BlobTechnique::findGround(const Scene& scene) {
+    std::optional<ReceiverPlane> best;
+    for (const ReceiverPlane& p : ReceiverPlane::find(scene))
+        if (p.normal.y >= 0.5f && (!best || p.normal.y > best->normal.y)) best = p;
+    return best;
+}
+
+std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const ReceiverPlane& ground,
+                                                      const Light& light, int lightIndex, float opacity,
+                                                      float softness, float fade) {
+    const glm::vec4 l = ReceiverPlane::homogeneousLight(light);
+    if (bounds.empty() || !(ground.lightSide(l) > 1e-6f * std::max(1.0f, glm::length(glm::vec3(l)))))
+        return std::nullopt;
+    const std::array<glm::vec3, 8> c = corners(bounds);
+    float hMin = INFINITY, hMax = -INFINITY;
+    for (const glm::vec3& p : c) {
+        hMin = std::min(hMin, ground.distance(p));
+        hMax = std::max(hMax, ground.distance(p));
+    }
+    if (!(hMax > 0.0f)) return std::nullopt; // wholly below the ground
+    const float radius = 0.5f * glm::length(bounds.extent());
+    const float alpha =
+        opacity * std::clamp(1.0f - std::max(hMin, 0.0f) / (fade * std::max(radius, 1e-6f)), 0.0f, 1.0f);
+    if (!(alpha > 0.0f)) return std::nullopt;
+
+    // In-plane coordinates of the projected corners, then their principal axes.
+    const glm::vec3 t = glm::normalize(glm::cross(anyPerpendicularUp(ground.normal), ground.normal));
+    const glm::vec3 b = glm::cross(ground.normal, t);
+    const glm::vec3 origin = -ground.d * ground.normal;
+    std::array<glm::vec2, 8> q;
+    glm::vec2 mean(0.0f);
+    for (size_t i = 0; i < 8; ++i) {
+        const glm::vec3 p = projectAlongLight(c[i], ground, l) - origin;
+        q[i] = {glm::dot(p, t), glm::dot(p, b)};
+        mean += q[i] / 8.0f;
+    }
+    float cxx = 0, cyy = 0, cxy = 0;
+    for (const glm::vec2& v : q) {
+        const glm::vec2 e = v - mean;
+        cxx += e.x * e.x;
+        cyy += e.y * e.y;
+        cxy += e.x * e.y;
+    }
+    const float angle = 0.5f * std::atan2(2.0f * cxy, cxx - cyy);
+    const glm::vec2 e1(std::cos(angle), std::sin(angle)), e2(-e1.y, e1.x);
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec2& v : q) {
+        const glm::vec2 s(glm::dot(v, e1), glm::dot(v, e2));
+        lo = glm::min(lo, s);
+        hi = glm::max(hi, s);
+    }
+    // A degenerate axis (a flat caster seen edge-on by the light) keeps a sliver, not a zero.
+    const glm::vec2 half = glm::max(0.5f * (hi - lo), glm::vec2(1e-4f * std::max(radius, 1e-6f)));
+    const glm::vec2 mid = 0.5f * (hi + lo);
+    const glm::vec2 centre = mid.x * e1 + mid.y * e2;
+    const glm::vec3 u = e1.x * t + e1.y * b, v = e2.x * t + e2.y * b;
+    return Blob{glm::vec4(origin + centre.x * t + centre.y * b, alpha),
+                glm::vec4(u * half.x, float(lightIndex)), glm::vec4(v * half.y, softness)};
+}
+
+void BlobTechnique::setScene(const Scene& scene) {
+    release();
+    mGround = findGround(scene);
+    if (!mGround)
+        std::cerr << "blob: scene '" << scene.name
+                  << "' has no ground plane (a planar instance facing up that receives and casts no shadow): "
+                     "nothing is shadowed\n";
+    mMeshBounds.clear();
+    for (const Mesh& m : scene.meshes) mMeshBounds.push_back(m.computeBounds());
+    mReceiver.upload(mGround ? std::vector<ReceiverPlane>{*mGround} : std::vector<ReceiverPlane>{});
+    glCreateVertexArrays(1, &mEmptyVao);
+    glCreateBuffers(1, &mBlobBuffer);
+}
+
+void BlobTechnique::compile(const CompileContext& ctx) {
+    Defines lit = ctx.submitter.defines();
+    lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    mLitProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, lit);
+    mReceiver.compile(ctx.programs);
+    mBlobProgram = &ctx.programs.get({"blob/blob.vert", "blob/blob.frag", ""}, {});
+    setPermutationKey(mLitProgram->key() + "|" + mBlobProgram->key());
+}
+
+void BlobTechnique::fitAll(const Scene& scene) {
+    mBlobs.clear();
+    if (!mGround) return;
+    const PropertySet& p = properties();
+    const float opacity = float(p.getFloat(kOpacity)), softness = float(p.getFloat(kSoftness)),
+                fade = float(p.getFloat(kFade));
+    const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
+    for (const Instance& inst : scene.instances) {
+        if (!inst.castsShadow) continue;
+        Aabb world;
+        for (const glm::vec3& c : corners(mMeshBounds[inst.mesh]))
+            world.extend(glm::vec3(inst.model * glm::vec4(c, 1.0f)));
+        for (int l = 0; l < lights; ++l)
+            if (auto blob = fit(world, *mGround, scene.lights[size_t(l)], l, opacity, softness, fade))
+                mBlobs.push_back(*blob);
+    }
+}
+
+void BlobTechnique::execute(FrameContext& ctx) {
+    ctx.submitter.resetStats();
+    ctx.passes.begin("lighting");
+    mLitProgram->use();
+    ctx.submitter.draw(DrawSet::All);
+
+    ctx.passes.begin("blobs");
+    fitAll(ctx.scene);
+    if (!mBlobs.empty()) {
+        // Orphaning upload: a fresh store each frame, so the driver never waits on last frame's draw.
+        glNamedBufferData(mBlobBuffer, GLsizeiptr(mBlobs.size() * sizeof(Blob)), mBlobs.data(),
+                          GL_STREAM_DRAW);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBlobBinding, mBlobBuffer);
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(ReceiverStencil::kOffsetFactor, ReceiverStencil::kOffsetUnits);
+        glDepthMask(GL_FALSE);
+        mReceiver.mark(0, 1, GL_KEEP); // blobs stay on the ground's visible pixels, overlapping ones multiply
+        glEnable(GL_BLEND);
+        glBlendEquationi(0, GL_FUNC_REVERSE_SUBTRACT);
+        glBlendFunci(0, GL_ONE, GL_ONE);
+        glBlendEquationi(1, GL_FUNC_ADD);
+        glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
+        mBlobProgram->use();
+        glUniform4fv(kPlaneLocation, 1, glm::value_ptr(mGround->equation()));
+        glUniform3fv(kAlbedoLocation, 1, glm::value_ptr(mGround->albedo));
+        glBindVertexArray(mEmptyVao);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(mBlobs.size()));
+        glBindVertexArray(0);
+        glDisable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ZERO);
+        glDisable(GL_STENCIL_TEST);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+    }
+    const SubmitStats& s = ctx.submitter.stats();
+    mCounters = {
+        {"draw_calls", double(s.drawCalls) + (mBlobs.empty() ? 0.0 : 2.0)},
+        {"triangles", double(s.triangles) + 2.0 * double(mBlobs.size()) + (mBlobs.empty() ? 0.0 : 2.0)},
+        {"blobs", double(mBlobs.size())}};
+}
+
+} // namespace sb

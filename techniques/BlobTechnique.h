@@ -1,0 +1,71 @@
+#pragma once
+// `blob`: fake proxy shadows (Crawfis, "Ad-hoc shadows", "Fake Proxy Shadow": "a simple hand-drawn
+// polygon or texture", "e.g. draw the bottom of the bounding box", "the desk with a fake shadow using
+// an ellipse"). A soft ellipse on the ground plane under each caster and for each light:
+//   - oriented and sized from the caster's world bounds and the light: the eight corners of the bounds
+//     are projected onto the ground along the light (from a point light's position, or along a
+//     directional light's direction); the ellipse's axes are the principal axes of those eight points
+//     (2x2 covariance) and its semi-axes half their extent along each axis, centred in that extent;
+//   - opacity falls with the height of the bounds' bottom over the ground, linearly to 0 at `fade`
+//     bounding radii;
+//   - a radial profile 1 - smoothstep(1 - softness, 1, r) (r = 1 on the ellipse): the fake softness.
+// Pass "lighting" renders the scene lit and unshadowed; pass "blobs" fits every blob on the CPU (what
+// a game does per frame for moving objects), uploads them, marks the ground's rectangle in the stencil
+// (scenes/ReceiverPlane.h) and draws all blobs in one instanced draw of quads, removing each light's
+// term from the ground's colour and scaling its visibility channel by 1 - alpha, as `planar` does.
+// Overlapping blobs multiply (each darkens again): the look of the trick.
+//
+// The ground plane is the receiver plane whose normal points most nearly up (+y, at least 60 degrees
+// above the horizon). What it cannot do: self-shadowing, shadows on anything but the ground, shadows of
+// the right shape (a box, a wing and a sphere all get an ellipse), hard shadows.
+#include <optional>
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "scenes/ReceiverPlane.h"
+#include "techniques/ReceiverStencil.h"
+#include "techniques/Technique.h"
+
+namespace sb {
+
+class BlobTechnique final : public Technique {
+public:
+    BlobTechnique();
+    ~BlobTechnique() override;
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+    /// std430 mirror of the blob records in shaders/blob/blob.vert: 3 vec4 per blob.
+    struct Blob {
+        glm::vec4 centre; ///< xyz on the ground; w: opacity
+        glm::vec4 axisU;  ///< xyz: first semi-axis (direction * length); w: light index
+        glm::vec4 axisV;  ///< xyz: second semi-axis; w: softness
+    };
+    /// The blob of world bounds `bounds` on `ground` for `light` (its index in w of axisU), or nothing
+    /// when the light is behind or in the ground's plane or the bounds lie wholly below it. Public for
+    /// tests.
+    static std::optional<Blob> fit(const Aabb& bounds, const ReceiverPlane& ground, const Light& light,
+                                   int lightIndex, float opacity, float softness, float fade);
+    /// The receiver plane facing most nearly up (normal.y >= 0.5), if any.
+    static std::optional<ReceiverPlane> findGround(const Scene& scene);
+
+private:
+    void fitAll(const Scene& scene);
+    void release();
+
+    std::optional<ReceiverPlane> mGround;
+    std::vector<Aabb> mMeshBounds; ///< object space, per mesh
+    std::vector<Blob> mBlobs;      ///< this frame's
+    GLuint mBlobBuffer = 0, mEmptyVao = 0;
+    size_t mCapacity = 0;
+    ReceiverStencil mReceiver;
+    const Program* mLitProgram = nullptr;
+    const Program* mBlobProgram = nullptr;
+    Counters mCounters;
+};
+
+} // namespace sb

@@ -1,0 +1,272 @@
+#include "techniques/PlanarTechnique.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/MeshGenerators.h"
+#include "techniques/ProxyTechnique.h"
+
+namespace sb {
+
+namespace {
+constexpr const char* kStencil = "stencil";
+constexpr const char* kOccluder = "occluder";
+constexpr const char* kDarkness = "darkness";
+constexpr const char* kGuards = "guards";
+constexpr GLint kFlattenLocation = 8, kPlaneLocation = 12, kLightLocation = 13, kAlbedoLightLocation = 14,
+                kDarknessLocation = 15; // shaders/planar/shadow.*
+struct ProxyRecord {
+    glm::mat4 model;
+    glm::vec4 colorId;
+};
+
+/// The unit shapes of ShadowProxy (sphere radius 1, box [-1, 1]^3, cylinder radius 1 around z, z in
+/// [-1, 1]), coarse: an occluder proxy is meant to be cheap.
+Scene unitShapes() {
+    Scene s;
+    s.meshes.push_back(MeshGenerators::sphere(6));
+    s.meshes.push_back(MeshGenerators::box(glm::vec3(1.0f), 1));
+    Mesh cylinder = MeshGenerators::cylinder(6); // along +y: turn y onto z
+    const glm::mat3 yToZ = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0)));
+    for (glm::vec3& p : cylinder.positions) p = yToZ * p;
+    for (glm::vec3& n : cylinder.normals) n = yToZ * n;
+    s.meshes.push_back(std::move(cylinder));
+    return s;
+}
+} // namespace
+
+PlanarTechnique::PlanarTechnique()
+    : Technique({.name = "planar",
+                 .description =
+                     "projected planar shadows: casters flattened onto each receiver plane, stencil "
+                     "keeps them on it (no self-shadowing, planar receivers only)",
+                 .effects = Effect::HardShadows | Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"lighting", "shadows"},
+                 .properties =
+                     {
+                         {kStencil,
+                          PropertyType::Bool,
+                          "true",
+                          0,
+                          0,
+                          {},
+                          "the slides' stencil algorithm (false: depth-tested with bias: double blending, "
+                          "shadows off the receiver)"},
+                         {kOccluder,
+                          PropertyType::Enum,
+                          "mesh",
+                          0,
+                          0,
+                          {"mesh", "proxy"},
+                          "what is flattened: the caster's mesh, or its ShadowProxy (sphere/box/cylinder)"},
+                         {kDarkness,
+                          PropertyType::Float,
+                          "1",
+                          0,
+                          1,
+                          {},
+                          "share of the light a shadow removes (1: ambient only, like the other techniques)"},
+                         {kGuards,
+                          PropertyType::Bool,
+                          "true",
+                          0,
+                          0,
+                          {},
+                          "clip occluder parts behind the receiver or beyond the light, skip lights behind "
+                          "the plane (false: the slides' wrong shadows and anti-shadows)"},
+                     },
+                 .quality = {
+                     {kOccluder, {"mesh", "proxy"}},
+                     {kStencil, {"true", "false"}},
+                 }}) {}
+
+PlanarTechnique::~PlanarTechnique() {
+    release();
+}
+
+void PlanarTechnique::release() {
+    if (mProxyInstances) glDeleteBuffers(1, &mProxyInstances);
+    mProxyInstances = 0;
+    mProxyBatches.clear();
+}
+
+std::vector<PlanarTechnique::Projection>
+PlanarTechnique::projections(const std::vector<ReceiverPlane>& planes, const Scene& scene, bool guards) {
+    std::vector<Projection> out;
+    const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
+    for (size_t p = 0; p < planes.size(); ++p)
+        for (int l = 0; l < lights; ++l) {
+            const glm::vec4 light = ReceiverPlane::homogeneousLight(scene.lights[size_t(l)]);
+            // Relative to the light's coordinates: a light "in" the plane up to float rounding of its
+            // position casts nothing (every occluder would collapse onto the light's footprint).
+            const float side = planes[p].lightSide(light);
+            if (guards && !(side > 1e-6f * std::max(1.0f, glm::length(glm::vec3(light))))) continue;
+            out.push_back({p, l, light, planes[p].projection(light)});
+        }
+    return out;
+}
+
+void PlanarTechnique::setScene(const Scene& scene) {
+    release();
+    mPlanes = ReceiverPlane::find(scene);
+    if (mPlanes.empty())
+        std::cerr << "planar: scene '" << scene.name
+                  << "' declares no receiver plane (a planar instance that receives and casts no shadow): "
+                     "nothing is shadowed\n";
+    mReceivers.upload(mPlanes);
+    uploadProxies(scene);
+}
+
+void PlanarTechnique::uploadProxies(const Scene& scene) {
+    // The casters' proxies, grouped by shape: one instanced draw per shape and flattening.
+    const std::vector<ShadowProxy> proxies = ProxyTechnique::collect(scene, false, nullptr);
+    const Scene shapes = unitShapes();
+    mProxyMeshes.upload(shapes);
+    std::vector<ProxyRecord> records;
+    mProxyTriangles = 0;
+    for (size_t s = 0; s < shapes.meshes.size(); ++s) {
+        ProxyBatch b{mProxyMeshes.vao(s), mProxyMeshes.indexCount(s), GLsizei(records.size()), 0};
+        for (const ShadowProxy& p : proxies)
+            if (size_t(p.shape) == s) records.push_back({p.frame, glm::vec4(p.diffuse, 0.0f)});
+        b.count = GLsizei(records.size()) - b.first;
+        mProxyTriangles += uint64_t(b.indexCount / 3) * uint64_t(b.count);
+        if (b.count) mProxyBatches.push_back(b);
+    }
+    glCreateBuffers(1, &mProxyInstances);
+    glNamedBufferStorage(mProxyInstances,
+                         GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(ProxyRecord)),
+                         records.empty() ? nullptr : records.data(), 0);
+    for (size_t s = 0; s < shapes.meshes.size(); ++s) {
+        const GLuint vao = mProxyMeshes.vao(s);
+        glVertexArrayVertexBuffer(vao, 1, mProxyInstances, 0, sizeof(ProxyRecord));
+        glVertexArrayBindingDivisor(vao, 1, 1);
+        for (GLuint c = 0; c < 5; ++c) { // common/instance.glsl: model at 4..7, colour + id at 8
+            glEnableVertexArrayAttrib(vao, 4 + c);
+            glVertexArrayAttribFormat(vao, 4 + c, 4, GL_FLOAT, GL_FALSE, c * sizeof(glm::vec4));
+            glVertexArrayAttribBinding(vao, 4 + c, 1);
+        }
+    }
+}
+
+void PlanarTechnique::compile(const CompileContext& ctx) {
+    const PropertySet& p = properties();
+    mStencil = p.getBool(kStencil);
+    mUseProxies = p.getEnum(kOccluder) == "proxy";
+    mGuards = p.getBool(kGuards);
+    mProjections = projections(mPlanes, ctx.scene, mGuards);
+
+    Defines base = ctx.submitter.defines();
+    Defines lit = base;
+    lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    mLitProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, lit);
+    mMarkProgram = &mReceivers.compile(ctx.programs);
+    Defines shadow = lit;
+    if (mGuards) shadow["GUARDS"] = "";
+    mShadowProgram = &ctx.programs.get({"planar/shadow.vert", "planar/shadow.frag", ""}, shadow);
+    Defines proxy = shadow;
+    proxy["SB_INSTANCED"] = ""; // the proxies' own instance buffer
+    mProxyProgram = &ctx.programs.get({"planar/shadow.vert", "planar/shadow.frag", ""}, proxy);
+    const Program& occluders = mUseProxies ? *mProxyProgram : *mShadowProgram;
+    std::string key = mLitProgram->key() + "|" + occluders.key();
+    if (mStencil) key += "|" + mMarkProgram->key();
+    setPermutationKey(key);
+}
+
+void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p) {
+    const ReceiverPlane& plane = mPlanes[p.plane];
+    const Program& program = mUseProxies ? *mProxyProgram : *mShadowProgram;
+    program.use();
+    glUniformMatrix4fv(kFlattenLocation, 1, GL_FALSE, glm::value_ptr(p.matrix));
+    glUniform4fv(kPlaneLocation, 1, glm::value_ptr(plane.equation()));
+    glUniform4fv(kLightLocation, 1, glm::value_ptr(p.lightPos));
+    glUniform4f(kAlbedoLightLocation, plane.albedo.r, plane.albedo.g, plane.albedo.b, float(p.light));
+    glUniform1f(kDarknessLocation, float(properties().getFloat(kDarkness)));
+    if (!mUseProxies) {
+        ctx.submitter.draw(DrawSet::Casters);
+        return;
+    }
+    for (const ProxyBatch& b : mProxyBatches) {
+        glBindVertexArray(b.vao);
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr, b.count,
+                                            GLuint(b.first));
+    }
+    glBindVertexArray(0);
+}
+
+void PlanarTechnique::setShadowState(bool stencil) {
+    glDepthMask(GL_FALSE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(ReceiverStencil::kOffsetFactor, ReceiverStencil::kOffsetUnits);
+    if (mGuards) { // only the guarded shader writes gl_ClipDistance (unwritten ones are undefined)
+        glEnable(GL_CLIP_DISTANCE0);
+        glEnable(GL_CLIP_DISTANCE1);
+    }
+    // Colour: dst - src (the light's term removed); visibility: dst * src (the light's channel scaled).
+    glEnable(GL_BLEND);
+    glBlendEquationi(0, GL_FUNC_REVERSE_SUBTRACT);
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendEquationi(1, GL_FUNC_ADD);
+    glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
+    if (stencil) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+    } else {
+        glDepthFunc(GL_LEQUAL); // the slides' "use bias": shadow polygons depth-tested, offset forwards
+    }
+}
+
+void PlanarTechnique::restoreState() {
+    glDisable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_CLIP_DISTANCE1);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void PlanarTechnique::execute(FrameContext& ctx) {
+    ctx.submitter.resetStats();
+    ctx.passes.begin("lighting");
+    mLitProgram->use();
+    ctx.submitter.draw(DrawSet::All);
+
+    ctx.passes.begin("shadows");
+    setShadowState(mStencil);
+    int ref = 0;
+    for (const Projection& p : mProjections) {
+        if (mStencil) {
+            // A fresh reference value per flattening marks the receiver anew without clearing the
+            // stencil: values left by the previous one never equal it. 255 flattenings, then a clear.
+            if (++ref > 255) {
+                glClear(GL_STENCIL_BUFFER_BIT);
+                ref = 1;
+            }
+            // The slides' steps 3 and 4: the receiver marks the stencil where it is visible; the
+            // occluder polygons, without depth test, pass where it is set and clear it (each pixel
+            // darkens once).
+            mReceivers.mark(p.plane, ref, GL_ZERO);
+        }
+        drawOccluders(ctx, p);
+    }
+    restoreState();
+
+    const SubmitStats& s = ctx.submitter.stats();
+    const double proxies = mUseProxies ? double(mProjections.size()) : 0.0;
+    mCounters = {{"draw_calls", double(s.drawCalls) + proxies * double(mProxyBatches.size())},
+                 {"triangles", double(s.triangles) + proxies * double(mProxyTriangles)},
+                 {"receiver_planes", double(mPlanes.size())},
+                 {"flattenings", double(mProjections.size())}};
+}
+
+} // namespace sb
