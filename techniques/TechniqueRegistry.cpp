@@ -5,6 +5,7 @@
 #include "scenes/Error.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/OccluderTechnique.h"
+#include "techniques/ProjectiveTechnique.h"
 #include "techniques/ProxyTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
 #include "techniques/SyntheticTechnique.h"
@@ -20,6 +21,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"volume", [] { return std::unique_ptr<Technique>(new VolumeTechnique()); }},
         {"occluder", [] { return std::unique_ptr<Technique>(new OccluderTechnique()); }},
         {"proxy", [] { return std::unique_ptr<Technique>(new ProxyTechnique()); }},
+        {"projective", [] { return std::unique_ptr<Technique>(new ProjectiveTechnique()); }},
         {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", [] { return std::unique_ptr<Technique>(new SyntheticTechnique()); }},
