@@ -2,11 +2,12 @@
 #include "scenes/Strings.h"
 
 #include "reference/ReferenceTechnique.h"
-#include "techniques/BlobTechnique.h"
 #include "scenes/Error.h"
+#include "techniques/BlobTechnique.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/OccluderTechnique.h"
 #include "techniques/PlanarTechnique.h"
+#include "techniques/ProjectiveTechnique.h"
 #include "techniques/ProxyTechnique.h"
 #include "techniques/ShadowMapTechnique.h"
 #include "techniques/SyntheticTechnique.h"
@@ -23,6 +24,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"occluder", [] { return std::unique_ptr<Technique>(new OccluderTechnique()); }},
         {"proxy", [] { return std::unique_ptr<Technique>(new ProxyTechnique()); }},
         {"planar", [] { return std::unique_ptr<Technique>(new PlanarTechnique()); }},
+        {"projective", [] { return std::unique_ptr<Technique>(new ProjectiveTechnique()); }},
         {"blob", [] { return std::unique_ptr<Technique>(new BlobTechnique()); }},
         {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
         // Not a shadow technique: the bottleneck study's calibration workloads.

@@ -1,0 +1,269 @@
+#include "techniques/ProjectiveTechnique.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/Error.h"
+#include "scenes/Math.h"
+#include "techniques/ShadowMapTechnique.h"
+
+namespace sb {
+
+namespace {
+constexpr const char* kResolution = "resolution";
+constexpr const char* kBlur = "blur";
+constexpr GLint kMatrixLocation = 8; // projective/texture.vert and common/scene.vert (SHADOW_MAP)
+constexpr GLint kLayerLocation = 0;  // projective/blur.frag (BLUR_FROM_ARRAY)
+} // namespace
+
+ProjectiveTechnique::ProjectiveTechnique()
+    : Technique({.name = "projective",
+                 .description = "projective texture shadows: casters black on white from each light, "
+                                "projected onto the non-casting receivers (no self-shadowing)",
+                 // Blurred edges are a fixed-width fake, not soft shadows; casters are never shadowed.
+                 .effects = Effect::HardShadows | Effect::NonPlanarReceivers | Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"texture", "blur", "lighting"},
+                 .properties =
+                     {
+                         {kResolution,
+                          PropertyType::Int,
+                          "512",
+                          16,
+                          8192,
+                          {},
+                          "projective texture width and height (texels)"},
+                         {kBlur,
+                          PropertyType::Int,
+                          "0",
+                          0,
+                          32,
+                          {},
+                          "blur radius in texels: the slides' fake softness"},
+                     },
+                 .quality = {
+                     {kResolution, {"128", "256", "512", "1024", "2048"}},
+                     {kBlur, {"0", "1", "2", "4", "8"}},
+                 }}) {}
+
+ProjectiveTechnique::~ProjectiveTechnique() {
+    releaseTextures();
+    if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);
+}
+
+ProjectiveTechnique::Projector ProjectiveTechnique::computeProjector(const Scene& scene, const Light& light) {
+    if (light.type == LightType::Directional)
+        return {ShadowMapTechnique::computeLightViewProj(scene, light), false};
+    // Point and spot: a perspective projector at the light looking at the casters' bounding sphere.
+    const Aabb casters = scene.computeBounds(true);
+    const glm::vec3 centre = casters.center();
+    const float radius = std::max(0.5f * glm::length(casters.extent()), 1e-4f);
+    const glm::vec3 toCentre = centre - light.position;
+    const float dist = glm::length(toCentre);
+    // The light at the centre itself has no direction towards it: the spot's axis, or straight down.
+    glm::vec3 forward = toCentre / dist;
+    if (!(dist > 1e-6f * radius))
+        forward = light.type == LightType::Spot ? glm::normalize(light.direction) : glm::vec3(0, -1, 0);
+    const float maxHalf = glm::radians(kMaxHalfAngleDeg);
+    Projector p;
+    float half = maxHalf;
+    if (dist > radius) {
+        // The sphere subtends asin(r / dist) around the axis; 1% and a quarter degree of padding keep
+        // the silhouette off the texture's border (the border is white: lit).
+        half = std::asin(radius / dist) * 1.01f + glm::radians(0.25f);
+    }
+    if (!(half < maxHalf)) {
+        half = maxHalf;
+        p.clamped = true;
+    }
+    const float nearZ = std::max(dist - radius, 1e-3f * std::max(dist, radius));
+    const float farZ = std::max(dist + radius, 2.0f * nearZ);
+    const glm::mat4 view = glm::lookAt(light.position, light.position + forward, anyPerpendicularUp(forward));
+    p.viewProj = glm::perspective(2.0f * half, 1.0f, nearZ, farZ) * view;
+    return p;
+}
+
+void ProjectiveTechnique::setScene(const Scene& scene) {
+    mViewProj.clear();
+    mTextureMatrix.clear();
+    mClamped = 0;
+    // No casters: nothing to project, every receiver is lit (and the frame does no texture work).
+    if (scene.computeBounds(true).empty()) return;
+    const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
+    const glm::mat4 bias =
+        glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+    for (size_t i = 0; i < count; ++i) {
+        const Projector p = computeProjector(scene, scene.lights[i]);
+        mViewProj.push_back(p.viewProj);
+        mTextureMatrix.push_back(bias * p.viewProj);
+        mClamped += p.clamped;
+    }
+}
+
+void ProjectiveTechnique::releaseTextures() {
+    if (!mFbos.empty()) glDeleteFramebuffers(GLsizei(mFbos.size()), mFbos.data());
+    mFbos.clear();
+    if (mArray) glDeleteTextures(1, &mArray);
+    if (mBlurFbo) glDeleteFramebuffers(1, &mBlurFbo);
+    if (mBlurTexture) glDeleteTextures(1, &mBlurTexture);
+    mArray = mBlurFbo = mBlurTexture = 0;
+    mResolution = mLayers = 0;
+}
+
+namespace {
+void checkComplete(GLuint fbo) {
+    const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw Error("projective: texture framebuffer incomplete (status 0x" + std::to_string(status) + ")",
+                    ExitCode::Failure);
+}
+} // namespace
+
+void ProjectiveTechnique::allocateTextures(int resolution, int layers) {
+    if (resolution == mResolution && layers == mLayers) return;
+    releaseTextures();
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mArray);
+    glTextureStorage3D(mArray, 1, GL_R8, resolution, resolution, layers);
+    // Bilinear lookups; outside the projector's frustum no caster was drawn: a white (lit) border.
+    glTextureParameteri(mArray, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(mArray, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(mArray, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(mArray, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTextureParameterfv(mArray, GL_TEXTURE_BORDER_COLOR, white);
+    mFbos.resize(size_t(layers));
+    glCreateFramebuffers(layers, mFbos.data());
+    for (int i = 0; i < layers; ++i) {
+        glNamedFramebufferTextureLayer(mFbos[size_t(i)], GL_COLOR_ATTACHMENT0, mArray, 0, i);
+        glNamedFramebufferDrawBuffer(mFbos[size_t(i)], GL_COLOR_ATTACHMENT0);
+        checkComplete(mFbos[size_t(i)]);
+    }
+    // The blur's intermediate (read with texelFetch only).
+    glCreateTextures(GL_TEXTURE_2D, 1, &mBlurTexture);
+    glTextureStorage2D(mBlurTexture, 1, GL_R8, resolution, resolution);
+    glTextureParameteri(mBlurTexture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(mBlurTexture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glCreateFramebuffers(1, &mBlurFbo);
+    glNamedFramebufferTexture(mBlurFbo, GL_COLOR_ATTACHMENT0, mBlurTexture, 0);
+    glNamedFramebufferDrawBuffer(mBlurFbo, GL_COLOR_ATTACHMENT0);
+    checkComplete(mBlurFbo);
+    mResolution = resolution;
+    mLayers = layers;
+}
+
+void ProjectiveTechnique::compile(const CompileContext& ctx) {
+    const PropertySet& p = properties();
+    const int layers = std::max<int>(1, int(mViewProj.size()));
+    allocateTextures(int(p.getInt(kResolution)), layers);
+    mBlurRadius = int(p.getInt(kBlur));
+    if (!mEmptyVao) glCreateVertexArrays(1, &mEmptyVao);
+
+    const Defines base = ctx.submitter.defines();
+    std::string key;
+    // Casters (and, without projectors, everything): lit and unshadowed, as `none` draws them.
+    Defines lit = base;
+    lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    mLitProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, lit);
+    key = mLitProgram->key();
+    mTextureProgram = mProjectiveProgram = mBlurHorizontal = mBlurVertical = nullptr;
+    if (!mViewProj.empty()) {
+        mTextureProgram = &ctx.programs.get({"projective/texture.vert", "projective/texture.frag", ""}, base);
+        Defines projective = base;
+        projective["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
+        projective["LIGHT_COUNT"] = std::to_string(mViewProj.size());
+        mProjectiveProgram =
+            &ctx.programs.get({"common/scene.vert", "projective/lighting.frag", ""}, projective);
+        key += "|" + mTextureProgram->key() + "|" + mProjectiveProgram->key();
+        if (mBlurRadius > 0) {
+            Defines blur = {{"BLUR_RADIUS", std::to_string(mBlurRadius)}};
+            mBlurVertical =
+                &ctx.programs.get({"projective/fullscreen.vert", "projective/blur.frag", ""}, blur);
+            blur["BLUR_FROM_ARRAY"] = "";
+            mBlurHorizontal =
+                &ctx.programs.get({"projective/fullscreen.vert", "projective/blur.frag", ""}, blur);
+            key += "|" + mBlurHorizontal->key() + "|" + mBlurVertical->key();
+        }
+    }
+    setPermutationKey(key);
+}
+
+void ProjectiveTechnique::renderTexture(FrameContext& ctx) {
+    if (mViewProj.empty()) return;
+    glViewport(0, 0, mResolution, mResolution);
+    glDisable(GL_DEPTH_TEST); // a silhouette: every caster fragment is black, whatever its depth
+    mTextureProgram->use();
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    for (size_t i = 0; i < mViewProj.size(); ++i) {
+        glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
+        glClearBufferfv(GL_COLOR, 0, white);
+        glUniformMatrix4fv(kMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
+        ctx.submitter.draw(DrawSet::Casters);
+    }
+    glEnable(GL_DEPTH_TEST);
+}
+
+int ProjectiveTechnique::renderBlur(FrameContext&) {
+    if (mViewProj.empty() || mBlurRadius <= 0) return 0;
+    glViewport(0, 0, mResolution, mResolution);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(mEmptyVao);
+    int draws = 0;
+    for (size_t i = 0; i < mViewProj.size(); ++i) {
+        // Horizontal: layer i -> the intermediate.
+        glBindFramebuffer(GL_FRAMEBUFFER, mBlurFbo);
+        mBlurHorizontal->use();
+        glUniform1i(kLayerLocation, GLint(i));
+        glBindTextureUnit(0, mArray);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        // Vertical: the intermediate -> layer i (the array is unbound first: it is being rendered to).
+        glBindTextureUnit(0, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
+        mBlurVertical->use();
+        glBindTextureUnit(0, mBlurTexture);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindTextureUnit(0, 0);
+        draws += 2;
+    }
+    glBindVertexArray(0);
+    glEnable(GL_DEPTH_TEST);
+    return draws;
+}
+
+void ProjectiveTechnique::renderLighting(FrameContext& ctx) {
+    ctx.targets.bind();
+    mLitProgram->use();
+    if (mViewProj.empty()) {
+        ctx.submitter.draw(DrawSet::All); // nothing casts: every instance lit
+        return;
+    }
+    // Casters fully lit (no self-shadowing: the texture cannot tell a caster's lit side from its
+    // shadowed one), then the receivers with the projected textures.
+    ctx.submitter.draw(DrawSet::Casters);
+    mProjectiveProgram->use();
+    glUniformMatrix4fv(kMatrixLocation, GLsizei(mTextureMatrix.size()), GL_FALSE,
+                       glm::value_ptr(mTextureMatrix[0]));
+    glBindTextureUnit(0, mArray);
+    ctx.submitter.draw(DrawSet::NonCasters);
+    glBindTextureUnit(0, 0);
+}
+
+void ProjectiveTechnique::execute(FrameContext& ctx) {
+    ctx.submitter.resetStats();
+    ctx.passes.begin("texture");
+    renderTexture(ctx);
+    ctx.passes.begin("blur");
+    const int blurPasses = renderBlur(ctx);
+    ctx.passes.begin("lighting");
+    renderLighting(ctx);
+    const SubmitStats& s = ctx.submitter.stats();
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"projective_texels", double(mResolution) * mResolution * double(mViewProj.size())},
+                 {"blur_passes", double(blurPasses)},
+                 {"projector_clamped", double(mClamped)}};
+}
+
+} // namespace sb

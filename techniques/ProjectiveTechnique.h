@@ -1,0 +1,89 @@
+#pragma once
+// `projective`: projective texture shadows (the ad-hoc technique of the Crawfis slides, "Projective
+// Texture Shadows"; the thesis section 2.3). Two passes per frame and light, plus an optional blur:
+//   "texture"  per light a light camera (the projector) that encloses the casters' bounds; the casters
+//              are drawn black on white into one layer of an R8 texture array (a silhouette: no depth
+//              test, no depth at all);
+//   "blur"     an optional separable Gaussian (sigma = blur / 2, truncated at `blur` texels) of each
+//              layer: the slides' "blur the texture for a fake effect" (it does not model a penumbra;
+//              the pass exists at blur 0 but does no GL work);
+//   "lighting" the casters drawn fully lit; the non-casting instances (DrawSet::NonCasters: grounds,
+//              walls) drawn with the textures projected onto them: visibility_i = the texture of light i
+//              at projector_i * world, with projective texture coordinates (s/q, t/q).
+// Projectors: directional lights reuse ShadowMapTechnique::computeLightViewProj (orthographic, fitted
+// to the casters' bounds); point and spot lights get a perspective projector at the light, looking at
+// the centre of the casters' bounding sphere, with a square frustum whose half-angle encloses that
+// sphere (asin(r / dist), padded), near = max(dist - r, 1e-3 dist), far = dist + r. A light inside
+// the sphere (or so close that the half-angle would pass kMaxHalfAngleDeg = 80 degrees) gets the
+// 80-degree frustum: casters outside it are missing from the texture (the slides' "occluder very close
+// to the light: wide frustum" problem, made finite instead of degenerate); counter
+// `projector_clamped` counts such lights.
+//
+// Why the design is what it is:
+//  - Casters stay lit: the silhouette texture has no depth, so a caster cannot tell its own lit side
+//    from the shadowed one; the slides render the casters fully lit ("no self shadowing"), and so
+//    does this technique (its effects say so: no SelfShadowing).
+//  - q > 0: a perspective projection also maps points behind the projector (q < 0) into [0,1]^2, as a
+//    mirrored image; without the test a receiver behind a point/spot light would get the caster's
+//    silhouette back-projected onto it (the slides' "receiver behind the projector").
+//  - Clamp to border, border white: outside the projector's frustum no caster was drawn, so it is lit.
+// Problems the slides name that remain by design: an occluder behind a receiver still darkens it
+// (there is no depth to compare); for directional lights a receiver between the light and the casters
+// is shadowed too (an orthographic projector has no "behind"); soft edges from the blur are a fixed
+// width in texture space, not a penumbra that grows with the distance to the caster.
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "techniques/Technique.h"
+
+namespace sb {
+
+class ProjectiveTechnique final : public Technique {
+public:
+    /// The widest projector half-angle (degrees): a light inside (or touching) the casters' bounding
+    /// sphere gets this frustum instead of one that would have to reach 90 degrees or more.
+    static constexpr float kMaxHalfAngleDeg = 80.0f;
+
+    /// A light's projector: view-projection of the light camera (clip space) and whether its frustum
+    /// was clamped to kMaxHalfAngleDeg.
+    struct Projector {
+        glm::mat4 viewProj{1.0f};
+        bool clamped = false;
+    };
+
+    ProjectiveTechnique();
+    ~ProjectiveTechnique() override;
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+    /// The projector of `light` for `scene` (whose casters must not be empty). Public for tests.
+    static Projector computeProjector(const Scene& scene, const Light& light);
+
+private:
+    void renderTexture(FrameContext& ctx);
+    int renderBlur(FrameContext& ctx); ///< returns the number of blur draws
+    void renderLighting(FrameContext& ctx);
+    void allocateTextures(int resolution, int layers);
+    void releaseTextures();
+
+    std::vector<glm::mat4> mViewProj;      ///< per light with a projector: light camera (clip space)
+    std::vector<glm::mat4> mTextureMatrix; ///< per light: bias * viewProj (to [0,1] texture space)
+    int mClamped = 0;                      ///< lights whose projector was clamped
+    GLuint mArray = 0;                     ///< R8 2D array, one layer per light
+    std::vector<GLuint> mFbos;             ///< per layer
+    GLuint mBlurTexture = 0, mBlurFbo = 0; ///< R8 2D: the horizontal pass's result
+    GLuint mEmptyVao = 0;                  ///< attribute-less full-screen triangle
+    int mResolution = 0, mLayers = 0, mBlurRadius = 0;
+    const Program* mTextureProgram = nullptr;
+    const Program* mBlurHorizontal = nullptr; ///< layer -> mBlurTexture
+    const Program* mBlurVertical = nullptr;   ///< mBlurTexture -> layer
+    const Program* mLitProgram = nullptr;     ///< casters (and everything without projectors)
+    const Program* mProjectiveProgram = nullptr;
+    Counters mCounters;
+};
+
+} // namespace sb
