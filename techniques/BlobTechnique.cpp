@@ -126,18 +126,21 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
         cyy += e.y * e.y;
         cxy += e.x * e.y;
     }
+    // Principal axes of the eight points; semi-axes sqrt(2) standard deviations, the ellipse through the
+    // corners of a rectangle (a footprint [-a, a] x [-b, b] has variances a^2 and b^2). Unlike the
+    // points' extent along the axes, this is continuous: a square footprint, whose axes are arbitrary,
+    // gets the same circle whichever pair float rounding picks.
+    cxx /= 8.0f;
+    cyy /= 8.0f;
+    cxy /= 8.0f;
     const float angle = 0.5f * std::atan2(2.0f * cxy, cxx - cyy);
     const glm::vec2 e1(std::cos(angle), std::sin(angle)), e2(-e1.y, e1.x);
-    glm::vec2 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec2& v : q) {
-        const glm::vec2 s(glm::dot(v, e1), glm::dot(v, e2));
-        lo = glm::min(lo, s);
-        hi = glm::max(hi, s);
-    }
+    const float mean0 = 0.5f * (cxx + cyy), diff = std::sqrt(0.25f * (cxx - cyy) * (cxx - cyy) + cxy * cxy);
     // A degenerate axis (a flat caster seen edge-on by the light) keeps a sliver, not a zero.
-    const glm::vec2 half = glm::max(0.5f * (hi - lo), glm::vec2(1e-4f * std::max(radius, 1e-6f)));
-    const glm::vec2 mid = 0.5f * (hi + lo);
-    const glm::vec2 centre = mid.x * e1 + mid.y * e2;
+    const float floor = 1e-4f * std::max(radius, 1e-6f);
+    const glm::vec2 half(std::max(std::sqrt(2.0f * (mean0 + diff)), floor),
+                         std::max(std::sqrt(2.0f * std::max(mean0 - diff, 0.0f)), floor));
+    const glm::vec2 centre = mean;
     const glm::vec3 u = e1.x * t + e1.y * b, v = e2.x * t + e2.y * b;
     return Blob{glm::vec4(origin + centre.x * t + centre.y * b, alpha),
                 glm::vec4(u * half.x, float(lightIndex)), glm::vec4(v * half.y, softness)};

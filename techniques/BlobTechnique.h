@@ -4,8 +4,9 @@
 // an ellipse"). A soft ellipse on the ground plane under each caster and for each light:
 //   - oriented and sized from the caster's world bounds and the light: the eight corners of the bounds
 //     are projected onto the ground along the light (from a point light's position, or along a
-//     directional light's direction); the ellipse's axes are the principal axes of those eight points
-//     (2x2 covariance) and its semi-axes half their extent along each axis, centred in that extent;
+//     directional light's direction); the ellipse is centred on their mean, its axes are their
+//     principal axes (2x2 covariance) and its semi-axes sqrt(2) standard deviations: the ellipse
+//     through the corners of a rectangular footprint, and continuous in the light and the object;
 //   - opacity falls with the height of the bounds' bottom over the ground, linearly to 0 at `fade`
 //     bounding radii;
 //   - a radial profile 1 - smoothstep(1 - softness, 1, r) (r = 1 on the ellipse): the fake softness.
