@@ -27,7 +27,8 @@ std::array<glm::vec3, 8> corners(const Aabb& b) {
 }
 
 /// `p` projected onto the plane along the light: from a point light's position (a point level with
-/// the light or above it is held just below it, 1% of the light's height), along a directional one.
+/// the light or above it, of a caster straddling the light's height, is held at 99% of the light's
+/// height: its shadow is huge but finite), along a directional one.
 glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, const glm::vec4& light) {
     const float h = plane.distance(p);
     if (light.w == 0.0f) { // directional: light.xyz points towards the light
@@ -103,6 +104,9 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
         hMax = std::max(hMax, ground.distance(p));
     }
     if (!(hMax > 0.0f)) return std::nullopt; // wholly below the ground
+    // A point light below the caster's bottom: every ray from the ground to the light passes under it,
+    // so it shadows nothing (projected through the light it would cover the whole ground).
+    if (l.w != 0.0f && hMin >= ground.distance(glm::vec3(l))) return std::nullopt;
     const float radius = 0.5f * glm::length(bounds.extent());
     const float alpha =
         opacity * std::clamp(1.0f - std::max(hMin, 0.0f) / (fade * std::max(radius, 1e-6f)), 0.0f, 1.0f);

@@ -109,4 +109,8 @@ TEST(BlobFitTest, NoBlobWhereNoShadowCanBe) {
     EXPECT_FALSE(BlobTechnique::fit(box({-1, -4, -1}, {1, -2, 1}), ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8));
     EXPECT_FALSE(BlobTechnique::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 0.5f)); // faded out (2 > 0.87)
     EXPECT_FALSE(BlobTechnique::fit(Aabb{}, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8)); // empty bounds
+    Light under;
+    under.type = LightType::Point;
+    under.position = {0, 1.5f, 0}; // between the ground and the box's bottom (y = 2)
+    EXPECT_FALSE(BlobTechnique::fit(b, ground(), under, 0, 1, 0.5f, 8));
 }

@@ -64,7 +64,23 @@ def pareto(args):
     for _, row in df.iterrows():
         base.setdefault(row["technique"], dict(kv.split("=", 1) for kv in str(row["properties"]).split(":") if "=" in kv))
 
-    fig, ax = plt.subplots(figsize=(8, 5.5), dpi=120)
+    facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
+    fig, axes = plt.subplots(1, len(facets), figsize=(8 * len(facets), 5.5), dpi=120, squeeze=False)
+    fronts = 0
+    for ax, facet in zip(axes[0], facets):
+        part = df if facet is None else df[df[args.facet] == facet]
+        fronts += pareto_panel(ax, part, base, args)
+        first = part.iloc[0]
+        default = (f"Accuracy against time: {first.get('scene', '')}, {first.get('width', '')}x"
+                   f"{first.get('height', '')}, {first.get('renderer', '')}")
+        ax.set_title(f"{args.facet} = {facet}" if facet is not None else (args.title or default), fontsize=9)
+    if args.facet and args.title:
+        fig.suptitle(args.title, fontsize=10)
+    save(fig, args.out, f"{len(df)} points, {fronts} on the front(s)")
+
+
+def pareto_panel(ax, df, base, args):
+    """One accuracy-against-time scatter with its Pareto front; returns the front's size."""
     for tech, group in df.groupby("technique", sort=False):
         ax.scatter(group["wall_ms_median"], group[args.metric], label=tech, s=36, zorder=3)
         for _, row in group.iterrows():
@@ -84,12 +100,9 @@ def pareto(args):
             # The reference (and any exact technique) sits at 0: a symmetric log axis keeps it on the
             # chart, linear below the smallest non-zero error and logarithmic above it.
             ax.set_yscale("symlog", linthresh=float(positive.min()))
-    first = df.iloc[0]
-    ax.set_title(args.title or f"Accuracy against time: {first.get('scene', '')}, "
-                 f"{first.get('width', '')}x{first.get('height', '')}, {first.get('renderer', '')}", fontsize=9)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
-    save(fig, args.out, f"{len(df)} points, {len(front)} on the front")
+    return len(front)
 
 
 def ok_rows(df):
@@ -292,6 +305,7 @@ def main():
     p.add_argument("--metric", default="acc_wrong_pct", help="error column (default acc_wrong_pct)")
     p.add_argument("--title", default="")
     p.add_argument("--logy", action="store_true", help="logarithmic error axis")
+    p.add_argument("--facet", default="", help="one panel (and front) per value of this column")
     q = sub.add_parser("lines", help="a measure against an axis, one line per series")
     q.add_argument("csv", nargs="+")
     q.add_argument("--out", required=True)
