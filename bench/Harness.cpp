@@ -8,6 +8,7 @@
 #include "scenes/Error.h"
 #include "scenes/Math.h"
 #include "scenes/SceneLoader.h"
+#include "techniques/FrameState.h"
 
 namespace sb {
 
@@ -96,14 +97,8 @@ void Harness::prepare(Technique& technique) {
 
 void Harness::setFrameState() {
     // The state every technique may assume at the start of execute(); techniques restore what they
-    // change.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // change (techniques/FrameState.h).
+    resetFrameState();
 }
 
 FrameSample Harness::renderFrame(Technique& technique) {

@@ -1,5 +1,6 @@
 #pragma once
 // Indexed triangle mesh in object space: the one geometry format every technique and submitter reads.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -28,6 +29,13 @@ struct Aabb {
     bool empty() const { return min.x > max.x; }
     glm::vec3 center() const { return 0.5f * (min + max); }
     glm::vec3 extent() const { return max - min; }
+    /// The 8 corners; bit 0 of the index picks max.x, bit 1 max.y, bit 2 max.z.
+    std::array<glm::vec3, 8> corners() const {
+        std::array<glm::vec3, 8> c;
+        for (int i = 0; i < 8; ++i)
+            c[size_t(i)] = {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+        return c;
+    }
 };
 
 /// A named part of a mesh (a contiguous index range), e.g. the teapot's lid, spout, handle, body or

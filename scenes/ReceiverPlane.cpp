@@ -25,6 +25,11 @@ bool meshPlane(const Mesh& mesh, float tolerance, glm::vec3& n, float& d) {
 }
 } // namespace
 
+std::pair<glm::vec3, glm::vec3> ReceiverPlane::basis(const glm::vec3& normal) {
+    const glm::vec3 t = glm::normalize(glm::cross(anyPerpendicularUp(normal), normal));
+    return {t, glm::cross(normal, t)};
+}
+
 glm::mat4 ReceiverPlane::projection(const glm::vec4& light) const {
     const glm::vec4 p = equation();
     // glm::outerProduct(c, r) is c r^T (column c, row r).
@@ -47,8 +52,7 @@ std::vector<ReceiverPlane> ReceiverPlane::find(const Scene& scene, float toleran
         if (!meshPlane(mesh, tolerance, n, d)) continue;
         // The rectangle spanned by the vertices in an in-plane basis (t, b, n right-handed, so the
         // corners run counter-clockwise seen from the front).
-        const glm::vec3 t = glm::normalize(glm::cross(anyPerpendicularUp(n), n));
-        const glm::vec3 b = glm::cross(n, t);
+        const auto [t, b] = basis(n);
         glm::vec2 lo(INFINITY), hi(-INFINITY);
         for (const glm::vec3& p : mesh.positions) {
             const glm::vec2 q(glm::dot(p, t), glm::dot(p, b));

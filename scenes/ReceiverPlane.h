@@ -11,6 +11,7 @@
 // and for the xz plane at y = 0 is the slides' 4x4 matrix row for row.
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -33,6 +34,8 @@ struct ReceiverPlane {
     /// P.L: positive when the light is in front of the plane (it can shadow the front), 0 when the light
     /// lies in the plane, negative behind it.
     float lightSide(const glm::vec4& light) const { return glm::dot(equation(), light); }
+    /// Unit in-plane axes (t, b) with t x b = normal: the rectangle's and the blobs' 2D coordinates.
+    static std::pair<glm::vec3, glm::vec3> basis(const glm::vec3& normal);
     /// The slides' flattening matrix towards `light` (homogeneous, see above).
     glm::mat4 projection(const glm::vec4& light) const;
 

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scenes/Math.h"
+#include "techniques/FrameState.h"
 
 namespace sb {
 
@@ -17,14 +17,6 @@ constexpr const char* kSoftness = "softness";
 constexpr const char* kFade = "fade";
 constexpr GLint kPlaneLocation = 12, kAlbedoLocation = 14; // shaders/blob/blob.frag
 constexpr GLuint kBlobBinding = 4;                         // shaders/blob/blob.vert
-
-std::array<glm::vec3, 8> corners(const Aabb& b) {
-    std::array<glm::vec3, 8> c;
-    for (int i = 0; i < 8; ++i)
-        c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                        (i & 4) ? b.max.z : b.min.z};
-    return c;
-}
 
 /// `p` projected onto the plane along the light: from a point light's position (a point level with
 /// the light or above it, of a caster straddling the light's height, is held at 99% of the light's
@@ -97,7 +89,7 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
     const glm::vec4 l = ReceiverPlane::homogeneousLight(light);
     if (bounds.empty() || !(ground.lightSide(l) > 1e-6f * std::max(1.0f, glm::length(glm::vec3(l)))))
         return std::nullopt;
-    const std::array<glm::vec3, 8> c = corners(bounds);
+    const std::array<glm::vec3, 8> c = bounds.corners();
     float hMin = INFINITY, hMax = -INFINITY;
     for (const glm::vec3& p : c) {
         hMin = std::min(hMin, ground.distance(p));
@@ -113,8 +105,7 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
     if (!(alpha > 0.0f)) return std::nullopt;
 
     // In-plane coordinates of the projected corners, then their principal axes.
-    const glm::vec3 t = glm::normalize(glm::cross(anyPerpendicularUp(ground.normal), ground.normal));
-    const glm::vec3 b = glm::cross(ground.normal, t);
+    const auto [t, b] = ReceiverPlane::basis(ground.normal);
     const glm::vec3 origin = -ground.d * ground.normal;
     std::array<glm::vec2, 8> q;
     glm::vec2 mean(0.0f);
@@ -183,7 +174,7 @@ void BlobTechnique::fitAll(const Scene& scene) {
     for (const Instance& inst : scene.instances) {
         if (!inst.castsShadow) continue;
         Aabb world;
-        for (const glm::vec3& c : corners(mMeshBounds[inst.mesh]))
+        for (const glm::vec3& c : mMeshBounds[inst.mesh].corners())
             world.extend(glm::vec3(inst.model * glm::vec4(c, 1.0f)));
         for (int l = 0; l < lights; ++l)
             if (auto blob = fit(world, *mGround, scene.lights[size_t(l)], l, opacity, softness, fade))
@@ -210,25 +201,14 @@ void BlobTechnique::execute(FrameContext& ctx) {
         glPolygonOffset(ReceiverStencil::kOffsetFactor, ReceiverStencil::kOffsetUnits);
         glDepthMask(GL_FALSE);
         mReceiver.mark(0, 1, GL_KEEP); // blobs stay on the ground's visible pixels, overlapping ones multiply
-        glEnable(GL_BLEND);
-        glBlendEquationi(0, GL_FUNC_REVERSE_SUBTRACT);
-        glBlendFunci(0, GL_ONE, GL_ONE);
-        glBlendEquationi(1, GL_FUNC_ADD);
-        glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
+        ReceiverStencil::setDarkenBlending();
         mBlobProgram->use();
         glUniform4fv(kPlaneLocation, 1, glm::value_ptr(mGround->equation()));
         glUniform3fv(kAlbedoLocation, 1, glm::value_ptr(mGround->albedo));
         glBindVertexArray(mEmptyVao);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(mBlobs.size()));
         glBindVertexArray(0);
-        glDisable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ZERO);
-        glDisable(GL_STENCIL_TEST);
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_TRUE);
+        resetFrameState();
     }
     const SubmitStats& s = ctx.submitter.stats();
     mCounters = {

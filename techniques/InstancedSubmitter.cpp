@@ -7,10 +7,6 @@
 namespace sb {
 
 namespace {
-struct InstanceRecord {
-    glm::mat4 model;
-    glm::vec4 colorId;
-};
 constexpr DrawSet kSets[kDrawSetCount] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers,
                                           DrawSet::NonCasters};
 } // namespace
@@ -47,15 +43,16 @@ void InstancedSubmitter::upload(const Scene& scene) {
                          GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
                          records.empty() ? nullptr : records.data(), 0);
     // A VAO per mesh: the shared mesh buffers at binding 0, the instance buffer at binding 1.
-    for (size_t m = 0; m < scene.meshes.size(); ++m) {
-        GLuint vao = mBuffers.vao(m);
-        glVertexArrayVertexBuffer(vao, 1, mInstanceBuffer, 0, sizeof(InstanceRecord));
-        glVertexArrayBindingDivisor(vao, 1, 1);
-        for (GLuint c = 0; c < 5; ++c) {
-            glEnableVertexArrayAttrib(vao, 4 + c);
-            glVertexArrayAttribFormat(vao, 4 + c, 4, GL_FLOAT, GL_FALSE, c * sizeof(glm::vec4));
-            glVertexArrayAttribBinding(vao, 4 + c, 1);
-        }
+    for (size_t m = 0; m < scene.meshes.size(); ++m) attachInstances(mBuffers.vao(m), mInstanceBuffer);
+}
+
+void InstancedSubmitter::attachInstances(GLuint vao, GLuint buffer) {
+    glVertexArrayVertexBuffer(vao, 1, buffer, 0, sizeof(InstanceRecord));
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    for (GLuint c = 0; c < 5; ++c) {
+        glEnableVertexArrayAttrib(vao, 4 + c);
+        glVertexArrayAttribFormat(vao, 4 + c, 4, GL_FLOAT, GL_FALSE, c * sizeof(glm::vec4));
+        glVertexArrayAttribBinding(vao, 4 + c, 1);
     }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <glm/glm.hpp>
 #include <vector>
 
 #include "techniques/MeshBuffers.h"
@@ -17,6 +18,15 @@ public:
     void upload(const Scene& scene) override;
     void draw(DrawSet set) override;
     Defines defines() const override { return {{"SB_INSTANCED", ""}}; }
+
+    /// One instance as shaders/common/instance.glsl reads it with SB_INSTANCED.
+    struct InstanceRecord {
+        glm::mat4 model;
+        glm::vec4 colorId; ///< rgb colour, w object id
+    };
+    /// Binds `buffer` (InstanceRecords) to `vao` at binding 1 with divisor 1: attributes 4..7 (model)
+    /// and 8 (colour + id). Also for techniques drawing their own instanced geometry.
+    static void attachInstances(GLuint vao, GLuint buffer);
 
 private:
     struct Batch {

@@ -9,6 +9,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/MeshGenerators.h"
+#include "techniques/FrameState.h"
+#include "techniques/InstancedSubmitter.h"
 #include "techniques/ProxyTechnique.h"
 
 namespace sb {
@@ -20,10 +22,6 @@ constexpr const char* kDarkness = "darkness";
 constexpr const char* kGuards = "guards";
 constexpr GLint kFlattenLocation = 8, kPlaneLocation = 12, kLightLocation = 13, kAlbedoLightLocation = 14,
                 kDarknessLocation = 15; // shaders/planar/shadow.*
-struct ProxyRecord {
-    glm::mat4 model;
-    glm::vec4 colorId;
-};
 
 /// The unit shapes of ShadowProxy (sphere radius 1, box [-1, 1]^3, cylinder radius 1 around z, z in
 /// [-1, 1]), coarse: an occluder proxy is meant to be cheap.
@@ -128,7 +126,7 @@ void PlanarTechnique::uploadProxies(const Scene& scene) {
     const std::vector<ShadowProxy> proxies = ProxyTechnique::collect(scene, false, nullptr);
     const Scene shapes = unitShapes();
     mProxyMeshes.upload(shapes);
-    std::vector<ProxyRecord> records;
+    std::vector<InstancedSubmitter::InstanceRecord> records;
     mProxyTriangles = 0;
     for (size_t s = 0; s < shapes.meshes.size(); ++s) {
         ProxyBatch b{mProxyMeshes.vao(s), mProxyMeshes.indexCount(s), GLsizei(records.size()), 0};
@@ -139,19 +137,12 @@ void PlanarTechnique::uploadProxies(const Scene& scene) {
         if (b.count) mProxyBatches.push_back(b);
     }
     glCreateBuffers(1, &mProxyInstances);
-    glNamedBufferStorage(mProxyInstances,
-                         GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(ProxyRecord)),
-                         records.empty() ? nullptr : records.data(), 0);
-    for (size_t s = 0; s < shapes.meshes.size(); ++s) {
-        const GLuint vao = mProxyMeshes.vao(s);
-        glVertexArrayVertexBuffer(vao, 1, mProxyInstances, 0, sizeof(ProxyRecord));
-        glVertexArrayBindingDivisor(vao, 1, 1);
-        for (GLuint c = 0; c < 5; ++c) { // common/instance.glsl: model at 4..7, colour + id at 8
-            glEnableVertexArrayAttrib(vao, 4 + c);
-            glVertexArrayAttribFormat(vao, 4 + c, 4, GL_FLOAT, GL_FALSE, c * sizeof(glm::vec4));
-            glVertexArrayAttribBinding(vao, 4 + c, 1);
-        }
-    }
+    glNamedBufferStorage(
+        mProxyInstances,
+        GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstancedSubmitter::InstanceRecord)),
+        records.empty() ? nullptr : records.data(), 0);
+    for (size_t s = 0; s < shapes.meshes.size(); ++s)
+        InstancedSubmitter::attachInstances(mProxyMeshes.vao(s), mProxyInstances);
 }
 
 void PlanarTechnique::compile(const CompileContext& ctx) {
@@ -159,6 +150,7 @@ void PlanarTechnique::compile(const CompileContext& ctx) {
     mStencil = p.getBool(kStencil);
     mUseProxies = p.getEnum(kOccluder) == "proxy";
     mGuards = p.getBool(kGuards);
+    mDarkness = float(p.getFloat(kDarkness));
     mProjections = projections(mPlanes, ctx.scene, mGuards);
 
     Defines base = ctx.submitter.defines();
@@ -186,7 +178,7 @@ void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p) {
     glUniform4fv(kPlaneLocation, 1, glm::value_ptr(plane.equation()));
     glUniform4fv(kLightLocation, 1, glm::value_ptr(p.lightPos));
     glUniform4f(kAlbedoLightLocation, plane.albedo.r, plane.albedo.g, plane.albedo.b, float(p.light));
-    glUniform1f(kDarknessLocation, float(properties().getFloat(kDarkness)));
+    glUniform1f(kDarknessLocation, mDarkness);
     if (!mUseProxies) {
         ctx.submitter.draw(DrawSet::Casters);
         return;
@@ -207,32 +199,13 @@ void PlanarTechnique::setShadowState(bool stencil) {
         glEnable(GL_CLIP_DISTANCE0);
         glEnable(GL_CLIP_DISTANCE1);
     }
-    // Colour: dst - src (the light's term removed); visibility: dst * src (the light's channel scaled).
-    glEnable(GL_BLEND);
-    glBlendEquationi(0, GL_FUNC_REVERSE_SUBTRACT);
-    glBlendFunci(0, GL_ONE, GL_ONE);
-    glBlendEquationi(1, GL_FUNC_ADD);
-    glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
+    ReceiverStencil::setDarkenBlending(); // the light's term removed, its visibility channel scaled
     if (stencil) {
         glEnable(GL_STENCIL_TEST);
         glStencilMask(0xFF);
     } else {
         glDepthFunc(GL_LEQUAL); // the slides' "use bias": shadow polygons depth-tested, offset forwards
     }
-}
-
-void PlanarTechnique::restoreState() {
-    glDisable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ZERO);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_CLIP_DISTANCE0);
-    glDisable(GL_CLIP_DISTANCE1);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 void PlanarTechnique::execute(FrameContext& ctx) {
@@ -259,7 +232,7 @@ void PlanarTechnique::execute(FrameContext& ctx) {
         }
         drawOccluders(ctx, p);
     }
-    restoreState();
+    resetFrameState();
 
     const SubmitStats& s = ctx.submitter.stats();
     const double proxies = mUseProxies ? double(mProjections.size()) : 0.0;

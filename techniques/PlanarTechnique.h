@@ -69,7 +69,6 @@ private:
     void release();
     void drawOccluders(FrameContext& ctx, const Projection& p);
     void setShadowState(bool stencil);
-    void restoreState();
 
     std::vector<ReceiverPlane> mPlanes;
     std::vector<Projection> mProjections;
@@ -79,6 +78,7 @@ private:
     std::vector<ProxyBatch> mProxyBatches;
     uint64_t mProxyTriangles = 0; ///< per flattening
     bool mStencil = true, mUseProxies = false, mGuards = true;
+    float mDarkness = 1.0f;
     const Program* mLitProgram = nullptr;
     const Program* mMarkProgram = nullptr; ///< mReceivers' program
     const Program* mShadowProgram = nullptr;

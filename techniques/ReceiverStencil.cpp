@@ -49,4 +49,12 @@ void ReceiverStencil::mark(size_t plane, int ref, GLenum passOp) const {
     glDisable(GL_DEPTH_TEST);
 }
 
+void ReceiverStencil::setDarkenBlending() {
+    glEnable(GL_BLEND);
+    glBlendEquationi(0, GL_FUNC_REVERSE_SUBTRACT);
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendEquationi(1, GL_FUNC_ADD);
+    glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
+}
+
 } // namespace sb

@@ -32,6 +32,9 @@ public:
     /// stencil op `passOp` for what is drawn next (GL_ZERO: each pixel once; GL_KEEP: any number of
     /// times). Expects GL_STENCIL_TEST and GL_POLYGON_OFFSET_FILL enabled by the caller.
     void mark(size_t plane, int ref, GLenum passOp) const;
+    /// The blending `planar` and `blob` draw shadows with: colour = dst - src (their fragment shaders
+    /// output the removed light's term), visibility = dst * src (1 - alpha in that light's channel).
+    static void setDarkenBlending();
 
 private:
     void release();

@@ -20,18 +20,10 @@ constexpr const char* kPcf = "pcf";
 constexpr const char* kHardwareCompare = "hardware_compare";
 constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert and common/scene.vert
 
-std::array<glm::vec3, 8> corners(const Aabb& b) {
-    std::array<glm::vec3, 8> c;
-    for (int i = 0; i < 8; ++i)
-        c[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
-                        (i & 4) ? b.max.z : b.min.z};
-    return c;
-}
-
 // Light-space (view) bounds of a world-space box.
 Aabb viewBounds(const glm::mat4& view, const Aabb& world) {
     Aabb out;
-    for (const glm::vec3& c : corners(world)) out.extend(glm::vec3(view * glm::vec4(c, 1.0f)));
+    for (const glm::vec3& c : world.corners()) out.extend(glm::vec3(view * glm::vec4(c, 1.0f)));
     return out;
 }
 } // namespace

@@ -84,9 +84,8 @@ bool VolumeGeometry::outsideAny(const std::array<Plane, 5>& planes, const glm::v
 
 std::array<glm::vec4, 8> VolumeGeometry::corners(const Aabb& box) {
     std::array<glm::vec4, 8> c;
-    for (int i = 0; i < 8; ++i)
-        c[size_t(i)] = {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                        (i & 4) ? box.max.z : box.min.z, 1.0f};
+    const std::array<glm::vec3, 8> p = box.corners();
+    for (size_t i = 0; i < 8; ++i) c[i] = glm::vec4(p[i], 1.0f);
     return c;
 }
 

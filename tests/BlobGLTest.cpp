@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
@@ -40,25 +41,10 @@ std::string writeScene(const std::string& name, const std::string& boxes, const 
     return path;
 }
 
-struct Frame {
-    std::vector<float> visibility;
-    std::vector<unsigned char> colour;
-    std::vector<glm::vec4> world;
-    Counters counters;
-};
+using Frame = test::RenderedFrame;
 
 Frame render(const std::string& scene, const std::string& spec) {
-    Harness h(test::quickConfig(scene, "view", kSize));
-    auto t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
-    h.prepare(*t);
-    h.renderFrame(*t);
-    Frame f;
-    f.visibility = h.targets().readVisibilityRGBA32F();
-    f.colour = h.targets().readColorRGBA8();
-    const glm::mat4 viewProj = cameraProjection(h.camera(), 1.0f) * cameraView(h.camera());
-    f.world = test::unprojectDepth(h.targets().readDepth(), kSize, kSize, viewProj);
-    f.counters = t->counters();
-    return f;
+    return test::renderSpec(scene, "view", kSize, spec);
 }
 
 double smoothstep(double e0, double e1, double x) {

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
@@ -58,25 +59,10 @@ writeScene(const std::string& name, const std::vector<Ball>& balls, const std::s
     return path;
 }
 
-struct Frame {
-    std::vector<float> visibility;
-    std::vector<unsigned char> colour;
-    std::vector<glm::vec4> world;
-    Counters counters;
-};
+using Frame = test::RenderedFrame;
 
 Frame render(const std::string& scene, const std::string& spec) {
-    Harness h(test::quickConfig(scene, "view", kSize));
-    auto t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
-    h.prepare(*t);
-    h.renderFrame(*t);
-    Frame f;
-    f.visibility = h.targets().readVisibilityRGBA32F();
-    f.colour = h.targets().readColorRGBA8();
-    const glm::mat4 viewProj = cameraProjection(h.camera(), 1.0f) * cameraView(h.camera());
-    f.world = test::unprojectDepth(h.targets().readDepth(), kSize, kSize, viewProj);
-    f.counters = t->counters();
-    return f;
+    return test::renderSpec(scene, "view", kSize, spec);
 }
 
 /// A light for the ray cast: a point light at `pos` (w = 1) or a directional one travelling along
@@ -159,7 +145,9 @@ TEST(PlanarGLTest, DirectionalShadowMatchesTheRayCast) {
         EXPECT_EQ(test::counter(f.counters, "flattenings"), 1.0);
         // No self-shadowing: the ball's own pixels, its dark side included, are lit.
         for (size_t i = 0; i < f.world.size(); ++i)
-            if (f.world[i].w != 0.0f && f.world[i].y > 0.6f) ASSERT_EQ(f.visibility[i * 4], 1.0f);
+            if (f.world[i].w != 0.0f && f.world[i].y > 0.6f) {
+                ASSERT_EQ(f.visibility[i * 4], 1.0f);
+            }
     }
     // Colour: a shadowed floor pixel is the ambient term only (darkness 1 removes the light exactly), a
     // lit one ambient + n.l; albedo 0.5, ambient 0.2, 8-bit rounding +-1, llvmpipe's blending +-1 more.
@@ -212,7 +200,9 @@ TEST(PlanarGLTest, StencilDarkensOncePerPixelAndOnlyOnTheReceiver) {
     int half = 0;
     for (size_t i = 0; i < on.world.size(); ++i) {
         const float v = on.visibility[i * 4];
-        if (on.world[i].w == 0.0f) ASSERT_EQ(v, 1.0f) << "a shadow off the receiver";
+        if (on.world[i].w == 0.0f) {
+            ASSERT_EQ(v, 1.0f) << "a shadow off the receiver";
+        }
         if (!onFloor(on.world[i], 0.8f)) continue;
         ASSERT_TRUE(std::abs(v - 1.0f) < 1e-3f || std::abs(v - 0.5f) < 1e-3f) << v;
         half += std::abs(v - 0.5f) < 1e-3f;

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
@@ -58,13 +59,11 @@ Frame render(const std::string& scene, const std::string& props) {
     Harness h(test::quickConfig(scene, "top", kSize));
     ProjectiveTechnique t;
     t.properties().apply(TechniqueSpec::parse("projective" + (props.empty() ? "" : ":" + props)).properties);
-    h.prepare(t);
-    h.renderFrame(t);
+    test::RenderedFrame r = test::renderOnce(h, t);
     Frame f;
-    f.visibility = h.targets().readVisibilityRGBA32F();
-    const glm::mat4 viewProj = cameraProjection(h.camera(), 1.0f) * cameraView(h.camera());
-    f.world = test::unprojectDepth(h.targets().readDepth(), kSize, kSize, viewProj);
-    f.counters = t.counters();
+    f.visibility = std::move(r.visibility);
+    f.world = std::move(r.world);
+    f.counters = std::move(r.counters);
     for (const Light& l : h.scene().lights)
         f.projectors.push_back(ProjectiveTechnique::computeProjector(h.scene(), l).viewProj);
     f.resolution = int(t.properties().getInt("resolution"));

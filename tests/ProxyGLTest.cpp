@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
@@ -44,31 +45,13 @@ std::string writeScene(const std::string& dir, const std::string& lights, const 
     return path;
 }
 
-const char* kOneLight = R"([{"type": "directional", "direction": [0.4, -1, 0.1]}])";
-
-struct Frame {
-    std::vector<float> visibility;
-    std::vector<unsigned char> colour;
-    std::vector<glm::vec4> world;
-    std::string permutation;
-    Counters counters;
-};
+using Frame = test::RenderedFrame;
 
 Frame render(const std::string& scene, const std::string& spec) {
-    Harness h(test::quickConfig(scene, "top", kSize));
-    auto t = std::make_unique<ProxyTechnique>();
-    t->properties().apply(TechniqueSpec::parse(spec).properties);
-    h.prepare(*t);
-    h.renderFrame(*t);
-    Frame f;
-    f.visibility = h.targets().readVisibilityRGBA32F();
-    f.colour = h.targets().readColorRGBA8();
-    const glm::mat4 viewProj = cameraProjection(h.camera(), 1.0f) * cameraView(h.camera());
-    f.world = test::unprojectDepth(h.targets().readDepth(), kSize, kSize, viewProj);
-    f.permutation = t->permutationKey();
-    f.counters = t->counters();
-    return f;
+    return test::renderSpec(scene, "top", kSize, spec);
 }
+
+const char* kOneLight = R"([{"type": "directional", "direction": [0.4, -1, 0.1]}])";
 
 struct Shading {
     double offset = 1.0, shadow = 1.0, falloff = 1.0, cutoff = 0.0;
@@ -121,7 +104,9 @@ TEST(ProxyGLTest, ModulatedShadowMatchesTheClosedForm) {
     EXPECT_GT(shadowed, 1000);
     // The ball's own pixels are skipped by its own proxy (Listing 1.2's self-shadow test): fully lit.
     for (size_t i = 0; i < grid.world.size(); ++i)
-        if (grid.world[i].w != 0.0f && grid.world[i].y > 0.5f) EXPECT_EQ(grid.visibility[i * 4], 1.0f);
+        if (grid.world[i].w != 0.0f && grid.world[i].y > 0.5f) {
+            EXPECT_EQ(grid.visibility[i * 4], 1.0f);
+        }
     // grid=off tests the same proxy in every fragment: the same image, bit for bit.
     const Frame brute = render(scene, "proxy:offset=2:grid=false");
     EXPECT_EQ(grid.visibility, brute.visibility);
@@ -157,7 +142,9 @@ TEST(ProxyGLTest, OffsetZeroAndTinyAreFiniteAndLit) {
         const Frame f = render(scene, spec);
         for (size_t i = 0; i < f.world.size(); ++i) {
             ASSERT_TRUE(std::isfinite(f.visibility[i * 4])) << spec;
-            if (isFloor(f.world[i])) EXPECT_EQ(f.visibility[i * 4], 1.0f) << spec;
+            if (isFloor(f.world[i])) {
+                EXPECT_EQ(f.visibility[i * 4], 1.0f) << spec;
+            }
         }
     }
 }
