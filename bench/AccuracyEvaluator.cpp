@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/CsvNumber.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/Math.h"
 
 namespace sb {

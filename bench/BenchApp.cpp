@@ -26,9 +26,9 @@
 #include "bench/SweepCommand.h"
 #include "bench/SweepWorker.h"
 #include "bench/Viewer.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
+#include "core/Strings.h"
 #include "scenes/SceneLoader.h"
-#include "scenes/Strings.h"
 #include "techniques/TechniqueRegistry.h"
 
 namespace sb {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -13,7 +13,7 @@
 #include "bench/BenchApp.h"
 #include "bench/CsvNumber.h"
 #include "bench/Statistics.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/SceneLoader.h"
 
 namespace sb {

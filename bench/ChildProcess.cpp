@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 extern char** environ;
 

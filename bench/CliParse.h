@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

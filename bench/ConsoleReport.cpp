@@ -1,7 +1,7 @@
 #include "bench/ConsoleReport.h"
 
 #include "bench/TextColumns.h"
-#include "scenes/Strings.h"
+#include "core/Strings.h"
 
 #include <cstdio>
 #include <ostream>

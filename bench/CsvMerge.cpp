@@ -8,7 +8,7 @@
 #include <system_error>
 
 #include "bench/CsvWriter.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

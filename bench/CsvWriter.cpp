@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

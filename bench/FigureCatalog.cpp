@@ -4,9 +4,9 @@
 #include <set>
 
 #include "bench/BottleneckStudy.h"
-#include "scenes/Error.h"
-#include "scenes/JsonReader.h"
-#include "scenes/Paths.h"
+#include "core/Error.h"
+#include "core/JsonReader.h"
+#include "core/Paths.h"
 
 namespace sb {
 

@@ -13,7 +13,7 @@
 #include "bench/SweepDefinition.h"
 #include "bench/SweepReport.h"
 #include "bench/SweepRunner.h"
-#include "scenes/Paths.h"
+#include "core/Paths.h"
 
 namespace sb {
 

@@ -18,7 +18,7 @@
 #include "bench/BenchApp.h"
 #include "bench/Harness.h"
 #include "bench/Statistics.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/NoneTechnique.h"
 

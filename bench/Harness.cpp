@@ -1,11 +1,11 @@
 #include "bench/Harness.h"
-#include "scenes/Strings.h"
+#include "core/Strings.h"
 
 #include <chrono>
 #include <map>
 
+#include "core/Error.h"
 #include "gl/DebugOutput.h"
-#include "scenes/Error.h"
 #include "scenes/Math.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/FrameState.h"

@@ -6,7 +6,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

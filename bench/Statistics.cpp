@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -11,10 +11,10 @@
 #include "bench/BenchApp.h"
 #include "bench/CsvNumber.h"
 #include "bench/QualitySweep.h"
-#include "scenes/Error.h"
-#include "scenes/JsonReader.h"
+#include "core/Error.h"
+#include "core/JsonReader.h"
+#include "core/Strings.h"
 #include "scenes/SceneLoader.h"
-#include "scenes/Strings.h"
 #include "techniques/TechniqueRegistry.h"
 
 namespace sb {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

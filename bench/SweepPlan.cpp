@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "scenes/Error.h"
-#include "scenes/Fnv1a.h"
-#include "scenes/Strings.h"
+#include "core/Error.h"
+#include "core/Fnv1a.h"
+#include "core/Strings.h"
 
 namespace sb {
 

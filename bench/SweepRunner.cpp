@@ -14,8 +14,8 @@
 #include "bench/Environment.h"
 #include "bench/ProgressBar.h"
 #include "bench/SweepJob.h"
+#include "core/Error.h"
 #include "gl/ProgramCache.h"
-#include "scenes/Error.h"
 #include "techniques/PropertySet.h"
 
 namespace sb {

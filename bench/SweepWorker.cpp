@@ -9,8 +9,8 @@
 #include "bench/BenchApp.h"
 #include "bench/Measurement.h"
 #include "bench/SweepJob.h"
+#include "core/Error.h"
 #include "gl/DebugOutput.h"
-#include "scenes/Error.h"
 #include "techniques/TechniqueRegistry.h"
 
 namespace sb {

@@ -7,11 +7,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/Error.h"
 #include "gl/EglDeviceContext.h"
 #include "gl/EglSurfacelessContext.h"
 #include "gl/GlfwContext.h"
 #include "gl/OsMesaContext.h"
-#include "scenes/Error.h"
 
 namespace sb {
 namespace {

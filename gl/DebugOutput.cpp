@@ -4,7 +4,7 @@
 
 #include <mutex>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
+#include "core/Error.h"
 #include "gl/EpoxyOsMesaBridge.h"
-#include "scenes/Error.h"
 
 namespace sb {
 

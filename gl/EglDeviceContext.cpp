@@ -1,6 +1,6 @@
 #include "gl/EglDeviceContext.h"
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

@@ -1,6 +1,6 @@
 #include "gl/EglSurfacelessContext.h"
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

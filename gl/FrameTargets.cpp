@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

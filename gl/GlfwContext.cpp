@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/Error.h"
 #include "gl/EpoxyOsMesaBridge.h"
-#include "scenes/Error.h"
 
 namespace sb {
 namespace {

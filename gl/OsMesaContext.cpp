@@ -5,8 +5,8 @@
 
 #include <GL/osmesa.h>
 
+#include "core/Error.h"
 #include "gl/EpoxyOsMesaBridge.h"
-#include "scenes/Error.h"
 
 namespace sb {
 

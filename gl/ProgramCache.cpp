@@ -5,9 +5,9 @@
 #include <system_error>
 #include <utility>
 
+#include "core/Error.h"
+#include "core/Paths.h"
 #include "gl/ShaderPreprocessor.h"
-#include "scenes/Error.h"
-#include "scenes/Paths.h"
 
 namespace sb {
 namespace {

@@ -5,7 +5,7 @@
 #include <regex>
 #include <sstream>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

@@ -1,6 +1,6 @@
 #include "gl/TextureFramebuffer.h"
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

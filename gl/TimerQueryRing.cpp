@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

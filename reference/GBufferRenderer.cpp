@@ -4,7 +4,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

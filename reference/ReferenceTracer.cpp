@@ -8,8 +8,8 @@
 #include <string>
 #include <thread>
 
+#include "core/Error.h"
 #include "reference/LightSampler.h"
-#include "scenes/Error.h"
 
 namespace sb {
 

@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include "scenes/Error.h"
-#include "scenes/Paths.h"
+#include "core/Error.h"
+#include "core/Paths.h"
 
 namespace sb {
 namespace {

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "core/Error.h"
 #include "scenes/BezierPatch.h"
-#include "scenes/Error.h"
 #include "scenes/MeshBuilder.h"
 
 namespace sb {

@@ -6,7 +6,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "scenes/Fnv1a.h"
+#include "core/Fnv1a.h"
 #include "scenes/Math.h"
 
 namespace sb {

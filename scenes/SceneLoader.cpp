@@ -1,5 +1,5 @@
 #include "scenes/SceneLoader.h"
-#include "scenes/Strings.h"
+#include "core/Strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,14 +13,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/Error.h"
+#include "core/JsonReader.h"
+#include "core/Paths.h"
+#include "core/SplitMix64.h"
 #include "scenes/BuiltinShadowPlanes.h"
-#include "scenes/Error.h"
-#include "scenes/JsonReader.h"
 #include "scenes/Math.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/ModelLoader.h"
-#include "scenes/Paths.h"
-#include "scenes/SplitMix64.h"
 
 namespace sb {
 namespace fs = std::filesystem;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

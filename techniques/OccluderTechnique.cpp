@@ -9,7 +9,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/OccluderTextures.h"
 

@@ -8,8 +8,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "core/Error.h"
 #include "gl/TextureFramebuffer.h"
-#include "scenes/Error.h"
 
 namespace sb {
 namespace {

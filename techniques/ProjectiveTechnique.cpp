@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/ShadowMapTechnique.h"
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <system_error>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

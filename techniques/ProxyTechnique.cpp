@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <map>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

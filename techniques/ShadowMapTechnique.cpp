@@ -7,7 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/Math.h"
 
 namespace sb {

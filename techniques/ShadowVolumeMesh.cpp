@@ -5,7 +5,7 @@
 #include <numeric>
 #include <unordered_map>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

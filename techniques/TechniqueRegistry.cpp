@@ -1,8 +1,8 @@
 #include "techniques/TechniqueRegistry.h"
-#include "scenes/Strings.h"
+#include "core/Strings.h"
 
+#include "core/Error.h"
 #include "reference/ReferenceTechnique.h"
-#include "scenes/Error.h"
 #include "techniques/BlobTechnique.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/OccluderTechnique.h"

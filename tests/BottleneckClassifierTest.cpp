@@ -20,7 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/BottleneckClassifier.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 using sb::BottleneckClassifier;
 using sb::BottleneckResult;

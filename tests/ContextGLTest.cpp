@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "core/Error.h"
 #include "gl/Context.h"
 #include "gl/EglDeviceContext.h"
 #include "gl/EpoxyOsMesaBridge.h"
-#include "scenes/Error.h"
 
 namespace sb {
 namespace {

@@ -17,7 +17,7 @@
 #include "TestSupport.h"
 #include "bench/CsvMerge.h"
 #include "bench/CsvWriter.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 using namespace sb;
 using test::readFile;

@@ -16,7 +16,7 @@
 
 #include "TestSupport.h"
 #include "bench/CsvWriter.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 using namespace sb;
 using test::readFile;

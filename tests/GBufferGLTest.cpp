@@ -11,8 +11,8 @@
 
 #include "TestSupport.h"
 #include "bench/Harness.h"
+#include "core/Error.h"
 #include "reference/GBufferRenderer.h"
-#include "scenes/Error.h"
 #include "scenes/Math.h"
 #include "techniques/NoneTechnique.h"
 

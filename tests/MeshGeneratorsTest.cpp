@@ -9,8 +9,8 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include "core/Paths.h"
 #include "scenes/MeshGenerators.h"
-#include "scenes/Paths.h"
 
 using namespace sb;
 

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/ModelLoader.h"
 
 using namespace sb;

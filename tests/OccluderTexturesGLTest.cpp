@@ -20,10 +20,10 @@
 #include <glm/gtc/constants.hpp>
 
 #include "TestSupport.h"
+#include "core/Error.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/TextureFramebuffer.h"
-#include "scenes/Error.h"
 #include "scenes/MeshGenerators.h"
 #include "techniques/OccluderTextures.h"
 

@@ -4,9 +4,9 @@
 
 #include <string>
 
+#include "core/Error.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
-#include "scenes/Error.h"
 
 namespace sb {
 namespace {

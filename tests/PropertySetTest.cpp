@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "techniques/PropertySet.h"
 
 using namespace sb;

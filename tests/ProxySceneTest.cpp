@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/SceneLoader.h"
 
 using namespace sb;

@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "core/SplitMix64.h"
 #include "scenes/Math.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/ReceiverPlane.h"
 #include "scenes/Scene.h"
-#include "scenes/SplitMix64.h"
 
 using namespace sb;
 

@@ -11,11 +11,11 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "core/Error.h"
 #include "reference/EmbreeScene.h"
 #include "reference/GBuffer.h"
 #include "reference/LightSampler.h"
 #include "reference/ReferenceTracer.h"
-#include "scenes/Error.h"
 #include "scenes/Math.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/SceneLoader.h"

@@ -14,7 +14,7 @@
 #include "TestSupport.h"
 #include "bench/CsvWriter.h"
 #include "bench/RowExport.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 using namespace sb;
 using test::readFile;

@@ -6,10 +6,10 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
+#include "core/SplitMix64.h"
 #include "scenes/Math.h"
 #include "scenes/SceneLoader.h"
-#include "scenes/SplitMix64.h"
 
 using namespace sb;
 

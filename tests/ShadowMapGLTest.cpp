@@ -9,7 +9,7 @@
 
 #include "TestSupport.h"
 #include "bench/Harness.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/NoneTechnique.h"
 #include "techniques/ShadowMapTechnique.h"

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/ShadowPlane.h"
 
 using namespace sb;

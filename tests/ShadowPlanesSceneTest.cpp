@@ -18,10 +18,10 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
+#include "core/Error.h"
+#include "core/Paths.h"
 #include "scenes/BuiltinShadowPlanes.h"
-#include "scenes/Error.h"
 #include "scenes/MeshGenerators.h"
-#include "scenes/Paths.h"
 #include "scenes/SceneLoader.h"
 
 using namespace sb;

@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/Paths.h"
 #include "scenes/MeshGenerators.h"
-#include "scenes/Paths.h"
 #include "techniques/ShadowVolumeMesh.h"
 
 using namespace sb;

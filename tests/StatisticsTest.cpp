@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/Statistics.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 using sb::Statistics;
 

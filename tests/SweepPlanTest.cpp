@@ -12,7 +12,7 @@
 #include "bench/ProgressBar.h"
 #include "bench/SweepDefinition.h"
 #include "bench/SweepJob.h"
-#include "scenes/Error.h"
+#include "core/Error.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/SceneLoader.h"
 

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "core/Error.h"
 #include "gl/Context.h"
 #include "gl/DebugOutput.h"
 #include "gl/FrameTargets.h"
 #include "gl/TimerQueryRing.h"
-#include "scenes/Error.h"
 
 namespace sb {
 namespace {

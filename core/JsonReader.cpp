@@ -1,9 +1,9 @@
-#include "scenes/JsonReader.h"
-#include "scenes/Strings.h"
+#include "core/JsonReader.h"
+#include "core/Strings.h"
 
 #include <cmath>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "scenes/Paths.h"
+#include "core/Paths.h"
 
 #include <cerrno>
 #include <cstring>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "scenes/Error.h"
+#include "core/Error.h"
 
 namespace sb {
 
