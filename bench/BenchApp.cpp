@@ -28,6 +28,7 @@
 #include "bench/Viewer.h"
 #include "core/Error.h"
 #include "core/Strings.h"
+#include "gl/backends/BackendRegistry.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/TechniqueRegistry.h"
 
@@ -175,8 +176,7 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
     app.add_option("--seconds", c.seconds, "measure for this many seconds instead of --frames");
     app.add_option("--warmup", c.warmup, "discarded warm-up frames")->capture_default_str();
-    app.add_option("--backend", backend, "auto, egl-surfaceless, egl-device, osmesa, glfw")
-        ->capture_default_str();
+    app.add_option("--backend", backend, backendNames())->capture_default_str();
     app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
     app.add_flag("--window", window, "on-screen viewer (GLFW) instead of a measurement");
     app.add_option("--window-frames", c.windowFrames,

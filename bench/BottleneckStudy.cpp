@@ -14,6 +14,7 @@
 #include "bench/CsvNumber.h"
 #include "bench/Statistics.h"
 #include "core/Error.h"
+#include "gl/backends/BackendRegistry.h"
 #include "scenes/SceneLoader.h"
 
 namespace sb {

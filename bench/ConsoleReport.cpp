@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include "gl/backends/BackendRegistry.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/TechniqueRegistry.h"
 

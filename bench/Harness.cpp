@@ -6,6 +6,7 @@
 
 #include "core/Error.h"
 #include "gl/DebugOutput.h"
+#include "gl/backends/BackendRegistry.h"
 #include "scenes/Math.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/FrameState.h"

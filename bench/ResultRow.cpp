@@ -1,6 +1,7 @@
 #include "bench/ResultRow.h"
 
 #include "bench/CsvNumber.h"
+#include "gl/backends/BackendRegistry.h"
 
 namespace sb {
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "gl/backends/BackendRegistry.h"
+
 namespace sb {
 
 void SweepOptions::add(CLI::App& app) {
@@ -18,7 +20,7 @@ void SweepOptions::add(CLI::App& app) {
     app.add_option("--light", light, "light types, comma-separated ('scene' = as the scene says)");
     app.add_option("--repeat", repeat, "rounds of interleaved measurement per combination");
     // Options of a single run that stay the same across the sweep; forwarded verbatim.
-    auto forward = [&](const char* name, const char* help) {
+    auto forward = [&](const char* name, const std::string& help) {
         app.add_option_function<std::string>(
             name,
             [this, name](const std::string& v) {
@@ -35,7 +37,7 @@ void SweepOptions::add(CLI::App& app) {
     forward("--warmup", "discarded warm-up frames");
     forward("--seed", "layout seed");
     forward("--model", "model file replacing the layout mesh");
-    forward("--backend", "auto, egl-surfaceless, egl-device, osmesa");
+    forward("--backend", backendNames(true)); // headless: every combination runs in a worker process
     forward("--gpu", "EGL device index");
     forward("--ref-samples", "accuracy: reference samples per pixel");
     forward("--light-index", "accuracy: which light to judge");

@@ -16,6 +16,7 @@
 #include "bench/SweepJob.h"
 #include "core/Error.h"
 #include "gl/ProgramCache.h"
+#include "gl/backends/BackendRegistry.h"
 #include "techniques/PropertySet.h"
 
 namespace sb {

@@ -1,15 +1,14 @@
 #pragma once
-// A GL 4.5 compatibility-profile context, made current on the calling thread on creation. One backend
-// per file (EglSurfacelessContext, EglDeviceContext, OsMesaContext, GlfwContext); ContextFactory picks.
-// There is no default framebuffer to render into: everything renders into FBOs (FrameTargets).
-#include <memory>
+// A GL 4.5 compatibility-profile context, made current on the calling thread on creation. The backends
+// that create one live in gl/backends/, one per file, listed in one table (gl/backends/BackendRegistry.h,
+// which also has createContext). There is no default framebuffer to render into: everything renders
+// into FBOs (FrameTargets).
 #include <string>
 
 namespace sb {
 
+/// Which backend made a context; the names are in gl/backends/BackendRegistry.h.
 enum class Backend { Auto, EglSurfaceless, EglDevice, OsMesa, Glfw };
-const char* backendName(Backend b);            ///< "egl-surfaceless", "egl-device", "osmesa", "glfw", "auto"
-Backend parseBackend(const std::string& name); ///< throws sb::Error listing the valid names
 
 struct ContextOptions {
     Backend backend = Backend::Auto;
@@ -45,10 +44,5 @@ public:
     bool isSoftwareRenderer() const;
     bool hasExtension(const std::string& name) const;
 };
-
-/// Creates a context: Auto tries egl-device when --gpu is given, then egl-surfaceless, then osmesa
-/// (glfw only when asked for). Throws sb::Error with every backend's failure reason when none works,
-/// or when the context is not >= 4.5 compatibility (ExitCode::Unsupported).
-std::unique_ptr<Context> createContext(const ContextOptions& options);
 
 } // namespace sb

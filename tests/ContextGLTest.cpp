@@ -9,8 +9,9 @@
 
 #include "core/Error.h"
 #include "gl/Context.h"
-#include "gl/EglDeviceContext.h"
-#include "gl/EpoxyOsMesaBridge.h"
+#include "gl/backends/BackendRegistry.h"
+#include "gl/backends/EglDeviceContext.h"
+#include "gl/backends/EpoxyOsMesaBridge.h"
 
 namespace sb {
 namespace {

@@ -7,6 +7,7 @@
 #include "gl/Context.h"
 #include "gl/FrameTargets.h"
 #include "gl/ProgramCache.h"
+#include "gl/backends/BackendRegistry.h"
 
 namespace sb {
 namespace {

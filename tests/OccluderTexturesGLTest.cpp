@@ -24,6 +24,7 @@
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/TextureFramebuffer.h"
+#include "gl/backends/BackendRegistry.h"
 #include "scenes/MeshGenerators.h"
 #include "techniques/OccluderTextures.h"
 

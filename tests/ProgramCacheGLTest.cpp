@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
+#include "gl/backends/BackendRegistry.h"
 
 namespace sb {
 namespace {

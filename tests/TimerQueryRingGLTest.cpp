@@ -10,6 +10,7 @@
 #include "gl/DebugOutput.h"
 #include "gl/FrameTargets.h"
 #include "gl/TimerQueryRing.h"
+#include "gl/backends/BackendRegistry.h"
 
 namespace sb {
 namespace {

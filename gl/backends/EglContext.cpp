@@ -1,9 +1,9 @@
-#include "gl/EglContext.h"
+#include "gl/backends/EglContext.h"
 
 #include <cstdio>
 
 #include "core/Error.h"
-#include "gl/EpoxyOsMesaBridge.h"
+#include "gl/backends/EpoxyOsMesaBridge.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "gl/EglDeviceContext.h"
+#include "gl/backends/EglDeviceContext.h"
 
 #include "core/Error.h"
 

@@ -1,4 +1,4 @@
-#include "gl/OsMesaContext.h"
+#include "gl/backends/OsMesaContext.h"
 
 // epoxy/gl.h must come before GL/osmesa.h (which includes GL/gl.h).
 #include <epoxy/gl.h>
@@ -6,7 +6,7 @@
 #include <GL/osmesa.h>
 
 #include "core/Error.h"
-#include "gl/EpoxyOsMesaBridge.h"
+#include "gl/backends/EpoxyOsMesaBridge.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "gl/GlfwContext.h"
+#include "gl/backends/GlfwContext.h"
 
 #include <GLFW/glfw3.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/Error.h"
-#include "gl/EpoxyOsMesaBridge.h"
+#include "gl/backends/EpoxyOsMesaBridge.h"
 
 namespace sb {
 namespace {

@@ -1,4 +1,4 @@
-#include "gl/EglSurfacelessContext.h"
+#include "gl/backends/EglSurfacelessContext.h"
 
 #include "core/Error.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // egl-surfaceless: Mesa's EGL_MESA_platform_surfaceless display (no window system, no device choice).
 // On Mesa without a GPU this is llvmpipe; the default headless backend.
-#include "gl/EglContext.h"
+#include "gl/backends/EglContext.h"
 
 namespace sb {
 

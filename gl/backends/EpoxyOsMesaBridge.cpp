@@ -1,4 +1,4 @@
-#include "gl/EpoxyOsMesaBridge.h"
+#include "gl/backends/EpoxyOsMesaBridge.h"
 
 // epoxy/gl.h must come before GL/osmesa.h (which includes GL/gl.h).
 #include <epoxy/gl.h>

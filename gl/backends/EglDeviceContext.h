@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/EglContext.h"
+#include "gl/backends/EglContext.h"
 
 namespace sb {
 
