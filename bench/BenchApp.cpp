@@ -171,8 +171,7 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     app.add_option("--light", light, "replace every light's type: directional, point, spot");
     app.add_option("--camera", c.camera, "camera preset: far, mid, near, top")->capture_default_str();
     app.add_option("--size", size, "render target WIDTHxHEIGHT")->capture_default_str();
-    app.add_option("--submit", submit, "submission: immediate, displaylist, retained, instanced")
-        ->capture_default_str();
+    app.add_option("--submit", submit, "submission: " + submitModes().list())->capture_default_str();
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
     app.add_option("--seconds", c.seconds, "measure for this many seconds instead of --frames");
     app.add_option("--warmup", c.warmup, "discarded warm-up frames")->capture_default_str();
@@ -220,7 +219,7 @@ int BenchApp::parse(int argc, char** argv, RunConfig& c, bool& listOnly) {
     }
     std::tie(c.width, c.height) = parseSize(size);
     auto mode = parseSubmitMode(submit);
-    if (!mode) throw Error("--submit " + submit + ": expected immediate, displaylist, retained or instanced");
+    if (!mode) throw Error("--submit " + submit + ": expected " + submitModes().choices());
     c.submit = *mode;
     c.context.backend = window ? Backend::Glfw : parseBackend(backend);
     c.context.visibleWindow = window;

@@ -27,8 +27,8 @@
 #include "scenes/Scene.h"
 #include "techniques/FrameUniforms.h"
 #include "techniques/PassTimer.h"
-#include "techniques/Submitter.h"
 #include "techniques/Technique.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

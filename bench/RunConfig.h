@@ -9,7 +9,7 @@
 #include "gl/Context.h"
 #include "scenes/SceneOptions.h"
 #include "techniques/PropertySet.h"
-#include "techniques/Submitter.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

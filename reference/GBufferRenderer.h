@@ -20,8 +20,8 @@
 #include "gl/TextureFramebuffer.h"
 #include "reference/GBuffer.h"
 #include "scenes/Scene.h"
-#include "techniques/MeshBuffers.h"
-#include "techniques/Submitter.h"
+#include "techniques/submit/MeshBuffers.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

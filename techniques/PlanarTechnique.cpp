@@ -10,8 +10,8 @@
 
 #include "scenes/MeshGenerators.h"
 #include "techniques/FrameState.h"
-#include "techniques/InstancedSubmitter.h"
 #include "techniques/ProxyTechnique.h"
+#include "techniques/submit/InstancedSubmitter.h"
 
 namespace sb {
 

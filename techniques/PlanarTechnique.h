@@ -31,9 +31,9 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ReceiverPlane.h"
-#include "techniques/MeshBuffers.h"
 #include "techniques/ReceiverStencil.h"
 #include "techniques/Technique.h"
+#include "techniques/submit/MeshBuffers.h"
 
 namespace sb {
 

@@ -18,7 +18,7 @@
 #include "scenes/Scene.h"
 #include "techniques/PassTimer.h"
 #include "techniques/PropertySet.h"
-#include "techniques/Submitter.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

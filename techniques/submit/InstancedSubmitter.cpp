@@ -1,4 +1,4 @@
-#include "techniques/InstancedSubmitter.h"
+#include "techniques/submit/InstancedSubmitter.h"
 
 #include <algorithm>
 

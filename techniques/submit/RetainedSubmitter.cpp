@@ -1,4 +1,4 @@
-#include "techniques/RetainedSubmitter.h"
+#include "techniques/submit/RetainedSubmitter.h"
 
 #include <algorithm>
 #include <numeric>

@@ -1,4 +1,4 @@
-#include "techniques/DisplayListSubmitter.h"
+#include "techniques/submit/DisplayListSubmitter.h"
 
 namespace sb {
 

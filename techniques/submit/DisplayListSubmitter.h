@@ -3,7 +3,7 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/Submitter.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

@@ -15,16 +15,28 @@
 #include <optional>
 #include <string>
 
+#include "core/NameTable.h"
 #include "gl/ProgramCache.h"
 #include "scenes/Scene.h"
 
 namespace sb {
 
 enum class SubmitMode { Immediate, DisplayList, Retained, Instanced };
-const char* submitModeName(SubmitMode m); ///< "immediate", "displaylist", "retained", "instanced"
-std::optional<SubmitMode> parseSubmitMode(const std::string& name);
 constexpr SubmitMode kAllSubmitModes[] = {SubmitMode::Immediate, SubmitMode::DisplayList,
                                           SubmitMode::Retained, SubmitMode::Instanced};
+
+class Submitter;
+/// One row of the submission table (Submitter.cpp): the mode, its name (--submit, the CSV's `submit`
+/// column) and its factory. Adding a mode is one value above, one submitter class and one row.
+struct SubmitModeEntry {
+    SubmitMode value;
+    const char* name;
+    std::unique_ptr<Submitter> (*create)();
+};
+/// The submission modes in the order --help lists them.
+const NameTable<SubmitModeEntry>& submitModes();
+const char* submitModeName(SubmitMode m); ///< "immediate", "displaylist", "retained", "instanced"
+std::optional<SubmitMode> parseSubmitMode(const std::string& name);
 
 /// Which instances a draw covers: shadow casters, shadow receivers, or all; NonCasters are the
 /// instances that cast no shadow (grounds, walls): what `projective` textures, its casters staying lit.

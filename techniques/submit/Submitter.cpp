@@ -1,47 +1,48 @@
-#include "techniques/Submitter.h"
+#include "techniques/submit/Submitter.h"
 
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "techniques/DisplayListSubmitter.h"
-#include "techniques/ImmediateSubmitter.h"
-#include "techniques/InstancedSubmitter.h"
-#include "techniques/RetainedSubmitter.h"
+#include "techniques/submit/DisplayListSubmitter.h"
+#include "techniques/submit/ImmediateSubmitter.h"
+#include "techniques/submit/InstancedSubmitter.h"
+#include "techniques/submit/RetainedSubmitter.h"
 
 namespace sb {
 
+namespace {
+
+template <typename T>
+std::unique_ptr<Submitter> make() {
+    return std::make_unique<T>();
+}
+
+// The one table of submission modes, in kAllSubmitModes's order.
+constexpr SubmitModeEntry kSubmitModes[] = {
+    {SubmitMode::Immediate, "immediate", make<ImmediateSubmitter>},
+    {SubmitMode::DisplayList, "displaylist", make<DisplayListSubmitter>},
+    {SubmitMode::Retained, "retained", make<RetainedSubmitter>},
+    {SubmitMode::Instanced, "instanced", make<InstancedSubmitter>},
+};
+constexpr NameTable kSubmitModeTable{kSubmitModes};
+
+} // namespace
+
+const NameTable<SubmitModeEntry>& submitModes() {
+    return kSubmitModeTable;
+}
+
 const char* submitModeName(SubmitMode m) {
-    switch (m) {
-    case SubmitMode::Immediate:
-        return "immediate";
-    case SubmitMode::DisplayList:
-        return "displaylist";
-    case SubmitMode::Retained:
-        return "retained";
-    case SubmitMode::Instanced:
-        return "instanced";
-    }
-    return "?";
+    return kSubmitModeTable.name(m);
 }
 
 std::optional<SubmitMode> parseSubmitMode(const std::string& name) {
-    for (SubmitMode m : kAllSubmitModes)
-        if (name == submitModeName(m)) return m;
-    return std::nullopt;
+    return kSubmitModeTable.parse(name);
 }
 
 std::unique_ptr<Submitter> Submitter::create(SubmitMode mode) {
-    switch (mode) {
-    case SubmitMode::Immediate:
-        return std::make_unique<ImmediateSubmitter>();
-    case SubmitMode::DisplayList:
-        return std::make_unique<DisplayListSubmitter>();
-    case SubmitMode::Retained:
-        return std::make_unique<RetainedSubmitter>();
-    case SubmitMode::Instanced:
-        return std::make_unique<InstancedSubmitter>();
-    }
-    return nullptr;
+    const SubmitModeEntry* e = kSubmitModeTable.find(mode);
+    return e ? e->create() : nullptr;
 }
 
 bool Submitter::inSet(const Instance& inst, DrawSet set) {

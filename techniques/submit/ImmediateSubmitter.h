@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "techniques/Submitter.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/ImmediateSubmitter.h"
+#include "techniques/submit/ImmediateSubmitter.h"
 
 #include <epoxy/gl.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <vector>
 
-#include "techniques/MeshBuffers.h"
-#include "techniques/Submitter.h"
+#include "techniques/submit/MeshBuffers.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

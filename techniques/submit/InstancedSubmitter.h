@@ -3,8 +3,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "techniques/MeshBuffers.h"
-#include "techniques/Submitter.h"
+#include "techniques/submit/MeshBuffers.h"
+#include "techniques/submit/Submitter.h"
 
 namespace sb {
 

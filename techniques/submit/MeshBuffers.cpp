@@ -1,4 +1,4 @@
-#include "techniques/MeshBuffers.h"
+#include "techniques/submit/MeshBuffers.h"
 
 #include <glm/glm.hpp>
 
