@@ -20,7 +20,7 @@
 #include "bench/Statistics.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/NoneTechnique.h"
+#include "techniques/none/NoneTechnique.h"
 
 using namespace sb;
 

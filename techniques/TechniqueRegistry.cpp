@@ -3,15 +3,15 @@
 
 #include "core/Error.h"
 #include "reference/ReferenceTechnique.h"
-#include "techniques/BlobTechnique.h"
-#include "techniques/NoneTechnique.h"
-#include "techniques/OccluderTechnique.h"
-#include "techniques/PlanarTechnique.h"
-#include "techniques/ProjectiveTechnique.h"
-#include "techniques/ProxyTechnique.h"
-#include "techniques/ShadowMapTechnique.h"
-#include "techniques/SyntheticTechnique.h"
-#include "techniques/VolumeTechnique.h"
+#include "techniques/blob/BlobTechnique.h"
+#include "techniques/none/NoneTechnique.h"
+#include "techniques/occluder/OccluderTechnique.h"
+#include "techniques/planar/PlanarTechnique.h"
+#include "techniques/projective/ProjectiveTechnique.h"
+#include "techniques/proxy/ProxyTechnique.h"
+#include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/synthetic/SyntheticTechnique.h"
+#include "techniques/volume/VolumeTechnique.h"
 
 namespace sb {
 

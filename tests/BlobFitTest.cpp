@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "scenes/Scene.h"
-#include "techniques/BlobTechnique.h"
+#include "techniques/blob/BlobTechnique.h"
 
 using namespace sb;
 

@@ -14,7 +14,7 @@
 #include "core/Error.h"
 #include "reference/GBufferRenderer.h"
 #include "scenes/Math.h"
-#include "techniques/NoneTechnique.h"
+#include "techniques/none/NoneTechnique.h"
 
 using namespace sb;
 

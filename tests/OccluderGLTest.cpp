@@ -12,8 +12,8 @@
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/OccluderTechnique.h"
-#include "techniques/OccluderTextures.h"
+#include "techniques/occluder/OccluderTechnique.h"
+#include "techniques/occluder/OccluderTextures.h"
 
 using namespace sb;
 

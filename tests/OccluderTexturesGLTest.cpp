@@ -26,7 +26,7 @@
 #include "gl/TextureFramebuffer.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/MeshGenerators.h"
-#include "techniques/OccluderTextures.h"
+#include "techniques/occluder/OccluderTextures.h"
 
 namespace sb {
 namespace {

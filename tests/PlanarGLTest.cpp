@@ -15,8 +15,8 @@
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/PlanarTechnique.h"
 #include "techniques/TechniqueRegistry.h"
+#include "techniques/planar/PlanarTechnique.h"
 
 using namespace sb;
 

@@ -19,7 +19,7 @@
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/ProjectiveTechnique.h"
+#include "techniques/projective/ProjectiveTechnique.h"
 
 using namespace sb;
 

@@ -20,7 +20,7 @@
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/ProxyTechnique.h"
+#include "techniques/proxy/ProxyTechnique.h"
 
 using namespace sb;
 

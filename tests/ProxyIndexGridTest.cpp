@@ -4,7 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "techniques/ProxyIndexGrid.h"
+#include "techniques/proxy/ProxyIndexGrid.h"
 
 using namespace sb;
 

@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "techniques/ProxyTechnique.h"
+#include "techniques/proxy/ProxyTechnique.h"
 
 using namespace sb;
 

@@ -11,8 +11,8 @@
 #include "bench/Harness.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/NoneTechnique.h"
-#include "techniques/ShadowMapTechnique.h"
+#include "techniques/none/NoneTechnique.h"
+#include "techniques/shadowmap/ShadowMapTechnique.h"
 
 using namespace sb;
 

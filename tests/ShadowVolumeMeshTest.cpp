@@ -16,7 +16,7 @@
 
 #include "core/Paths.h"
 #include "scenes/MeshGenerators.h"
-#include "techniques/ShadowVolumeMesh.h"
+#include "techniques/volume/ShadowVolumeMesh.h"
 
 using namespace sb;
 

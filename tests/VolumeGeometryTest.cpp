@@ -7,7 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "techniques/VolumeGeometry.h"
+#include "techniques/volume/VolumeGeometry.h"
 
 using namespace sb;
 

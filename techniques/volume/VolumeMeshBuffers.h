@@ -10,7 +10,7 @@
 #include <epoxy/gl.h>
 
 #include "scenes/Scene.h"
-#include "techniques/ShadowVolumeMesh.h"
+#include "techniques/volume/ShadowVolumeMesh.h"
 
 namespace sb {
 

@@ -31,8 +31,8 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ReceiverPlane.h"
-#include "techniques/ReceiverStencil.h"
 #include "techniques/Technique.h"
+#include "techniques/common/ReceiverStencil.h"
 #include "techniques/submit/MeshBuffers.h"
 
 namespace sb {

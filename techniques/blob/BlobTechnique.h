@@ -26,8 +26,8 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ReceiverPlane.h"
-#include "techniques/ReceiverStencil.h"
 #include "techniques/Technique.h"
+#include "techniques/common/ReceiverStencil.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/ProxyIndexGrid.h"
+#include "techniques/proxy/ProxyIndexGrid.h"
 
 #include <algorithm>
 #include <array>

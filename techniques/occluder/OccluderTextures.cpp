@@ -1,4 +1,4 @@
-#include "techniques/OccluderTextures.h"
+#include "techniques/occluder/OccluderTextures.h"
 
 #include <algorithm>
 #include <array>

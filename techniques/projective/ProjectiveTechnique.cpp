@@ -1,4 +1,4 @@
-#include "techniques/ProjectiveTechnique.h"
+#include "techniques/projective/ProjectiveTechnique.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/ShadowMapTechnique.h"
+#include "techniques/shadowmap/ShadowMapTechnique.h"
 
 namespace sb {
 

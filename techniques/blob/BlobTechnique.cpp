@@ -1,4 +1,4 @@
-#include "techniques/BlobTechnique.h"
+#include "techniques/blob/BlobTechnique.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "techniques/ShadowVolumeMesh.h"
+#include "techniques/volume/ShadowVolumeMesh.h"
 
 #include <algorithm>
 #include <cmath>

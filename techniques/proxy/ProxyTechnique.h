@@ -27,8 +27,8 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ShadowProxy.h"
-#include "techniques/ProxyIndexGrid.h"
 #include "techniques/Technique.h"
+#include "techniques/proxy/ProxyIndexGrid.h"
 
 namespace sb {
 

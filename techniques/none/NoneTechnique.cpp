@@ -1,4 +1,4 @@
-#include "techniques/NoneTechnique.h"
+#include "techniques/none/NoneTechnique.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "techniques/OccluderTechnique.h"
+#include "techniques/occluder/OccluderTechnique.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/OccluderTextures.h"
+#include "techniques/occluder/OccluderTextures.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/ReceiverStencil.h"
+#include "techniques/common/ReceiverStencil.h"
 
 #include <algorithm>
 

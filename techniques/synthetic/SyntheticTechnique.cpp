@@ -1,4 +1,4 @@
-#include "techniques/SyntheticTechnique.h"
+#include "techniques/synthetic/SyntheticTechnique.h"
 
 namespace sb {
 

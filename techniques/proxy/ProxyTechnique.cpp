@@ -1,4 +1,4 @@
-#include "techniques/ProxyTechnique.h"
+#include "techniques/proxy/ProxyTechnique.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "techniques/ShadowMapTechnique.h"
+#include "techniques/shadowmap/ShadowMapTechnique.h"
 
 #include <algorithm>
 #include <array>

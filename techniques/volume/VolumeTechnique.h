@@ -36,10 +36,10 @@
 #include <glm/glm.hpp>
 
 #include "techniques/FrameUniforms.h"
-#include "techniques/ShadowVolumeMesh.h"
 #include "techniques/Technique.h"
-#include "techniques/VolumeGeometry.h"
-#include "techniques/VolumeMeshBuffers.h"
+#include "techniques/volume/ShadowVolumeMesh.h"
+#include "techniques/volume/VolumeGeometry.h"
+#include "techniques/volume/VolumeMeshBuffers.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/VolumeTechnique.h"
+#include "techniques/volume/VolumeTechnique.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "techniques/PlanarTechnique.h"
+#include "techniques/planar/PlanarTechnique.h"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 
 #include "scenes/MeshGenerators.h"
 #include "techniques/FrameState.h"
-#include "techniques/ProxyTechnique.h"
+#include "techniques/proxy/ProxyTechnique.h"
 #include "techniques/submit/InstancedSubmitter.h"
 
 namespace sb {

@@ -1,4 +1,4 @@
-#include "techniques/VolumeGeometry.h"
+#include "techniques/volume/VolumeGeometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "techniques/VolumeMeshBuffers.h"
+#include "techniques/volume/VolumeMeshBuffers.h"
 
 #include <algorithm>
 
