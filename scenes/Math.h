@@ -16,8 +16,5 @@ glm::mat4 cameraProjection(const CameraPreset& c, float aspect);
 glm::mat4 cameraView(const CameraPreset& c);
 /// A unit up vector not parallel to `dir` (for lookAt from a light direction, any direction works).
 glm::vec3 anyPerpendicularUp(const glm::vec3& dir);
-/// Light view-projection that encloses `bounds` tightly: orthographic for directional lights, a
-/// perspective frustum with the spot's cone for spot lights. Point lights are not handled here.
-glm::mat4 fitLightViewProjection(const Light& light, const Aabb& bounds);
 
 } // namespace sb

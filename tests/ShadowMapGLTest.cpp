@@ -10,6 +10,7 @@
 #include "TestSupport.h"
 #include "bench/Harness.h"
 #include "core/Error.h"
+#include "scenes/LightFit.h"
 #include "scenes/Math.h"
 #include "techniques/none/NoneTechnique.h"
 #include "techniques/shadowmap/ShadowMapTechnique.h"
@@ -77,7 +78,7 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
     //  - the shadow map's texel (plus PCF half-width, and one texel for bilinear hardware compare);
     //  - the screen pixel's footprint on the ground (the pixel centre decides, the edge may cross it);
     //  - the polygonal sphere's silhouette error r(1 - cos(pi/64)).
-    glm::mat4 lightVP = ShadowMapTechnique::computeLightViewProj(scene, scene.lights[0]);
+    glm::mat4 lightVP = fitLightViewProjection(scene, scene.lights[0]);
     // Orthographic light: row i of proj*view is (2 / extent_i) times a unit axis, so the extent of the
     // map in world units is 2 / |row|.
     auto rowLength = [&](int r) {

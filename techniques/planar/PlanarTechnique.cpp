@@ -9,8 +9,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/MeshGenerators.h"
+#include "scenes/ProxyCollection.h"
 #include "techniques/FrameState.h"
-#include "techniques/proxy/ProxyTechnique.h"
 #include "techniques/submit/InstancedSubmitter.h"
 
 namespace sb {
@@ -123,7 +123,7 @@ void PlanarTechnique::setScene(const Scene& scene) {
 
 void PlanarTechnique::uploadProxies(const Scene& scene) {
     // The casters' proxies, grouped by shape: one instanced draw per shape and flattening.
-    const std::vector<ShadowProxy> proxies = ProxyTechnique::collect(scene, false, nullptr);
+    const std::vector<ShadowProxy> proxies = ProxyCollection::collect(scene, false, nullptr);
     const Scene shapes = unitShapes();
     mProxyMeshes.upload(shapes);
     std::vector<InstancedSubmitter::InstanceRecord> records;

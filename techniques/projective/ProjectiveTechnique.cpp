@@ -7,8 +7,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/Error.h"
+#include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/shadowmap/ShadowMapTechnique.h"
 
 namespace sb {
 
@@ -55,8 +55,7 @@ ProjectiveTechnique::~ProjectiveTechnique() {
 }
 
 ProjectiveTechnique::Projector ProjectiveTechnique::computeProjector(const Scene& scene, const Light& light) {
-    if (light.type == LightType::Directional)
-        return {ShadowMapTechnique::computeLightViewProj(scene, light), false};
+    if (light.type == LightType::Directional) return {fitLightViewProjection(scene, light), false};
     // Point and spot: a perspective projector at the light looking at the casters' bounding sphere.
     const Aabb casters = scene.computeBounds(true);
     const glm::vec3 centre = casters.center();

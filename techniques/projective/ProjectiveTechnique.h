@@ -10,8 +10,8 @@
 //   "lighting" the casters drawn fully lit; the non-casting instances (DrawSet::NonCasters: grounds,
 //              walls) drawn with the textures projected onto them: visibility_i = the texture of light i
 //              at projector_i * world, with projective texture coordinates (s/q, t/q).
-// Projectors: directional lights reuse ShadowMapTechnique::computeLightViewProj (orthographic, fitted
-// to the casters' bounds); point and spot lights get a perspective projector at the light, looking at
+// Projectors: directional lights use the shadow map's fit (scenes/LightFit.h: orthographic, fitted to
+// the casters' bounds); point and spot lights get a perspective projector at the light, looking at
 // the centre of the casters' bounding sphere, with a square frustum whose half-angle encloses that
 // sphere (asin(r / dist), padded), near = max(dist - r, 1e-3 dist), far = dist + r. A light inside
 // the sphere (or so close that the half-angle would pass kMaxHalfAngleDeg = 80 degrees) gets the

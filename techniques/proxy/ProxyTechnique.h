@@ -6,7 +6,7 @@
 // The pipeline of section 1.3, per frame:
 //   1. the proxies: declared per mesh in the scene file (Mesh::proxies) or fitted to each caster
 //      instance (ShadowProxy::fit: the tightest of sphere, box, cylinder), world frames precomputed in
-//      setScene (instances do not move);
+//      setScene (instances do not move) by scenes/ProxyCollection, which planar's proxy occluders share;
 //   2. clipped against the view frustum and numbered, and 3. the IndexMap built (ProxyIndexGrid: the
 //      viewport split into cells x cells, each proxy's index in every cell its projected influence
 //      box overlaps), both on the CPU inside the timed frame as the chapter does;
@@ -26,6 +26,7 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "scenes/ProxyCollection.h"
 #include "scenes/ShadowProxy.h"
 #include "techniques/Technique.h"
 #include "techniques/proxy/ProxyIndexGrid.h"
@@ -40,15 +41,6 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
-
-    /// The world-space proxies of `scene` as the technique uses them: per caster instance its mesh's
-    /// declared proxies through the instance's model, or the fitted one (`fitAll`: ignore
-    /// declarations). Frames are made invertible (sanitizeFrame). Public for tests.
-    static std::vector<ShadowProxy> collect(const Scene& scene, bool fitAll, std::vector<uint32_t>* owners);
-    /// A frame whose columns (the scaled axes) have zero or near-zero length gets `minimum`-long axes
-    /// there, perpendicular to the others: a zero-radius sphere becomes a point-sized one, a box with
-    /// zero extent on one axis a flat one. Its inverse is then finite. Everything else is unchanged.
-    static glm::mat4 sanitizeFrame(const glm::mat4& frame, float minimum);
 
 private:
     /// std430 mirror of `struct Proxy` in shaders/proxy/lit.frag.

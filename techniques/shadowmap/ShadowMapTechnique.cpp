@@ -8,7 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/Error.h"
-#include "scenes/Math.h"
+#include "scenes/LightFit.h"
 
 namespace sb {
 
@@ -20,12 +20,6 @@ constexpr const char* kPcf = "pcf";
 constexpr const char* kHardwareCompare = "hardware_compare";
 constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert and common/scene.vert
 
-// Light-space (view) bounds of a world-space box.
-Aabb viewBounds(const glm::mat4& view, const Aabb& world) {
-    Aabb out;
-    for (const glm::vec3& c : world.corners()) out.extend(glm::vec3(view * glm::vec4(c, 1.0f)));
-    return out;
-}
 } // namespace
 
 ShadowMapTechnique::ShadowMapTechnique()
@@ -86,31 +80,6 @@ ShadowMapTechnique::~ShadowMapTechnique() {
     releaseMaps();
 }
 
-glm::mat4 ShadowMapTechnique::computeLightViewProj(const Scene& scene, const Light& light) {
-    Aabb all = scene.computeBounds(false);
-    Aabb casters = scene.computeBounds(true);
-    if (casters.empty()) casters = all;
-    glm::vec3 center = casters.center();
-    float radius = std::max(0.5f * glm::length(all.extent()), 1e-3f);
-    glm::vec3 dir = glm::normalize(light.direction);
-    if (light.type == LightType::Directional) {
-        glm::mat4 view = glm::lookAt(center - dir * radius * 2.0f, center, anyPerpendicularUp(dir));
-        Aabb xy = viewBounds(view, casters); // only casters need to be in the map
-        Aabb z = viewBounds(view, all);      // but every receiver must be inside its depth range
-        glm::vec2 pad = 0.01f * glm::vec2(xy.extent()) + glm::vec2(1e-3f);
-        glm::mat4 proj = glm::ortho(xy.min.x - pad.x, xy.max.x + pad.x, xy.min.y - pad.y, xy.max.y + pad.y,
-                                    -z.max.z - 1e-3f * radius, -z.min.z + 1e-3f * radius);
-        return proj * view;
-    }
-    // Spot: perspective frustum with the cone's angle, near/far from the scene's extent along the axis.
-    glm::mat4 view = glm::lookAt(light.position, light.position + dir, anyPerpendicularUp(dir));
-    Aabb z = viewBounds(view, all);
-    float farZ = std::max(-z.min.z, 1e-2f);
-    float nearZ = std::clamp(-z.max.z, farZ * 1e-3f, farZ * 0.999f);
-    glm::mat4 proj = glm::perspective(glm::radians(2.0f * light.spotOuterDeg), 1.0f, nearZ, farZ);
-    return proj * view;
-}
-
 void ShadowMapTechnique::setScene(const Scene& scene) {
     mLightViewProj.clear();
     mShadowMatrix.clear();
@@ -124,7 +93,7 @@ void ShadowMapTechnique::setScene(const Scene& scene) {
                             " is a point light, which needs a cube shadow map (not implemented here); use "
                             "--light directional or --light spot",
                         ExitCode::Unsupported);
-        mLightViewProj.push_back(computeLightViewProj(scene, l));
+        mLightViewProj.push_back(fitLightViewProjection(scene, l));
         mShadowMatrix.push_back(bias * mLightViewProj.back());
     }
 }

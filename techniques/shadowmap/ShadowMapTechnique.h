@@ -4,7 +4,8 @@
 // slope-scaled bias; pass "lighting" renders the scene once, comparing each fragment's light-space
 // depth with the map (PCF_SIZE^2 taps, hardware compare or shader compare) for every light.
 // Directional lights get an orthographic light camera fitted to the casters; spot lights a perspective
-// one with the spot cone. Point lights need a cube map: refused with ExitCode::Unsupported.
+// one with the spot cone (scenes/LightFit.h). Point lights need a cube map: refused with
+// ExitCode::Unsupported.
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -22,11 +23,6 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
-
-    /// Light view-projection for light `light` of `scene`: xy fitted to the casters' bounds, depth
-    /// range covering casters and receivers (so a receiver far below is still inside the map's depth
-    /// range). Public for tests.
-    static glm::mat4 computeLightViewProj(const Scene& scene, const Light& light);
 
 private:
     void renderDepth(FrameContext& ctx);

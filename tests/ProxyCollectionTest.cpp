@@ -1,12 +1,12 @@
-// The CPU side of `proxy` (no GL): which proxies a scene yields and the frames of degenerate ones.
-// Closed forms: a sanitised zero-radius sphere is a point (distances to it are distances to its
-// centre up to the minimum size), a box with zero extent on one axis a flat rectangle.
+// The proxies of a scene (no GL): which proxies it yields for `proxy` and `planar`, and the frames of
+// degenerate ones. Closed forms: a sanitised zero-radius sphere is a point (distances to it are
+// distances to its centre up to the minimum size), a box with zero extent on one axis a flat rectangle.
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "techniques/proxy/ProxyTechnique.h"
+#include "scenes/ProxyCollection.h"
 
 using namespace sb;
 
@@ -19,22 +19,22 @@ bool finite(const glm::mat4& m) {
 }
 } // namespace
 
-TEST(ProxyTechniqueTest, ZeroRadiusSphereBecomesAPoint) {
+TEST(ProxyCollectionTest, ZeroRadiusSphereBecomesAPoint) {
     ShadowProxy p;
     p.shape = ShadowProxy::Shape::Sphere;
     p.frame = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)), glm::vec3(0.0f));
-    p.frame = ProxyTechnique::sanitizeFrame(p.frame, 1e-6f);
+    p.frame = ProxyCollection::sanitizeFrame(p.frame, 1e-6f);
     ASSERT_TRUE(finite(glm::inverse(p.frame)));
     const glm::vec3 q(1.0f, 2.0f, 5.0f); // 2 above the centre
     EXPECT_NEAR(glm::length(p.closestPoint(q) - q), 2.0f, 1e-5f);
     EXPECT_NEAR(glm::length(p.closestPoint(glm::vec3(1, 2, 3)) - glm::vec3(1, 2, 3)), 0.0f, 1e-5f);
 }
 
-TEST(ProxyTechniqueTest, FlatBoxKeepsItsOtherAxesAndOrientation) {
+TEST(ProxyCollectionTest, FlatBoxKeepsItsOtherAxesAndOrientation) {
     ShadowProxy p;
     p.shape = ShadowProxy::Shape::Box;
     const glm::mat4 rot = glm::rotate(glm::mat4(1.0f), 0.5f, glm::vec3(0, 0, 1));
-    p.frame = ProxyTechnique::sanitizeFrame(glm::scale(rot, glm::vec3(2.0f, 0.0f, 1.0f)), 1e-6f);
+    p.frame = ProxyCollection::sanitizeFrame(glm::scale(rot, glm::vec3(2.0f, 0.0f, 1.0f)), 1e-6f);
     ASSERT_TRUE(finite(glm::inverse(p.frame)));
     EXPECT_EQ(glm::vec3(p.frame[0]), glm::vec3(rot[0]) * 2.0f); // untouched
     EXPECT_EQ(glm::vec3(p.frame[2]), glm::vec3(rot[2]));
@@ -46,7 +46,7 @@ TEST(ProxyTechniqueTest, FlatBoxKeepsItsOtherAxesAndOrientation) {
     EXPECT_NEAR(glm::length(p.closestPoint(q) - q), 3.0f, 1e-5f);
 }
 
-TEST(ProxyTechniqueTest, CollectFitsCastersDeclaredOrNot) {
+TEST(ProxyCollectionTest, CollectFitsCastersDeclaredOrNot) {
     Scene scene;
     Mesh cube;
     cube.name = "cube";
@@ -73,7 +73,7 @@ TEST(ProxyTechniqueTest, CollectFitsCastersDeclaredOrNot) {
     scene.instances = {a, ground, b};
     scene.updateTransforms();
     std::vector<uint32_t> owners;
-    const auto proxies = ProxyTechnique::collect(scene, false, &owners);
+    const auto proxies = ProxyCollection::collect(scene, false, &owners);
     ASSERT_EQ(proxies.size(), 3u);
     EXPECT_EQ(owners, (std::vector<uint32_t>{scene.instances[0].objectId, scene.instances[2].objectId,
                                              scene.instances[2].objectId}));
@@ -85,5 +85,5 @@ TEST(ProxyTechniqueTest, CollectFitsCastersDeclaredOrNot) {
     EXPECT_EQ(proxies[0].diffuse, glm::vec3(1, 0, 0));
     EXPECT_EQ(proxies[1].diffuse, glm::vec3(0, 1, 0)); // declared colour kept
     // proxies=fit ignores the declaration: one fitted box per caster.
-    EXPECT_EQ(ProxyTechnique::collect(scene, true, nullptr).size(), 2u);
+    EXPECT_EQ(ProxyCollection::collect(scene, true, nullptr).size(), 2u);
 }
