@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
         h.prepare(none);
         Defines d;
         d["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(h.scene().lights.size()), 1, kMaxLights));
-        GLuint program = h.programs().get({"common/scene.vert", "none/lit.frag", ""}, d).id();
+        GLuint program = h.programs().get({"common/scene.vert", "common/lit.frag", ""}, d).id();
         GLuint ubo;
         glCreateBuffers(1, &ubo);
         FrameUniformData data = FrameUniforms::compute(

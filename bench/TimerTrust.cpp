@@ -85,7 +85,7 @@ TimerVerdict TimerTrust::calibrate(ProgramCache& programs) {
         v.reason = "GL_TIME_ELAPSED has 0 counter bits on this context";
         return v;
     }
-    const Program& program = programs.get({"calibrate/fill.vert", "calibrate/fill.frag", ""}, {});
+    const Program& program = programs.get({"common/fullscreen.vert", "calibrate/fill.frag", ""}, {});
     FrameTargets small(kSmall, kSmall), large(kLarge, kLarge);
     GLuint query = 0, vao = 0;
     glGenQueries(1, &query);

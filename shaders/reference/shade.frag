@@ -1,4 +1,4 @@
-// `reference` shade pass: lit like none/lit.frag, each light's term multiplied by the ray-traced
+// `reference` shade pass: lit like common/lit.frag, each light's term multiplied by the ray-traced
 // visibility uploaded per frame (RGBA32F, channel i = light i, at this pixel). The pass re-rasterises
 // the G-buffer's triangles with the same camera, so gl_FragCoord names this fragment's own sample.
 #include "common/frame.glsl"

@@ -1,5 +1,5 @@
 // `synthetic`: the full-screen pass, uFragmentIterations steps of arithmetic per pixel (the fill-bound
-// calibration workload). Drawn with calibrate/fill.vert (a full-screen triangle from gl_VertexID).
+// calibration workload). Drawn with common/fullscreen.vert (a full-screen triangle from gl_VertexID).
 #include "common/alu_loop.glsl"
 layout(location = 0) uniform int uFragmentIterations;
 layout(location = 0) out vec4 oColor;

@@ -158,7 +158,7 @@ void BlobTechnique::setScene(const Scene& scene) {
 void BlobTechnique::compile(const CompileContext& ctx) {
     Defines lit = ctx.submitter.defines();
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
-    mLitProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, lit);
+    mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);
     mReceiver.compile(ctx.programs);
     mBlobProgram = &ctx.programs.get({"blob/blob.vert", "blob/blob.frag", ""}, {});
     setPermutationKey(mLitProgram->key() + "|" + mBlobProgram->key());

@@ -29,7 +29,7 @@ void ReceiverStencil::upload(const std::vector<ReceiverPlane>& planes) {
 }
 
 const Program& ReceiverStencil::compile(ProgramCache& programs) {
-    mProgram = &programs.get({"planar/receiver.vert", "planar/receiver.frag", ""}, {});
+    mProgram = &programs.get({"common/receiver.vert", "common/receiver.frag", ""}, {});
     return *mProgram;
 }
 

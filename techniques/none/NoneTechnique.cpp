@@ -17,7 +17,7 @@ void NoneTechnique::setScene(const Scene&) {}
 void NoneTechnique::compile(const CompileContext& ctx) {
     Defines defines = ctx.submitter.defines();
     defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
-    mProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, defines);
+    mProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, defines);
     setPermutationKey(mProgram->key());
 }
 

@@ -156,7 +156,7 @@ void PlanarTechnique::compile(const CompileContext& ctx) {
     Defines base = ctx.submitter.defines();
     Defines lit = base;
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
-    mLitProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, lit);
+    mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);
     mMarkProgram = &mReceivers.compile(ctx.programs);
     Defines shadow = lit;
     if (mGuards) shadow["GUARDS"] = "";

@@ -165,7 +165,7 @@ void ProjectiveTechnique::compile(const CompileContext& ctx) {
     // Casters (and, without projectors, everything): lit and unshadowed, as `none` draws them.
     Defines lit = base;
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
-    mLitProgram = &ctx.programs.get({"common/scene.vert", "none/lit.frag", ""}, lit);
+    mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);
     key = mLitProgram->key();
     mTextureProgram = mProjectiveProgram = mBlurHorizontal = mBlurVertical = nullptr;
     if (!mViewProj.empty()) {
@@ -179,10 +179,10 @@ void ProjectiveTechnique::compile(const CompileContext& ctx) {
         if (mBlurRadius > 0) {
             Defines blur = {{"BLUR_RADIUS", std::to_string(mBlurRadius)}};
             mBlurVertical =
-                &ctx.programs.get({"projective/fullscreen.vert", "projective/blur.frag", ""}, blur);
+                &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
             blur["BLUR_FROM_ARRAY"] = "";
             mBlurHorizontal =
-                &ctx.programs.get({"projective/fullscreen.vert", "projective/blur.frag", ""}, blur);
+                &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
             key += "|" + mBlurHorizontal->key() + "|" + mBlurVertical->key();
         }
     }

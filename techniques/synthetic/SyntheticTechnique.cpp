@@ -52,7 +52,7 @@ void SyntheticTechnique::compile(const CompileContext& ctx) {
         key = mScene->key();
     }
     if (properties().getInt(kFragmentIterations) > 0) {
-        mFill = &ctx.programs.get({"calibrate/fill.vert", "synthetic/fill.frag", ""}, {});
+        mFill = &ctx.programs.get({"common/fullscreen.vert", "synthetic/fill.frag", ""}, {});
         key += (key.empty() ? "" : "|") + mFill->key();
     }
     setPermutationKey(key);

@@ -1,4 +1,5 @@
-// `none`: lit, unshadowed. Visibility is 1 for every light (the baseline of every overhead ratio).
+// Lit, unshadowed: the whole of `none` (the baseline of every overhead ratio), and the lit pass that
+// `planar`, `blob` and `projective` draw before darkening. Visibility is 1 for every light.
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
 
