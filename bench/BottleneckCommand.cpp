@@ -63,7 +63,7 @@ int BottleneckCommand::main(int argc, char** argv) {
     app.add_option("--shard", shard, "run slice i of N (i/N); classify after bench merge")
         ->capture_default_str();
     app.add_flag("--no-progress", noProgress, "no progress bar on stderr");
-    app.add_option("--format", format, "stdout: console, csv, json or md (the classification)")
+    app.add_option("--format", format, "stdout: " + rowFormatChoices() + " (the classification)")
         ->capture_default_str();
     axes.add(app);
     if (int code = parseCli(app, argc, argv, "bench bottleneck"); code >= 0) return code;

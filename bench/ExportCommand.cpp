@@ -17,12 +17,13 @@ int ExportCommand::main(int argc, char** argv) {
     std::string input, output, format = "json";
     bool allColumns = false;
     app.add_option("input", input, "a CSV written by bench")->required();
-    app.add_option("--format", format, "json, md or csv")->capture_default_str();
+    app.add_option("--format", format, rowFormatChoices(true))->capture_default_str();
     app.add_option("-o,--output", output, "write here (atomically) instead of stdout");
     app.add_flag("--all-columns", allColumns, "md: every column instead of the key ones");
     if (int code = parseCli(app, argc, argv, "bench export"); code >= 0) return code;
     const RowFormat f = parseRowFormat(format);
-    if (f == RowFormat::Console) throw Error("--format console: export writes json, md or csv");
+    if (!rowFormats().find(f)->text)
+        throw Error("--format " + format + ": export writes " + rowFormatChoices(true));
     const CsvTable table = CsvWriter::read(input);
     const std::string text =
         f == RowFormat::Markdown ? RowExport::toMarkdown(table, allColumns) : RowExport::format(table, f);

@@ -21,14 +21,15 @@ constexpr int kJsonIndent = 2;
 constexpr const char* kNoRows = "(no rows)\n";
 constexpr size_t kMinSeparatorWidth = 3; // "---" is the shortest delimiter GFM accepts
 
-struct FormatName {
-    const char* name;
-    RowFormat format;
+// The one table of row formats. Order is the order of --help.
+constexpr RowFormatEntry kFormatEntries[] = {
+    {RowFormat::Console, "console", "tables", false},
+    {RowFormat::Csv, "csv", "", true},
+    {RowFormat::Json, "json", "", true},
+    {RowFormat::Markdown, "md", "", true},
+    {RowFormat::Markdown, "markdown", "", true},
 };
-constexpr FormatName kFormatNames[] = {
-    {"console", RowFormat::Console}, {"csv", RowFormat::Csv},           {"json", RowFormat::Json},
-    {"md", RowFormat::Markdown},     {"markdown", RowFormat::Markdown},
-};
+constexpr NameTable kFormats{kFormatEntries};
 
 const std::vector<std::string> kIdentifierColumns = {"git_commit", "scene_hash", "sweep_id",
                                                      "seed",       "shard",      "config_key"};
@@ -203,13 +204,25 @@ std::string markdownTable(const CsvTable& table, const std::vector<MarkdownColum
 
 } // namespace
 
+const NameTable<RowFormatEntry>& rowFormats() {
+    return kFormats;
+}
+
 RowFormat parseRowFormat(const std::string& name) {
-    std::string valid;
-    for (const FormatName& f : kFormatNames) {
-        if (name == f.name) return f.format;
-        valid += std::string(valid.empty() ? "" : ", ") + f.name;
+    if (std::optional<RowFormat> f = kFormats.parse(name)) return *f;
+    throw Error("unknown output format '" + name + "' (valid: " + kFormats.list() + ")", ExitCode::BadInput);
+}
+
+std::string rowFormatChoices(bool textOnly) {
+    std::vector<std::string> names;
+    for (const RowFormatEntry& e : kFormats.entries()) {
+        if (kFormats.find(e.value) != &e || (textOnly && !e.text)) continue; // aliases stay unlisted
+        names.push_back(std::string(e.name) + (*e.note ? std::string(" (") + e.note + ")" : ""));
     }
-    throw Error("unknown output format '" + name + "' (valid: " + valid + ")", ExitCode::BadInput);
+    std::string out;
+    for (size_t i = 0; i < names.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return out;
 }
 
 std::string RowExport::format(const CsvTable& table, RowFormat format) {

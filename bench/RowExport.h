@@ -6,14 +6,26 @@
 #include <vector>
 
 #include "bench/CsvWriter.h"
+#include "core/NameTable.h"
 
 namespace sb {
 
 enum class RowFormat { Console, Csv, Json, Markdown };
 
+/// One row of the format table (RowExport.cpp): adding a format is one value above, one row and its
+/// writer in RowExport::format; --format's help and errors everywhere come from the table.
+struct RowFormatEntry {
+    RowFormat value;
+    const char* name; ///< --format value; a second row with the same value is an accepted alias
+    const char* note; ///< shown after the name in help ("tables"), or ""
+    bool text;        ///< a text export of the rows (`bench export` writes only these)
+};
+const NameTable<RowFormatEntry>& rowFormats();
 /// "console", "csv", "json", "md" (also "markdown"); exact, lower case. Throws sb::Error(BadInput)
 /// naming the bad value and listing the valid names.
 RowFormat parseRowFormat(const std::string& name);
+/// --format's help: "console (tables), csv, json or md"; `textOnly`: "csv, json or md".
+std::string rowFormatChoices(bool textOnly = false);
 
 class RowExport {
 public:

@@ -54,7 +54,8 @@ int SweepCommand::main(int argc, char** argv) {
     app.add_option("--shard", cli.shard, "run slice i of N (i/N) of the combinations")->capture_default_str();
     app.add_flag("--dry-run", cli.dryRun, "print the configurations and exit");
     app.add_flag("--no-progress", cli.noProgress, "no progress bar on stderr");
-    app.add_option("--format", cli.format, "stdout at the end: console, csv, json or md (this shard's rows)")
+    app.add_option("--format", cli.format,
+                   "stdout at the end: " + rowFormatChoices() + " (this shard's rows)")
         ->capture_default_str();
     if (int code = parseCli(app, argc, argv, "bench sweep"); code >= 0) return code;
 

@@ -8,11 +8,7 @@
 namespace sb {
 namespace {
 
-struct EffectEntry {
-    Effect effect;
-    const char* name;
-};
-constexpr EffectEntry kEffectNames[] = {
+constexpr Named<Effect> kEffectNames[] = {
     {Effect::HardShadows, "hard_shadows"},
     {Effect::SoftShadows, "soft_shadows"},
     {Effect::SelfShadowing, "self_shadowing"},
@@ -20,6 +16,22 @@ constexpr EffectEntry kEffectNames[] = {
     {Effect::NonPlanarReceivers, "non_planar_receivers"},
     {Effect::MultipleLights, "multiple_lights"},
 };
+constexpr NameTable kEffects{kEffectNames};
+
+constexpr Named<LightType> kLightTypeNames[] = {
+    {LightType::Directional, "directional"},
+    {LightType::Point, "point"},
+    {LightType::Spot, "spot"},
+};
+constexpr NameTable kLightTypes{kLightTypeNames};
+
+constexpr Named<LightShape> kLightShapeNames[] = {
+    {LightShape::Point, "point"},
+    {LightShape::Rect, "rect"},
+    {LightShape::Disk, "disk"},
+    {LightShape::Sphere, "sphere"},
+};
+constexpr NameTable kLightShapes{kLightShapeNames};
 
 void hashLight(Fnv1a& h, const Light& l) {
     h.value(int(l.type));
@@ -58,16 +70,16 @@ void hashInstance(Fnv1a& h, const Instance& i) {
 
 } // namespace
 
+const NameTable<Named<Effect>>& effectNames() {
+    return kEffects;
+}
+
 const char* effectName(Effect e) {
-    for (const auto& entry : kEffectNames)
-        if (entry.effect == e) return entry.name;
-    return "none";
+    return kEffects.name(e, "none");
 }
 
 std::optional<Effect> parseEffect(const std::string& name) {
-    for (const auto& entry : kEffectNames)
-        if (name == entry.name) return entry.effect;
-    return std::nullopt;
+    return kEffects.parse(name);
 }
 
 std::string effectMaskToString(EffectMask m) {
@@ -80,42 +92,28 @@ std::string effectMaskToString(EffectMask m) {
     return out.empty() ? "none" : out;
 }
 
+const NameTable<Named<LightType>>& lightTypeNames() {
+    return kLightTypes;
+}
+
 const char* lightTypeName(LightType t) {
-    switch (t) {
-    case LightType::Directional:
-        return "directional";
-    case LightType::Point:
-        return "point";
-    case LightType::Spot:
-        return "spot";
-    }
-    return "directional";
+    return kLightTypes.name(t, "directional");
 }
 
 std::optional<LightType> parseLightType(const std::string& name) {
-    for (LightType t : {LightType::Directional, LightType::Point, LightType::Spot})
-        if (name == lightTypeName(t)) return t;
-    return std::nullopt;
+    return kLightTypes.parse(name);
+}
+
+const NameTable<Named<LightShape>>& lightShapeNames() {
+    return kLightShapes;
 }
 
 const char* lightShapeName(LightShape s) {
-    switch (s) {
-    case LightShape::Point:
-        return "point";
-    case LightShape::Rect:
-        return "rect";
-    case LightShape::Disk:
-        return "disk";
-    case LightShape::Sphere:
-        return "sphere";
-    }
-    return "point";
+    return kLightShapes.name(s, "point");
 }
 
 std::optional<LightShape> parseLightShape(const std::string& name) {
-    for (LightShape s : {LightShape::Point, LightShape::Rect, LightShape::Disk, LightShape::Sphere})
-        if (name == lightShapeName(s)) return s;
-    return std::nullopt;
+    return kLightShapes.parse(name);
 }
 
 void Scene::updateTransforms() {

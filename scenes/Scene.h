@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/NameTable.h"
 #include "scenes/Mesh.h"
 
 namespace sb {
@@ -34,6 +35,7 @@ constexpr bool hasEffect(EffectMask m, Effect e) {
 }
 /// "hard_shadows", "soft_shadows", "self_shadowing", "colour_bleeding", "non_planar_receivers",
 /// "multiple_lights": the names used in scene files, --list and CSV.
+const NameTable<Named<Effect>>& effectNames();
 const char* effectName(Effect e);
 std::optional<Effect> parseEffect(const std::string& name);
 std::string effectMaskToString(EffectMask m); ///< "hard_shadows+self_shadowing"
@@ -54,6 +56,8 @@ struct Instance {
 };
 
 enum class LightType { Directional, Point, Spot };
+/// "directional", "point", "spot": scene files, --light, the CSV.
+const NameTable<Named<LightType>>& lightTypeNames();
 const char* lightTypeName(LightType t);
 std::optional<LightType> parseLightType(const std::string& name);
 
@@ -62,6 +66,8 @@ std::optional<LightType> parseLightType(const std::string& name);
 /// to `direction`; a sphere is centred at `position`. For a directional light, `Disk` with
 /// `angularRadiusDeg` is the sun's disk seen from the scene.
 enum class LightShape { Point, Rect, Disk, Sphere };
+/// "point", "rect", "disk", "sphere": scene files' light "shape".
+const NameTable<Named<LightShape>>& lightShapeNames();
 const char* lightShapeName(LightShape s);
 std::optional<LightShape> parseLightShape(const std::string& name);
 

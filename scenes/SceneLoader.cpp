@@ -308,15 +308,10 @@ ShadowProxy parseProxy(const JsonReader& r) {
     r.requireObject({"shape", "position", "rotation", "size", "diffuse", "reflective"});
     ShadowProxy p;
     const JsonReader shapeKey = r["shape"];
-    const std::string shape = shapeKey.value().is_string() ? shapeKey.string() : "";
-    if (shape == "sphere")
-        p.shape = ShadowProxy::Shape::Sphere;
-    else if (shape == "box")
-        p.shape = ShadowProxy::Shape::Box;
-    else if (shape == "cylinder")
-        p.shape = ShadowProxy::Shape::Cylinder;
-    else
-        shapeKey.fail("one of sphere, box, cylinder");
+    const std::optional<ShadowProxy::Shape> shape =
+        ShadowProxy::shapeNames().parse(shapeKey.value().is_string() ? shapeKey.string() : "");
+    if (!shape) shapeKey.fail("one of " + ShadowProxy::shapeNames().list());
+    p.shape = *shape;
     if (!r.has("size"))
         r.error("missing required key \"size\" (radii / half extents: a number or [x, y, z])");
     const glm::vec3 size = proxySize(r["size"]);
@@ -506,7 +501,7 @@ void parseLayout(Context& ctx, const JsonReader& layout) {
 
 LightType lightType(const JsonReader& r) {
     const auto type = parseLightType(r.string());
-    if (!type) r.fail("one of directional, point, spot");
+    if (!type) r.fail("one of " + lightTypeNames().list());
     return *type;
 }
 
@@ -519,7 +514,7 @@ void parseLightShapeKeys(const JsonReader& r, Light& light) {
         return;
     }
     const auto shape = parseLightShape(r["shape"].string());
-    if (!shape) r["shape"].fail("one of point, rect, disk, sphere");
+    if (!shape) r["shape"].fail("one of " + lightShapeNames().list());
     light.shape = *shape;
     if (light.type == LightType::Directional) {
         if (light.shape != LightShape::Disk && light.shape != LightShape::Point)
@@ -605,7 +600,7 @@ EffectMask parseEffects(const JsonReader& r) {
     for (const auto& e : r.elements()) {
         const auto effect = parseEffect(e.string());
         if (!effect) {
-            e.fail("one of " + join(kAllEffects, ", ", [](Effect k) { return std::string(effectName(k)); }));
+            e.fail("one of " + effectNames().list());
         }
         mask |= uint32_t(*effect);
     }

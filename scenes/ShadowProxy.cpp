@@ -85,16 +85,21 @@ float ShadowProxy::volume() const {
     return 0.0f;
 }
 
+namespace {
+constexpr Named<ShadowProxy::Shape> kShapeNames[] = {
+    {ShadowProxy::Shape::Sphere, "sphere"},
+    {ShadowProxy::Shape::Box, "box"},
+    {ShadowProxy::Shape::Cylinder, "cylinder"},
+};
+constexpr NameTable kShapes{kShapeNames};
+} // namespace
+
+const NameTable<Named<ShadowProxy::Shape>>& ShadowProxy::shapeNames() {
+    return kShapes;
+}
+
 const char* ShadowProxy::shapeName(Shape s) {
-    switch (s) {
-    case Shape::Sphere:
-        return "sphere";
-    case Shape::Box:
-        return "box";
-    case Shape::Cylinder:
-        return "cylinder";
-    }
-    return "?";
+    return kShapes.name(s);
 }
 
 ShadowProxy ShadowProxy::fit(const Mesh& mesh, const glm::mat4& model) {

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/NameTable.h"
 
 namespace sb {
 
@@ -46,7 +47,9 @@ struct ShadowProxy {
     /// axis-aligned in the mesh's frame (box: the bounds; cylinder: around the longest axis through the
     /// bounds' centre; sphere: around the bounds' centre), by volume.
     static ShadowProxy fit(const Mesh& mesh, const glm::mat4& model);
-    static const char* shapeName(Shape s); ///< "sphere", "box", "cylinder"
+    /// "sphere", "box", "cylinder": scene files' proxy "shape".
+    static const NameTable<Named<Shape>>& shapeNames();
+    static const char* shapeName(Shape s);
 };
 
 /// Listing 1.3: the shadow (or bleeding) factor of a fragment at `distance` from the proxy's surface:
