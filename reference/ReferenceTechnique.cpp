@@ -9,21 +9,25 @@ constexpr const char* kSamples = "samples";
 constexpr const char* kThreads = "threads";
 constexpr const char* kHard = "hard";
 constexpr uint32_t kSeed = 1; // fixed: the same frame traces to the same image, frame after frame
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        integer(kSamples, "64", 1, 4096, "area-light samples per pixel (stratified)"),
+        integer(kThreads, "0", 0, 256, "tracing threads, 0 = all"),
+        flag(kHard, "false", "treat area lights as points"),
+    };
+}
 } // namespace
 
 ReferenceTechnique::ReferenceTechnique()
-    : Technique(
-          {.name = "reference",
-           .description = "exact visibility by ray tracing (Intel Embree): the ground truth",
-           .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
-                      Effect::NonPlanarReceivers | Effect::MultipleLights,
-           .capabilities = {{"GL 4.5", 4, 5, ""}},
-           .passes = {"gbuffer", "trace", "shade"},
-           .properties = {
-               {kSamples, PropertyType::Int, "64", 1, 4096, {}, "area-light samples per pixel (stratified)"},
-               {kThreads, PropertyType::Int, "0", 0, 256, {}, "tracing threads, 0 = all"},
-               {kHard, PropertyType::Bool, "false", 0, 0, {}, "treat area lights as points"},
-           }}) {}
+    : Technique({.name = "reference",
+                 .description = "exact visibility by ray tracing (Intel Embree): the ground truth",
+                 .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
+                            Effect::NonPlanarReceivers | Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"gbuffer", "trace", "shade"},
+                 .properties = declareProperties()}) {}
 
 ReferenceTechnique::~ReferenceTechnique() {
     releaseTexture();

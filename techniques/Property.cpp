@@ -3,6 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <utility>
+
+#include "core/NameTable.h"
 
 namespace sb {
 
@@ -20,6 +23,14 @@ std::string formatBound(double v, PropertyType type) {
     return std::string(buf, r.ptr);
 }
 
+constexpr Named<PropertyType> kPropertyTypeNames[] = {
+    {PropertyType::Int, "int"},
+    {PropertyType::Float, "float"},
+    {PropertyType::Bool, "bool"},
+    {PropertyType::Enum, "enum"},
+};
+constexpr NameTable kPropertyTypes{kPropertyTypeNames};
+
 std::string joinChoices(const std::vector<std::string>& choices) {
     std::string out = "{";
     for (size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : "") + choices[i];
@@ -29,17 +40,7 @@ std::string joinChoices(const std::vector<std::string>& choices) {
 } // namespace
 
 const char* propertyTypeName(PropertyType t) {
-    switch (t) {
-    case PropertyType::Int:
-        return "int";
-    case PropertyType::Float:
-        return "float";
-    case PropertyType::Bool:
-        return "bool";
-    case PropertyType::Enum:
-        return "enum";
-    }
-    return "unknown"; // only reachable through a cast of an out-of-range integer
+    return kPropertyTypes.name(t, "unknown"); // "unknown" only for a cast of an out-of-range integer
 }
 
 std::string PropertyDesc::rangeText() const {
@@ -53,6 +54,28 @@ std::string PropertyDesc::rangeText() const {
         return joinChoices(choices);
     }
     return "";
+}
+
+PropertyDesc integer(std::string name, std::string defaultValue, double min, double max,
+                     std::string description) {
+    return {std::move(name),       PropertyType::Int, std::move(defaultValue), min, max, {},
+            std::move(description)};
+}
+
+PropertyDesc real(std::string name, std::string defaultValue, double min, double max,
+                  std::string description) {
+    return {std::move(name),       PropertyType::Float, std::move(defaultValue), min, max, {},
+            std::move(description)};
+}
+
+PropertyDesc flag(std::string name, std::string defaultValue, std::string description) {
+    return {std::move(name), PropertyType::Bool, std::move(defaultValue), 0, 0, {}, std::move(description)};
+}
+
+PropertyDesc choice(std::string name, std::string defaultValue, std::vector<std::string> choices,
+                    std::string description) {
+    return {std::move(name),    PropertyType::Enum,    std::move(defaultValue), 0, 0,
+            std::move(choices), std::move(description)};
 }
 
 } // namespace sb

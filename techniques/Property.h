@@ -23,4 +23,15 @@ struct PropertyDesc {
     std::string rangeText() const;
 };
 
+// The makers a technique declares its knobs with, one call per knob: type, name, default (canonical
+// text) and range on its first line, the description after them.
+//   integer(kResolution, "2048", 16, 8192, "shadow map width and height (texels)"),
+PropertyDesc integer(std::string name, std::string defaultValue, double min, double max,
+                     std::string description);
+PropertyDesc real(std::string name, std::string defaultValue, double min, double max,
+                  std::string description);
+PropertyDesc flag(std::string name, std::string defaultValue, std::string description);
+PropertyDesc choice(std::string name, std::string defaultValue, std::vector<std::string> choices,
+                    std::string description);
+
 } // namespace sb

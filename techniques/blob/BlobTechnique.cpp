@@ -32,6 +32,17 @@ glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, cons
     const float hp = std::min(h, 0.99f * hl);
     return l + (p - l) * (hl / (hl - hp));
 }
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        real(kOpacity, "1", 0, 1, "opacity of a blob on the ground"),
+        real(kSoftness, "0.5", 0, 1,
+             "width of the soft edge as a fraction of the ellipse's radius (0: hard)"),
+        real(kFade, "8", 0.01, 1e6,
+             "height (in bounding radii) of the caster's bottom at which its blob vanishes"),
+    };
+}
 } // namespace
 
 BlobTechnique::BlobTechnique()
@@ -42,24 +53,7 @@ BlobTechnique::BlobTechnique()
                  .effects = Effect::SoftShadows | Effect::MultipleLights,
                  .capabilities = {{"GL 4.5", 4, 5, ""}},
                  .passes = {"lighting", "blobs"},
-                 .properties =
-                     {
-                         {kOpacity, PropertyType::Float, "1", 0, 1, {}, "opacity of a blob on the ground"},
-                         {kSoftness,
-                          PropertyType::Float,
-                          "0.5",
-                          0,
-                          1,
-                          {},
-                          "width of the soft edge as a fraction of the ellipse's radius (0: hard)"},
-                         {kFade,
-                          PropertyType::Float,
-                          "8",
-                          0.01,
-                          1e6,
-                          {},
-                          "height (in bounding radii) of the caster's bottom at which its blob vanishes"},
-                     },
+                 .properties = declareProperties(),
                  .quality = {
                      {kSoftness, {"0", "0.25", "0.5", "1"}},
                      {kFade, {"2", "8", "32"}},

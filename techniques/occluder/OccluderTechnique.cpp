@@ -52,6 +52,26 @@ void clearBorder(std::vector<uint8_t>& texels, int size) {
         texels[size_t(i) * size_t(size)] = texels[size_t(i) * size_t(size) + size_t(size - 1)] = 255;
     }
 }
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        choice(kLightSpace, "per_vertex", {"per_vertex", "per_instance", "texture_matrix"},
+               "light into model space in every vertex (thesis), once per instance on the CPU (its "
+               "proposal), or equations 6 and 8 folded into a matrix per instance and plane (its future "
+               "work; directional lights)"),
+        integer(kPlanes, "16", 0, OccluderTechnique::kMaxPlanes,
+                "use only the first N shadow planes of each mesh (cost per plane)"),
+        integer(kResolution, "512", 8, 8192,
+                "occluder texture size (texels per side; baked and loaded textures alike)"),
+        integer(kDilate, "0", 0, 64,
+                "texels the baked silhouette grows by (section 5; measured: 1 texel adds false shadows along "
+                "edges)"),
+        choice(kReceivers, "self", {"self", "all"},
+               "self: each mesh shadowed by its own planes (the thesis); all: also by other instances' "
+               "planes, per fragment in world space (shadows on the ground and other objects)"),
+    };
+}
 } // namespace
 
 OccluderTechnique::OccluderTechnique()
@@ -64,48 +84,7 @@ OccluderTechnique::OccluderTechnique()
                       Effect::MultipleLights,
            .capabilities = {{"GL 4.5", 4, 5, ""}},
            .passes = {"lighting"},
-           .properties =
-               {
-                   {kLightSpace,
-                    PropertyType::Enum,
-                    "per_vertex",
-                    0,
-                    0,
-                    {"per_vertex", "per_instance", "texture_matrix"},
-                    "light into model space in every vertex (thesis), once per instance on the CPU (its "
-                    "proposal), or equations 6 and 8 folded into a matrix per instance and plane (its "
-                    "future work; directional lights)"},
-                   {kPlanes,
-                    PropertyType::Int,
-                    "16",
-                    0,
-                    kMaxPlanes,
-                    {},
-                    "use only the first N shadow planes of each mesh (cost per plane)"},
-                   {kResolution,
-                    PropertyType::Int,
-                    "512",
-                    8,
-                    8192,
-                    {},
-                    "occluder texture size (texels per side; baked and loaded textures alike)"},
-                   {kDilate,
-                    PropertyType::Int,
-                    "0",
-                    0,
-                    64,
-                    {},
-                    "texels the baked silhouette grows by (section 5; measured: 1 texel adds false shadows "
-                    "along edges)"},
-                   {kReceivers,
-                    PropertyType::Enum,
-                    "self",
-                    0,
-                    0,
-                    {"self", "all"},
-                    "self: each mesh shadowed by its own planes (the thesis); all: also by other instances' "
-                    "planes, per fragment in world space (shadows on the ground and other objects)"},
-               },
+           .properties = declareProperties(),
            .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}}) {}
 
 OccluderTechnique::~OccluderTechnique() {

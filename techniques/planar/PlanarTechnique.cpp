@@ -36,6 +36,22 @@ Scene unitShapes() {
     s.meshes.push_back(std::move(cylinder));
     return s;
 }
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        flag(kStencil, "true",
+             "the slides' stencil algorithm (false: depth-tested with bias: double blending, shadows off the "
+             "receiver)"),
+        choice(kOccluder, "mesh", {"mesh", "proxy"},
+               "what is flattened: the caster's mesh, or its ShadowProxy (sphere/box/cylinder)"),
+        real(kDarkness, "1", 0, 1,
+             "share of the light a shadow removes (1: ambient only, like the other techniques)"),
+        flag(kGuards, "true",
+             "clip occluder parts behind the receiver or beyond the light, skip lights behind the plane "
+             "(false: the slides' wrong shadows and anti-shadows)"),
+    };
+}
 } // namespace
 
 PlanarTechnique::PlanarTechnique()
@@ -46,39 +62,7 @@ PlanarTechnique::PlanarTechnique()
                  .effects = Effect::HardShadows | Effect::MultipleLights,
                  .capabilities = {{"GL 4.5", 4, 5, ""}},
                  .passes = {"lighting", "shadows"},
-                 .properties =
-                     {
-                         {kStencil,
-                          PropertyType::Bool,
-                          "true",
-                          0,
-                          0,
-                          {},
-                          "the slides' stencil algorithm (false: depth-tested with bias: double blending, "
-                          "shadows off the receiver)"},
-                         {kOccluder,
-                          PropertyType::Enum,
-                          "mesh",
-                          0,
-                          0,
-                          {"mesh", "proxy"},
-                          "what is flattened: the caster's mesh, or its ShadowProxy (sphere/box/cylinder)"},
-                         {kDarkness,
-                          PropertyType::Float,
-                          "1",
-                          0,
-                          1,
-                          {},
-                          "share of the light a shadow removes (1: ambient only, like the other techniques)"},
-                         {kGuards,
-                          PropertyType::Bool,
-                          "true",
-                          0,
-                          0,
-                          {},
-                          "clip occluder parts behind the receiver or beyond the light, skip lights behind "
-                          "the plane (false: the slides' wrong shadows and anti-shadows)"},
-                     },
+                 .properties = declareProperties(),
                  .quality = {
                      {kOccluder, {"mesh", "proxy"}},
                      {kStencil, {"true", "false"}},

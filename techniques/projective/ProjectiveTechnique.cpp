@@ -17,6 +17,14 @@ constexpr const char* kResolution = "resolution";
 constexpr const char* kBlur = "blur";
 constexpr GLint kMatrixLocation = 8; // projective/texture.vert and common/scene.vert (SHADOW_MAP)
 constexpr GLint kLayerLocation = 0;  // projective/blur.frag (BLUR_FROM_ARRAY)
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        integer(kResolution, "512", 16, 8192, "projective texture width and height (texels)"),
+        integer(kBlur, "0", 0, 32, "blur radius in texels: the slides' fake softness"),
+    };
+}
 } // namespace
 
 ProjectiveTechnique::ProjectiveTechnique()
@@ -27,23 +35,7 @@ ProjectiveTechnique::ProjectiveTechnique()
                  .effects = Effect::HardShadows | Effect::NonPlanarReceivers | Effect::MultipleLights,
                  .capabilities = {{"GL 4.5", 4, 5, ""}},
                  .passes = {"texture", "blur", "lighting"},
-                 .properties =
-                     {
-                         {kResolution,
-                          PropertyType::Int,
-                          "512",
-                          16,
-                          8192,
-                          {},
-                          "projective texture width and height (texels)"},
-                         {kBlur,
-                          PropertyType::Int,
-                          "0",
-                          0,
-                          32,
-                          {},
-                          "blur radius in texels: the slides' fake softness"},
-                     },
+                 .properties = declareProperties(),
                  .quality = {
                      {kResolution, {"128", "256", "512", "1024", "2048"}},
                      {kBlur, {"0", "1", "2", "4", "8"}},
@@ -178,11 +170,9 @@ void ProjectiveTechnique::compile(const CompileContext& ctx) {
         key += "|" + mTextureProgram->key() + "|" + mProjectiveProgram->key();
         if (mBlurRadius > 0) {
             Defines blur = {{"BLUR_RADIUS", std::to_string(mBlurRadius)}};
-            mBlurVertical =
-                &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
+            mBlurVertical = &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
             blur["BLUR_FROM_ARRAY"] = "";
-            mBlurHorizontal =
-                &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
+            mBlurHorizontal = &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
             key += "|" + mBlurHorizontal->key() + "|" + mBlurVertical->key();
         }
     }

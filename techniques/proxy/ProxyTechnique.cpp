@@ -30,6 +30,37 @@ constexpr GLint kShadingLocation = 16, kBleedLocation = 17, kStartLocation = 18,
 bool resolve(const std::string& value, bool automatic) {
     return value == "auto" ? automatic : value == "on";
 }
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        real(kOffset, "1", 0, 1e6,
+             "ProxyOffset: how far (world units) beyond the proxy's surface its influence reaches"),
+        real(kShadow, "1", 0, 1, "shadow factor: the shadow at the surface"),
+        real(kFalloff, "1", 0.01, 64, "falloff exponent of the attenuation"),
+        choice(kExponentOn, "attenuation", {"attenuation", "factor"},
+               "attenuation: pow(1 - d/offset, falloff) (section 1.2's text); factor: Listing 1.3 as "
+               "printed, (1 - d/offset) * pow(shadow, falloff)"),
+        real(kStart, "0", 0, 1e6,
+             "distance from the surface where the falloff starts (section 1.2's offset between surface and "
+             "falloff)"),
+        real(kCutoff, "0", -1, 1,
+             "Listing 1.4's lower clamp of dot(light, normal): above 0 the shadow wraps round the lit side"),
+        real(kBleed, "0.5", 0, 1, "amount of colour bleeding at the surface"),
+        choice(kBleeding, "auto", {"auto", "on", "off"},
+               "colour bleeding compiled in: auto = when the scene asks for colour_bleeding"),
+        choice(kModulate, "auto", {"auto", "on", "off"},
+               "egg-shaped volumes towards/away from each light (Listing 1.4): auto = when the scene has "
+               "lights"),
+        flag(kGrid, "true", "screen-space IndexMap (true) or every proxy in view tested by every fragment"),
+        integer(kCells, "64", 1, 1024, "IndexMap grid cells along x and along y"),
+        integer(kCapacity, "16", 1, 4096,
+                "proxy indices per cell; more are counted as grid_overflow, never silently dropped"),
+        choice(kProxies, "scene", {"scene", "fit"},
+               "scene: the meshes' declared proxies, fitted where none are declared; fit: fit every caster "
+               "(the tightest of sphere, box and cylinder)"),
+    };
+}
 } // namespace
 
 ProxyTechnique::ProxyTechnique()
@@ -44,81 +75,7 @@ ProxyTechnique::ProxyTechnique()
                       Effect::MultipleLights,
            .capabilities = {{"GL 4.5", 4, 5, ""}},
            .passes = {"index_map", "lighting"},
-           .properties =
-               {
-                   {kOffset,
-                    PropertyType::Float,
-                    "1",
-                    0,
-                    1e6,
-                    {},
-                    "ProxyOffset: how far (world units) beyond the proxy's surface its influence reaches"},
-                   {kShadow, PropertyType::Float, "1", 0, 1, {}, "shadow factor: the shadow at the surface"},
-                   {kFalloff, PropertyType::Float, "1", 0.01, 64, {}, "falloff exponent of the attenuation"},
-                   {kExponentOn,
-                    PropertyType::Enum,
-                    "attenuation",
-                    0,
-                    0,
-                    {"attenuation", "factor"},
-                    "attenuation: pow(1 - d/offset, falloff) (section 1.2's text); factor: Listing 1.3 as "
-                    "printed, (1 - d/offset) * pow(shadow, falloff)"},
-                   {kStart,
-                    PropertyType::Float,
-                    "0",
-                    0,
-                    1e6,
-                    {},
-                    "distance from the surface where the falloff starts (section 1.2's offset between "
-                    "surface and falloff)"},
-                   {kCutoff,
-                    PropertyType::Float,
-                    "0",
-                    -1,
-                    1,
-                    {},
-                    "Listing 1.4's lower clamp of dot(light, normal): above 0 the shadow wraps round the lit "
-                    "side"},
-                   {kBleed, PropertyType::Float, "0.5", 0, 1, {}, "amount of colour bleeding at the surface"},
-                   {kBleeding,
-                    PropertyType::Enum,
-                    "auto",
-                    0,
-                    0,
-                    {"auto", "on", "off"},
-                    "colour bleeding compiled in: auto = when the scene asks for colour_bleeding"},
-                   {kModulate,
-                    PropertyType::Enum,
-                    "auto",
-                    0,
-                    0,
-                    {"auto", "on", "off"},
-                    "egg-shaped volumes towards/away from each light (Listing 1.4): auto = when the scene "
-                    "has lights"},
-                   {kGrid,
-                    PropertyType::Bool,
-                    "true",
-                    0,
-                    0,
-                    {},
-                    "screen-space IndexMap (true) or every proxy in view tested by every fragment"},
-                   {kCells, PropertyType::Int, "64", 1, 1024, {}, "IndexMap grid cells along x and along y"},
-                   {kCapacity,
-                    PropertyType::Int,
-                    "16",
-                    1,
-                    4096,
-                    {},
-                    "proxy indices per cell; more are counted as grid_overflow, never silently dropped"},
-                   {kProxies,
-                    PropertyType::Enum,
-                    "scene",
-                    0,
-                    0,
-                    {"scene", "fit"},
-                    "scene: the meshes' declared proxies, fitted where none are declared; fit: fit every "
-                    "caster (the tightest of sphere, box and cylinder)"},
-               },
+           .properties = declareProperties(),
            .quality = {{kOffset, {"0.25", "0.5", "1", "2", "4"}}, {kFalloff, {"0.5", "1", "2", "4"}}}}) {}
 
 ProxyTechnique::~ProxyTechnique() {

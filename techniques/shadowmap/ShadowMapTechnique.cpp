@@ -20,6 +20,18 @@ constexpr const char* kPcf = "pcf";
 constexpr const char* kHardwareCompare = "hardware_compare";
 constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert and common/scene.vert
 
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        integer(kResolution, "2048", 16, 8192, "shadow map width and height (texels)"),
+        real(kBiasConstant, "2", 0, 10000,
+             "glPolygonOffset units: constant depth bias in depth-buffer steps"),
+        real(kBiasSlope, "2", 0, 64, "glPolygonOffset factor: slope-scaled depth bias"),
+        integer(kPcf, "1", 1, 9, "PCF kernel width: pcf x pcf taps one texel apart"),
+        flag(kHardwareCompare, "true",
+             "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"),
+    };
+}
 } // namespace
 
 ShadowMapTechnique::ShadowMapTechnique()
@@ -30,44 +42,7 @@ ShadowMapTechnique::ShadowMapTechnique()
                       Effect::MultipleLights,
            .capabilities = {{"GL 4.5", 4, 5, ""}},
            .passes = {"depth", "lighting"},
-           .properties =
-               {
-                   {kResolution,
-                    PropertyType::Int,
-                    "2048",
-                    16,
-                    8192,
-                    {},
-                    "shadow map width and height (texels)"},
-                   {kBiasConstant,
-                    PropertyType::Float,
-                    "2",
-                    0,
-                    10000,
-                    {},
-                    "glPolygonOffset units: constant depth bias in depth-buffer steps"},
-                   {kBiasSlope,
-                    PropertyType::Float,
-                    "2",
-                    0,
-                    64,
-                    {},
-                    "glPolygonOffset factor: slope-scaled depth bias"},
-                   {kPcf,
-                    PropertyType::Int,
-                    "1",
-                    1,
-                    9,
-                    {},
-                    "PCF kernel width: pcf x pcf taps one texel apart"},
-                   {kHardwareCompare,
-                    PropertyType::Bool,
-                    "true",
-                    0,
-                    0,
-                    {},
-                    "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"},
-               },
+           .properties = declareProperties(),
            // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
            .quality = {
                {kResolution, {"256", "512", "1024", "2048", "4096"}},

@@ -8,6 +8,16 @@ constexpr const char* kVertexIterations = "vertex_iterations";
 constexpr const char* kDrawScene = "draw_scene";
 constexpr GLint kVertexIterationsLocation = 9;   // synthetic/scene.vert
 constexpr GLint kFragmentIterationsLocation = 0; // synthetic/fill.frag
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        integer(kFragmentIterations, "0", 0, 100000,
+                "arithmetic steps per pixel of a full-screen pass (0: no pass)"),
+        integer(kVertexIterations, "0", 0, 100000, "extra arithmetic steps per vertex of the scene pass"),
+        flag(kDrawScene, "true", "draw the scene's triangles"),
+    };
+}
 } // namespace
 
 SyntheticTechnique::SyntheticTechnique()
@@ -18,22 +28,7 @@ SyntheticTechnique::SyntheticTechnique()
                  .effects = 0,
                  .capabilities = {{"GL 4.5", 4, 5, ""}},
                  .passes = {"scene", "fill"},
-                 .properties = {
-                     {kFragmentIterations,
-                      PropertyType::Int,
-                      "0",
-                      0,
-                      100000,
-                      {},
-                      "arithmetic steps per pixel of a full-screen pass (0: no pass)"},
-                     {kVertexIterations,
-                      PropertyType::Int,
-                      "0",
-                      0,
-                      100000,
-                      {},
-                      "extra arithmetic steps per vertex of the scene pass"},
-                     {kDrawScene, PropertyType::Bool, "true", 0, 0, {}, "draw the scene's triangles"}}}) {}
+                 .properties = declareProperties()}) {}
 
 SyntheticTechnique::~SyntheticTechnique() {
     if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);

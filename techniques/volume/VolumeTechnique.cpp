@@ -24,10 +24,6 @@ constexpr const char* kDepthBounds = "depth_bounds";
 // shaders/volume/extrude.vert and light.frag
 constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLightIndexLocation = 12;
 
-PropertyDesc flag(const char* name, const char* def, const char* description) {
-    return {name, PropertyType::Bool, def, 0, 0, {}, description};
-}
-
 glm::vec4 worldLight(const Light& l) {
     // The chapter's L: the position for point and spot lights, the vector towards a directional one.
     return l.type == LightType::Directional ? glm::vec4(-glm::normalize(l.direction), 0.0f)
@@ -43,59 +39,39 @@ Aabb transformBounds(const glm::mat4& m, const Aabb& b) {
 bool rangedFinite(const Light& l, bool finiteVolumes) {
     return finiteVolumes && l.type != LightType::Directional && l.range > 0.0f;
 }
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        choice(kMode, "auto", {"zfail", "zpass", "auto"},
+               "stencil counting: z-fail with caps, z-pass without, or per caster (occlusion pyramid)"),
+        choice(kExtrusion, "cpu", {"cpu", "vertex"},
+               "silhouettes on the CPU per caster (chapter) or in the vertex shader (McGuire-Hughes)"),
+        choice(kFar, "infinite", {"infinite", "depth_clamp", "finite"},
+               "far plane at infinity, depth clamping, or the camera's (negative control)"),
+        choice(kOpenEdges, "refuse", {"refuse", "multiplicity"},
+               "casters with open edges: refuse naming the mesh, or count per-edge multiplicities"),
+        flag(kDirectional, "true", "directional lights: sides as triangles to one point, no dark cap"),
+        flag(kRangeCull, "true", "point/spot: casters outside the light's range cast nothing"),
+        flag(kFrustumCull, "true", "cull light cap, dark cap and sides against the view frustum"),
+        flag(kScissor, "true", "scissor marking and lighting to the light range's screen bounds"),
+        flag(kFiniteVolumes, "false", "point/spot with range: extrude by the range, not to infinity"),
+        flag(kBoundedVolumes, "true",
+             "directional: extrude only past the scene's bounds, not to infinity (beyond 9.6.1)"),
+        flag(kDepthBounds, "false", "depth bounds test of the light range (GL_EXT_depth_bounds_test)"),
+    };
+}
 } // namespace
 
 VolumeTechnique::VolumeTechnique()
-    : Technique(
-          {.name = "volume",
-           .description = "stencil shadow volumes (GPU Gems ch. 9), each optimisation a switch",
-           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                      Effect::MultipleLights,
-           .capabilities = {{"GL 4.5", 4, 5, ""}},
-           .passes = {"ambient", "mark", "lighting"},
-           .properties =
-               {
-                   {kMode,
-                    PropertyType::Enum,
-                    "auto",
-                    0,
-                    0,
-                    {"zfail", "zpass", "auto"},
-                    "stencil counting: z-fail with caps, z-pass without, or per caster (occlusion pyramid)"},
-                   {kExtrusion,
-                    PropertyType::Enum,
-                    "cpu",
-                    0,
-                    0,
-                    {"cpu", "vertex"},
-                    "silhouettes on the CPU per caster (chapter) or in the vertex shader (McGuire-Hughes)"},
-                   {kFar,
-                    PropertyType::Enum,
-                    "infinite",
-                    0,
-                    0,
-                    {"infinite", "depth_clamp", "finite"},
-                    "far plane at infinity, depth clamping, or the camera's (negative control)"},
-                   {kOpenEdges,
-                    PropertyType::Enum,
-                    "refuse",
-                    0,
-                    0,
-                    {"refuse", "multiplicity"},
-                    "casters with open edges: refuse naming the mesh, or count per-edge multiplicities"},
-                   flag(kDirectional, "true",
-                        "directional lights: sides as triangles to one point, no dark cap"),
-                   flag(kRangeCull, "true", "point/spot: casters outside the light's range cast nothing"),
-                   flag(kFrustumCull, "true", "cull light cap, dark cap and sides against the view frustum"),
-                   flag(kScissor, "true", "scissor marking and lighting to the light range's screen bounds"),
-                   flag(kFiniteVolumes, "false",
-                        "point/spot with range: extrude by the range, not to infinity"),
-                   flag(kBoundedVolumes, "true",
-                        "directional: extrude only past the scene's bounds, not to infinity (beyond 9.6.1)"),
-                   flag(kDepthBounds, "false",
-                        "depth bounds test of the light range (GL_EXT_depth_bounds_test)"),
-               },
-           .quality = {}}) {}
+    : Technique({.name = "volume",
+                 .description = "stencil shadow volumes (GPU Gems ch. 9), each optimisation a switch",
+                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                            Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"ambient", "mark", "lighting"},
+                 .properties = declareProperties(),
+                 .quality = {}}) {}
 
 VolumeTechnique::~VolumeTechnique() {
     for (auto& slot : mQueries)
