@@ -10,8 +10,8 @@
 #include <map>
 #include <ostream>
 
-#include "bench/BenchApp.h"
 #include "bench/CsvNumber.h"
+#include "bench/RunOptions.h"
 #include "bench/Statistics.h"
 #include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
@@ -177,7 +177,7 @@ std::vector<std::string> scenesWithNear(const SweepDefinition& d) {
 
 /// Whether the workers will run on Mesa llvmpipe (then the study adds LP_NO_RAST=1).
 bool onLlvmpipe(const SweepDefinition& d) {
-    const RunConfig config = BenchApp::parseArgs(d.commonArgs, RunConfig::Mode::Measure);
+    const RunConfig config = RunOptions::parseArgs(d.commonArgs, RunConfig::Mode::Measure);
     return createContext(config.context)->renderer.find("llvmpipe") != std::string::npos;
 }
 

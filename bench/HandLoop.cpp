@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -17,10 +18,11 @@
 
 #include "bench/BenchApp.h"
 #include "bench/Harness.h"
+#include "bench/RunOptions.h"
 #include "bench/Statistics.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/none/NoneTechnique.h"
+#include "techniques/TechniqueRegistry.h"
 
 using namespace sb;
 
@@ -94,12 +96,13 @@ int main(int argc, char** argv) {
         config.warmup = 2;
         bool listOnly = false;
         // Same options as bench (scene, instances, size, camera ...); --frames is the number of pairs.
-        int code = BenchApp::parse(argc, argv, config, listOnly);
+        int code = RunOptions::parse(argc, argv, config, listOnly, BenchApp::helpFooter());
         if (code >= 0) return code;
         config.submit = SubmitMode::Retained;
         Harness h(config);
-        NoneTechnique none;
-        h.prepare(none);
+        // Through the registry, as bench creates it (declared after the harness, released before it).
+        const std::unique_ptr<Technique> none = TechniqueRegistry::create("none");
+        h.prepare(*none);
         Defines d;
         d["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(h.scene().lights.size()), 1, kMaxLights));
         GLuint program = h.programs().get({"common/scene.vert", "common/lit.frag", ""}, d).id();
@@ -122,16 +125,16 @@ int main(int argc, char** argv) {
 
         // Frame-by-frame interleaving, alternating which goes first, so the shared machine's noise
         // hits both alike; the overhead is the median of the paired per-frame ratios.
-        for (int i = 0; i < config.warmup; ++i) h.renderFrame(none);
+        for (int i = 0; i < config.warmup; ++i) h.renderFrame(*none);
         std::vector<double> hand, harness, ratios;
         const int pairs = config.frames;
         for (int i = 0; i < pairs; ++i) {
             double a, b;
             if (i % 2 == 0) {
                 a = handFrame(h, program, ubo, data, meshes, order);
-                b = h.renderFrame(none).wallMs;
+                b = h.renderFrame(*none).wallMs;
             } else {
-                b = h.renderFrame(none).wallMs;
+                b = h.renderFrame(*none).wallMs;
                 a = handFrame(h, program, ubo, data, meshes, order);
             }
             hand.push_back(a);

@@ -8,9 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/BenchApp.h"
 #include "bench/CsvNumber.h"
 #include "bench/QualitySweep.h"
+#include "bench/RunOptions.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Strings.h"
@@ -70,8 +70,8 @@ void addOption(std::vector<std::string>& args, const JsonReader& root, const cha
 /// `bench` run would check it.
 void validateArgs(const std::vector<std::string>& args, SweepPlan::Mode mode, const std::string& where) {
     try {
-        BenchApp::parseArgs(args, mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
-                                                                    : RunConfig::Mode::Measure);
+        RunOptions::parseArgs(args, mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
+                                                                      : RunConfig::Mode::Measure);
     } catch (const Error& e) {
         throw Error("sweep: " + where + ": " + e.what());
     }
@@ -114,7 +114,7 @@ void forEachCombination(const std::vector<Axis>& axes, F&& f) {
 /// The columns a failed row gets for a combination (values in the form the measured rows write them:
 /// numbers as csvNumber, the size split into width and height, omitted options as bench records them).
 KeyValues identityColumns(const std::vector<std::string>& v) {
-    const auto [w, h] = BenchApp::parseSize(v[3]);
+    const auto [w, h] = RunOptions::parseSize(v[3]);
     return {{"scene", v[0]},
             {"lights", v[1] == "scene" ? "" : v[1]},
             {"camera", v[2]},

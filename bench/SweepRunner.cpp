@@ -8,11 +8,11 @@
 #include <set>
 #include <unistd.h>
 
-#include "bench/BenchApp.h"
 #include "bench/ChildProcess.h"
 #include "bench/CsvWriter.h"
 #include "bench/Environment.h"
 #include "bench/ProgressBar.h"
+#include "bench/RunOptions.h"
 #include "bench/SweepJob.h"
 #include "core/Error.h"
 #include "gl/ProgramCache.h"
@@ -108,9 +108,9 @@ Done readDone(const SweepPlan& plan, const SweepRunOptions& options) {
 
 /// The verdict every worker gets; nullopt when the sweep's options say --no-timer-check.
 std::optional<TimerVerdict> calibrateOnce(const SweepPlan& plan) {
-    const RunConfig config = BenchApp::parseArgs(plan.commonArgs, plan.mode == SweepPlan::Mode::Accuracy
-                                                                      ? RunConfig::Mode::Accuracy
-                                                                      : RunConfig::Mode::Measure);
+    const RunConfig config = RunOptions::parseArgs(plan.commonArgs, plan.mode == SweepPlan::Mode::Accuracy
+                                                                        ? RunConfig::Mode::Accuracy
+                                                                        : RunConfig::Mode::Measure);
     if (!config.checkTimer) return std::nullopt;
     std::unique_ptr<Context> context = createContext(config.context);
     TimerVerdict v;

@@ -6,8 +6,8 @@
 #include <map>
 #include <memory>
 
-#include "bench/BenchApp.h"
 #include "bench/Measurement.h"
+#include "bench/RunOptions.h"
 #include "bench/SweepJob.h"
 #include "core/Error.h"
 #include "gl/DebugOutput.h"
@@ -19,8 +19,8 @@ namespace {
 
 RunConfig parseJobArgs(const SweepJob& job) {
     RunConfig config =
-        BenchApp::parseArgs(job.args, job.mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
-                                                                            : RunConfig::Mode::Measure);
+        RunOptions::parseArgs(job.args, job.mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
+                                                                              : RunConfig::Mode::Measure);
     config.quiet = true;
     return config;
 }
