@@ -2,13 +2,13 @@
 
 #include <iostream>
 
-#include "bench/BottleneckCommand.h"
 #include "bench/ExportCommand.h"
-#include "bench/FiguresCommand.h"
 #include "bench/MergeCommand.h"
 #include "bench/RunCommand.h"
-#include "bench/SweepCommand.h"
-#include "bench/SweepWorker.h"
+#include "bench/bottleneck/BottleneckCommand.h"
+#include "bench/figures/FiguresCommand.h"
+#include "bench/sweep/SweepCommand.h"
+#include "bench/sweep/SweepWorker.h"
 #include "core/Error.h"
 
 namespace sb {

@@ -2,9 +2,9 @@
 
 #include <iostream>
 
-#include "bench/CliParse.h"
-#include "bench/CsvWriter.h"
-#include "bench/RowExport.h"
+#include "bench/output/CsvWriter.h"
+#include "bench/output/RowExport.h"
+#include "bench/run/CliParse.h"
 
 namespace sb {
 

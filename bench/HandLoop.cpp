@@ -17,9 +17,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "bench/BenchApp.h"
-#include "bench/Harness.h"
-#include "bench/RunOptions.h"
-#include "bench/Statistics.h"
+#include "bench/run/Harness.h"
+#include "bench/run/RunOptions.h"
+#include "bench/run/Statistics.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/TechniqueRegistry.h"

@@ -2,8 +2,8 @@
 
 #include <iostream>
 
-#include "bench/CliParse.h"
-#include "bench/CsvMerge.h"
+#include "bench/output/CsvMerge.h"
+#include "bench/run/CliParse.h"
 
 namespace sb {
 

@@ -5,7 +5,7 @@
 // Embree reference; `--window` shows the techniques in the viewer instead of measuring them.
 #include <vector>
 
-#include "bench/RunConfig.h"
+#include "bench/run/RunConfig.h"
 
 namespace sb {
 

@@ -19,7 +19,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/BottleneckClassifier.h"
+#include "bench/bottleneck/BottleneckClassifier.h"
 #include "core/Error.h"
 
 using sb::BottleneckClassifier;

@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/CsvMerge.h"
-#include "bench/CsvWriter.h"
+#include "bench/output/CsvMerge.h"
+#include "bench/output/CsvWriter.h"
 #include "core/Error.h"
 
 using namespace sb;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "bench/CsvWriter.h"
+#include "bench/output/CsvWriter.h"
 
 using namespace sb;
 using test::runCommand;

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "core/Error.h"
 #include "reference/GBufferRenderer.h"
 #include "scenes/Math.h"

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/occluder/OccluderTechnique.h"
 #include "techniques/occluder/OccluderTextures.h"

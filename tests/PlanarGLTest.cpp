@@ -13,7 +13,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/TechniqueRegistry.h"
 #include "techniques/planar/PlanarTechnique.h"

@@ -17,7 +17,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/projective/ProjectiveTechnique.h"
 

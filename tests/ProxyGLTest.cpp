@@ -18,7 +18,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/proxy/ProxyTechnique.h"
 

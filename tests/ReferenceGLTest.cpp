@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "reference/ReferenceTechnique.h"
 #include "scenes/Math.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/TechniqueRegistry.h"
 

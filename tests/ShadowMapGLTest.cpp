@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"

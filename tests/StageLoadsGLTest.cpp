@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/TechniqueRegistry.h"
 

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/Statistics.h"
+#include "bench/run/Statistics.h"
 #include "core/Error.h"
 
 using sb::Statistics;

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/Harness.h"
+#include "bench/run/Harness.h"
 #include "techniques/TechniqueRegistry.h"
 
 using namespace sb;

@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "bench/CsvWriter.h"
+#include "bench/output/CsvWriter.h"
 
 extern char** environ;
 

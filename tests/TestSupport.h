@@ -19,7 +19,7 @@
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
-#include "bench/RunConfig.h"
+#include "bench/run/RunConfig.h"
 
 namespace sb::test {
 

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/AccuracyEvaluator.h"
-#include "bench/Harness.h"
+#include "bench/run/AccuracyEvaluator.h"
+#include "bench/run/Harness.h"
 #include "techniques/TechniqueRegistry.h"
 
 using namespace sb;

@@ -1,0 +1,100 @@
+#include "bench/bottleneck/BottleneckCommand.h"
+
+#include <filesystem>
+#include <iostream>
+
+#include "bench/bottleneck/BottleneckStudy.h"
+#include "bench/output/RowExport.h"
+#include "bench/run/CliParse.h"
+#include "bench/sweep/SweepOptions.h"
+#include "bench/sweep/SweepReport.h"
+#include "bench/sweep/SweepRunner.h"
+
+namespace sb {
+
+namespace {
+
+const char* kFooter = R"(Perturbations (each its own worker process, techniques interleaved inside):
+  baseline; submit_immediate (CPU up; submit_retained from an immediate base); scale_x10_near and
+  scale_x0.01 (fill up/down at equal vertex count, thesis section 6.2); size_half, size_double (fill
+  only); tess_half, tess_double (vertex only); lp_no_rast (Mesa llvmpipe: rasteriser off).
+Each technique is classified from a fit of frame time against the loads measured in an untimed
+census frame (GL calls, vertex and fragment shader invocations): the stage with >= 50% of the
+frame time names the bottleneck.
+
+Examples:
+  bench bottleneck -t none -t shadowmap --instances 100 --csv bn.csv
+  bench bottleneck -t shadowmap --scene aircraft,teapot --frames 10 --csv bn.csv --resume
+  bench bottleneck --from bn.csv                       classify rows measured before
+  bench bottleneck -t synthetic:fragment_iterations=200:draw_scene=false --scene sphere_plane --csv f.csv
+
+Writes the measurement rows to --csv and the classification to --classes (default: <csv>_classes.csv).)";
+
+std::string defaultClassesPath(const std::string& csv) {
+    std::filesystem::path p(csv);
+    return (p.parent_path() / (p.stem().string() + "_classes.csv")).string();
+}
+
+int classify(const std::string& csv, const std::string& classes, RowFormat format) {
+    const std::vector<BottleneckEntry> entries = BottleneckStudy::analyse(CsvWriter::read(csv));
+    const CsvTable table = BottleneckStudy::table(entries);
+    CsvWriter::writeTable(classes, table);
+    std::ostream& log = format == RowFormat::Console ? std::cout : std::cerr;
+    BottleneckStudy::printTable(log, entries);
+    log << "classification written to " << classes << "\n";
+    if (format != RowFormat::Console) std::cout << RowExport::format(table, format);
+    return 0;
+}
+
+} // namespace
+
+int BottleneckCommand::main(int argc, char** argv) {
+    CLI::App app{"bench bottleneck: is each technique CPU-, vertex- or fill-limited here?",
+                 "bench bottleneck"};
+    app.footer(kFooter);
+    app.get_formatter()->column_width(34);
+    SweepOptions axes;
+    std::string csv, classes, from, shard = "1/1", format = "console";
+    bool resume = false, noProgress = false;
+    app.add_option("--csv", csv, "measurement rows go here (required unless --from)");
+    app.add_option("--classes", classes, "the classification CSV (default <csv>_classes.csv)");
+    app.add_option("--from", from, "classify the rows of this CSV instead of measuring");
+    app.add_flag("--resume", resume, "continue a study in --csv");
+    app.add_option("--shard", shard, "run slice i of N (i/N); classify after bench merge")
+        ->capture_default_str();
+    app.add_flag("--no-progress", noProgress, "no progress bar on stderr");
+    app.add_option("--format", format, "stdout: " + rowFormatChoices() + " (the classification)")
+        ->capture_default_str();
+    axes.add(app);
+    if (int code = parseCli(app, argc, argv, "bench bottleneck"); code >= 0) return code;
+    const RowFormat rowFormat = parseRowFormat(format);
+    if (!from.empty()) return classify(from, classes.empty() ? defaultClassesPath(from) : classes, rowFormat);
+    if (csv.empty())
+        throw Error("bench bottleneck: --csv FILE is required (where the rows go), or --from FILE");
+
+    SweepDefinition definition;
+    definition.name = "bottleneck";
+    // Nine perturbations per technique: fewer frames than a single run by default.
+    if (!axes.passes("--frames") && !axes.passes("--seconds")) definition.commonArgs = {"--frames", "20"};
+    if (!axes.passes("--warmup"))
+        definition.commonArgs.insert(definition.commonArgs.end(), {"--warmup", "3"});
+    axes.applyTo(definition);
+    const SweepPlan plan = BottleneckStudy::plan(definition);
+    SweepRunOptions options;
+    options.csvPath = csv;
+    options.resume = resume;
+    std::tie(options.shard, options.shardCount) = parseShard(shard);
+    options.progress = !noProgress;
+    const SweepSummary summary = SweepRunner::run(plan, options);
+    std::ostream& log = rowFormat == RowFormat::Console ? std::cout : std::cerr;
+    SweepReport::printSummary(log, plan, options, summary);
+    if (summary.interrupted) return 130;
+    if (options.shardCount > 1) {
+        log << "shard done: merge the shards (bench merge) and classify with bench bottleneck --from\n";
+        return summary.failed ? int(ExitCode::Failure) : 0;
+    }
+    classify(csv, classes.empty() ? defaultClassesPath(csv) : classes, rowFormat);
+    return summary.failed ? int(ExitCode::Failure) : 0;
+}
+
+} // namespace sb

@@ -1,0 +1,48 @@
+#include "bench/output/ImageWriter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/Error.h"
+
+namespace sb {
+
+void ImageWriter::write(const std::string& path, int width, int height, int channels,
+                        const unsigned char* pixels) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw Error("cannot write image '" + path + "': " + OIIO::geterror(), ExitCode::Failure);
+    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels) || !out->close())
+        throw Error("cannot write image '" + path + "': " + out->geterror(), ExitCode::Failure);
+}
+
+void ImageWriter::writeColor(const FrameTargets& targets, const std::string& path) {
+    int w = targets.width(), h = targets.height();
+    std::vector<unsigned char> rgba = targets.readColorRGBA8();
+    std::vector<unsigned char> rgb(size_t(w) * size_t(h) * 3);
+    for (int y = 0; y < h; ++y) // GL rows are bottom-up; images are top-down
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c)
+                rgb[(size_t(y) * size_t(w) + size_t(x)) * 3 + size_t(c)] =
+                    rgba[(size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4 + size_t(c)];
+    write(path, w, h, 3, rgb.data());
+}
+
+void ImageWriter::writeVisibility(const FrameTargets& targets, int light, const std::string& path) {
+    int w = targets.width(), h = targets.height();
+    std::vector<float> vis = targets.readVisibilityRGBA32F();
+    std::vector<unsigned char> grey(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float v = vis[(size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4 + size_t(light)];
+            if (!std::isfinite(v)) v = 0.0f;
+            grey[size_t(y) * size_t(w) + size_t(x)] =
+                (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
+        }
+    write(path, w, h, 1, grey.data());
+}
+
+} // namespace sb

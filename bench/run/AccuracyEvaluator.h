@@ -1,0 +1,81 @@
+#pragma once
+// `bench accuracy` (issue 3): judges a technique's visibility target against the exact reference at
+// the same sample positions, and measures how stable it is.
+//
+// For light `light` of the scene:
+//  1. render one frame of the technique, read back its visibility target (numeric sanity over every
+//     channel);
+//  2. render the G-buffer with the same camera and submitter, trace the reference there (hard for
+//     point-shaped lights, stratified soft for area lights);
+//  3. evaluation mask: covered samples whose geometric normal faces the light, n.L > 0.05;
+//  4. metrics (reference/AccuracyMetrics.h): false-shadow/false-light rates, with and without the
+//     1-px band around reference edges; RMSE, mean and max error;
+//  5. stability: perturbation gain for a 0.25 px camera shift and for a 0.01 degree light turn
+//     (technique changes / max(1, reference changes)), and flicker over a short camera drift (the
+//     same ratio summed over kDriftSteps steps of 0.5 px).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bench/output/CsvWriter.h"
+#include "bench/run/Harness.h"
+#include "reference/AccuracyMetrics.h"
+#include "reference/EmbreeScene.h"
+#include "reference/GBufferRenderer.h"
+#include "reference/ReferenceTracer.h"
+
+namespace sb {
+
+struct AccuracyOptions {
+    int light = 0;
+    int referenceSamples = 64; ///< per pixel for area lights
+    bool stability = true;     ///< perturbation gain and flicker (costs kDriftSteps + 2 extra frames)
+    float cameraShiftPx = 0.25f;
+    float lightTurnDeg = 0.01f;
+    float nDotLThreshold = 0.05f;
+};
+
+struct AccuracyResult {
+    int light = 0;
+    bool softReference = false;
+    HardMetrics hard;
+    SoftMetrics soft;
+    NumericSanity sanity;
+    uint64_t cameraChangesTechnique = 0, cameraChangesReference = 0;
+    uint64_t lightChangesTechnique = 0, lightChangesReference = 0;
+    double cameraGain = 0.0, lightGain = 0.0, flicker = 0.0;
+    bool stabilityMeasured = false;
+    TraceStats reference;
+    /// The columns of this result (appended to the timing row of the same configuration).
+    void appendColumns(CsvRow& row) const;
+};
+
+class AccuracyEvaluator {
+public:
+    static constexpr int kDriftSteps = 6;
+    explicit AccuracyEvaluator(Harness& harness);
+    ~AccuracyEvaluator();
+    /// The technique must have been prepared on this harness (Harness::measure does it). Restores the
+    /// harness's camera shift and lights afterwards.
+    AccuracyResult evaluate(Technique& technique, const AccuracyOptions& options);
+
+    /// One judged image: the technique's and the reference's visibility of the light, and the mask.
+    struct Sample {
+        std::vector<float> technique, reference;
+        std::vector<uint8_t> mask;
+        std::vector<float> techniqueRgba; ///< the whole read-back, for the numeric sanity check
+    };
+    Sample judgeFrame(Technique& technique, const AccuracyOptions& options, TraceStats* stats);
+
+private:
+    uint64_t techniqueChanges(const Sample& a, const Sample& b) const;
+    void measureStability(Technique& technique, const AccuracyOptions& options, const Sample& base,
+                          AccuracyResult& result);
+    Harness& mHarness;
+    std::unique_ptr<EmbreeScene> mEmbree;
+    std::unique_ptr<ReferenceTracer> mTracer;
+    std::unique_ptr<GBufferRenderer> mGBuffer;
+};
+
+} // namespace sb

@@ -1,0 +1,64 @@
+#include "bench/run/Environment.h"
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <thread>
+
+namespace sb {
+
+namespace {
+std::string trim(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+    size_t i = s.find_first_not_of(' ');
+    return i == std::string::npos ? "" : s.substr(i);
+}
+
+std::string runCommand(const std::string& cmd) {
+    std::string out;
+    if (FILE* p = popen(cmd.c_str(), "r")) {
+        std::array<char, 256> buf{};
+        while (fgets(buf.data(), int(buf.size()), p)) out += buf.data();
+        if (pclose(p) != 0) return "";
+    }
+    return trim(out);
+}
+
+std::string readCpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) {
+            size_t colon = line.find(':');
+            if (colon != std::string::npos) return trim(line.substr(colon + 1));
+        }
+    return "unknown";
+}
+} // namespace
+
+std::string Environment::nowIso8601() {
+    std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+Environment Environment::capture() {
+    Environment e;
+    e.timestamp = nowIso8601();
+    // The source tree's state at run time (not at configure time, which goes stale between commits).
+    std::string commit =
+        runCommand("git -C '" SHADOWBENCH_SOURCE_DIR "' describe --always --dirty --abbrev=12 2>/dev/null");
+    e.gitCommit = commit.empty() ? "unknown" : commit;
+    e.cpuModel = readCpuModel();
+    e.hardwareThreads = int(std::thread::hardware_concurrency());
+    if (const char* lp = std::getenv("LP_NUM_THREADS")) e.lpNumThreads = lp;
+    return e;
+}
+
+} // namespace sb

@@ -1,0 +1,212 @@
+#include "bench/run/Harness.h"
+#include "core/Strings.h"
+
+#include <chrono>
+#include <map>
+
+#include "core/Error.h"
+#include "gl/DebugOutput.h"
+#include "gl/backends/BackendRegistry.h"
+#include "scenes/Math.h"
+#include "scenes/SceneLoader.h"
+#include "techniques/FrameState.h"
+
+namespace sb {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+const CameraPreset& pickCamera(const Scene& scene, const std::string& name) {
+    if (const CameraPreset* c = scene.findCamera(name)) return *c;
+    std::string known = join(scene.cameras, ", ", [](const CameraPreset& c) { return c.name; });
+    throw Error("--camera " + name + ": scene '" + scene.name + "' has no such camera (known: " + known +
+                ")");
+}
+} // namespace
+
+Harness::Harness(const RunConfig& config) : mConfig(config) {
+    auto t0 = Clock::now();
+    mScene = SceneLoader::load(config.scene, config.sceneOptions);
+    mSceneLoadMs = msSince(t0, Clock::now());
+    mCamera = pickCamera(mScene, config.camera);
+    if (mScene.lights.size() > size_t(kMaxLights))
+        throw Error("scene '" + mScene.name + "' has " + std::to_string(mScene.lights.size()) +
+                    " lights; at most " + std::to_string(kMaxLights) + " are supported");
+
+    mContext = createContext(config.context);
+    DebugOutput::install();
+    mTargets = std::make_unique<FrameTargets>(config.width, config.height);
+    mSubmitter = Submitter::create(config.submit);
+    mSubmitter->upload(mScene);
+    mFrameUniforms = std::make_unique<FrameUniforms>();
+    setCamera(mCamera);
+    mRing = std::make_unique<TimerQueryRing>(4, 16);
+    mPassTimer = std::make_unique<PassTimer>(mRing.get());
+    DebugOutput::check();
+}
+
+Harness::~Harness() = default;
+
+void Harness::setCamera(const CameraPreset& camera) {
+    mCamera = camera;
+    updateFrameData();
+}
+
+void Harness::setPixelShift(const glm::vec2& pixels) {
+    mPixelShift = pixels;
+    updateFrameData();
+}
+
+void Harness::setLight(size_t index, const Light& light) {
+    if (index >= mScene.lights.size())
+        throw Error("light " + std::to_string(index) + " does not exist in scene '" + mScene.name + "'");
+    mScene.lights[index] = light;
+    updateFrameData();
+}
+
+void Harness::updateFrameData() {
+    mView = cameraView(mCamera);
+    mProj = cameraProjection(mCamera, float(mConfig.width) / float(mConfig.height));
+    // One pixel is 2/width in NDC; translating clip x by shift * w after projection moves every sample.
+    glm::mat4 shift(1.0f);
+    shift[3] = glm::vec4(2.0f * mPixelShift.x / float(mConfig.width),
+                         2.0f * mPixelShift.y / float(mConfig.height), 0.0f, 1.0f);
+    mProj = shift * mProj;
+    mFrameData = FrameUniforms::compute(mScene, mView, mProj, mCamera.eye);
+}
+
+const TimerVerdict& Harness::calibrateTimer() {
+    if (!mVerdict.checked) mVerdict = TimerTrust::calibrate(mPrograms);
+    mTimerQueries = mVerdict.trusted;
+    mPassTimer->setRing(mTimerQueries ? mRing.get() : nullptr);
+    return mVerdict;
+}
+
+void Harness::prepare(Technique& technique) {
+    std::string missing = technique.checkCapabilities(*mContext);
+    if (!missing.empty()) throw Error(missing, ExitCode::Unsupported);
+    DebugOutput::setCurrentPass(technique.name() + "/setup");
+    technique.setScene(mScene);
+    technique.compile({mPrograms, mScene, *mSubmitter, *mContext});
+    DebugOutput::check();
+    DebugOutput::setCurrentPass("");
+    mPassTimer->setTechnique(technique.name());
+}
+
+void Harness::setFrameState() {
+    // The state every technique may assume at the start of execute(); techniques restore what they
+    // change (techniques/FrameState.h).
+    resetFrameState();
+}
+
+FrameSample Harness::renderFrame(Technique& technique) {
+    FrameSample s;
+    auto t0 = Clock::now();
+    mFrameUniforms->upload(mFrameData);
+    if (mTimerQueries) mRing->beginFrame();
+    setFrameState();
+    mTargets->bind();
+    mTargets->clear(0.55f, 0.65f, 0.8f);
+    FrameContext ctx{mScene, mView, mProj, mCamera.eye, *mTargets, *mSubmitter, *mPassTimer, mFrameIndex++};
+    technique.execute(ctx);
+    mPassTimer->end();
+    if (mTimerQueries) mRing->endFrame();
+    auto t1 = Clock::now();
+    glFinish();
+    auto t2 = Clock::now();
+    s.cpuSubmitMs = msSince(t0, t1);
+    s.wallMs = msSince(t0, t2);
+    return s;
+}
+
+RunResult Harness::measure(Technique& technique) {
+    auto setup0 = Clock::now();
+    prepare(technique);
+    double setupMs = msSince(setup0, Clock::now());
+    for (int i = 0; i < mConfig.warmup; ++i) renderFrame(technique);
+    if (mTimerQueries) mRing->drain(); // warm-up timings are discarded
+
+    std::vector<FrameSample> samples;
+    uint64_t firstFrame = mFrameIndex;
+    std::map<uint64_t, PassGpuTimes> gpu;
+    auto collect = [&](std::vector<PassGpuTimes> v) {
+        for (auto& g : v) gpu[g.frame] = std::move(g);
+    };
+    auto start = Clock::now();
+    for (;;) {
+        samples.push_back(renderFrame(technique));
+        if (mTimerQueries) collect(mRing->collect());
+        int n = int(samples.size());
+        if (mConfig.seconds > 0.0) {
+            if (n >= RunConfig::kMinFrames && msSince(start, Clock::now()) >= mConfig.seconds * 1000.0) break;
+        } else if (n >= mConfig.frames) {
+            break;
+        }
+    }
+    if (mTimerQueries) collect(mRing->drain());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        auto it = gpu.find(firstFrame + i);
+        if (it == gpu.end()) continue;
+        samples[i].gpuPassMs = it->second.passMs;
+        samples[i].gpuTotalMs = it->second.totalMs;
+    }
+    RunResult r = summarize(technique, std::move(samples), firstFrame);
+    r.setupMs = setupMs;
+    r.loads = measureLoads(technique);
+    return r;
+}
+
+FrameLoads Harness::measureLoads(Technique& technique) {
+    FrameLoads loads;
+    const bool counting = PipelineStatistics::available(
+        mContext->glMajor, mContext->glMinor, mContext->hasExtension("GL_ARB_pipeline_statistics_query"));
+    if (counting && !mPipelineStatistics) mPipelineStatistics = std::make_unique<PipelineStatistics>();
+    const SubmitStats before = mSubmitter->lifetimeStats();
+    if (counting) mPipelineStatistics->begin();
+    renderFrame(technique);
+    if (counting) loads.pipeline = mPipelineStatistics->end();
+    loads.submitted = mSubmitter->lifetimeStats() - before;
+    DebugOutput::check();
+    return loads;
+}
+
+void Harness::setTimerVerdict(const TimerVerdict& verdict) {
+    mVerdict = verdict;
+    mTimerQueries = mVerdict.checked && mVerdict.trusted;
+    mPassTimer->setRing(mTimerQueries ? mRing.get() : nullptr);
+}
+
+RunResult Harness::summarize(Technique& technique, std::vector<FrameSample> samples, uint64_t) {
+    RunResult r;
+    r.technique = technique.name();
+    r.properties = technique.properties().toString();
+    r.permutation = technique.permutationKey();
+    r.counters = technique.counters();
+    std::vector<double> cpu, wall, total;
+    std::map<std::string, std::vector<double>> perPass;
+    for (const FrameSample& s : samples) {
+        cpu.push_back(s.cpuSubmitMs);
+        wall.push_back(s.wallMs);
+        if (s.gpuTotalMs < 0.0) {
+            r.gpuFramesMissing += mTimerQueries ? 1 : 0;
+            continue;
+        }
+        total.push_back(s.gpuTotalMs);
+        // A pass a technique enters several times a frame (once per light) is summed per frame.
+        std::map<std::string, double> frame;
+        for (const auto& [pass, ms] : s.gpuPassMs) frame[pass] += ms;
+        for (const auto& [pass, ms] : frame) perPass[pass].push_back(ms);
+    }
+    r.cpuSubmit = Statistics::compute(cpu);
+    r.wall = Statistics::compute(wall);
+    r.gpuTotal = Statistics::compute(total);
+    for (const std::string& pass : technique.info().passes)
+        r.gpuPass.emplace_back(pass, Statistics::compute(perPass[pass]));
+    r.samples = std::move(samples);
+    return r;
+}
+
+} // namespace sb

@@ -1,0 +1,26 @@
+#include "bench/run/Measurement.h"
+
+#include "bench/output/CsvNumber.h"
+#include "bench/run/ResultRow.h"
+
+namespace sb {
+
+Measurement Measurement::take(Harness& harness, Technique& technique, AccuracyEvaluator* evaluator,
+                              const AccuracyOptions& options, Environment& env) {
+    Measurement m;
+    m.run = harness.measure(technique);
+    if (evaluator) m.accuracy = evaluator->evaluate(technique, options);
+    env.timestamp = Environment::nowIso8601();
+    m.row = ResultRow::build(harness, m.run, env);
+    if (m.accuracy) m.accuracy->appendColumns(m.row);
+    return m;
+}
+
+void Measurement::addRound(int round, const std::string& baseline, std::optional<double> baselineWallMs) {
+    row.emplace_back("repeat", std::to_string(round));
+    row.emplace_back("baseline", baseline);
+    const bool ratio = baselineWallMs && *baselineWallMs > 0.0;
+    row.emplace_back("wall_ratio_vs_baseline", ratio ? csvNumber(run.wall.median / *baselineWallMs) : "");
+}
+
+} // namespace sb

@@ -1,0 +1,100 @@
+#include "bench/run/ResultRow.h"
+
+#include "bench/output/CsvNumber.h"
+#include "gl/backends/BackendRegistry.h"
+
+namespace sb {
+
+namespace {
+
+void addStats(CsvRow& row, const std::string& prefix, const Statistics& s) {
+    row.emplace_back(prefix + "_median", csvNumber(s.median));
+    row.emplace_back(prefix + "_p5", csvNumber(s.p5));
+    row.emplace_back(prefix + "_p95", csvNumber(s.p95));
+    row.emplace_back(prefix + "_p99", csvNumber(s.p99));
+    row.emplace_back(prefix + "_mean", csvNumber(s.mean));
+    row.emplace_back(prefix + "_stddev", csvNumber(s.stddev));
+    row.emplace_back(prefix + "_mad", csvNumber(s.mad));
+}
+
+std::string lightsText(const Scene& scene) {
+    std::string out;
+    for (const Light& l : scene.lights) {
+        if (!out.empty()) out += '+';
+        out += lightTypeName(l.type);
+    }
+    return out.empty() ? "none" : out;
+}
+
+/// The census frame's loads; the pipeline's cells stay empty where the context cannot count them.
+void addLoads(CsvRow& row, const FrameLoads& loads) {
+    const std::optional<PipelineCounts>& p = loads.pipeline;
+    auto count = [&](uint64_t PipelineCounts::*field) { return p ? std::to_string((*p).*field) : ""; };
+    row.emplace_back("load_gl_calls", std::to_string(loads.submitted.glCalls));
+    row.emplace_back("load_vertices", count(&PipelineCounts::vertexShaderInvocations));
+    row.emplace_back("load_primitives", count(&PipelineCounts::primitivesSubmitted));
+    row.emplace_back("load_clipped_primitives", count(&PipelineCounts::clippingOutputPrimitives));
+    row.emplace_back("load_fragments", count(&PipelineCounts::fragmentShaderInvocations));
+}
+
+size_t layoutInstances(const Scene& scene) {
+    size_t n = 0;
+    for (const Instance& i : scene.instances) n += i.fromLayout ? 1 : 0;
+    return n;
+}
+} // namespace
+
+CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment& env) {
+    const RunConfig& c = h.config();
+    const Scene& scene = h.scene();
+    const Context& ctx = h.context();
+    const TimerVerdict& v = h.timerVerdict();
+    CsvRow row{
+        {"timestamp", env.timestamp},
+        {"git_commit", env.gitCommit},
+        {"status", "ok"},
+        {"renderer", ctx.renderer},
+        {"gl_version", ctx.version},
+        {"gl_vendor", ctx.vendor},
+        {"backend", backendName(ctx.backend())},
+        {"device", ctx.deviceName},
+        {"cpu_model", env.cpuModel},
+        {"hw_threads", std::to_string(env.hardwareThreads)},
+        {"lp_num_threads", env.lpNumThreads},
+        {"scene", scene.name},
+        {"scene_hash", scene.computeContentHash()},
+        {"scene_triangles", std::to_string(scene.totalTriangles())},
+        {"technique", r.technique},
+        {"properties", r.properties},
+        {"permutation", r.permutation},
+        {"instances", std::to_string(layoutInstances(scene))},
+        {"scale", csvNumber(c.sceneOptions.scale)},
+        {"tessellation",
+         c.sceneOptions.tessellation ? std::to_string(*c.sceneOptions.tessellation) : "default"},
+        {"tess_factor", csvNumber(c.sceneOptions.tessellationFactor)},
+        {"seed", c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
+        {"model", c.sceneOptions.modelPath},
+        {"submit", submitModeName(c.submit)},
+        {"camera", c.camera},
+        {"width", std::to_string(c.width)},
+        {"height", std::to_string(c.height)},
+        {"lights", lightsText(scene)},
+        {"frames", std::to_string(r.wall.n)},
+        {"warmup", std::to_string(c.warmup)},
+        {"setup_ms", csvNumber(r.setupMs)},
+    };
+    addStats(row, "wall_ms", r.wall);
+    addStats(row, "cpu_submit_ms", r.cpuSubmit);
+    row.emplace_back("fps_median", csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
+    row.emplace_back("timer_verdict", v.label());
+    row.emplace_back("timer_reason", v.reason);
+    bool trusted = v.checked && v.trusted;
+    row.emplace_back("gpu_ms_median", trusted && r.gpuTotal.n ? csvNumber(r.gpuTotal.median) : "");
+    for (const auto& [pass, stats] : r.gpuPass)
+        row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? csvNumber(stats.median) : "");
+    for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, csvNumber(value));
+    addLoads(row, r.loads);
+    return row;
+}
+
+} // namespace sb

@@ -1,0 +1,18 @@
+#pragma once
+// Builds the CSV row of one measured configuration (DESIGN.md section 7; README "CSV columns" lists
+// every column). GPU times appear only when the timer verdict is "trusted"; otherwise those cells stay
+// empty and timer_verdict/timer_reason say why (DESIGN.md section 6: never present untrusted numbers as
+// GPU time).
+#include "bench/output/CsvWriter.h"
+#include "bench/run/Environment.h"
+#include "bench/run/Harness.h"
+
+namespace sb {
+
+struct ResultRow {
+    static CsvRow build(const Harness& harness, const RunResult& result, const Environment& env);
+    /// The fixed columns every row has, in order (per-pass GPU and counter columns follow).
+    static const std::vector<std::string>& fixedColumns();
+};
+
+} // namespace sb

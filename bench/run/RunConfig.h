@@ -1,0 +1,45 @@
+#pragma once
+// Everything that defines one measured configuration, as parsed from the command line. Recorded in
+// full in every CSV row so any row can be re-run exactly.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bench/output/RowExport.h"
+#include "gl/Context.h"
+#include "scenes/SceneOptions.h"
+#include "techniques/PropertySet.h"
+#include "techniques/submit/Submitter.h"
+
+namespace sb {
+
+struct RunConfig {
+    enum class Mode { Measure, Accuracy };
+    Mode mode = Mode::Measure; ///< `bench` or `bench accuracy`
+    std::vector<TechniqueSpec> techniques{{"shadowmap", {}}};
+    std::string scene = "aircraft";
+    SceneOptions sceneOptions;
+    std::string camera = "far";
+    int width = 1024, height = 1024;
+    SubmitMode submit = SubmitMode::Retained;
+    int frames = 50;      ///< measured frames (ignored when seconds > 0)
+    double seconds = 0.0; ///< measure for this long instead (at least kMinFrames frames)
+    int warmup = 5;       ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)
+    ContextOptions context;
+    std::string csvPath;        ///< --csv: append one row per technique
+    std::string samplesPath;    ///< --samples: per-frame samples
+    std::string screenshotPath; ///< --screenshot: colour PNG (technique name inserted when several)
+    std::string visibilityPath; ///< --visibility: visibility PNG
+    bool checkTimer = true;     ///< run the GPU-timer trust calibration
+    bool sweep = false;         ///< accuracy: walk each technique's quality knobs
+    int accuracyLight = 0;      ///< accuracy: which light is judged
+    int referenceSamples = 64;  ///< accuracy: reference samples per pixel for area lights
+    bool stability = true;      ///< accuracy: perturbation gain and flicker
+    int windowFrames = 0;       ///< --window: close after this many frames (0 = when the window closes)
+    bool quiet = false;
+    int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
+    RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
+    static constexpr int kMinFrames = 5;
+};
+
+} // namespace sb

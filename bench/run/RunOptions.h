@@ -1,0 +1,26 @@
+#pragma once
+// The options of one measured run (`bench [options]`, `bench accuracy [options]`) into a RunConfig.
+// Every subcommand that measures parses its run options here, so `bench sweep`, `bench bottleneck`,
+// the sweep's worker processes and handloop accept exactly what `bench` accepts.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bench/run/RunConfig.h"
+
+namespace sb {
+
+class RunOptions {
+public:
+    /// Parses arguments into `config` (argv[0] is the program name). Returns -1 to continue, or an exit
+    /// code when the command is finished (--help, a parse error; --list sets `listOnly` and returns -1).
+    /// `footer` ends --help (the dispatcher's subcommands and examples). Throws sb::Error for bad values.
+    static int parse(int argc, char** argv, RunConfig& config, bool& listOnly,
+                     const std::string& footer = {});
+    /// parse() over a list of options (no program name): the sweep checks and the worker use it.
+    static RunConfig parseArgs(const std::vector<std::string>& args, RunConfig::Mode mode);
+    /// "1024x768" -> (1024, 768); throws sb::Error naming the option.
+    static std::pair<int, int> parseSize(const std::string& text);
+};
+
+} // namespace sb

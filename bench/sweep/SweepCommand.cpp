@@ -1,0 +1,95 @@
+#include "bench/sweep/SweepCommand.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "bench/output/CsvWriter.h"
+#include "bench/output/RowExport.h"
+#include "bench/run/CliParse.h"
+#include "bench/sweep/SweepDefinition.h"
+#include "bench/sweep/SweepOptions.h"
+#include "bench/sweep/SweepReport.h"
+#include "bench/sweep/SweepRunner.h"
+
+namespace sb {
+
+namespace {
+
+const char* kFooter =
+    R"(Every combination of the axes is one group, run in its own worker process; inside it the
+techniques are measured in rounds (--repeat) next to each other. Rows go to --csv as they finish.
+
+Examples:
+  bench sweep -t none -t shadowmap --instances 1,50,100,200 --csv inst.csv
+  bench sweep sweeps/submission.json --csv sub.csv
+  bench sweep -t shadowmap:resolution=512,1024,2048 --submit retained,immediate --csv r.csv
+  bench sweep sweeps/submission.json --csv sub.csv --resume         continue an interrupted sweep
+  bench sweep sweeps/submission.json --shard 2/4 --csv part2.csv     one of four slices
+  parallel bench sweep s.json --shard {}/2 --csv part{}.csv ::: 1 2 && bench merge -o all.csv part1.csv part2.csv
+  bench sweep s.json --dry-run                                       list the configurations only
+
+Exit codes: 0 ok, 1 some configurations failed (rows with status=failed say why), 2 bad input,
+130 interrupted (run the same command with --resume to continue).)";
+
+struct SweepCli {
+    std::string file, csv, shard = "1/1", format = "console", name, mode;
+    bool resume = false, dryRun = false, noProgress = false, qualitySweep = false;
+    SweepOptions axes;
+};
+
+} // namespace
+
+int SweepCommand::main(int argc, char** argv) {
+    CLI::App app{"bench sweep: measure every combination of the given axes", "bench sweep"};
+    app.footer(kFooter);
+    app.get_formatter()->column_width(34);
+    SweepCli cli;
+    app.add_option("file", cli.file, "sweep definition (JSON; see README 'Sweeps')");
+    app.add_option("--csv", cli.csv, "rows go here, appended as they finish (required unless --dry-run)");
+    cli.axes.add(app);
+    app.add_option("--mode", cli.mode, "measure (default) or accuracy (judge against the reference too)");
+    app.add_flag("--quality-sweep", cli.qualitySweep, "accuracy: walk each technique's quality knobs");
+    app.add_option("--name", cli.name, "sweep name recorded in every row (default: the file's stem)");
+    app.add_flag("--resume", cli.resume, "continue the sweep in --csv, skipping the rows it already has");
+    app.add_option("--shard", cli.shard, "run slice i of N (i/N) of the combinations")->capture_default_str();
+    app.add_flag("--dry-run", cli.dryRun, "print the configurations and exit");
+    app.add_flag("--no-progress", cli.noProgress, "no progress bar on stderr");
+    app.add_option("--format", cli.format,
+                   "stdout at the end: " + rowFormatChoices() + " (this shard's rows)")
+        ->capture_default_str();
+    if (int code = parseCli(app, argc, argv, "bench sweep"); code >= 0) return code;
+
+    const RowFormat format = parseRowFormat(cli.format);
+    const auto [shard, shardCount] = parseShard(cli.shard);
+    SweepDefinition definition =
+        cli.file.empty() ? SweepDefinition{} : SweepDefinition::fromJsonFile(cli.file);
+    cli.axes.applyTo(definition);
+    if (!cli.name.empty()) definition.name = cli.name;
+    if (cli.qualitySweep) definition.qualitySweep = true;
+    if (!cli.mode.empty()) {
+        if (cli.mode != "measure" && cli.mode != "accuracy")
+            throw Error("--mode " + cli.mode + ": expected measure or accuracy");
+        definition.mode = cli.mode == "accuracy" ? SweepPlan::Mode::Accuracy : SweepPlan::Mode::Measure;
+    }
+    const SweepPlan plan = definition.expand();
+    std::ostream& log = format == RowFormat::Console ? std::cout : std::cerr;
+    if (cli.dryRun) {
+        SweepReport::printPlan(log, plan, shard, shardCount);
+        return 0;
+    }
+    if (cli.csv.empty()) throw Error("bench sweep: --csv FILE is required (where the rows go)");
+    SweepRunOptions options;
+    options.csvPath = cli.csv;
+    options.resume = cli.resume;
+    options.shard = shard;
+    options.shardCount = shardCount;
+    options.progress = !cli.noProgress;
+    const SweepSummary summary = SweepRunner::run(plan, options);
+    SweepReport::printSummary(log, plan, options, summary);
+    if (format != RowFormat::Console)
+        std::cout << RowExport::format(SweepReport::shardRows(plan, options), format);
+    if (summary.interrupted) return 130;
+    return summary.failed ? int(ExitCode::Failure) : 0;
+}
+
+} // namespace sb
