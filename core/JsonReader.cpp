@@ -11,6 +11,10 @@ JsonReader::JsonReader(const nlohmann::json& value, std::string source, std::str
     : mValue(&value), mSource(std::move(source)), mPath(std::move(path)) {}
 
 void JsonReader::requireObject(std::initializer_list<std::string_view> allowed) const {
+    requireObject(std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+void JsonReader::requireObject(std::span<const std::string_view> allowed) const {
     if (!mValue->is_object()) fail("an object");
     for (const auto& item : mValue->items()) {
         bool known = false;

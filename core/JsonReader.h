@@ -1,8 +1,9 @@
 #pragma once
-// Typed, path-aware access to a parsed JSON value for the scene loader: every failure throws
-// sb::Error "<source>: <JSON pointer>: expected <what>, got <value>" (DESIGN.md section 9).
+// Typed, path-aware access to a parsed JSON value for the scene loader: every failure throws sb::Error
+// "<source>: <JSON pointer>: expected <what>, got <value>" (docs/ARCHITECTURE.md, "Errors and exit codes").
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +26,7 @@ public:
     /// Requires an object whose keys are all in `allowed`; an unknown key (a typo) is an error that
     /// lists the valid ones.
     void requireObject(std::initializer_list<std::string_view> allowed) const;
+    void requireObject(std::span<const std::string_view> allowed) const;
     bool has(const char* key) const;
     /// The member `key`; an error naming the key if it is missing.
     JsonReader operator[](const char* key) const;

@@ -18,8 +18,7 @@ namespace {
 
 constexpr float kTwoPi = glm::two_pi<float>();
 
-void requireTessellation(const char* generator, int tess) {
-    const int minimum = MeshGenerators::minimumTessellation(generator);
+void requireTessellation(const char* generator, int tess, int minimum) {
     if (tess < minimum || tess > 4096)
         throw Error(std::string(generator) + ": tessellation must be in [" + std::to_string(minimum) +
                     ", 4096], got " + std::to_string(tess));
@@ -372,7 +371,7 @@ void dropUnusedVertices(Mesh& mesh) {
 } // namespace
 
 Mesh MeshGenerators::sphere(int tess) {
-    requireTessellation("sphere", tess);
+    requireTessellation("sphere", tess, kSphereMinimumTessellation);
     MeshBuilder b("sphere");
     const int rings = tess, segments = 2 * tess;
     for (int i = 0; i <= rings; ++i) {
@@ -391,7 +390,7 @@ Mesh MeshGenerators::sphere(int tess) {
 }
 
 Mesh MeshGenerators::box(glm::vec3 halfExtent, int tess) {
-    requireTessellation("box", tess);
+    requireTessellation("box", tess, kBoxMinimumTessellation);
     MeshBuilder b("box");
     for (int axis = 0; axis < 3; ++axis) {
         for (float sign : {1.0f, -1.0f}) {
@@ -405,7 +404,7 @@ Mesh MeshGenerators::box(glm::vec3 halfExtent, int tess) {
 }
 
 Mesh MeshGenerators::cylinder(int tess) {
-    requireTessellation("cylinder", tess);
+    requireTessellation("cylinder", tess, kCylinderMinimumTessellation);
     MeshBuilder b("cylinder");
     const int rows = tess, segments = 2 * tess;
     // Side: rows from the top (y = 1) down, so cross(d/dsegment, d/drow) points outward.
@@ -438,7 +437,7 @@ Mesh MeshGenerators::cylinder(int tess) {
 }
 
 Mesh MeshGenerators::plane(float size, int tess) {
-    requireTessellation("plane", tess);
+    requireTessellation("plane", tess, kPlaneMinimumTessellation);
     MeshBuilder b("plane");
     const float h = 0.5f * size;
     // Rows run from +z to -z so the grid is counter-clockwise seen from +Y.
@@ -452,7 +451,7 @@ Mesh MeshGenerators::plane(float size, int tess) {
 }
 
 Mesh MeshGenerators::aircraft(int tess) {
-    requireTessellation("aircraft", tess);
+    requireTessellation("aircraft", tess, kAircraftMinimumTessellation);
     MeshBuilder b("aircraft");
     // The flat parts are subdivided too (more slowly than the curved fuselage) so the knob raises
     // the vertex load of every part, as the thesis's vertex-bound measurements need.
@@ -471,7 +470,7 @@ Mesh MeshGenerators::aircraft(int tess) {
 }
 
 Mesh MeshGenerators::teapot(const std::string& bptPath, int tess) {
-    requireTessellation("teapot", tess);
+    requireTessellation("teapot", tess, kTeapotMinimumTessellation);
     const std::vector<BezierPatch> patches = BezierPatch::readBptFile(bptPath);
     MeshBuilder b("teapot");
     if (patches.size() != 32) {
@@ -488,7 +487,7 @@ Mesh MeshGenerators::teapot(const std::string& bptPath, int tess) {
 }
 
 Mesh MeshGenerators::lantern(float thickness, int tess) {
-    requireTessellation("lantern", tess);
+    requireTessellation("lantern", tess, kLanternMinimumTessellation);
     if (!(thickness > 0.0f && thickness < 1.0f))
         throw Error("lantern: thickness must be in (0, 1) (the outer radius is 1), got " +
                     std::to_string(thickness));
@@ -578,13 +577,6 @@ Mesh MeshGenerators::lantern(float thickness, int tess) {
     Mesh mesh = b.finish();
     dropUnusedVertices(mesh);
     return mesh;
-}
-
-int MeshGenerators::minimumTessellation(const std::string& generator) {
-    if (generator == "sphere") return 3;
-    if (generator == "cylinder" || generator == "aircraft") return 2;
-    if (generator == "lantern") return 8;
-    return 1;
 }
 
 } // namespace sb

@@ -1,5 +1,5 @@
 #pragma once
-// Procedural meshes for the built-in content (DESIGN.md section 8). Each has a tessellation knob:
+// Procedural meshes for the built-in content (docs/ARCHITECTURE.md, "Scenes"). Each has a tessellation knob:
 // the vertex-load knob of the bottleneck studies (doubling it roughly quadruples the triangles of the
 // curved parts). All are closed, consistently wound (counter-clockwise outward) meshes with smooth or
 // faceted normals as noted, except the ground plane (a single-sided grid) and the teapot (the original
@@ -49,9 +49,15 @@ struct MeshGenerators {
     /// and "holes" (the tunnel walls). tess >= 8 (each hole at least one cell, no two holes sharing a
     /// vertex; checked, an sb::Error otherwise). 1780 triangles at 16, 6692 at 32, 15160 at 48.
     static Mesh lantern(float thickness, int tess);
-    /// The smallest tessellation `generator` accepts ("sphere" 3, "cylinder" 2, "aircraft" 2,
-    /// "lantern" 8, others 1); 1 for names it does not know.
-    static int minimumTessellation(const std::string& generator);
+    /// The smallest tessellation each generator accepts (the table of scenes/MeshGeneratorTable.h
+    /// lists them beside the generators' names).
+    static constexpr int kSphereMinimumTessellation = 3;
+    static constexpr int kBoxMinimumTessellation = 1;
+    static constexpr int kCylinderMinimumTessellation = 2;
+    static constexpr int kPlaneMinimumTessellation = 1;
+    static constexpr int kAircraftMinimumTessellation = 2;
+    static constexpr int kTeapotMinimumTessellation = 1;
+    static constexpr int kLanternMinimumTessellation = 8;
 };
 
 } // namespace sb

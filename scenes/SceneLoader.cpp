@@ -19,7 +19,7 @@
 #include "core/SplitMix64.h"
 #include "scenes/BuiltinShadowPlanes.h"
 #include "scenes/Math.h"
-#include "scenes/MeshGenerators.h"
+#include "scenes/MeshGeneratorTable.h"
 #include "scenes/ModelLoader.h"
 
 namespace sb {
@@ -27,8 +27,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr uint32_t kMaxInstances = 1000000;
-constexpr const char* kTeapotResource = "scenes/data/teapot.bpt";
-constexpr const char* kGenerators = "sphere, box, cylinder, plane, aircraft, teapot, lantern";
 
 /// Bytes per retained vertex (position + normal, 2 x vec3) and per-instance bookkeeping (model
 /// matrix, colour, flags, uniforms) used by the memory estimate.
@@ -41,86 +39,32 @@ struct Context {
     const SceneOptions& options;
     std::string source;
     std::map<std::string, uint32_t> meshByName;
-    std::vector<bool> meshIsPlane; ///< planes keep their own tessellation under --tess
     std::optional<size_t> firstLayoutInstance;
 };
 
 // ---- meshes -------------------------------------------------------------------------------------
 
-int tessellationFor(const Context& ctx, const JsonReader& m, const std::string& generator, int fallback) {
-    const bool overridable = generator != "plane";
-    int tess =
-        m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]")) : fallback;
-    if (!overridable) return tess;
+int tessellationFor(const Context& ctx, const JsonReader& m, const MeshGeneratorEntry& generator) {
+    int tess = m.has("tessellation") ? int(m["tessellation"].integer(1, 4096, "an integer in [1, 4096]"))
+                                     : generator.defaultTessellation;
+    if (!generator.followsTessellationOptions) return tess;
     if (ctx.options.tessellation) tess = *ctx.options.tessellation;
     if (ctx.options.tessellationFactor != 1.0f) {
         const long scaled = std::lround(double(tess) * double(ctx.options.tessellationFactor));
-        tess = int(std::clamp<long>(scaled, MeshGenerators::minimumTessellation(generator), 4096));
+        tess = int(std::clamp<long>(scaled, generator.minimumTessellation, 4096));
     }
     return tess;
 }
 
-/// Scales a generated mesh; normals follow the inverse scale (exact for the axis-aligned scales used).
-void scaleMesh(Mesh& mesh, const glm::vec3& s) {
-    for (auto& p : mesh.positions) p *= s;
-    for (auto& n : mesh.normals) n = glm::normalize(n / s);
-}
-
-Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& generator) {
+Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& name) {
+    const MeshGeneratorEntry* generator = MeshGeneratorTable::find(name);
+    if (!generator) m["generator"].fail("one of " + MeshGeneratorTable::names());
     // Each generator accepts its own parameters only, so a parameter given to the wrong generator
     // (a "radius" on a box) is reported instead of ignored.
-    auto tess = [&](int fallback) { return tessellationFor(ctx, m, generator, fallback); };
-    if (generator == "sphere") {
-        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation", "radius"});
-        Mesh mesh = MeshGenerators::sphere(tess(16));
-        if (m.has("radius")) scaleMesh(mesh, glm::vec3(m["radius"].positiveNumber()));
-        return mesh;
-    }
-    if (generator == "box") {
-        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation", "half_extent"});
-        return MeshGenerators::box(m.has("half_extent") ? m["half_extent"].positiveVec3() : glm::vec3(1.0f),
-                                   tess(1));
-    }
-    if (generator == "cylinder") {
-        m.requireObject(
-            {"name", "generator", "shadow_planes", "proxies", "tessellation", "radius", "height"});
-        Mesh mesh = MeshGenerators::cylinder(tess(16));
-        const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
-        const float height = m.has("height") ? m["height"].positiveNumber() : 2.0f;
-        scaleMesh(mesh, glm::vec3(radius, 0.5f * height, radius));
-        return mesh;
-    }
-    if (generator == "plane") {
-        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation", "size"});
-        return MeshGenerators::plane(m.has("size") ? m["size"].positiveNumber() : 100.0f, tess(16));
-    }
-    if (generator == "aircraft") {
-        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation"});
-        return MeshGenerators::aircraft(tess(16));
-    }
-    if (generator == "teapot") {
-        m.requireObject({"name", "generator", "shadow_planes", "proxies", "tessellation"});
-        const std::string path = Paths::findResource(kTeapotResource);
-        if (path.empty()) m["generator"].error(std::string("cannot find ") + kTeapotResource);
-        return MeshGenerators::teapot(path, tess(8));
-    }
-    if (generator == "lantern") {
-        // "radius" (outer) and "thickness" (the shell's, radius - thickness is the inner radius) in
-        // scene units; the generator builds outer radius 1, so the thickness is divided by the radius.
-        m.requireObject(
-            {"name", "generator", "shadow_planes", "proxies", "tessellation", "radius", "thickness"});
-        const float radius = m.has("radius") ? m["radius"].positiveNumber() : 1.0f;
-        const float thickness = m.has("thickness") ? m["thickness"].positiveNumber() : 0.08f;
-        if (!(thickness < radius)) {
-            const std::string r = m.has("radius") ? m["radius"].value().dump() : "1";
-            if (m.has("thickness")) m["thickness"].fail("a thickness below the radius (" + r + ")");
-            m["radius"].fail("a radius above the default thickness 0.08");
-        }
-        Mesh mesh = MeshGenerators::lantern(thickness / radius, tess(16));
-        scaleMesh(mesh, glm::vec3(radius));
-        return mesh;
-    }
-    m["generator"].fail(std::string("one of ") + kGenerators);
+    std::vector<std::string_view> keys = MeshGeneratorTable::commonKeys();
+    keys.insert(keys.end(), generator->parameters.begin(), generator->parameters.end());
+    m.requireObject(keys);
+    return generator->build(m, tessellationFor(ctx, m, *generator));
 }
 
 /// Generator errors (a tessellation below the generator's minimum, an unreadable patch file) get the
@@ -349,7 +293,6 @@ void parseMesh(Context& ctx, const JsonReader& m) {
         for (const auto& e : m["proxies"].elements()) mesh.proxies.push_back(parseProxy(e));
     }
     ctx.meshByName[name] = uint32_t(ctx.scene.meshes.size());
-    ctx.meshIsPlane.push_back(generator == "plane");
     ctx.scene.meshes.push_back(std::move(mesh));
 }
 
@@ -685,7 +628,7 @@ Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceN
     } catch (const nlohmann::json::parse_error& e) {
         throw Error(sourceName + ": invalid JSON: " + e.what());
     }
-    Context ctx{Scene{}, options, sourceName, {}, {}, {}};
+    Context ctx{Scene{}, options, sourceName, {}, {}};
     ctx.scene.name = fs::path(sourceName).stem().string();
     ctx.scene.sourcePath = sourceName;
     parseDocument(ctx, JsonReader(doc, sourceName));

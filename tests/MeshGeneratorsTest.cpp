@@ -540,7 +540,7 @@ TEST(MeshGeneratorsTest, LanternHolesStayApartAtEveryTessellation) {
     // The generator throws where its holes would touch or miss; from 12 on the gaps between the
     // outlines (20 degrees of latitude, 32 of longitude) exceed one and two cells, the widening of a
     // row by a cell included, so checking up to 128 covers every coarse case.
-    for (int tess = MeshGenerators::minimumTessellation("lantern"); tess <= 128; ++tess)
+    for (int tess = MeshGenerators::kLanternMinimumTessellation; tess <= 128; ++tess)
         EXPECT_NO_THROW(MeshGenerators::lantern(0.08f, tess)) << "tess " << tess;
     EXPECT_THROW(MeshGenerators::lantern(0.08f, 7), std::runtime_error);
     EXPECT_THROW(MeshGenerators::lantern(0.0f, 16), std::runtime_error);
