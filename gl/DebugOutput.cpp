@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "core/Error.h"
+#include "core/NameTable.h"
 
 namespace sb {
 namespace {
@@ -27,25 +28,19 @@ DebugState& state() {
     return s;
 }
 
+constexpr Named<GLenum> kErrorNames[] = {
+    {GL_INVALID_ENUM, "GL_INVALID_ENUM"},
+    {GL_INVALID_VALUE, "GL_INVALID_VALUE"},
+    {GL_INVALID_OPERATION, "GL_INVALID_OPERATION"},
+    {GL_INVALID_FRAMEBUFFER_OPERATION, "GL_INVALID_FRAMEBUFFER_OPERATION"},
+    {GL_OUT_OF_MEMORY, "GL_OUT_OF_MEMORY"},
+    {GL_STACK_OVERFLOW, "GL_STACK_OVERFLOW"},
+    {GL_STACK_UNDERFLOW, "GL_STACK_UNDERFLOW"},
+};
+constexpr NameTable kErrors{kErrorNames};
+
 const char* errorName(GLenum code) {
-    switch (code) {
-    case GL_INVALID_ENUM:
-        return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE:
-        return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION:
-        return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION:
-        return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY:
-        return "GL_OUT_OF_MEMORY";
-    case GL_STACK_OVERFLOW:
-        return "GL_STACK_OVERFLOW";
-    case GL_STACK_UNDERFLOW:
-        return "GL_STACK_UNDERFLOW";
-    default:
-        return "GL error";
-    }
+    return kErrors.name(code, "GL error");
 }
 
 std::string errorMessage(const std::string& pass, GLenum code, const std::string& driverMessage) {

@@ -6,9 +6,23 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/NameTable.h"
 
 namespace sb {
 namespace {
+
+constexpr Named<GLenum> kStageDefines[] = {
+    {GL_VERTEX_SHADER, "SB_VERTEX_SHADER"},
+    {GL_FRAGMENT_SHADER, "SB_FRAGMENT_SHADER"},
+    {GL_GEOMETRY_SHADER, "SB_GEOMETRY_SHADER"},
+};
+constexpr NameTable kStageDefineTable{kStageDefines};
+constexpr Named<GLenum> kStageNames[] = {
+    {GL_VERTEX_SHADER, "vertex"},
+    {GL_FRAGMENT_SHADER, "fragment"},
+    {GL_GEOMETRY_SHADER, "geometry"},
+};
+constexpr NameTable kStageNameTable{kStageNames};
 
 constexpr const char* kVersionLine = "#version 450 compatibility\n";
 
@@ -101,29 +115,11 @@ std::string ShaderPreprocessor::mapLog(const std::string& log) const {
 }
 
 const char* ShaderPreprocessor::stageDefine(GLenum stage) {
-    switch (stage) {
-    case GL_VERTEX_SHADER:
-        return "SB_VERTEX_SHADER";
-    case GL_FRAGMENT_SHADER:
-        return "SB_FRAGMENT_SHADER";
-    case GL_GEOMETRY_SHADER:
-        return "SB_GEOMETRY_SHADER";
-    default:
-        return "SB_UNKNOWN_SHADER_STAGE";
-    }
+    return kStageDefineTable.name(stage, "SB_UNKNOWN_SHADER_STAGE");
 }
 
 const char* ShaderPreprocessor::stageName(GLenum stage) {
-    switch (stage) {
-    case GL_VERTEX_SHADER:
-        return "vertex";
-    case GL_FRAGMENT_SHADER:
-        return "fragment";
-    case GL_GEOMETRY_SHADER:
-        return "geometry";
-    default:
-        return "unknown-stage";
-    }
+    return kStageNameTable.name(stage, "unknown-stage");
 }
 
 } // namespace sb

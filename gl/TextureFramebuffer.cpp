@@ -1,31 +1,25 @@
 #include "gl/TextureFramebuffer.h"
 
 #include "core/Error.h"
+#include "core/NameTable.h"
 
 namespace sb {
 
 namespace {
+constexpr Named<GLenum> kStatusNames[] = {
+    {GL_FRAMEBUFFER_UNDEFINED, "GL_FRAMEBUFFER_UNDEFINED"},
+    {GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"},
+    {GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT"},
+    {GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER"},
+    {GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER"},
+    {GL_FRAMEBUFFER_UNSUPPORTED, "GL_FRAMEBUFFER_UNSUPPORTED"},
+    {GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE, "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE"},
+    {GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS, "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS"},
+};
+constexpr NameTable kStatuses{kStatusNames};
+
 const char* statusName(GLenum status) {
-    switch (status) {
-    case GL_FRAMEBUFFER_UNDEFINED:
-        return "GL_FRAMEBUFFER_UNDEFINED";
-    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
-        return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
-        return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
-        return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
-        return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-    case GL_FRAMEBUFFER_UNSUPPORTED:
-        return "GL_FRAMEBUFFER_UNSUPPORTED";
-    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
-        return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-    case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
-        return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-    default:
-        return "unknown framebuffer status";
-    }
+    return kStatuses.name(status, "unknown framebuffer status");
 }
 
 GLuint createTexture(GLenum format, int width, int height) {
@@ -39,19 +33,17 @@ GLuint createTexture(GLenum format, int width, int height) {
     return texture;
 }
 
+constexpr Named<GLenum> kFormatNames[] = {
+    {GL_RGBA8, "RGBA8"},
+    {GL_RGBA16F, "RGBA16F"},
+    {GL_RGBA32F, "RGBA32F"},
+    {GL_R32UI, "R32UI"},
+};
+constexpr NameTable kFormats{kFormatNames};
+
 std::string formatName(GLenum f) {
-    switch (f) {
-    case GL_RGBA8:
-        return "RGBA8";
-    case GL_RGBA16F:
-        return "RGBA16F";
-    case GL_RGBA32F:
-        return "RGBA32F";
-    case GL_R32UI:
-        return "R32UI";
-    default:
-        return "format 0x" + std::to_string(f);
-    }
+    const Named<GLenum>* e = kFormats.find(f);
+    return e ? e->name : "format 0x" + std::to_string(f);
 }
 } // namespace
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "core/NameTable.h"
 
 namespace sb {
 
@@ -12,23 +13,18 @@ namespace {
 /// "verbose=0" keeps Embree from printing anything; errors come back through rtcGetDeviceError.
 constexpr const char* kDeviceConfig = "verbose=0";
 
+constexpr Named<RTCError> kEmbreeErrorNames[] = {
+    {RTC_ERROR_NONE, "no error"},
+    {RTC_ERROR_INVALID_ARGUMENT, "invalid argument"},
+    {RTC_ERROR_INVALID_OPERATION, "invalid operation"},
+    {RTC_ERROR_OUT_OF_MEMORY, "out of memory"},
+    {RTC_ERROR_UNSUPPORTED_CPU, "unsupported CPU"},
+    {RTC_ERROR_CANCELLED, "cancelled"},
+};
+constexpr NameTable kEmbreeErrors{kEmbreeErrorNames};
+
 std::string embreeErrorName(RTCError e) {
-    switch (e) {
-    case RTC_ERROR_NONE:
-        return "no error";
-    case RTC_ERROR_INVALID_ARGUMENT:
-        return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION:
-        return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY:
-        return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU:
-        return "unsupported CPU";
-    case RTC_ERROR_CANCELLED:
-        return "cancelled";
-    default:
-        return "unknown error";
-    }
+    return kEmbreeErrors.name(e, "unknown error");
 }
 
 std::string sceneLabel(const Scene& scene) {

@@ -3,9 +3,31 @@
 #include <cstdio>
 
 #include "core/Error.h"
+#include "core/NameTable.h"
 #include "gl/backends/EpoxyOsMesaBridge.h"
 
 namespace sb {
+
+namespace {
+constexpr Named<EGLint> kEglErrorNames[] = {
+    {EGL_SUCCESS, "EGL_SUCCESS"},
+    {EGL_NOT_INITIALIZED, "EGL_NOT_INITIALIZED"},
+    {EGL_BAD_ACCESS, "EGL_BAD_ACCESS"},
+    {EGL_BAD_ALLOC, "EGL_BAD_ALLOC"},
+    {EGL_BAD_ATTRIBUTE, "EGL_BAD_ATTRIBUTE"},
+    {EGL_BAD_CONFIG, "EGL_BAD_CONFIG"},
+    {EGL_BAD_CONTEXT, "EGL_BAD_CONTEXT"},
+    {EGL_BAD_CURRENT_SURFACE, "EGL_BAD_CURRENT_SURFACE"},
+    {EGL_BAD_DISPLAY, "EGL_BAD_DISPLAY"},
+    {EGL_BAD_MATCH, "EGL_BAD_MATCH"},
+    {EGL_BAD_NATIVE_PIXMAP, "EGL_BAD_NATIVE_PIXMAP"},
+    {EGL_BAD_NATIVE_WINDOW, "EGL_BAD_NATIVE_WINDOW"},
+    {EGL_BAD_PARAMETER, "EGL_BAD_PARAMETER"},
+    {EGL_BAD_SURFACE, "EGL_BAD_SURFACE"},
+    {EGL_CONTEXT_LOST, "EGL_CONTEXT_LOST"},
+};
+constexpr NameTable kEglErrors{kEglErrorNames};
+} // namespace
 
 EglContext::EglContext(EGLDisplay display, const ContextOptions& options, const std::string& what)
     : mDisplay(display), mWhat(what) {
@@ -77,43 +99,10 @@ void EglContext::fail(const std::string& reason) const {
 }
 
 std::string EglContext::eglErrorName(EGLint error) {
-    switch (error) {
-    case EGL_SUCCESS:
-        return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED:
-        return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS:
-        return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC:
-        return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE:
-        return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG:
-        return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT:
-        return "EGL_BAD_CONTEXT";
-    case EGL_BAD_CURRENT_SURFACE:
-        return "EGL_BAD_CURRENT_SURFACE";
-    case EGL_BAD_DISPLAY:
-        return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH:
-        return "EGL_BAD_MATCH";
-    case EGL_BAD_NATIVE_PIXMAP:
-        return "EGL_BAD_NATIVE_PIXMAP";
-    case EGL_BAD_NATIVE_WINDOW:
-        return "EGL_BAD_NATIVE_WINDOW";
-    case EGL_BAD_PARAMETER:
-        return "EGL_BAD_PARAMETER";
-    case EGL_BAD_SURFACE:
-        return "EGL_BAD_SURFACE";
-    case EGL_CONTEXT_LOST:
-        return "EGL_CONTEXT_LOST";
-    default: {
-        char text[32];
-        std::snprintf(text, sizeof text, "EGL error 0x%04x", static_cast<unsigned>(error));
-        return text;
-    }
-    }
+    if (const Named<EGLint>* e = kEglErrors.find(error)) return e->name;
+    char text[32];
+    std::snprintf(text, sizeof text, "EGL error 0x%04x", static_cast<unsigned>(error));
+    return text;
 }
 
 } // namespace sb
