@@ -6,7 +6,7 @@
 
 namespace sb {
 
-/// Exit codes of the bench binary (DESIGN.md section 9). Tests check them.
+/// Exit codes of the bench binary (docs/ARCHITECTURE.md, "Errors and exit codes"). Tests check them.
 enum class ExitCode : int {
     Ok = 0,
     Failure = 1,     ///< a run failed (GL error, I/O error while running)

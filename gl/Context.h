@@ -40,7 +40,8 @@ public:
     int glMajor = 0, glMinor = 0;
     bool compatibilityProfile = false;
     /// True for Mesa's software rasterisers (llvmpipe, softpipe, swrast): GL timer queries there do not
-    /// measure the frame (DESIGN.md section 6); TimerTrust checks this by measurement, not by name.
+    /// measure the frame (docs/ARCHITECTURE.md, "The timing contract"); TimerTrust checks this by
+    /// measurement, not by name.
     bool isSoftwareRenderer() const;
     bool hasExtension(const std::string& name) const;
 };

@@ -1,7 +1,7 @@
 #pragma once
-// The render targets of one frame (DESIGN.md section 4): colour (RGBA8, attachment 0), visibility
-// (RGBA16F, attachment 1: channel i = light i, 1 lit, 0 shadowed, fractions for soft shadows; float so
-// NaN/Inf survive for the numeric checks), depth-stencil (DEPTH24_STENCIL8: stencil for volumes).
+// The render targets of one frame (docs/ARCHITECTURE.md, "The technique contract"): colour (RGBA8, attachment
+// 0), visibility (RGBA16F, attachment 1: channel i = light i, 1 lit, 0 shadowed, fractions for soft shadows;
+// float so NaN/Inf survive for the numeric checks), depth-stencil (DEPTH24_STENCIL8: stencil for volumes).
 // Fragment shaders write `layout(location = 0) out vec4 oColor; layout(location = 1) out vec4 oVis;`.
 #include <vector>
 

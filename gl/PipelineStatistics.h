@@ -1,7 +1,7 @@
 #pragma once
-// Stage loads of one frame from GL_ARB_pipeline_statistics_query (core in GL 4.6): how many vertex
-// shader invocations, primitives and fragment shader invocations the GPU (or llvmpipe) actually
-// processed. The bottleneck study relates frame time to these loads (DESIGN.md section 6, issue 4).
+// Stage loads of one frame from GL_ARB_pipeline_statistics_query (core in GL 4.6): how many vertex shader
+// invocations, primitives and fragment shader invocations the GPU (or llvmpipe) actually processed. The
+// bottleneck study relates frame time to these loads (docs/ARCHITECTURE.md, "The timing contract").
 //
 // The queries are only ever wrapped around an UNTIMED census frame: a query is driver work, and the
 // harness must not distort the frames it measures. Results are read back with a blocking

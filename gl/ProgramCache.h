@@ -1,6 +1,6 @@
 #pragma once
-// Program cache keyed by (shader files, sorted defines) (DESIGN.md section 4, STYLE.md: named, listable
-// permutations). Shader files are GLSL without a #version line; the cache prepends
+// Program cache keyed by (shader files, sorted defines) (docs/ARCHITECTURE.md, "The technique contract":
+// named, listable permutations). Shader files are GLSL without a #version line; the cache prepends
 // "#version 450 compatibility", then one "#define NAME VALUE" per define (sorted), then the file with
 // `#include "common/x.glsl"` lines expanded (relative to shaders/). Compile errors throw sb::Error
 // naming the shader file and the line in that file (the #line bookkeeping maps back through includes).

@@ -1,8 +1,8 @@
 #pragma once
 // Per-pass GPU timing from a ring of GL_TIMESTAMP queries read back frames later, never stalling
-// (DESIGN.md section 6). Each frame: beginFrame(), then mark(passName) at each pass boundary, then
-// endFrame(). Results of frame f become available from frame f + latency on; a frame whose queries
-// are not yet available when its slot is reused is counted as dropped rather than waited for.
+// (docs/ARCHITECTURE.md, "The timing contract"). Each frame: beginFrame(), then mark(passName) at each pass
+// boundary, then endFrame(). Results of frame f become available from frame f + latency on; a frame whose
+// queries are not yet available when its slot is reused is counted as dropped rather than waited for.
 #include <cstdint>
 #include <optional>
 #include <string>

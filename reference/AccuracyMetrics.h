@@ -1,5 +1,5 @@
 #pragma once
-// Accuracy of a technique's visibility against the reference's (issue 3), over the samples that show
+// Accuracy of a technique's visibility against the reference's, over the samples that show
 // geometry facing the light (geometric n.L > 0.05): the evaluation mask.
 //   hard: false-shadow rate (reference lit, technique shadowed), false-light rate (the reverse), their
 //         sum, each in percent of evaluated samples; the same with samples within 1 px of a reference

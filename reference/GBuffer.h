@@ -1,5 +1,5 @@
 #pragma once
-// The sample positions every accuracy judgement is made at (issue 3): rendered by the harness
+// The sample positions every accuracy judgement is made at: rendered by the harness
 // (GBufferRenderer) with the same camera and submitter as the technique, so reference and technique
 // are compared at exactly the same points. Rows are bottom-up, as GL reads them.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Points and directions on a light's emitter for the reference's soft shadows (issue 3), from a
+// Points and directions on a light's emitter for the reference's soft shadows, from a
 // stratified, jittered sqrt(N) x sqrt(N) grid over [0,1)^2 mapped onto the emitter by an
 // area-preserving (rect, disk) or solid-angle-preserving (sphere, directional disk) map, so the
 // strata stay equal-measure pieces of the emitter.

@@ -1,6 +1,6 @@
 #pragma once
 // `reference`: exact visibility by ray tracing (Intel Embree), the ground truth every other technique
-// is judged against (issue 3). Pass "gbuffer" renders world positions, object and primitive ids with
+// is judged against. Pass "gbuffer" renders world positions, object and primitive ids with
 // the run's submitter and camera (GBufferRenderer); pass "trace" casts, for every covered pixel and
 // every light, occlusion rays (one towards a point light, a stratified set over an area light) on a
 // thread pool (ReferenceTracer) and uploads the result as a texture; pass "shade" re-rasterises the

@@ -1,5 +1,5 @@
 #pragma once
-// Exact visibility by ray casting (issue 3): for every covered G-buffer sample and one light, the
+// Exact visibility by ray casting: for every covered G-buffer sample and one light, the
 // fraction of the light that the sample sees.
 //   hard (Light::shape == Point, or forced): one occlusion ray per sample towards the light: 1 lit,
 //       0 shadowed;

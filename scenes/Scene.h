@@ -1,6 +1,6 @@
 #pragma once
-// The scene model (DESIGN.md section 8): meshes, instances, lights, named cameras and the effects the
-// scene asks for. Built by SceneLoader from a JSON file; techniques only read it.
+// The scene model (docs/ARCHITECTURE.md, "Scenes"): meshes, instances, lights, named cameras and the effects
+// the scene asks for. Built by SceneLoader from a JSON file; techniques only read it.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -13,7 +13,8 @@
 
 namespace sb {
 
-/// Effects a scene can ask for and a technique can produce (DESIGN.md section 4). Bit flags.
+/// Effects a scene can ask for and a technique can produce (docs/ARCHITECTURE.md, "The technique contract").
+/// Bit flags.
 enum class Effect : uint32_t {
     None = 0,
     HardShadows = 1u << 0,

@@ -1,5 +1,5 @@
 #pragma once
-// Reads a scene JSON file (DESIGN.md section 8) into a Scene, applying SceneOptions.
+// Reads a scene JSON file (docs/ARCHITECTURE.md, "Scenes") into a Scene, applying SceneOptions.
 //
 // File format (all keys optional unless marked):
 // {

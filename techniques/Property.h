@@ -1,8 +1,8 @@
 #pragma once
-// Typed technique knobs (DESIGN.md section 4, STYLE.md "properties round-trip"): a technique declares
-// each knob with type, default and range; PropertySet holds the values, validates every set, and prints
-// a canonical "name=value:name=value" string that parses back to the same values, so every CSV row can
-// be re-run exactly with `-t technique:<that string>`.
+// Typed technique knobs (docs/ARCHITECTURE.md, "The technique contract"): a technique declares each knob with
+// type, default and range; PropertySet holds the values, validates every set, and prints a canonical
+// "name=value:name=value" string that parses back to the same values, so every CSV row can be re-run exactly
+// with `-t technique:<that string>`.
 #include <string>
 #include <vector>
 

@@ -1,9 +1,9 @@
 #pragma once
-// The technique interface (DESIGN.md section 4). A technique declares, before it does anything, its
-// name, effects, the GL capabilities it needs, its passes and its properties (TechniqueInfo); then the
-// harness calls setScene (untimed precompute), compile (programs for the current properties, scene
-// effects and submission mode) and execute once per measured frame. Every technique writes, besides
-// colour, the visibility target (FrameTargets attachment 1: channel i = light i, 1 lit, 0 shadowed).
+// The technique interface (docs/ARCHITECTURE.md, "The technique contract"). A technique declares, before it
+// does anything, its name, effects, the GL capabilities it needs, its passes and its properties
+// (TechniqueInfo); then the harness calls setScene (untimed precompute), compile (programs for the current
+// properties, scene effects and submission mode) and execute once per measured frame. Every technique writes,
+// besides colour, the visibility target (FrameTargets attachment 1: channel i = light i, 1 lit, 0 shadowed).
 #include <cstdint>
 #include <memory>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// The registry: one explicit table of every technique (DESIGN.md section 4). Adding a technique is one
-// line in TechniqueRegistry.cpp.
+// The registry: one explicit table of every technique (docs/ARCHITECTURE.md, "The technique contract").
+// Adding a technique is one line in TechniqueRegistry.cpp.
 #include <functional>
 #include <memory>
 #include <string>

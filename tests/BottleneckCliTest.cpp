@@ -1,4 +1,4 @@
-// `bench bottleneck` end to end (issue 4): the classifier must name the bottleneck of workloads whose
+// `bench bottleneck` end to end: the classifier must name the bottleneck of workloads whose
 // bottleneck is known by construction (the independent answer), on whatever GL the test runs on:
 //   fill:   a full-screen pass of 100 arithmetic steps per pixel, no geometry;
 //   vertex: a million tiny triangles (synthetic_triangles: 256 spheres x 4032 triangles, a few pixels each);

@@ -103,7 +103,8 @@ TEST(Cli, TimerVerdictIsMeasuredAndUntrustedNumbersAreHidden) {
     ASSERT_TRUE(verdict == "trusted" || verdict == "untrusted") << verdict;
     EXPECT_FALSE(cell("timer_reason").empty());
     if (cell("renderer").find("llvmpipe") != std::string::npos) {
-        // DESIGN.md section 6: measured on Mesa 22.3 llvmpipe, TIME_ELAPSED does not follow the fill work.
+        // docs/ARCHITECTURE.md, "The timing contract": measured on Mesa 22.3 llvmpipe, TIME_ELAPSED does not
+        // follow the fill work.
         EXPECT_EQ(verdict, "untrusted") << cell("timer_reason");
     }
     if (verdict == "untrusted") {

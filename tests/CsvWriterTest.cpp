@@ -1,6 +1,6 @@
-// Atomic CSV appends (DESIGN.md section 7): nothing lost, header union, RFC 4180 quoting, failures that
-// leave the existing file byte-identical and no temporary files behind. Every expected file content is
-// written out by hand; comparisons are exact (text, no tolerance).
+// Atomic CSV appends (docs/ARCHITECTURE.md, "Results"): nothing lost, header union, RFC 4180 quoting,
+// failures that leave the existing file byte-identical and no temporary files behind. Every expected file
+// content is written out by hand; comparisons are exact (text, no tolerance).
 #include <cerrno>
 #include <cstdio>
 #include <fcntl.h>

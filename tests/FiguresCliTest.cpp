@@ -1,4 +1,4 @@
-// `bench figures --reduced` end to end (issue 4): every declared figure's small variant is measured,
+// `bench figures --reduced` end to end: every declared figure's small variant is measured,
 // classified where it is a bottleneck figure, plotted by tools/plot.py and summarised, so the path from
 // declaration to PNG never rots. The checks are structural (the files exist and are what they claim to
 // be, the rows are the plan's); the numbers are the other tests' business.

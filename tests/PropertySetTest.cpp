@@ -1,6 +1,6 @@
-// Technique properties (DESIGN.md section 4): typed parsing, ranges, canonical round trip, and error
-// messages that name the owner, the knob, the value and the range. Values are compared exactly: the
-// round trip promises bit-identical doubles, so no tolerance is allowed.
+// Technique properties (docs/ARCHITECTURE.md, "The technique contract"): typed parsing, ranges, canonical
+// round trip, and error messages that name the owner, the knob, the value and the range. Values are compared
+// exactly: the round trip promises bit-identical doubles, so no tolerance is allowed.
 #include <cmath>
 #include <cstring>
 #include <limits>

@@ -1,4 +1,4 @@
-// The exact ray-traced reference (issue 3) against closed forms, on G-buffers built on the CPU (no GL).
+// The exact ray-traced reference against closed forms, on G-buffers built on the CPU (no GL).
 #include <gtest/gtest.h>
 
 #include <chrono>

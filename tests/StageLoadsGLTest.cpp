@@ -1,4 +1,4 @@
-// The census frame's loads (issue 4), which the bottleneck study fits frame time against, checked
+// The census frame's loads, which the bottleneck study fits frame time against, checked
 // against counts made by hand from the scene: GL calls per submission mode (from the meshes' index
 // counts), primitives submitted (the scene's triangles, exact by the GL spec's definition), vertex
 // shader invocations (between the unique vertices and three per triangle: the spec lets an

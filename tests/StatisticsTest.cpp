@@ -1,4 +1,4 @@
-// Statistics against hand-computed values (DESIGN.md section 6).
+// Statistics against hand-computed values (docs/ARCHITECTURE.md, "The timing contract").
 // Tolerance kEps = 1e-12 absolute: every expected value is O(1..100) and comes from a few additions, one
 // multiplication by an inexact fraction (0.05 * 9 = 0.45 is not exact in binary) or one square root, so
 // the computed value can differ only in the last bits (~1e-14). A wrong rank or a wrong interpolation

@@ -1,5 +1,5 @@
-// Every submission mode must produce the same image (DESIGN.md section 5): the modes differ only in
-// how the same vertices and per-instance values reach the same program. Reference: retained.
+// Every submission mode must produce the same image (docs/ARCHITECTURE.md, "Submission"): the modes differ
+// only in how the same vertices and per-instance values reach the same program. Reference: retained.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>

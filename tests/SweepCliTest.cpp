@@ -1,4 +1,4 @@
-// `bench sweep`, `bench merge`, `bench export` and --format end to end (issue 4): the product of the
+// `bench sweep`, `bench merge`, `bench export` and --format end to end: the product of the
 // axes, rows as they finish, ratios within a round, failures recorded while the sweep goes on (an
 // unsupported light, a GL error, a crashed worker), Ctrl-C and --resume without repeated or lost rows,
 // shards run with GNU parallel and merged back into the unsharded sweep. Answers are counted by hand

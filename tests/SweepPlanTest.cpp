@@ -1,4 +1,4 @@
-// The sweep's plan without running it (issue 4): which configurations a definition expands to, in
+// The sweep's plan without running it: which configurations a definition expands to, in
 // which order, how shards split them, and what changes a sweep's identity. Expected values are
 // counted by hand from the axes.
 #include <filesystem>

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots regenerated from result CSVs only (DESIGN.md section 7). Run with Debian's python3
+"""Plots regenerated from result CSVs only (docs/ARCHITECTURE.md, "Results"). Run with Debian's python3
 (/usr/bin/python3, python3-matplotlib, python3-pandas):
 
   /usr/bin/python3 tools/plot.py pareto results/accuracy/aircraft.csv --out results/accuracy/pareto

@@ -1,5 +1,5 @@
 #pragma once
-// `bench bottleneck` (issue 4): runs the perturbation set of BottleneckStudy.h for every technique and
+// `bench bottleneck`: runs the perturbation set of BottleneckStudy.h for every technique and
 // base setting, classifies each as CPU-, vertex- or fill-limited, prints the table with its evidence
 // and writes it as CSV next to the measurement rows. `--from FILE.csv` classifies rows measured before.
 namespace sb {

@@ -1,5 +1,5 @@
 #pragma once
-// `bench bottleneck` (issue 4): the CPU / vertex / fill study of Coleman's thesis, section 6.2, run
+// `bench bottleneck`: the CPU / vertex / fill study of Coleman's thesis, section 6.2, run
 // automatically on any GL implementation. For every base combination of the axes (usually one scene at
 // one setting) and every technique, the perturbation set (BottleneckClassifier.h lists what each one
 // moves):

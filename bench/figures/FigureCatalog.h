@@ -1,7 +1,7 @@
 #pragma once
-// The reproduced figures (issue 4), each declared once in results/figures/figures.json: the sweep
+// The reproduced figures, each declared once in results/figures/figures.json: the sweep
 // behind it, how to plot it, and the claim of the source document it tests. `bench figures` reruns
-// the sweeps and replots; a technique issue adds its figure by adding a declaration.
+// the sweeps and replots; a new technique adds its figure by adding a declaration.
 //
 //   [ { "name": "instances_aircraft",                 (folder under results/figures/, unique)
 //       "title": "Draw time against instances, aircraft",

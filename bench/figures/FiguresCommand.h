@@ -1,5 +1,5 @@
 #pragma once
-// `bench figures` (issue 4): reruns the sweep behind every declared figure (FigureCatalog.h) and
+// `bench figures`: reruns the sweep behind every declared figure (FigureCatalog.h) and
 // replots it from the CSV: OUT/<name>/data.csv (the rows), classes.csv (bottleneck figures),
 // figure.png and figure.svg (tools/plot.py), summary.md (claim, seed, the rows as a table).
 // --reduced runs each figure's small variant (the CI keeps the plotting path alive with it).

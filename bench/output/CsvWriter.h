@@ -1,10 +1,10 @@
 #pragma once
-// Result CSV files (DESIGN.md section 7): one row per measured configuration, header of column names.
-// Appending is atomic and loses nothing: the existing file is read, the new rows appended (the header
+// Result CSV files (docs/ARCHITECTURE.md, "Results"): one row per measured configuration, header of column
+// names. Appending is atomic and loses nothing: the existing file is read, the new rows appended (the header
 // becomes the union of old and new columns, in first-seen order; cells of missing columns stay empty),
-// everything is written to "<file>.tmp.<pid>" in the same directory, flushed and fsync'ed, then
-// rename()d over the original. A crash at any point leaves either the old or the new file, never a
-// truncated one. Quoting follows RFC 4180 (fields with , " CR LF are quoted, quotes doubled).
+// everything is written to "<file>.tmp.<pid>" in the same directory, flushed and fsync'ed, then rename()d
+// over the original. A crash at any point leaves either the old or the new file, never a truncated one.
+// Quoting follows RFC 4180 (fields with , " CR LF are quoted, quotes doubled).
 #include <map>
 #include <string>
 #include <utility>

@@ -1,5 +1,5 @@
 #pragma once
-// `bench accuracy` (issue 3): judges a technique's visibility target against the exact reference at
+// `bench accuracy`: judges a technique's visibility target against the exact reference at
 // the same sample positions, and measures how stable it is.
 //
 // For light `light` of the scene:

@@ -1,5 +1,5 @@
 #pragma once
-// Facts about the machine and build recorded in every CSV row (DESIGN.md section 7).
+// Facts about the machine and build recorded in every CSV row (docs/ARCHITECTURE.md, "Results").
 #include <string>
 
 namespace sb {

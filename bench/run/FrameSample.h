@@ -5,9 +5,9 @@
 
 namespace sb {
 
-/// One measured frame (DESIGN.md section 6). CPU submit: first to last GL call of the frame (on
-/// llvmpipe this includes vertex shading and binning, which run inside the draw calls). Wall: submit
-/// plus the glFinish wait (rasterisation and fragment shading on llvmpipe's threads).
+/// One measured frame (docs/ARCHITECTURE.md, "The timing contract"). CPU submit: first to last GL call of the
+/// frame (on llvmpipe this includes vertex shading and binning, which run inside the draw calls). Wall:
+/// submit plus the glFinish wait (rasterisation and fragment shading on llvmpipe's threads).
 struct FrameSample {
     double cpuSubmitMs = 0.0;
     double wallMs = 0.0;

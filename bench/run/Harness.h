@@ -1,6 +1,7 @@
 #pragma once
-// The run loop (DESIGN.md sections 3 and 6): one GL context, one scene, one set of frame targets and
-// one submitter, shared by every technique of a run so that they are measured on identical state.
+// The run loop (docs/ARCHITECTURE.md, "Data flow" and "The timing contract"): one GL context, one scene, one
+// set of frame targets and one submitter, shared by every technique of a run so that they are measured on
+// identical state.
 //
 // Per frame, in this order:
 //   t0  upload the frame uniforms, begin the timer-query frame, bind and clear the targets

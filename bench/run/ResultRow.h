@@ -1,8 +1,8 @@
 #pragma once
-// Builds the CSV row of one measured configuration (DESIGN.md section 7; README "CSV columns" lists
-// every column). GPU times appear only when the timer verdict is "trusted"; otherwise those cells stay
-// empty and timer_verdict/timer_reason say why (DESIGN.md section 6: never present untrusted numbers as
-// GPU time).
+// Builds the CSV row of one measured configuration (docs/ARCHITECTURE.md, "Results"; README "CSV columns"
+// lists every column). GPU times appear only when the timer verdict is "trusted"; otherwise those cells stay
+// empty and timer_verdict/timer_reason say why (docs/ARCHITECTURE.md, "The timing contract": never present
+// untrusted numbers as GPU time).
 #include "bench/output/CsvWriter.h"
 #include "bench/run/Environment.h"
 #include "bench/run/Harness.h"

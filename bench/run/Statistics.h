@@ -1,6 +1,6 @@
 #pragma once
-// Summary statistics of per-frame samples (DESIGN.md section 6): median, p5, p95, p99, mean, stddev
-// (sample, n-1), MAD (median absolute deviation from the median, unscaled) and n.
+// Summary statistics of per-frame samples (docs/ARCHITECTURE.md, "The timing contract"): median, p5, p95,
+// p99, mean, stddev (sample, n-1), MAD (median absolute deviation from the median, unscaled) and n.
 // Percentiles use linear interpolation between closest ranks (R type 7 / numpy default), so
 // percentile(0.5) of an even count is the mean of the two middle values.
 #include <cstddef>

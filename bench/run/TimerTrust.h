@@ -1,9 +1,9 @@
 #pragma once
-// Can GL timer queries be trusted on this context (DESIGN.md section 6)? Measured, not assumed from the
-// renderer's name: the same fill-bound workload (a full-screen quad with a long fragment loop) runs at
-// two resolutions, 4x the pixels apart. Where the GPU timer measures the frame, its ratio follows the
-// wall-clock ratio and it covers most of the wall time. On Mesa llvmpipe TIME_ELAPSED covers roughly
-// one tile's work: it neither grows with the pixel count nor covers the frame, so the verdict is
+// Can GL timer queries be trusted on this context (docs/ARCHITECTURE.md, "The timing contract")? Measured,
+// not assumed from the renderer's name: the same fill-bound workload (a full-screen quad with a long fragment
+// loop) runs at two resolutions, 4x the pixels apart. Where the GPU timer measures the frame, its ratio
+// follows the wall-clock ratio and it covers most of the wall time. On Mesa llvmpipe TIME_ELAPSED covers
+// roughly one tile's work: it neither grows with the pixel count nor covers the frame, so the verdict is
 // "untrusted" and the harness never reports those numbers as GPU time.
 #include <string>
 

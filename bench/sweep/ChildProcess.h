@@ -1,5 +1,5 @@
 #pragma once
-// Runs one worker process of a sweep (issue 4) and reports how it ended. A worker per group isolates
+// Runs one worker process of a sweep and reports how it ended. A worker per group isolates
 // what a configuration can do to the ones after it: a crash (SIGSEGV in a driver), a GL error that
 // leaves the context in an unknown state, leaked GL objects, an environment variable such as
 // LP_NO_RAST=1 that must apply to one configuration only.

@@ -1,5 +1,5 @@
 #pragma once
-// `bench sweep [FILE.json] [axes] --csv OUT` (issue 4): a cartesian product of techniques, scenes,
+// `bench sweep [FILE.json] [axes] --csv OUT`: a cartesian product of techniques, scenes,
 // instances, scale, tessellation, submission, camera, resolution and light type, each combination in
 // its own worker process, rows appended as they finish. Axes come from a definition file
 // (SweepDefinition.h documents the format) and/or the command line as comma lists; options named on

@@ -1,5 +1,5 @@
 #pragma once
-// The axes of `bench sweep` (issue 4), from a JSON file, the command line, or both (the command line
+// The axes of `bench sweep`, from a JSON file, the command line, or both (the command line
 // replaces the file's value of an axis it names). Every axis is a list; the sweep is their cartesian
 // product, with the techniques (and their property lists) measured inside each combination:
 //

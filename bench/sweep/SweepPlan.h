@@ -1,5 +1,5 @@
 #pragma once
-// What a sweep runs (issue 4), fully expanded: an ordered list of groups, each one harness setting (one
+// What a sweep runs, fully expanded: an ordered list of groups, each one harness setting (one
 // worker process, one GL context, one scene) and the rows measured in it. A row is one configuration:
 // one technique spec in one round; its config_index is its position in the complete sweep and is what
 // --resume, --shard and `bench merge` key on.

@@ -1,5 +1,5 @@
 #pragma once
-// Runs a SweepPlan (issue 4): a worker process per group (ChildProcess, SweepWorker), rows appended to
+// Runs a SweepPlan: a worker process per group (ChildProcess, SweepWorker), rows appended to
 // one CSV as they finish, a progress bar, and the guarantees a long sweep on a shared machine needs:
 //  - --resume: rows already in the CSV for this sweep (same sweep_id) are not run again; an interrupted
 //    sweep (Ctrl-C, kill, a crash) continues where it stopped and loses nothing it had written;

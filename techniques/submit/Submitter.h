@@ -1,7 +1,7 @@
 #pragma once
-// Submission is orthogonal to technique (DESIGN.md section 5): techniques never loop over scene draws,
-// they ask a Submitter to draw a set of instances with the program they have bound. The four modes are
-// the four ways an application of each era fed geometry to GL, so the CPU cost of submission can be
+// Submission is orthogonal to technique (docs/ARCHITECTURE.md, "Submission"): techniques never loop over
+// scene draws, they ask a Submitter to draw a set of instances with the program they have bound. The four
+// modes are the four ways an application of each era fed geometry to GL, so the CPU cost of submission can be
 // varied without touching the technique:
 //   immediate   glBegin/glEnd with generic attributes, per-instance uniforms (the thesis's CPU-bound case)
 //   displaylist one display list per mesh, compiled at upload (the thesis's retained path)

@@ -4,7 +4,7 @@
 namespace sb {
 
 /// `synthetic`: not a shadow technique but a workload whose bottleneck is known by construction, to
-/// validate `bench bottleneck` on any GL implementation (issue 4) and to calibrate one's reading of it:
+/// validate `bench bottleneck` on any GL implementation and to calibrate one's reading of it:
 ///   fill-bound:   fragment_iterations=N (a full-screen pass with N arithmetic steps per pixel),
 ///                 draw_scene=false;
 ///   vertex-bound: the scene's triangles (many, tiny) with a minimal pipeline, vertex_iterations=N;

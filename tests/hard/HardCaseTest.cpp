@@ -1,6 +1,6 @@
-// The hard-case table (issue 3): scenes and viewpoints where shadow techniques are known to break,
+// The hard-case table: scenes and viewpoints where shadow techniques are known to break,
 // each judged against the exact Embree reference at the same pixels with bounds that must hold.
-// Every technique issue adds its rows here. Bounds are the measured values on Mesa llvmpipe with
+// Every technique adds its rows here. Bounds are the measured values on Mesa llvmpipe with
 // headroom, and each says why that number; NaN/Inf/out-of-range counts must be zero everywhere.
 #include <iostream>
 #include <string>
@@ -72,8 +72,8 @@ const HardCase kCases[] = {
      "light matrices would fix it), bounded here so it cannot get worse unnoticed"},
     {"shadowmap_degenerate_triangle", "degenerate_triangle", "top", "shadowmap", 384, 0.05, 0.01, 3, 4, 3,
      "(0.003%; 1.0/1.5/1.0): a zero-area triangle covers no pixel in map or reference: no effect, no NaN"},
-    // Shadow volumes (issue 5). Exact up to rasterisation, so the bounds are the edge band's few pixels
-    // (sample positions on either side of an exact edge) with headroom; the negative controls show the
+    // Shadow volumes (GPU Gems ch. 9). Exact up to rasterisation, so the bounds are the edge band's few
+    // pixels (sample positions on either side of an exact edge) with headroom; the negative controls show the
     // failure the chapter describes and the harness must see it.
     {"volume_camera_inside_zfail", "volume_camera_inside", "inside", "volume:mode=zfail", 384, 0.05, 0.01, 5,
      5, 5, "the eye inside the sphere's volume: z-fail counts behind the visible point, unaffected"},
@@ -129,9 +129,9 @@ const HardCase kCases[] = {
      "known limit: an 8-bit stencil wraps, so ground under exactly 256 volumes counts 0 and comes out lit "
      "(6.4% of judged pixels at 256^2); bounded above so it cannot spread, and below so it is seen",
      0.05f, 1.0},
-    // Occluder textures (issue 6): one aircraft with its built-in planes (the thesis's three), no ground,
-    // 384x384, measured 2026-11-23 in parentheses (wrong %, off the edge band). The technique misses the
-    // shadows its planes cannot represent (the fuselage's on the wings, the wings' upper surfaces' on
+    // Occluder textures (Coleman's thesis): one aircraft with its built-in planes (the thesis's three), no
+    // ground, 384x384, measured 2026-11-23 in parentheses (wrong %, off the edge band). The technique misses
+    // the shadows its planes cannot represent (the fuselage's on the wings, the wings' upper surfaces' on
     // anything): that error is the thesis's "missing shadows" and is bounded, not hidden.
     {"occluder_parallel_1em3", "occluder_parallel_1e-3", "mid", "occluder", 384, 7.5, 5.0, 3, 10, 3,
      "(5.47%, 3.54%; no planes 5.51%) light 1e-3 rad above the wings' plane: s_I ~ 1e3, finite; the grazing "
@@ -176,11 +176,11 @@ const HardCase kCases[] = {
      "(3.98%, 2.27%; 1.14% / 0.67% at the origin) at (1e5, 0, 1e5) the rasterised positions snap to 7.8 mm "
      "while the planes' coordinates stay exact in object space, so shadow edges and pixels disagree by ~1 "
      "px"},
-    // ShadowProxies (issue 7). Proxies approximate soft shadows: against the hard reference they miss
-    // shadow cast far along the light and add halo where none is, so the bounds are the measured,
-    // deterministic errors with ~25% headroom (they are what the technique is, not noise); the rows
-    // exist for the sanity counts (no NaN at ProxyOffset 0, up close, with 300+ proxies) and to pin
-    // the errors so a change that moves them is seen.
+    // ShadowProxies (van der Spek, OpenGL Insights). Proxies approximate soft shadows: against the hard
+    // reference they miss shadow cast far along the light and add halo where none is, so the bounds are the
+    // measured, deterministic errors with ~25% headroom (they are what the technique is, not noise); the rows
+    // exist for the sanity counts (no NaN at ProxyOffset 0, up close, with 300+ proxies) and to pin the
+    // errors so a change that moves them is seen.
     {"proxy_ball", "proxy_ball", "top", "proxy", 384, 1.2, 1.0, 3, 3, 3,
      "(0.925%, 0.799% off edge; 0/0/0): the ball's halo under it stays above v = 0.5 (d = 0.5 of offset "
      "1), so hard-wise the shadow the reference casts along the light is missed: the same as `none`"},
@@ -210,12 +210,12 @@ const HardCase kCases[] = {
     {"proxy_degenerate_sizes", "proxy_degenerate", "top", "proxy", 384, 0.9, 0.6, 3, 3, 3,
      "(0.605%, 0.351%; none 0.527%): a zero-radius sphere, a zero-height box and a zero-radius cylinder "
      "become a point, a square and a segment (frames made invertible): no NaN, halos around each"},
-    // The ad-hoc family (issue 8): planar, projective and blob shadows, measured 2026-11-23 on llvmpipe
-    // (wrong %, off the edge band; camera gain / light gain / flicker). None of them shadows a caster
-    // (no self-shadowing), so the caster's self- and mutual shadows are error they are expected to
-    // make: bounded with ~25% headroom (deterministic), not hidden. The guards=false rows are the
-    // slides' naive per-vertex projection; where its wrong shadow lands on judged pixels they are
-    // negative controls the harness must see.
+    // The ad-hoc family (Crawfis's slides): planar, projective and blob shadows, measured 2026-11-23 on
+    // llvmpipe (wrong %, off the edge band; camera gain / light gain / flicker). None of them shadows a
+    // caster (no self-shadowing), so the caster's self- and mutual shadows are error they are expected to
+    // make: bounded with ~25% headroom (deterministic), not hidden. The guards=false rows are the slides'
+    // naive per-vertex projection; where its wrong shadow lands on judged pixels they are negative controls
+    // the harness must see.
     {"adhoc_planar_baseline", "baseline", "top", "planar", 384, 0.01, 0.01, 3, 3, 3,
      "(0% wrong; 1/1/1): the ball's exact flattened silhouette on the ground is the reference's shadow pixel "
      "for pixel"},
