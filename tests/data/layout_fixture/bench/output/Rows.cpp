@@ -1,0 +1,2 @@
+#include "core/Base.h"
+#include "bench/run/Harness.h"

@@ -1,0 +1,3 @@
+#pragma once
+#include "bench/output/Rows.h"
+#include "gl/backends/Egl.h"

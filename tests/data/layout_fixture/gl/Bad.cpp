@@ -1,0 +1,2 @@
+#include "gl/Context.h"
+#include "scenes/Scene.h"

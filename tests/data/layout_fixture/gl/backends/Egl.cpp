@@ -1,0 +1,2 @@
+#include "gl/Context.h"
+#include "core/Base.h"

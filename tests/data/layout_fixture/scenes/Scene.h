@@ -1,0 +1,3 @@
+#pragma once
+#include "core/Base.h"
+#include "gl/Context.h"

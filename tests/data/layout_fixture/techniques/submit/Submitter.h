@@ -1,0 +1,3 @@
+#pragma once
+#include "gl/Context.h"
+#include "scenes/Scene.h"
