@@ -1,4 +1,6 @@
 #pragma once
+// `none`, the smallest technique and the template for a new one (docs/ARCHITECTURE.md, "Extending"):
+// one pass through the shared shaders, no properties, the counters every technique reports.
 #include "techniques/Technique.h"
 
 namespace sb {
