@@ -1,4 +1,4 @@
-// handloop: measures the harness's own overhead (README "Performance"). In one process and on one
+// handloop: measures the harness's own overhead (README "Harness overhead"). In one process and on one
 // context it alternates, frame by frame (and which goes first), between
 //   (a) a minimal hand-written GL loop: bind FBO, clear, update the frame UBO, one program, per
 //       instance two glUniform calls and one glDrawElements, glFinish; and

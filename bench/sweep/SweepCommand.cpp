@@ -44,7 +44,7 @@ int SweepCommand::main(int argc, char** argv) {
     app.footer(kFooter);
     app.get_formatter()->column_width(34);
     SweepCli cli;
-    app.add_option("file", cli.file, "sweep definition (JSON; see README 'Sweeps')");
+    app.add_option("file", cli.file, "sweep definition (JSON; see README 'Sweep configurations')");
     app.add_option("--csv", cli.csv, "rows go here, appended as they finish (required unless --dry-run)");
     cli.axes.add(app);
     app.add_option("--mode", cli.mode, "measure (default) or accuracy (judge against the reference too)");
