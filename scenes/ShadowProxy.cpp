@@ -11,6 +11,14 @@
 namespace sb {
 
 namespace {
+
+constexpr Named<ShadowProxy::Shape> kShapeNames[] = {
+    {ShadowProxy::Shape::Sphere, "sphere"},
+    {ShadowProxy::Shape::Box, "box"},
+    {ShadowProxy::Shape::Cylinder, "cylinder"},
+};
+constexpr NameTable kShapes{kShapeNames};
+
 /// Listing 1.1 in the proxy's local frame.
 glm::vec3 localClosest(ShadowProxy::Shape shape, const glm::vec3& local) {
     const glm::vec3 sgn(local.x < 0.0f ? -1.0f : 1.0f, local.y < 0.0f ? -1.0f : 1.0f,
@@ -84,15 +92,6 @@ float ShadowProxy::volume() const {
     }
     return 0.0f;
 }
-
-namespace {
-constexpr Named<ShadowProxy::Shape> kShapeNames[] = {
-    {ShadowProxy::Shape::Sphere, "sphere"},
-    {ShadowProxy::Shape::Box, "box"},
-    {ShadowProxy::Shape::Cylinder, "cylinder"},
-};
-constexpr NameTable kShapes{kShapeNames};
-} // namespace
 
 const NameTable<Named<ShadowProxy::Shape>>& ShadowProxy::shapeNames() {
     return kShapes;
