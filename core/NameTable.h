@@ -14,6 +14,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace sb {
 
@@ -68,24 +70,23 @@ public:
     /// The canonical names for prose, the last joined by `last`: "immediate, displaylist, retained or
     /// instanced".
     std::string choices(std::string_view last = " or ") const {
+        return labelledChoices([](const Entry& e) { return std::optional<std::string>(e.name); }, last);
+    }
+    /// The same prose list of labels `label(entry)` gives for the canonical entries, leaving out those
+    /// it answers std::nullopt for: "console (tables), csv, json or md".
+    template <typename Label>
+    std::string labelledChoices(Label label, std::string_view last = " or ") const {
+        std::vector<std::string> labels;
+        for (const Entry& e : mEntries)
+            if (find(e.value) == &e) // aliases stay unlisted
+                if (std::optional<std::string> text = label(e)) labels.push_back(std::move(*text));
         std::string out;
-        size_t count = 0, total = canonicalCount();
-        for (const Entry& e : mEntries) {
-            if (find(e.value) != &e) continue; // an alias
-            if (count > 0) out += (count + 1 == total) ? last : std::string_view(", ");
-            out += e.name;
-            ++count;
-        }
+        for (size_t i = 0; i < labels.size(); ++i)
+            out += std::string(i == 0 ? "" : i + 1 == labels.size() ? last : ", ") + labels[i];
         return out;
     }
 
 private:
-    size_t canonicalCount() const {
-        size_t n = 0;
-        for (const Entry& e : mEntries) n += find(e.value) == &e ? 1 : 0;
-        return n;
-    }
-
     std::span<const Entry> mEntries;
 };
 

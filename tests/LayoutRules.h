@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -284,21 +283,6 @@ inline std::vector<Violation> check(const fs::path& root, const std::vector<std:
         detail::checkOutsideReferences(file, lines, out);
     }
     return out;
-}
-
-/// Include lines between layers, for the note and docs: "from -> to" -> count (own folder included).
-inline std::map<std::string, int> includeCounts(const fs::path& root) {
-    static const std::regex quoted(R"(^\s*#\s*include\s+"([^"]+/[^"]+)\")");
-    std::map<std::string, int> counts;
-    for (const std::string& file : detail::listFiles(root, {})) {
-        if (!detail::isCpp(file) || detail::startsWith(file, "tests/")) continue;
-        for (const std::string& line : detail::readLines(root / file)) {
-            std::smatch m;
-            if (std::regex_search(line, m, quoted))
-                ++counts[detail::folderOf(file) + " -> " + detail::folderOf(m[1].str())];
-        }
-    }
-    return counts;
 }
 
 } // namespace sb::layout

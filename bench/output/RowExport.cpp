@@ -214,15 +214,10 @@ RowFormat parseRowFormat(const std::string& name) {
 }
 
 std::string rowFormatChoices(bool textOnly) {
-    std::vector<std::string> names;
-    for (const RowFormatEntry& e : kFormats.entries()) {
-        if (kFormats.find(e.value) != &e || (textOnly && !e.text)) continue; // aliases stay unlisted
-        names.push_back(std::string(e.name) + (*e.note ? std::string(" (") + e.note + ")" : ""));
-    }
-    std::string out;
-    for (size_t i = 0; i < names.size(); ++i)
-        out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-    return out;
+    return kFormats.labelledChoices([&](const RowFormatEntry& e) -> std::optional<std::string> {
+        if (textOnly && !e.text) return std::nullopt;
+        return std::string(e.name) + (*e.note ? std::string(" (") + e.note + ")" : "");
+    });
 }
 
 std::string RowExport::format(const CsvTable& table, RowFormat format) {
