@@ -13,6 +13,11 @@ PACKAGES=(
   libglm-dev nlohmann-json3-dev libcli11-dev libopenimageio-dev libassimp-dev libembree-dev
   # tests (GNU parallel: the sharded-sweep test runs shards the way the README documents)
   googletest libgtest-dev libgmock-dev xvfb xauth parallel
+  # real clients and offline tools the tests drive: glslang compiles every shader permutation, apitrace
+  # traces and replays a run
+  glslang-tools apitrace
+  # real model files the tests load (glmark2's models, assimp's test models)
+  glmark2-data assimp-testmodels
   # plotting (tools/plot.py runs with /usr/bin/python3)
   python3-matplotlib python3-pandas
 )

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "TestPaths.h"
 #include "gl/Context.h"
 #include "gl/FrameTargets.h"
 #include "gl/ProgramCache.h"

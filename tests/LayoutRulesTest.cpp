@@ -4,6 +4,7 @@
 // and no fewer, so the check cannot pass by checking nothing.
 #include <gtest/gtest.h>
 
+#include "TestPaths.h"
 #include "LayoutRules.h"
 
 using namespace sb;

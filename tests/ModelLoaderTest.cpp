@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TestPaths.h"
 #include "core/Error.h"
 #include "scenes/ModelLoader.h"
 

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "TestPaths.h"
 #include "core/Error.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"

@@ -6,6 +6,7 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include "TestPaths.h"
 #include "core/Error.h"
 #include "core/SplitMix64.h"
 #include "scenes/Math.h"

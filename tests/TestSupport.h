@@ -19,6 +19,7 @@
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
+#include "TestPaths.h"
 #include "bench/run/RunConfig.h"
 
 namespace sb::test {
