@@ -7,6 +7,7 @@
 #include "bench/RunCommand.h"
 #include "bench/bottleneck/BottleneckCommand.h"
 #include "bench/figures/FiguresCommand.h"
+#include "bench/golden/GoldenCommand.h"
 #include "bench/sweep/SweepCommand.h"
 #include "bench/sweep/SweepWorker.h"
 #include "core/Error.h"
@@ -53,6 +54,10 @@ constexpr Mode kModes[] = {
      "is each technique CPU-, vertex- or fill-limited here? (thesis 6.2)", BottleneckCommand::main},
     {"figures", "bench figures", "rerun and replot the reproduced figures of results/figures/",
      FiguresCommand::main},
+    {"golden", "bench golden --check|--update",
+     "every technique x submission mode x built-in scene against the\n"
+     "committed goldens and accuracy bounds, or rewrite them (results/goldens/)",
+     GoldenCommand::main},
     {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main},
     {"export", "bench export IN.csv --format md", "a result CSV as a Markdown table, JSON or CSV",
      ExportCommand::main},

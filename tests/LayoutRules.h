@@ -69,12 +69,13 @@ inline const std::vector<Layer>& layers() {
         {"bench/viewer", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/sweep", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/bottleneck", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
+        {"bench/golden", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/figures",
          plus(belowBench, {"bench/output", "bench/run", "bench/sweep", "bench/bottleneck"}),
          {}},
         {"bench",
          plus(belowBench, {"bench/output", "bench/run", "bench/viewer", "bench/sweep", "bench/bottleneck",
-                           "bench/figures"}),
+                           "bench/figures", "bench/golden"}),
          {"common"}},
     };
     return kLayers;

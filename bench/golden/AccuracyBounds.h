@@ -1,0 +1,45 @@
+#pragma once
+// The accuracy bound of every matrix cell, derived from the Embree answer of that cell and from what the
+// technique can achieve, never from the technique's own result. One rule per technique:
+//   exact        (volume, reference): visibility is exact up to rasterisation, so off the 1-px band
+//                around reference shadow edges only a sliver may differ;
+//   map          (shadowmap): exact up to the map's texels and bias, a little more off the edge band;
+//   no_shadow    (none): draws no shadow, so its error must be exactly the reference's shadowed fraction;
+//   approximate  (occluder, proxy, planar, projective, blob): an approximation may miss shadows or soften
+//                them, but a shadow that is worse than drawing no shadow at all is broken: the bound is
+//                the error of no shadow in that cell;
+//   not_judged   (synthetic): not a shadow technique (the bottleneck study's workloads).
+// Under an area light (soft reference) the hard-shadow techniques are all approximations: the metric is
+// the RMSE, bounded by the RMSE of no shadow. A cell whose technique is known not to reach its rule's
+// bound carries an exception with the reason (kExceptions in AccuracyBounds.cpp), shown in the matrix.
+#include <string>
+#include <vector>
+
+#include "bench/golden/GoldenMatrix.h"
+
+namespace sb {
+
+struct AccuracyBound {
+    std::string cell;   ///< "technique/scene/light<i>"
+    std::string metric; ///< "wrong_pct", "wrong_no_edge_pct", "rmse", "" (not judged)
+    double max = 0.0;
+    double min = 0.0; ///< the no_shadow rule pins both ends
+    std::string rule; ///< the rule's name, or "exception"
+    std::string why;
+    bool judged() const { return !metric.empty(); }
+    /// The value of `metric` in `accuracy`.
+    double measured(const CellAccuracy& accuracy) const;
+};
+
+class AccuracyBounds {
+public:
+    /// The bound of light `light` of `cell` (any mode: the mode never changes the image).
+    static AccuracyBound derive(const MatrixCell& cell, size_t light);
+    /// results/goldens/bounds.json as written by `bench golden --update`: every bound with its rule,
+    /// reason and the value measured when it was written, for review.
+    static std::string toJson(const std::vector<AccuracyBound>& bounds, const std::vector<double>& measured);
+    /// Reads bounds.json (throws sb::Error naming the file and the entry).
+    static std::vector<AccuracyBound> read(const std::string& path);
+};
+
+} // namespace sb

@@ -1,0 +1,249 @@
+#include "bench/golden/GoldenCommand.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "bench/golden/AccuracyBounds.h"
+#include "bench/golden/GoldenImage.h"
+#include "bench/golden/GoldenMatrix.h"
+#include "bench/golden/MatrixCheck.h"
+#include "bench/run/CliParse.h"
+#include "core/Error.h"
+#include "core/Paths.h"
+#include "core/Strings.h"
+#include "techniques/TechniqueRegistry.h"
+
+namespace sb {
+
+namespace {
+
+struct GoldenCli {
+    bool check = false, update = false, verbose = false;
+    std::string dir;
+    MatrixOptions matrix;
+};
+
+/// results/goldens of the source tree: the first search root that has a results/ folder.
+std::string defaultGoldenDir() {
+    for (const std::string& root : Paths::searchRoots())
+        if (std::filesystem::is_directory(std::filesystem::path(root) / "results"))
+            return (std::filesystem::path(root) / "results" / "goldens").string();
+    throw Error("cannot find the source tree's results/ folder: pass --dir", ExitCode::Failure);
+}
+
+std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
+    std::map<std::string, AccuracyBound> out;
+    const std::string path = dir + "/bounds.json";
+    if (!std::filesystem::exists(path)) return out;
+    for (AccuracyBound& b : AccuracyBounds::read(path)) out[b.cell] = std::move(b);
+    return out;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        if (!out) throw Error("cannot write '" + tmp + "'", ExitCode::Failure);
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
+    const std::map<std::string, AccuracyBound> bounds = readBounds(cli.dir);
+    size_t checked = 0, unsupported = 0, failed = 0;
+    for (const std::string& scene : scenes) {
+        for (const CellVerdict& v :
+             MatrixCheck::check(GoldenMatrix::renderScene(scene, cli.matrix), cli.dir, bounds)) {
+            if (!v.unsupported.empty() && v.passed()) {
+                ++unsupported;
+                if (cli.verbose) std::cout << v.cell << ": unsupported: " << v.unsupported << "\n";
+                continue;
+            }
+            ++checked;
+            failed += !v.passed();
+            if (!v.passed() || cli.verbose) std::cout << v.cell << (v.passed() ? ": ok\n" : ": FAILED\n");
+            for (const std::string& f : v.failures) std::cout << "  " << f << "\n";
+            if (cli.verbose)
+                for (const std::string& d : v.details) std::cout << "  " << d << "\n";
+        }
+    }
+    std::cout << "golden check: " << checked << " cells checked, " << failed << " failed, " << unsupported
+              << " unsupported (--verbose lists them) against " << cli.dir << "\n";
+    return failed ? int(ExitCode::Failure) : 0;
+}
+
+/// Writes one golden, printing whether it is new, unchanged or changed and by how much.
+void updateGolden(const std::string& path, const Image8& image) {
+    std::string what = "new";
+    if (std::filesystem::exists(path)) {
+        const ImageDiffResult d =
+            ImageDiff::compare(GoldenImage::read(path), image, MatrixCheck::kGoldenTolerance);
+        if (d.comparable && d.maxChannelDiff == 0) return; // byte-identical: leave the file alone
+        what = (d.passes(MatrixCheck::kGoldenTolerance) ? "changed within tolerance: " : "CHANGED: ") +
+               d.describe(MatrixCheck::kGoldenTolerance);
+    }
+    GoldenImage::write(path, image);
+    std::cout << path << ": " << what << "\n";
+}
+
+/// One line of MATRIX.md: the retained cell's accuracy and bound, how many modes pass every check.
+std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vector<MatrixCell>& cells,
+                      const MatrixCell& retained) {
+    std::ostringstream row;
+    row << "| " << retained.technique << " | " << retained.scene << " | ";
+    if (!retained.unsupported.empty()) {
+        row << "unsupported | " << retained.unsupported << " |";
+        return row.str();
+    }
+    size_t modes = 0, passed = 0;
+    for (size_t i = 0; i < cells.size(); ++i) {
+        if (cells[i].technique != retained.technique) continue;
+        ++modes;
+        passed += verdicts[i].passed() && cells[i].ran();
+    }
+    row << passed << "/" << modes << " pass | ";
+    for (size_t l = 0; l < retained.lights.size(); ++l) {
+        const AccuracyBound b = AccuracyBounds::derive(retained, l);
+        std::ostringstream value;
+        value.precision(3);
+        if (l) value << "; ";
+        if (b.judged())
+            value << b.metric << " " << b.measured(retained.lights[l]) << " <= " << b.max << " (" << b.rule
+                  << ")";
+        else
+            value << "not judged";
+        row << value.str();
+    }
+    row << " |";
+    return row.str();
+}
+
+/// Writes the retained cells' goldens and returns their bounds with the measured values.
+void writeGoldens(const GoldenCli& cli, const std::vector<MatrixCell>& cells,
+                  std::map<std::string, std::pair<AccuracyBound, double>>& fresh) {
+    for (const MatrixCell& cell : cells) {
+        if (cell.mode != SubmitMode::Retained || !cell.failure.empty()) continue;
+        const std::string vis = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "visibility");
+        const std::string col = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "colour");
+        if (!cell.ran()) {
+            for (const std::string& p : {vis, col})
+                if (std::filesystem::remove(p)) std::cout << p << ": removed (" << cell.unsupported << ")\n";
+            continue;
+        }
+        updateGolden(vis, cell.visibility);
+        updateGolden(col, cell.colour);
+        for (size_t l = 0; l < cell.lights.size(); ++l) {
+            const AccuracyBound b = AccuracyBounds::derive(cell, l);
+            fresh[b.cell] = {b, b.measured(cell.lights[l])};
+        }
+    }
+}
+
+void writeBounds(const std::string& dir,
+                 const std::map<std::string, std::pair<AccuracyBound, double>>& fresh) {
+    std::map<std::string, AccuracyBound> kept = readBounds(dir); // cells of scenes not rendered this time
+    std::vector<AccuracyBound> bounds;
+    std::vector<double> measured;
+    for (const auto& [name, entry] : fresh) kept.erase(name);
+    for (const auto& [name, b] : kept) {
+        bounds.push_back(b);
+        measured.push_back(0.0);
+    }
+    for (const auto& [name, entry] : fresh) {
+        bounds.push_back(entry.first);
+        measured.push_back(entry.second);
+    }
+    writeText(dir + "/bounds.json", AccuracyBounds::toJson(bounds, measured));
+}
+
+std::string matrixHeader(int size) {
+    return "# The technique x submission x scene matrix\n\nWritten by `bench golden --update` "
+           "(bench/golden/); "
+           "checked by `bench golden --check` and tests/MatrixGLTest.cpp. Each row is one technique on one "
+           "built-in scene at " +
+           std::to_string(size) + "x" + std::to_string(size) +
+           ", its camera `mid` where the scene has one. *modes*: the submission modes whose cell passes "
+           "every "
+           "check (image equal to retained's and to the golden, accuracy within the bound); *accuracy*: the "
+           "retained cell against the Embree reference, per light, and its bound (rules in "
+           "bench/golden/AccuracyBounds.h). An unsupported cell gives the technique's reason.\n\n"
+           "| technique | scene | modes | accuracy |\n|---|---|---|---|\n";
+}
+
+int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool wholeMatrix) {
+    std::map<std::string, std::pair<AccuracyBound, double>> fresh;
+    std::vector<std::vector<MatrixCell>> rendered;
+    for (const std::string& scene : scenes) {
+        rendered.push_back(GoldenMatrix::renderScene(scene, cli.matrix));
+        writeGoldens(cli, rendered.back(), fresh);
+    }
+    writeBounds(cli.dir, fresh);
+    // The update is checked like any other run: a cell that fails (a mode that differs from retained,
+    // an accuracy outside its rule) is printed and makes the exit code 1, goldens written or not.
+    const std::map<std::string, AccuracyBound> bounds = readBounds(cli.dir);
+    std::string rows;
+    size_t failed = 0, written = 0;
+    for (const std::vector<MatrixCell>& cells : rendered) {
+        const std::vector<CellVerdict> verdicts = MatrixCheck::check(cells, cli.dir, bounds);
+        for (size_t i = 0; i < cells.size(); ++i) {
+            if (!verdicts[i].passed()) {
+                ++failed;
+                std::cout << verdicts[i].cell << ": FAILED\n";
+                for (const std::string& f : verdicts[i].failures) std::cout << "  " << f << "\n";
+            }
+            if (cells[i].mode != SubmitMode::Retained) continue;
+            rows += matrixRow(verdicts, cells, cells[i]) + "\n";
+            written += cells[i].ran();
+        }
+    }
+    if (wholeMatrix) writeText(cli.dir + "/MATRIX.md", matrixHeader(cli.matrix.size) + rows);
+    std::cout << "golden update: " << written << " technique x scene goldens in " << cli.dir
+              << (wholeMatrix ? " (and MATRIX.md)" : " (MATRIX.md is written only for the whole matrix)")
+              << "; " << failed << " cells fail their checks\n";
+    return failed ? int(ExitCode::Failure) : 0;
+}
+
+} // namespace
+
+int GoldenCommand::main(int argc, char** argv) {
+    CLI::App app{"bench golden: render the technique x submission x scene matrix and check it against the "
+                 "committed goldens and accuracy bounds, or rewrite them",
+                 "bench golden"};
+    app.footer(R"(Examples:
+  bench golden --check                         every cell (about 30 s of CPU per scene)
+  bench golden --check --scene teapot --verbose
+  bench golden --update --technique projective  rewrite one technique's goldens, print what changed
+
+Each cell: every submission mode's image must equal retained's, the retained image the golden
+(results/goldens/<scene>/<technique>.{visibility,colour}.png), and the accuracy against the Embree
+reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails.)");
+    GoldenCli cli;
+    std::vector<std::string> scenes, techniques;
+    auto* check = app.add_flag("--check", cli.check, "judge every cell (the default)");
+    app.add_flag("--update", cli.update, "rewrite goldens and bounds from this build's images")
+        ->excludes(check);
+    app.add_option("--scene", scenes, "comma-separated built-in scenes (default: all)")->delimiter(',');
+    app.add_option("--technique", techniques, "comma-separated techniques (default: all)")->delimiter(',');
+    app.add_option("--size", cli.matrix.size, "frame size (default 128, the size of the committed goldens)")
+        ->check(CLI::Range(16, 1024));
+    app.add_option("--dir", cli.dir, "golden folder (default: the source tree's results/goldens)");
+    app.add_flag("-v,--verbose", cli.verbose, "print every cell, its comparisons and unsupported cells");
+    if (int code = parseCli(app, argc, argv, "bench golden"); code >= 0) return code;
+    const std::vector<std::string> known = GoldenMatrix::builtinScenes();
+    const std::vector<std::string> chosen = scenes.empty() ? known : scenes;
+    for (const std::string& s : chosen)
+        if (std::find(known.begin(), known.end(), s) == known.end())
+            throw Error("--scene " + s + ": not a built-in scene (known: " + join(known, ", ") + ")");
+    cli.matrix.techniques = techniques;
+    for (const std::string& t : cli.matrix.techniques) TechniqueRegistry::create(t); // names it if unknown
+    if (cli.dir.empty()) cli.dir = defaultGoldenDir();
+    if (cli.update) return runUpdate(cli, chosen, scenes.empty() && techniques.empty());
+    return runCheck(cli, chosen);
+}
+
+} // namespace sb

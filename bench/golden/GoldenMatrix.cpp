@@ -1,0 +1,166 @@
+#include "bench/golden/GoldenMatrix.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "bench/run/AccuracyEvaluator.h"
+#include "bench/run/Harness.h"
+#include "core/Error.h"
+#include "core/Paths.h"
+#include "scenes/SceneLoader.h"
+#include "techniques/TechniqueRegistry.h"
+
+namespace sb {
+
+namespace {
+
+RunConfig cellConfig(const std::string& scene, const MatrixOptions& options, SubmitMode mode) {
+    RunConfig c;
+    c.scene = scene;
+    c.camera = GoldenMatrix::cameraFor(scene);
+    c.width = c.height = options.size;
+    c.submit = mode;
+    c.frames = 1;
+    c.warmup = 0;
+    c.checkTimer = false;
+    c.quiet = true;
+    return c;
+}
+
+std::vector<SubmitMode> modesRetainedFirst() {
+    std::vector<SubmitMode> modes{SubmitMode::Retained};
+    for (SubmitMode m : kAllSubmitModes)
+        if (m != SubmitMode::Retained) modes.push_back(m);
+    return modes;
+}
+
+uint8_t toByte(float v) {
+    if (!std::isfinite(v)) v = 0.0f;
+    return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+/// GL read-backs are bottom-up; images are top row first.
+size_t flippedRow(size_t index, int width, int height) {
+    const size_t x = index % size_t(width), y = index / size_t(width);
+    return (size_t(height) - 1 - y) * size_t(width) + x;
+}
+
+void readImages(Harness& harness, size_t lightCount, MatrixCell& cell) {
+    FrameTargets& targets = harness.targets();
+    const int w = targets.width(), h = targets.height();
+    const std::vector<float> vis = targets.readVisibilityRGBA32F();
+    const std::vector<unsigned char> rgba = targets.readColorRGBA8();
+    const size_t pixels = size_t(w) * size_t(h);
+    const size_t lights = std::min<size_t>(lightCount, 3);
+    cell.visibility = {w, h, lights == 1 ? 1 : 3, std::vector<uint8_t>(pixels * (lights == 1 ? 1 : 3), 0)};
+    cell.colour = {w, h, 3, std::vector<uint8_t>(pixels * 3)};
+    cell.visibilityFloat.assign(pixels * lights, 0.0f);
+    for (size_t p = 0; p < pixels; ++p) {
+        const size_t out = flippedRow(p, w, h);
+        for (size_t l = 0; l < lights; ++l) {
+            cell.visibility.pixels[out * size_t(cell.visibility.channels) + l] = toByte(vis[p * 4 + l]);
+            cell.visibilityFloat[p * lights + l] = vis[p * 4 + l];
+        }
+        for (size_t c = 0; c < 3; ++c) cell.colour.pixels[out * 3 + c] = rgba[p * 4 + c];
+    }
+    cell.sanity = AccuracyMetrics::sanity(vis);
+}
+
+CellAccuracy judgeLight(AccuracyEvaluator& evaluator, Technique& technique, int light, const Scene& scene,
+                        const MatrixOptions& options) {
+    AccuracyOptions o;
+    o.light = light;
+    o.stability = false;
+    o.referenceSamples = options.referenceSamples;
+    const AccuracyEvaluator::Sample s = evaluator.judgeFrame(technique, o, nullptr);
+    const int w = options.size, h = options.size;
+    CellAccuracy a;
+    a.hard = AccuracyMetrics::hard(s.technique, s.reference, s.mask, w, h);
+    a.soft = AccuracyMetrics::soft(s.technique, s.reference, s.mask);
+    a.softReference = scene.lights[size_t(light)].isArea();
+    uint64_t shadowed = 0, judged = 0;
+    double squares = 0.0;
+    for (size_t i = 0; i < s.mask.size(); ++i) {
+        if (!s.mask[i]) continue;
+        ++judged;
+        shadowed += s.reference[i] < 0.5f;
+        squares += double(1.0f - s.reference[i]) * double(1.0f - s.reference[i]);
+    }
+    a.noShadowPct = judged ? 100.0 * double(shadowed) / double(judged) : 0.0;
+    a.noShadowRmse = judged ? std::sqrt(squares / double(judged)) : 0.0;
+    return a;
+}
+
+MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std::string& techniqueName,
+                      const std::string& scene, const MatrixOptions& options) {
+    MatrixCell cell;
+    cell.technique = techniqueName;
+    cell.scene = scene;
+    cell.mode = harness.config().submit;
+    std::unique_ptr<Technique> technique = TechniqueRegistry::create(techniqueName);
+    try {
+        harness.prepare(*technique);
+    } catch (const Error& e) {
+        if (e.code() != ExitCode::Unsupported) throw;
+        cell.unsupported = e.what();
+        return cell;
+    }
+    harness.renderFrame(*technique);
+    const size_t lights = harness.scene().lights.size();
+    readImages(harness, lights, cell);
+    for (size_t l = 0; l < lights; ++l)
+        cell.lights.push_back(judgeLight(evaluator, *technique, int(l), harness.scene(), options));
+    return cell;
+}
+
+} // namespace
+
+std::string MatrixCell::name() const {
+    return technique + "/" + scene + "/" + submitModeName(mode);
+}
+
+std::vector<std::string> GoldenMatrix::builtinScenes() {
+    std::vector<std::string> scenes;
+    const std::string probe = Paths::findResource("scenes/data/aircraft.json");
+    if (probe.empty())
+        throw Error("cannot find scenes/data/ (looked in the build and source trees)", ExitCode::Failure);
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(probe).parent_path()))
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path().stem().string());
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+std::string GoldenMatrix::cameraFor(const std::string& scene) {
+    const Scene s = SceneLoader::load(scene);
+    for (const CameraPreset& c : s.cameras)
+        if (c.name == "mid") return c.name;
+    if (s.cameras.empty()) throw Error("scene '" + scene + "' has no camera", ExitCode::BadInput);
+    return s.cameras.front().name;
+}
+
+std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, const MatrixOptions& options) {
+    const std::vector<std::string> techniques =
+        options.techniques.empty() ? TechniqueRegistry::names() : options.techniques;
+    std::vector<MatrixCell> cells;
+    for (SubmitMode mode : modesRetainedFirst()) {
+        Harness harness(cellConfig(scene, options, mode));
+        AccuracyEvaluator evaluator(harness);
+        for (const std::string& technique : techniques) {
+            try {
+                cells.push_back(renderCell(harness, evaluator, technique, scene, options));
+            } catch (const std::exception& e) {
+                MatrixCell failed;
+                failed.technique = technique;
+                failed.scene = scene;
+                failed.mode = mode;
+                failed.failure = e.what();
+                cells.push_back(std::move(failed));
+            }
+        }
+    }
+    return cells;
+}
+
+} // namespace sb

@@ -1,0 +1,60 @@
+#pragma once
+// The technique x submission x scene matrix (docs/ARCHITECTURE.md, "Results"): every technique of the
+// registry, in every submission mode, on every built-in scene, rendered small. Each cell yields the
+// images that are compared with the retained mode and with the committed golden, and its accuracy
+// against the Embree reference per light. A cell a technique cannot handle is kept with the reason the
+// technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bench/golden/ImageDiff.h"
+#include "reference/AccuracyMetrics.h"
+#include "techniques/submit/Submitter.h"
+
+namespace sb {
+
+/// Accuracy of one light of one cell against the reference at the same pixels.
+struct CellAccuracy {
+    HardMetrics hard;
+    SoftMetrics soft;
+    double noShadowPct = 0.0;  ///< judged samples the reference shadows: what drawing no shadow gets wrong
+    double noShadowRmse = 0.0; ///< the RMSE of drawing no shadow (visibility 1 everywhere)
+    bool softReference = false;
+};
+
+struct MatrixCell {
+    std::string technique, scene;
+    SubmitMode mode = SubmitMode::Retained;
+    std::string unsupported; ///< non-empty: the technique refused this scene, and why
+    std::string failure;     ///< non-empty: the cell threw while rendering (a defect, not a refusal)
+    Image8 visibility;       ///< light i in channel i (one channel for one light, else RGB)
+    Image8 colour;           ///< RGB
+    std::vector<float> visibilityFloat; ///< the raw read-back of the lights' channels, for the mode check
+    std::vector<CellAccuracy> lights;
+    NumericSanity sanity; ///< over the whole visibility read-back
+    /// "technique/scene/mode"
+    std::string name() const;
+    bool ran() const { return unsupported.empty() && failure.empty(); }
+};
+
+struct MatrixOptions {
+    int size = 128;                      ///< square frame size (the committed goldens are 128^2)
+    std::vector<std::string> scenes;     ///< empty: every built-in scene
+    std::vector<std::string> techniques; ///< empty: every registered technique
+    int referenceSamples = 64;           ///< per pixel for area lights
+};
+
+class GoldenMatrix {
+public:
+    /// The built-in scenes: scenes/data/*.json, sorted by name.
+    static std::vector<std::string> builtinScenes();
+    /// The camera a scene's cells use: "mid" where the scene has one (every shadow visible at a small
+    /// size), else its first camera.
+    static std::string cameraFor(const std::string& scene);
+    /// Every cell of one scene, retained mode first (the others are compared with it), then the other
+    /// modes in their table order; techniques in registry order.
+    static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options);
+};
+
+} // namespace sb

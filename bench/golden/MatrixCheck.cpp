@@ -1,0 +1,138 @@
+#include "bench/golden/MatrixCheck.h"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "bench/golden/GoldenImage.h"
+#include "core/Error.h"
+
+namespace sb {
+
+namespace {
+
+/// Float visibility of two modes: the share of samples that differ by more than 0.01.
+ImageDiffResult compareVisibility(const std::vector<float>& expected, const std::vector<float>& actual) {
+    ImageDiffResult r;
+    if (expected.size() != actual.size()) {
+        r.mismatch = "visibility sizes differ";
+        return r;
+    }
+    r.comparable = true;
+    r.pixels = expected.size();
+    for (size_t i = 0; i < expected.size(); ++i) {
+        const float d = std::fabs(expected[i] - actual[i]);
+        const bool fails = !(d <= 0.01f); // NaN fails
+        r.failingPixels += fails;
+        r.maxChannelDiff = std::max(r.maxChannelDiff, std::isfinite(d) ? int(std::lround(d * 255.0f)) : 255);
+    }
+    return r;
+}
+
+const MatrixCell* retainedOf(const std::vector<MatrixCell>& cells, const MatrixCell& cell) {
+    for (const MatrixCell& c : cells)
+        if (c.technique == cell.technique && c.scene == cell.scene && c.mode == SubmitMode::Retained)
+            return &c;
+    return nullptr;
+}
+
+void checkModes(const std::vector<MatrixCell>& cells, const MatrixCell& cell, CellVerdict& v) {
+    if (cell.mode == SubmitMode::Retained) return;
+    const MatrixCell* retained = retainedOf(cells, cell);
+    if (!retained || !retained->ran()) {
+        v.failures.push_back("runs in this mode but not in retained mode");
+        return;
+    }
+    const ImageDiffResult vis = compareVisibility(retained->visibilityFloat, cell.visibilityFloat);
+    const ImageDiffResult col =
+        ImageDiff::compare(retained->colour, cell.colour, MatrixCheck::kModeTolerance);
+    const std::string visText =
+        "visibility vs retained: " + vis.describe({3, MatrixCheck::kModeTolerance.maxFailingFraction});
+    const std::string colText = "colour vs retained: " + col.describe(MatrixCheck::kModeTolerance);
+    (vis.passes(MatrixCheck::kModeTolerance) ? v.details : v.failures).push_back(visText);
+    (col.passes(MatrixCheck::kModeTolerance) ? v.details : v.failures).push_back(colText);
+}
+
+void checkGolden(const MatrixCell& cell, const std::string& dir, const std::string& kind, const Image8& image,
+                 CellVerdict& v) {
+    const std::string path = MatrixCheck::goldenPath(dir, cell.scene, cell.technique, kind);
+    if (!std::filesystem::exists(path)) {
+        v.failures.push_back("no golden " + path + " (bench golden --update writes it)");
+        return;
+    }
+    const ImageDiffResult d =
+        ImageDiff::compare(GoldenImage::read(path), image, MatrixCheck::kGoldenTolerance);
+    const std::string text = kind + " vs golden: " + d.describe(MatrixCheck::kGoldenTolerance);
+    (d.passes(MatrixCheck::kGoldenTolerance) ? v.details : v.failures).push_back(text);
+}
+
+std::string number(double v) {
+    std::ostringstream out;
+    out.precision(4);
+    out << v;
+    return out.str();
+}
+
+void checkAccuracy(const MatrixCell& cell, const std::map<std::string, AccuracyBound>& bounds,
+                   CellVerdict& v) {
+    for (size_t l = 0; l < cell.lights.size(); ++l) {
+        const AccuracyBound rule = AccuracyBounds::derive(cell, l);
+        if (!rule.judged()) continue;
+        auto it = bounds.find(rule.cell);
+        if (it == bounds.end()) {
+            v.failures.push_back(rule.cell +
+                                 ": no committed accuracy bound (bench golden --update writes it)");
+            continue;
+        }
+        const AccuracyBound& committed = it->second;
+        // The committed bound may be tighter than the rule's, never looser (0.05 points for the
+        // reference's own variation between modes: its G-buffer is rendered by each mode's submitter).
+        if (committed.metric != rule.metric || committed.max > rule.max + 0.05)
+            v.failures.push_back(rule.cell + ": committed bound " + committed.metric +
+                                 " <= " + number(committed.max) + " is looser than the rule's " +
+                                 rule.metric + " <= " + number(rule.max) + " (" + rule.why + ")");
+        const double measured = committed.measured(cell.lights[l]);
+        const std::string text = rule.cell + " " + committed.metric + " " + number(measured) + " (bound " +
+                                 number(committed.min) + ".." + number(committed.max) + ", " +
+                                 committed.rule + ": " + committed.why + ")";
+        (measured <= committed.max && measured >= committed.min ? v.details : v.failures).push_back(text);
+    }
+}
+
+} // namespace
+
+std::string MatrixCheck::goldenPath(const std::string& dir, const std::string& scene,
+                                    const std::string& technique, const std::string& kind) {
+    return dir + "/" + scene + "/" + technique + "." + kind + ".png";
+}
+
+std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells,
+                                            const std::string& goldenDir,
+                                            const std::map<std::string, AccuracyBound>& bounds) {
+    std::vector<CellVerdict> verdicts;
+    for (const MatrixCell& cell : cells) {
+        CellVerdict v;
+        v.cell = cell.name();
+        if (!cell.failure.empty()) {
+            v.failures.push_back("threw: " + cell.failure);
+        } else if (!cell.unsupported.empty()) {
+            v.unsupported = cell.unsupported;
+            if (cell.mode == SubmitMode::Retained &&
+                std::filesystem::exists(goldenPath(goldenDir, cell.scene, cell.technique, "visibility")))
+                v.failures.push_back("refuses the scene but has a golden: " + cell.unsupported);
+        } else {
+            if (cell.sanity.total())
+                v.failures.push_back("visibility has " + std::to_string(cell.sanity.nan) + " NaN, " +
+                                     std::to_string(cell.sanity.inf) + " Inf, " +
+                                     std::to_string(cell.sanity.outOfRange) + " out of [0, 1]");
+            checkModes(cells, cell, v);
+            checkGolden(cell, goldenDir, "visibility", cell.visibility, v);
+            checkGolden(cell, goldenDir, "colour", cell.colour, v);
+            checkAccuracy(cell, bounds, v);
+        }
+        verdicts.push_back(std::move(v));
+    }
+    return verdicts;
+}
+
+} // namespace sb
