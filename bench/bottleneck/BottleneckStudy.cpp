@@ -152,10 +152,6 @@ std::string fmt(const char* f, double v) {
     return std::isfinite(v) ? formatNumber(f, v) : "-";
 }
 
-std::string pad(std::string s, size_t w) {
-    return padRight(std::move(s), w);
-}
-
 const char* shortName(const std::string& perturbation) {
     static const std::map<std::string, const char*> names{
         {p::kBaseline, "base"},      {p::kSubmitImmediate, "imm"}, {p::kSubmitRetained, "ret"},
@@ -265,9 +261,9 @@ std::vector<BottleneckEntry> BottleneckStudy::analyse(const CsvTable& table) {
 }
 
 void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckEntry>& entries) {
-    os << "\n"
-       << pad("technique", 22) << pad("scene", 22) << pad("class", 16) << pad("cpu", 6) << pad("vert", 6)
-       << pad("fill", 6) << pad("resid", 6) << pad("base ms", 10) << "T/T0 per perturbation\n";
+    TextColumns table;
+    table.addRow(
+        {"technique", "scene", "class", "cpu", "vert", "fill", "resid", "base ms", "T/T0 per perturbation"});
     for (const BottleneckEntry& e : entries) {
         std::string where;
         for (const auto& [k, v] : e.identity)
@@ -276,16 +272,17 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
         std::string evidence;
         for (const RunEvidence& ev : r.evidence)
             if (ev.perturbation != p::kBaseline)
-                evidence += std::string(shortName(ev.perturbation)) + " " + fmt("%.2f", ev.timeRatio) +
+                evidence += std::string(evidence.empty() ? "" : "  ") + shortName(ev.perturbation) + " " +
+                            fmt("%.2f", ev.timeRatio) +
                             (ev.heldOut     ? "*"
                              : ev.usedInFit ? ""
-                                            : "!") +
-                            "  ";
-        os << pad(e.techniqueSpec + " ", 22) << pad(where, 22) << pad(r.label + (r.poorFit ? "?" : ""), 16)
-           << pad(fmt("%.2f", r.shareCpu), 6) << pad(fmt("%.2f", r.shareVertex), 6)
-           << pad(fmt("%.2f", r.shareFill), 6) << pad(fmt("%.0f%%", 100.0 * r.rmsRelResidual), 6)
-           << pad(fmt("%.2f", e.baselineWallMs), 10) << evidence << "\n";
+                                            : "!");
+        table.addRow({e.techniqueSpec, where.empty() ? "-" : where, r.label + (r.poorFit ? "?" : ""),
+                      fmt("%.2f", r.shareCpu), fmt("%.2f", r.shareVertex), fmt("%.2f", r.shareFill),
+                      fmt("%.0f%%", 100.0 * r.rmsRelResidual), fmt("%.2f", e.baselineWallMs), evidence});
     }
+    os << "\n";
+    table.print(os);
     os << "\nshares: each stage's part of the baseline frame time in the fitted model T = a + c*calls + "
           "v*vertices + f*fragments\n(cpu includes the fixed part a); class: the stage with >= 0.5 of it, "
           "else mixed; resid = rms residual of the fit relative to max(T, T0), ? = over 15%;\n* = predicted, "
