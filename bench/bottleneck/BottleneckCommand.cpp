@@ -42,7 +42,12 @@ int classify(const std::string& csv, const std::string& classes, RowFormat forma
     std::ostream& log = format == RowFormat::Console ? std::cout : std::cerr;
     BottleneckStudy::printTable(log, entries);
     log << "classification written to " << classes << "\n";
-    if (format != RowFormat::Console) std::cout << RowExport::format(table, format);
+    // CSV and JSON carry every column of the classes CSV; Markdown is for people and shows what the
+    // console table shows (the curated columns of result rows have no class or share at all).
+    if (format == RowFormat::Markdown)
+        std::cout << RowExport::toMarkdown(BottleneckStudy::summary(table), true);
+    else if (format != RowFormat::Console)
+        std::cout << RowExport::format(table, format);
     return 0;
 }
 

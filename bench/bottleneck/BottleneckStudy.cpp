@@ -292,6 +292,33 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
           "tessellation factor, norast LP_NO_RAST=1.\n";
 }
 
+CsvTable BottleneckStudy::summary(const CsvTable& classes) {
+    // What printTable shows, in its order: who and where, the class, the shares, the fit's quality, and
+    // the measured time ratio of every perturbation; the renderer last (it is long and the same in
+    // every row, so the Markdown export lists it above the table).
+    std::vector<std::string> columns{"technique_spec"};
+    for (const char* col : kIdentity)
+        if (std::string(col) != "renderer") columns.push_back(col);
+    columns.insert(columns.end(), {"wall_ms_baseline", "class", "share_cpu", "share_vertex", "share_fill",
+                                   "rms_rel_residual", "poor_fit", "held_out_rel_error"});
+    for (const std::string& what : perturbations()) columns.push_back("time_ratio_" + what);
+    columns.push_back("renderer");
+    CsvTable out;
+    std::vector<size_t> from;
+    for (const std::string& col : columns) {
+        const auto it = std::find(classes.header.begin(), classes.header.end(), col);
+        if (it == classes.header.end()) continue; // a perturbation this study did not run
+        out.header.push_back(col);
+        from.push_back(size_t(it - classes.header.begin()));
+    }
+    for (const auto& row : classes.rows) {
+        std::vector<std::string> cells;
+        for (size_t i : from) cells.push_back(i < row.size() ? row[i] : "");
+        out.rows.push_back(std::move(cells));
+    }
+    return out;
+}
+
 CsvTable BottleneckStudy::table(const std::vector<BottleneckEntry>& entries) {
     std::vector<CsvRow> rows;
     for (const BottleneckEntry& e : entries) {
