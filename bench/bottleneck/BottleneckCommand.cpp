@@ -79,10 +79,9 @@ int BottleneckCommand::main(int argc, char** argv) {
 
     SweepDefinition definition;
     definition.name = "bottleneck";
-    // Nine perturbations per technique: fewer frames than a single run by default.
-    if (!axes.passes("--frames") && !axes.passes("--seconds")) definition.commonArgs = {"--frames", "20"};
-    if (!axes.passes("--warmup"))
-        definition.commonArgs.insert(definition.commonArgs.end(), {"--warmup", "3"});
+    // Nine perturbations per technique: fewer frames than a single run by default (the command line's
+    // --frames, --seconds or --warmup replaces these, as it replaces a sweep file's).
+    definition.commonArgs = {"--frames", "20", "--warmup", "3"};
     axes.applyTo(definition);
     const SweepPlan plan = BottleneckStudy::plan(definition);
     SweepRunOptions options;
