@@ -61,7 +61,7 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
         for (const Measurement& m : results) judged.emplace_back(m.run, *m.accuracy);
         ConsoleReport::printAccuracyTable(log, judged);
     } else {
-        ConsoleReport::printTable(log, harness, runs);
+        ConsoleReport::printTable(log, harness, runs, config.repeat);
     }
     if (config.repeat > 1) ConsoleReport::printPairedRatios(log, runs, config.repeat);
     if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";

@@ -6,6 +6,7 @@
 // The label needs a share >= 0.5; measured margins on llvmpipe are wide (fill 0.91-0.94, vertex 0.91-0.98,
 // cpu 0.89-0.95 at 128^2-512^2), so timing noise from tests running beside this one cannot flip it.
 #include <filesystem>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -40,6 +41,24 @@ std::string column(const CsvTable& t, size_t row, const std::string& name) {
     return it == t.header.end() ? "<no column " + name + ">" : t.rows[row][size_t(it - t.header.begin())];
 }
 
+/// The cells of line `line` of a Markdown table ("| a | b |" -> {"a", "b"}), trimmed.
+std::vector<std::string> markdownCells(const std::string& text, size_t line) {
+    std::istringstream in(text);
+    std::string l;
+    for (size_t i = 0; i <= line; ++i)
+        if (!std::getline(in, l)) return {};
+    std::vector<std::string> cells;
+    std::istringstream row(l);
+    std::string cell;
+    std::getline(row, cell, '|'); // before the first bar
+    while (std::getline(row, cell, '|')) {
+        const size_t a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
+        cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+    }
+    if (!cells.empty() && cells.back().empty()) cells.pop_back(); // after the last bar
+    return cells;
+}
+
 class KnownBottleneck : public ::testing::TestWithParam<KnownWorkload> {};
 
 TEST_P(KnownBottleneck, IsNamedCorrectly) {
@@ -68,6 +87,18 @@ TEST_P(KnownBottleneck, IsNamedCorrectly) {
     auto again = runCommand(kBench + " bottleneck --from " + csv + " --classes " + dir + "/again.csv");
     ASSERT_EQ(again.exitCode, 0) << again.output;
     EXPECT_EQ(column(CsvWriter::read(dir + "/again.csv"), 0, "class"), w.expected);
+    // --format md prints the classification the console table prints: the class and the shares, the
+    // same values as the classes CSV.
+    auto md = runCommand("(" + kBench + " bottleneck --from " + csv + " --classes " + dir +
+                         "/md.csv --format md 2>/dev/null)");
+    ASSERT_EQ(md.exitCode, 0) << md.output;
+    const std::vector<std::string> header = markdownCells(md.output, 0), cells = markdownCells(md.output, 2);
+    for (const std::string name : {"class", "share_cpu", "share_vertex", "share_fill", "technique_spec"}) {
+        const auto at = std::find(header.begin(), header.end(), name);
+        ASSERT_NE(at, header.end()) << "no column " << name << " in:\n" << md.output;
+        ASSERT_LT(size_t(at - header.begin()), cells.size()) << md.output;
+        EXPECT_EQ(cells[size_t(at - header.begin())], column(classes, 0, name)) << md.output;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Synthetic, KnownBottleneck, ::testing::ValuesIn(kWorkloads),

@@ -299,6 +299,91 @@ TEST(SweepCli, DefinitionFileAndBadAxes) {
     }
 }
 
+/// The "every run: ..." line of a dry run (the options every worker gets), or "" when there is none.
+std::string everyRunLine(const std::string& output) {
+    const size_t at = output.find("\nevery run: ");
+    return at == std::string::npos ? "" : output.substr(at + 1, output.find('\n', at + 1) - at - 1);
+}
+
+size_t occurrences(const std::string& text, const std::string& word) {
+    size_t n = 0;
+    for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + word.size())) ++n;
+    return n;
+}
+
+// The command line replaces what the definition file says (README, "Sweep configurations"), for the
+// run options as for the axes: the rows are measured with the command line's --frames, --warmup and
+// --seed (the CSV's own columns say what each run used), and the file's values are gone.
+TEST(SweepCli, CommandLineRunOptionsReplaceTheFiles) {
+    const std::string dir = test::freshDir("sweep-override");
+    const std::string file = dir + "/s.json", csv = dir + "/r.csv";
+    std::ofstream(file) << R"({"name": "o", "techniques": ["none"], "instances": [2], "size": "64x64",
+                              "frames": 20, "warmup": 5, "seed": 3, "args": ["--max-memory-gib", "4"]})";
+    auto r = runCommand(bench(
+        "sweep " + file + " --frames 2 --warmup 1 --seed 7 --max-memory-gib 2 --no-progress --csv " + csv));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    Table t(csv);
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_EQ(t.at(0, "status"), "ok") << t.at(0, "error");
+    EXPECT_EQ(t.at(0, "frames"), "2");
+    EXPECT_EQ(t.at(0, "warmup"), "1");
+    EXPECT_EQ(t.at(0, "seed"), "7");
+
+    // The README's own example definition with a shorter run.
+    const std::string example = std::string(SB_SOURCE_DIR) + "/sweeps/submission.json";
+    auto plan = runCommand(bench("sweep " + example + " --frames 5 --dry-run"));
+    ASSERT_EQ(plan.exitCode, 0) << plan.output;
+    EXPECT_EQ(everyRunLine(plan.output), "every run: --warmup 5 --frames 5") << plan.output.substr(0, 300);
+}
+
+struct OverrideCase {
+    const char* name;
+    const char* file; ///< the definition's keys besides techniques
+    const char* cli;  ///< what the command line gives
+    const char* gone; ///< what of the file's must not reach the runs ("" for a flag: it appears once)
+};
+
+const OverrideCase kOverrides[] = {
+    {"Frames", R"("frames": 20)", "--frames 5", "--frames 20"},
+    {"SecondsReplaceFrames", R"("frames": 20)", "--seconds 0.5", "--frames"},
+    {"FramesReplaceSeconds", R"("seconds": 2)", "--frames 5", "--seconds"},
+    {"Warmup", R"("warmup": 5)", "--warmup 1", "--warmup 5"},
+    {"Seed", R"("seed": 3)", "--seed 7", "--seed 3"},
+    {"Backend", R"("backend": "osmesa")", "--backend egl-surfaceless", "osmesa"},
+    {"RefSamples", R"("mode": "accuracy", "ref_samples": 16)", "--ref-samples 4", "--ref-samples 16"},
+    {"Gpu", R"("args": ["--gpu", "1"])", "--gpu 0", "--gpu 1"},
+    {"LightIndexWithEquals", R"("mode": "accuracy", "args": ["--light-index=1"])", "--light-index 0",
+     "--light-index=1"},
+    {"MaxMemory", R"("args": ["--max-memory-gib", "4"])", "--max-memory-gib 2", "--max-memory-gib 4"},
+    {"Model", R"("args": ["--model", "a.obj"])", "--model b.obj", "a.obj"},
+    {"NoTimerCheck", R"("args": ["--no-timer-check"])", "--no-timer-check", ""},
+    {"NoStability", R"("mode": "accuracy", "stability": false)", "--no-stability", ""},
+};
+
+void PrintTo(const OverrideCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
+class SweepOverride : public ::testing::TestWithParam<OverrideCase> {};
+
+// Every option `bench sweep` passes to its runs, given in the file and on the command line: the plan
+// is valid (bench's parser takes an option once, so keeping both failed) and every run gets the
+// command line's value only.
+TEST_P(SweepOverride, CommandLineValueIsTheOneEveryRunGets) {
+    const OverrideCase& c = GetParam();
+    const std::string dir = test::freshTestDir("sweep-override");
+    const std::string file = dir + "/s.json";
+    std::ofstream(file) << R"({"techniques": ["none"], "size": "64x64", )" << c.file << "}";
+    auto r = runCommand(bench("sweep " + file + " " + c.cli + " --dry-run"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string line = everyRunLine(r.output);
+    EXPECT_EQ(occurrences(line, c.cli), 1u) << line;
+    if (*c.gone) EXPECT_EQ(line.find(c.gone), std::string::npos) << line;
+}
+
+INSTANTIATE_TEST_SUITE_P(PassThrough, SweepOverride, ::testing::ValuesIn(kOverrides),
+                         [](const auto& p) { return std::string(p.param.name); });
+
 // The example definitions in sweeps/ stay valid: each dry-runs, with the number of combinations and
 // configurations counted here from the JSON (product of the axes; per technique the product of its
 // property value lists; times the rounds).

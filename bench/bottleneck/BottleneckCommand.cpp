@@ -42,7 +42,12 @@ int classify(const std::string& csv, const std::string& classes, RowFormat forma
     std::ostream& log = format == RowFormat::Console ? std::cout : std::cerr;
     BottleneckStudy::printTable(log, entries);
     log << "classification written to " << classes << "\n";
-    if (format != RowFormat::Console) std::cout << RowExport::format(table, format);
+    // CSV and JSON carry every column of the classes CSV; Markdown is for people and shows what the
+    // console table shows (the curated columns of result rows have no class or share at all).
+    if (format == RowFormat::Markdown)
+        std::cout << RowExport::toMarkdown(BottleneckStudy::summary(table), true);
+    else if (format != RowFormat::Console)
+        std::cout << RowExport::format(table, format);
     return 0;
 }
 
@@ -74,10 +79,9 @@ int BottleneckCommand::main(int argc, char** argv) {
 
     SweepDefinition definition;
     definition.name = "bottleneck";
-    // Nine perturbations per technique: fewer frames than a single run by default.
-    if (!axes.passes("--frames") && !axes.passes("--seconds")) definition.commonArgs = {"--frames", "20"};
-    if (!axes.passes("--warmup"))
-        definition.commonArgs.insert(definition.commonArgs.end(), {"--warmup", "3"});
+    // Nine perturbations per technique: fewer frames than a single run by default (the command line's
+    // --frames, --seconds or --warmup replaces these, as it replaces a sweep file's).
+    definition.commonArgs = {"--frames", "20", "--warmup", "3"};
     axes.applyTo(definition);
     const SweepPlan plan = BottleneckStudy::plan(definition);
     SweepRunOptions options;

@@ -152,10 +152,6 @@ std::string fmt(const char* f, double v) {
     return std::isfinite(v) ? formatNumber(f, v) : "-";
 }
 
-std::string pad(std::string s, size_t w) {
-    return padRight(std::move(s), w);
-}
-
 const char* shortName(const std::string& perturbation) {
     static const std::map<std::string, const char*> names{
         {p::kBaseline, "base"},      {p::kSubmitImmediate, "imm"}, {p::kSubmitRetained, "ret"},
@@ -265,9 +261,9 @@ std::vector<BottleneckEntry> BottleneckStudy::analyse(const CsvTable& table) {
 }
 
 void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckEntry>& entries) {
-    os << "\n"
-       << pad("technique", 22) << pad("scene", 22) << pad("class", 16) << pad("cpu", 6) << pad("vert", 6)
-       << pad("fill", 6) << pad("resid", 6) << pad("base ms", 10) << "T/T0 per perturbation\n";
+    TextColumns table;
+    table.addRow(
+        {"technique", "scene", "class", "cpu", "vert", "fill", "resid", "base ms", "T/T0 per perturbation"});
     for (const BottleneckEntry& e : entries) {
         std::string where;
         for (const auto& [k, v] : e.identity)
@@ -276,16 +272,17 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
         std::string evidence;
         for (const RunEvidence& ev : r.evidence)
             if (ev.perturbation != p::kBaseline)
-                evidence += std::string(shortName(ev.perturbation)) + " " + fmt("%.2f", ev.timeRatio) +
+                evidence += std::string(evidence.empty() ? "" : "  ") + shortName(ev.perturbation) + " " +
+                            fmt("%.2f", ev.timeRatio) +
                             (ev.heldOut     ? "*"
                              : ev.usedInFit ? ""
-                                            : "!") +
-                            "  ";
-        os << pad(e.techniqueSpec + " ", 22) << pad(where, 22) << pad(r.label + (r.poorFit ? "?" : ""), 16)
-           << pad(fmt("%.2f", r.shareCpu), 6) << pad(fmt("%.2f", r.shareVertex), 6)
-           << pad(fmt("%.2f", r.shareFill), 6) << pad(fmt("%.0f%%", 100.0 * r.rmsRelResidual), 6)
-           << pad(fmt("%.2f", e.baselineWallMs), 10) << evidence << "\n";
+                                            : "!");
+        table.addRow({e.techniqueSpec, where.empty() ? "-" : where, r.label + (r.poorFit ? "?" : ""),
+                      fmt("%.2f", r.shareCpu), fmt("%.2f", r.shareVertex), fmt("%.2f", r.shareFill),
+                      fmt("%.0f%%", 100.0 * r.rmsRelResidual), fmt("%.2f", e.baselineWallMs), evidence});
     }
+    os << "\n";
+    table.print(os);
     os << "\nshares: each stage's part of the baseline frame time in the fitted model T = a + c*calls + "
           "v*vertices + f*fragments\n(cpu includes the fixed part a); class: the stage with >= 0.5 of it, "
           "else mixed; resid = rms residual of the fit relative to max(T, T0), ? = over 15%;\n* = predicted, "
@@ -293,6 +290,33 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
           "fitted (the scale runs: they change more than the measured loads); ! = failed or loads unknown. "
           "Abbreviations: imm/ret submission switched, x10near/x0.01 scale,\nres resolution per axis, tess "
           "tessellation factor, norast LP_NO_RAST=1.\n";
+}
+
+CsvTable BottleneckStudy::summary(const CsvTable& classes) {
+    // What printTable shows, in its order: who and where, the class, the shares, the fit's quality, and
+    // the measured time ratio of every perturbation; the renderer last (it is long and the same in
+    // every row, so the Markdown export lists it above the table).
+    std::vector<std::string> columns{"technique_spec"};
+    for (const char* col : kIdentity)
+        if (std::string(col) != "renderer") columns.push_back(col);
+    columns.insert(columns.end(), {"wall_ms_baseline", "class", "share_cpu", "share_vertex", "share_fill",
+                                   "rms_rel_residual", "poor_fit", "held_out_rel_error"});
+    for (const std::string& what : perturbations()) columns.push_back("time_ratio_" + what);
+    columns.push_back("renderer");
+    CsvTable out;
+    std::vector<size_t> from;
+    for (const std::string& col : columns) {
+        const auto it = std::find(classes.header.begin(), classes.header.end(), col);
+        if (it == classes.header.end()) continue; // a perturbation this study did not run
+        out.header.push_back(col);
+        from.push_back(size_t(it - classes.header.begin()));
+    }
+    for (const auto& row : classes.rows) {
+        std::vector<std::string> cells;
+        for (size_t i : from) cells.push_back(i < row.size() ? row[i] : "");
+        out.rows.push_back(std::move(cells));
+    }
+    return out;
 }
 
 CsvTable BottleneckStudy::table(const std::vector<BottleneckEntry>& entries) {

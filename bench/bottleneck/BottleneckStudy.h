@@ -53,6 +53,12 @@ public:
     /// One row per entry: identity, class, shares, fit quality and, per perturbation, the time and
     /// load ratios and the fitted time ratio.
     static CsvTable table(const std::vector<BottleneckEntry>& entries);
+    /// The columns of `classes` (a table() or a classes CSV read back) that printTable shows, in its
+    /// order: technique_spec, the base setting, wall_ms_baseline, class, share_cpu, share_vertex,
+    /// share_fill, rms_rel_residual, poor_fit, held_out_rel_error, time_ratio_<P> per perturbation run,
+    /// renderer. The Markdown report (`--format md`) prints this, not the curated columns of result
+    /// rows, which know nothing of a classification.
+    static CsvTable summary(const CsvTable& classes);
     /// The perturbation names in the order the study runs and prints them.
     static const std::vector<std::string>& perturbations();
 };

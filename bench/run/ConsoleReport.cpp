@@ -3,7 +3,6 @@
 #include "bench/output/TextColumns.h"
 #include "core/Strings.h"
 
-#include <cstdio>
 #include <ostream>
 #include <string>
 
@@ -18,8 +17,15 @@ std::string fmt(const char* f, double v) {
     return formatNumber(f, v);
 }
 
-std::string pad(std::string s, size_t w) {
-    return padRight(std::move(s), w);
+std::string propertiesText(const RunResult& r) {
+    return r.properties.empty() ? "-" : r.properties;
+}
+
+/// Techniques per round: `results` holds `rounds` rounds of the same techniques (one round when the
+/// count does not divide, which RunCommand never produces).
+size_t roundSize(const std::vector<RunResult>& results, int rounds) {
+    if (rounds < 1 || results.size() % size_t(rounds) != 0) return results.size();
+    return results.size() / size_t(rounds);
 }
 
 std::string effectsText(EffectMask m) {
@@ -51,63 +57,75 @@ void ConsoleReport::printTimerVerdict(std::ostream& os, const TimerVerdict& v) {
     os << "\n";
 }
 
-void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::vector<RunResult>& results) {
-    const RunResult* base = nullptr;
-    for (const RunResult& r : results)
-        if (r.technique == "none") base = &r;
-    bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
-    os << "\n"
-       << pad("technique", 12) << pad("wall median", 13) << pad("p5", 9) << pad("p95", 9) << pad("MAD", 8)
-       << pad("cpu submit", 12) << (gpu ? pad("gpu", 10) : "") << pad("n", 5) << pad("vs none", 9)
-       << "properties\n";
-    for (const RunResult& r : results) {
-        os << pad(r.technique, 12) << pad(fmt("%.2f ms", r.wall.median), 13) << pad(fmt("%.2f", r.wall.p5), 9)
-           << pad(fmt("%.2f", r.wall.p95), 9) << pad(fmt("%.2f", r.wall.mad), 8)
-           << pad(fmt("%.2f ms", r.cpuSubmit.median), 12)
-           << (gpu ? pad(r.gpuTotal.n ? fmt("%.2f ms", r.gpuTotal.median) : "n/a", 10) : "")
-           << pad(std::to_string(r.wall.n), 5)
-           << pad(base && base->wall.median > 0 ? fmt("%.2fx", r.wall.median / base->wall.median) : "-", 9)
-           << (r.properties.empty() ? "-" : r.properties) << "\n";
+void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::vector<RunResult>& results,
+                               int rounds) {
+    if (results.empty()) return;
+    const size_t perRound = roundSize(results, rounds);
+    const bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
+    const bool several = results.size() > perRound;
+    TextColumns table;
+    std::vector<std::string> head{"technique"};
+    if (several) head.push_back("round");
+    head.insert(head.end(), {"wall median", "p5", "p95", "MAD", "cpu submit"});
+    if (gpu) head.push_back("gpu");
+    head.insert(head.end(), {"n", "vs " + results[0].technique, "properties"});
+    table.addRow(std::move(head));
+    for (size_t i = 0; i < results.size(); ++i) {
+        const RunResult& r = results[i];
+        const RunResult& base = results[i - i % perRound]; // the first technique of this row's round
+        std::vector<std::string> row{r.technique};
+        if (several) row.push_back(std::to_string(i / perRound + 1));
+        row.insert(row.end(), {fmt("%.2f ms", r.wall.median), fmt("%.2f", r.wall.p5), fmt("%.2f", r.wall.p95),
+                               fmt("%.2f", r.wall.mad), fmt("%.2f ms", r.cpuSubmit.median)});
+        if (gpu) row.push_back(r.gpuTotal.n ? fmt("%.2f ms", r.gpuTotal.median) : "n/a");
+        row.insert(row.end(), {std::to_string(r.wall.n),
+                               base.wall.median > 0 ? fmt("%.2fx", r.wall.median / base.wall.median) : "-",
+                               propertiesText(r)});
+        table.addRow(std::move(row));
     }
+    os << "\n";
+    table.print(os);
 }
 
 void ConsoleReport::printPairedRatios(std::ostream& os, const std::vector<RunResult>& results, int rounds) {
-    const size_t perRound = results.size() / size_t(rounds);
-    if (perRound == 0) return;
-    os << "\npaired over " << rounds << " rounds (ratio to " << results[0].technique
+    if (results.empty() || rounds < 1) return;
+    const size_t perRound = roundSize(results, rounds);
+    const size_t count = results.size() / perRound;
+    os << "\npaired over " << count << " rounds (ratio to " << results[0].technique
        << " within each round: median [min, max])\n";
+    TextColumns table;
+    table.addRow({"technique", "wall median", "vs " + results[0].technique, "[min, max]", "properties"});
     for (size_t i = 0; i < perRound; ++i) {
         std::vector<double> wall, ratio;
-        for (size_t k = 0; k < size_t(rounds); ++k) {
+        for (size_t k = 0; k < count; ++k) {
             const RunResult& r = results[k * perRound + i];
             const RunResult& base = results[k * perRound];
             wall.push_back(r.wall.median);
             if (base.wall.median > 0) ratio.push_back(r.wall.median / base.wall.median);
         }
         const Statistics w = Statistics::compute(wall), q = Statistics::compute(ratio);
-        os << pad(results[i].technique, 12) << pad(fmt("%.2f ms", w.median), 13)
-           << pad(fmt("%.3fx", q.median), 9)
-           << pad("[" + fmt("%.3f", q.min) + ", " + fmt("%.3f", q.max) + "]", 18)
-           << (results[i].properties.empty() ? "-" : results[i].properties) << "\n";
+        table.addRow({results[i].technique, fmt("%.2f ms", w.median), fmt("%.3fx", q.median),
+                      "[" + fmt("%.3f", q.min) + ", " + fmt("%.3f", q.max) + "]",
+                      propertiesText(results[i])});
     }
+    table.print(os);
 }
 
 void ConsoleReport::printAccuracyTable(std::ostream& os,
                                        const std::vector<std::pair<RunResult, AccuracyResult>>& results) {
-    os << "\n"
-       << pad("technique", 12) << pad("wall median", 13) << pad("wrong %", 9) << pad("no edge %", 11)
-       << pad("RMSE", 8) << pad("NaN/Inf/OOR", 13) << pad("gain cam", 10) << pad("gain light", 12)
-       << pad("flicker", 9) << "properties\n";
+    TextColumns table;
+    table.addRow({"technique", "wall median", "wrong %", "no edge %", "RMSE", "NaN/Inf/OOR", "gain cam",
+                  "gain light", "flicker", "properties"});
     for (const auto& [r, a] : results) {
         std::string bad = std::to_string(a.sanity.nan) + "/" + std::to_string(a.sanity.inf) + "/" +
                           std::to_string(a.sanity.outOfRange);
         auto opt = [&](double v) { return a.stabilityMeasured ? fmt("%.2f", v) : std::string("-"); };
-        os << pad(r.technique, 12) << pad(fmt("%.2f ms", r.wall.median), 13)
-           << pad(fmt("%.3f", a.hard.wrongPct), 9) << pad(fmt("%.3f", a.hard.wrongNoEdgePct), 11)
-           << pad(fmt("%.4f", a.soft.rmse), 8) << pad(bad, 13) << pad(opt(a.cameraGain), 10)
-           << pad(opt(a.lightGain), 12) << pad(opt(a.flicker), 9)
-           << (r.properties.empty() ? "-" : r.properties) << "\n";
+        table.addRow({r.technique, fmt("%.2f ms", r.wall.median), fmt("%.3f", a.hard.wrongPct),
+                      fmt("%.3f", a.hard.wrongNoEdgePct), fmt("%.4f", a.soft.rmse), bad, opt(a.cameraGain),
+                      opt(a.lightGain), opt(a.flicker), propertiesText(r)});
     }
+    os << "\n";
+    table.print(os);
 }
 
 void ConsoleReport::printTechniqueList(std::ostream& os) {
@@ -122,9 +140,11 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
                 return k.property + " " + join(k.values, "/");
             }) << "  (bench accuracy --sweep)\n";
         if (info.properties.empty()) os << "  properties: none\n";
+        TextColumns properties("  ");
         for (const PropertyDesc& p : info.properties)
-            os << "  " << pad(p.name, 18) << pad(propertyTypeName(p.type), 7)
-               << pad("default " + p.defaultValue, 16) << pad(p.rangeText(), 16) << p.description << "\n";
+            properties.addRow({p.name, propertyTypeName(p.type), "default " + p.defaultValue, p.rangeText(),
+                               p.description});
+        properties.print(os);
         os << "\n";
     }
     os << "scenes: ";

@@ -1,7 +1,7 @@
 #pragma once
 // The readable console output: a header saying what runs where (backend, renderer, GL version, scene,
 // timer verdict with its evidence), then one table row per technique. GPU columns appear only when the
-// timer is trusted.
+// timer is trusted. Tables are laid out by TextColumns: a column is as wide as its widest cell.
 #include <iosfwd>
 #include <vector>
 
@@ -14,11 +14,17 @@ class ConsoleReport {
 public:
     static void printHeader(std::ostream& os, const Harness& harness);
     static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
-    /// The table; ratios are taken against the `none` row when there is one (the overhead baseline).
-    static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results);
+    /// The table, one row per measurement. `results` holds `rounds` rounds of the same techniques in
+    /// the same order (--repeat; one round without it); with several rounds a column says which. The
+    /// ratio column ("vs <first technique>") divides each row's wall median by that of the first
+    /// technique of the same round, exactly as the CSV's wall_ratio_vs_baseline does (RunCommand,
+    /// Measurement::addRound), so the console and the rows never disagree.
+    static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results,
+                           int rounds = 1);
     /// After --repeat K: `results` holds K rounds of the same techniques in the same order; prints each
     /// technique's median over the rounds and its ratio to the first technique, taken per round (runs
-    /// next to each other) and summarised as median [min, max].
+    /// next to each other) and summarised as median [min, max]: the median of the rows'
+    /// wall_ratio_vs_baseline.
     static void printPairedRatios(std::ostream& os, const std::vector<RunResult>& results, int rounds);
     /// `bench accuracy`: time against error, one row per configuration.
     static void printAccuracyTable(std::ostream& os,

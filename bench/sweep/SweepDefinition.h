@@ -1,6 +1,7 @@
 #pragma once
 // The axes of `bench sweep`, from a JSON file, the command line, or both (the command line
-// replaces the file's value of an axis it names). Every axis is a list; the sweep is their cartesian
+// replaces what the file says: an axis it names, "repeat", and every run option it gives, such as
+// --frames for "frames"; SweepOptions::applyTo). Every axis is a list; the sweep is their cartesian
 // product, with the techniques (and their property lists) measured inside each combination:
 //
 //   {

@@ -6,6 +6,60 @@
 
 namespace sb {
 
+namespace {
+
+/// An option of a single run that a sweep passes to every run. `help` null: the backend list.
+struct PassThroughOption {
+    const char* name;
+    bool takesValue;
+    const char* help;
+    const char* alternative; ///< the option that sets the same thing another way, or null
+};
+
+// The one table of pass-through options: registration, replacement and the scan below read it.
+const PassThroughOption kPassThrough[] = {
+    {"--frames", true, "measured frames per configuration (replaces the file's frames or seconds)",
+     "--seconds"},
+    {"--seconds", true, "measure each configuration for this long instead", "--frames"},
+    {"--warmup", true, "discarded warm-up frames", nullptr},
+    {"--seed", true, "layout seed", nullptr},
+    {"--model", true, "model file replacing the layout mesh", nullptr},
+    {"--backend", true, nullptr, nullptr},
+    {"--gpu", true, "EGL device index", nullptr},
+    {"--ref-samples", true, "accuracy: reference samples per pixel", nullptr},
+    {"--light-index", true, "accuracy: which light to judge", nullptr},
+    {"--max-memory-gib", true, "refuse scenes estimated above this memory", nullptr},
+    {"--no-timer-check", false, "skip the GPU-timer calibration (rows say unchecked)", nullptr},
+    {"--no-stability", false, "accuracy: skip perturbation gain and flicker", nullptr},
+};
+
+const PassThroughOption* findPassThrough(const std::string& name) {
+    for (const PassThroughOption& o : kPassThrough)
+        if (name == o.name) return &o;
+    return nullptr;
+}
+
+/// Removes every occurrence of `option` from `args`: "option value" (or "option" for a flag) and
+/// "option=value". The scan steps over the value of every other pass-through option, so a value
+/// that happens to read like an option name (a model file called "--seed") is never taken for one.
+void removeOption(std::vector<std::string>& args, const std::string& option) {
+    const PassThroughOption* removed = findPassThrough(option);
+    const size_t arity = removed && removed->takesValue ? 2 : 1;
+    for (size_t i = 0; i < args.size();) {
+        if (args[i] == option) {
+            args.erase(args.begin() + ptrdiff_t(i),
+                       args.begin() + ptrdiff_t(std::min(args.size(), i + arity)));
+        } else if (args[i].rfind(option + "=", 0) == 0) {
+            args.erase(args.begin() + ptrdiff_t(i));
+        } else {
+            const PassThroughOption* other = findPassThrough(args[i]);
+            i += other && other->takesValue ? 2 : 1;
+        }
+    }
+}
+
+} // namespace
+
 void SweepOptions::add(CLI::App& app) {
     app.add_option("-t,--technique", techniques,
                    "technique[:prop=v1,v2...], repeatable; comma lists of property values are axes too");
@@ -20,30 +74,19 @@ void SweepOptions::add(CLI::App& app) {
     app.add_option("--light", light, "light types, comma-separated ('scene' = as the scene says)");
     app.add_option("--repeat", repeat, "rounds of interleaved measurement per combination");
     // Options of a single run that stay the same across the sweep; forwarded verbatim.
-    auto forward = [&](const char* name, const std::string& help) {
-        app.add_option_function<std::string>(
-            name,
-            [this, name](const std::string& v) {
-                passThrough.insert(passThrough.end(), {name, v});
-            },
-            help);
-    };
-    auto flag = [&](const char* name, const char* help) {
-        app.add_flag_function(
-            name, [this, name](int64_t) { passThrough.push_back(name); }, help);
-    };
-    forward("--frames", "measured frames per configuration");
-    forward("--seconds", "measure each configuration for this long instead");
-    forward("--warmup", "discarded warm-up frames");
-    forward("--seed", "layout seed");
-    forward("--model", "model file replacing the layout mesh");
-    forward("--backend", backendNames(true)); // headless: every combination runs in a worker process
-    forward("--gpu", "EGL device index");
-    forward("--ref-samples", "accuracy: reference samples per pixel");
-    forward("--light-index", "accuracy: which light to judge");
-    forward("--max-memory-gib", "refuse scenes estimated above this memory");
-    flag("--no-timer-check", "skip the GPU-timer calibration (rows say unchecked)");
-    flag("--no-stability", "accuracy: skip perturbation gain and flicker");
+    for (const PassThroughOption& o : kPassThrough) {
+        const std::string help = o.help ? o.help : backendNames(true); // headless: runs are worker processes
+        if (o.takesValue)
+            app.add_option_function<std::string>(
+                o.name,
+                [this, &o](const std::string& v) {
+                    passThrough.insert(passThrough.end(), {o.name, v});
+                },
+                help);
+        else
+            app.add_flag_function(
+                o.name, [this, &o](int64_t) { passThrough.push_back(o.name); }, help);
+    }
 }
 
 void SweepOptions::applyTo(SweepDefinition& d) const {
@@ -61,6 +104,15 @@ void SweepOptions::applyTo(SweepDefinition& d) const {
     axis(size, "--size", d.axes.size);
     axis(light, "--light", d.axes.light);
     if (repeat > 0) d.repeat = repeat;
+    // The command line replaces what the definition says, as it does for the axes: the file's value of
+    // an option given here goes (bench's parser takes an option once, so keeping both was an error),
+    // and so does the other half of a frame budget (--frames after a file's "seconds" must not be
+    // ignored because --seconds wins).
+    for (const PassThroughOption& o : kPassThrough)
+        if (passes(o.name)) {
+            removeOption(d.commonArgs, o.name);
+            if (o.alternative) removeOption(d.commonArgs, o.alternative);
+        }
     d.commonArgs.insert(d.commonArgs.end(), passThrough.begin(), passThrough.end());
 }
 

@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "bench/output/ProgressBar.h"
+#include "core/Strings.h"
 
 namespace sb {
 
@@ -18,6 +19,9 @@ size_t column(const CsvTable& t, const std::string& name) {
 void SweepReport::printPlan(std::ostream& os, const SweepPlan& plan, int shard, int shardCount) {
     os << "sweep '" << plan.name << "' (" << plan.id() << ", " << SweepPlan::modeName(plan.mode)
        << "): " << plan.groups.size() << " combinations, " << plan.configCount() << " configurations\n";
+    // What every run gets besides its combination's axes: where the file's and the command line's
+    // --frames, --warmup ... ended up.
+    if (!plan.commonArgs.empty()) os << "every run: " << join(plan.commonArgs, " ") << "\n";
     for (const SweepGroup& g : plan.groups) {
         const int owner = int(g.index % size_t(shardCount)) + 1;
         os << (owner == shard ? "* " : "  ") << "group " << g.index << " (shard " << owner << "/"

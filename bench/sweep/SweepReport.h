@@ -10,7 +10,8 @@ namespace sb {
 
 class SweepReport {
 public:
-    /// Every configuration with its index, group and shard (those of `shard` marked).
+    /// The options every run gets, then every configuration with its index, group and shard (those of
+    /// `shard` marked).
     static void printPlan(std::ostream& os, const SweepPlan& plan, int shard, int shardCount);
     /// Counts, failures (first few with their messages), where the rows are, how to continue.
     static void printSummary(std::ostream& os, const SweepPlan& plan, const SweepRunOptions& options,
