@@ -213,3 +213,27 @@ TEST(ModelLoaderTest, EachObjGroupIsItsOwnObjectWithItsOwnBounds) {
     const Mesh joined = ModelLoader::load(kSpider);
     EXPECT_EQ(joined.parts.size(), 19u);
 }
+
+TEST(ModelLoaderTest, FbxUpAxisIsHonoured) {
+    const std::string box = "/usr/share/assimp/models/FBX/maxPbrMaterial_metalRough.fbx";
+    REQUIRE_FILE(box);
+    // An ASCII FBX box standing on y = 0 with "UpAxis" 1 (Y). The same file saying "UpAxis" 2 (Z) must
+    // come out turned by -90 degrees about X, (x, y, z) -> (x, z, -y): a closed-form swap of bounds.
+    // Tolerance 1e-4 of extents around 20: float rounding of the rotation.
+    std::ifstream in(box);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string yUp = "P: \"UpAxis\", \"int\", \"Integer\", \"\",1";
+    const size_t at = text.find(yUp);
+    ASSERT_NE(at, std::string::npos);
+    const std::string zUpPath =
+        writeTemp("sb_z_up.fbx", text.replace(at, yUp.size(), yUp.substr(0, yUp.size() - 1) + "2"));
+    const Aabb y = ModelLoader::load(box).computeBounds(), z = ModelLoader::load(zUpPath).computeBounds();
+    EXPECT_NEAR(y.min.y, 0.0f, 1e-4f) << "the box stands on y = 0 as the file says";
+    EXPECT_NEAR(z.min.x, y.min.x, 1e-4f);
+    EXPECT_NEAR(z.max.x, y.max.x, 1e-4f);
+    EXPECT_NEAR(z.min.y, y.min.z, 1e-4f);
+    EXPECT_NEAR(z.max.y, y.max.z, 1e-4f);
+    EXPECT_NEAR(z.min.z, -y.max.y, 1e-4f);
+    EXPECT_NEAR(z.max.z, -y.min.y, 1e-4f);
+    std::remove(zUpPath.c_str());
+}
