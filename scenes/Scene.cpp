@@ -166,4 +166,10 @@ size_t Scene::totalTriangles() const {
     return total;
 }
 
+size_t Scene::countLayoutInstances() const {
+    size_t n = 0;
+    for (const auto& instance : instances) n += instance.fromLayout && instance.object == 0 ? 1 : 0;
+    return n;
+}
+
 } // namespace sb

@@ -54,6 +54,10 @@ struct Instance {
     bool fromLayout = false; ///< placed by the random layout (these are what --scale scales)
     glm::mat4 model{1.0f};   ///< derived from the above by Scene::updateTransforms()
     uint32_t objectId = 0;   ///< 1-based, unique, written into the G-buffer (0 = background)
+    /// Which object of a multi-object model file this instance draws (0 for every other mesh): a
+    /// file's objects are separate meshes placed by one instance each, all with the same transform
+    /// (SceneLoader), so the "instances" a user asked for are those with object 0.
+    uint32_t object = 0;
 };
 
 enum class LightType { Directional, Point, Spot };
@@ -118,6 +122,9 @@ struct Scene {
     /// Recorded in every CSV row so two rows can be trusted to describe the same content.
     std::string computeContentHash() const;
     size_t totalTriangles() const; ///< over all instances
+    /// Layout instances as the user counts them (--instances): one per placement, however many
+    /// objects its model file has.
+    size_t countLayoutInstances() const;
 };
 
 } // namespace sb

@@ -38,8 +38,10 @@ struct Context {
     Scene scene;
     const SceneOptions& options;
     std::string source;
-    std::map<std::string, uint32_t> meshByName;
+    /// A scene file's mesh name -> its meshes: one, or one per object of a multi-object model file.
+    std::map<std::string, std::vector<uint32_t>> meshByName;
     std::optional<size_t> firstLayoutInstance;
+    std::string replacedMesh; ///< the layout's mesh name when --model replaces it
 };
 
 // ---- meshes -------------------------------------------------------------------------------------
@@ -79,12 +81,19 @@ Mesh generateMesh(Context& ctx, const JsonReader& m, const std::string& generato
     }
 }
 
-Mesh loadModelMesh(const Context& ctx, const JsonReader& m) {
-    m.requireObject({"name", "file", "shadow_planes", "proxies"});
+/// A "file" mesh's objects (scenes/ModelLoader.h), errors located at its "file" key (so they name the
+/// scene file, the JSON path and the model file).
+std::vector<Mesh> loadModelObjects(const Context& ctx, const JsonReader& m) {
+    m.requireObject({"name", "file", "up", "shadow_planes", "proxies"});
+    std::optional<ModelUp> up;
+    if (m.has("up")) {
+        up = parseModelUp(m["up"].string());
+        if (!up) m["up"].fail("the file's up axis, one of " + modelUpChoices());
+    }
     fs::path path = m["file"].string();
     if (path.is_relative()) path = fs::path(ctx.source).parent_path() / path;
     try {
-        return ModelLoader::load(path.string());
+        return ModelLoader::loadObjects(path.string(), up);
     } catch (const Error& e) {
         m["file"].error(e.what());
     }
@@ -268,14 +277,63 @@ ShadowProxy parseProxy(const JsonReader& r) {
     return p;
 }
 
+/// Centre and radius of the sphere around the AABB centre that holds every vertex of `meshes`.
+std::pair<glm::vec3, float> boundingSphere(const std::vector<Mesh>& meshes) {
+    Aabb bounds;
+    for (const Mesh& mesh : meshes) bounds.extend(mesh.computeBounds());
+    const glm::vec3 centre = bounds.center();
+    float radius = 0.0f;
+    for (const Mesh& mesh : meshes)
+        for (const auto& p : mesh.positions) radius = std::max(radius, glm::length(p - centre));
+    return {centre, radius};
+}
+
+/// --model: the layout's mesh (`meshes`, before it is stored) becomes the model's objects, moved and
+/// scaled together onto the replaced mesh's bounding sphere so the layout, cameras and light fits of
+/// the scene still frame it. The meshes are named after the model file ("horse.3ds", or
+/// "test1.3ds:Box01" per object), so every error about them names the file, not the replaced mesh.
+void replaceWithModel(Context& ctx, std::vector<Mesh>& meshes) {
+    std::vector<Mesh> model = ModelLoader::loadObjects(ctx.options.modelPath);
+    const auto [oldCentre, oldRadius] = boundingSphere(meshes);
+    const auto [newCentre, newRadius] = boundingSphere(model);
+    const float s = newRadius > 0.0f ? oldRadius / newRadius : 1.0f;
+    const std::string file = fs::path(ctx.options.modelPath).filename().string();
+    for (Mesh& object : model) {
+        for (auto& p : object.positions) p = (p - newCentre) * s + oldCentre;
+        object.name = model.size() == 1 ? file : file + ":" + object.name;
+        // The replaced mesh's planes and declared proxies were for its geometry: a model file has no
+        // planes, and the proxy technique fits new proxies to each object.
+        object.shadowPlanes.clear();
+        object.proxies.clear();
+        object.proxiesDeclared = false;
+    }
+    meshes = std::move(model);
+}
+
+/// The meshes of one entry of "meshes": a generated mesh, or a model file's objects, each object its
+/// own mesh "<name>:<object>" (one caster each for proxy and blob). A model whose entry declares
+/// "shadow_planes" stays one mesh, its objects named parts, since a plane may name parts of several.
+std::vector<Mesh> entryMeshes(Context& ctx, const JsonReader& m, const std::string& name,
+                              const std::string& generator) {
+    if (!generator.empty()) {
+        Mesh mesh = generateMesh(ctx, m, generator);
+        mesh.name = name;
+        return {std::move(mesh)};
+    }
+    std::vector<Mesh> objects = loadModelObjects(ctx, m);
+    if (objects.size() == 1 || m.has("shadow_planes")) return {ModelLoader::join(objects, name)};
+    for (Mesh& object : objects) object.name = name + ":" + object.name;
+    return objects;
+}
+
 void parseMesh(Context& ctx, const JsonReader& m) {
     if (!m.value().is_object()) m.fail("an object");
     const std::string name = m["name"].string();
     if (ctx.meshByName.count(name)) m["name"].error("duplicate mesh name \"" + name + "\"");
     if (m.has("generator") == m.has("file")) m.error("expected exactly one of \"generator\" or \"file\"");
     std::string generator = m.has("generator") ? m["generator"].string() : "";
-    Mesh mesh = m.has("file") ? loadModelMesh(ctx, m) : generateMesh(ctx, m, generator);
-    mesh.name = name;
+    std::vector<Mesh> meshes = entryMeshes(ctx, m, name, generator);
+    Mesh& mesh = meshes.front();
     // Planes live in the object space of the final mesh (after tessellation options and scaling).
     // Declared planes replace the built-in ones ([] means none); model files only get declared ones.
     if (m.has("shadow_planes")) {
@@ -287,16 +345,22 @@ void parseMesh(Context& ctx, const JsonReader& m) {
             m["generator"].error(e.what());
         }
     }
-    // Proxies (the `proxy` technique) in the mesh's object space; [] means none, no key: fitted.
+    // Proxies (the `proxy` technique) in the mesh's object space; [] means none, no key: fitted. A
+    // model's objects share one object space: the first holds the declared ones, the others none.
     if (m.has("proxies")) {
-        mesh.proxiesDeclared = true;
+        for (Mesh& object : meshes) object.proxiesDeclared = true;
         for (const auto& e : m["proxies"].elements()) mesh.proxies.push_back(parseProxy(e));
     }
-    ctx.meshByName[name] = uint32_t(ctx.scene.meshes.size());
-    ctx.scene.meshes.push_back(std::move(mesh));
+    if (name == ctx.replacedMesh) replaceWithModel(ctx, meshes);
+    std::vector<uint32_t>& indices = ctx.meshByName[name];
+    for (Mesh& object : meshes) {
+        indices.push_back(uint32_t(ctx.scene.meshes.size()));
+        ctx.scene.meshes.push_back(std::move(object));
+    }
 }
 
-uint32_t meshReference(const Context& ctx, const JsonReader& r) {
+/// The meshes a scene file's mesh name stands for (several for a multi-object model file).
+const std::vector<uint32_t>& meshReference(const Context& ctx, const JsonReader& r) {
     const std::string name = r.string();
     const auto it = ctx.meshByName.find(name);
     if (it != ctx.meshByName.end()) return it->second;
@@ -305,6 +369,15 @@ uint32_t meshReference(const Context& ctx, const JsonReader& r) {
 }
 
 // ---- instances and layout -------------------------------------------------------------------------
+
+/// One instance per mesh of `meshes` (the objects of a model file), all with `inst`'s transform.
+void pushObjects(Context& ctx, Instance inst, const std::vector<uint32_t>& meshes) {
+    for (uint32_t k = 0; k < meshes.size(); ++k) {
+        inst.mesh = meshes[k];
+        inst.object = k;
+        ctx.scene.instances.push_back(inst);
+    }
+}
 
 void parseInstanceFlags(Instance& inst, const JsonReader& r) {
     if (r.has("color")) inst.color = r["color"].vec3();
@@ -315,12 +388,12 @@ void parseInstanceFlags(Instance& inst, const JsonReader& r) {
 void parseInstance(Context& ctx, const JsonReader& r) {
     r.requireObject({"mesh", "position", "rotation", "scale", "color", "casts_shadow", "receives_shadow"});
     Instance inst;
-    inst.mesh = meshReference(ctx, r["mesh"]);
+    const std::vector<uint32_t> meshes = meshReference(ctx, r["mesh"]);
     if (r.has("position")) inst.position = r["position"].vec3();
     if (r.has("rotation")) inst.rotationDeg = r["rotation"].vec3();
     if (r.has("scale")) inst.scale = r["scale"].positiveNumber();
     parseInstanceFlags(inst, r);
-    ctx.scene.instances.push_back(inst);
+    pushObjects(ctx, inst, meshes);
 }
 
 std::string gib(uint64_t bytes) {
@@ -331,7 +404,7 @@ std::string gib(uint64_t bytes) {
 
 /// Estimated bytes: every mesh once (retained buffers), plus per instance the copy that immediate
 /// mode and display lists make of its triangles (3 vertices of 24 B each) and its instance data.
-uint64_t estimateMemory(const Scene& scene, uint32_t layoutMesh, uint64_t layoutCount) {
+uint64_t estimateMemory(const Scene& scene, const std::vector<uint32_t>& layoutMeshes, uint64_t layoutCount) {
     uint64_t bytes = 0;
     for (const auto& mesh : scene.meshes)
         bytes += mesh.vertexCount() * kVertexBytes + mesh.indices.size() * 4;
@@ -339,7 +412,8 @@ uint64_t estimateMemory(const Scene& scene, uint32_t layoutMesh, uint64_t layout
         return uint64_t(scene.meshes[mesh].triangleCount()) * 3 * kVertexBytes + kInstanceBytes;
     };
     for (const auto& inst : scene.instances) bytes += perInstance(inst.mesh);
-    return bytes + layoutCount * perInstance(layoutMesh);
+    for (uint32_t mesh : layoutMeshes) bytes += layoutCount * perInstance(mesh);
+    return bytes;
 }
 
 /// The instance count of the layout: --instances wins over the file; both are bounded. The file's
@@ -362,9 +436,9 @@ uint32_t layoutCount(const Context& ctx, const JsonReader& layout) {
 }
 
 /// `layout` is null for a scene without one (then only the explicit instances count).
-void checkMemory(const Context& ctx, const JsonReader& where, const JsonReader* layout, uint32_t layoutMesh,
-                 uint32_t count) {
-    const uint64_t bytes = estimateMemory(ctx.scene, layoutMesh, count);
+void checkMemory(const Context& ctx, const JsonReader& where, const JsonReader* layout,
+                 const std::vector<uint32_t>& layoutMeshes, uint32_t count) {
+    const uint64_t bytes = estimateMemory(ctx.scene, layoutMeshes, count);
     if (bytes <= ctx.options.memoryLimitBytes) return;
     const std::string what = "estimated memory " + gib(bytes) + " GiB exceeds the limit of " +
                              gib(ctx.options.memoryLimitBytes) + " GiB";
@@ -373,34 +447,10 @@ void checkMemory(const Context& ctx, const JsonReader& where, const JsonReader* 
     (*layout)["count"].error(std::to_string(count) + " instances: " + what);
 }
 
-/// Centre and radius of the sphere around the AABB centre that holds every vertex.
-std::pair<glm::vec3, float> boundingSphere(const Mesh& mesh) {
-    const glm::vec3 centre = mesh.computeBounds().center();
-    float radius = 0.0f;
-    for (const auto& p : mesh.positions) radius = std::max(radius, glm::length(p - centre));
-    return {centre, radius};
-}
-
-/// --model: the layout's mesh becomes the model, moved and scaled onto the replaced mesh's bounding
-/// sphere so the layout, cameras and light fits of the scene still frame it.
-void replaceWithModel(Context& ctx, uint32_t meshIndex) {
-    Mesh model = ModelLoader::load(ctx.options.modelPath);
-    Mesh& old = ctx.scene.meshes[meshIndex];
-    const auto [oldCentre, oldRadius] = boundingSphere(old);
-    const auto [newCentre, newRadius] = boundingSphere(model);
-    const float s = newRadius > 0.0f ? oldRadius / newRadius : 1.0f;
-    for (auto& p : model.positions) p = (p - newCentre) * s + oldCentre;
-    model.name = old.name;
-    model.shadowPlanes.clear(); // the replaced mesh's planes were for its geometry; a model file has none
-    // Its declared proxies too: the technique fits new ones to the model.
-    model.proxies.clear();
-    model.proxiesDeclared = false;
-    old = std::move(model);
-}
-
 /// Seeded uniform placement in the region box. Six numbers are drawn per instance whether or not
 /// they are used, so the positions do not depend on yaw_only.
-void placeLayout(Context& ctx, const JsonReader& layout, uint32_t mesh, uint32_t count) {
+void placeLayout(Context& ctx, const JsonReader& layout, const std::vector<uint32_t>& meshes,
+                 uint32_t count) {
     const auto region = layout["region"].elements();
     if (region.size() != 2) layout["region"].fail("[[min x, y, z], [max x, y, z]]");
     const glm::vec3 lo = region[0].vec3(), hi = region[1].vec3();
@@ -414,7 +464,6 @@ void placeLayout(Context& ctx, const JsonReader& layout, uint32_t mesh, uint32_t
     const double tilt =
         layout.has("max_tilt") ? layout["max_tilt"].numberIn(0, 90, "an angle in [0, 90]") : 10.0;
     Instance proto;
-    proto.mesh = mesh;
     proto.scale = scale;
     proto.fromLayout = true;
     parseInstanceFlags(proto, layout);
@@ -426,18 +475,17 @@ void placeLayout(Context& ctx, const JsonReader& layout, uint32_t mesh, uint32_t
         const float yaw = float(rng.uniform(-180.0, 180.0));
         const float pitch = float(rng.uniform(-tilt, tilt)), roll = float(rng.uniform(-tilt, tilt));
         inst.rotationDeg = yawOnly ? glm::vec3(0.0f, yaw, 0.0f) : glm::vec3(pitch, yaw, roll);
-        ctx.scene.instances.push_back(inst);
+        pushObjects(ctx, inst, meshes);
     }
 }
 
 void parseLayout(Context& ctx, const JsonReader& layout) {
     layout.requireObject({"mesh", "count", "seed", "region", "scale", "yaw_only", "max_tilt", "color",
                           "casts_shadow", "receives_shadow"});
-    const uint32_t mesh = meshReference(ctx, layout["mesh"]);
-    if (!ctx.options.modelPath.empty()) replaceWithModel(ctx, mesh);
+    const std::vector<uint32_t> meshes = meshReference(ctx, layout["mesh"]);
     const uint32_t count = layoutCount(ctx, layout);
-    checkMemory(ctx, layout, &layout, mesh, count);
-    placeLayout(ctx, layout, mesh, count);
+    checkMemory(ctx, layout, &layout, meshes, count);
+    placeLayout(ctx, layout, meshes, count);
 }
 
 // ---- lights, cameras, effects ---------------------------------------------------------------------
@@ -594,14 +642,16 @@ void parseDocument(Context& ctx, const JsonReader& root) {
         {"name", "description", "meshes", "instances", "layout", "lights", "cameras", "effects", "ambient"});
     if (root.has("name")) ctx.scene.name = root["name"].string();
     if (root.has("description")) root["description"].string();
+    checkOptionsApply(ctx, root.has("layout"));
+    // --model replaces the layout's mesh as it is parsed, so explicit instances of it get the model too.
+    if (!ctx.options.modelPath.empty()) ctx.replacedMesh = root["layout"]["mesh"].string();
     for (const auto& m : root["meshes"].elements(true)) parseMesh(ctx, m);
     if (root.has("instances"))
         for (const auto& i : root["instances"].elements()) parseInstance(ctx, i);
-    checkOptionsApply(ctx, root.has("layout"));
     if (root.has("layout"))
         parseLayout(ctx, root["layout"]);
     else
-        checkMemory(ctx, root, nullptr, 0, 0);
+        checkMemory(ctx, root, nullptr, {}, 0);
     if (ctx.scene.instances.empty())
         root.error("expected at least one instance (\"instances\" or \"layout\")");
     if (root.has("lights"))

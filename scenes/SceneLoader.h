@@ -17,7 +17,13 @@
 // }
 // Details:
 // - "description": free text, ignored. Files may contain // comments.
-// - meshes: exactly one of "generator" or "file". Generator parameters (each generator accepts only
+// - meshes: exactly one of "generator" or "file". A model file (scenes/ModelLoader.h) comes out Y-up;
+//   "up" ("x", "-x", "y", "-y", "z", "-z") names the file's up axis where the file does not (a Z-up 3DS
+//   export: "up": "z"). Each object of a multi-object file becomes its own mesh "<name>:<object>",
+//   and every instance of the entry (explicit or from the layout) one instance per object with the
+//   same transform, so each object is a caster of its own (a fitted proxy, a blob); with
+//   "shadow_planes" the file stays one mesh, its objects named parts a plane can name together.
+//   Generator parameters (each generator accepts only
 //   its own): sphere "radius" (1), box "half_extent" ([1,1,1]), cylinder "radius" (1), "height" (2),
 //   plane "size" (100), lantern "radius" (1), "thickness" (0.08) (a closed shell with four holes cut
 //   through, the jack-o'-lantern of GPU Gems 9); "tessellation" defaults: sphere/cylinder/aircraft/
@@ -66,7 +72,8 @@
 //   "first_instance" with "offset" (in units of that instance's scale, so --scale keeps the framing):
 //   eye = first layout instance + offset * scale, target = that instance. An up parallel to the view
 //   direction (looking straight down) is replaced by -Z.
-// SceneOptions: --instances/--model need a layout (error otherwise); --light moves a directional
+// SceneOptions: --instances/--model need a layout (error otherwise); --model's meshes are named after the
+// model file ("horse.3ds", "test1.3ds:Box01"), so errors about them name it; --light moves a directional
 // light to centre - direction * 2 * radius of the casters' bounds, a spot's cone then encloses them.
 // Memory estimate (limit SceneOptions::memoryLimitBytes): mesh vertex (24 B) + index bytes, plus per
 // instance its triangles * 3 * 24 B (immediate / display-list copies) + 128 B.

@@ -170,9 +170,9 @@ const BadInput kBadInputs[] = {
     {"accuracy_nothing_faces_light",
      "accuracy --scene " + std::string(SB_SOURCE_DIR) + "/tests/data/light_from_below.json" + kQuickNoLayout,
      2, "nothing to judge"},
-    {"accuracy_scene_embree_refuses",
+    {"accuracy_scene_infinite_vertex",
      "accuracy --scene " + std::string(SB_SOURCE_DIR) + "/tests/data/infinite_vertex.json" + kQuickNoLayout,
-     2, "non-finite"},
+     2, "infinite_vertex.obj': vertex 1 "},
     {"unwritable_csv", "-t none" + kQuick + " --csv /proc/shadowbench/r.csv", 1, "/proc/shadowbench/r.csv"},
 };
 

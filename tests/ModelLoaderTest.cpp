@@ -1,7 +1,10 @@
-// Unit tests of scenes/ModelLoader with the fixture tests/data/cube.obj (8 corners, 6 quads).
+// Unit tests of scenes/ModelLoader with the fixture tests/data/cube.obj (8 corners, 6 quads) and the real
+// model files of glmark2-data and assimp-testmodels (scripts/install-deps.sh installs both).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +17,14 @@ using namespace sb;
 namespace {
 
 const std::string kCube = std::string(SB_SOURCE_DIR) + "/tests/data/cube.obj";
+const std::string kInfinite = std::string(SB_SOURCE_DIR) + "/tests/data/infinite_vertex.obj";
+const std::string kHorse = "/usr/share/glmark2/models/horse.3ds";
+const std::string kRoom = "/usr/share/assimp/models/3DS/test1.3ds";    // a box room, nine 3DS objects
+const std::string kSpider = "/usr/share/assimp/models/OBJ/spider.obj"; // nineteen OBJ groups
+
+/// Skips a test whose model file is not installed (scripts/install-deps.sh installs it).
+#define REQUIRE_FILE(path)                                                                                   \
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not installed (scripts/install-deps.sh)"
 
 std::string writeTemp(const std::string& name, const std::string& text) {
     const auto path = std::filesystem::temp_directory_path() / name;
@@ -91,4 +102,138 @@ TEST(ModelLoaderTest, ObjGroupsBecomeNamedParts) {
             EXPECT_EQ(m.positions[m.indices[k]].y, y) << part.name;
     }
     std::remove(path.c_str());
+}
+
+TEST(ModelLoaderTest, NonFiniteVertexIsRefusedNamingTheFile) {
+    // tests/data/infinite_vertex.obj has x = 1e39, beyond float range: it reads as inf. A NaN written
+    // out in the file is refused the same way. Every technique downstream got an empty or NaN frame.
+    EXPECT_EQ(errorOf(kInfinite), "model file '" + kInfinite +
+                                      "': vertex 1 of mesh 'defaultobject' is (inf, 0, 0): a model with "
+                                      "infinite or NaN positions cannot be drawn");
+    const std::string nan = writeTemp("sb_nan_vertex.obj", "v 0 0 0\nv 0 nan 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string error = errorOf(nan);
+    EXPECT_EQ(error.rfind("model file '" + nan + "': vertex 1 ", 0), 0u) << error;
+    EXPECT_NE(error.find("(0, nan, 0)"), std::string::npos) << error;
+    std::remove(nan.c_str());
+}
+
+TEST(ModelLoaderTest, RotationToYUpTakesEachAxisToPlusY) {
+    // Closed form: R * up = +Y, and R is a rotation (orthonormal columns, determinant +1), so a model
+    // is stood up, never mirrored.
+    const std::map<ModelUp, glm::vec3> axes = {{ModelUp::PosX, {1, 0, 0}}, {ModelUp::NegX, {-1, 0, 0}},
+                                               {ModelUp::PosY, {0, 1, 0}}, {ModelUp::NegY, {0, -1, 0}},
+                                               {ModelUp::PosZ, {0, 0, 1}}, {ModelUp::NegZ, {0, 0, -1}}};
+    for (const auto& [up, axis] : axes) {
+        const glm::mat3 r = ModelLoader::rotationToYUp(up);
+        EXPECT_EQ(r * axis, glm::vec3(0, 1, 0)) << modelUpName(up);
+        EXPECT_EQ(glm::determinant(r), 1.0f) << modelUpName(up);
+        EXPECT_EQ(glm::transpose(r) * r, glm::mat3(1.0f)) << modelUpName(up);
+        EXPECT_EQ(parseModelUp(modelUpName(up)), up);
+    }
+}
+
+TEST(ModelLoaderTest, HorseStandsUpright) {
+    REQUIRE_FILE(kHorse);
+    // glmark2's rearing horse is Y-up as stored: 1.254 wide (x), 1.704 tall (y), 0.773 from side to
+    // side (z) (the extents of the file's vertices, read with a 3DS dump). assimp's fixed 3ds Max
+    // rotation made it 0.773 tall and 1.704 deep: lying on its side. Tolerance 1e-3: printed digits.
+    const glm::vec3 e = ModelLoader::load(kHorse).computeBounds().extent();
+    EXPECT_NEAR(e.x, 1.2537f, 1e-3f);
+    EXPECT_NEAR(e.y, 1.7038f, 1e-3f);
+    EXPECT_NEAR(e.z, 0.7732f, 1e-3f);
+    EXPECT_GT(e.y, std::max(e.x, e.z)) << "the height of a rearing horse is its longest extent";
+}
+
+TEST(ModelLoaderTest, RoomStandsOnItsFloor) {
+    REQUIRE_FILE(kRoom);
+    // assimp's test1.3ds: a floor slab Box01, a ceiling slab Box10, four walls, and a pyramid of three
+    // crates: Box05 and Box06 on the floor, Box07 resting on both. Up is +Y when the floor is the thin
+    // slab below the crates and each crate's bottom touches what carries it. Tolerance 0.01: the
+    // file's crates overlap their supports by about 0.004.
+    std::map<std::string, Aabb> box;
+    for (const Mesh& m : ModelLoader::loadObjects(kRoom)) box[m.name] = m.computeBounds();
+    ASSERT_EQ(box.size(), 9u);
+    const Aabb floor = box["Box01"], ceiling = box["Box10"];
+    EXPECT_LT(floor.extent().y, 0.05f * floor.extent().x) << "the floor is a horizontal slab";
+    EXPECT_LT(floor.max.y, ceiling.min.y);
+    for (const char* crate : {"Box05", "Box06"}) {
+        EXPECT_NEAR(box[crate].min.y, floor.max.y, 0.01f) << crate << " stands on the floor";
+        EXPECT_NEAR(box["Box07"].min.y, box[crate].max.y, 0.01f) << "Box07 rests on " << crate;
+    }
+}
+
+namespace {
+
+/// The bounds of each `g` group of an OBJ file, read as text: the independent answer to the loader.
+std::map<std::string, Aabb> objGroupBounds(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<glm::vec3> vertices;
+    std::map<std::string, Aabb> groups;
+    std::string group = "default", line;
+    while (std::getline(in, line)) {
+        std::istringstream ls(line);
+        std::string tag;
+        ls >> tag;
+        if (tag == "v") {
+            glm::vec3 v;
+            ls >> v.x >> v.y >> v.z;
+            vertices.push_back(v);
+        } else if (tag == "g" || tag == "o") {
+            ls >> group;
+        } else if (tag == "f") {
+            for (std::string corner; ls >> corner;) {
+                const long i = std::stol(corner.substr(0, corner.find('/')));
+                groups[group].extend(vertices[size_t(i > 0 ? i - 1 : long(vertices.size()) + i)]);
+            }
+        }
+    }
+    return groups;
+}
+
+} // namespace
+
+TEST(ModelLoaderTest, EachObjGroupIsItsOwnObjectWithItsOwnBounds) {
+    REQUIRE_FILE(kSpider);
+    // Every group of spider.obj is one object, with the bounds of the vertices its faces use in the
+    // file (OBJ has no node transforms, and no up axis: read as is). Tolerance 1e-4 (coordinates up to
+    // 110): assimp's number parser rounds the last bit differently from iostream's.
+    const std::map<std::string, Aabb> expected = objGroupBounds(kSpider);
+    const std::vector<Mesh> objects = ModelLoader::loadObjects(kSpider);
+    ASSERT_EQ(expected.size(), 19u);
+    ASSERT_EQ(objects.size(), expected.size());
+    for (const Mesh& m : objects) {
+        ASSERT_TRUE(expected.count(m.name)) << m.name;
+        const Aabb b = m.computeBounds(), e = expected.at(m.name);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(b.min[a], e.min[a], 1e-4f) << m.name << " axis " << a;
+            EXPECT_NEAR(b.max[a], e.max[a], 1e-4f) << m.name << " axis " << a;
+        }
+    }
+    // load() joins them, each object's triangles a part of the one mesh.
+    const Mesh joined = ModelLoader::load(kSpider);
+    EXPECT_EQ(joined.parts.size(), 19u);
+}
+
+TEST(ModelLoaderTest, FbxUpAxisIsHonoured) {
+    const std::string box = "/usr/share/assimp/models/FBX/maxPbrMaterial_metalRough.fbx";
+    REQUIRE_FILE(box);
+    // An ASCII FBX box standing on y = 0 with "UpAxis" 1 (Y). The same file saying "UpAxis" 2 (Z) must
+    // come out turned by -90 degrees about X, (x, y, z) -> (x, z, -y): a closed-form swap of bounds.
+    // Tolerance 1e-4 of extents around 20: float rounding of the rotation.
+    std::ifstream in(box);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string yUp = "P: \"UpAxis\", \"int\", \"Integer\", \"\",1";
+    const size_t at = text.find(yUp);
+    ASSERT_NE(at, std::string::npos);
+    const std::string zUpPath =
+        writeTemp("sb_z_up.fbx", text.replace(at, yUp.size(), yUp.substr(0, yUp.size() - 1) + "2"));
+    const Aabb y = ModelLoader::load(box).computeBounds(), z = ModelLoader::load(zUpPath).computeBounds();
+    EXPECT_NEAR(y.min.y, 0.0f, 1e-4f) << "the box stands on y = 0 as the file says";
+    EXPECT_NEAR(z.min.x, y.min.x, 1e-4f);
+    EXPECT_NEAR(z.max.x, y.max.x, 1e-4f);
+    EXPECT_NEAR(z.min.y, y.min.z, 1e-4f);
+    EXPECT_NEAR(z.max.y, y.max.z, 1e-4f);
+    EXPECT_NEAR(z.min.z, -y.max.y, 1e-4f);
+    EXPECT_NEAR(z.max.z, -y.min.y, 1e-4f);
+    std::remove(zUpPath.c_str());
 }

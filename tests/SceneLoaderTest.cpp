@@ -2,6 +2,7 @@
 // layout is deterministic; command-line options act on what they promise and nothing else.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
@@ -10,6 +11,8 @@
 #include "core/Error.h"
 #include "core/SplitMix64.h"
 #include "scenes/Math.h"
+#include "scenes/ModelLoader.h"
+#include "scenes/ProxyCollection.h"
 #include "scenes/SceneLoader.h"
 
 using namespace sb;
@@ -481,4 +484,140 @@ TEST(SceneLoaderTest, JackOLanternHasTheLightInsideTheClosedShell) {
             EXPECT_GT(s.lights[0].range, glm::length(corner - s.lights[0].position));
         }
     }
+}
+
+// ---- model files: errors naming the file, objects kept apart -----------------------------------------
+
+namespace {
+
+const std::string kInfinite = std::string(SB_SOURCE_DIR) + "/tests/data/infinite_vertex.obj";
+const std::string kRoom = "/usr/share/assimp/models/3DS/test1.3ds"; // nine 3DS objects (assimp-testmodels)
+
+/// Whether unit-shape point `q` (the proxy frame's inverse applied) lies inside `shape`, within `eps`.
+bool insideUnitShape(ShadowProxy::Shape shape, const glm::vec3& q, float eps) {
+    switch (shape) {
+    case ShadowProxy::Shape::Sphere:
+        return glm::length(q) <= 1.0f + eps;
+    case ShadowProxy::Shape::Box:
+        return std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}) <= 1.0f + eps;
+    case ShadowProxy::Shape::Cylinder:
+        return glm::length(glm::vec2(q)) <= 1.0f + eps && std::abs(q.z) <= 1.0f + eps;
+    }
+    return false;
+}
+
+} // namespace
+
+TEST(SceneLoaderTest, ModelOptionNamesTheModelFileNotTheReplacedMesh) {
+    // Errors about the mesh (volume's open edges, Embree's non-finite vertex ...) print its name: it
+    // must be the file the user gave, not the layout mesh's "ball" they never typed.
+    SceneOptions options;
+    options.modelPath = kCube;
+    const Scene s = SceneLoader::parse(sceneJson(), "test.json", options);
+    EXPECT_EQ(s.meshes[0].name, "cube.obj");
+}
+
+TEST(SceneLoaderTest, InfiniteVertexIsRefusedOnEveryPath) {
+    // A scene file's model entry: the scene file, the JSON path and the model file are all named.
+    const std::string scene = std::string(SB_SOURCE_DIR) + "/tests/data/infinite_vertex.json";
+    std::string error;
+    try {
+        SceneLoader::load(scene);
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::BadInput);
+        error = e.what();
+    }
+    EXPECT_EQ(error.rfind(scene + ": /meshes/0/file: model file '", 0), 0u) << error;
+    EXPECT_NE(error.find("infinite_vertex.obj': vertex 1 of mesh 'defaultobject' is (inf, 0, 0)"),
+              std::string::npos)
+        << error;
+    // --model: the model file is named.
+    SceneOptions options;
+    options.modelPath = kInfinite;
+    error = errorOf(sceneJson(), options);
+    EXPECT_EQ(error.rfind("model file '" + kInfinite + "': vertex 1 ", 0), 0u) << error;
+}
+
+TEST(SceneLoaderTest, MultiObjectModelKeepsEveryObjectAsItsOwnCaster) {
+    if (!std::filesystem::exists(kRoom)) GTEST_SKIP() << kRoom << " not installed (scripts/install-deps.sh)";
+    // test1.3ds has nine objects: --model makes nine meshes, and each of the 10 layout placements nine
+    // instances with one transform, so the user's 10 instances are still 10.
+    SceneOptions options;
+    options.modelPath = kRoom;
+    const Scene s = SceneLoader::parse(sceneJson(), "test.json", options);
+    const std::vector<Mesh> objects = ModelLoader::loadObjects(kRoom);
+    ASSERT_EQ(objects.size(), 9u);
+    ASSERT_EQ(s.meshes.size(), 10u); // the nine objects, then the ground
+    EXPECT_EQ(s.instances.size(), 1u + 10u * 9u);
+    EXPECT_EQ(s.countLayoutInstances(), 10u);
+    for (size_t k = 0; k < 9; ++k) EXPECT_EQ(s.meshes[k].name, "test1.3ds:" + objects[k].name);
+    for (size_t placement = 0; placement < 10; ++placement)
+        for (uint32_t k = 0; k < 9; ++k) {
+            const Instance& inst = s.instances[1 + placement * 9 + k];
+            EXPECT_EQ(inst.mesh, k);
+            EXPECT_EQ(inst.object, k);
+            EXPECT_EQ(inst.model, s.instances[1 + placement * 9].model);
+        }
+    // The objects keep their places relative to each other: one scale and offset maps the file's
+    // bounds of every object onto the scene's (tolerance 1e-4 of the unit-sphere fit: float rounding).
+    const float scale = s.meshes[0].computeBounds().extent().x / objects[0].computeBounds().extent().x;
+    const glm::vec3 offset = s.meshes[0].computeBounds().min - objects[0].computeBounds().min * scale;
+    for (size_t k = 0; k < 9; ++k) {
+        const Aabb got = s.meshes[k].computeBounds(), file = objects[k].computeBounds();
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(got.min[a], file.min[a] * scale + offset[a], 1e-4f) << objects[k].name;
+            EXPECT_NEAR(got.max[a], file.max[a] * scale + offset[a], 1e-4f) << objects[k].name;
+        }
+    }
+}
+
+TEST(SceneLoaderTest, ProxyFitsOneProxyPerObjectOfAModel) {
+    if (!std::filesystem::exists(kRoom)) GTEST_SKIP() << kRoom << " not installed (scripts/install-deps.sh)";
+    // One instance of the nine-object room: nine fitted proxies, each holding every vertex of its own
+    // object (tolerance 1e-4 in unit-shape coordinates: the frames' float inverse), and each crate's
+    // proxy far smaller than one box around the room would be.
+    const std::string json = R"({"meshes": [{"name": "room", "file": ")" + kRoom + R"("}],
+        "instances": [{"mesh": "room", "position": [1, 2, 3], "rotation": [0, 30, 0]}]})";
+    const Scene s = SceneLoader::parse(json, "test.json");
+    std::vector<uint32_t> owners;
+    const std::vector<ShadowProxy> proxies = ProxyCollection::collect(s, false, &owners);
+    ASSERT_EQ(proxies.size(), 9u);
+    const Aabb room = s.computeBounds();
+    const float roomVolume = room.extent().x * room.extent().y * room.extent().z;
+    for (size_t k = 0; k < 9; ++k) {
+        const Instance& inst = s.instances[k];
+        EXPECT_EQ(owners[k], inst.objectId);
+        const glm::mat4 toUnit = glm::inverse(proxies[k].frame);
+        for (const glm::vec3& p : s.meshes[inst.mesh].positions) {
+            const glm::vec3 q(toUnit * inst.model * glm::vec4(p, 1.0f));
+            ASSERT_TRUE(insideUnitShape(proxies[k].shape, q, 1e-4f)) << s.meshes[inst.mesh].name;
+        }
+        if (s.meshes[inst.mesh].name.find("Box05") != std::string::npos)
+            EXPECT_LT(std::abs(glm::determinant(proxies[k].frame)) * 8.0f, 0.05f * roomVolume);
+    }
+}
+
+TEST(SceneLoaderTest, ModelEntryUpNamesTheFilesUpAxis) {
+    if (!std::filesystem::exists(kRoom)) GTEST_SKIP() << kRoom << " not installed (scripts/install-deps.sh)";
+    // The room's floor slab Box01 is thin along the file's y (it is Y-up as stored). Declared Z-up,
+    // the file's z is turned to +Y, so the slab's thin axis becomes Z (a closed-form swap of axes).
+    auto floorExtent = [](const std::string& up) {
+        const std::string json = R"({"meshes": [{"name": "room", "file": ")" + kRoom + "\"" + up +
+                                 R"(}], "instances": [{"mesh": "room"}]})";
+        const Scene s = SceneLoader::parse(json, "test.json");
+        for (const Mesh& m : s.meshes)
+            if (m.name == "room:Box01") return m.computeBounds().extent();
+        ADD_FAILURE() << "no mesh room:Box01";
+        return glm::vec3(0.0f);
+    };
+    const glm::vec3 asStored = floorExtent(""), declared = floorExtent(R"(, "up": "z")");
+    EXPECT_NEAR(declared.z, asStored.y, 1e-4f);
+    EXPECT_NEAR(declared.y, asStored.z, 1e-4f);
+    EXPECT_NEAR(declared.x, asStored.x, 1e-4f);
+    const std::string bad = R"({"meshes": [{"name": "room", "file": ")" + kRoom +
+                            R"(", "up": "w"}], "instances": [{"mesh": "room"}]})";
+    EXPECT_NE(errorOf(bad).find(
+                  "test.json: /meshes/0/up: expected the file's up axis, one of x, -x, y, -y, z or -z"),
+              std::string::npos)
+        << errorOf(bad);
 }

@@ -36,8 +36,7 @@ std::string effectsText(EffectMask m) {
 void ConsoleReport::printHeader(std::ostream& os, const Harness& h) {
     const Context& c = h.context();
     const RunConfig& cfg = h.config();
-    size_t layout = 0;
-    for (const Instance& i : h.scene().instances) layout += i.fromLayout ? 1 : 0;
+    const size_t layout = h.scene().countLayoutInstances();
     os << "backend   " << backendName(c.backend()) << (c.deviceName.empty() ? "" : " (" + c.deviceName + ")")
        << "\n"
        << "renderer  " << c.renderer << "\n"

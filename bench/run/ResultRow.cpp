@@ -37,11 +37,6 @@ void addLoads(CsvRow& row, const FrameLoads& loads) {
     row.emplace_back("load_fragments", count(&PipelineCounts::fragmentShaderInvocations));
 }
 
-size_t layoutInstances(const Scene& scene) {
-    size_t n = 0;
-    for (const Instance& i : scene.instances) n += i.fromLayout ? 1 : 0;
-    return n;
-}
 } // namespace
 
 CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment& env) {
@@ -67,7 +62,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"technique", r.technique},
         {"properties", r.properties},
         {"permutation", r.permutation},
-        {"instances", std::to_string(layoutInstances(scene))},
+        {"instances", std::to_string(scene.countLayoutInstances())},
         {"scale", csvNumber(c.sceneOptions.scale)},
         {"tessellation",
          c.sceneOptions.tessellation ? std::to_string(*c.sceneOptions.tessellation) : "default"},
