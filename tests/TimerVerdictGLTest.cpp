@@ -15,10 +15,15 @@
 #include <unistd.h>
 #include <vector>
 
+#include "TestSupport.h"
+#include "bench/run/Environment.h"
+#include "bench/run/Harness.h"
+#include "bench/run/ResultRow.h"
 #include "bench/run/TimerTrust.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/backends/BackendRegistry.h"
+#include "techniques/TechniqueRegistry.h"
 
 namespace sb {
 namespace {
@@ -196,6 +201,43 @@ TEST_F(TimerVerdictGLTest, LlvmpipeIsUntrustedInEveryCalibrationUnloaded) {
     if (!onLlvmpipe()) GTEST_SKIP() << "the expectation is llvmpipe's; renderer is " << sContext->renderer;
     const Tally t = calibrateRepeatedly(5, "unloaded");
     EXPECT_EQ(t.trusted, 0);
+}
+
+std::string cell(const CsvRow& row, const std::string& column) {
+    for (const auto& [name, value] : row)
+        if (name == column) return value;
+    ADD_FAILURE() << "no column " << column;
+    return "";
+}
+
+// The re-check after a run: a verdict handed in as trusted (a sweep runner hands its verdict to every
+// worker process) does not survive a run on a context whose timer fails the calibration. Before the
+// re-check existed, such rows said "trusted" and carried llvmpipe's per-tile timestamps as GPU times.
+TEST(TimerRecheck, TrustedVerdictIsWithdrawnAfterARunThatCannotConfirmIt) {
+    RunConfig config = test::quickConfig("sphere_plane", "top", 64);
+    config.frames = 3;
+    Harness harness(config);
+    if (harness.context().renderer.find("llvmpipe") == std::string::npos)
+        GTEST_SKIP() << "needs a timer that fails the calibration; renderer is "
+                     << harness.context().renderer;
+    std::unique_ptr<Technique> technique = TechniqueRegistry::create("shadowmap");
+    harness.setTimerVerdict(TimerTrust::judge(threeOf(kProportional)));
+    ASSERT_TRUE(harness.timerQueriesEnabled());
+
+    const RunResult first = harness.measure(*technique);
+    EXPECT_FALSE(harness.timerVerdict().trusted) << harness.timerVerdict().reason;
+    EXPECT_TRUE(harness.timerVerdict().revoked);
+    EXPECT_FALSE(harness.timerQueriesEnabled());
+    const CsvRow row = ResultRow::build(harness, first, Environment{});
+    EXPECT_EQ(cell(row, "timer_verdict"), "untrusted");
+    EXPECT_NE(cell(row, "timer_reason").find("re-checked"), std::string::npos) << cell(row, "timer_reason");
+    EXPECT_EQ(cell(row, "gpu_ms_median"), "");
+    EXPECT_EQ(cell(row, "gpu_depth_ms_median"), "");
+
+    // Withdrawn for good: the next run issues no timer queries (no GPU samples) and stays untrusted.
+    const RunResult second = harness.measure(*technique);
+    EXPECT_STREQ(harness.timerVerdict().label(), "untrusted");
+    EXPECT_EQ(second.gpuTotal.n, 0u);
 }
 
 } // namespace

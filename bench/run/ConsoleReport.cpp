@@ -56,6 +56,11 @@ void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::ve
     for (const RunResult& r : results)
         if (r.technique == "none") base = &r;
     bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
+    // Announced before the table: the verdict printed at the start no longer holds.
+    if (h.timerVerdict().revoked) {
+        os << "\n";
+        printTimerVerdict(os, h.timerVerdict());
+    }
     os << "\n"
        << pad("technique", 12) << pad("wall median", 13) << pad("p5", 9) << pad("p95", 9) << pad("MAD", 8)
        << pad("cpu submit", 12) << (gpu ? pad("gpu", 10) : "") << pad("n", 5) << pad("vs none", 9)
