@@ -86,7 +86,9 @@ TEST_P(TimerRuleBands, RoundOutsideABandIsUntrusted) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bands, TimerRuleBands, ::testing::ValuesIn(kUntrusted),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const ::testing::TestParamInfo<RuleCase>& p) {
+                             return std::string(p.param.name);
+                         });
 
 TEST(TimerRule, OneCalibrationDecidesNothing) {
     // Two good rounds and one bad: untrusted. Two good rounds alone (fewer than kRounds): untrusted.

@@ -14,9 +14,11 @@
 //   - agreement: kRounds independent rounds all pass and their timer growths differ by at most
 //     kMaxRoundSpread (max / min).
 // A single lucky round decides nothing. On Mesa llvmpipe the timestamps are taken per tile by the rasteriser
-// threads, so a pair spans about one tile's work: it neither grows with the pixels nor covers the frame,
-// and when the machine is loaded a descheduled thread makes it jump at random (growths of 0.3x to 200x for
-// 4x the pixels were measured) - the bands on both sides turn each such round into "untrusted".
+// threads, so a pair spans about one tile's work: it does not follow the pixels and misses most of the
+// frame, and when the machine is loaded a descheduled thread makes it jump at random (growths from 0.01x to
+// over 1000x for 4x the pixels were measured) - the bands on both sides turn each such round into
+// "untrusted". (Without an active scene llvmpipe takes the first stamp at submission instead, which covers
+// the whole draw; frames clear before their first stamp, and so does the calibration.)
 #include <string>
 #include <vector>
 
@@ -63,9 +65,10 @@ public:
     /// Largest max/min of the rounds' timer growths: repeated measurements of one device agree.
     static constexpr double kMaxRoundSpread = 1.25;
 
-    /// Runs the calibration on the current context: kRounds rounds after a search for a loop length
-    /// that makes the large draw fill-bound (about 0.3-0.6 s on llvmpipe with 2 threads, far less on a
-    /// GPU). Leaves the GL state as it found it, except the bound framebuffer and VAO (0).
+    /// Runs the calibration on the current context: a search for a loop length that makes the large
+    /// draw take 15 ms, then up to kRounds rounds; the first failed round ends it (trust needs all), so
+    /// llvmpipe pays for one round (measured 0.1-0.2 s with 2 threads, up to 0.9 s on a loaded machine).
+    /// Leaves the GL state as it found it, except the bound framebuffer and VAO (0).
     static TimerVerdict calibrate(ProgramCache& programs);
     /// The decision rule, separated for unit tests: trusted when every round passes checkRound and the
     /// rounds agree (kMaxRoundSpread). The reason lists the evidence and every failed condition.
