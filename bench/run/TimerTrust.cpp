@@ -136,9 +136,10 @@ TimerVerdict TimerTrust::judge(const std::vector<CalibrationRound>& rounds) {
         const std::string why = checkRound(rounds[i]);
         if (!why.empty()) appendFailure(failures, "round " + std::to_string(i + 1) + ": " + why);
     }
-    if (rounds.size() < size_t(kRounds))
-        appendFailure(failures,
-                      std::to_string(rounds.size()) + " of " + std::to_string(kRounds) + " rounds measured");
+    // (A calibration stops at its first failed round; that round is the reason, not the count.)
+    if (rounds.size() < size_t(kRounds) && failures.empty())
+        appendFailure(failures, "only " + std::to_string(rounds.size()) + " of " + std::to_string(kRounds) +
+                                    " rounds measured, all are needed");
     if (failures.empty()) {
         // Every round passed on its own; repeated measurements of one device must also agree.
         double lo = rounds.front().timerGrowth(), hi = lo;
