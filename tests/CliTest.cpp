@@ -101,10 +101,13 @@ TEST(Cli, TimerVerdictIsMeasuredAndUntrustedNumbersAreHidden) {
     };
     std::string verdict = cell("timer_verdict");
     ASSERT_TRUE(verdict == "trusted" || verdict == "untrusted") << verdict;
-    EXPECT_FALSE(cell("timer_reason").empty());
+    // The evidence is the frames' own query type, with the numbers the rule judged.
+    EXPECT_NE(cell("timer_reason").find("GL_TIMESTAMP pairs"), std::string::npos) << cell("timer_reason");
+    EXPECT_NE(cell("timer_reason").find("timer growth"), std::string::npos) << cell("timer_reason");
     if (cell("renderer").find("llvmpipe") != std::string::npos) {
-        // docs/ARCHITECTURE.md, "The timing contract": measured on Mesa 22.3 llvmpipe, TIME_ELAPSED does not
-        // follow the fill work.
+        // docs/ARCHITECTURE.md, "The timing contract": on Mesa llvmpipe a GL_TIMESTAMP pair spans about one
+        // tile's work, and jumps with the scheduler under load; TimerVerdictGLTest runs 20 calibrations
+        // under load. One run here must come out untrusted every time, loaded or not.
         EXPECT_EQ(verdict, "untrusted") << cell("timer_reason");
     }
     if (verdict == "untrusted") {

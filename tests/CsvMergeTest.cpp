@@ -144,6 +144,35 @@ TEST_F(CsvMergeTest, ForceReplacesAnExistingOutputAndOnlyThen) {
     EXPECT_EQ(listDir(), (std::vector<std::string>{"a.csv", "out.csv"}));
 }
 
+TEST_F(CsvMergeTest, MixedTimerVerdictsMergeOnlyWhenAskedAndAreReported) {
+    // Shard 1 calibrated "trusted" (GPU columns filled), shard 2 "untrusted"; the failed row of shard 2
+    // has no verdict (never measured) and is not counted. Refused by default (the refusal table below),
+    // written with allowMixedTimer, and the report counts rows per verdict in first-seen order.
+    const std::string header =
+        "sweep_id,sweep_configs,config_index,shard,status,timer_verdict,gpu_ms_median\n";
+    writeFile(path("a.csv"), header + "s1,4,0,1/2,ok,trusted,1.5\ns1,4,2,1/2,ok,trusted,2.5\n");
+    writeFile(path("b.csv"), header + "s1,4,1,2/2,ok,untrusted,\ns1,4,3,2/2,failed,,\n");
+    EXPECT_NE(errorOf(paths({"a.csv", "b.csv"}), path("all.csv"), {}, ExitCode::BadInput)
+                  .find("--allow-mixed-timer"),
+              std::string::npos);
+    MergeOptions options;
+    options.allowMixedTimer = true;
+    const MergeReport report = CsvMerge::merge(paths({"a.csv", "b.csv"}), path("all.csv"), options);
+    using Counts = std::vector<std::pair<std::string, size_t>>;
+    EXPECT_EQ(report.timerVerdicts, (Counts{{"trusted", 2}, {"untrusted", 1}}));
+    EXPECT_EQ(readFile(path("all.csv")), header + "s1,4,0,1/2,ok,trusted,1.5\ns1,4,1,2/2,ok,untrusted,\n"
+                                                  "s1,4,2,1/2,ok,trusted,2.5\ns1,4,3,2/2,failed,,\n");
+}
+
+TEST_F(CsvMergeTest, OneTimerVerdictEverywhereMerges) {
+    // Files without the column (older CSVs) and failed rows do not count as a different verdict.
+    const std::string header = "sweep_id,sweep_configs,config_index,shard,status,timer_verdict\n";
+    writeFile(path("a.csv"), header + "s1,3,0,1/3,ok,untrusted\ns1,3,1,1/3,failed,\n");
+    writeFile(path("b.csv"), std::string(kHeader) + "s1,3,2,2/3,ok\n");
+    const MergeReport report = CsvMerge::merge(paths({"a.csv", "b.csv"}), path("all.csv"), {});
+    EXPECT_EQ(report.timerVerdicts, (std::vector<std::pair<std::string, size_t>>{{"untrusted", 1}}));
+}
+
 TEST_F(CsvMergeTest, MissingStatusColumnCountsEveryRowAsFailed) {
     // failedRows counts rows whose status is not "ok"; without the column no row is known to be ok.
     writeFile(path("a.csv"), "sweep_id,sweep_configs,config_index,shard\ns1,2,0,1/1\ns1,2,1,1/1\n");
@@ -320,6 +349,16 @@ const std::vector<BadMerge> kBadMerges = {
      {"a.csv"},
      "out.csv",
      {"configuration 0 appears twice: in '{dir}/a.csv:2' and '{dir}/a.csv:4'"}},
+    {"MixedTimerVerdicts",
+     // The first place of each verdict is named: line 3 of a.csv is where 'untrusted' first appears.
+     {{"a.csv", "sweep_id,sweep_configs,config_index,shard,timer_verdict\ns1,3,0,1/2,trusted\n"
+                "s1,3,2,1/2,untrusted\n"},
+      {"b.csv", "sweep_id,sweep_configs,config_index,shard,timer_verdict\ns1,3,1,2/2,trusted\n"}},
+     {"a.csv", "b.csv"},
+     "out.csv",
+     {"rows measured under different GPU-timer verdicts: 'trusted' in '{dir}/a.csv:2' but 'untrusted' in "
+      "'{dir}/a.csv:3'",
+      "--allow-mixed-timer"}},
     {"NoRows", {{"a.csv", kHeader}, {"b.csv", kHeader}}, {"a.csv", "b.csv"}, "out.csv", {"hold no rows"}},
     {"Incomplete",
      {{"a.csv", rows("s1,6,0,1/2,ok\ns1,6,2,1/2,ok\n")}, {"b.csv", rows("s1,6,3,2/2,ok\n")}},

@@ -22,6 +22,7 @@ constexpr const char* kConfigIndex = "config_index";
 constexpr const char* kShard = "shard";
 constexpr const char* kStatus = "status";
 constexpr const char* kStatusOk = "ok";
+constexpr const char* kTimerVerdict = "timer_verdict";
 constexpr size_t kMaxListedMissing = 10;
 
 // Every refusal is about what the user handed in; the message is the one line printed before exit 2.
@@ -260,6 +261,45 @@ size_t countFailedRows(const CsvTable& table) {
     }));
 }
 
+// ---------------------------------------------------------------------------------------------------
+// Timer verdicts
+
+/// Rows per non-empty timer_verdict, first-seen order, with where each value was first seen.
+struct VerdictTally {
+    std::vector<std::pair<std::string, size_t>> counts;
+    std::vector<std::string> firstWhere;
+};
+
+VerdictTally tallyVerdicts(const std::vector<Input>& inputs) {
+    VerdictTally tally;
+    for (const Input& in : inputs) {
+        auto column = std::find(in.table.header.begin(), in.table.header.end(), kTimerVerdict);
+        if (column == in.table.header.end()) continue;
+        const size_t c = size_t(column - in.table.header.begin());
+        for (size_t r = 0; r < in.table.rows.size(); ++r) {
+            const std::string& verdict = in.table.rows[r][c];
+            if (verdict.empty()) continue; // failed rows were never measured
+            auto it = std::find_if(tally.counts.begin(), tally.counts.end(),
+                                   [&](const auto& entry) { return entry.first == verdict; });
+            if (it != tally.counts.end()) {
+                ++it->second;
+                continue;
+            }
+            tally.counts.emplace_back(verdict, 1);
+            tally.firstWhere.push_back(in.path + ":" + std::to_string(in.lines[r]));
+        }
+    }
+    return tally;
+}
+
+void checkVerdicts(const VerdictTally& tally, const MergeOptions& options) {
+    if (tally.counts.size() < 2 || options.allowMixedTimer) return;
+    fail("rows measured under different GPU-timer verdicts: " + inQuotes(tally.counts[0].first) + " in " +
+         inQuotes(tally.firstWhere[0]) + " but " + inQuotes(tally.counts[1].first) + " in " +
+         inQuotes(tally.firstWhere[1]) +
+         "; rerun the shards on one kind of machine, or pass --allow-mixed-timer to merge them anyway");
+}
+
 } // namespace
 
 // Everything is read and checked before anything is written, so a refused merge leaves no trace.
@@ -281,6 +321,9 @@ MergeReport CsvMerge::merge(const std::vector<std::string>& inputs, const std::s
     report.missing = missingIndices(check);
     if (!report.missing.empty() && !options.allowIncomplete)
         fail(incompleteMessage(report.missing, report.configs));
+    const VerdictTally verdicts = tallyVerdicts(files);
+    checkVerdicts(verdicts, options);
+    report.timerVerdicts = verdicts.counts;
 
     CsvTable table = mergedTable(files);
     report.rows = table.rows.size();

@@ -5,9 +5,14 @@
 //
 // Every sweep row carries four columns: sweep_id (hash of the sweep definition), sweep_configs (number
 // of configurations = rows of the complete sweep), config_index (0-based index of the row's
-// configuration in the complete sweep) and shard ("i/N").
+// configuration in the complete sweep) and shard ("i/N"). Measured rows also carry timer_verdict: the
+// shards of one sweep calibrate the GPU timer each on their own (one process or machine each), and rows
+// measured under different verdicts (trusted with GPU columns next to untrusted without, or a device that
+// calibrates differently) are not the one sweep the merge claims to produce, so a mixture is refused
+// unless asked for, and then reported.
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sb {
@@ -15,6 +20,7 @@ namespace sb {
 struct MergeOptions {
     bool allowIncomplete = false; ///< write even when configurations are missing
     bool force = false;           ///< replace an existing output file
+    bool allowMixedTimer = false; ///< write even when rows carry different timer verdicts
 };
 
 struct MergeReport {
@@ -24,6 +30,9 @@ struct MergeReport {
     size_t configs = 0;          ///< sweep_configs
     std::vector<size_t> missing; ///< config indices present in no input (sorted)
     size_t failedRows = 0;       ///< rows whose status is not "ok" (empty or absent counts as not ok)
+    /// Rows per timer_verdict value, in first-seen order (rows without a verdict, such as failed ones,
+    /// are not counted). More than one entry only with allowMixedTimer.
+    std::vector<std::pair<std::string, size_t>> timerVerdicts;
 };
 
 class CsvMerge {
@@ -47,7 +56,9 @@ public:
     /// - the inputs hold no rows at all;
     /// - configurations are missing and !options.allowIncomplete ("incomplete: 3 of 48 configurations
     ///   missing (indices 5, 17, 40); rerun the shards that wrote them, or pass --allow-incomplete";
-    ///   at most 10 indices, then "...").
+    ///   at most 10 indices, then "...");
+    /// - rows carry different non-empty timer_verdict values and !options.allowMixedTimer ("rows measured
+    ///   under different GPU-timer verdicts: 'trusted' in '<file>:<line>' but 'untrusted' in ...").
     /// I/O failures (unreadable input, unwritable output) throw sb::Error(ExitCode::Failure) naming the
     /// path and the OS error.
     static MergeReport merge(const std::vector<std::string>& inputs, const std::string& output,

@@ -61,6 +61,11 @@ void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::ve
     if (results.empty()) return;
     const size_t perRound = roundSize(results, rounds);
     const bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
+    // Announced before the table: the verdict printed at the start no longer holds.
+    if (h.timerVerdict().revoked) {
+        os << "\n";
+        printTimerVerdict(os, h.timerVerdict());
+    }
     const bool several = results.size() > perRound;
     TextColumns table;
     std::vector<std::string> head{"technique"};

@@ -1,7 +1,8 @@
 #pragma once
 // The readable console output: a header saying what runs where (backend, renderer, GL version, scene,
 // timer verdict with its evidence), then one table row per technique. GPU columns appear only when the
-// timer is trusted. Tables are laid out by TextColumns: a column is as wide as its widest cell.
+// timer is trusted, at the start and when re-checked after the runs (a withdrawn verdict is printed again
+// above the table). Tables are laid out by TextColumns: a column is as wide as its widest cell.
 #include <iosfwd>
 #include <vector>
 

@@ -79,9 +79,16 @@ void Harness::updateFrameData() {
 }
 
 const TimerVerdict& Harness::calibrateTimer() {
-    if (!mVerdict.checked) mVerdict = TimerTrust::calibrate(mPrograms);
-    mTimerQueries = mVerdict.trusted;
-    mPassTimer->setRing(mTimerQueries ? mRing.get() : nullptr);
+    if (!mCalibration.checked) setTimerVerdict(TimerTrust::calibrate(mPrograms));
+    return mVerdict;
+}
+
+const TimerVerdict& Harness::recheckTimer() {
+    if (!mCalibration.checked || !mCalibration.trusted) return mVerdict = mCalibration;
+    mVerdict = TimerTrust::afterRun(mCalibration, TimerTrust::calibrate(mPrograms));
+    // A timer that failed once in this process is not trusted again: later runs keep the withdrawn
+    // verdict and issue no timer queries.
+    if (mVerdict.revoked) setTimerVerdict(mVerdict);
     return mVerdict;
 }
 
@@ -147,6 +154,7 @@ RunResult Harness::measure(Technique& technique) {
         }
     }
     if (mTimerQueries) collect(mRing->drain());
+    recheckTimer();
     for (size_t i = 0; i < samples.size(); ++i) {
         auto it = gpu.find(firstFrame + i);
         if (it == gpu.end()) continue;
@@ -174,7 +182,7 @@ FrameLoads Harness::measureLoads(Technique& technique) {
 }
 
 void Harness::setTimerVerdict(const TimerVerdict& verdict) {
-    mVerdict = verdict;
+    mCalibration = mVerdict = verdict;
     mTimerQueries = mVerdict.checked && mVerdict.trusted;
     mPassTimer->setRing(mTimerQueries ? mRing.get() : nullptr);
 }

@@ -10,7 +10,8 @@
 //       glFinish()
 //   t2  wall = t2 - t0
 // GPU pass times are read back from the query ring frames later and never stall the loop. Warm-up
-// frames run the same path and are discarded.
+// frames run the same path and are discarded. Where the timer is trusted, the calibration is repeated
+// after the measured frames (outside them): the run's verdict is trusted only if both say so.
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,6 +70,8 @@ public:
     Submitter& submitter() { return *mSubmitter; }
     ProgramCache& programs() { return mPrograms; }
     const CameraPreset& camera() const { return mCamera; }
+    /// The verdict of the last measured run (TimerTrust::afterRun of the calibration and its re-check),
+    /// or the calibration's before the first run.
     const TimerVerdict& timerVerdict() const { return mVerdict; }
     double sceneLoadMs() const { return mSceneLoadMs; }
 
@@ -77,8 +80,8 @@ public:
     void prepare(Technique& technique);
     /// One frame, timed. Returns the CPU/wall sample; GPU times arrive later through the ring.
     FrameSample renderFrame(Technique& technique);
-    /// Warm-up, then the measured frames (config frames or seconds), statistics, then one untimed
-    /// census frame for the loads.
+    /// Warm-up, then the measured frames (config frames or seconds), the timer re-check where the
+    /// timer is trusted (recheckTimer), statistics, then one untimed census frame for the loads.
     RunResult measure(Technique& technique);
     /// One extra frame, not timed, wrapped in pipeline-statistics queries where the context has them.
     FrameLoads measureLoads(Technique& technique);
@@ -100,6 +103,11 @@ public:
     /// and on llvmpipe each query is extra driver work inside the frame being measured.
     const TimerVerdict& calibrateTimer();
     bool timerQueriesEnabled() const { return mTimerQueries; }
+    /// Repeats the calibration after a run measured under a trusted verdict; when it no longer holds,
+    /// the run's verdict is "untrusted" (revoked) and so is every later run's: timer queries stay off
+    /// for the rest of the harness's life. Nothing to do where the timer is untrusted or unchecked (a
+    /// verdict is never upgraded), so on llvmpipe it costs nothing.
+    const TimerVerdict& recheckTimer();
 
 private:
     void setFrameState();
@@ -119,7 +127,8 @@ private:
     std::unique_ptr<PassTimer> mPassTimer;
     std::unique_ptr<PipelineStatistics> mPipelineStatistics; ///< created on the first census
     ProgramCache mPrograms;
-    TimerVerdict mVerdict;
+    TimerVerdict mCalibration; ///< what the frames are measured under (calibrateTimer, setTimerVerdict)
+    TimerVerdict mVerdict;     ///< what the last run ended with
     uint64_t mFrameIndex = 0;
     bool mTimerQueries = true;
     double mSceneLoadMs = 0.0;
