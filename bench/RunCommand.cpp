@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "bench/BenchApp.h"
 #include "bench/output/CsvWriter.h"
@@ -46,9 +47,48 @@ std::ostream& logStream(const RunConfig& config) {
     return config.format == RowFormat::Console ? std::cout : std::cerr;
 }
 
+/// A technique that could not be measured (it refused the configuration in setScene or compile, the
+/// context lacks what it needs, or a frame failed): its row, exit code and message.
+struct Refusal {
+    CsvRow row;
+    ExitCode code = ExitCode::Failure;
+    std::string message;
+};
+
+/// A sweep's words for the same: the context could not (exit code 3), or the technique failed.
+const char* statusOf(ExitCode code) {
+    return code == ExitCode::Unsupported ? "unsupported" : "failed";
+}
+
+/// The row of a technique that threw `e`: what it is and why it has no numbers, in the columns a sweep
+/// uses for the same (`status`, `error`).
+Refusal refusal(const Technique& technique, const Error& e, const Environment& env, int round,
+                const std::string& baseline) {
+    Refusal r;
+    r.code = e.code();
+    const std::string what = e.what();
+    r.message = what.rfind(technique.name() + ":", 0) == 0 ? what : technique.name() + ": " + what;
+    r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
+             {"status", statusOf(e.code())},           {"error", e.what()},
+             {"technique", technique.name()},          {"properties", technique.properties().toString()},
+             {"repeat", std::to_string(round)},        {"baseline", baseline}};
+    return r;
+}
+
+/// Which exit code a run with refusals ends with: the worst of them, a failed run (1) over bad input (2)
+/// over what the context lacks (3); 0 when every technique was measured.
+int exitCode(const std::vector<Refusal>& refusals) {
+    auto rank = [](ExitCode c) { return c == ExitCode::Failure ? 3 : c == ExitCode::BadInput ? 2 : 1; };
+    ExitCode worst = ExitCode::Ok;
+    for (const Refusal& r : refusals)
+        if (worst == ExitCode::Ok || rank(r.code) > rank(worst)) worst = r.code;
+    return int(worst);
+}
+
 /// The end of a run: the console table (and, with several rounds, the paired ratios), or the rows in
-/// the format --format asked for.
-void report(const RunConfig& config, const Harness& harness, const std::vector<Measurement>& results) {
+/// the format --format asked for; then each refusal on stderr.
+void report(const RunConfig& config, const Harness& harness, const std::vector<Measurement>& results,
+            const std::vector<Refusal>& refusals) {
     std::ostream& log = logStream(config);
     std::vector<RunResult> runs;
     std::vector<CsvRow> rows;
@@ -56,6 +96,7 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
         runs.push_back(m.run);
         rows.push_back(m.row);
     }
+    for (const Refusal& r : refusals) rows.push_back(r.row);
     if (config.mode == RunConfig::Mode::Accuracy) {
         std::vector<std::pair<RunResult, AccuracyResult>> judged;
         for (const Measurement& m : results) judged.emplace_back(m.run, *m.accuracy);
@@ -67,6 +108,8 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
     if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
     if (config.format != RowFormat::Console)
         std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
+    for (const Refusal& r : refusals)
+        std::cerr << "bench: error: " << r.message << " (exit code " << int(r.code) << ")\n";
 }
 } // namespace
 
@@ -112,18 +155,38 @@ int RunCommand::run(const RunConfig& config) {
 
     Environment env = Environment::capture();
     std::vector<Measurement> results;
+    std::vector<Refusal> refusals;
+    std::vector<bool> refused(techniques.size(), false);
     const std::string baseline = specs.front().toString();
     const size_t total = specs.size() * size_t(config.repeat);
+    size_t done = 0;
     // Rounds interleave the techniques (A B C, A B C ...): ratios are taken within a round, between
     // runs measured next to each other.
     for (int round = 1; round <= config.repeat; ++round) {
         std::optional<double> baselineWall;
         for (size_t i = 0; i < techniques.size(); ++i) {
             Technique& technique = *techniques[i];
+            ++done;
+            // A refusal repeats every round (the same scene, properties and context): reported once.
+            if (refused[i]) continue;
             if (!config.quiet)
-                log << "[" << results.size() + 1 << "/" << total << "] " << technique.name() << " "
+                log << "[" << done << "/" << total << "] " << technique.name() << " "
                     << technique.properties().toString() << " ..." << std::flush;
-            Measurement m = Measurement::take(harness, technique, evaluator.get(), options, env);
+            std::optional<Measurement> measured;
+            try {
+                measured = Measurement::take(harness, technique, evaluator.get(), options, env);
+            } catch (const Error& e) {
+                // One technique's refusal (an open mesh it was told to refuse, a light type or an
+                // extension it lacks) must not cost the others their measurement: reported as a row,
+                // and the exit code says so at the end. The harness resets the frame state every
+                // frame, so the next technique starts clean.
+                refusals.push_back(refusal(technique, e, env, round, baseline));
+                refused[i] = true;
+                if (!config.quiet) log << " " << statusOf(e.code()) << ": " << e.what() << "\n";
+                if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {refusals.back().row});
+                continue;
+            }
+            Measurement& m = *measured;
             if (i == 0) baselineWall = m.run.wall.median;
             m.addRound(round, baseline, baselineWall);
             if (!config.quiet) {
@@ -137,8 +200,8 @@ int RunCommand::run(const RunConfig& config) {
             results.push_back(std::move(m));
         }
     }
-    report(config, harness, results);
-    return 0;
+    report(config, harness, results, refusals);
+    return exitCode(refusals);
 }
 
 int RunCommand::main(int argc, char** argv, RunConfig::Mode mode) {

@@ -49,8 +49,9 @@ std::vector<PropertyDesc> declareProperties() {
                "silhouettes on the CPU per caster (chapter) or in the vertex shader (McGuire-Hughes)"),
         choice(kFar, "infinite", {"infinite", "depth_clamp", "finite"},
                "far plane at infinity, depth clamping, or the camera's (negative control)"),
-        choice(kOpenEdges, "refuse", {"refuse", "multiplicity"},
-               "casters with open edges: refuse naming the mesh, or count per-edge multiplicities"),
+        choice(kOpenEdges, "multiplicity", {"multiplicity", "refuse"},
+               "casters with open edges: count per-edge multiplicities (closed meshes keep the chapter's "
+               "volumes), or refuse naming the mesh"),
         flag(kDirectional, "true", "directional lights: sides as triangles to one point, no dark cap"),
         flag(kRangeCull, "true", "point/spot: casters outside the light's range cast nothing"),
         flag(kFrustumCull, "true", "cull light cap, dark cap and sides against the view frustum"),
@@ -92,6 +93,13 @@ glm::mat4 VolumeTechnique::infiniteFrom(const glm::mat4& proj) {
     return out;
 }
 
+OpenEdgePolicy VolumeTechnique::policyFor(const ShadowVolumeMesh& mesh) const {
+    // The chapter's closed volumes are exact for a closed mesh and cost half of the multiplicity form
+    // (which draws every face in both caps and each silhouette side twice, counting 2 inside): closed
+    // casters keep them whatever the property says, so the multiplicity default costs them nothing.
+    return mesh.closed() ? OpenEdgePolicy::Closed : mSettings.policy;
+}
+
 bool VolumeTechnique::boundedFor(const Light& light) const {
     return mSettings.boundedVolumes && light.type == LightType::Directional && !mSceneBounds.empty();
 }
@@ -118,14 +126,17 @@ VolumeTechnique::Settings VolumeTechnique::readSettings() const {
 
 void VolumeTechnique::checkClosed(const Scene& scene) const {
     if (mSettings.policy != OpenEdgePolicy::Closed) return;
+    // The user asked for closed casters only and the scene has an open one: their input and their
+    // choice disagree (exit 2); the context lacks nothing (exit 3 is for that).
     for (size_t m = 0; m < mBuffers.size(); ++m) {
         const ShadowVolumeMesh* mesh = mBuffers.mesh(m).mesh.get();
         if (!mesh || mesh->closed()) continue;
         throw Error("volume: caster mesh '" + scene.meshes[m].name + "' has " +
                         std::to_string(mesh->openEdgeCount()) +
-                        " open edges after welding (shadow volumes of open meshes leak streaks, GPU Gems "
-                        "9.1.1); use -t volume:open_edges=multiplicity, or make the instance not cast",
-                    ExitCode::Unsupported);
+                        " open edges after welding and open_edges=refuse was asked for (closed-mesh "
+                        "volumes of open meshes leak streaks, GPU Gems 9.1.1); use the default "
+                        "open_edges=multiplicity, or make the instance not cast",
+                    ExitCode::BadInput);
     }
 }
 
@@ -228,7 +239,7 @@ void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameSt
             r.sides = !cull.sides;
             // A finite volume needs its dark cap: the directional form closes sides at infinity.
             r.directionalForm = mSettings.directional && lw.w == 0.0f && !finite;
-            r.policy = mSettings.policy;
+            r.policy = policyFor(*gpu.mesh);
             gpu.mesh->buildVolume(r, mVolume);
             d.first = GLint(mStream.size());
             for (const auto* part : {&mVolume.lightCap, &mVolume.darkCap, &mVolume.sides})

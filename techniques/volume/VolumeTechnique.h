@@ -24,10 +24,13 @@
 // depth_bounds (9.6.3; needs
 // GL_EXT_depth_bounds_test, which llvmpipe does not expose: the run is skipped as unsupported there).
 //
-// Casters must be closed (every edge two faces, after welding). open_edges=refuse names the mesh and
-// its open edge count; open_edges=multiplicity counts every face as a double-sided occluder with per-
-// edge multiplicities, which is exact for open meshes too (see ShadowVolumeMesh.h); the vertex path
-// gets the same volume from a two-sheet extrusion mesh (every face and its reversed twin).
+// The chapter's volumes need closed casters (every edge two faces, after welding). Most model files
+// are not closed, so the default open_edges=multiplicity counts every face of an open caster as a
+// double-sided occluder with per-edge multiplicities, which is exact for open meshes too (see
+// ShadowVolumeMesh.h); the vertex path gets the same volume from a two-sheet extrusion mesh (every
+// face and its reversed twin). Closed casters keep the chapter's volumes under either setting (no
+// cost for the default). open_edges=refuse names the open mesh and its open edge count instead
+// (exit code 2: the scene does not meet what was asked for).
 #include <array>
 #include <memory>
 #include <vector>
@@ -64,7 +67,7 @@ private:
         Far far = Far::Infinite;
         bool vertexExtrusion = false, directional = true, rangeCull = true, frustumCull = true,
              scissor = true, finiteVolumes = false, boundedVolumes = true, depthBounds = false;
-        OpenEdgePolicy policy = OpenEdgePolicy::Closed;
+        OpenEdgePolicy policy = OpenEdgePolicy::Multiplicity;
     };
     struct Caster {
         uint32_t instance = 0, mesh = 0;
@@ -95,6 +98,8 @@ private:
     };
 
     Settings readSettings() const;
+    /// The policy buildVolume() gets for `mesh`: Closed for closed meshes, else the property's.
+    OpenEdgePolicy policyFor(const ShadowVolumeMesh& mesh) const;
     /// bounded_volumes applies to this light (directional, scene not empty).
     bool boundedFor(const Light& light) const;
     void checkClosed(const Scene& scene) const;
