@@ -91,48 +91,62 @@ bool touchingLocal(int shape, vec3 local) {
 // distance 0 (the hard black footprint the listing would give under every caster on the ground).
 // Curved surfaces (sphere, cylinder side) stand in as their tangent plane at the radially nearest
 // point: exact at the contact line, a little farther inside. weighted / weights is the direction the
-// shadow is cast along: the faces' outward normals weighted by 1 / t_f^2, so it is the crossing face's own
-// normal at the contact line (where the halo outside has it too: no seam with modulation) and turns
-// smoothly between faces inside (no seam where the nearest face changes).
+// shadow is cast along: the faces' outward normals weighted by 1 / t_f^2, so it is the crossing
+// face's own normal at the contact line (where the halo outside has it too: no seam with modulation)
+// and turns smoothly between faces inside (no seam where the nearest face changes).
 struct Exit {
     float t;        // in-plane distance to the nearest exit (1e30: none)
     vec3 weighted;  // sum of outward normal / t^2
     float weights;  // sum of 1 / t^2
 };
 
-void addExit(inout Exit e, vec3 normal, float depth, vec3 receiverNormal) {
-    float len = length(normal);
-    if (!(len > 0.0)) return;
-    vec3 n = normal / len;
-    float d = max(depth / len, 0.0); // world distance to the face's plane
-    float c = dot(n, receiverNormal);
-    float sine = sqrt(max(1.0 - c * c, 0.0));
-    if (sine < 1e-3) return; // the receiver's plane is parallel to this face: never crosses it
-    float t = d / sine;
+void addExitAt(inout Exit e, vec3 n, float t) {
     e.t = min(e.t, t);
     float w = 1.0 / (t * t + 1e-30);
     e.weighted += w * n;
     e.weights += w;
 }
 
+// The two parallel planes local[axis] = +1 and -1 (a box's faces, a cylinder's caps) at once: they
+// share the world normal (up to sign) and its angle with the receiver. `gradient` is the world
+// gradient of local[axis] (row `axis` of mat3(toLocal)), whose length turns local into world distance.
+void addExitPair(inout Exit e, vec3 gradient, float local, vec3 receiverNormal) {
+    // |gradient|^2 sin^2 = |g|^2 - (g.N)^2: two inverse square roots, no division.
+    float g2 = dot(gradient, gradient), gc = dot(gradient, receiverNormal);
+    float s2 = g2 - gc * gc;
+    if (!(s2 > 1e-6 * g2)) return; // sine below 1e-3: the receiver's plane is parallel to these faces
+    float scale = inversesqrt(s2); // local depth -> in-plane world distance, 1 / (|g| sine)
+    vec3 n = gradient * inversesqrt(g2);
+    addExitAt(e, n, max(1.0 - local, 0.0) * scale);
+    addExitAt(e, -n, max(1.0 + local, 0.0) * scale);
+}
+
+// One plane: outward world normal `normal` (unnormalised, as nl * mat3(toLocal)) and local depth.
+void addExit(inout Exit e, vec3 normal, float depth, vec3 receiverNormal) {
+    float len = length(normal);
+    if (!(len > 0.0)) return;
+    vec3 n = normal / len;
+    float c = dot(n, receiverNormal);
+    float sine = sqrt(max(1.0 - c * c, 0.0));
+    if (sine < 1e-3) return;
+    addExitAt(e, n, max(depth, 0.0) / (len * sine));
+}
+
 // Plane of the shape's surface in local coordinates (unit normal nl, points x with dot(nl, x) = 1 for
-// the box's faces; for curved surfaces the tangent plane at q) to world: normal nl * mat3(toLocal),
-// depth (1 - dot(nl, local)) before dividing by that normal's length.
+// the box's faces; for curved surfaces the tangent plane at the radially nearest point) to world:
+// normal nl * mat3(toLocal), depth (1 - dot(nl, local)) before dividing by that normal's length.
 Exit exitLocal(int shape, vec3 local, mat4 toLocal, vec3 receiverNormal) {
     Exit e = Exit(1e30, vec3(0.0), 0.0);
     mat3 m = mat3(toLocal);
     if (shape == 1) {
-        for (int axis = 0; axis < 3; ++axis)
-            for (int side = -1; side <= 1; side += 2) {
-                vec3 nl = vec3(0.0);
-                nl[axis] = float(side);
-                addExit(e, nl * m, 1.0 - dot(nl, local), receiverNormal);
-            }
+        // Written out: an indexed row or component is a dynamic index on llvmpipe.
+        addExitPair(e, vec3(m[0].x, m[1].x, m[2].x), local.x, receiverNormal);
+        addExitPair(e, vec3(m[0].y, m[1].y, m[2].y), local.y, receiverNormal);
+        addExitPair(e, vec3(m[0].z, m[1].z, m[2].z), local.z, receiverNormal);
         return e;
     }
     if (shape == 2) {
-        addExit(e, vec3(0.0, 0.0, 1.0) * m, 1.0 - local.z, receiverNormal);
-        addExit(e, vec3(0.0, 0.0, -1.0) * m, 1.0 + local.z, receiverNormal);
+        addExitPair(e, vec3(m[0].z, m[1].z, m[2].z), local.z, receiverNormal);
         float r = length(local.xy);
         vec3 nl = r > 0.0 ? vec3(local.xy / r, 0.0) : vec3(1.0, 0.0, 0.0);
         addExit(e, nl * m, 1.0 - r, receiverNormal);
