@@ -80,7 +80,7 @@ constexpr const char* kExamples = R"(Examples:
 
 Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 bad input, 3 unsupported on this GL context.
 With several techniques, one that fails or refuses gets a row (status, error) and the rest still run;
-the exit code is then the worst: 1 over 2 over 3.)";
+the exit code is then the worst: 1 over 2 over 3 (nothing measured: the worst error, no row).)";
 
 } // namespace
 

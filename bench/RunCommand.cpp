@@ -52,7 +52,8 @@ std::ostream& logStream(const RunConfig& config) {
 struct Refusal {
     CsvRow row;
     ExitCode code = ExitCode::Failure;
-    std::string message;
+    std::string what;    ///< the error's own line
+    std::string message; ///< prefixed with the technique when the line does not name it
 };
 
 /// A sweep's words for the same: the context could not (exit code 3), or the technique failed.
@@ -66,23 +67,33 @@ Refusal refusal(const Technique& technique, const Error& e, const Environment& e
                 const std::string& baseline) {
     Refusal r;
     r.code = e.code();
-    const std::string what = e.what();
-    r.message = what.rfind(technique.name() + ":", 0) == 0 ? what : technique.name() + ": " + what;
+    r.what = e.what();
+    r.message = r.what.rfind(technique.name() + ":", 0) == 0 ? r.what : technique.name() + ": " + r.what;
     r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
-             {"status", statusOf(e.code())},           {"error", e.what()},
+             {"status", statusOf(e.code())},           {"error", r.what},
              {"technique", technique.name()},          {"properties", technique.properties().toString()},
              {"repeat", std::to_string(round)},        {"baseline", baseline}};
     return r;
 }
 
-/// Which exit code a run with refusals ends with: the worst of them, a failed run (1) over bad input (2)
-/// over what the context lacks (3); 0 when every technique was measured.
-int exitCode(const std::vector<Refusal>& refusals) {
+/// The worst of the refusals: a failed run (1) over bad input (2) over what the context lacks (3).
+const Refusal& worst(const std::vector<Refusal>& refusals) {
     auto rank = [](ExitCode c) { return c == ExitCode::Failure ? 3 : c == ExitCode::BadInput ? 2 : 1; };
-    ExitCode worst = ExitCode::Ok;
+    const Refusal* w = &refusals.front();
     for (const Refusal& r : refusals)
-        if (worst == ExitCode::Ok || rank(r.code) > rank(worst)) worst = r.code;
-    return int(worst);
+        if (rank(r.code) > rank(w->code)) w = &r;
+    return *w;
+}
+
+/// Appends the last `unwritten` refusal rows to the CSV (if any is asked for).
+void appendRefusals(const RunConfig& config, const std::vector<Refusal>& refusals, size_t& unwritten) {
+    if (!config.csvPath.empty() && unwritten > 0) {
+        std::vector<CsvRow> rows;
+        for (size_t k = refusals.size() - unwritten; k < refusals.size(); ++k)
+            rows.push_back(refusals[k].row);
+        CsvWriter::appendRows(config.csvPath, rows);
+    }
+    unwritten = 0;
 }
 
 /// The end of a run: the console table (and, with several rounds, the paired ratios), or the rows in
@@ -157,6 +168,7 @@ int RunCommand::run(const RunConfig& config) {
     std::vector<Measurement> results;
     std::vector<Refusal> refusals;
     std::vector<bool> refused(techniques.size(), false);
+    size_t unwritten = 0; // refusal rows not in the CSV yet: held until a technique has been measured
     const std::string baseline = specs.front().toString();
     const size_t total = specs.size() * size_t(config.repeat);
     size_t done = 0;
@@ -182,10 +194,12 @@ int RunCommand::run(const RunConfig& config) {
                 // frame, so the next technique starts clean.
                 refusals.push_back(refusal(technique, e, env, round, baseline));
                 refused[i] = true;
+                ++unwritten;
                 if (!config.quiet) log << " " << statusOf(e.code()) << ": " << e.what() << "\n";
-                if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {refusals.back().row});
+                if (!results.empty()) appendRefusals(config, refusals, unwritten);
                 continue;
             }
+            appendRefusals(config, refusals, unwritten); // the ones before the first measurement
             Measurement& m = *measured;
             if (i == 0) baselineWall = m.run.wall.median;
             m.addRound(round, baseline, baselineWall);
@@ -200,8 +214,11 @@ int RunCommand::run(const RunConfig& config) {
             results.push_back(std::move(m));
         }
     }
+    // Nothing measured: the run failed as a whole, with the worst error's own line and code, as a
+    // single technique always did (and an existing CSV is left as it was).
+    if (results.empty() && !refusals.empty()) throw Error(worst(refusals).what, worst(refusals).code);
     report(config, harness, results, refusals);
-    return exitCode(refusals);
+    return refusals.empty() ? 0 : int(worst(refusals).code);
 }
 
 int RunCommand::main(int argc, char** argv, RunConfig::Mode mode) {
