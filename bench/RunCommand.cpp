@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "bench/BenchApp.h"
 #include "bench/output/CsvWriter.h"
@@ -46,9 +47,59 @@ std::ostream& logStream(const RunConfig& config) {
     return config.format == RowFormat::Console ? std::cout : std::cerr;
 }
 
+/// A technique that could not be measured (it refused the configuration in setScene or compile, the
+/// context lacks what it needs, or a frame failed): its row, exit code and message.
+struct Refusal {
+    CsvRow row;
+    ExitCode code = ExitCode::Failure;
+    std::string what;    ///< the error's own line
+    std::string message; ///< prefixed with the technique when the line does not name it
+};
+
+/// A sweep's words for the same: the context could not (exit code 3), or the technique failed.
+const char* statusOf(ExitCode code) {
+    return code == ExitCode::Unsupported ? "unsupported" : "failed";
+}
+
+/// The row of a technique that threw `e`: what it is and why it has no numbers, in the columns a sweep
+/// uses for the same (`status`, `error`).
+Refusal refusal(const Technique& technique, const Error& e, const Environment& env, int round,
+                const std::string& baseline) {
+    Refusal r;
+    r.code = e.code();
+    r.what = e.what();
+    r.message = r.what.rfind(technique.name() + ":", 0) == 0 ? r.what : technique.name() + ": " + r.what;
+    r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
+             {"status", statusOf(e.code())},           {"error", r.what},
+             {"technique", technique.name()},          {"properties", technique.properties().toString()},
+             {"repeat", std::to_string(round)},        {"baseline", baseline}};
+    return r;
+}
+
+/// The worst of the refusals: a failed run (1) over bad input (2) over what the context lacks (3).
+const Refusal& worst(const std::vector<Refusal>& refusals) {
+    auto rank = [](ExitCode c) { return c == ExitCode::Failure ? 3 : c == ExitCode::BadInput ? 2 : 1; };
+    const Refusal* w = &refusals.front();
+    for (const Refusal& r : refusals)
+        if (rank(r.code) > rank(w->code)) w = &r;
+    return *w;
+}
+
+/// Appends the last `unwritten` refusal rows to the CSV (if any is asked for).
+void appendRefusals(const RunConfig& config, const std::vector<Refusal>& refusals, size_t& unwritten) {
+    if (!config.csvPath.empty() && unwritten > 0) {
+        std::vector<CsvRow> rows;
+        for (size_t k = refusals.size() - unwritten; k < refusals.size(); ++k)
+            rows.push_back(refusals[k].row);
+        CsvWriter::appendRows(config.csvPath, rows);
+    }
+    unwritten = 0;
+}
+
 /// The end of a run: the console table (and, with several rounds, the paired ratios), or the rows in
-/// the format --format asked for.
-void report(const RunConfig& config, const Harness& harness, const std::vector<Measurement>& results) {
+/// the format --format asked for; then each refusal on stderr.
+void report(const RunConfig& config, const Harness& harness, const std::vector<Measurement>& results,
+            const std::vector<Refusal>& refusals) {
     std::ostream& log = logStream(config);
     std::vector<RunResult> runs;
     std::vector<CsvRow> rows;
@@ -56,6 +107,7 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
         runs.push_back(m.run);
         rows.push_back(m.row);
     }
+    for (const Refusal& r : refusals) rows.push_back(r.row);
     if (config.mode == RunConfig::Mode::Accuracy) {
         std::vector<std::pair<RunResult, AccuracyResult>> judged;
         for (const Measurement& m : results) judged.emplace_back(m.run, *m.accuracy);
@@ -67,6 +119,8 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
     if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
     if (config.format != RowFormat::Console)
         std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
+    for (const Refusal& r : refusals)
+        std::cerr << "bench: error: " << r.message << " (exit code " << int(r.code) << ")\n";
 }
 } // namespace
 
@@ -112,18 +166,41 @@ int RunCommand::run(const RunConfig& config) {
 
     Environment env = Environment::capture();
     std::vector<Measurement> results;
+    std::vector<Refusal> refusals;
+    std::vector<bool> refused(techniques.size(), false);
+    size_t unwritten = 0; // refusal rows not in the CSV yet: held until a technique has been measured
     const std::string baseline = specs.front().toString();
     const size_t total = specs.size() * size_t(config.repeat);
+    size_t done = 0;
     // Rounds interleave the techniques (A B C, A B C ...): ratios are taken within a round, between
     // runs measured next to each other.
     for (int round = 1; round <= config.repeat; ++round) {
         std::optional<double> baselineWall;
         for (size_t i = 0; i < techniques.size(); ++i) {
             Technique& technique = *techniques[i];
+            ++done;
+            // A refusal repeats every round (the same scene, properties and context): reported once.
+            if (refused[i]) continue;
             if (!config.quiet)
-                log << "[" << results.size() + 1 << "/" << total << "] " << technique.name() << " "
+                log << "[" << done << "/" << total << "] " << technique.name() << " "
                     << technique.properties().toString() << " ..." << std::flush;
-            Measurement m = Measurement::take(harness, technique, evaluator.get(), options, env);
+            std::optional<Measurement> measured;
+            try {
+                measured = Measurement::take(harness, technique, evaluator.get(), options, env);
+            } catch (const Error& e) {
+                // One technique's refusal (an open mesh it was told to refuse, a light type or an
+                // extension it lacks) must not cost the others their measurement: reported as a row,
+                // and the exit code says so at the end. The harness resets the frame state every
+                // frame, so the next technique starts clean.
+                refusals.push_back(refusal(technique, e, env, round, baseline));
+                refused[i] = true;
+                ++unwritten;
+                if (!config.quiet) log << " " << statusOf(e.code()) << ": " << e.what() << "\n";
+                if (!results.empty()) appendRefusals(config, refusals, unwritten);
+                continue;
+            }
+            appendRefusals(config, refusals, unwritten); // the ones before the first measurement
+            Measurement& m = *measured;
             if (i == 0) baselineWall = m.run.wall.median;
             m.addRound(round, baseline, baselineWall);
             if (!config.quiet) {
@@ -137,8 +214,11 @@ int RunCommand::run(const RunConfig& config) {
             results.push_back(std::move(m));
         }
     }
-    report(config, harness, results);
-    return 0;
+    // Nothing measured: the run failed as a whole, with the worst error's own line and code, as a
+    // single technique always did (and an existing CSV is left as it was).
+    if (results.empty() && !refusals.empty()) throw Error(worst(refusals).what, worst(refusals).code);
+    report(config, harness, results, refusals);
+    return refusals.empty() ? 0 : int(worst(refusals).code);
 }
 
 int RunCommand::main(int argc, char** argv, RunConfig::Mode mode) {

@@ -14,7 +14,10 @@ public:
     /// argv from the program name on (`bench ...`, or `accuracy ...` for Mode::Accuracy). Returns the
     /// exit code; errors are thrown as sb::Error.
     static int main(int argc, char** argv, RunConfig::Mode mode);
-    /// Measures every technique of `config`, round by round when --repeat asks for several.
+    /// Measures every technique of `config`, round by round when --repeat asks for several. A technique
+    /// that throws sb::Error is reported (row, console line) and the others still run; the exit code is
+    /// then the worst of the refusals (1 over 2 over 3), else 0. When no technique could be measured,
+    /// the worst error is thrown, as a single technique's always was.
     static int run(const RunConfig& config);
     /// The technique specs a run measures: config.techniques, each expanded over its quality knobs
     /// with `bench accuracy --sweep`.

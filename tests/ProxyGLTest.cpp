@@ -306,3 +306,125 @@ TEST(ProxyGLTest, InfinitelySoftUpClose) {
     EXPECT_GT(span, 10 * 4.9e-4) << "the case must span many steps of the target to show anything";
     EXPECT_LT(steepest, 3.0 * span / (0.5 * kSize) + 4.9e-4);
 }
+
+namespace {
+// A caster standing on the floor inside a box proxy whose bottom face is the floor (y = 0 exactly):
+// a ball of radius 0.3 at height 0.6 with a declared box proxy of half extents 1.2, 0.6, 1.2 about its
+// centre, so the box spans y in [0, 1.2] and the floor around the ball, inside the box's footprint
+// |x|, |z| <= 1.2, is a receiver lying on the proxy's bottom face (the fitted box of a teapot on the
+// ground is this case).
+constexpr double kHalf = 1.2;
+
+std::string writeContactScene(const std::string& dir) {
+    const std::string path = dir + "/contact.json";
+    test::writeFile(path, R"({"name": "contact",
+  "meshes": [{"name": "ball", "generator": "sphere", "radius": 0.3, "tessellation": 16,
+              "proxies": [{"shape": "box", "size": [1.2, 0.6, 1.2]}]},
+             {"name": "floor", "generator": "plane", "size": 6, "tessellation": 1}],
+  "instances": [{"mesh": "floor", "position": [0, 0, 0], "casts_shadow": false, "color": [0.5, 0.5, 0.5]},
+                {"mesh": "ball", "position": [0, 0.6, 0], "color": [0.9, 0.2, 0.1]}],
+  "lights": [{"type": "directional", "direction": [0.4, -1, 0.1]}],
+  "effects": [],
+  "cameras": [{"name": "top", "eye": [0, 8, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov": 50,
+               "near": 0.5, "far": 50}]})");
+    return path;
+}
+
+/// The closed form at floor point p (y = 0). Outside the footprint the chapter's halo: distance to the
+/// box (its bottom edge), direction from there. Inside (the receiver lies on the bottom face, which it
+/// never crosses): t = the distance within the floor to the nearest side face's line, the direction the
+/// side normals weighted by 1 / t_f^2 (unit where one or two dominate, shrunk below half length), as
+/// shaders/proxy/lit.frag documents; Listings 1.3 and 1.4 then as outside.
+double contactExpected(double x, double z, double offset, bool modulate) {
+    const glm::dvec3 travel = glm::normalize(kTravel);
+    double dist;
+    glm::dvec3 n(0.0);
+    if (std::abs(x) > kHalf || std::abs(z) > kHalf) {
+        const glm::dvec3 away(x - std::clamp(x, -kHalf, kHalf), 0.0, z - std::clamp(z, -kHalf, kHalf));
+        dist = glm::length(away);
+        n = away / dist;
+    } else {
+        const double t[4] = {kHalf - x, kHalf + x, kHalf - z, kHalf + z};
+        const glm::dvec3 normals[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+        dist = *std::min_element(t, t + 4);
+        glm::dvec3 weighted(0.0);
+        double weights = 0.0;
+        for (int f = 0; f < 4; ++f) {
+            const double w = 1.0 / (t[f] * t[f] + 1e-30);
+            weighted += w * normals[f];
+            weights += w;
+        }
+        const glm::dvec3 w = weighted / weights;
+        n = w / std::max(glm::length(w), 0.5);
+    }
+    if (dist > offset) return 1.0;
+    double shadow = 1.0 - std::min(dist / offset, 1.0);
+    if (modulate) shadow *= std::clamp(glm::dot(travel, n), 0.0, 1.0);
+    return 1.0 - std::clamp(shadow, 0.0, 1.0);
+}
+} // namespace
+
+TEST(ProxyGLTest, ReceiverOnAProxyFaceGetsTheHaloNotAHardShadow) {
+    // Every floor pixel against the closed form, with and without Listing 1.4's modulation (tolerance
+    // 2e-3 as above). Before, the whole footprint was distance 0: v = 1 - dot(travel, down) = 0.08
+    // with modulation (0 without), under a caster the chapter says casts infinitely soft shadows.
+    const std::string scene = writeContactScene(test::freshTestDir("proxy"));
+    for (const bool modulate : {true, false}) {
+        const std::string spec = modulate ? "proxy:offset=0.5" : "proxy:offset=0.5:modulate=off";
+        const Frame f = render(scene, spec);
+        double worst = 0.0;
+        int footprint = 0, deepLit = 0, deep = 0;
+        for (size_t i = 0; i < f.world.size(); ++i) {
+            if (!isFloor(f.world[i])) continue;
+            const double x = f.world[i].x, z = f.world[i].z, v = f.visibility[i * 4];
+            worst = std::max(worst, std::abs(v - contactExpected(x, z, 0.5, modulate)));
+            if (std::abs(x) > kHalf || std::abs(z) > kHalf) continue;
+            ++footprint;
+            // More than ProxyOffset inside the contact line the halo has faded: lit, as the reference
+            // (nothing stands over that floor but the proxy) would have it.
+            if (std::abs(x) < kHalf - 0.55 && std::abs(z) < kHalf - 0.55) ++deep, deepLit += v > 0.999;
+        }
+        EXPECT_LT(worst, 2e-3) << spec;
+        EXPECT_GT(footprint, 3000) << spec << ": the case must show floor inside the footprint";
+        EXPECT_GT(deep, 300) << spec;
+        EXPECT_EQ(deepLit, deep) << spec << ": floor more than ProxyOffset inside the contact line is lit";
+    }
+}
+
+TEST(ProxyGLTest, NoSeamAcrossTheContactLine) {
+    // Along every pixel row and column that crosses the footprint's edge away from its corners (more
+    // than 0.25 from them; at a corner Listing 1.4's direction turns through 90 degrees at distance 0
+    // outside the box too), neighbouring floor pixels may differ by at most 0.05: the halo's steepest
+    // legitimate step there is 0.039 per pixel (ProxyOffset 1, 0.039 units per pixel, the modulation
+    // at most 1), plus the target's rounding. With modulation the seam before was a step of up to 0.92
+    // (0.08 inside against 1 just outside the lit side; 0.63 outside the shadowed side); without it the
+    // footprint was 0 throughout, continuous with the halo outside at distance 0 but a hard full
+    // shadow (the test above).
+    const std::string scene = writeContactScene(test::freshTestDir("proxy"));
+    for (const char* spec : {"proxy", "proxy:modulate=off"}) {
+        const Frame f = render(scene, spec);
+        auto at = [&](int x, int y) { return size_t(y) * kSize + size_t(x); };
+        auto nearEdge = [&](const glm::vec4& w) {
+            const double ax = std::abs(w.x), az = std::abs(w.z);
+            const bool crossesX = std::abs(ax - kHalf) < 0.2 && az < kHalf - 0.25;
+            const bool crossesZ = std::abs(az - kHalf) < 0.2 && ax < kHalf - 0.25;
+            return crossesX || crossesZ;
+        };
+        double steepest = 0.0;
+        int pairs = 0;
+        for (int y = 0; y + 1 < kSize; ++y)
+            for (int x = 0; x + 1 < kSize; ++x)
+                for (const size_t j : {at(x + 1, y), at(x, y + 1)}) {
+                    const size_t i = at(x, y);
+                    if (!isFloor(f.world[i]) || !isFloor(f.world[j])) continue;
+                    if (!nearEdge(f.world[i]) || !nearEdge(f.world[j])) continue;
+                    ++pairs;
+                    steepest =
+                        std::max<double>(steepest, std::abs(f.visibility[i * 4] - f.visibility[j * 4]));
+                }
+        std::cout << spec << ": " << pairs << " neighbouring pairs across the contact line, steepest step "
+                  << steepest << "\n";
+        EXPECT_GT(pairs, 2000) << spec;
+        EXPECT_LT(steepest, 0.05) << spec;
+    }
+}

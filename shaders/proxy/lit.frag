@@ -3,7 +3,9 @@
 // of the proxies overlapping it (0 ends the list), skip the fragment's own object's proxies (the
 // chapter's self-shadow skip), and for each proxy whose influence volume contains the fragment
 // accumulate shadow (Listing 1.3), modulated per light to the egg-shaped volume (Listing 1.4), and
-// colour bleeding towards the light (section 1.5, the same term with the normal reversed).
+// colour bleeding towards the light (section 1.5, the same term with the normal reversed). A receiver
+// inside or touching a proxy gets the same halo, continued from the contact line along the receiver
+// (exitLocal): soft and continuous there too, never a hard full shadow.
 //
 // Defines: LIGHT_COUNT; PROXY_GRID (else every proxy in view is tested: grid=off); PROXY_MODULATE
 // (Listing 1.4, only when the scene has a light to modulate towards); PROXY_BLEED (only when the
@@ -68,37 +70,95 @@ vec3 closestLocal(int shape, vec3 local) {
     return sgn * a;
 }
 
-// Inside any of the three shapes the fragment is in the full shadow (distance 0). The listing's
-// sphere pushes an inside point out to the surface, which would lighten the shadow towards the
-// sphere's centre; box and cylinder leave inside points where they are. All three behave alike here.
-bool insideLocal(int shape, vec3 local) {
+// Inside the shape or touching it: within 1e-4 of its size outside counts as touching, so a receiver
+// lying on a face (a caster's fitted box standing on the ground) is one case, not a rounding coin toss
+// between inside and a distance of 1e-7 in a random direction.
+bool touchingLocal(int shape, vec3 local) {
+    const float grace = 1.0 + 1e-4;
     vec3 a = abs(local);
-    if (shape == 0) return dot(a, a) <= 1.0;
-    if (shape == 1) return all(lessThanEqual(a, vec3(1.0)));
-    return dot(a.xy, a.xy) <= 1.0 && a.z <= 1.0;
+    if (shape == 0) return dot(a, a) <= grace * grace;
+    if (shape == 1) return all(lessThanEqual(a, vec3(grace)));
+    return dot(a.xy, a.xy) <= grace * grace && a.z <= grace;
+}
+
+// A receiver inside (or touching) a proxy sees it where the proxy over-estimates its caster (the
+// proxy encloses the geometry; this fragment is visible through it). Listing 1.1's sphere pushes an
+// inside point out to the surface, so its shadow fades with the depth inside; here every shape does,
+// and the depth is measured along the receiver: the distance t within the receiver's tangent plane to
+// where it leaves the proxy (for a box the nearest of the lines where its faces cross that plane, a
+// face the receiver lies in never bounding it), so the halo runs on into the contact region from
+// the contact line with the same falloff as outside, and a receiver lying on a face is not a point at
+// distance 0 (the hard black footprint the listing would give under every caster on the ground).
+// Curved surfaces (sphere, cylinder side) stand in as their tangent plane at the radially nearest
+// point: exact at the contact line, a little farther inside. weighted / weights is the direction the
+// shadow is cast along: the faces' outward normals weighted by 1 / t_f^2, so it is the crossing
+// face's own normal at the contact line (where the halo outside has it too: no seam with modulation)
+// and turns smoothly between faces inside (no seam where the nearest face changes).
+struct Exit {
+    float t;        // in-plane distance to the nearest exit (1e30: none)
+    vec3 weighted;  // sum of outward normal / t^2
+    float weights;  // sum of 1 / t^2
+};
+
+void addExitAt(inout Exit e, vec3 n, float t) {
+    e.t = min(e.t, t);
+    float w = 1.0 / (t * t + 1e-30);
+    e.weighted += w * n;
+    e.weights += w;
+}
+
+// The two parallel planes local[axis] = +1 and -1 (a box's faces, a cylinder's caps) at once: they
+// share the world normal (up to sign) and its angle with the receiver. `gradient` is the world
+// gradient of local[axis] (row `axis` of mat3(toLocal)), whose length turns local into world distance.
+void addExitPair(inout Exit e, vec3 gradient, float local, vec3 receiverNormal) {
+    // |gradient|^2 sin^2 = |g|^2 - (g.N)^2: two inverse square roots, no division.
+    float g2 = dot(gradient, gradient), gc = dot(gradient, receiverNormal);
+    float s2 = g2 - gc * gc;
+    if (!(s2 > 1e-6 * g2)) return; // sine below 1e-3: the receiver's plane is parallel to these faces
+    float scale = inversesqrt(s2); // local depth -> in-plane world distance, 1 / (|g| sine)
+    vec3 n = gradient * inversesqrt(g2);
+    addExitAt(e, n, max(1.0 - local, 0.0) * scale);
+    addExitAt(e, -n, max(1.0 + local, 0.0) * scale);
+}
+
+// One plane: outward world normal `normal` (unnormalised, as nl * mat3(toLocal)) and local depth.
+void addExit(inout Exit e, vec3 normal, float depth, vec3 receiverNormal) {
+    float len = length(normal);
+    if (!(len > 0.0)) return;
+    vec3 n = normal / len;
+    float c = dot(n, receiverNormal);
+    float sine = sqrt(max(1.0 - c * c, 0.0));
+    if (sine < 1e-3) return;
+    addExitAt(e, n, max(depth, 0.0) / (len * sine));
+}
+
+// Plane of the shape's surface in local coordinates (unit normal nl, points x with dot(nl, x) = 1 for
+// the box's faces; for curved surfaces the tangent plane at the radially nearest point) to world:
+// normal nl * mat3(toLocal), depth (1 - dot(nl, local)) before dividing by that normal's length.
+Exit exitLocal(int shape, vec3 local, mat4 toLocal, vec3 receiverNormal) {
+    Exit e = Exit(1e30, vec3(0.0), 0.0);
+    mat3 m = mat3(toLocal);
+    if (shape == 1) {
+        // Written out: an indexed row or component is a dynamic index on llvmpipe.
+        addExitPair(e, vec3(m[0].x, m[1].x, m[2].x), local.x, receiverNormal);
+        addExitPair(e, vec3(m[0].y, m[1].y, m[2].y), local.y, receiverNormal);
+        addExitPair(e, vec3(m[0].z, m[1].z, m[2].z), local.z, receiverNormal);
+        return e;
+    }
+    if (shape == 2) {
+        addExitPair(e, vec3(m[0].z, m[1].z, m[2].z), local.z, receiverNormal);
+        float r = length(local.xy);
+        vec3 nl = r > 0.0 ? vec3(local.xy / r, 0.0) : vec3(1.0, 0.0, 0.0);
+        addExit(e, nl * m, 1.0 - r, receiverNormal);
+        return e;
+    }
+    float r = length(local);
+    vec3 nl = r > 0.0 ? local / r : vec3(0.0, 0.0, 1.0);
+    addExit(e, nl * m, 1.0 - r, receiverNormal);
+    return e;
 }
 
 #ifdef PROXY_MODULATE
-// The outward normal at the closest point (Listing 1.4's surface.normal), local, then to world through
-// the inverse transpose: n_world ~ transpose(mat3(toLocal)) * n_local = n_local * mat3(toLocal).
-vec3 surfaceNormal(int shape, vec3 local, vec3 closest, mat4 toLocal) {
-    vec3 n;
-    if (shape == 0) {
-        n = closest;
-    } else if (shape == 1) {
-        // The face the point is pushed onto: the axis of largest |local| (inside: the nearest face).
-        vec3 a = abs(local);
-        int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-        n = vec3(0.0);
-        n[axis] = closest[axis] < 0.0 ? -1.0 : 1.0;
-    } else {
-        float radial = length(local.xy);
-        n = abs(local.z) >= 1.0 && radial <= 1.0 ? vec3(0.0, 0.0, local.z < 0.0 ? -1.0 : 1.0)
-            : (radial > 0.0 ? vec3(local.xy / radial, 0.0) : vec3(0.0, 0.0, local.z < 0.0 ? -1.0 : 1.0));
-    }
-    return normalize(n * mat3(toLocal));
-}
-
 // Direction the light travels at world point p (from the light into the scene).
 vec3 lightTravel(int i, vec3 p) {
     if (uLightPos[i].w == 0.0) return uLightDir[i].xyz;
@@ -130,16 +190,27 @@ struct Accum {
     vec3 bleed;      // added light from colour bleeding
 };
 
-void applyProxy(int index, int self, inout Accum acc) {
+void applyProxy(int index, int self, vec3 receiverNormal, inout Accum acc) {
     Proxy p = uProxies[index];
     if (int(p.reflective.w + 0.5) == self) return; // Listing 1.2: ignore self-shadows
     int shape = int(p.diffuse.w + 0.5);
     vec3 local = (p.toLocal * vec4(vWorldPos, 1.0)).xyz;
     vec3 closest = closestLocal(shape, local);
     vec3 surface = (p.toWorld * vec4(closest, 1.0)).xyz;
-    vec3 away = vWorldPos - surface;
-    float dist = insideLocal(shape, local) ? 0.0 : length(away);
-    if (!(dist > 0.0)) dist = 0.0; // a fragment on the surface within rounding
+    float dist;
+    vec3 castDir; // the direction the shadow is cast along (section 1.5), towards the fragment
+    if (touchingLocal(shape, local)) {
+        Exit e = exitLocal(shape, local, p.toLocal, receiverNormal);
+        dist = e.t;
+        // Unit where one or two faces dominate (at a box's corner the bisector, as the halo outside
+        // has it there), shrinking smoothly to 0 where opposite faces balance (no direction to cast).
+        vec3 w = e.weights > 0.0 ? e.weighted / e.weights : vec3(0.0);
+        castDir = w / max(length(w), 0.5);
+    } else {
+        vec3 away = vWorldPos - surface;
+        dist = length(away);
+        castDir = dist > 0.0 ? away / dist : vec3(0.0);
+    }
     if (dist > uShading.x) return; // outside the influence volume
     float shadow = attenuation(dist, uShading.y);
     acc.ambient *= 1.0 - clamp(shadow, 0.0, 1.0);
@@ -149,9 +220,9 @@ void applyProxy(int index, int self, inout Accum acc) {
 #endif
 #ifdef PROXY_MODULATE
     // Section 1.5: the direction the shadow is cast along is the one from the closest surface point to
-    // the fragment; on the surface (or inside) the surface normal. Unlike the normal of the face a
-    // point is pushed onto, it turns continuously round a box's edges and corners (no seams).
-    vec3 n = dist > 0.0 ? away / dist : surfaceNormal(shape, local, closest, p.toLocal);
+    // the fragment (inside or touching: the exits' normals, see exitLocal). Unlike the normal of the
+    // face a point is pushed onto, it turns continuously round a box's edges and corners (no seams).
+    vec3 n = castDir;
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec3 travel = lightTravel(i, surface);
         // Listing 1.4: the shadow stretched away from the light (normal along the light's travel) ...
@@ -171,7 +242,7 @@ void applyProxy(int index, int self, inout Accum acc) {
 #endif
 }
 
-Accum proxies(int self) {
+Accum proxies(int self, vec3 receiverNormal) {
     Accum acc = Accum(vec4(1.0), 1.0, vec3(0.0));
 #ifdef PROXY_GRID
     // Listing 1.2: the cell of this fragment, then its indices until a 0.
@@ -180,10 +251,10 @@ Accum proxies(int self) {
     for (int k = 0; k < uCapacity; ++k) {
         uint entry = uIndexMap[base + k];
         if (entry == 0u) break;
-        applyProxy(int(entry) - 1, self, acc);
+        applyProxy(int(entry) - 1, self, receiverNormal, acc);
     }
 #else
-    for (int k = 0; k < uProxyCount; ++k) applyProxy(k, self, acc);
+    for (int k = 0; k < uProxyCount; ++k) applyProxy(k, self, receiverNormal, acc);
 #endif
     return acc;
 }
@@ -191,7 +262,7 @@ Accum proxies(int self) {
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    Accum acc = proxies(int(vColorId.w + 0.5));
+    Accum acc = proxies(int(vColorId.w + 0.5), n);
     vec3 light = uAmbient.rgb * acc.ambient;
     for (int i = 0; i < LIGHT_COUNT; ++i) light += acc.visibility[i] * lightTerm(i, vWorldPos, n);
 #ifdef PROXY_BLEED

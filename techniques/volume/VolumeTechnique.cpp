@@ -23,6 +23,8 @@ constexpr const char* kBoundedVolumes = "bounded_volumes";
 constexpr const char* kDepthBounds = "depth_bounds";
 // shaders/volume/extrude.vert and light.frag
 constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLightIndexLocation = 12;
+// shaders/volume/ambient.frag
+constexpr GLint kLitRectLocation = 13, kDepthRangeLocation = 17;
 
 glm::vec4 worldLight(const Light& l) {
     // The chapter's L: the position for point and spot lights, the vector towards a directional one.
@@ -49,8 +51,9 @@ std::vector<PropertyDesc> declareProperties() {
                "silhouettes on the CPU per caster (chapter) or in the vertex shader (McGuire-Hughes)"),
         choice(kFar, "infinite", {"infinite", "depth_clamp", "finite"},
                "far plane at infinity, depth clamping, or the camera's (negative control)"),
-        choice(kOpenEdges, "refuse", {"refuse", "multiplicity"},
-               "casters with open edges: refuse naming the mesh, or count per-edge multiplicities"),
+        choice(kOpenEdges, "multiplicity", {"multiplicity", "refuse"},
+               "casters with open edges: count per-edge multiplicities (closed meshes keep the chapter's "
+               "volumes), or refuse naming the mesh"),
         flag(kDirectional, "true", "directional lights: sides as triangles to one point, no dark cap"),
         flag(kRangeCull, "true", "point/spot: casters outside the light's range cast nothing"),
         flag(kFrustumCull, "true", "cull light cap, dark cap and sides against the view frustum"),
@@ -92,6 +95,13 @@ glm::mat4 VolumeTechnique::infiniteFrom(const glm::mat4& proj) {
     return out;
 }
 
+OpenEdgePolicy VolumeTechnique::policyFor(const ShadowVolumeMesh& mesh) const {
+    // The chapter's closed volumes are exact for a closed mesh and cost half of the multiplicity form
+    // (which draws every face in both caps and each silhouette side twice, counting 2 inside): closed
+    // casters keep them whatever the property says, so the multiplicity default costs them nothing.
+    return mesh.closed() ? OpenEdgePolicy::Closed : mSettings.policy;
+}
+
 bool VolumeTechnique::boundedFor(const Light& light) const {
     return mSettings.boundedVolumes && light.type == LightType::Directional && !mSceneBounds.empty();
 }
@@ -118,14 +128,17 @@ VolumeTechnique::Settings VolumeTechnique::readSettings() const {
 
 void VolumeTechnique::checkClosed(const Scene& scene) const {
     if (mSettings.policy != OpenEdgePolicy::Closed) return;
+    // The user asked for closed casters only and the scene has an open one: their input and their
+    // choice disagree (exit 2); the context lacks nothing (exit 3 is for that).
     for (size_t m = 0; m < mBuffers.size(); ++m) {
         const ShadowVolumeMesh* mesh = mBuffers.mesh(m).mesh.get();
         if (!mesh || mesh->closed()) continue;
         throw Error("volume: caster mesh '" + scene.meshes[m].name + "' has " +
                         std::to_string(mesh->openEdgeCount()) +
-                        " open edges after welding (shadow volumes of open meshes leak streaks, GPU Gems "
-                        "9.1.1); use -t volume:open_edges=multiplicity, or make the instance not cast",
-                    ExitCode::Unsupported);
+                        " open edges after welding and open_edges=refuse was asked for (closed-mesh "
+                        "volumes of open meshes leak streaks, GPU Gems 9.1.1); use the default "
+                        "open_edges=multiplicity, or make the instance not cast",
+                    ExitCode::BadInput);
     }
 }
 
@@ -182,9 +195,37 @@ void VolumeTechnique::compile(const CompileContext& ctx) {
         for (auto& slot : mQueries) glGenQueries(GLsizei(slot.size()), slot.data());
 }
 
-void VolumeTechnique::renderAmbient(FrameContext& ctx) {
-    // Listing 9-1's ambient + emissive pass: depth written once; the light passes only add.
+VolumeTechnique::LightRegion VolumeTechnique::regionOf(const Light& light, const FrameContext& ctx,
+                                                       const View& view, const glm::mat4& proj) const {
+    LightRegion r;
+    r.rect = {0, 0, view.width, view.height};
+    if (mSettings.scissor) {
+        const std::optional<glm::ivec4> rect =
+            VolumeGeometry::scissorRect(light, view.viewProj, view.width, view.height);
+        r.rect = rect ? glm::ivec4(rect->x, rect->y, rect->x + rect->z, rect->y + rect->w) : glm::ivec4(0);
+    }
+    if (mSettings.depthBounds && mHasDepthBounds) {
+        const std::optional<glm::vec2> bounds = VolumeGeometry::depthBounds(light, ctx.view, proj);
+        if (bounds) r.depthBounds = true, r.depth = *bounds;
+    }
+    return r;
+}
+
+void VolumeTechnique::renderAmbient(FrameContext& ctx, int lights) {
+    // Listing 9-1's ambient + emissive pass: depth written once; the light passes only add. Where a
+    // light pass will not run (outside its scissor rectangle or depth bounds: beyond the light's range)
+    // nothing is shadowed, so the visibility target gets 1 there now (the range is a lighting term,
+    // not a shadow); inside, 0 until the light pass adds 1 where the stencil count is 0.
     mAmbientProgram->use();
+    std::array<glm::ivec4, kMaxLights> rects{};
+    std::array<glm::vec2, kMaxLights> depths{};
+    for (int i = 0; i < lights; ++i) {
+        const LightRegion& r = mRegions[size_t(i)];
+        rects[size_t(i)] = r.rect;
+        depths[size_t(i)] = r.depthBounds ? r.depth : glm::vec2(0.0f, 1.0f);
+    }
+    glUniform4iv(kLitRectLocation, kMaxLights, glm::value_ptr(rects[0]));
+    glUniform2fv(kDepthRangeLocation, kMaxLights, glm::value_ptr(depths[0]));
     ctx.submitter.draw(DrawSet::All);
 }
 
@@ -228,7 +269,7 @@ void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameSt
             r.sides = !cull.sides;
             // A finite volume needs its dark cap: the directional form closes sides at infinity.
             r.directionalForm = mSettings.directional && lw.w == 0.0f && !finite;
-            r.policy = mSettings.policy;
+            r.policy = policyFor(*gpu.mesh);
             gpu.mesh->buildVolume(r, mVolume);
             d.first = GLint(mStream.size());
             for (const auto* part : {&mVolume.lightCap, &mVolume.darkCap, &mVolume.sides})
@@ -352,26 +393,25 @@ void VolumeTechnique::execute(FrameContext& ctx) {
     mFrameUniforms->upload(FrameUniforms::compute(*mScene, ctx.view, proj, ctx.eye));
     if (mSettings.far == Far::DepthClamp) glEnable(GL_DEPTH_CLAMP);
 
+    const int lights = std::min<int>(int(mScene->lights.size()), kMaxLights);
+    for (int i = 0; i < lights; ++i)
+        mRegions[size_t(i)] = regionOf(mScene->lights[size_t(i)], ctx, view, proj);
     ctx.passes.begin("ambient");
-    renderAmbient(ctx);
+    renderAmbient(ctx, lights);
     readStencilQuery();
     FrameStats stats;
-    const int lights = std::min<int>(int(mScene->lights.size()), kMaxLights);
     for (int i = 0; i < lights; ++i) {
         const Light& light = mScene->lights[size_t(i)];
+        const LightRegion& region = mRegions[size_t(i)];
+        if (region.empty()) continue; // the light's range is off screen: it adds nothing to this frame
         if (mSettings.scissor) {
-            const std::optional<glm::ivec4> r =
-                VolumeGeometry::scissorRect(light, view.viewProj, view.width, view.height);
-            if (!r) continue; // the light's range is off screen: it adds nothing to this frame
-            glScissor(r->x, r->y, r->z, r->w);
+            glScissor(region.rect.x, region.rect.y, region.rect.z - region.rect.x,
+                      region.rect.w - region.rect.y);
             glEnable(GL_SCISSOR_TEST);
         }
-        std::optional<glm::vec2> bounds;
-        if (mSettings.depthBounds && mHasDepthBounds)
-            bounds = VolumeGeometry::depthBounds(light, ctx.view, proj);
-        if (bounds) {
+        if (region.depthBounds) {
             glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
-            glDepthBoundsEXT(bounds->x, bounds->y);
+            glDepthBoundsEXT(region.depth.x, region.depth.y);
         }
         ctx.passes.begin("mark");
         collectDraws(light, view, stats);
@@ -379,7 +419,7 @@ void VolumeTechnique::execute(FrameContext& ctx) {
         ctx.passes.begin("lighting");
         renderLight(ctx, i);
         glDisable(GL_SCISSOR_TEST);
-        if (bounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
+        if (region.depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
     }
     ++mQueryFrame;
     glDisable(GL_DEPTH_CLAMP);

@@ -5,8 +5,9 @@
 // Program structure (Listing 9-1): an ambient pass writes depth and the ambient colour; then per light
 // the stencil is cleared, every caster's shadow volume is counted into it with two-sided wrapping
 // increment/decrement (colour and depth writes off), and the light's diffuse term is added where the
-// count is 0 (depth EQUAL, blend ONE, ONE). The visibility target gets 1 in light i's channel where
-// that light pass drew.
+// count is 0 (depth EQUAL, blend ONE, ONE). The visibility target means shadowing only: 1 in light i's
+// channel where that light pass drew, and where it does not run at all (outside the light's scissor
+// rectangle or depth bounds, beyond its range: no volume is counted there), 0 where a volume covers.
 //
 // Volumes (sections 9.2-9.3): light cap (light-facing faces), dark cap (the others sent to infinity
 // through w = 0) and sides extruded from silhouette edges, from the CPU per caster and light
@@ -24,10 +25,13 @@
 // depth_bounds (9.6.3; needs
 // GL_EXT_depth_bounds_test, which llvmpipe does not expose: the run is skipped as unsupported there).
 //
-// Casters must be closed (every edge two faces, after welding). open_edges=refuse names the mesh and
-// its open edge count; open_edges=multiplicity counts every face as a double-sided occluder with per-
-// edge multiplicities, which is exact for open meshes too (see ShadowVolumeMesh.h); the vertex path
-// gets the same volume from a two-sheet extrusion mesh (every face and its reversed twin).
+// The chapter's volumes need closed casters (every edge two faces, after welding). Most model files
+// are not closed, so the default open_edges=multiplicity counts every face of an open caster as a
+// double-sided occluder with per-edge multiplicities, which is exact for open meshes too (see
+// ShadowVolumeMesh.h); the vertex path gets the same volume from a two-sheet extrusion mesh (every
+// face and its reversed twin). Closed casters keep the chapter's volumes under either setting (no
+// cost for the default). open_edges=refuse names the open mesh and its open edge count instead
+// (exit code 2: the scene does not meet what was asked for).
 #include <array>
 #include <memory>
 #include <vector>
@@ -64,7 +68,7 @@ private:
         Far far = Far::Infinite;
         bool vertexExtrusion = false, directional = true, rangeCull = true, frustumCull = true,
              scissor = true, finiteVolumes = false, boundedVolumes = true, depthBounds = false;
-        OpenEdgePolicy policy = OpenEdgePolicy::Closed;
+        OpenEdgePolicy policy = OpenEdgePolicy::Multiplicity;
     };
     struct Caster {
         uint32_t instance = 0, mesh = 0;
@@ -94,11 +98,26 @@ private:
         int width = 0, height = 0;
     };
 
+    /// Where light i's pass runs this frame: its scissor rectangle {x0, y0, x1, y1} in pixels (the
+    /// viewport without scissoring, empty when the range is off screen) and its depth bounds.
+    struct LightRegion {
+        glm::ivec4 rect{0};
+        bool depthBounds = false;
+        glm::vec2 depth{0.0f, 1.0f};
+        bool empty() const { return rect.z <= rect.x || rect.w <= rect.y; }
+    };
+
     Settings readSettings() const;
+    LightRegion regionOf(const Light& light, const FrameContext& ctx, const View& view,
+                         const glm::mat4& proj) const;
+    /// The policy buildVolume() gets for `mesh`: Closed for closed meshes, else the property's.
+    OpenEdgePolicy policyFor(const ShadowVolumeMesh& mesh) const;
     /// bounded_volumes applies to this light (directional, scene not empty).
     bool boundedFor(const Light& light) const;
     void checkClosed(const Scene& scene) const;
-    void renderAmbient(FrameContext& ctx);
+    /// The ambient pass; the visibility target starts as 1 outside each light's region (no shadow
+    /// there), 0 inside (the light pass adds 1 where the stencil count is 0).
+    void renderAmbient(FrameContext& ctx, int lights);
     /// Builds the draws of light `i` (CPU silhouettes streamed into one buffer) and counts them.
     void collectDraws(const Light& light, const View& view, FrameStats& stats);
     void markShadows(int light);
@@ -120,6 +139,7 @@ private:
 
     // Per-frame scratch, kept to avoid allocation in the measured frames.
     std::vector<Draw> mDraws;
+    std::array<LightRegion, kMaxLights> mRegions{};
     std::vector<uint32_t> mStream;
     VolumeIndices mVolume;
 
