@@ -240,15 +240,23 @@ TEST(Cli, AccuracyRowHasTimingAndEveryDocumentedAccuracyColumn) {
 }
 
 TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
-    // none runs and appends its row; shadowmap then refuses the point light. The none row stays.
+    // none runs and appends its row; shadowmap then refuses the point light: its refusal is a row of its
+    // own (status unsupported, the reason in error), the none row stays, and the exit code says what
+    // the machine lacked (3).
     std::string dir = test::freshDir("cli-partial");
     std::string csv = dir + "/r.csv";
     auto r = runCommand(bench("-t none -t shadowmap --light point" + kQuick + " --csv " + csv));
     EXPECT_EQ(r.exitCode, 3) << r.output;
     CsvTable t = CsvWriter::read(csv);
-    ASSERT_EQ(t.rows.size(), 1u);
-    EXPECT_EQ(t.rows[0][size_t(std::find(t.header.begin(), t.header.end(), "technique") - t.header.begin())],
-              "none");
+    ASSERT_EQ(t.rows.size(), 2u);
+    auto cell = [&](size_t row, const std::string& name) {
+        return t.rows[row][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
+    };
+    EXPECT_EQ(cell(0, "technique"), "none");
+    EXPECT_EQ(cell(0, "status"), "ok");
+    EXPECT_EQ(cell(1, "technique"), "shadowmap");
+    EXPECT_EQ(cell(1, "status"), "unsupported");
+    EXPECT_NE(cell(1, "error").find("point light"), std::string::npos) << cell(1, "error");
 }
 
 } // namespace
