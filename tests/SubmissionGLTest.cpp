@@ -71,12 +71,12 @@ TEST_P(SubmissionModes, SameImageAsRetained) {
     EXPECT_LE(visDiff, ref.visibility.size() / 1000);
 }
 
-// Every technique whose passes go through the submitter, under each mode but the reference's own.
-// The ad-hoc techniques draw their receivers in a pass of their own, after the casters: projective's
-// NonCasters set is drawn last and unbinds its texture right after it, the state change that Mesa
-// applies to immediate-mode vertices it has not yet flushed (ImmediateSubmitter.h). `primitives`
-// ends its instance list with a big caster whose lit side a technique's final unbind must not
-// darken (shadowmap and reference, which unbind after one DrawSet::All).
+// The techniques under every mode but retained (the image they must match). A technique that unbinds a
+// texture right after its last draw exposes the driver keeping immediate-mode vertices unflushed across that
+// unbind (ImmediateSubmitter.h): projective's receivers are its last draw (all black before the fix), and on
+// `primitives`, whose instance list ends with a cylinder in view, shadowmap's and reference's last instance
+// was shaded with the default texture (600 pixels, 0.9%, shadowed). Planar and blob unbind nothing; they are
+// here so that every ad-hoc technique is held to the same image in every mode.
 const ModeCase kModeCases[] = {
     {"none", SubmitMode::Immediate},
     {"none", SubmitMode::DisplayList},
