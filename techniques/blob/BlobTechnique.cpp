@@ -18,10 +18,30 @@ constexpr const char* kFade = "fade";
 constexpr GLint kPlaneLocation = 12, kAlbedoLocation = 14; // shaders/blob/blob.frag
 constexpr GLuint kBlobBinding = 4;                         // shaders/blob/blob.vert
 
-/// `p` projected onto the plane along the light: from a point light's position (a point level with
-/// the light or above it, of a caster straddling the light's height, is held at 99% of the light's
-/// height: its shadow is huge but finite), along a directional one.
-glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, const glm::vec4& light) {
+/// How far from the light's foot (its orthogonal projection onto the plane) light reaches on the
+/// plane: the circle its range cuts out (0: the plane is beyond the range) and the farthest corner of
+/// the plane's rectangle (a receiver ends there). Infinite for an unlimited light over a rectangle of
+/// no extent (a plane built by hand).
+float reachOnPlane(const ReceiverPlane& plane, const Light& light, const glm::vec3& foot, float hl) {
+    float reach = INFINITY;
+    if (light.range > 0.0f) reach = hl < light.range ? std::sqrt(light.range * light.range - hl * hl) : 0.0f;
+    float farthest = 0.0f;
+    for (const glm::vec3& c : plane.corners) farthest = std::max(farthest, glm::distance(c, foot));
+    if (farthest > 0.0f) reach = std::min(reach, farthest);
+    return reach;
+}
+
+/// `p` projected onto the plane along the light: from a point light's position, along a directional
+/// one. A point light lands a point at height h and distance r from its foot at r hl / (hl - h): the
+/// part of a caster near the light's height casts a shadow that runs off to infinity, and a point at
+/// or above that height none at all (the shadow of a caster straddling the light's height is an
+/// unbounded wedge behind it). Such points are held where the light stops reaching, `reach` from the
+/// foot in the point's direction (or at their own distance, when they lie beyond it already): the
+/// blob covers the wedge as far as anything is lit and no further, where holding them at a fixed
+/// fraction of the light's height magnified them through it over the whole lit pool. With no reach
+/// known (infinite), points are held at 99% of the light's height (a magnification of 100).
+glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, const glm::vec4& light,
+                            float reach) {
     const float h = plane.distance(p);
     if (light.w == 0.0f) { // directional: light.xyz points towards the light
         const glm::vec3 dir = -glm::vec3(light);
@@ -29,8 +49,17 @@ glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, cons
     }
     const glm::vec3 l(light);
     const float hl = plane.distance(l);
-    const float hp = std::min(h, 0.99f * hl);
-    return l + (p - l) * (hl / (hl - hp));
+    if (!std::isfinite(reach)) {
+        const float hp = std::min(h, 0.99f * hl);
+        return l + (p - l) * (hl / (hl - hp));
+    }
+    const glm::vec3 foot = l - hl * plane.normal;
+    const glm::vec3 offset = (p - h * plane.normal) - foot; // in the plane
+    const float r = glm::length(offset);
+    const float limit = std::max(reach, r);
+    const float landed = h < hl ? r * (hl / (hl - h)) : INFINITY;
+    if (landed <= limit) return foot + offset * (hl / (hl - h));
+    return r > 0.0f ? foot + offset * (limit / r) : foot;
 }
 
 /// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
@@ -90,9 +119,19 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
         hMax = std::max(hMax, ground.distance(p));
     }
     if (!(hMax > 0.0f)) return std::nullopt; // wholly below the ground
-    // A point light below the caster's bottom: every ray from the ground to the light passes under it,
-    // so it shadows nothing (projected through the light it would cover the whole ground).
-    if (l.w != 0.0f && hMin >= ground.distance(glm::vec3(l))) return std::nullopt;
+    float reach = INFINITY;
+    if (l.w != 0.0f) {
+        const float hl = ground.distance(glm::vec3(l));
+        // A point light below the caster's bottom: every ray from the ground to the light passes under
+        // it, so it shadows nothing (projected through the light it would cover the whole ground).
+        if (hMin >= hl) return std::nullopt;
+        // A shadow lies farther from the light than its caster: a caster wholly beyond the light's
+        // range shadows only ground that the light does not reach.
+        const glm::vec3 nearest = glm::clamp(glm::vec3(l), bounds.min, bounds.max);
+        if (light.range > 0.0f && glm::distance(nearest, glm::vec3(l)) >= light.range) return std::nullopt;
+        reach = reachOnPlane(ground, light, glm::vec3(l) - hl * ground.normal, hl);
+        if (!(reach > 0.0f)) return std::nullopt; // the ground lies beyond the range
+    }
     const float radius = 0.5f * glm::length(bounds.extent());
     const float alpha =
         opacity * std::clamp(1.0f - std::max(hMin, 0.0f) / (fade * std::max(radius, 1e-6f)), 0.0f, 1.0f);
@@ -104,7 +143,7 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
     std::array<glm::vec2, 8> q;
     glm::vec2 mean(0.0f);
     for (size_t i = 0; i < 8; ++i) {
-        const glm::vec3 p = projectAlongLight(c[i], ground, l) - origin;
+        const glm::vec3 p = projectAlongLight(c[i], ground, l, reach) - origin;
         q[i] = {glm::dot(p, t), glm::dot(p, b)};
         mean += q[i] / 8.0f;
     }

@@ -7,6 +7,11 @@
 //     directional light's direction); the ellipse is centred on their mean, its axes are their
 //     principal axes (2x2 covariance) and its semi-axes sqrt(2) standard deviations: the ellipse
 //     through the corners of a rectangular footprint, and continuous in the light and the object;
+//   - a point light within a caster's height (a torch among pillars): the shadow of such a caster is
+//     a wedge behind it that runs off to infinity, so corners that would land beyond where the light
+//     reaches on the ground (its range's circle, the ground's rectangle) are held there, in their
+//     direction from the light: the blob covers the wedge as far as anything is lit, behind the
+//     caster, instead of the whole pool; a caster wholly beyond the range gets no blob;
 //   - opacity falls with the height of the bounds' bottom over the ground, linearly to 0 at `fade`
 //     bounding radii;
 //   - a radial profile 1 - smoothstep(1 - softness, 1, r) (r = 1 on the ellipse): the fake softness.

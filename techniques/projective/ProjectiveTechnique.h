@@ -10,13 +10,19 @@
 //   "lighting" the casters drawn fully lit; the non-casting instances (DrawSet::NonCasters: grounds,
 //              walls) drawn with the textures projected onto them: visibility_i = the texture of light i
 //              at projector_i * world, with projective texture coordinates (s/q, t/q).
-// Projectors: directional lights use the shadow map's fit (scenes/LightFit.h: orthographic, fitted to
-// the casters' bounds); point and spot lights get a perspective projector at the light, looking at
-// the centre of the casters' bounding sphere, with a square frustum whose half-angle encloses that
-// sphere (asin(r / dist), padded), near = max(dist - r, 1e-3 dist), far = dist + r. A light inside
-// the sphere (or so close that the half-angle would pass kMaxHalfAngleDeg = 80 degrees) gets the
-// 80-degree frustum: casters outside it are missing from the texture (the slides' "occluder very close
-// to the light: wide frustum" problem, made finite instead of degenerate); counter
+// Projectors: directional lights use the shadow map's fit (scenes/LightFit.h: orthographic, fitted to the
+// casters' bounds); point and spot lights get a perspective projector at the light, looking at the centre of
+// the casters' bounding sphere, with a square frustum whose half-angle encloses that sphere (asin(r / dist),
+// padded), near = max(dist - r, 1e-3 dist), far = dist + r (the slides' "light camera that encloses shadowed
+// area (bounding box of the occluder)"). A light inside that sphere cannot enclose casters that lie all
+// around it (a torch among pillars, a candle in a lantern); there the projector encloses the shadowed area
+// itself: it looks from the light at the receivers' bounds (within the light's range), half-angle to their
+// farthest corner, far at their deepest corner, near 1e-3 far, so the casters between the light and the
+// receivers, the only ones that can shadow them, are in the texture and those above the light are clipped.
+// The light among the receivers too looks down the spot's axis, or straight down. A half-angle past
+// kMaxHalfAngleDeg = 80 degrees is clamped to it: receivers outside the frustum are lit (the slides'
+// "occluder very close to the light: wide frustum" problem, made finite instead of degenerate; in
+// jack_o_lantern the ground outside the frustum's square |x|, |z| < 1.2 tan 80 = 6.8); counter
 // `projector_clamped` counts such lights.
 //
 // Why the design is what it is:
@@ -42,8 +48,8 @@ namespace sb {
 
 class ProjectiveTechnique final : public Technique {
 public:
-    /// The widest projector half-angle (degrees): a light inside (or touching) the casters' bounding
-    /// sphere gets this frustum instead of one that would have to reach 90 degrees or more.
+    /// The widest projector half-angle (degrees): a projector that would need a wider frustum (one
+    /// reaching 90 degrees or more) gets this one.
     static constexpr float kMaxHalfAngleDeg = 80.0f;
 
     /// A light's projector: view-projection of the light camera (clip space) and whether its frustum
@@ -62,6 +68,10 @@ public:
 
     /// The projector of `light` for `scene` (whose casters must not be empty). Public for tests.
     static Projector computeProjector(const Scene& scene, const Light& light);
+    /// A point or spot light's projector aimed at `receivers` (world bounds, not empty): from the
+    /// light towards their centre, the half-angle to their farthest corner (at most
+    /// kMaxHalfAngleDeg), far at their deepest corner. Public for tests.
+    static Projector aimAtReceivers(const Light& light, const Aabb& receivers);
 
 private:
     void renderTexture(FrameContext& ctx);

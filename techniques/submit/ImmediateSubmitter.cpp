@@ -21,6 +21,15 @@ void ImmediateSubmitter::draw(DrawSet set) {
         mStats.instances += 1;
         mStats.glCalls += kInstanceUniformCalls + immediateCalls(mesh);
     }
+    flushBufferedVertices();
+    mStats.glCalls += 1;
+}
+
+void ImmediateSubmitter::flushBufferedVertices() {
+    // An empty draw: every implementation must order a draw after the vertices before it, and Mesa
+    // does so by flushing its glBegin/glEnd buffer (FLUSH_FOR_DRAW) before it sees the count of 0.
+    // Unlike glFlush it does not hand the frame to the rasteriser early.
+    glDrawArrays(GL_TRIANGLES, 0, 0);
 }
 
 } // namespace sb

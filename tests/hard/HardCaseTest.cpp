@@ -297,6 +297,32 @@ const HardCase kCases[] = {
      0.65, 0.2, 3, 3, 3,
      "(0.45%, 0.13% off the edge; 1.07/1.17/1.05): 128^2 texels near the camera cover several pixels each: "
      "the staircase leaves the edge band, 5x the default's error, bounded"},
+    // A point light within the casters' height (GPU Gems ch. 9's torch among pillars, Figure 9-2's
+    // candle in a lantern), measured 2026-12-01; `none` (no shadow at all) in brackets is the bound
+    // each row must stay under.
+    {"adhoc_blob_point_light", "scenes/data/point_light.json", "far", "blob", 384, 6.0, 2.7, 3, 3, 3,
+     "(4.84%, 2.13% off the edge; 1.02/0/0.90) [none 13.38%, 10.34%]: the pillars straddle the torch's "
+     "height; their blobs run from each pillar away from the light to where its range stops reaching, the "
+     "wedges' lit part (73.0% before, 77.3% off the edge: corners above the light were held at 0.99 of "
+     "its height and magnified 100x through it, every blob over the whole pool); what remains is the "
+     "ellipses' ends and widths against the wedges"},
+    {"adhoc_projective_point_light", "scenes/data/point_light.json", "far", "projective", 384, 0.4, 0.08, 3,
+     3, 3,
+     "(0.29%, 0.059%; 1.10/0/1.03) [none 13.38%]: the light is inside the casters' bounds, so the "
+     "projector looks from it down at the lit ground (13.38% before, the same as none: it looked up at "
+     "the bounds' centre, the ground behind it); the 80-degree frustum's square reaches 14.2 from the light "
+     "along each axis, past the range of 11; the rest is the 512^2 staircase"},
+    {"adhoc_projective_jack_o_lantern", "scenes/data/jack_o_lantern.json", "mid", "projective", 384, 32.5,
+     33.0, 3, 45, 3,
+     "(26.04%, 26.40%; 1.72/34 = 34 px against 1/1.90) [none 73.05%]: a known limit, bounded: the light is "
+     "inside the shell and the ground reaches 87 degrees off the axis, so the frustum is clamped to 80 and "
+     "the ground outside the square |x|, |z| < 1.2 tan 80 = 6.8 is lit where the shell shadows it (73.05% "
+     "before: no shadow at all); inside it the shell's silhouette with its mouth's lit fan is right; the "
+     "frustum's rim on the far ground is what a 0.01 degree light turn moves"},
+    {"adhoc_projective_jack_o_lantern_top", "scenes/data/jack_o_lantern.json", "top", "projective", 384, 0.11,
+     0.01, 3, 3, 3,
+     "(0.083%, 0% off the edge; 0.66/1.75/1.02) [none 83.04%]: seen from above, the judged ground lies "
+     "inside the clamped frustum: the fan through the mouth is exact up to the staircase (83.04% before)"},
 };
 
 class HardCases : public ::testing::TestWithParam<HardCase> {};
