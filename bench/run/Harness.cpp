@@ -37,6 +37,7 @@ Harness::Harness(const RunConfig& config) : mConfig(config) {
                     " lights; at most " + std::to_string(kMaxLights) + " are supported");
 
     mContext = createContext(config.context);
+    mPrograms.setDumpDirectory(config.dumpShadersPath);
     DebugOutput::install();
     mTargets = std::make_unique<FrameTargets>(config.width, config.height);
     mSubmitter = Submitter::create(config.submit);
@@ -79,6 +80,7 @@ void Harness::updateFrameData() {
 }
 
 const TimerVerdict& Harness::calibrateTimer() {
+    mPrograms.setDumpLabel("timer_trust");
     if (!mVerdict.checked) mVerdict = TimerTrust::calibrate(mPrograms);
     mTimerQueries = mVerdict.trusted;
     mPassTimer->setRing(mTimerQueries ? mRing.get() : nullptr);
@@ -90,6 +92,7 @@ void Harness::prepare(Technique& technique) {
     if (!missing.empty()) throw Error(missing, ExitCode::Unsupported);
     DebugOutput::setCurrentPass(technique.name() + "/setup");
     technique.setScene(mScene);
+    mPrograms.setDumpLabel(technique.name());
     technique.compile({mPrograms, mScene, *mSubmitter, *mContext});
     DebugOutput::check();
     DebugOutput::setCurrentPass("");
