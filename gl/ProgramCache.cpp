@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 #include <utility>
 
@@ -106,6 +107,55 @@ GLuint link(const std::vector<GLuint>& shaders, const std::string& what) {
     throw Error("cannot link program (" + what + "): " + leadWithFirstError(log), ExitCode::Failure);
 }
 
+constexpr const char* kUntagged = "untagged";
+
+/// "vertex.vert" etc.: the stage's name with the extension glslangValidator reads the stage from.
+std::string stageFileName(GLenum stage) {
+    switch (stage) {
+    case GL_VERTEX_SHADER:
+        return "vertex.vert";
+    case GL_FRAGMENT_SHADER:
+        return "fragment.frag";
+    case GL_GEOMETRY_SHADER:
+        return "geometry.geom";
+    case GL_COMPUTE_SHADER:
+        return "compute.comp";
+    default:
+        return std::string(ShaderPreprocessor::stageName(stage)) + ".glsl";
+    }
+}
+
+std::string programName(const ShaderSources& sources) {
+    std::string name;
+    for (const std::string* file : {&sources.vertex, &sources.geometry, &sources.fragment}) {
+        if (file->empty()) continue;
+        std::string part = *file;
+        std::replace(part.begin(), part.end(), '/', '-');
+        name += (name.empty() ? "" : "+") + part;
+    }
+    return name;
+}
+
+/// The stages of a program in compile order, each with its file.
+std::vector<std::pair<GLenum, const std::string*>> stagesOf(const ShaderSources& sources) {
+    std::vector<std::pair<GLenum, const std::string*>> stages = {{GL_VERTEX_SHADER, &sources.vertex}};
+    if (!sources.geometry.empty()) stages.emplace_back(GL_GEOMETRY_SHADER, &sources.geometry);
+    if (!sources.fragment.empty()) stages.emplace_back(GL_FRAGMENT_SHADER, &sources.fragment);
+    return stages;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::error_code error;
+    std::filesystem::create_directories(path.parent_path(), error);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (error || !out)
+        throw Error("--dump-shaders: cannot write '" + path.string() + "'" +
+                        (error ? " (" + error.message() + ")" : ""),
+                    ExitCode::BadInput);
+}
+
 } // namespace
 
 std::string definesKey(const Defines& d) {
@@ -122,17 +172,15 @@ ProgramCache::ProgramCache(std::string shaderRoot)
     : mRoot(shaderRoot.empty() ? findShaderRoot() : std::move(shaderRoot)) {}
 
 const Program& ProgramCache::get(const ShaderSources& sources, const Defines& defines) {
+    if (!mDumpDirectory.empty()) dump(sources, defines);
     std::string key = cacheKey(sources, defines);
     auto it = mPrograms.find(key);
     if (it != mPrograms.end()) return *it->second;
     ++mCompiles;
     std::vector<GLuint> shaders;
     try {
-        shaders.push_back(compileStage(mRoot, sources.vertex, defines, GL_VERTEX_SHADER));
-        if (!sources.geometry.empty())
-            shaders.push_back(compileStage(mRoot, sources.geometry, defines, GL_GEOMETRY_SHADER));
-        if (!sources.fragment.empty())
-            shaders.push_back(compileStage(mRoot, sources.fragment, defines, GL_FRAGMENT_SHADER));
+        for (const auto& [stage, file] : stagesOf(sources))
+            shaders.push_back(compileStage(mRoot, *file, defines, stage));
     } catch (...) {
         for (GLuint shader : shaders) glDeleteShader(shader);
         throw;
@@ -144,6 +192,40 @@ const Program& ProgramCache::get(const ShaderSources& sources, const Defines& de
 
 void ProgramCache::clear() {
     mPrograms.clear();
+}
+
+void ProgramCache::setDumpDirectory(const std::string& directory) {
+    mDumpDirectory = directory;
+    mDumped.clear();
+    mDumpLog.clear();
+    if (directory.empty()) return;
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error || !std::filesystem::is_directory(directory))
+        throw Error("--dump-shaders " + directory + ": cannot create the directory" +
+                        (error ? " (" + error.message() + ")" : ""),
+                    ExitCode::BadInput);
+}
+
+std::vector<std::string> ProgramCache::takeDumpLog() {
+    return std::exchange(mDumpLog, {});
+}
+
+std::string ProgramCache::dumpPath(const std::string& label, const ShaderSources& sources,
+                                   const Defines& defines, GLenum stage) {
+    std::string permutation = definesKey(defines);
+    return (label.empty() ? kUntagged : label) + "/" + programName(sources) + "/" +
+           (permutation.empty() ? "default" : permutation) + "/" + stageFileName(stage);
+}
+
+/// Writes each stage not yet written under this label; the source is the one compileStage builds.
+void ProgramCache::dump(const ShaderSources& sources, const Defines& defines) {
+    for (const auto& [stage, file] : stagesOf(sources)) {
+        std::string path = dumpPath(mDumpLabel, sources, defines, stage);
+        mDumpLog.push_back(path);
+        if (!mDumped.insert(path).second) continue;
+        writeText(std::filesystem::path(mDumpDirectory) / path, preprocess(*file, defines, stage));
+    }
 }
 
 std::string ProgramCache::preprocess(const std::string& file, const Defines& defines, GLenum stage) const {

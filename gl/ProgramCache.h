@@ -4,9 +4,17 @@
 // "#version 450 compatibility", then one "#define NAME VALUE" per define (sorted), then the file with
 // `#include "common/x.glsl"` lines expanded (relative to shaders/). Compile errors throw sb::Error
 // naming the shader file and the line in that file (the #line bookkeeping maps back through includes).
+// With a dump directory set (bench --dump-shaders DIR), every stage of every program get() hands out is
+// also written, exactly as it goes to glShaderSource, to
+//   DIR/<label>/<program>/<permutation>/<stage>.<ext>
+// label: the technique being compiled (setDumpLabel); program: its files, '/' as '-', joined by '+'
+// ("common-scene.vert+shadowmap-lighting.frag"); permutation: definesKey ("default" when empty);
+// stage and ext: vertex.vert, fragment.frag, geometry.geom (the extensions glslangValidator takes the
+// stage from). The path names the source exactly: the files, the defines and the stage determine it.
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -59,8 +67,25 @@ public:
     /// adds "#define SB_VERTEX_SHADER 1" (SB_FRAGMENT_SHADER, SB_GEOMETRY_SHADER) after the defines.
     std::string preprocess(const std::string& file, const Defines& defines, GLenum stage) const;
 
+    /// Dump every stage get() hands out under `directory` (created; "" stops dumping). Throws
+    /// sb::Error(BadInput) naming the directory when it cannot be created.
+    void setDumpDirectory(const std::string& directory);
+    /// First path component of the dumped files (the technique name); "" = "untagged".
+    void setDumpLabel(const std::string& label) { mDumpLabel = label; }
+    /// While dumping: the dump-relative paths of the stages get() handed out (hits included) since the
+    /// last call, in order. Tests use it to tell which sources one compile() selected.
+    std::vector<std::string> takeDumpLog();
+    /// "label/program/permutation/stage.ext" of one stage (the layout above).
+    static std::string dumpPath(const std::string& label, const ShaderSources& sources,
+                                const Defines& defines, GLenum stage);
+
 private:
+    void dump(const ShaderSources& sources, const Defines& defines);
     std::string mRoot;
+    std::string mDumpDirectory;
+    std::string mDumpLabel;
+    std::set<std::string> mDumped; ///< dump-relative paths already written
+    std::vector<std::string> mDumpLog;
     std::map<std::string, std::unique_ptr<Program>> mPrograms;
     size_t mCompiles = 0;
 };

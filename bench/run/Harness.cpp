@@ -37,6 +37,7 @@ Harness::Harness(const RunConfig& config) : mConfig(config) {
                     " lights; at most " + std::to_string(kMaxLights) + " are supported");
 
     mContext = createContext(config.context);
+    mPrograms.setDumpDirectory(config.dumpShadersPath);
     DebugOutput::install();
     mTargets = std::make_unique<FrameTargets>(config.width, config.height);
     mSubmitter = Submitter::create(config.submit);
@@ -79,12 +80,14 @@ void Harness::updateFrameData() {
 }
 
 const TimerVerdict& Harness::calibrateTimer() {
+    mPrograms.setDumpLabel("timer_trust");
     if (!mCalibration.checked) setTimerVerdict(TimerTrust::calibrate(mPrograms));
     return mVerdict;
 }
 
 const TimerVerdict& Harness::recheckTimer() {
     if (!mCalibration.checked || !mCalibration.trusted) return mVerdict = mCalibration;
+    mPrograms.setDumpLabel("timer_trust");
     mVerdict = TimerTrust::afterRun(mCalibration, TimerTrust::calibrate(mPrograms));
     // A timer that failed once in this process is not trusted again: later runs keep the withdrawn
     // verdict and issue no timer queries.
@@ -97,6 +100,7 @@ void Harness::prepare(Technique& technique) {
     if (!missing.empty()) throw Error(missing, ExitCode::Unsupported);
     DebugOutput::setCurrentPass(technique.name() + "/setup");
     technique.setScene(mScene);
+    mPrograms.setDumpLabel(technique.name());
     technique.compile({mPrograms, mScene, *mSubmitter, *mContext});
     DebugOutput::check();
     DebugOutput::setCurrentPass("");

@@ -26,16 +26,17 @@ struct RunConfig {
     double seconds = 0.0; ///< measure for this long instead (at least kMinFrames frames)
     int warmup = 5;       ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)
     ContextOptions context;
-    std::string csvPath;        ///< --csv: append one row per technique
-    std::string samplesPath;    ///< --samples: per-frame samples
-    std::string screenshotPath; ///< --screenshot: colour PNG (technique name inserted when several)
-    std::string visibilityPath; ///< --visibility: visibility PNG
-    bool checkTimer = true;     ///< run the GPU-timer trust calibration
-    bool sweep = false;         ///< accuracy: walk each technique's quality knobs
-    int accuracyLight = 0;      ///< accuracy: which light is judged
-    int referenceSamples = 64;  ///< accuracy: reference samples per pixel for area lights
-    bool stability = true;      ///< accuracy: perturbation gain and flicker
-    int windowFrames = 0;       ///< --window: close after this many frames (0 = when the window closes)
+    std::string csvPath;         ///< --csv: append one row per technique
+    std::string samplesPath;     ///< --samples: per-frame samples
+    std::string screenshotPath;  ///< --screenshot: colour PNG (technique name inserted when several)
+    std::string visibilityPath;  ///< --visibility: visibility PNG
+    std::string dumpShadersPath; ///< --dump-shaders: every assembled stage (gl/ProgramCache.h)
+    bool checkTimer = true;      ///< run the GPU-timer trust calibration
+    bool sweep = false;          ///< accuracy: walk each technique's quality knobs
+    int accuracyLight = 0;       ///< accuracy: which light is judged
+    int referenceSamples = 64;   ///< accuracy: reference samples per pixel for area lights
+    bool stability = true;       ///< accuracy: perturbation gain and flicker
+    int windowFrames = 0;        ///< --window: close after this many frames (0 = when the window closes)
     bool quiet = false;
     int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
     RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr

@@ -89,6 +89,8 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
     app.add_option("--samples", c.samplesPath, "write per-frame samples to this CSV file");
     app.add_option("--screenshot", c.screenshotPath, "write the last frame's colour image (PNG)");
     app.add_option("--visibility", c.visibilityPath, "write the last frame's visibility target (PNG)");
+    app.add_option("--dump-shaders", c.dumpShadersPath,
+                   "write every shader stage as compiled to DIR/technique/program/permutation/stage.ext");
     app.add_flag("--no-timer-check", raw.noTimerCheck,
                  "skip the GPU-timer trust calibration (verdict: unchecked)");
     app.add_option("--max-memory-gib", raw.maxMemoryGiB, "refuse scenes estimated above this memory")

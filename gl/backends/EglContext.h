@@ -7,6 +7,7 @@
 #include <epoxy/egl.h>
 
 #include "gl/Context.h"
+#include "gl/backends/EpoxyGlxProbe.h"
 
 namespace sb {
 
@@ -31,6 +32,9 @@ private:
     void createGlContext(const ContextOptions& options);
     [[noreturn]] void fail(const std::string& reason) const;
 
+    /// First member: in place before the first GL call, so epoxy's GLX probe cannot abort under
+    /// apitrace's EGL tracer (see EpoxyGlxProbe.h).
+    EpoxyGlxProbe mGlxProbe;
     EGLDisplay mDisplay = EGL_NO_DISPLAY;
     EGLContext mContext = EGL_NO_CONTEXT;
     std::string mWhat;

@@ -1,6 +1,7 @@
 #include "gl/backends/EglDeviceContext.h"
 
 #include "core/Error.h"
+#include "gl/backends/ApitraceHandoff.h"
 
 namespace sb {
 namespace {
@@ -30,7 +31,13 @@ const char* deviceString(EGLDeviceEXT device, EGLint name) {
 } // namespace
 
 EglDeviceContext::EglDeviceContext(const ContextOptions& options)
-    : EglDeviceContext(pickDevice(options), options) {}
+    : EglDeviceContext(pickDevice(handOff(options)), options) {}
+
+const ContextOptions& EglDeviceContext::handOff(const ContextOptions& options) {
+    // Before the first EGL call (device enumeration): a GLX tracer would record none of them.
+    ApitraceHandoff::toEglTracer();
+    return options;
+}
 
 EglDeviceContext::EglDeviceContext(const PickedDevice& picked, const ContextOptions& options)
     : EglContext(openDisplay(picked.device), options, "egl-device " + std::to_string(picked.index)) {

@@ -29,6 +29,8 @@ private:
     EglDeviceContext(const PickedDevice& picked, const ContextOptions& options);
     static PickedDevice pickDevice(const ContextOptions& options);
     static EGLDisplay openDisplay(EGLDeviceEXT device);
+    /// ApitraceHandoff::toEglTracer(), then `options` (runs before pickDevice's EGL calls).
+    static const ContextOptions& handOff(const ContextOptions& options);
 };
 
 } // namespace sb

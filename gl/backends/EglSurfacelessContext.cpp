@@ -1,6 +1,7 @@
 #include "gl/backends/EglSurfacelessContext.h"
 
 #include "core/Error.h"
+#include "gl/backends/ApitraceHandoff.h"
 
 namespace sb {
 
@@ -8,6 +9,8 @@ EglSurfacelessContext::EglSurfacelessContext(const ContextOptions& options)
     : EglContext(openDisplay(), options, "egl-surfaceless") {}
 
 EGLDisplay EglSurfacelessContext::openDisplay() {
+    // Before the first EGL call: a GLX tracer would record none of them.
+    ApitraceHandoff::toEglTracer();
     // Client extensions are queried on EGL_NO_DISPLAY; a missing platform is a clear reason, not a crash.
     if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
         throw Error("egl-surfaceless: EGL client extension EGL_MESA_platform_surfaceless missing",
