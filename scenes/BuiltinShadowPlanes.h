@@ -21,6 +21,8 @@
 //               perpendicular to it) and a cap perpendicular to the axis at the spout's tip, parts {spout}.
 //   "handle_1" .. "handle_5" solid (no texture) strips end to end along the handle's C, from the upper
 //               joint down, each spanning one fifth of the C's centre curve and the handle's width.
+// Receivers (the thesis's receiver sections, ShadowPlane::receivers): "spout_horizontal" and "spout_cap"
+// shadow every part but the spout (their silhouettes cover the spout's own lit tip); the others every part.
 // Every plane keeps a margin of kMarginFraction of its larger side around what it covers (a white border,
 // so the silhouette never reaches the clamped edge texels), except the solid handle strips, whose
 // rectangle is the shadow itself.

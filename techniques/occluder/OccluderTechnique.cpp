@@ -12,6 +12,7 @@
 #include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/occluder/OccluderTextures.h"
+#include "techniques/occluder/ReceiverSections.h"
 
 namespace sb {
 
@@ -21,8 +22,9 @@ constexpr const char* kPlanes = "planes";
 constexpr const char* kResolution = "resolution";
 constexpr const char* kDilate = "dilate";
 constexpr const char* kReceivers = "receivers";
-constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6;               // shaders/occluder/lit.frag
-constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4; // shaders/occluder/scene.vert
+constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6; // shaders/occluder/lit.frag
+constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4,
+                 kSectionBinding = 7; // scene.vert
 
 /// Bilinear resample of a single-channel image (loaded textures of another size than `resolution`).
 std::vector<uint8_t> resample(const std::vector<uint8_t>& src, int w, int h, int size) {
@@ -98,7 +100,9 @@ void OccluderTechnique::release() {
     if (mMatrixBuffer) glDeleteBuffers(1, &mMatrixBuffer);
     if (mWorldPlaneBuffer) glDeleteBuffers(1, &mWorldPlaneBuffer);
     if (mCandidateBuffer) glDeleteBuffers(1, &mCandidateBuffer);
+    if (mSectionBuffer) glDeleteBuffers(1, &mSectionBuffer);
     mTextures = mPlaneBuffer = mInstanceBuffer = mMatrixBuffer = mWorldPlaneBuffer = mCandidateBuffer = 0;
+    mSectionBuffer = 0;
     mResolution = mLayers = 0;
 }
 
@@ -154,13 +158,26 @@ void OccluderTechnique::setScene(const Scene& scene) {
     for (const Instance& inst : scene.instances) mInverseModel.push_back(glm::inverse(inst.model));
     mReceiveAll = properties().getEnum(kReceivers) == "all";
     if (mReceiveAll) collectCandidates(scene);
-    // Per instance: (first plane, plane count, 0, 0) as raw bits, then one vec4 per light.
+    buildReceiverSections(scene);
+    // Per instance: (first plane, plane count, first section slot, section slots) as raw bits, then one
+    // vec4 per light.
     const size_t stride = 1 + size_t(mLights);
     mInstanceData.assign(scene.instances.size() * stride, glm::vec4(0.0f));
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const uint32_t mesh = scene.instances[i].mesh;
-        glm::uvec4 range(mMeshFirst[mesh], mMeshCount[mesh], 0, 0);
+        glm::uvec4 range(mMeshFirst[mesh], mMeshCount[mesh], mMeshSections[mesh].x, mMeshSections[mesh].y);
         std::memcpy(&mInstanceData[i * stride], &range, sizeof(range));
+    }
+}
+
+void OccluderTechnique::buildReceiverSections(const Scene& scene) {
+    mSectionTable.clear();
+    mMeshSections.assign(scene.meshes.size(), glm::uvec2(0));
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        if (!ReceiverSections::needed(scene.meshes[m], mMeshCount[m])) continue;
+        const std::vector<glm::uvec4> table = ReceiverSections::build(scene.meshes[m], mMeshCount[m]);
+        mMeshSections[m] = glm::uvec2(uint32_t(mSectionTable.size()), uint32_t(table.size()));
+        mSectionTable.insert(mSectionTable.end(), table.begin(), table.end());
     }
 }
 
@@ -352,6 +369,12 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
                       GL_DYNAMIC_DRAW);
     uploadInstances(false);
     Defines d = ctx.submitter.defines();
+    if (!mSectionTable.empty()) {
+        if (!mSectionBuffer) glCreateBuffers(1, &mSectionBuffer);
+        glNamedBufferData(mSectionBuffer, GLsizeiptr(mSectionTable.size() * sizeof(glm::uvec4)),
+                          mSectionTable.data(), GL_STATIC_DRAW);
+        d["RECEIVER_SECTIONS"] = "";
+    }
     d["LIGHT_COUNT"] = std::to_string(mLights);
     d["PLANE_COUNT"] = std::to_string(mPlaneSlots);
     if (mPerInstance) d["LIGHT_PER_INSTANCE"] = "";
@@ -422,6 +445,7 @@ void OccluderTechnique::execute(FrameContext& ctx) {
     glBindTextureUnit(0, mTextures);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPlaneBinding, mPlaneBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, mInstanceBuffer);
+    if (!mSectionTable.empty()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSectionBinding, mSectionBuffer);
     if (mReceiveAll) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorldPlaneBinding, mWorldPlaneBuffer);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCandidateBinding, mCandidateBuffer);

@@ -58,6 +58,7 @@ private:
     void uploadMatrices();
     void collectCandidates(const Scene& scene);
     void uploadWorldPlanes();
+    void buildReceiverSections(const Scene& scene);
     void release();
 
     const Scene* mScene = nullptr;
@@ -73,8 +74,12 @@ private:
     std::vector<glm::mat4> mInverseModel;         ///< per instance (the per_instance light space)
     std::vector<glm::vec4> mInstanceData;         ///< per instance: (first, count) then the lights
     std::vector<glm::vec4> mMatrices;             ///< texture_matrix: 3 rows per instance, light, plane
+    /// Receiver sections (ReceiverSections.h): every mesh's hash table, contiguous, and per mesh its
+    /// (first slot, slot count), count 0 where every part receives every plane.
+    std::vector<glm::uvec4> mSectionTable;
+    std::vector<glm::uvec2> mMeshSections;
     GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0, mMatrixBuffer = 0, mWorldPlaneBuffer = 0,
-           mCandidateBuffer = 0;
+           mCandidateBuffer = 0, mSectionBuffer = 0;
     int mResolution = 0, mLayers = 0;
     const Program* mProgram = nullptr;
     Counters mCounters;
