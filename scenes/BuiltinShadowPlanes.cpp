@@ -15,6 +15,8 @@
 namespace sb {
 namespace {
 
+using Principal = PrincipalAxes;
+
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kTwoPi = glm::two_pi<float>();
 
@@ -51,15 +53,13 @@ std::vector<glm::vec3> partVertices(const Mesh& mesh, std::initializer_list<cons
     return out;
 }
 
-/// Mean and principal axes of a point set: the eigenvectors of its covariance (Jacobi rotations, in
-/// double), ordered by decreasing variance.
-struct Principal {
-    glm::vec3 mean{0.0f};
-    std::array<glm::vec3, 3> axes{};
-    std::array<double, 3> variance{};
-};
-
 Principal principal(const std::vector<glm::vec3>& points) {
+    return principalAxes(points);
+}
+
+} // namespace
+
+PrincipalAxes principalAxes(const std::vector<glm::vec3>& points) {
     glm::dvec3 mean(0.0);
     for (const auto& p : points) mean += glm::dvec3(p);
     mean /= double(std::max<size_t>(points.size(), 1));
@@ -102,7 +102,7 @@ Principal principal(const std::vector<glm::vec3>& points) {
     }
     std::array<int, 3> order = {0, 1, 2};
     std::sort(order.begin(), order.end(), [&](int i, int j) { return a[i][i] > a[j][j]; });
-    Principal out;
+    PrincipalAxes out;
     out.mean = glm::vec3(mean);
     for (int k = 0; k < 3; ++k) {
         const int i = order[size_t(k)];
@@ -111,6 +111,8 @@ Principal principal(const std::vector<glm::vec3>& points) {
     }
     return out;
 }
+
+namespace {
 
 /// An eigenvector's sign is arbitrary: this one has its largest component positive (deterministic).
 glm::vec3 canonical(const glm::vec3& v) {

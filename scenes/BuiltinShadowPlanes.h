@@ -26,6 +26,7 @@
 // Every plane keeps a margin of kMarginFraction of its larger side around what it covers (a white border,
 // so the silhouette never reaches the clamped edge texels), except the solid handle strips, whose
 // rectangle is the shadow itself.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,15 @@
 #include "scenes/ShadowPlane.h"
 
 namespace sb {
+
+/// Mean and principal axes of a point set: the eigenvectors of its covariance (Jacobi rotations, in
+/// double), ordered by decreasing variance (also the automatic chooser's candidate normals).
+struct PrincipalAxes {
+    glm::vec3 mean{0.0f};
+    std::array<glm::vec3, 3> axes{};
+    std::array<double, 3> variance{};
+};
+PrincipalAxes principalAxes(const std::vector<glm::vec3>& points);
 
 struct BuiltinShadowPlanes {
     /// The planes of a mesh made by MeshGenerators' `generator` ("aircraft", "teapot"; none for every

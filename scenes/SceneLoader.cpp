@@ -392,7 +392,10 @@ void replaceWithModel(Context& ctx, uint32_t meshIndex) {
     const float s = newRadius > 0.0f ? oldRadius / newRadius : 1.0f;
     for (auto& p : model.positions) p = (p - newCentre) * s + oldCentre;
     model.name = old.name;
-    model.shadowPlanes.clear(); // the replaced mesh's planes were for its geometry; a model file has none
+    // The replaced mesh's planes were for its geometry; the occluder technique chooses the model's
+    // automatically (scenes/ShadowPlaneChooser.h), for the scene's lights.
+    model.shadowPlanes.clear();
+    model.shadowPlanesAuto = true;
     // Its declared proxies too: the technique fits new ones to the model.
     model.proxies.clear();
     model.proxiesDeclared = false;

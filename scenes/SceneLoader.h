@@ -42,7 +42,8 @@
 //   are unique per mesh. Without the key a generated mesh gets its built-in planes
 //   (scenes/BuiltinShadowPlanes.h: aircraft 3, teapot 11, the other generators none) and a model file
 //   none; "shadow_planes": [] means none. A mesh that --model replaces takes no planes along (its
-//   planes were for the replaced geometry): the model has none.
+//   planes were for the replaced geometry): the occluder technique chooses the model's automatically
+//   (Mesh::shadowPlanesAuto, scenes/ShadowPlaneChooser.h).
 // - meshes, "proxies" (either kind of mesh): the proxy technique's ShadowProxies (scenes/ShadowProxy.h)
 //   in the mesh's object space:
 //     "proxies": [ {"shape": "sphere" | "box" | "cylinder", "position": [x,y,z], "rotation": [deg x,y,z],

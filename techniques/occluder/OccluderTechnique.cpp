@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <map>
 #include <utility>
 
@@ -11,6 +12,7 @@
 
 #include "core/Error.h"
 #include "scenes/Math.h"
+#include "scenes/ShadowPlaneChooser.h"
 #include "techniques/occluder/OccluderTextures.h"
 #include "techniques/occluder/ReceiverSections.h"
 
@@ -106,6 +108,56 @@ void OccluderTechnique::release() {
     mResolution = mLayers = 0;
 }
 
+namespace {
+/// Unit directions towards the scene's lights in the object space of (up to 8 of) the mesh's instances:
+/// what the automatic choice scores its planes for. Near-duplicates (within ~2.5 degrees) are dropped.
+std::vector<glm::vec3> lightsInObjectSpace(const Scene& scene, uint32_t mesh) {
+    std::vector<const Instance*> instances;
+    for (const Instance& inst : scene.instances)
+        if (inst.mesh == mesh) instances.push_back(&inst);
+    const size_t step = std::max<size_t>(1, (instances.size() + 7) / 8);
+    const glm::vec3 centre = scene.meshes[mesh].computeBounds().center();
+    std::vector<glm::vec3> out;
+    for (size_t i = 0; i < instances.size(); i += step) {
+        const glm::mat4 inverse = glm::inverse(instances[i]->model);
+        for (const Light& l : scene.lights) {
+            const glm::vec3 world =
+                l.type == LightType::Directional
+                    ? -l.direction
+                    : l.position - glm::vec3(instances[i]->model * glm::vec4(centre, 1.0f));
+            const glm::vec3 d = glm::normalize(glm::vec3(inverse * glm::vec4(world, 0.0f)));
+            if (!std::isfinite(d.x)) continue;
+            if (std::none_of(out.begin(), out.end(),
+                             [&](const glm::vec3& o) { return glm::dot(o, d) > 0.999f; }))
+                out.push_back(d);
+        }
+    }
+    return out;
+}
+} // namespace
+
+void OccluderTechnique::choosePlanes(const Scene& scene, const std::vector<bool>& drawn) {
+    // Meshes without given planes (a --model file) get automatically chosen ones, for the scene's lights;
+    // one that yields no useful plane is said so on stderr and counted (counter no_useful_planes).
+    mMeshPlanes.assign(scene.meshes.size(), {});
+    mNoUsefulPlanes = 0;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        if (!mesh.shadowPlanesAuto || !drawn[m]) {
+            mMeshPlanes[m] = mesh.shadowPlanes;
+            continue;
+        }
+        const ShadowPlaneChoice choice =
+            ShadowPlaneChooser::choose(mesh, lightsInObjectSpace(scene, uint32_t(m)), kAutoPlanes);
+        mMeshPlanes[m] = choice.planes;
+        if (choice.planes.empty()) {
+            ++mNoUsefulPlanes;
+            std::cerr << "occluder: mesh '" << mesh.name
+                      << "': no useful shadow plane, it is drawn unshadowed: " << choice.reason << "\n";
+        }
+    }
+}
+
 void OccluderTechnique::collectPlanes(const Scene& scene) {
     const int limit = int(properties().getInt(kPlanes));
     mPlanes.clear();
@@ -114,20 +166,22 @@ void OccluderTechnique::collectPlanes(const Scene& scene) {
     mMeshCount.assign(scene.meshes.size(), 0);
     std::vector<bool> drawn(scene.meshes.size(), false);
     for (const Instance& inst : scene.instances) drawn[inst.mesh] = true;
+    choosePlanes(scene, drawn);
     mPlaneSlots = 1;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
+        std::vector<ShadowPlane>& planes = mMeshPlanes[m];
         if (!drawn[m]) continue;
-        if (mesh.shadowPlanes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
-            throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(mesh.shadowPlanes.size()) +
+        if (planes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
+            throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(planes.size()) +
                             " shadow planes; at most " + std::to_string(kMaxPlanes) + " are used per mesh",
                         ExitCode::Unsupported);
-        const int count = std::min<int>(int(mesh.shadowPlanes.size()), limit);
+        const int count = std::min<int>(int(planes.size()), limit);
         mMeshFirst[m] = uint32_t(mPlanes.size());
         mMeshCount[m] = uint32_t(count);
         mPlaneSlots = std::max(mPlaneSlots, count);
         for (int k = 0; k < count; ++k) {
-            const ShadowPlane& p = mesh.shadowPlanes[size_t(k)];
+            const ShadowPlane& p = planes[size_t(k)];
             p.validate("occluder: mesh '" + mesh.name + "'");
             GpuPlane g;
             g.origin = glm::vec4(p.origin, -1.0f); // layer set in buildTextures
@@ -174,8 +228,9 @@ void OccluderTechnique::buildReceiverSections(const Scene& scene) {
     mSectionTable.clear();
     mMeshSections.assign(scene.meshes.size(), glm::uvec2(0));
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
-        if (!ReceiverSections::needed(scene.meshes[m], mMeshCount[m])) continue;
-        const std::vector<glm::uvec4> table = ReceiverSections::build(scene.meshes[m], mMeshCount[m]);
+        const std::vector<ShadowPlane> used(mMeshPlanes[m].begin(), mMeshPlanes[m].begin() + mMeshCount[m]);
+        if (!ReceiverSections::needed(used)) continue;
+        const std::vector<glm::uvec4> table = ReceiverSections::build(scene.meshes[m], used);
         mMeshSections[m] = glm::uvec2(uint32_t(mSectionTable.size()), uint32_t(table.size()));
         mSectionTable.insert(mSectionTable.end(), table.begin(), table.end());
     }
@@ -292,20 +347,21 @@ void OccluderTechnique::buildTextures(const CompileContext& ctx) {
     for (size_t e = 0; e < mPlanes.size(); ++e) {
         const auto [m, k] = std::pair<int, int>(mPlaneSource[e].x, mPlaneSource[e].y);
         const Mesh& mesh = ctx.scene.meshes[size_t(m)];
-        const ShadowPlane& plane = mesh.shadowPlanes[size_t(k)];
+        const std::vector<ShadowPlane>& planes = mMeshPlanes[size_t(m)];
+        const ShadowPlane& plane = planes[size_t(k)];
         if (plane.solid) continue; // layer -1: no texture
         int owner = k;
         if (!plane.textureOf.empty()) {
-            auto it = std::find_if(mesh.shadowPlanes.begin(), mesh.shadowPlanes.end(),
+            auto it = std::find_if(planes.begin(), planes.end(),
                                    [&](const ShadowPlane& p) { return p.name == plane.textureOf; });
-            if (it == mesh.shadowPlanes.end())
+            if (it == planes.end())
                 throw Error("occluder: mesh '" + mesh.name + "': plane '" + plane.name +
                             "' takes the texture of '" + plane.textureOf + "', which the mesh does not have");
-            owner = int(it - mesh.shadowPlanes.begin());
+            owner = int(it - planes.begin());
         }
         auto [it, added] = layerOf.emplace(std::make_pair(m, owner), int(layers.size()));
         if (added) {
-            const ShadowPlane& source = mesh.shadowPlanes[size_t(owner)];
+            const ShadowPlane& source = planes[size_t(owner)];
             OccluderBakeOptions planeOptions = options;
             planeOptions.silhouette = !source.sectionOnly;
             const GLuint texture = source.texture == "auto"
@@ -421,8 +477,7 @@ void OccluderTechnique::uploadMatrices() {
                 glm::vec3(mInverseModel[i] * glm::vec4(-mScene->lights[size_t(l)].direction, 0.0f)));
             for (uint32_t j = 0; j < mMeshCount[mesh]; ++j) {
                 const glm::ivec2 src = mPlaneSource[mMeshFirst[mesh] + j];
-                const auto rows =
-                    mScene->meshes[size_t(src.x)].shadowPlanes[size_t(src.y)].textureMatrix(toward);
+                const auto rows = mMeshPlanes[size_t(src.x)][size_t(src.y)].textureMatrix(toward);
                 const size_t base = ((i * size_t(mLights) + size_t(l)) * slots + j) * 3;
                 std::copy(rows.begin(), rows.end(), mMatrices.begin() + std::ptrdiff_t(base));
             }
@@ -459,7 +514,8 @@ void OccluderTechnique::execute(FrameContext& ctx) {
                  {"triangles", double(s.triangles)},
                  {"shadow_planes", planeInstances},
                  {"occluder_texels", double(mResolution) * mResolution * double(mLayers)},
-                 {"receiver_candidates", double(mCandidates.size())}};
+                 {"receiver_candidates", double(mCandidates.size())},
+                 {"no_useful_planes", double(mNoUsefulPlanes)}};
 }
 
 } // namespace sb

@@ -42,6 +42,8 @@ public:
 
     /// Most planes per mesh the vertex stage passes on (varying budget: 16 planes x 1 light).
     static constexpr int kMaxPlanes = 16;
+    /// Most planes chosen automatically for a mesh without given ones (the cost is per plane).
+    static constexpr int kAutoPlanes = 4;
 
 private:
     /// std430 mirror of OccluderPlane in shaders/occluder/scene.vert.
@@ -52,6 +54,7 @@ private:
         glm::vec4 up;    ///< up / height
     };
 
+    void choosePlanes(const Scene& scene, const std::vector<bool>& drawn);
     void collectPlanes(const Scene& scene);
     void buildTextures(const CompileContext& ctx);
     void uploadInstances(bool lights);
@@ -68,6 +71,10 @@ private:
     std::vector<glm::uvec2> mCandidateRange;
     std::vector<uint32_t> mCandidates, mInstancePlaneFirst;
     size_t mWorldPlanes = 0;
+    /// Per mesh the planes it is drawn with: its own, or for a mesh without given planes (a --model file)
+    /// those ShadowPlaneChooser picked for the scene's lights; mNoUsefulPlanes counts those left without.
+    std::vector<std::vector<ShadowPlane>> mMeshPlanes;
+    int mNoUsefulPlanes = 0;
     std::vector<GpuPlane> mPlanes;                ///< every mesh's used planes, contiguous per mesh
     std::vector<uint32_t> mMeshFirst, mMeshCount; ///< per mesh: range in mPlanes
     std::vector<glm::ivec2> mPlaneSource;         ///< per entry of mPlanes: mesh, plane index

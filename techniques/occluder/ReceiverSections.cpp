@@ -16,10 +16,10 @@ glm::uvec3 bitsOf(const glm::vec3& p) {
 }
 
 /// Per part of the mesh, the mask of the first `count` planes it receives.
-std::vector<uint32_t> partMasks(const Mesh& mesh, size_t count) {
+std::vector<uint32_t> partMasks(const Mesh& mesh, const std::vector<ShadowPlane>& planes) {
     std::vector<uint32_t> masks(mesh.parts.size(), 0);
-    for (size_t j = 0; j < count; ++j) {
-        const ShadowPlane& plane = mesh.shadowPlanes[j];
+    for (size_t j = 0; j < planes.size(); ++j) {
+        const ShadowPlane& plane = planes[j];
         for (const std::string& name : plane.receivers)
             if (std::none_of(mesh.parts.begin(), mesh.parts.end(),
                              [&](const MeshPart& part) { return part.name == name; }))
@@ -37,10 +37,9 @@ std::vector<uint32_t> partMasks(const Mesh& mesh, size_t count) {
 
 } // namespace
 
-bool ReceiverSections::needed(const Mesh& mesh, size_t count) {
-    for (size_t j = 0; j < count && j < mesh.shadowPlanes.size(); ++j)
-        if (!mesh.shadowPlanes[j].receivers.empty()) return true;
-    return false;
+bool ReceiverSections::needed(const std::vector<ShadowPlane>& planes) {
+    return std::any_of(planes.begin(), planes.end(),
+                       [](const ShadowPlane& p) { return !p.receivers.empty(); });
 }
 
 uint32_t ReceiverSections::hash(const glm::uvec3& bits) {
@@ -55,8 +54,9 @@ uint32_t ReceiverSections::hash(const glm::uvec3& bits) {
     return h;
 }
 
-std::vector<glm::uvec4> ReceiverSections::build(const Mesh& mesh, size_t count) {
-    const std::vector<uint32_t> masks = partMasks(mesh, count);
+std::vector<glm::uvec4> ReceiverSections::build(const Mesh& mesh, const std::vector<ShadowPlane>& planes) {
+    const size_t count = planes.size();
+    const std::vector<uint32_t> masks = partMasks(mesh, planes);
     // Per vertex the AND over the parts whose triangles use it; vertices no part uses keep every plane.
     std::vector<uint32_t> vertexMask(mesh.positions.size(), kAll);
     for (size_t k = 0; k < mesh.parts.size(); ++k) {

@@ -27,11 +27,11 @@ struct ReceiverSections {
     static constexpr uint32_t kEmpty = 0xFFFFFFFFu; ///< mask value of a free slot
     static constexpr uint32_t kAll = 0xFFFFu;       ///< every plane (16 at most)
 
-    /// True when one of the first `count` planes of the mesh names receivers (else no table is needed).
-    static bool needed(const Mesh& mesh, size_t count);
-    /// The table for the first `count` planes of `mesh` (count <= 16). Throws sb::Error naming the mesh
+    /// True when one of `planes` names receivers (else no table is needed).
+    static bool needed(const std::vector<ShadowPlane>& planes);
+    /// The table of `mesh` for the planes it is drawn with (at most 16). Throws sb::Error naming the mesh
     /// and plane for a receiver part the mesh does not have.
-    static std::vector<glm::uvec4> build(const Mesh& mesh, size_t count);
+    static std::vector<glm::uvec4> build(const Mesh& mesh, const std::vector<ShadowPlane>& planes);
     /// The mask of planes the vertex at `p` receives: kAll when it is not in the table.
     static uint32_t lookup(const std::vector<glm::uvec4>& table, const glm::vec3& p);
     /// The slot hash of a position's bits (murmur3's finaliser over the three words).
