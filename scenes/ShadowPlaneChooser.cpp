@@ -16,7 +16,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr int kMaxSamples = 3000;
 constexpr float kJudgedCosine = 0.05f; ///< n.L above which a sample is judged (the accuracy judge's)
 constexpr float kConeDegrees = 10.0f;
-constexpr double kFalseWeight = 2.0;
+constexpr double kFalseWeight = 3.0;
 constexpr float kQuantiles[] = {0.2f, 0.35f, 0.5f, 0.65f, 0.8f};
 
 struct Triangle {
@@ -377,12 +377,12 @@ ShadowPlaneChoice ShadowPlaneChooser::choose(const Mesh& mesh, const std::vector
         choice.reason = "it casts no shadow on itself under these lights (no lit sample's ray meets it)";
     } else if (choice.planes.empty()) {
         char line[256];
-        std::snprintf(line, sizeof(line),
-                      "no candidate plane shadows more than twice the lit surface it would falsely darken "
-                      "(%.2f%% of the lit surface is in self-shadow; the best plane gains %.2f%%, %.2f%% "
-                      "needed)",
-                      choice.shadowedPct, 100.0 * std::max(0.0, bestRejected) / choice.judgedWeight,
-                      100.0 * kMinGain);
+        std::snprintf(
+            line, sizeof(line),
+            "no candidate plane shadows more than three times the lit surface it would falsely darken "
+            "(%.2f%% of the lit surface is in self-shadow; the best plane gains %.2f%%, %.2f%% "
+            "needed)",
+            choice.shadowedPct, 100.0 * std::max(0.0, bestRejected) / choice.judgedWeight, 100.0 * kMinGain);
         choice.reason = line;
     }
     return choice;
