@@ -6,6 +6,8 @@
 #include <limits>
 #include <numeric>
 
+#include <glm/gtc/constants.hpp>
+
 #include "scenes/BuiltinShadowPlanes.h"
 #include "scenes/Math.h"
 
@@ -148,6 +150,21 @@ std::vector<Sample> samples(const std::vector<Triangle>& tris) {
     return out;
 }
 
+/// Of nine rays from `p` into the hemisphere around `n` (along it and eight 50 degrees off), how many
+/// leave the mesh.
+int escapes(const Bvh& bvh, const glm::vec3& p, const glm::vec3& n, float epsilon) {
+    const glm::vec3 e1 = glm::normalize(glm::cross(anyPerpendicularUp(n), n)), e2 = glm::cross(n, e1);
+    const glm::vec3 o = p + epsilon * n;
+    int count = bvh.occluded(o, n) ? 0 : 1;
+    for (int k = 0; k < 8; ++k) {
+        const float a = float(k) * glm::quarter_pi<float>();
+        const glm::vec3 d = std::cos(glm::radians(50.0f)) * n +
+                            std::sin(glm::radians(50.0f)) * (std::cos(a) * e1 + std::sin(a) * e2);
+        count += bvh.occluded(o, d) ? 0 : 1;
+    }
+    return count;
+}
+
 /// Each direction and four around it on a cone of kConeDegrees.
 std::vector<glm::vec3> directions(const std::vector<glm::vec3>& towardLight) {
     std::vector<glm::vec3> base = towardLight;
@@ -279,10 +296,18 @@ std::vector<Candidate> candidates(const Mesh& mesh, const std::vector<Triangle>&
         std::vector<float> along;
         for (const glm::vec3& q : mesh.positions) along.push_back(glm::dot(n, q));
         std::sort(along.begin(), along.end());
+        // Offsets at quantiles of the vertices (where the detail is) and at the same fractions of the
+        // extent (where a thin part far from the bulk of the vertices lies, a plate over a floor).
+        std::vector<std::pair<std::string, float>> offsets;
         for (float f : kQuantiles) {
-            const float offset = along[std::min(along.size() - 1, size_t(f * float(along.size())))];
+            const int percent = int(std::lround(f * 100.0f));
+            offsets.emplace_back("q" + std::to_string(percent),
+                                 along[std::min(along.size() - 1, size_t(f * float(along.size())))]);
+            offsets.emplace_back("x" + std::to_string(percent), glm::mix(along.front(), along.back(), f));
+        }
+        for (const auto& [where, offset] : offsets) {
             char name[64];
-            std::snprintf(name, sizeof(name), "auto_%s_%02d", label.c_str(), int(std::lround(f * 100.0f)));
+            std::snprintf(name, sizeof(name), "auto_%s_%s", label.c_str(), where.c_str());
             ShadowPlane plane = planeAcross(mesh.positions, n, offset, name);
             for (bool silhouette : {false, true}) {
                 Candidate c{plane, bakeCpu(tris, plane, silhouette)};
@@ -319,11 +344,11 @@ ShadowPlaneChoice ShadowPlaneChooser::choose(const Mesh& mesh, const std::vector
     std::vector<Judged> judged;
     double shadowedWeight = 0.0;
     for (uint32_t s = 0; s < points.size(); ++s) {
-        // The side a camera sees: model files are not always consistently wound, so the outward normal is
-        // the side whose ray leaves the mesh (the winding's side when both or neither do).
+        // The side a camera sees: model files are not always consistently wound, so the normal is flipped
+        // where clearly more rays leave the mesh from the other side (an inverted face of a closed mesh:
+        // nothing escapes inwards); an open surface, whose both sides see out, keeps its winding.
         glm::vec3 n = points[s].n;
-        if (bvh.occluded(points[s].p + epsilon * n, n) && !bvh.occluded(points[s].p - epsilon * n, -n))
-            n = -n;
+        if (escapes(bvh, points[s].p, -n, epsilon) >= escapes(bvh, points[s].p, n, epsilon) + 4) n = -n;
         for (uint32_t d = 0; d < dirs.size(); ++d) {
             if (glm::dot(n, dirs[d]) <= kJudgedCosine) continue;
             const bool shadowed = bvh.occluded(points[s].p + epsilon * n, dirs[d]);

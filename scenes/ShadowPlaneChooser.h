@@ -10,8 +10,9 @@
 // drawn:
 //  - candidates: planes through the mesh perpendicular to its three principal axes (the thesis's aircraft
 //    planes are its principal mid-planes) and to each light direction given (the plane the shadow is
-//    cast through, seen from the light), each at five offsets (the 20/35/50/65/80% quantiles of the
-//    vertices along the normal), the rectangle covering the mesh's projection; each in two texture
+//    cast through, seen from the light), each at ten offsets (the 20/35/50/65/80% quantiles of the
+//    vertices along the normal, and the same fractions of the mesh's extent along it), the rectangle
+//    covering the mesh's projection; each in two texture
 //    modes, the plane's cross-section with the solid alone (section_only: safe, a ray through it runs
 //    through the solid) and the mesh's orthographic silhouette with it (what the bake does by default:
 //    more shadow, but a ray through the silhouette may pass beside the mesh, a false shadow);
