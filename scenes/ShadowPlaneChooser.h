@@ -25,6 +25,12 @@
 //    texel black);
 //  - greedy: the best candidate is kept while its gain exceeds kMinGain of the judged weight, up to
 //    maxPlanes, each later one scored on what the earlier ones leave.
+// Receivers: each chosen plane shadows what lies on its far side from the light (s_I > 0, the thesis's
+// rule against false shadows, tested per fragment), on every part (ShadowPlane::receivers empty): a
+// model's parts are whatever its file grouped, not sections cut for its shadows, and the score already
+// counts the false shadow a plane casts on its far side.
+// Cost: untimed setup, about 1 s for a 70k-triangle model and one light direction, 3.6 s for eight (the
+// bunny under a 200-instance layout, llvmpipe machine, 2 cores).
 // A mesh none of whose candidates gains enough (a convex one casts no shadow on itself; a model whose
 // shadows no flat stand-in captures) gets no plane, and the choice says why in one line (`reason`).
 //
