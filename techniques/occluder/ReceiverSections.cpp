@@ -58,11 +58,12 @@ std::vector<glm::uvec4> ReceiverSections::build(const Mesh& mesh, const std::vec
     const size_t count = planes.size();
     const std::vector<uint32_t> masks = partMasks(mesh, planes);
     // Per vertex the AND over the parts whose triangles use it; vertices no part uses keep every plane.
-    std::vector<uint32_t> vertexMask(mesh.positions.size(), kAll);
+    const uint32_t used = (1u << count) - 1u; // count <= 16
+    std::vector<uint32_t> vertexMask(mesh.positions.size(), used);
     for (size_t k = 0; k < mesh.parts.size(); ++k) {
         const MeshPart& part = mesh.parts[k];
         for (uint32_t i = part.firstIndex; i < part.firstIndex + part.indexCount; ++i)
-            vertexMask[mesh.indices[i]] &= masks[k] | ~((1u << count) - 1u);
+            vertexMask[mesh.indices[i]] &= masks[k];
     }
     const size_t slots = std::bit_ceil(std::max<size_t>(2, 2 * mesh.positions.size()));
     std::vector<glm::uvec4> table(slots, glm::uvec4(0, 0, 0, kEmpty));
@@ -72,7 +73,7 @@ std::vector<glm::uvec4> ReceiverSections::build(const Mesh& mesh, const std::vec
         for (size_t s = hash(key) & (slots - 1);; s = (s + 1) & (slots - 1)) {
             glm::uvec4& slot = table[s];
             if (slot.w == kEmpty) {
-                slot = glm::uvec4(key, vertexMask[v] & kAll);
+                slot = glm::uvec4(key, vertexMask[v]);
                 break;
             }
             if (glm::uvec3(slot) == key) {
