@@ -103,8 +103,9 @@ TEST_P(AutoPlanes, BeatNoShadowAgainstTheReference) {
             // Enough judged pixels for a percentage to mean something (the model fills ~1/4 of the view).
             EXPECT_GT(none.evaluated, 5000u);
             EXPECT_EQ(occluder.nan, 0u);
+            // Planes at all (a model loaded as several meshes, one per object, may leave a convex
+            // object such as an eye without one: no_useful_planes is not required to be 0).
             EXPECT_GT(occluder.planes, 0.0) << "the model got no automatic plane";
-            EXPECT_EQ(occluder.noUseful, 0.0);
             // Never worse than no shadow beyond the edge band's few pixels: 0.05 points are ~10 of the
             // ~20k judged (measured at worst: the turned cat under the third light, with no self-shadow at
             // all, 0.043% = 10 pixels along one plane's shadow edge).
