@@ -25,8 +25,8 @@ constexpr const char* kResolution = "resolution";
 constexpr const char* kDilate = "dilate";
 constexpr const char* kReceivers = "receivers";
 constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6; // shaders/occluder/lit.frag
-constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4,
-                 kSectionBinding = 7; // scene.vert
+// shaders/occluder/scene.vert
+constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4, kSectionBinding = 7;
 
 /// Bilinear resample of a single-channel image (loaded textures of another size than `resolution`).
 std::vector<uint8_t> resample(const std::vector<uint8_t>& src, int w, int h, int size) {
@@ -170,7 +170,7 @@ void OccluderTechnique::collectPlanes(const Scene& scene) {
     mPlaneSlots = 1;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
-        std::vector<ShadowPlane>& planes = mMeshPlanes[m];
+        const std::vector<ShadowPlane>& planes = mMeshPlanes[m];
         if (!drawn[m]) continue;
         if (planes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
             throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(planes.size()) +

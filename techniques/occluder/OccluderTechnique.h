@@ -9,6 +9,11 @@
 // planes, which is the thesis's technique: self-shadowing; receivers without planes (the ground) get no
 // shadow, and the accuracy numbers count that.
 //
+// A plane may name the mesh parts that receive it (the thesis's receiver sections, ReceiverSections.h);
+// a mesh without given planes (a --model file, Mesh::shadowPlanesAuto) gets up to kAutoPlanes chosen for
+// the scene's lights in setScene (scenes/ShadowPlaneChooser.h), or none, said on stderr and counted in
+// the counter no_useful_planes.
+//
 // Occluder textures are baked from the plane's mesh parts (OccluderTextures: the thesis's future work,
 // automated) at `resolution`, or read from the image the scene names, and kept as layers of one
 // texture array so a draw needs no per-mesh binding. Plane data and per-instance records live in two
