@@ -15,6 +15,8 @@
 namespace sb {
 namespace {
 
+using Principal = PrincipalAxes;
+
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kTwoPi = glm::two_pi<float>();
 
@@ -51,15 +53,13 @@ std::vector<glm::vec3> partVertices(const Mesh& mesh, std::initializer_list<cons
     return out;
 }
 
-/// Mean and principal axes of a point set: the eigenvectors of its covariance (Jacobi rotations, in
-/// double), ordered by decreasing variance.
-struct Principal {
-    glm::vec3 mean{0.0f};
-    std::array<glm::vec3, 3> axes{};
-    std::array<double, 3> variance{};
-};
-
 Principal principal(const std::vector<glm::vec3>& points) {
+    return principalAxes(points);
+}
+
+} // namespace
+
+PrincipalAxes principalAxes(const std::vector<glm::vec3>& points) {
     glm::dvec3 mean(0.0);
     for (const auto& p : points) mean += glm::dvec3(p);
     mean /= double(std::max<size_t>(points.size(), 1));
@@ -102,7 +102,7 @@ Principal principal(const std::vector<glm::vec3>& points) {
     }
     std::array<int, 3> order = {0, 1, 2};
     std::sort(order.begin(), order.end(), [&](int i, int j) { return a[i][i] > a[j][j]; });
-    Principal out;
+    PrincipalAxes out;
     out.mean = glm::vec3(mean);
     for (int k = 0; k < 3; ++k) {
         const int i = order[size_t(k)];
@@ -111,6 +111,8 @@ Principal principal(const std::vector<glm::vec3>& points) {
     }
     return out;
 }
+
+namespace {
 
 /// An eigenvector's sign is arbitrary: this one has its largest component positive (deterministic).
 glm::vec3 canonical(const glm::vec3& v) {
@@ -618,8 +620,27 @@ std::vector<ShadowPlane> BuiltinShadowPlanes::teapot(const Mesh& mesh) {
     const glm::vec3 up = lidGeometry(mesh, lid).axis; // the teapot's up: the lid's (and knob's) axis
     const glm::vec3 spoutward =
         principal(partVertices(mesh, {"spout"})).mean - principal(partVertices(mesh, {"handle"})).mean;
+    // The receiver sections (section 5): "the front of the teapot can only receive shadows from the
+    // spout. The back of the teapot can only receive shadows from the handle. The top of the teapot can
+    // only receive shadows from the top", so the thesis cut the teapot into three objects, each drawn with
+    // its own planes only, and "the spout does not self-shadow". What makes the sections necessary here
+    // is the spout: its horizontal profile and its cap cut across it, and their silhouettes (the spout's
+    // width seen from above, its end-on outline) cover its own lit surface next to the cuts, so a point on
+    // the tip's upper side whose ray to the light crosses the cap or the profile inside the silhouette
+    // passes beside the spout, not through it: a false shadow on the tip. Those two planes therefore
+    // shadow every part but the spout. The other planes keep every part as receiver: the lid's and the
+    // spout's vertical profile are surfaces of revolution or tubes cut through their axis, whose
+    // silhouettes are their cross-sections (a ray through them goes through the solid), and the solid
+    // handle strips lie inside the handle. Measured against the Embree reference (six lights, four
+    // cameras, 256^2) this split has the fewest wrong pixels of the splits tried: summed over the 24
+    // views 61.8 points, against 114.4 with every plane on every part and 108.5 for the thesis's three
+    // sections by part (lid planes on the top and body, spout and handle planes on the body only, which
+    // loses the lid's and handle's true shadows on spout and handle).
+    const std::vector<std::string> notSpout = {"rim", "body", "handle", "lid", "bottom"};
     addLidPlanes(planes, mesh, spoutward);
     addSpoutPlanes(planes, mesh, up);
+    for (ShadowPlane& p : planes)
+        if (p.name == "spout_horizontal" || p.name == "spout_cap") p.receivers = notSpout;
     addHandlePlanes(planes, mesh, up);
     return planes;
 }

@@ -21,9 +21,12 @@
 //               perpendicular to it) and a cap perpendicular to the axis at the spout's tip, parts {spout}.
 //   "handle_1" .. "handle_5" solid (no texture) strips end to end along the handle's C, from the upper
 //               joint down, each spanning one fifth of the C's centre curve and the handle's width.
+// Receivers (the thesis's receiver sections, ShadowPlane::receivers): "spout_horizontal" and "spout_cap"
+// shadow every part but the spout (their silhouettes cover the spout's own lit tip); the others every part.
 // Every plane keeps a margin of kMarginFraction of its larger side around what it covers (a white border,
 // so the silhouette never reaches the clamped edge texels), except the solid handle strips, whose
 // rectangle is the shadow itself.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,15 @@
 #include "scenes/ShadowPlane.h"
 
 namespace sb {
+
+/// Mean and principal axes of a point set: the eigenvectors of its covariance (Jacobi rotations, in
+/// double), ordered by decreasing variance (also the automatic chooser's candidate normals).
+struct PrincipalAxes {
+    glm::vec3 mean{0.0f};
+    std::array<glm::vec3, 3> axes{};
+    std::array<double, 3> variance{};
+};
+PrincipalAxes principalAxes(const std::vector<glm::vec3>& points);
 
 struct BuiltinShadowPlanes {
     /// The planes of a mesh made by MeshGenerators' `generator` ("aircraft", "teapot"; none for every

@@ -138,7 +138,7 @@ std::string planeTexture(const Context& ctx, const JsonReader& r) {
 
 ShadowPlane parseShadowPlane(const Context& ctx, const JsonReader& r, const Mesh& mesh) {
     r.requireObject({"name", "origin", "normal", "right", "up", "width", "height", "solid", "parts",
-                     "texture", "texture_of", "section_only"});
+                     "texture", "texture_of", "section_only", "receivers"});
     ShadowPlane plane;
     plane.name = r["name"].string();
     if (plane.name.empty()) r["name"].fail("a non-empty name");
@@ -150,15 +150,16 @@ ShadowPlane parseShadowPlane(const Context& ctx, const JsonReader& r, const Mesh
     plane.height = r["height"].positiveNumber();
     if (r.has("solid")) plane.solid = r["solid"].boolean();
     if (r.has("section_only")) plane.sectionOnly = r["section_only"].boolean();
-    if (r.has("parts")) {
-        for (const auto& e : r["parts"].elements()) {
+    for (const char* key : {"parts", "receivers"}) {
+        if (!r.has(key)) continue;
+        for (const auto& e : r[key].elements()) {
             const std::string part = e.string();
             const bool known = std::any_of(mesh.parts.begin(), mesh.parts.end(),
                                            [&](const MeshPart& p) { return p.name == part; });
             if (!known)
                 e.error("unknown part \"" + part + "\" of mesh \"" + mesh.name + "\" (" + partNames(mesh) +
                         ")");
-            plane.parts.push_back(part);
+            (std::string(key) == "parts" ? plane.parts : plane.receivers).push_back(part);
         }
     }
     if (r.has("texture")) {
@@ -302,8 +303,10 @@ void replaceWithModel(Context& ctx, std::vector<Mesh>& meshes) {
         for (auto& p : object.positions) p = (p - newCentre) * s + oldCentre;
         object.name = model.size() == 1 ? file : file + ":" + object.name;
         // The replaced mesh's planes and declared proxies were for its geometry: a model file has no
-        // planes, and the proxy technique fits new proxies to each object.
+        // planes, so the occluder technique chooses them for each object and the scene's lights
+        // (scenes/ShadowPlaneChooser.h), and the proxy technique fits new proxies to each object.
         object.shadowPlanes.clear();
+        object.shadowPlanesAuto = true;
         object.proxies.clear();
         object.proxiesDeclared = false;
     }

@@ -43,6 +43,12 @@ struct ShadowPlane {
     /// Mesh parts whose geometry the plane stands for: the automatic occluder texture renders these
     /// (all of the mesh when empty).
     std::vector<std::string> parts;
+    /// Mesh parts that receive the plane's shadow (all of the mesh when empty): the thesis's receiver
+    /// sections (section 5: "the front of the teapot can only receive shadows from the spout. The back
+    /// of the teapot can only receive shadows from the handle. The top of the teapot can only receive
+    /// shadows from the top", so the teapot was cut into three objects, each considering only its own
+    /// planes). A vertex shared by several parts receives the plane only if all of them do.
+    std::vector<std::string> receivers;
     /// Where the occluder texture comes from when not solid: "auto" bakes it from `parts` at the
     /// technique's resolution (the thesis's future work); anything else is an image file read with
     /// OpenImageIO (the scene loader makes it absolute, relative to the scene file). Image convention:

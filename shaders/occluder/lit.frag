@@ -17,7 +17,9 @@ layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
 float planeVisibility(vec4 c, float layer) {
-    if (c.w == 0.0 || c.z <= 0.0) return 1.0; // unused slot, or the plane is not towards the light
+    // Unused slot or a section that does not receive the plane (w interpolates 0 and 1: a triangle
+    // across sections takes its nearer vertices' side), or the plane is not towards the light.
+    if (c.w < 0.5 || c.z <= 0.0) return 1.0;
     if (layer < 0.0) return all(greaterThanEqual(c.xy, vec2(0.0))) && all(lessThanEqual(c.xy, vec2(1.0))) ? 0.0 : 1.0;
     return texture(uOccluders, vec3(clamp(c.xy, 0.0, 1.0), layer)).r;
 }

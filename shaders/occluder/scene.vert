@@ -9,7 +9,11 @@
 // without it every vertex transforms the light into model space, as the thesis's shader does),
 // TEXTURE_MATRIX (the thesis's future work, "texture matrices to perform the projection": for a
 // directional light (u, v, s_I) are affine in the vertex, so the CPU folds equations 6 and 8 into one
-// 3x4 matrix per instance, light and plane and the vertex stage does three dot products per plane).
+// 3x4 matrix per instance, light and plane and the vertex stage does three dot products per plane),
+// RECEIVER_SECTIONS (some plane names the mesh parts that receive it, the thesis's receiver sections:
+// the vertex looks up the planes it receives in its mesh's hash table, techniques/occluder/
+// ReceiverSections.h, and marks the others unused in w; u, v and s_I are still computed, so a triangle
+// interpolates them exactly whatever its vertices' sections).
 #include "common/frame.glsl"
 #include "common/instance.glsl"
 
@@ -22,7 +26,8 @@ struct OccluderPlane {
 layout(std430, binding = 2) readonly buffer OccluderPlanes {
     OccluderPlane uPlanes[];
 };
-// Per instance (object id - 1): x = first plane, y = plane count; then, with LIGHT_PER_INSTANCE, the
+// Per instance (object id - 1): x = first plane, y = plane count, z = first slot of the mesh's receiver
+// section table, w = its slot count (0: every vertex receives every plane); then, with LIGHT_PER_INSTANCE, the
 // lights in the instance's model space ((direction towards the light, 0) or (position, 1)).
 struct OccluderInstance {
     uvec4 planes;
@@ -38,6 +43,41 @@ layout(std430, binding = 3) readonly buffer OccluderInstances {
 layout(std430, binding = 4) readonly buffer OccluderMatrices {
     vec4 uMatrices[];
 };
+#endif
+
+#ifdef RECEIVER_SECTIONS
+// Slots (x, y, z bits of a vertex position, mask of the planes it receives; 0xFFFFFFFF = free).
+layout(std430, binding = 7) readonly buffer OccluderSections {
+    uvec4 uSections[];
+};
+
+// ReceiverSections::hash.
+uint sectionHash(uvec3 b) {
+    uint h = b.x;
+    h = h * 0x9E3779B1u ^ b.y;
+    h = h * 0x85EBCA77u ^ b.z;
+    h ^= h >> 16;
+    h *= 0x7FEB352Du;
+    h ^= h >> 15;
+    h *= 0x846CA68Bu;
+    h ^= h >> 16;
+    return h;
+}
+
+// ReceiverSections::lookup: the planes this vertex receives (all when the mesh has no table).
+uint receivedPlanes(uvec2 range) {
+    if (range.y == 0u) return 0xFFFFu;
+    uvec3 key = floatBitsToUint(aPosition);
+    uint slot = sectionHash(key) & (range.y - 1u);
+    for (uint n = 0u; n < range.y; ++n, slot = (slot + 1u) & (range.y - 1u)) {
+        uvec4 e = uSections[range.x + slot];
+        if (e.w == 0xFFFFFFFFu) break;
+        if (e.xyz == key) return e.w;
+    }
+    return 0xFFFFu;
+}
+#else
+uint receivedPlanes(uvec2 range) { return 0xFFFFu; }
 #endif
 
 out vec3 vWorldPos;
@@ -65,6 +105,7 @@ void main() {
 
     OccluderInstance inst = uInstances[int(vColorId.w) - 1];
     int first = int(inst.planes.x), count = min(int(inst.planes.y), PLANE_COUNT);
+    uint received = receivedPlanes(inst.planes.zw);
     for (int j = 0; j < PLANE_COUNT; ++j) vLayer[j / 4][j % 4] = j < count ? uPlanes[first + j].origin.w : 0.0;
 #ifdef TEXTURE_MATRIX
     int instanceIndex = int(vColorId.w) - 1;
@@ -72,8 +113,9 @@ void main() {
     for (int i = 0; i < LIGHT_COUNT; ++i)
         for (int j = 0; j < PLANE_COUNT; ++j) {
             int m = ((instanceIndex * LIGHT_COUNT + i) * PLANE_COUNT + j) * 3;
+            float use = float((received >> uint(j)) & 1u);
             vOccluder[i * PLANE_COUNT + j] = j < count ? vec4(dot(uMatrices[m], p1), dot(uMatrices[m + 1], p1),
-                                                              dot(uMatrices[m + 2], p1), 1.0)
+                                                              dot(uMatrices[m + 2], p1), use)
                                                        : vec4(0.0);
         }
 #else
@@ -98,7 +140,10 @@ void main() {
             float s = dot(p.normal.xyz, p.origin.xyz - aPosition) / cosine;
             vec3 d = aPosition + s * towardLight - p.origin.xyz; // p(s_I) - o
             // Equation 8 (from the texture's corner, as Appendix A computes it).
-            vOccluder[i * PLANE_COUNT + j] = vec4(dot(p.right.xyz, d), dot(p.up.xyz, d), s, 1.0);
+            // w: 1 where this vertex's section receives the plane (a triangle inside one section has
+            // the same w at its three vertices).
+            vOccluder[i * PLANE_COUNT + j] =
+                vec4(dot(p.right.xyz, d), dot(p.up.xyz, d), s, float((received >> uint(j)) & 1u));
         }
     }
 #endif

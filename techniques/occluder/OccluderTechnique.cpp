@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <map>
 #include <utility>
 
@@ -11,7 +12,9 @@
 
 #include "core/Error.h"
 #include "scenes/Math.h"
+#include "scenes/ShadowPlaneChooser.h"
 #include "techniques/occluder/OccluderTextures.h"
+#include "techniques/occluder/ReceiverSections.h"
 
 namespace sb {
 
@@ -21,8 +24,9 @@ constexpr const char* kPlanes = "planes";
 constexpr const char* kResolution = "resolution";
 constexpr const char* kDilate = "dilate";
 constexpr const char* kReceivers = "receivers";
-constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6;               // shaders/occluder/lit.frag
-constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4; // shaders/occluder/scene.vert
+constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6; // shaders/occluder/lit.frag
+// shaders/occluder/scene.vert
+constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4, kSectionBinding = 7;
 
 /// Bilinear resample of a single-channel image (loaded textures of another size than `resolution`).
 std::vector<uint8_t> resample(const std::vector<uint8_t>& src, int w, int h, int size) {
@@ -98,8 +102,60 @@ void OccluderTechnique::release() {
     if (mMatrixBuffer) glDeleteBuffers(1, &mMatrixBuffer);
     if (mWorldPlaneBuffer) glDeleteBuffers(1, &mWorldPlaneBuffer);
     if (mCandidateBuffer) glDeleteBuffers(1, &mCandidateBuffer);
+    if (mSectionBuffer) glDeleteBuffers(1, &mSectionBuffer);
     mTextures = mPlaneBuffer = mInstanceBuffer = mMatrixBuffer = mWorldPlaneBuffer = mCandidateBuffer = 0;
+    mSectionBuffer = 0;
     mResolution = mLayers = 0;
+}
+
+namespace {
+/// Unit directions towards the scene's lights in the object space of (up to 8 of) the mesh's instances:
+/// what the automatic choice scores its planes for. Near-duplicates (within ~2.5 degrees) are dropped.
+std::vector<glm::vec3> lightsInObjectSpace(const Scene& scene, uint32_t mesh) {
+    std::vector<const Instance*> instances;
+    for (const Instance& inst : scene.instances)
+        if (inst.mesh == mesh) instances.push_back(&inst);
+    const size_t step = std::max<size_t>(1, (instances.size() + 7) / 8);
+    const glm::vec3 centre = scene.meshes[mesh].computeBounds().center();
+    std::vector<glm::vec3> out;
+    for (size_t i = 0; i < instances.size(); i += step) {
+        const glm::mat4 inverse = glm::inverse(instances[i]->model);
+        for (const Light& l : scene.lights) {
+            const glm::vec3 world =
+                l.type == LightType::Directional
+                    ? -l.direction
+                    : l.position - glm::vec3(instances[i]->model * glm::vec4(centre, 1.0f));
+            const glm::vec3 d = glm::normalize(glm::vec3(inverse * glm::vec4(world, 0.0f)));
+            if (!std::isfinite(d.x)) continue;
+            if (std::none_of(out.begin(), out.end(),
+                             [&](const glm::vec3& o) { return glm::dot(o, d) > 0.999f; }))
+                out.push_back(d);
+        }
+    }
+    return out;
+}
+} // namespace
+
+void OccluderTechnique::choosePlanes(const Scene& scene, const std::vector<bool>& drawn) {
+    // Meshes without given planes (a --model file) get automatically chosen ones, for the scene's lights;
+    // one that yields no useful plane is said so on stderr and counted (counter no_useful_planes).
+    mMeshPlanes.assign(scene.meshes.size(), {});
+    mNoUsefulPlanes = 0;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        if (!mesh.shadowPlanesAuto || !drawn[m]) {
+            mMeshPlanes[m] = mesh.shadowPlanes;
+            continue;
+        }
+        const ShadowPlaneChoice choice =
+            ShadowPlaneChooser::choose(mesh, lightsInObjectSpace(scene, uint32_t(m)), kAutoPlanes);
+        mMeshPlanes[m] = choice.planes;
+        if (choice.planes.empty()) {
+            ++mNoUsefulPlanes;
+            std::cerr << "occluder: mesh '" << mesh.name
+                      << "': no useful shadow plane, it is drawn unshadowed: " << choice.reason << "\n";
+        }
+    }
 }
 
 void OccluderTechnique::collectPlanes(const Scene& scene) {
@@ -110,20 +166,22 @@ void OccluderTechnique::collectPlanes(const Scene& scene) {
     mMeshCount.assign(scene.meshes.size(), 0);
     std::vector<bool> drawn(scene.meshes.size(), false);
     for (const Instance& inst : scene.instances) drawn[inst.mesh] = true;
+    choosePlanes(scene, drawn);
     mPlaneSlots = 1;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
+        const std::vector<ShadowPlane>& planes = mMeshPlanes[m];
         if (!drawn[m]) continue;
-        if (mesh.shadowPlanes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
-            throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(mesh.shadowPlanes.size()) +
+        if (planes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
+            throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(planes.size()) +
                             " shadow planes; at most " + std::to_string(kMaxPlanes) + " are used per mesh",
                         ExitCode::Unsupported);
-        const int count = std::min<int>(int(mesh.shadowPlanes.size()), limit);
+        const int count = std::min<int>(int(planes.size()), limit);
         mMeshFirst[m] = uint32_t(mPlanes.size());
         mMeshCount[m] = uint32_t(count);
         mPlaneSlots = std::max(mPlaneSlots, count);
         for (int k = 0; k < count; ++k) {
-            const ShadowPlane& p = mesh.shadowPlanes[size_t(k)];
+            const ShadowPlane& p = planes[size_t(k)];
             p.validate("occluder: mesh '" + mesh.name + "'");
             GpuPlane g;
             g.origin = glm::vec4(p.origin, -1.0f); // layer set in buildTextures
@@ -154,13 +212,27 @@ void OccluderTechnique::setScene(const Scene& scene) {
     for (const Instance& inst : scene.instances) mInverseModel.push_back(glm::inverse(inst.model));
     mReceiveAll = properties().getEnum(kReceivers) == "all";
     if (mReceiveAll) collectCandidates(scene);
-    // Per instance: (first plane, plane count, 0, 0) as raw bits, then one vec4 per light.
+    buildReceiverSections(scene);
+    // Per instance: (first plane, plane count, first section slot, section slots) as raw bits, then one
+    // vec4 per light.
     const size_t stride = 1 + size_t(mLights);
     mInstanceData.assign(scene.instances.size() * stride, glm::vec4(0.0f));
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const uint32_t mesh = scene.instances[i].mesh;
-        glm::uvec4 range(mMeshFirst[mesh], mMeshCount[mesh], 0, 0);
+        glm::uvec4 range(mMeshFirst[mesh], mMeshCount[mesh], mMeshSections[mesh].x, mMeshSections[mesh].y);
         std::memcpy(&mInstanceData[i * stride], &range, sizeof(range));
+    }
+}
+
+void OccluderTechnique::buildReceiverSections(const Scene& scene) {
+    mSectionTable.clear();
+    mMeshSections.assign(scene.meshes.size(), glm::uvec2(0));
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const std::vector<ShadowPlane> used(mMeshPlanes[m].begin(), mMeshPlanes[m].begin() + mMeshCount[m]);
+        if (!ReceiverSections::needed(used)) continue;
+        const std::vector<glm::uvec4> table = ReceiverSections::build(scene.meshes[m], used);
+        mMeshSections[m] = glm::uvec2(uint32_t(mSectionTable.size()), uint32_t(table.size()));
+        mSectionTable.insert(mSectionTable.end(), table.begin(), table.end());
     }
 }
 
@@ -275,20 +347,21 @@ void OccluderTechnique::buildTextures(const CompileContext& ctx) {
     for (size_t e = 0; e < mPlanes.size(); ++e) {
         const auto [m, k] = std::pair<int, int>(mPlaneSource[e].x, mPlaneSource[e].y);
         const Mesh& mesh = ctx.scene.meshes[size_t(m)];
-        const ShadowPlane& plane = mesh.shadowPlanes[size_t(k)];
+        const std::vector<ShadowPlane>& planes = mMeshPlanes[size_t(m)];
+        const ShadowPlane& plane = planes[size_t(k)];
         if (plane.solid) continue; // layer -1: no texture
         int owner = k;
         if (!plane.textureOf.empty()) {
-            auto it = std::find_if(mesh.shadowPlanes.begin(), mesh.shadowPlanes.end(),
+            auto it = std::find_if(planes.begin(), planes.end(),
                                    [&](const ShadowPlane& p) { return p.name == plane.textureOf; });
-            if (it == mesh.shadowPlanes.end())
+            if (it == planes.end())
                 throw Error("occluder: mesh '" + mesh.name + "': plane '" + plane.name +
                             "' takes the texture of '" + plane.textureOf + "', which the mesh does not have");
-            owner = int(it - mesh.shadowPlanes.begin());
+            owner = int(it - planes.begin());
         }
         auto [it, added] = layerOf.emplace(std::make_pair(m, owner), int(layers.size()));
         if (added) {
-            const ShadowPlane& source = mesh.shadowPlanes[size_t(owner)];
+            const ShadowPlane& source = planes[size_t(owner)];
             OccluderBakeOptions planeOptions = options;
             planeOptions.silhouette = !source.sectionOnly;
             const GLuint texture = source.texture == "auto"
@@ -352,6 +425,12 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
                       GL_DYNAMIC_DRAW);
     uploadInstances(false);
     Defines d = ctx.submitter.defines();
+    if (!mSectionTable.empty()) {
+        if (!mSectionBuffer) glCreateBuffers(1, &mSectionBuffer);
+        glNamedBufferData(mSectionBuffer, GLsizeiptr(mSectionTable.size() * sizeof(glm::uvec4)),
+                          mSectionTable.data(), GL_STATIC_DRAW);
+        d["RECEIVER_SECTIONS"] = "";
+    }
     d["LIGHT_COUNT"] = std::to_string(mLights);
     d["PLANE_COUNT"] = std::to_string(mPlaneSlots);
     if (mPerInstance) d["LIGHT_PER_INSTANCE"] = "";
@@ -398,8 +477,7 @@ void OccluderTechnique::uploadMatrices() {
                 glm::vec3(mInverseModel[i] * glm::vec4(-mScene->lights[size_t(l)].direction, 0.0f)));
             for (uint32_t j = 0; j < mMeshCount[mesh]; ++j) {
                 const glm::ivec2 src = mPlaneSource[mMeshFirst[mesh] + j];
-                const auto rows =
-                    mScene->meshes[size_t(src.x)].shadowPlanes[size_t(src.y)].textureMatrix(toward);
+                const auto rows = mMeshPlanes[size_t(src.x)][size_t(src.y)].textureMatrix(toward);
                 const size_t base = ((i * size_t(mLights) + size_t(l)) * slots + j) * 3;
                 std::copy(rows.begin(), rows.end(), mMatrices.begin() + std::ptrdiff_t(base));
             }
@@ -422,6 +500,7 @@ void OccluderTechnique::execute(FrameContext& ctx) {
     glBindTextureUnit(0, mTextures);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPlaneBinding, mPlaneBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, mInstanceBuffer);
+    if (!mSectionTable.empty()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSectionBinding, mSectionBuffer);
     if (mReceiveAll) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorldPlaneBinding, mWorldPlaneBuffer);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCandidateBinding, mCandidateBuffer);
@@ -435,7 +514,8 @@ void OccluderTechnique::execute(FrameContext& ctx) {
                  {"triangles", double(s.triangles)},
                  {"shadow_planes", planeInstances},
                  {"occluder_texels", double(mResolution) * mResolution * double(mLayers)},
-                 {"receiver_candidates", double(mCandidates.size())}};
+                 {"receiver_candidates", double(mCandidates.size())},
+                 {"no_useful_planes", double(mNoUsefulPlanes)}};
 }
 
 } // namespace sb

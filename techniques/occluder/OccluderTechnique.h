@@ -9,6 +9,11 @@
 // planes, which is the thesis's technique: self-shadowing; receivers without planes (the ground) get no
 // shadow, and the accuracy numbers count that.
 //
+// A plane may name the mesh parts that receive it (the thesis's receiver sections, ReceiverSections.h);
+// a mesh without given planes (a --model file, Mesh::shadowPlanesAuto) gets up to kAutoPlanes chosen for
+// the scene's lights in setScene (scenes/ShadowPlaneChooser.h), or none, said on stderr and counted in
+// the counter no_useful_planes.
+//
 // Occluder textures are baked from the plane's mesh parts (OccluderTextures: the thesis's future work,
 // automated) at `resolution`, or read from the image the scene names, and kept as layers of one
 // texture array so a draw needs no per-mesh binding. Plane data and per-instance records live in two
@@ -42,6 +47,8 @@ public:
 
     /// Most planes per mesh the vertex stage passes on (varying budget: 16 planes x 1 light).
     static constexpr int kMaxPlanes = 16;
+    /// Most planes chosen automatically for a mesh without given ones (the cost is per plane).
+    static constexpr int kAutoPlanes = 4;
 
 private:
     /// std430 mirror of OccluderPlane in shaders/occluder/scene.vert.
@@ -52,12 +59,14 @@ private:
         glm::vec4 up;    ///< up / height
     };
 
+    void choosePlanes(const Scene& scene, const std::vector<bool>& drawn);
     void collectPlanes(const Scene& scene);
     void buildTextures(const CompileContext& ctx);
     void uploadInstances(bool lights);
     void uploadMatrices();
     void collectCandidates(const Scene& scene);
     void uploadWorldPlanes();
+    void buildReceiverSections(const Scene& scene);
     void release();
 
     const Scene* mScene = nullptr;
@@ -67,14 +76,22 @@ private:
     std::vector<glm::uvec2> mCandidateRange;
     std::vector<uint32_t> mCandidates, mInstancePlaneFirst;
     size_t mWorldPlanes = 0;
+    /// Per mesh the planes it is drawn with: its own, or for a mesh without given planes (a --model file)
+    /// those ShadowPlaneChooser picked for the scene's lights; mNoUsefulPlanes counts those left without.
+    std::vector<std::vector<ShadowPlane>> mMeshPlanes;
+    int mNoUsefulPlanes = 0;
     std::vector<GpuPlane> mPlanes;                ///< every mesh's used planes, contiguous per mesh
     std::vector<uint32_t> mMeshFirst, mMeshCount; ///< per mesh: range in mPlanes
     std::vector<glm::ivec2> mPlaneSource;         ///< per entry of mPlanes: mesh, plane index
     std::vector<glm::mat4> mInverseModel;         ///< per instance (the per_instance light space)
     std::vector<glm::vec4> mInstanceData;         ///< per instance: (first, count) then the lights
     std::vector<glm::vec4> mMatrices;             ///< texture_matrix: 3 rows per instance, light, plane
+    /// Receiver sections (ReceiverSections.h): every mesh's hash table, contiguous, and per mesh its
+    /// (first slot, slot count), count 0 where every part receives every plane.
+    std::vector<glm::uvec4> mSectionTable;
+    std::vector<glm::uvec2> mMeshSections;
     GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0, mMatrixBuffer = 0, mWorldPlaneBuffer = 0,
-           mCandidateBuffer = 0;
+           mCandidateBuffer = 0, mSectionBuffer = 0;
     int mResolution = 0, mLayers = 0;
     const Program* mProgram = nullptr;
     Counters mCounters;

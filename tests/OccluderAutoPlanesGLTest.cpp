@@ -1,0 +1,143 @@
+// `occluder` on model files without given planes (--model): the planes ShadowPlaneChooser picks must
+// shadow better than no shadow at all, judged against the exact Embree reference at the same pixels (the
+// hard-case table's measure, bench/run/AccuracyEvaluator), on glmark2's horse and cat; a convex model,
+// which casts no shadow on itself, yields no useful plane and must say so on stderr and in the row
+// (counter no_useful_planes).
+//
+// The models' orientation is whatever the model loader makes of the files (3DS files are Z-up, and the
+// loader's handling of that may change), so each model is judged under three lights along three
+// different axes, the camera on the light's side, and in two orientations (as loaded, and turned by the
+// layout's seeded random pitch, yaw and roll of up to 90 degrees): whichever way the model stands, the
+// planes are chosen for the light it is judged under.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/run/AccuracyEvaluator.h"
+#include "bench/run/Harness.h"
+#include "techniques/TechniqueRegistry.h"
+
+using namespace sb;
+
+namespace {
+
+const std::string kModels = "/usr/share/glmark2/models/";
+
+/// A one-instance layout of a unit stand-in sphere (the model is scaled onto it), one directional light
+/// travelling along `direction`, a camera 3.2 units away on the light's side, 25 degrees off the light.
+std::string writeScene(const std::string& dir, const glm::vec3& direction, bool turned) {
+    const glm::vec3 toLight = -glm::normalize(direction);
+    const glm::vec3 side = glm::normalize(
+        glm::cross(toLight, std::abs(toLight.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    const glm::vec3 eye = 3.2f * glm::normalize(toLight + 0.47f * side);
+    const glm::vec3 up = std::abs(eye.y) < 0.9f * glm::length(eye) ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    auto v = [](const glm::vec3& x) {
+        return "[" + std::to_string(x.x) + ", " + std::to_string(x.y) + ", " + std::to_string(x.z) + "]";
+    };
+    const std::string path = dir + "/model.json";
+    test::writeFile(path, R"({"name": "occluder_model",
+  "meshes": [{"name": "stand_in", "generator": "sphere", "radius": 1, "tessellation": 8}],
+  "layout": {"mesh": "stand_in", "count": 1, "seed": 3, "region": [[0, 0, 0], [0, 0, 0]], "yaw_only": )" +
+                              std::string(turned ? "false" : "true") + R"(, "max_tilt": 90},
+  "lights": [{"type": "directional", "direction": )" +
+                              v(direction) + R"(}],
+  "cameras": [{"name": "light_side", "eye": )" +
+                              v(eye) + R"(, "target": [0, 0, 0], "up": )" + v(up) +
+                              R"(, "fov": 45, "near": 0.05, "far": 50}]})");
+    return path;
+}
+
+struct Judged {
+    double wrongPct = 0.0;
+    uint64_t evaluated = 0, nan = 0;
+    double planes = 0.0, noUseful = 0.0;
+};
+
+Judged judge(const std::string& scene, const std::string& model, const std::string& spec) {
+    RunConfig cfg = test::quickConfig(scene, "light_side", 384);
+    cfg.sceneOptions.modelPath = model;
+    Harness harness(cfg);
+    auto technique = TechniqueRegistry::create(TechniqueSpec::parse(spec));
+    harness.prepare(*technique);
+    AccuracyEvaluator evaluator(harness);
+    AccuracyOptions options;
+    options.stability = false;
+    const AccuracyResult r = evaluator.evaluate(*technique, options);
+    Judged j;
+    j.wrongPct = r.hard.wrongPct;
+    j.evaluated = r.hard.evaluated;
+    j.nan = r.sanity.nan + r.sanity.inf + r.sanity.outOfRange;
+    if (spec == "occluder") {
+        j.planes = test::counter(technique->counters(), "shadow_planes");
+        j.noUseful = test::counter(technique->counters(), "no_useful_planes");
+    }
+    return j;
+}
+
+const glm::vec3 kLights[] = {{0.45f, -1.0f, 0.35f}, {-1.0f, 0.3f, 0.4f}, {0.3f, 0.45f, -1.0f}};
+
+class AutoPlanes : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AutoPlanes, BeatNoShadowAgainstTheReference) {
+    const std::string model = kModels + GetParam() + ".3ds";
+    if (!std::filesystem::exists(model)) GTEST_SKIP() << model << " missing (package glmark2-data)";
+    const std::string dir = test::freshTestDir("occluder-auto");
+    for (bool turned : {false, true}) {
+        double occluderSum = 0.0, noneSum = 0.0;
+        for (const glm::vec3& light : kLights) {
+            SCOPED_TRACE("light " + std::to_string(light.x) + ", " + std::to_string(light.y) + ", " +
+                         std::to_string(light.z) + (turned ? ", turned" : ""));
+            const std::string scene = writeScene(dir, light, turned);
+            const Judged occluder = judge(scene, model, "occluder");
+            const Judged none = judge(scene, model, "none");
+            std::cout << GetParam() << (turned ? " turned" : "") << " light (" << light.x << ", " << light.y
+                      << ", " << light.z << "): occluder " << occluder.wrongPct << "% wrong with "
+                      << occluder.planes << " planes, none " << none.wrongPct << "% of " << none.evaluated
+                      << " judged\n";
+            // Enough judged pixels for a percentage to mean something (the model fills ~1/4 of the view).
+            EXPECT_GT(none.evaluated, 5000u);
+            EXPECT_EQ(occluder.nan, 0u);
+            // Planes at all (a model loaded as several meshes, one per object, may leave a convex
+            // object such as an eye without one: no_useful_planes is not required to be 0).
+            EXPECT_GT(occluder.planes, 0.0) << "the model got no automatic plane";
+            // Never worse than no shadow beyond the edge band's few pixels: 0.05 points are ~10 of the
+            // ~20k judged (measured at worst: the turned cat under the third light, with no self-shadow at
+            // all, 0.043% = 10 pixels along one plane's shadow edge).
+            EXPECT_LE(occluder.wrongPct, none.wrongPct + 0.05);
+            occluderSum += occluder.wrongPct;
+            noneSum += none.wrongPct;
+        }
+        // The claim: over the three lights the automatic planes remove a real part of the self-shadow error
+        // none makes, at least a quarter (measured, wrong points summed over the lights, as loaded / turned:
+        // horse 9.1 / 5.2 against 18.7 / 11.9, cat 1.2 / 1.9 against 6.4 / 11.4).
+        EXPECT_LT(occluderSum, 0.75 * noneSum);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Glmark2, AutoPlanes, ::testing::Values("horse", "cat"));
+
+TEST(OccluderAutoPlanesGLTest, ConvexModelSaysItHasNoUsefulPlane) {
+    // glmark2's cube is convex: no point of it is shadowed by itself under any light, so no plane can
+    // capture a shadow and every candidate could only add false ones. The choice must end with none, one
+    // line on stderr naming the mesh, and the row's counter.
+    const std::string model = kModels + "cube.3ds";
+    if (!std::filesystem::exists(model)) GTEST_SKIP() << model << " missing (package glmark2-data)";
+    const std::string scene = writeScene(test::freshTestDir("occluder-auto"), kLights[0], false);
+    ::testing::internal::CaptureStderr();
+    const Judged occluder = judge(scene, model, "occluder");
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(occluder.planes, 0.0);
+    EXPECT_EQ(occluder.noUseful, 1.0);
+    EXPECT_NE(err.find("occluder: mesh '"), std::string::npos) << err;
+    EXPECT_NE(err.find("': no useful shadow plane"), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << "one line: " << err;
+    EXPECT_EQ(occluder.wrongPct, 0.0) << "a convex model has no self-shadow to miss";
+}
+
+} // namespace
