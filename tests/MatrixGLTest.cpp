@@ -3,11 +3,15 @@
 // image as in retained mode, (b) match the committed golden in results/goldens/, and (c) stay within its
 // committed accuracy bound against the Embree reference. `bench golden --check` runs the same check;
 // `bench golden --update` regenerates goldens and bounds (README, "Run the tests").
+#include <filesystem>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
+#include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
 #include "techniques/TechniqueRegistry.h"
@@ -49,5 +53,57 @@ TEST_P(Matrix, EveryCellMatchesRetainedGoldenAndBound) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Matrix, ::testing::ValuesIn(GoldenMatrix::builtinScenes()),
                          [](const auto& p) { return p.param; });
+
+} // namespace
+
+namespace {
+
+// Negative controls: the check must see a golden that no longer matches, a bound loosened past its rule
+// and a missing golden. sphere_plane is the smallest scene; the goldens are copied, then broken.
+TEST(MatrixCheck, ChangedGoldenLooseBoundAndMissingGoldenAreCaught) {
+    namespace fs = std::filesystem;
+    const std::string dir = test::freshTestDir("matrix");
+    fs::copy(std::string(SB_SOURCE_DIR) + "/results/goldens", dir, fs::copy_options::recursive);
+    MatrixOptions options;
+    options.scenes = {"sphere_plane"};
+    options.techniques = {"none", "shadowmap", "volume"};
+    const std::vector<MatrixCell> cells = GoldenMatrix::renderScene("sphere_plane", options);
+
+    // shadowmap's visibility golden: 1% of the pixels inverted (the tolerance allows 0.5%).
+    const std::string vis = MatrixCheck::goldenPath(dir, "sphere_plane", "shadowmap", "visibility");
+    Image8 golden = GoldenImage::read(vis);
+    for (size_t p = 0; p < golden.pixelCount() / 100; ++p) {
+        uint8_t& v = golden.pixels[p * 97 % golden.pixelCount() * size_t(golden.channels)];
+        v = uint8_t(255 - v);
+    }
+    GoldenImage::write(vis, golden);
+    // volume's bound loosened past its rule (exact: 0.5% off the edge band).
+    std::map<std::string, AccuracyBound> bounds;
+    for (AccuracyBound& b : AccuracyBounds::read(dir + "/bounds.json")) bounds[b.cell] = std::move(b);
+    bounds["volume/sphere_plane/light0"].max = 5.0;
+    // none's colour golden removed.
+    fs::remove(MatrixCheck::goldenPath(dir, "sphere_plane", "none", "colour"));
+
+    std::map<std::string, std::string> failures;
+    for (const CellVerdict& v : MatrixCheck::check(cells, dir, bounds))
+        for (const std::string& f : v.failures) failures[v.cell] += f + "\n";
+    EXPECT_NE(failures["shadowmap/sphere_plane/retained"].find("visibility vs golden"), std::string::npos)
+        << failures["shadowmap/sphere_plane/retained"];
+    EXPECT_NE(failures["volume/sphere_plane/retained"].find("looser than the rule"), std::string::npos)
+        << failures["volume/sphere_plane/retained"];
+    EXPECT_NE(failures["none/sphere_plane/retained"].find("no golden"), std::string::npos)
+        << failures["none/sphere_plane/retained"];
+    // Nothing else: every mode of a technique fails on its injected fault only (modes share the golden
+    // and the bound), and every line of a failure is that fault.
+    const std::map<std::string, std::string> injected = {
+        {"shadowmap", "visibility vs golden"}, {"volume", "looser than the rule"}, {"none", "no golden"}};
+    for (const auto& [cell, text] : failures) {
+        const std::string technique = cell.substr(0, cell.find('/'));
+        ASSERT_TRUE(injected.count(technique)) << cell << ": " << text;
+        std::istringstream lines(text);
+        for (std::string line; std::getline(lines, line);)
+            EXPECT_NE(line.find(injected.at(technique)), std::string::npos) << cell << ": " << line;
+    }
+}
 
 } // namespace

@@ -11,7 +11,7 @@ namespace sb {
 
 namespace {
 
-enum class Rule { Exact, Map, NoShadow, Approximate, NotJudged };
+enum class Rule { Exact, Map, NoShadow, Approximate, SoftApproximate, NotJudged };
 
 struct TechniqueRule {
     const char* technique;
@@ -21,8 +21,8 @@ struct TechniqueRule {
 // Unknown techniques are approximate: a new technique must at least beat no shadow on day one.
 constexpr TechniqueRule kRules[] = {
     {"none", Rule::NoShadow},       {"shadowmap", Rule::Map},          {"volume", Rule::Exact},
-    {"reference", Rule::Exact},     {"occluder", Rule::Approximate},   {"proxy", Rule::Approximate},
-    {"planar", Rule::Approximate},  {"projective", Rule::Approximate}, {"blob", Rule::Approximate},
+    {"reference", Rule::Exact},     {"occluder", Rule::Approximate},   {"proxy", Rule::SoftApproximate},
+    {"planar", Rule::Approximate},  {"projective", Rule::Approximate}, {"blob", Rule::SoftApproximate},
     {"synthetic", Rule::NotJudged},
 };
 
@@ -39,15 +39,26 @@ constexpr double kCountEpsilonPct = 1e-9;
 
 struct Exception {
     const char* cell; ///< technique/scene/light<i>
-    const char* metric;
-    double max;
-    const char* why;
+    const char* why;  ///< the limit of the technique that keeps it from its rule here
 };
 
-// Cells known not to reach their rule's bound, each with the reason. Keep this short: an entry is a
-// defect or a limit of the technique stated plainly, and it shows in results/goldens/MATRIX.md.
+// Cells known not to reach their rule's bound, each with the reason. An exception does not open the
+// bound: the cell is held to the black-out rule instead, halfway between the error of no shadow and that
+// of shadowing every sample, so it must stay nearer to no shadow than to a black frame (the failure of a
+// blob that blacked out a point light's pool). Keep this short: each entry is a limit of the technique
+// stated plainly, and it shows in results/goldens/MATRIX.md.
 constexpr Exception kExceptions[] = {
-    {"", "", 0.0, ""}, // placeholder so the array is never empty
+    {"blob/teapot/light0",
+     "the blob is the ellipse through the projected corners of the caster's bounding box, pi/2 times the "
+     "box's footprint, while a teapot's shadow under this high sun is smaller than its box: the blobs' "
+     "dark cores cover several times the ground the teapots shadow (2.1% of the judged samples)"},
+    {"proxy/teapot/light0",
+     "ShadowProxies darken the ground around a proxy by distance and direction, not along the light's "
+     "rays: under this high sun the true shadows hide under the teapots (2.1% of the judged samples), "
+     "and the halo around each teapot costs more than the shadow it adds"},
+    {"proxy/synthetic_draws/light0",
+     "a dense field of small casters (10000 quads): each proxy's halo reaches past its quad's shadow on "
+     "every side, and together the halos outweigh the shadows"},
 };
 
 Rule ruleOf(const std::string& technique) {
@@ -66,6 +77,8 @@ const char* ruleName(Rule r) {
         return "no_shadow";
     case Rule::Approximate:
         return "approximate";
+    case Rule::SoftApproximate:
+        return "soft_approximate";
     case Rule::NotJudged:
         return "not_judged";
     }
@@ -84,6 +97,11 @@ AccuracyBound softBound(const std::string& name, Rule rule, const CellAccuracy& 
         // 64 samples and the worst per-sample variance 1/4, 0.1 with headroom.
         b.max = 0.1;
         b.why = "two independent stratified estimates of the same soft visibility differ by sampling noise";
+    } else if (rule == Rule::SoftApproximate) {
+        b.why = "a soft approximation (continuous visibility by design) is judged by RMSE, which weighs how "
+                "dark it is rather than a 0.5 threshold: it must be closer to the reference than no shadow "
+                "(RMSE of no shadow " +
+                std::to_string(a.noShadowRmse) + ")";
     } else {
         b.why = "a hard-shadow technique under an area light approximates the penumbra: it must still be "
                 "closer to the reference than no shadow (RMSE of no shadow " +
@@ -119,6 +137,19 @@ AccuracyBound hardBound(const std::string& name, Rule rule, const CellAccuracy& 
     return b;
 }
 
+/// The bound of an exception: halfway between no shadow's error and a black frame's, in the rule's metric.
+AccuracyBound blackOutBound(AccuracyBound b, const CellAccuracy& a, const char* why) {
+    if (b.metric == "rmse")
+        b.max = 0.5 * (a.noShadowRmse + a.allShadowRmse);
+    else // a black frame is wrong wherever the reference is lit: 100 - noShadowPct
+        b.max = 50.0;
+    b.min = 0.0;
+    b.rule = "exception";
+    b.why = std::string("known limit: ") + why +
+            "; held to the black-out rule (nearer no shadow than a black frame)";
+    return b;
+}
+
 } // namespace
 
 double AccuracyBound::measured(const CellAccuracy& a) const {
@@ -135,15 +166,10 @@ AccuracyBound AccuracyBounds::derive(const MatrixCell& cell, size_t light) {
         return {
             name, "", 0.0, 0.0, ruleName(rule), "not a shadow technique: its image is checked, not judged"};
     const CellAccuracy& a = cell.lights.at(light);
-    AccuracyBound b = a.softReference ? softBound(name, rule, a) : hardBound(name, rule, a);
+    AccuracyBound b = a.softReference || rule == Rule::SoftApproximate ? softBound(name, rule, a)
+                                                                       : hardBound(name, rule, a);
     for (const Exception& e : kExceptions)
-        if (name == e.cell) {
-            b.metric = e.metric;
-            b.max = e.max;
-            b.min = 0.0;
-            b.rule = "exception";
-            b.why = e.why;
-        }
+        if (name == e.cell) b = blackOutBound(b, a, e.why);
     return b;
 }
 

@@ -5,9 +5,12 @@
 //                around reference shadow edges only a sliver may differ;
 //   map          (shadowmap): exact up to the map's texels and bias, a little more off the edge band;
 //   no_shadow    (none): draws no shadow, so its error must be exactly the reference's shadowed fraction;
-//   approximate  (occluder, proxy, planar, projective, blob): an approximation may miss shadows or soften
-//                them, but a shadow that is worse than drawing no shadow at all is broken: the bound is
-//                the error of no shadow in that cell;
+//   approximate  (occluder, planar, projective): an approximation may miss shadows, but a shadow that is
+//                worse than drawing no shadow at all is broken: the bound is the error of no shadow in
+//                that cell (judged samples the reference shadows);
+//   soft_approximate (proxy, blob): their visibility is continuous by design (ShadowProxies' "infinitely
+//                soft" halo, the blob's faded ellipse), so a 0.5 threshold misjudges them: the metric is
+//                the RMSE against the reference, bounded by the RMSE of no shadow;
 //   not_judged   (synthetic): not a shadow technique (the bottleneck study's workloads).
 // Under an area light (soft reference) the hard-shadow techniques are all approximations: the metric is
 // the RMSE, bounded by the RMSE of no shadow. A cell whose technique is known not to reach its rule's

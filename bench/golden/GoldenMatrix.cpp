@@ -81,15 +81,17 @@ CellAccuracy judgeLight(AccuracyEvaluator& evaluator, Technique& technique, int 
     a.soft = AccuracyMetrics::soft(s.technique, s.reference, s.mask);
     a.softReference = scene.lights[size_t(light)].isArea();
     uint64_t shadowed = 0, judged = 0;
-    double squares = 0.0;
+    double squares = 0.0, blackSquares = 0.0;
     for (size_t i = 0; i < s.mask.size(); ++i) {
         if (!s.mask[i]) continue;
         ++judged;
         shadowed += s.reference[i] < 0.5f;
         squares += double(1.0f - s.reference[i]) * double(1.0f - s.reference[i]);
+        blackSquares += double(s.reference[i]) * double(s.reference[i]);
     }
     a.noShadowPct = judged ? 100.0 * double(shadowed) / double(judged) : 0.0;
     a.noShadowRmse = judged ? std::sqrt(squares / double(judged)) : 0.0;
+    a.allShadowRmse = judged ? std::sqrt(blackSquares / double(judged)) : 0.0;
     return a;
 }
 

@@ -18,8 +18,9 @@ namespace sb {
 struct CellAccuracy {
     HardMetrics hard;
     SoftMetrics soft;
-    double noShadowPct = 0.0;  ///< judged samples the reference shadows: what drawing no shadow gets wrong
-    double noShadowRmse = 0.0; ///< the RMSE of drawing no shadow (visibility 1 everywhere)
+    double noShadowPct = 0.0;   ///< judged samples the reference shadows: what drawing no shadow gets wrong
+    double noShadowRmse = 0.0;  ///< the RMSE of drawing no shadow (visibility 1 everywhere)
+    double allShadowRmse = 0.0; ///< the RMSE of shadowing everything (visibility 0 everywhere): a black-out
     bool softReference = false;
 };
 
