@@ -4,8 +4,8 @@
 // and no fewer, so the check cannot pass by checking nothing.
 #include <gtest/gtest.h>
 
-#include "TestPaths.h"
 #include "LayoutRules.h"
+#include "TestPaths.h"
 
 using namespace sb;
 
