@@ -83,7 +83,8 @@ constexpr const char* kExamples = R"(Examples:
   bench sweep -t none -t shadowmap -n 1,50,100,200 --csv inst.csv
   bench bottleneck -t none -t shadowmap -n 100 --csv bn.csv
 
-Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 bad input, 3 unsupported on this GL context.
+Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 the input is wrong (option, value, file, index),
+3 this machine or context lacks what is needed (an extension, a device, a loader).
 With several techniques, one that fails or refuses gets a row (status, error) and the rest still run;
 the exit code is then the worst: 1 over 2 over 3 (nothing measured: the worst error, no row).)";
 

@@ -239,6 +239,18 @@ TEST(Cli, AccuracyRowHasTimingAndEveryDocumentedAccuracyColumn) {
     for (size_t i = 0; i < 3; ++i) EXPECT_EQ(cell(i, "acc_nan"), "0.0000");
 }
 
+TEST(Cli, GpuIndexOutOfRangeIsBadInput) {
+    // An index past the machine's EGL devices is the user's input (exit 2), named with the device
+    // count, whether the backend is chosen by --gpu (auto) or named; it never falls back to another
+    // backend and measures there (it did: exit 0 under auto, exit 3 with egl-device).
+    for (const std::string backend : {"", " --backend egl-device"}) {
+        auto r = runCommand(bench("--gpu 99" + backend + kQuick));
+        EXPECT_EQ(r.exitCode, 2) << backend << ": " << r.output;
+        EXPECT_NE(r.output.find("--gpu 99 is out of range"), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("wall median"), std::string::npos) << "measured anyway: " << r.output;
+    }
+}
+
 TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
     // none runs and appends its row; shadowmap then refuses the point light: its refusal is a row of its
     // own (status unsupported, the reason in error), the none row stays, and the exit code says what

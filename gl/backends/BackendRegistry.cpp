@@ -75,7 +75,8 @@ std::vector<const BackendEntry*> candidates(const ContextOptions& options) {
 }
 
 /// A context that exists but is below 4.5 compatibility is refused with ExitCode::Unsupported like a
-/// backend that failed; in Auto mode the next backend still gets its chance.
+/// backend that failed; in Auto mode the next backend still gets its chance. A backend that finds the
+/// user's input wrong (ExitCode::BadInput) ends the search.
 std::unique_ptr<Context> tryBackend(const BackendEntry& backend, const ContextOptions& options,
                                     std::string& reason) {
     try {
@@ -85,6 +86,8 @@ std::unique_ptr<Context> tryBackend(const BackendEntry& backend, const ContextOp
         if (reason.empty()) return context;
         reason = std::string(backend.name) + ": " + reason;
     } catch (const Error& e) {
+        // Bad input (a device index out of range) is not a reason to try the next backend.
+        if (e.code() == ExitCode::BadInput) throw;
         reason = e.what();
     }
     return nullptr;

@@ -72,10 +72,13 @@ EglDeviceContext::PickedDevice EglDeviceContext::pickDevice(const ContextOptions
     if (devices.empty())
         failDevice("no EGL devices (EGL_EXT_device_enumeration/query missing or none found)");
     int index = options.gpu < 0 ? 0 : options.gpu;
+    // An index past the devices this machine has is the user's input, not a missing capability: exit 2,
+    // and never a silent fall-back to another backend.
     if (index >= static_cast<int>(devices.size()))
-        failDevice("--gpu " + std::to_string(options.gpu) +
-                   " is out of range: " + std::to_string(devices.size()) + " device(s), indices 0.." +
-                   std::to_string(devices.size() - 1));
+        throw Error("egl-device: --gpu " + std::to_string(options.gpu) +
+                        " is out of range: " + std::to_string(devices.size()) + " device(s), indices 0.." +
+                        std::to_string(devices.size() - 1),
+                    ExitCode::BadInput);
     return {devices[index], index};
 }
 
