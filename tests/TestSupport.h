@@ -27,16 +27,7 @@ namespace sb::test {
 /// A quick configuration: tiny frame counts, no timer calibration, fixed size.
 inline RunConfig quickConfig(const std::string& scene, const std::string& camera, int size,
                              SubmitMode submit = SubmitMode::Retained) {
-    RunConfig c;
-    c.scene = scene;
-    c.camera = camera;
-    c.width = c.height = size;
-    c.submit = submit;
-    c.frames = 1;
-    c.warmup = 0;
-    c.checkTimer = false;
-    c.quiet = true;
-    return c;
+    return RunConfig::oneFrame(scene, camera, size, submit);
 }
 
 /// The value of counter `name` in a technique's counters() (a failure, and 0, when it is missing).

@@ -197,14 +197,14 @@ std::string AccuracyBounds::toJson(const std::vector<AccuracyBound>& bounds,
     return root.dump(1) + "\n";
 }
 
-std::vector<AccuracyBound> AccuracyBounds::read(const std::string& path) {
+std::map<std::string, AccuracyBound> AccuracyBounds::read(const std::string& path) {
     nlohmann::json root;
     try {
         root = nlohmann::json::parse(Paths::readTextFile(path));
     } catch (const nlohmann::json::exception& e) {
         throw Error(path + ": not valid JSON: " + e.what());
     }
-    std::vector<AccuracyBound> out;
+    std::map<std::string, AccuracyBound> out;
     if (!root.contains("cells") || !root["cells"].is_object())
         throw Error(path + ": no \"cells\" object (regenerate with bench golden --update)");
     for (const auto& [name, j] : root["cells"].items()) {
@@ -215,7 +215,7 @@ std::vector<AccuracyBound> AccuracyBounds::read(const std::string& path) {
         b.max = j.value("max", 0.0);
         b.min = j.value("min", 0.0);
         b.why = j.value("why", "");
-        out.push_back(std::move(b));
+        out[name] = std::move(b);
     }
     return out;
 }

@@ -15,6 +15,7 @@
 // Under an area light (soft reference) the hard-shadow techniques are all approximations: the metric is
 // the RMSE, bounded by the RMSE of no shadow. A cell whose technique is known not to reach its rule's
 // bound carries an exception with the reason (kExceptions in AccuracyBounds.cpp), shown in the matrix.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,8 @@ public:
     /// results/goldens/bounds.json as written by `bench golden --update`: every bound with its rule,
     /// reason and the value measured when it was written, for review.
     static std::string toJson(const std::vector<AccuracyBound>& bounds, const std::vector<double>& measured);
-    /// Reads bounds.json (throws sb::Error naming the file and the entry).
-    static std::vector<AccuracyBound> read(const std::string& path);
+    /// Reads bounds.json, keyed by cell "technique/scene/light<i>" (throws sb::Error naming the file).
+    static std::map<std::string, AccuracyBound> read(const std::string& path);
 };
 
 } // namespace sb

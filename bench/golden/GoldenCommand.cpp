@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -11,6 +10,7 @@
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
+#include "bench/output/CsvWriter.h"
 #include "bench/run/CliParse.h"
 #include "core/Error.h"
 #include "core/Paths.h"
@@ -36,21 +36,9 @@ std::string defaultGoldenDir() {
 }
 
 std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
-    std::map<std::string, AccuracyBound> out;
     const std::string path = dir + "/bounds.json";
-    if (!std::filesystem::exists(path)) return out;
-    for (AccuracyBound& b : AccuracyBounds::read(path)) out[b.cell] = std::move(b);
-    return out;
-}
-
-void writeText(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        if (!out) throw Error("cannot write '" + tmp + "'", ExitCode::Failure);
-    }
-    std::filesystem::rename(tmp, path);
+    return std::filesystem::exists(path) ? AccuracyBounds::read(path)
+                                         : std::map<std::string, AccuracyBound>{};
 }
 
 int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
@@ -158,7 +146,7 @@ void writeBounds(const std::string& dir,
         bounds.push_back(entry.first);
         measured.push_back(entry.second);
     }
-    writeText(dir + "/bounds.json", AccuracyBounds::toJson(bounds, measured));
+    CsvWriter::writeText(dir + "/bounds.json", AccuracyBounds::toJson(bounds, measured));
 }
 
 std::string matrixHeader(int size) {
@@ -216,7 +204,8 @@ int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool
         }
     }
     if (wholeMatrix)
-        writeText(cli.dir + "/MATRIX.md", matrixHeader(cli.matrix.size) + rows + exceptionList(rendered));
+        CsvWriter::writeText(cli.dir + "/MATRIX.md",
+                             matrixHeader(cli.matrix.size) + rows + exceptionList(rendered));
     std::cout << "golden update: " << written << " technique x scene goldens in " << cli.dir
               << (wholeMatrix ? " (and MATRIX.md)" : " (MATRIX.md is written only for the whole matrix)")
               << "; " << failed << " cells fail their checks\n";

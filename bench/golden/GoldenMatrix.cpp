@@ -16,19 +16,6 @@ namespace sb {
 
 namespace {
 
-RunConfig cellConfig(const std::string& scene, const MatrixOptions& options, SubmitMode mode) {
-    RunConfig c;
-    c.scene = scene;
-    c.camera = GoldenMatrix::cameraFor(scene);
-    c.width = c.height = options.size;
-    c.submit = mode;
-    c.frames = 1;
-    c.warmup = 0;
-    c.checkTimer = false;
-    c.quiet = true;
-    return c;
-}
-
 std::vector<SubmitMode> modesRetainedFirst() {
     std::vector<SubmitMode> modes{SubmitMode::Retained};
     for (SubmitMode m : kAllSubmitModes)
@@ -145,9 +132,10 @@ std::string GoldenMatrix::cameraFor(const std::string& scene) {
 std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, const MatrixOptions& options) {
     const std::vector<std::string> techniques =
         options.techniques.empty() ? TechniqueRegistry::names() : options.techniques;
+    const std::string camera = cameraFor(scene); // loads the scene once, not once per mode
     std::vector<MatrixCell> cells;
     for (SubmitMode mode : modesRetainedFirst()) {
-        Harness harness(cellConfig(scene, options, mode));
+        Harness harness(RunConfig::oneFrame(scene, camera, options.size, mode));
         AccuracyEvaluator evaluator(harness);
         for (const std::string& technique : techniques) {
             try {

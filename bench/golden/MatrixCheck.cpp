@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 #include "bench/golden/GoldenImage.h"
@@ -53,15 +54,20 @@ void checkModes(const std::vector<MatrixCell>& cells, const MatrixCell& cell, Ce
     (col.passes(MatrixCheck::kModeTolerance) ? v.details : v.failures).push_back(colText);
 }
 
+/// Goldens read so far, by path: the four modes of a cell share one golden, read once. An empty image
+/// stands for a missing file.
+using GoldenCache = std::map<std::string, Image8>;
+
 void checkGolden(const MatrixCell& cell, const std::string& dir, const std::string& kind, const Image8& image,
-                 CellVerdict& v) {
+                 GoldenCache& goldens, CellVerdict& v) {
     const std::string path = MatrixCheck::goldenPath(dir, cell.scene, cell.technique, kind);
-    if (!std::filesystem::exists(path)) {
+    auto [it, fresh] = goldens.try_emplace(path);
+    if (fresh && std::filesystem::exists(path)) it->second = GoldenImage::read(path);
+    if (it->second.empty()) {
         v.failures.push_back("no golden " + path + " (bench golden --update writes it)");
         return;
     }
-    const ImageDiffResult d =
-        ImageDiff::compare(GoldenImage::read(path), image, MatrixCheck::kGoldenTolerance);
+    const ImageDiffResult d = ImageDiff::compare(it->second, image, MatrixCheck::kGoldenTolerance);
     const std::string text = kind + " vs golden: " + d.describe(MatrixCheck::kGoldenTolerance);
     (d.passes(MatrixCheck::kGoldenTolerance) ? v.details : v.failures).push_back(text);
 }
@@ -110,6 +116,7 @@ std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells
                                             const std::string& goldenDir,
                                             const std::map<std::string, AccuracyBound>& bounds) {
     std::vector<CellVerdict> verdicts;
+    GoldenCache goldens;
     for (const MatrixCell& cell : cells) {
         CellVerdict v;
         v.cell = cell.name();
@@ -126,8 +133,8 @@ std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells
                                      std::to_string(cell.sanity.inf) + " Inf, " +
                                      std::to_string(cell.sanity.outOfRange) + " out of [0, 1]");
             checkModes(cells, cell, v);
-            checkGolden(cell, goldenDir, "visibility", cell.visibility, v);
-            checkGolden(cell, goldenDir, "colour", cell.colour, v);
+            checkGolden(cell, goldenDir, "visibility", cell.visibility, goldens, v);
+            checkGolden(cell, goldenDir, "colour", cell.colour, goldens, v);
             checkAccuracy(cell, bounds, v);
         }
         verdicts.push_back(std::move(v));

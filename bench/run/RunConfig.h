@@ -41,6 +41,22 @@ struct RunConfig {
     int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
     RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
     static constexpr int kMinFrames = 5;
+
+    /// One untimed-style frame of `scene` from `camera` at size x size: no warm-up, no timer
+    /// calibration, quiet. What the matrix renders per cell and the tests' quick configuration.
+    static RunConfig oneFrame(const std::string& scene, const std::string& camera, int size,
+                              SubmitMode submit = SubmitMode::Retained) {
+        RunConfig c;
+        c.scene = scene;
+        c.camera = camera;
+        c.width = c.height = size;
+        c.submit = submit;
+        c.frames = 1;
+        c.warmup = 0;
+        c.checkTimer = false;
+        c.quiet = true;
+        return c;
+    }
 };
 
 } // namespace sb
