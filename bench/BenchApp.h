@@ -13,6 +13,9 @@ public:
     /// Picks the mode by argv[1] (accuracy, sweep, bottleneck, figures, merge, export) or a plain run,
     /// and hands it argv from its own name on, as if it were a program of its own.
     static int dispatch(int argc, char** argv);
+    /// Fixes glibc's heap trim and mmap thresholds (BenchApp.cpp says why: heap trimming churn made
+    /// frame times depend on heap layout). Called by main() and by handloop.
+    static void pinAllocator();
     /// The end of `bench --help`: the modes, examples and exit codes.
     static std::string helpFooter();
 };

@@ -4,6 +4,7 @@
 
 #include "bench/output/CsvWriter.h"
 #include "bench/output/RowExport.h"
+#include "bench/output/StandardStreams.h"
 #include "bench/run/CliParse.h"
 
 namespace sb {
@@ -24,12 +25,14 @@ int ExportCommand::main(int argc, char** argv) {
     const RowFormat f = parseRowFormat(format);
     if (!rowFormats().find(f)->text)
         throw Error("--format " + format + ": export writes " + rowFormatChoices(true));
+    if (output.empty()) StandardStreams::requireStdout("bench export");
     const CsvTable table = CsvWriter::read(input);
     const std::string text =
         f == RowFormat::Markdown ? RowExport::toMarkdown(table, allColumns) : RowExport::format(table, f);
-    if (output.empty())
+    if (output.empty()) {
         std::cout << text;
-    else
+        StandardStreams::finishStdout("bench export");
+    } else
         CsvWriter::writeText(output, text);
     return 0;
 }

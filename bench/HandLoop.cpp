@@ -89,6 +89,7 @@ double handFrame(Harness& h, GLuint program, GLuint ubo, const FrameUniformData&
 } // namespace
 
 int main(int argc, char** argv) {
+    BenchApp::pinAllocator(); // the harness's frames and the hand loop's share one allocator, as bench's
     try {
         RunConfig config;
         config.techniques = {{"none", {}}};

@@ -9,6 +9,7 @@
 #include "bench/output/CsvWriter.h"
 #include "bench/output/ImageWriter.h"
 #include "bench/output/RowExport.h"
+#include "bench/output/StandardStreams.h"
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/ConsoleReport.h"
 #include "bench/run/Environment.h"
@@ -42,6 +43,16 @@ void writeImages(const RunConfig& config, Harness& harness, const std::string& t
                                          i == 0 ? base : withSuffix(base, "light" + std::to_string(i)));
     }
 }
+/// Every output is checked before the first frame, so a path that cannot be written fails in
+/// milliseconds instead of after minutes of measuring with the CSV row already appended.
+void checkOutputs(const RunConfig& config) {
+    if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
+    if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
+    if (!config.screenshotPath.empty()) ImageWriter::checkWritable(config.screenshotPath, "--screenshot");
+    if (!config.visibilityPath.empty()) ImageWriter::checkWritable(config.visibilityPath, "--visibility");
+    if (config.format != RowFormat::Console) StandardStreams::requireStdout("--format");
+}
+
 /// Progress and tables go to stdout, unless stdout carries the rows in a machine format (--format).
 std::ostream& logStream(const RunConfig& config) {
     return config.format == RowFormat::Console ? std::cout : std::cerr;
@@ -117,8 +128,10 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
     }
     if (config.repeat > 1) ConsoleReport::printPairedRatios(log, runs, config.repeat);
     if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
-    if (config.format != RowFormat::Console)
+    if (config.format != RowFormat::Console) {
         std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
+        StandardStreams::finishStdout("--format");
+    }
     for (const Refusal& r : refusals)
         std::cerr << "bench: error: " << r.message << " (exit code " << int(r.code) << ")\n";
 }
@@ -142,8 +155,7 @@ int RunCommand::run(const RunConfig& config) {
     const std::vector<TechniqueSpec> specs = configurations(config);
     std::vector<std::unique_ptr<Technique>> techniques;
     for (const TechniqueSpec& spec : specs) techniques.push_back(TechniqueRegistry::create(spec));
-    if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
-    if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
+    checkOutputs(config);
 
     harnessOwner = std::make_unique<Harness>(config);
     Harness& harness = *harnessOwner;

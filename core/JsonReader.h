@@ -15,6 +15,18 @@ namespace sb {
 
 class JsonReader {
 public:
+    /// The deepest nesting of arrays and objects parse accepts. Real scene files nest about 5 deep; the
+    /// bound keeps hostile files (200 KB of "[[[[...") from recursing through nlohmann's dump, copy and
+    /// comparison code, which overflowed the stack.
+    static constexpr int kMaxDepth = 64;
+    /// Parses `text` (// and /* */ comments allowed). Every failure is sb::Error (bad input) naming
+    /// `source`, the line and column, and why: a syntax error, nesting deeper than kMaxDepth, or a
+    /// number beyond double range (1e400). The message is one line of bounded length.
+    static nlohmann::json parse(const std::string& text, const std::string& source);
+    /// `text` quoted for a one-line message: at most `maxChars` bytes of it (then "..."), control
+    /// characters escaped, so a huge or multi-line name in a file cannot flood or split the message.
+    static std::string excerpt(std::string_view text, size_t maxChars = 60);
+
     /// `value` must outlive the reader; `path` is a JSON pointer ("" for the document root).
     JsonReader(const nlohmann::json& value, std::string source, std::string path = "");
 
@@ -36,13 +48,15 @@ public:
     std::string string() const;
     bool boolean() const;
     double number() const;
+    /// The float getters below also require the number to be finite as a float (|x| <= FLT_MAX): a
+    /// 1e308 would otherwise become +inf (strictly, undefined behaviour) and pass every later check.
     float positiveNumber() const;    ///< > 0
     float nonNegativeNumber() const; ///< >= 0
     /// A number in [lo, hi] (`what` describes it for the message, e.g. "an angle in (0, 90]").
     float numberIn(double lo, double hi, const char* what) const;
     /// An integer in [lo, hi]; `what` describes it ("a positive integer").
     int64_t integer(int64_t lo, int64_t hi, const char* what) const;
-    glm::vec3 vec3() const;          ///< [x, y, z]
+    glm::vec3 vec3() const;          ///< [x, y, z], each finite as a float
     glm::vec3 positiveVec3() const;  ///< [x, y, z], all > 0
     glm::vec3 unitDirection() const; ///< non-zero [x, y, z], normalised
 
@@ -52,6 +66,8 @@ public:
     [[noreturn]] void error(const std::string& message) const;
 
 private:
+    /// The value for a message: at most about 60 characters, built without dumping (or recursing
+    /// through) more of the value than that.
     std::string describeValue() const;
 
     const nlohmann::json* mValue;

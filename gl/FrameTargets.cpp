@@ -9,6 +9,11 @@ namespace sb {
 FrameTargets::FrameTargets(int width, int height)
     : mTarget("frame targets", width, height, {GL_RGBA8, GL_RGBA16F}) {}
 
+void FrameTargets::setVisibilityOutput(bool on) {
+    mVisibilityOn = on;
+    mTarget.setDrawBufferEnabled(1, on);
+}
+
 void FrameTargets::bind() const {
     mTarget.bind();
 }

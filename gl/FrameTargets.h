@@ -24,9 +24,17 @@ public:
     GLuint fbo() const { return mTarget.fbo(); }
     GLuint colorTexture() const { return mTarget.color(0); }
     GLuint visibilityTexture() const { return mTarget.color(1); }
+    static constexpr int kColourAttachments = 2; ///< colour, visibility
     GLuint depthStencilTexture() const { return mTarget.depthStencil(); }
-    /// Binds the FBO, sets the viewport, enables draw buffers 0 and 1.
+    /// Binds the FBO, sets the viewport, enables draw buffer 0 and, while the visibility output is on,
+    /// draw buffer 1.
     void bind() const;
+    /// The visibility target is the harness's instrument, not part of what an application renders:
+    /// timed frames run with it off (an RGBA16F store per lit fragment was ~10% of a shadowmap frame's
+    /// instructions on llvmpipe; results/ci/lean-shadow-pass.md), and the frames whose visibility is
+    /// read (census, accuracy, images, the viewer) with it on. Default on.
+    void setVisibilityOutput(bool on);
+    bool visibilityOutput() const { return mVisibilityOn; }
     /// Clears colour to `clearColor`, visibility to 1 (lit: pixels without geometry are lit), depth to
     /// 1 and stencil to 0.
     void clear(float r, float g, float b) const;
@@ -37,6 +45,7 @@ public:
     std::vector<float> readDepth() const;
 
 private:
+    bool mVisibilityOn = true;
     TextureFramebuffer mTarget;
 };
 

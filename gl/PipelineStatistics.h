@@ -18,6 +18,14 @@ struct PipelineCounts {
     uint64_t primitivesSubmitted = 0; ///< primitives assembled from the draws (before clipping)
     uint64_t clippingOutputPrimitives = 0;
     uint64_t fragmentShaderInvocations = 0;
+
+    PipelineCounts& operator+=(const PipelineCounts& o) {
+        vertexShaderInvocations += o.vertexShaderInvocations;
+        primitivesSubmitted += o.primitivesSubmitted;
+        clippingOutputPrimitives += o.clippingOutputPrimitives;
+        fragmentShaderInvocations += o.fragmentShaderInvocations;
+        return *this;
+    }
 };
 
 class PipelineStatistics {

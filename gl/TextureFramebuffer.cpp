@@ -84,6 +84,10 @@ void TextureFramebuffer::release() {
     mColors.clear();
 }
 
+void TextureFramebuffer::setDrawBufferEnabled(size_t i, bool enabled) {
+    mDrawBuffers[i] = enabled ? GLenum(GL_COLOR_ATTACHMENT0 + i) : GLenum(GL_NONE);
+}
+
 void TextureFramebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, mFbo);
     glDrawBuffers(GLsizei(mDrawBuffers.size()), mDrawBuffers.data());

@@ -24,8 +24,12 @@ public:
     GLuint fbo() const { return mFbo; }
     GLuint color(size_t i) const { return mColors[i]; }
     GLuint depthStencil() const { return mDepthStencil; }
-    /// Binds the FBO as the draw framebuffer with every colour attachment enabled, and the viewport.
+    /// Binds the FBO as the draw framebuffer with its enabled colour attachments (all, unless
+    /// setDrawBufferEnabled turned one off), and the viewport.
     void bind() const;
+    /// Enables or disables colour attachment `i` as a draw buffer (GL_NONE: writes and clears of it are
+    /// discarded, and the driver neither stores nor blends it). Takes effect at the next bind().
+    void setDrawBufferEnabled(size_t i, bool enabled);
     /// glReadPixels of the whole attachment (GL_NONE: depth) with tight packing and no pack buffer.
     void read(GLenum attachment, GLenum format, GLenum type, void* out) const;
 

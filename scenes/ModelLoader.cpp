@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -145,6 +147,182 @@ void checkFinite(const std::string& path, const aiScene& scene, const std::vecto
                                vectorText(p.x, p.y, p.z) + " after the file's node transforms" + why);
 }
 
+/// Every position within kMaxCoordinate after the node transforms (checkFinite has refused inf/NaN).
+void checkBounded(const std::string& path, const std::vector<Mesh>& objects) {
+    const double bound = ModelLoader::kMaxCoordinate;
+    for (const Mesh& m : objects)
+        for (size_t v = 0; v < m.positions.size(); ++v) {
+            const glm::vec3& p = m.positions[v];
+            if (std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound) continue;
+            fail(path, "vertex " + std::to_string(v) + " of object '" + m.name + "' is " +
+                           vectorText(p.x, p.y, p.z) +
+                           ": beyond +-1e18, where squared distances overflow float");
+        }
+}
+
+/// At least one triangle of non-zero area. The cross product is taken in double so that float
+/// underflow cannot make real triangles look degenerate (JoinIdenticalVertices already welds corners
+/// closer than 1e-5, so a model that small comes out degenerate and is refused here).
+void checkNotDegenerate(const std::string& path, const std::vector<Mesh>& objects) {
+    size_t triangles = 0;
+    for (const Mesh& m : objects)
+        for (size_t t = 0; t + 2 < m.indices.size(); t += 3, ++triangles) {
+            const glm::dvec3 a(m.positions[m.indices[t]]), b(m.positions[m.indices[t + 1]]),
+                c(m.positions[m.indices[t + 2]]);
+            if (glm::length(glm::cross(b - a, c - a)) > 0.0) return;
+        }
+    fail(path, "all " + std::to_string(triangles) + " triangles are degenerate (zero area): nothing to draw");
+}
+
+/// One property of a PLY element: a scalar of `size` bytes, or (countSize > 0) a list whose count
+/// takes countSize bytes and each item `size` bytes.
+struct PlyProperty {
+    int size = 0;
+    int countSize = 0;
+};
+
+struct PlyElement {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+/// The size of a PLY scalar type, 0 for an unknown one.
+int plyTypeSize(const std::string& type) {
+    static const std::pair<const char*, int> kSizes[] = {
+        {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+        {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+    for (const auto& [name, size] : kSizes)
+        if (type == name) return size;
+    return 0;
+}
+
+/// A PLY file's format and elements from its header, and the offset of the body; nothing for a file
+/// that is not PLY or whose header this reader does not follow (assimp then reports what it finds).
+struct PlyLayout {
+    std::string format;
+    std::vector<PlyElement> elements;
+    size_t body = 0;
+};
+
+std::optional<PlyLayout> readPlyHeader(const std::string& data) {
+    if (data.rfind("ply", 0) != 0) return std::nullopt;
+    PlyLayout ply;
+    for (size_t at = 0; at < data.size();) {
+        const size_t eol = data.find('\n', at);
+        if (eol == std::string::npos) return std::nullopt;
+        std::string line = data.substr(at, eol - at);
+        at = eol + 1;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        if (keyword == "end_header") {
+            ply.body = at;
+            return ply;
+        }
+        if (keyword == "format") {
+            words >> ply.format;
+        } else if (keyword == "element") {
+            PlyElement e;
+            if (!(words >> e.name >> e.count)) return std::nullopt;
+            ply.elements.push_back(e);
+        } else if (keyword == "property") {
+            std::string type, countType, itemType;
+            words >> type;
+            PlyProperty p;
+            if (type == "list") {
+                words >> countType >> itemType;
+                p.countSize = plyTypeSize(countType);
+                p.size = plyTypeSize(itemType);
+                if (!p.countSize) return std::nullopt;
+            } else {
+                p.size = plyTypeSize(type);
+            }
+            if (!p.size || ply.elements.empty()) return std::nullopt;
+            ply.elements.back().properties.push_back(p);
+        }
+    }
+    return std::nullopt;
+}
+
+/// How many records of each element the body holds, in the header's order (each at most its count).
+/// ASCII: one record per non-blank line. Binary: the records walked by the property sizes, a list
+/// by its stored count.
+std::vector<uint64_t> plyRecordsPresent(const std::string& data, const PlyLayout& ply) {
+    std::vector<uint64_t> present;
+    if (ply.format == "ascii") {
+        uint64_t lines = 0;
+        for (size_t at = ply.body; at < data.size();) {
+            size_t eol = data.find('\n', at);
+            if (eol == std::string::npos) eol = data.size();
+            if (data.find_first_not_of(" \t\r", at) < eol) ++lines;
+            at = eol + 1;
+        }
+        for (const PlyElement& e : ply.elements) {
+            present.push_back(std::min(lines, e.count));
+            lines -= present.back();
+        }
+        return present;
+    }
+    const bool bigEndian = ply.format == "binary_big_endian";
+    size_t at = ply.body;
+    for (const PlyElement& e : ply.elements) {
+        uint64_t records = 0;
+        for (; records < e.count; ++records) {
+            bool complete = true;
+            for (const PlyProperty& p : e.properties) {
+                uint64_t items = 1;
+                if (p.countSize) {
+                    if (data.size() - at < size_t(p.countSize)) {
+                        complete = false;
+                        break;
+                    }
+                    items = 0;
+                    for (int b = 0; b < p.countSize; ++b) {
+                        const int byte = bigEndian ? b : p.countSize - 1 - b;
+                        items = (items << 8) | static_cast<unsigned char>(data[at + size_t(byte)]);
+                    }
+                    at += size_t(p.countSize);
+                }
+                // Divided, not multiplied: a hostile count times the item size could wrap around.
+                if (items > (data.size() - at) / size_t(p.size)) {
+                    complete = false;
+                    break;
+                }
+                at += size_t(items) * size_t(p.size);
+            }
+            if (!complete) break;
+        }
+        present.push_back(records);
+        if (records < e.count) break;
+    }
+    present.resize(ply.elements.size(), 0);
+    return present;
+}
+
+/// assimp reads a truncated PLY file as far as it goes and repeats the last record it read for the
+/// missing ones (an ASCII file cut after 50 of its 200 faces loaded as 50 triangles plus 150 copies
+/// of the 50th), so the body is checked against the header's counts before assimp reads it.
+void checkPlyComplete(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    if (!in.read(magic, 3) || std::string(magic) != "ply") return;
+    in.seekg(0);
+    const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::optional<PlyLayout> ply = readPlyHeader(data);
+    if (!ply || (ply->format != "ascii" && ply->format != "binary_little_endian" &&
+                 ply->format != "binary_big_endian"))
+        return;
+    const std::vector<uint64_t> present = plyRecordsPresent(data, *ply);
+    for (size_t i = 0; i < ply->elements.size(); ++i)
+        if (present[i] < ply->elements[i].count)
+            fail(path, "the PLY header declares " + std::to_string(ply->elements[i].count) + " '" +
+                           ply->elements[i].name + "' records but the file ends after " +
+                           std::to_string(present[i]) + " of them: the file is truncated");
+}
+
 } // namespace
 
 std::optional<ModelUp> parseModelUp(const std::string& text) {
@@ -181,9 +359,12 @@ glm::mat3 ModelLoader::rotationToYUp(ModelUp up) {
 std::vector<Mesh> ModelLoader::loadObjects(const std::string& path, std::optional<ModelUp> up) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) fail(path, "no such file");
+    checkPlyComplete(path);
     Assimp::Importer importer;
-    const unsigned flags =
-        aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices;
+    // ValidateDataStructure runs before the other steps: a face index beyond the vertices (a hostile
+    // PLY, a truncated binary one) crashed inside them; the validation refuses it with a reason.
+    const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                           aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices;
     const aiScene* scene = importer.ReadFile(path, flags);
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode)
         fail(path, importer.GetErrorString()[0] ? importer.GetErrorString() : "cannot be read");
@@ -199,6 +380,8 @@ std::vector<Mesh> ModelLoader::loadObjects(const std::string& path, std::optiona
         collectObjects(*scene, *scene->mRootNode->mChildren[c], toYUp * root, objects);
     if (objects.empty()) fail(path, "contains no triangles");
     checkFinite(path, *scene, objects);
+    checkBounded(path, objects);
+    checkNotDegenerate(path, objects);
     return objects;
 }
 

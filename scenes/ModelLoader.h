@@ -31,11 +31,23 @@ std::string modelUpChoices(); ///< "x, -x, y, -y, z or -z"
 
 class ModelLoader {
 public:
+    /// The largest |coordinate| a model vertex (after the file's node transforms) may have, and the
+    /// scene loader's bound on world-space points. Techniques square distances in float (lengths,
+    /// normalisation, light fits): with every coordinate within 1e18 a difference is within 2e18 and a
+    /// squared length within 1.2e37, below FLT_MAX (3.4e38) with a margin for further products; a
+    /// 3e38 coordinate is finite but turns every length through it into inf. No real model or scene
+    /// comes near (metres from the Planck length to light years fit well inside).
+    static constexpr double kMaxCoordinate = 1e18;
+
     /// One mesh per object of the file (see above), in the file's model space made Y-up. A mesh is
     /// named after its node ("object<N>" when unnamed), its parts after the assimp meshes ("part<N>").
     /// Throws sb::Error "model file 'x.obj': <reason>" (exit 2) for a missing, unreadable or empty
-    /// file, and for a vertex that is infinite or NaN (no technique can draw it, and a fit of the
-    /// layout onto it would turn every vertex into NaN).
+    /// file; for a file assimp's validation refuses (a face index beyond the vertices, a truncated
+    /// binary file); for a PLY file with fewer faces than its header declares (a truncated ASCII
+    /// file, which assimp reads as far as it goes); for a vertex that is infinite or NaN (no
+    /// technique can draw it, and a fit of the layout onto it would turn every vertex into NaN) or
+    /// beyond kMaxCoordinate; and for a file whose triangles all have zero area (nothing to draw or
+    /// to cast a shadow, and no plane or proxy can be fitted to it).
     static std::vector<Mesh> loadObjects(const std::string& path, std::optional<ModelUp> up = {});
     /// All objects joined into one mesh named after the file's stem, every object's parts kept.
     static Mesh load(const std::string& path, std::optional<ModelUp> up = {});

@@ -41,8 +41,44 @@ struct Context {
     /// A scene file's mesh name -> its meshes: one, or one per object of a multi-object model file.
     std::map<std::string, std::vector<uint32_t>> meshByName;
     std::optional<size_t> firstLayoutInstance;
+    /// The JSON pointer of each instance placed before the layout ("/instances/3"); the layout's
+    /// instances, which follow them, all come from "/layout".
+    std::vector<std::string> instancePaths;
     std::string replacedMesh; ///< the layout's mesh name when --model replaces it
+    /// Mesh name -> instances that will draw it, read from the document before any mesh is built, so
+    /// that a mesh's memory (its own and its instances' copies) is estimated before it is generated.
+    std::map<std::string, uint64_t> references;
 };
+
+// ---- coordinate bounds ---------------------------------------------------------------------------
+
+/// Each number of a scene is finite as a float (JsonReader), but sums and products of them (a scale
+/// times a mesh's size, a position plus it) are not: every point that reaches a technique must lie
+/// within ModelLoader::kMaxCoordinate, so that distances and their squares stay finite in float.
+bool withinBound(const glm::vec3& p) {
+    const double bound = ModelLoader::kMaxCoordinate;
+    return std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound; // NaN fails too
+}
+
+bool withinBound(const Aabb& b) {
+    return b.empty() || (withinBound(b.min) && withinBound(b.max));
+}
+
+std::string pointText(const glm::vec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%g, %g, %g)", double(p.x), double(p.y), double(p.z));
+    return text;
+}
+
+std::string beyondBound(const Aabb& b) {
+    return "bounds " + pointText(b.min) + " to " + pointText(b.max) + " reach beyond +-1e18";
+}
+
+/// A point a camera or light sits at: within the bound (a view matrix normalises differences of them).
+glm::vec3 boundedPoint(const JsonReader& r, const glm::vec3& p) {
+    if (!withinBound(p)) r.error("the point " + pointText(p) + " lies beyond +-1e18");
+    return p;
+}
 
 // ---- meshes -------------------------------------------------------------------------------------
 
@@ -58,6 +94,49 @@ int tessellationFor(const Context& ctx, const JsonReader& m, const MeshGenerator
     return tess;
 }
 
+std::string gib(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", double(bytes) / double(1ull << 30));
+    return text;
+}
+
+/// Bytes a mesh of `triangles` triangles costs, where a mesh of `sampleTriangles` took `sampleBytes`:
+/// its buffers (vertices and indices scaled from the sample, which has more seam vertices per triangle
+/// than a finer mesh: an overestimate) plus `uses` instance copies of 3 vertices per triangle.
+double meshBytes(double triangles, double sampleTriangles, double sampleBytes, uint64_t uses) {
+    return triangles * (sampleBytes / sampleTriangles) +
+           double(uses) * triangles * 3.0 * double(kVertexBytes);
+}
+
+/// A tessellation past what the memory limit allows is refused before the mesh is built (a sphere at
+/// 4096 took 8.8 s and 1.7 GB to be refused afterwards). Every generator tessellates grids and rows of
+/// segments, so its triangle count is c2 t^2 + c1 t (a sphere: 4t^2 - 4t, a cylinder: 4t^2 + 4t); two
+/// cheap sample meshes at t and 2t give c2 and c1 exactly, and the count at `tess` follows. Below
+/// kCheapTessellation every generator's mesh is small, and nothing is estimated.
+void checkTessellationMemory(const Context& ctx, const JsonReader& m, const MeshGeneratorEntry& generator,
+                             int tess, uint64_t uses) {
+    constexpr int kCheapTessellation = 64;
+    if (tess <= kCheapTessellation) return;
+    const int t1 = std::max(generator.minimumTessellation, 16), t2 = 2 * t1;
+    const Mesh a = generator.build(m, t1), b = generator.build(m, t2);
+    const double ta = double(std::max<size_t>(1, a.triangleCount()));
+    const double tb = double(std::max<size_t>(1, b.triangleCount()));
+    const double c2 = std::max(0.0, (tb / t2 - ta / t1) / double(t2 - t1)), c1 = tb / t2 - c2 * t2;
+    const double triangles = std::max(tb, c2 * double(tess) * double(tess) + c1 * double(tess));
+    const double sampleBytes = double(b.vertexCount() * kVertexBytes + b.indices.size() * 4);
+    const double bytes = meshBytes(triangles, tb, sampleBytes, uses);
+    if (bytes <= double(ctx.options.memoryLimitBytes)) return;
+    const std::string what = "tessellation " + std::to_string(tess) + " (about " +
+                             std::to_string(uint64_t(triangles)) + " triangles, " + std::to_string(uses) +
+                             " instances): estimated memory " + gib(uint64_t(std::min(bytes, 1e19))) +
+                             " GiB exceeds the limit of " + gib(ctx.options.memoryLimitBytes) +
+                             " GiB (--max-memory-gib)";
+    if (ctx.options.tessellation && generator.followsTessellationOptions)
+        throw Error("--tess " + std::to_string(*ctx.options.tessellation) + ": mesh " +
+                    JsonReader::excerpt(m["name"].string()) + ": " + what);
+    m.error(what);
+}
+
 Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& name) {
     const MeshGeneratorEntry* generator = MeshGeneratorTable::find(name);
     if (!generator) m["generator"].fail("one of " + MeshGeneratorTable::names());
@@ -66,7 +145,10 @@ Mesh callGenerator(Context& ctx, const JsonReader& m, const std::string& name) {
     std::vector<std::string_view> keys = MeshGeneratorTable::commonKeys();
     keys.insert(keys.end(), generator->parameters.begin(), generator->parameters.end());
     m.requireObject(keys);
-    return generator->build(m, tessellationFor(ctx, m, *generator));
+    const int tess = tessellationFor(ctx, m, *generator);
+    const auto uses = ctx.references.find(m["name"].string());
+    checkTessellationMemory(ctx, m, *generator, tess, uses == ctx.references.end() ? 0 : uses->second);
+    return generator->build(m, tess);
 }
 
 /// Generator errors (a tessellation below the generator's minimum, an unreadable patch file) get the
@@ -355,6 +437,9 @@ void parseMesh(Context& ctx, const JsonReader& m) {
         for (const auto& e : m["proxies"].elements()) mesh.proxies.push_back(parseProxy(e));
     }
     if (name == ctx.replacedMesh) replaceWithModel(ctx, meshes);
+    for (const Mesh& object : meshes)
+        if (const Aabb b = object.computeBounds(); !withinBound(b))
+            m.error("mesh " + JsonReader::excerpt(object.name) + ": " + beyondBound(b) + " in object space");
     std::vector<uint32_t>& indices = ctx.meshByName[name];
     for (Mesh& object : meshes) {
         indices.push_back(uint32_t(ctx.scene.meshes.size()));
@@ -374,11 +459,14 @@ const std::vector<uint32_t>& meshReference(const Context& ctx, const JsonReader&
 // ---- instances and layout -------------------------------------------------------------------------
 
 /// One instance per mesh of `meshes` (the objects of a model file), all with `inst`'s transform.
-void pushObjects(Context& ctx, Instance inst, const std::vector<uint32_t>& meshes) {
+/// `where` is the instance's JSON pointer (checkWorldBounds names it); layout instances pass none.
+void pushObjects(Context& ctx, Instance inst, const std::vector<uint32_t>& meshes,
+                 const std::string* where = nullptr) {
     for (uint32_t k = 0; k < meshes.size(); ++k) {
         inst.mesh = meshes[k];
         inst.object = k;
         ctx.scene.instances.push_back(inst);
+        if (where) ctx.instancePaths.push_back(*where);
     }
 }
 
@@ -396,13 +484,8 @@ void parseInstance(Context& ctx, const JsonReader& r) {
     if (r.has("rotation")) inst.rotationDeg = r["rotation"].vec3();
     if (r.has("scale")) inst.scale = r["scale"].positiveNumber();
     parseInstanceFlags(inst, r);
-    pushObjects(ctx, inst, meshes);
-}
-
-std::string gib(uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f", double(bytes) / double(1ull << 30));
-    return text;
+    const std::string where = r.path();
+    pushObjects(ctx, inst, meshes, &where);
 }
 
 /// Estimated bytes: every mesh once (retained buffers), plus per instance the copy that immediate
@@ -534,7 +617,7 @@ void parseLight(Context& ctx, const JsonReader& r) {
     Light light;
     if (r.has("type")) light.type = lightType(r["type"]);
     if (r.has("direction")) light.direction = r["direction"].unitDirection();
-    if (r.has("position")) light.position = r["position"].vec3();
+    if (r.has("position")) light.position = boundedPoint(r["position"], r["position"].vec3());
     if (r.has("color")) light.color = r["color"].vec3();
     if (r.has("intensity")) light.intensity = r["intensity"].nonNegativeNumber();
     if (r.has("range")) light.range = r["range"].nonNegativeNumber();
@@ -585,6 +668,8 @@ void parseCamera(Context& ctx, const JsonReader& r) {
     if (r.has("far")) c.farZ = r["far"].positiveNumber();
     if (!(c.farZ > c.nearZ)) r.error("expected far > near");
     if (glm::length(c.target - c.eye) < 1e-6f) r.error("expected eye and target to differ");
+    boundedPoint(r, c.eye);
+    boundedPoint(r, c.target);
     c.up = validUp(c);
     ctx.scene.cameras.push_back(c);
 }
@@ -640,6 +725,52 @@ void checkOptionsApply(const Context& ctx, bool hasLayout) {
                     "' has no layout mesh to replace");
 }
 
+/// After updateTransforms: every instance's world-space bounds within the bound (each number was in
+/// range, their products need not be), named by the instance's JSON pointer ("/layout" for the
+/// layout's, whose scale and region are the numbers to blame). One bounds per mesh, one transform of
+/// its corners per instance: linear in the instance count.
+void checkWorldBounds(const Context& ctx) {
+    std::vector<Aabb> meshBounds;
+    for (const Mesh& mesh : ctx.scene.meshes) meshBounds.push_back(mesh.computeBounds());
+    for (size_t i = 0; i < ctx.scene.instances.size(); ++i) {
+        const Instance& inst = ctx.scene.instances[i];
+        if (meshBounds[inst.mesh].empty()) continue;
+        const Aabb world = transformBounds(meshBounds[inst.mesh], inst.model);
+        if (withinBound(world)) continue;
+        const std::string where = i < ctx.instancePaths.size() ? ctx.instancePaths[i] : "/layout";
+        char scale[48] = "";
+        if (ctx.options.scale != 1.0f && i >= ctx.instancePaths.size())
+            std::snprintf(scale, sizeof scale, " (with --scale %g)", double(ctx.options.scale));
+        throw Error(ctx.source + ": " + where + ": instance " + std::to_string(i) + " of mesh " +
+                    JsonReader::excerpt(ctx.scene.meshes[inst.mesh].name) + std::string(scale) + ": world " +
+                    beyondBound(world) + " (position + scale * the mesh's size)");
+    }
+}
+
+/// Context::references from the document as written (a malformed entry counts nothing here; it is
+/// reported when it is parsed). The layout counts with --instances or its "count".
+void countReferences(Context& ctx, const JsonReader& root) {
+    const nlohmann::json& doc = root.value();
+    auto meshOf = [](const nlohmann::json& o) -> const nlohmann::json* {
+        if (!o.is_object()) return nullptr;
+        auto it = o.find("mesh");
+        return it != o.end() && it->is_string() ? &*it : nullptr;
+    };
+    if (auto it = doc.find("instances"); it != doc.end() && it->is_array())
+        for (const auto& i : *it)
+            if (const nlohmann::json* mesh = meshOf(i)) ++ctx.references[mesh->get<std::string>()];
+    auto layout = doc.find("layout");
+    if (layout == doc.end()) return;
+    const nlohmann::json* mesh = meshOf(*layout);
+    if (!mesh) return;
+    uint64_t count = 1;
+    if (ctx.options.instances)
+        count = *ctx.options.instances;
+    else if (auto c = layout->find("count"); c != layout->end() && c->is_number_integer() && *c > 0)
+        count = std::min<uint64_t>(c->get<uint64_t>(), kMaxInstances);
+    ctx.references[mesh->get<std::string>()] += std::min<uint64_t>(count, kMaxInstances);
+}
+
 void parseDocument(Context& ctx, const JsonReader& root) {
     root.requireObject(
         {"name", "description", "meshes", "instances", "layout", "lights", "cameras", "effects", "ambient"});
@@ -648,6 +779,7 @@ void parseDocument(Context& ctx, const JsonReader& root) {
     checkOptionsApply(ctx, root.has("layout"));
     // --model replaces the layout's mesh as it is parsed, so explicit instances of it get the model too.
     if (!ctx.options.modelPath.empty()) ctx.replacedMesh = root["layout"]["mesh"].string();
+    countReferences(ctx, root);
     for (const auto& m : root["meshes"].elements(true)) parseMesh(ctx, m);
     if (root.has("instances"))
         for (const auto& i : root["instances"].elements()) parseInstance(ctx, i);
@@ -657,6 +789,10 @@ void parseDocument(Context& ctx, const JsonReader& root) {
         checkMemory(ctx, root, nullptr, {}, 0);
     if (ctx.scene.instances.empty())
         root.error("expected at least one instance (\"instances\" or \"layout\")");
+    // Before the cameras: a "follow" camera sits at its instance, so an instance out of bounds is
+    // reported as the instance's fault, not the camera's.
+    ctx.scene.updateTransforms();
+    checkWorldBounds(ctx);
     if (root.has("lights"))
         for (const auto& l : root["lights"].elements(true)) parseLight(ctx, l);
     else
@@ -675,17 +811,11 @@ bool looksLikePath(const std::string& s) {
 
 Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceName,
                          const SceneOptions& options) {
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(jsonText, nullptr, true, /*ignore_comments=*/true);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw Error(sourceName + ": invalid JSON: " + e.what());
-    }
-    Context ctx{Scene{}, options, sourceName, {}, {}};
+    const nlohmann::json doc = JsonReader::parse(jsonText, sourceName);
+    Context ctx{Scene{}, options, sourceName, {}, {}, {}};
     ctx.scene.name = fs::path(sourceName).stem().string();
     ctx.scene.sourcePath = sourceName;
     parseDocument(ctx, JsonReader(doc, sourceName));
-    ctx.scene.updateTransforms();
     if (options.lightType) overrideLightType(ctx.scene, *options.lightType);
     return std::move(ctx.scene);
 }

@@ -81,6 +81,11 @@
 // instance its triangles * 3 * 24 B (immediate / display-list copies) + 128 B.
 // Every error throws sb::Error naming the file, the JSON path ("/meshes/2/generator") and what was
 // expected, e.g. `scenes/data/x.json: /layout/count: expected a positive integer, got "ten"`.
+// Limits that keep hostile files from crashing or poisoning a run (each refused as bad input): arrays
+// and objects nest at most JsonReader::kMaxDepth (64) deep; every number fits a double, and every
+// number read as a float fits a float; every mesh's bounds, every instance's world bounds (position +
+// scale * size), and every camera eye/target and light position lie within ModelLoader::kMaxCoordinate
+// (1e18), the error naming the mesh's or instance's JSON path ("/layout" for layout instances).
 #include <string>
 
 #include "scenes/Scene.h"

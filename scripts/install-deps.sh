@@ -16,10 +16,16 @@ PACKAGES=(
   # real clients and offline tools the tests drive: glslang compiles every shader permutation, apitrace
   # traces and replays a run
   glslang-tools apitrace
+  # instructions per measured frame (bench/ci/InstructionCount): callgrind and its client-request header
+  valgrind
   # real model files the tests load (glmark2's models, assimp's test models)
   glmark2-data assimp-testmodels
+  # fuzzing (scripts/fuzz.sh): libFuzzer ships with clang's runtime libraries, not with GCC
+  clang libclang-rt-14-dev
   # plotting (tools/plot.py runs with /usr/bin/python3)
   python3-matplotlib python3-pandas
+  # the workflow templates' test parses them with PyYAML
+  python3-yaml
 )
 
 missing=()

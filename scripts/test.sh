@@ -1,13 +1,26 @@
 #!/usr/bin/env bash
 # Quick start 2: install, build, run the whole test suite through ctest (unit, GL on Mesa llvmpipe,
-# CLI). Extra arguments go to ctest, e.g. `bash scripts/test.sh -L unit`.
+# CLI, valgrind), then the perf gate against the committed baseline (scripts/gate.sh), the sanitizer
+# build's unit and CLI tests (scripts/sanitize.sh) and every fuzz target for 60 s (scripts/fuzz.sh).
+# --quick stops after ctest. Other arguments go to ctest, e.g.
+# `bash scripts/test.sh --quick -L unit`.
+# Usage: bash scripts/test.sh [--quick] [ctest arguments]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+quick=0
+args=()
+for a in "$@"; do
+  if [ "$a" = --quick ]; then quick=1; else args+=("$a"); fi
+done
 bash "$root/scripts/build.sh"
-cd "$root/build"
 # Without a display, run under Xvfb so the GLFW backend is tested too (the EGL and OSMesa tests need
 # no display either way).
+wrap=()
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
-  exec xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure --parallel "$(nproc)" "$@"
+  wrap=(xvfb-run -a -s "-screen 0 1280x1024x24")
 fi
-exec ctest --output-on-failure --parallel "$(nproc)" "$@"
+(cd "$root/build" && "${wrap[@]}" ctest --output-on-failure --parallel "$(nproc)" "${args[@]}")
+[ "$quick" = 1 ] && exit 0
+SHADOWBENCH_GATE_BUILD=0 bash "$root/scripts/gate.sh"
+bash "$root/scripts/sanitize.sh"
+bash "$root/scripts/fuzz.sh" 60

@@ -8,11 +8,13 @@ void PassTimer::begin(const char* pass) {
     if (mOpen) DebugOutput::check(); // errors of the pass that just ended are reported with its name
     DebugOutput::setCurrentPass(mTechnique.empty() ? std::string(pass) : mTechnique + "/" + pass);
     if (mRing) mRing->beginPass(pass);
+    if (mObserver) mObserver->passBegins(pass);
     mOpen = true;
 }
 
 void PassTimer::end() {
     if (mOpen) DebugOutput::check();
+    if (mObserver && mOpen) mObserver->framePassesEnd();
     DebugOutput::setCurrentPass("");
     mOpen = false;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gl/TimerQueryRing.h"
+#include "techniques/PassObserver.h"
 
 namespace sb {
 
@@ -15,6 +16,8 @@ public:
     void setRing(TimerQueryRing* ring) { mRing = ring; }
     /// `technique` prefixes pass names in error messages ("shadowmap/depth").
     void setTechnique(const std::string& technique) { mTechnique = technique; }
+    /// nullptr: none (the timed frames). The census frame sets one to count each pass's work.
+    void setObserver(PassObserver* observer) { mObserver = observer; }
     /// Ends the previous pass (error check) and starts `pass`. `pass` must be a string literal or
     /// otherwise outlive the frame (it is kept by pointer in the query ring).
     void begin(const char* pass);
@@ -23,6 +26,7 @@ public:
 
 private:
     TimerQueryRing* mRing;
+    PassObserver* mObserver = nullptr;
     std::string mTechnique;
     bool mOpen = false;
 };

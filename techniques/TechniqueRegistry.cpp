@@ -9,7 +9,13 @@
 #include "techniques/planar/PlanarTechnique.h"
 #include "techniques/projective/ProjectiveTechnique.h"
 #include "techniques/proxy/ProxyTechnique.h"
+#include "techniques/shadowmap/CascadedTechnique.h"
+#include "techniques/shadowmap/CubeMapTechnique.h"
+#include "techniques/shadowmap/EsmTechnique.h"
+#include "techniques/shadowmap/ParaboloidTechnique.h"
+#include "techniques/shadowmap/PcssTechnique.h"
 #include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/shadowmap/VsmTechnique.h"
 #include "techniques/synthetic/SyntheticTechnique.h"
 #include "techniques/volume/VolumeTechnique.h"
 
@@ -20,6 +26,13 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
     static const std::vector<Entry> kEntries = {
         {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
         {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
+        // The shadow-map family: omni maps for point lights, cascades, soft and filterable maps.
+        {"cubemap", [] { return std::unique_ptr<Technique>(new CubeMapTechnique()); }},
+        {"paraboloid", [] { return std::unique_ptr<Technique>(new ParaboloidTechnique()); }},
+        {"cascaded", [] { return std::unique_ptr<Technique>(new CascadedTechnique()); }},
+        {"pcss", [] { return std::unique_ptr<Technique>(new PcssTechnique()); }},
+        {"vsm", [] { return std::unique_ptr<Technique>(new VsmTechnique()); }},
+        {"esm", [] { return std::unique_ptr<Technique>(new EsmTechnique()); }},
         {"volume", [] { return std::unique_ptr<Technique>(new VolumeTechnique()); }},
         {"occluder", [] { return std::unique_ptr<Technique>(new OccluderTechnique()); }},
         {"proxy", [] { return std::unique_ptr<Technique>(new ProxyTechnique()); }},

@@ -176,7 +176,8 @@ const BadInput kBadInputs[] = {
     {"accuracy_scene_infinite_vertex",
      "accuracy --scene " + std::string(SB_SOURCE_DIR) + "/tests/data/infinite_vertex.json" + kQuickNoLayout,
      2, "infinite_vertex.obj': vertex 1 "},
-    {"unwritable_csv", "-t none" + kQuick + " --csv /proc/shadowbench/r.csv", 1, "/proc/shadowbench/r.csv"},
+    // A path the user gave that cannot be written is bad input, found before the first frame.
+    {"unwritable_csv", "-t none" + kQuick + " --csv /proc/shadowbench/r.csv", 2, "/proc/shadowbench/r.csv"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Cli, BadInputs, ::testing::ValuesIn(kBadInputs),

@@ -190,26 +190,26 @@ TEST_F(CsvMergeTest, UnreadableInputIsAFailureNamingIt) {
 }
 
 TEST_F(CsvMergeTest, TempFileThatCannotBeCreatedLeavesNoOutputAndNoTempFile) {
-    // A 250-character name is valid but "<name>.tmp.<pid>" exceeds NAME_MAX (255): the write fails
-    // after all checks passed (works as root too).
+    // A 253-character name is valid but "<name>.tmp" exceeds NAME_MAX (255): the write fails after all
+    // checks passed (works as root too).
     writeFile(path("a.csv"), std::string(kHeader) + "s1,1,0,1/1,ok\n");
-    std::string out = path(std::string(246, 'o') + ".csv");
+    std::string out = path(std::string(249, 'o') + ".csv");
     std::string e = errorOf({path("a.csv")}, out, {}, ExitCode::Failure);
     EXPECT_NE(e.find(out), std::string::npos) << e;
     EXPECT_NE(e.find("File name too long"), std::string::npos) << e;
     EXPECT_EQ(listDir(), (std::vector<std::string>{"a.csv"}));
 }
 
-TEST_F(CsvMergeTest, FailedRenameRemovesTheTempFile) {
-    // --force over a directory: the temp file is written, the rename over the directory fails
-    // (EISDIR), the temp file is removed and the directory left as it was.
+TEST_F(CsvMergeTest, ForceOverADirectoryIsRefusedAndLeavesIt) {
+    // --force over a directory: refused before any temp file is written (a directory is not a result
+    // file to replace), and the directory is left as it was.
     writeFile(path("a.csv"), std::string(kHeader) + "s1,1,0,1/1,ok\n");
     fs::create_directories(path("out.csv"));
     MergeOptions options;
     options.force = true;
-    std::string e = errorOf({path("a.csv")}, path("out.csv"), options, ExitCode::Failure);
+    std::string e = errorOf({path("a.csv")}, path("out.csv"), options, ExitCode::BadInput);
     EXPECT_NE(e.find(path("out.csv")), std::string::npos) << e;
-    EXPECT_NE(e.find("Is a directory"), std::string::npos) << e;
+    EXPECT_NE(e.find("it is a directory"), std::string::npos) << e;
     EXPECT_EQ(listDir(), (std::vector<std::string>{"a.csv", "out.csv"}));
     EXPECT_TRUE(fs::is_empty(path("out.csv")));
 }

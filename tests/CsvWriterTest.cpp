@@ -67,11 +67,12 @@ protected:
             if (e.path().filename() != keep) out.push_back(e.path().filename().string());
         return out;
     }
-    std::string errorOf(const std::vector<CsvRow>& rows, const std::string& path) {
+    std::string errorOf(const std::vector<CsvRow>& rows, const std::string& path,
+                        ExitCode expected = ExitCode::Failure) {
         try {
             CsvWriter::appendRows(path, rows);
         } catch (const Error& e) {
-            EXPECT_EQ(e.code(), ExitCode::Failure) << e.what();
+            EXPECT_EQ(e.code(), expected) << e.what();
             return e.what();
         }
         ADD_FAILURE() << "appendRows(" << path << ") did not throw";
@@ -134,6 +135,14 @@ TEST_F(CsvWriterTest, ParseAcceptsCrLfAndBom) {
     EXPECT_EQ(t.header, (std::vector<std::string>{"a", "b"}));
     EXPECT_EQ(t.rows, (std::vector<std::vector<std::string>>{{"1", "x\r\ny"}}));
     EXPECT_TRUE(CsvWriter::parse("", "empty.csv").header.empty());
+}
+
+TEST_F(CsvWriterTest, CellStartingWithAByteOrderMarkRoundTrips) {
+    // Found by the CSV fuzzer: a header cell "\xEF\xBB\xBFa" (two BOMs in the text, the first stripped)
+    // was written unquoted first in the file, and read back as the BOM and "a".
+    const CsvTable t = CsvWriter::parse("\xEF\xBB\xBF\xEF\xBB\xBF" "a\n1\n", "bom.csv");
+    ASSERT_EQ(t.header, (std::vector<std::string>{"\xEF\xBB\xBF" "a"}));
+    EXPECT_EQ(CsvWriter::parse(CsvWriter::serialize(t), "again.csv").header, t.header);
 }
 
 struct BadCsv {
@@ -202,9 +211,9 @@ TEST_F(CsvWriterTest, UnwritableDirectoryLeavesFileByteIdentical) {
 }
 
 TEST_F(CsvWriterTest, TempFileCannotBeCreatedLeavesFileByteIdentical) {
-    // Works as root too: a 250-character name is valid, but "<name>.tmp.<pid>" exceeds NAME_MAX (255),
-    // so the temp file cannot be created in an otherwise writable directory.
-    std::string name = std::string(246, 'r') + ".csv";
+    // Works as root too: a 253-character name is valid, but "<name>.tmp" exceeds NAME_MAX (255), so the
+    // temp file cannot be created in an otherwise writable directory.
+    std::string name = std::string(249, 'r') + ".csv";
     std::string path = mDir + "/" + name;
     writeFile(path, "a\n1\n");
     std::string e = errorOf({{{"a", "2"}}}, path);
@@ -213,6 +222,20 @@ TEST_F(CsvWriterTest, TempFileCannotBeCreatedLeavesFileByteIdentical) {
     EXPECT_EQ(readFile(path), "a\n1\n");
     EXPECT_TRUE(strayFiles(name).empty());
     EXPECT_THROW(CsvWriter::checkWritable(path), Error); // the up-front check sees it too
+    // A new file of that name: the failed first write leaves no empty file behind.
+    std::string fresh = mDir + "/" + std::string(249, 's') + ".csv";
+    errorOf({{{"a", "2"}}}, fresh);
+    EXPECT_FALSE(fs::exists(fresh));
+    EXPECT_TRUE(strayFiles(name).empty());
+}
+
+TEST_F(CsvWriterTest, TempNameAtTheLimitIsWritable) {
+    // The negative control of the test above: "<name>.tmp" is exactly NAME_MAX (255) characters, so the
+    // probe of checkWritable (as long as the temp name) and the write must both succeed.
+    std::string path = mDir + "/" + std::string(247, 'r') + ".csv";
+    EXPECT_NO_THROW(CsvWriter::checkWritable(path));
+    CsvWriter::appendRows(path, {{{"a", "1"}}});
+    EXPECT_EQ(readFile(path), "a\n1\n");
 }
 
 TEST_F(CsvWriterTest, FailedRenameRemovesTempAndLeavesOriginal) {
@@ -237,20 +260,21 @@ TEST_F(CsvWriterTest, CrashBeforeRenameLeavesOriginalIntact) {
         },
         ::testing::ExitedWithCode(kCrashExitCode), "");
     EXPECT_EQ(readFile(mPath), before);
-    // The crash left its complete temp file (another pid's name): proof the crash came after writing.
+    // The crash left its complete temp file: proof the crash came after writing.
     std::vector<std::string> stray = strayFiles();
     ASSERT_EQ(stray.size(), 1u);
-    EXPECT_EQ(stray[0].rfind("results.csv.tmp.", 0), 0u) << stray[0];
+    EXPECT_EQ(stray[0], "results.csv.tmp");
     EXPECT_EQ(readFile(mDir + "/" + stray[0]), "a\n1\n2\n");
-    // The next run is unaffected by the leftover.
+    // The next run is unaffected by the leftover, and reuses its name: crashes never pile up copies.
     CsvWriter::appendRows(mPath, {{{"a", "3"}}});
     EXPECT_EQ(readFile(mPath), "a\n1\n3\n");
+    EXPECT_TRUE(strayFiles().empty());
 }
 
 TEST_F(CsvWriterTest, TargetThatIsADirectoryThrowsAndChangesNothing) {
     fs::create_directories(mPath);
     writeFile(mPath + "/keep.txt", "precious");
-    std::string e = errorOf({{{"a", "1"}}}, mPath);
+    std::string e = errorOf({{{"a", "1"}}}, mPath, ExitCode::BadInput);
     EXPECT_NE(e.find(mPath), std::string::npos) << e;
     EXPECT_EQ(readFile(mPath + "/keep.txt"), "precious");
     EXPECT_TRUE(strayFiles().empty());

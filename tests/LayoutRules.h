@@ -70,13 +70,19 @@ inline const std::vector<Layer>& layers() {
         {"bench/sweep", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/bottleneck", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
         {"bench/golden", plus(belowBench, {"bench/output", "bench/run"}), {}},
+        // The performance gate (work counters, instructions under callgrind, wall-time statistics).
         {"bench/figures",
          plus(belowBench, {"bench/output", "bench/run", "bench/sweep", "bench/bottleneck"}),
          {}},
+        {"bench/ci", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
         {"bench",
          plus(belowBench, {"bench/output", "bench/run", "bench/viewer", "bench/sweep", "bench/bottleneck",
-                           "bench/figures", "bench/golden"}),
+                           "bench/figures", "bench/golden", "bench/ci"}),
          {"common"}},
+        // The hand-written shadow map that bench is measured against: the scene model only, no harness.
+        {"bench/handshadow", {"core", "scenes"}, {}},
+        // The libFuzzer targets call parsers from scenes/ up to bench/sweep/; nothing includes them.
+        {"fuzz", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
     };
     return kLayers;
 }

@@ -2,7 +2,11 @@
 // infinite vertex is refused (exit 2, one error line naming the model file, and the scene file when it
 // came from one) on both paths, --model and a scene file's model entry; a multi-object model (each
 // object its own caster) runs with every technique, and the row still counts the instances asked for.
+// Hostile files (a truncated PLY, a scene nested 100000 deep or holding 1e400) are bad input too:
+// exit 2 and one line, where they crashed (exit 139) or left as an unknown exception (exit 1).
+#include <array>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -48,8 +52,12 @@ std::string errorLine(const std::string& output) {
 } // namespace
 
 TEST(ModelFilesCli, ListNamesEveryTechnique) {
-    // The tests below walk this list: it must hold the nine techniques and the reference.
-    EXPECT_EQ(listedTechniques().size(), 10u);
+    // The tests below walk this list: it must hold every technique (the shadow-map family after
+    // shadowmap), the reference and the calibration workloads, in the registry's order.
+    EXPECT_EQ(listedTechniques(),
+              (std::vector<std::string>{"none", "shadowmap", "cubemap", "paraboloid", "cascaded", "pcss",
+                                        "vsm", "esm", "volume", "occluder", "proxy", "planar", "projective",
+                                        "blob", "reference", "synthetic"}));
 }
 
 TEST(ModelFilesCli, InfiniteVertexIsRefusedByEveryTechniqueOnEveryPath) {
@@ -83,4 +91,72 @@ TEST(ModelFilesCli, EveryTechniqueRunsAMultiObjectModel) {
         size_t(std::find(table.header.begin(), table.header.end(), "instances") - table.header.begin());
     ASSERT_LT(column, table.header.size());
     for (const auto& row : table.rows) EXPECT_EQ(row[column], "3");
+}
+
+namespace {
+
+/// `bytes` written to `path` as they are (binary).
+void writeBytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+/// A binary PLY square of two triangles with its last 7 bytes cut off (inside the second face).
+std::string truncatedBinaryPly() {
+    std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+                      "property float y\nproperty float z\nelement face 2\n"
+                      "property list uchar int vertex_indices\nend_header\n";
+    const float vertices[12] = {0, 0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1};
+    ply.append(reinterpret_cast<const char*>(vertices), sizeof vertices);
+    for (const std::array<int32_t, 3>& face :
+         {std::array<int32_t, 3>{0, 2, 1}, std::array<int32_t, 3>{0, 3, 2}}) {
+        ply += char(3);
+        ply.append(reinterpret_cast<const char*>(face.data()), 12);
+    }
+    return ply.substr(0, ply.size() - 7);
+}
+
+} // namespace
+
+TEST(ModelFilesCli, TruncatedBinaryPlyIsBadInputOnBothPaths) {
+    // It crashed inside assimp's post-processing (SIGSEGV, exit 139) on both paths.
+    const std::string dir = test::freshDir("model-files-cli-hostile");
+    const std::string ply = dir + "/truncated.ply", scene = dir + "/truncated.json";
+    writeBytes(ply, truncatedBinaryPly());
+    writeBytes(scene, R"({"meshes": [{"name": "m", "file": "truncated.ply"}], "instances": [{"mesh": "m"}],
+                          "cameras": [{"name": "far", "eye": [0, 5, 10]}]})");
+    const std::string reason =
+        "': the PLY header declares 2 'face' records but the file ends after 1 of them: "
+        "the file is truncated";
+    auto model = runCommand(bench("-t planar --instances 2 --model " + ply + kQuick));
+    EXPECT_EQ(model.exitCode, 2) << model.output;
+    EXPECT_EQ(errorLine(model.output), "bench: error: model file '" + ply + reason) << model.output;
+    auto fromScene = runCommand(bench("-t planar --scene " + scene + kQuick));
+    EXPECT_EQ(fromScene.exitCode, 2) << fromScene.output;
+    EXPECT_EQ(errorLine(fromScene.output),
+              "bench: error: " + scene + ": /meshes/0/file: model file '" + ply + reason)
+        << fromScene.output;
+}
+
+TEST(ModelFilesCli, HostileSceneFilesAreBadInput) {
+    // 100000 nested arrays crashed (SIGSEGV, exit 139); 1e400 left as nlohmann's out_of_range, exit 1,
+    // naming neither file nor place.
+    const std::string dir = test::freshDir("scene-files-cli-hostile");
+    const struct {
+        const char* name;
+        std::string text;
+        std::string error;
+    } cases[] = {
+        {"deep.json", std::string(100000, '[') + std::string(100000, ']'),
+         "invalid JSON at line 1, column 65: arrays and objects nested deeper than 64 levels"},
+        {"overflow.json", "{\n  \"name\": 1e400}",
+         "invalid JSON at line 2, column 11: the number 1e400 is beyond"},
+    };
+    for (const auto& c : cases) {
+        const std::string path = dir + "/" + c.name;
+        writeBytes(path, c.text);
+        auto r = runCommand(bench("-t planar --scene " + path + kQuick));
+        EXPECT_EQ(r.exitCode, 2) << c.name << ": " << r.output;
+        EXPECT_EQ(errorLine(r.output).rfind("bench: error: " + path + ": " + c.error, 0), 0u)
+            << c.name << ": " << r.output;
+    }
 }

@@ -237,3 +237,163 @@ TEST(ModelLoaderTest, FbxUpAxisIsHonoured) {
     EXPECT_NEAR(z.max.z, -y.min.y, 1e-4f);
     std::remove(zUpPath.c_str());
 }
+
+// ---- hostile model files: refused with one line naming the file (exit 2), never a crash ------------
+
+namespace {
+
+/// An n x n grid of quads on y = 0 as (n + 1)^2 vertices and 2 n^2 triangles: the PLY fixtures below.
+struct Grid {
+    std::vector<glm::vec3> vertices;
+    std::vector<std::array<int32_t, 3>> faces;
+};
+
+Grid grid(int n) {
+    Grid g;
+    for (int z = 0; z <= n; ++z)
+        for (int x = 0; x <= n; ++x) g.vertices.emplace_back(float(x), 0.0f, float(z));
+    for (int z = 0; z < n; ++z)
+        for (int x = 0; x < n; ++x) {
+            const int a = z * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            g.faces.push_back({a, c, b});
+            g.faces.push_back({b, c, d});
+        }
+    return g;
+}
+
+std::string plyHeader(const Grid& g, const char* format) {
+    return std::string("ply\nformat ") + format + " 1.0\nelement vertex " +
+           std::to_string(g.vertices.size()) +
+           "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+           std::to_string(g.faces.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+std::string asciiPly(const Grid& g) {
+    std::ostringstream out;
+    out << plyHeader(g, "ascii");
+    for (const glm::vec3& v : g.vertices) out << v.x << ' ' << v.y << ' ' << v.z << '\n';
+    for (const auto& f : g.faces) out << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+    return out.str();
+}
+
+/// Little-endian binary PLY: 12 bytes per vertex, 13 per face (a uchar count and three int32).
+std::string binaryPly(const Grid& g) {
+    std::string out = plyHeader(g, "binary_little_endian");
+    const auto append = [&](const void* data, size_t size) {
+        out.append(static_cast<const char*>(data), size);
+    };
+    for (const glm::vec3& v : g.vertices) append(&v, 12);
+    for (const auto& f : g.faces) {
+        const uint8_t three = 3;
+        append(&three, 1);
+        append(f.data(), 12);
+    }
+    return out;
+}
+
+std::string writeTempBinary(const std::string& name, const std::string& bytes) {
+    const auto path = std::filesystem::temp_directory_path() / name;
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    return path.string();
+}
+
+bool startsWith(const std::string& text, const std::string& prefix) {
+    return text.rfind(prefix, 0) == 0;
+}
+
+} // namespace
+
+TEST(ModelLoaderTest, CompletePlyFilesLoad) {
+    // The fixtures of the tests below, whole: 121 vertices, 200 triangles, in both encodings.
+    const Grid g = grid(10);
+    for (const auto& [name, bytes] :
+         {std::pair{"sb_grid_ascii.ply", asciiPly(g)}, std::pair{"sb_grid_binary.ply", binaryPly(g)}}) {
+        const std::string path = writeTempBinary(name, bytes);
+        const Mesh m = ModelLoader::load(path);
+        EXPECT_EQ(m.triangleCount(), 200u) << name;
+        EXPECT_EQ(m.vertexCount(), 121u) << name;
+        std::remove(path.c_str());
+    }
+}
+
+TEST(ModelLoaderTest, TruncatedBinaryPlyIsRefused) {
+    // Cut inside the faces, the last face's indices were garbage and assimp's post-processing crashed
+    // (SIGSEGV); cut at a face boundary, assimp repeated the last face for the missing ones and the
+    // file loaded. Cut inside the vertices, both.
+    const Grid g = grid(10);
+    const std::string whole = binaryPly(g);
+    const size_t body = plyHeader(g, "binary_little_endian").size();
+    const struct {
+        size_t size;
+        std::string why;
+    } cuts[] = {
+        {whole.size() - whole.size() / 3, "200 'face' records but the file ends after 91 of them"},
+        {body + 121 * 12 + 50 * 13, "200 'face' records but the file ends after 50 of them"},
+        {body + 10 * 12 + 5, "121 'vertex' records but the file ends after 10 of them"},
+    };
+    for (const auto& cut : cuts) {
+        const std::string path = writeTempBinary("sb_truncated_binary.ply", whole.substr(0, cut.size));
+        EXPECT_EQ(errorOf(path), "model file '" + path + "': the PLY header declares " + cut.why +
+                                     ": the file is truncated");
+        std::remove(path.c_str());
+    }
+}
+
+TEST(ModelLoaderTest, TruncatedAsciiPlyIsRefused) {
+    // A file cut after 50 of its 200 faces loaded as 200 triangles: assimp read the 50 and repeated
+    // the 50th for the rest, without a word.
+    const Grid g = grid(10);
+    const std::string whole = asciiPly(g);
+    size_t at = whole.find("end_header\n") + 11;
+    for (int line = 0; line < 121 + 50; ++line) at = whole.find('\n', at) + 1;
+    const std::string path = writeTemp("sb_truncated_ascii.ply", whole.substr(0, at));
+    EXPECT_EQ(errorOf(path),
+              "model file '" + path +
+                  "': the PLY header declares 200 'face' records but the file ends after 50 of "
+                  "them: the file is truncated");
+    std::remove(path.c_str());
+}
+
+TEST(ModelLoaderTest, FaceIndexBeyondTheVerticesIsRefused) {
+    // PLY: assimp copied the index through and its post-processing crashed (SIGSEGV); assimp's
+    // validation names the face. OBJ: assimp's OBJ reader refused it already (kept as a guard).
+    Grid g = grid(10);
+    g.faces.back()[2] = 100000;
+    const std::string ply = writeTemp("sb_bad_index.ply", asciiPly(g));
+    EXPECT_EQ(errorOf(ply), "model file '" + ply +
+                                "': Validation failed: aiMesh::mFaces[199]::mIndices[2] is out of range");
+    std::remove(ply.c_str());
+    const std::string obj = writeTemp("sb_bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 99\n");
+    EXPECT_EQ(errorOf(obj), "model file '" + obj + "': OBJ: vertex index out of range");
+    std::remove(obj.c_str());
+}
+
+TEST(ModelLoaderTest, CoordinatesBeyondTheBoundAreRefused) {
+    // 3e38 is a finite float, but every length through it is inf (3e38 squared): the model loaded and
+    // its fits and normals turned to inf/NaN. The bound is ModelLoader::kMaxCoordinate, 1e18.
+    const std::string huge = writeTemp("sb_huge.obj", "v 0 0 0\nv 3e38 0 0\nv 0 3e38 0\nf 1 2 3\n");
+    EXPECT_EQ(errorOf(huge),
+              "model file '" + huge +
+                  "': vertex 1 of object 'defaultobject' is (3e+38, 0, 0): beyond +-1e18, where "
+                  "squared distances overflow float");
+    std::remove(huge.c_str());
+    // Just inside the bound loads, and so does a small triangle (assimp welds corners closer than
+    // 1e-5, so a smaller one comes out degenerate and is refused by the test below).
+    for (const char* scale : {"1e17", "1e-3"}) {
+        const std::string s = scale;
+        const std::string path =
+            writeTemp("sb_scaled.obj", "v 0 0 0\nv " + s + " 0 0\nv 0 " + s + " 0\nf 1 2 3\n");
+        EXPECT_EQ(ModelLoader::load(path).triangleCount(), 1u) << scale;
+        std::remove(path.c_str());
+    }
+}
+
+TEST(ModelLoaderTest, OnlyDegenerateTrianglesAreRefused) {
+    // Collinear and repeated corners: zero area, nothing to draw or fit; it loaded as two triangles.
+    const std::string path = writeTemp("sb_degenerate.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n");
+    const std::string error = errorOf(path);
+    EXPECT_TRUE(startsWith(error, "model file '" + path + "': all ")) << error;
+    EXPECT_NE(error.find(" triangles are degenerate (zero area): nothing to draw"), std::string::npos)
+        << error;
+    std::remove(path.c_str());
+}

@@ -9,6 +9,7 @@
 
 #include "TestPaths.h"
 #include "core/Error.h"
+#include "core/JsonReader.h"
 #include "core/SplitMix64.h"
 #include "scenes/Math.h"
 #include "scenes/ModelLoader.h"
@@ -162,6 +163,36 @@ TEST(SceneLoaderTest, AbsurdInstancesExceedTheMemoryLimit) {
         contains(errorOf(sceneJson(), tiny), "test.json: /layout/count: 10 instances: estimated memory"));
     tiny.memoryLimitBytes = 100000000;
     EXPECT_NO_THROW(SceneLoader::parse(sceneJson(), "test.json", tiny));
+}
+
+TEST(SceneLoaderTest, TessellationPastTheMemoryLimitIsRefusedBeforeBuilding) {
+    // A sphere at 4096 has 2 * 4096 * 2048 = 16.8 M triangles; ten instances' copies of 72 B per
+    // triangle alone are 12 GB > 8 GiB. The refusal names the tessellation (the mesh's key) and comes
+    // from the estimate, not from building the mesh first (before: the layout's count was blamed after
+    // the mesh was built, 8.8 s and 1.7 GB later).
+    const std::string big = replaced(sceneJson(), "\"tessellation\": 4", "\"tessellation\": 4096");
+    const std::string e = errorOf(big);
+    EXPECT_TRUE(contains(e, "test.json: /meshes/0: tessellation 4096")) << e;
+    EXPECT_TRUE(contains(e, "10 instances")) << e;
+    EXPECT_TRUE(contains(e, "exceeds the limit of 8.0 GiB")) << e;
+    // --tess is blamed when it set the tessellation.
+    SceneOptions tess;
+    tess.tessellation = 1024;
+    tess.memoryLimitBytes = 100000000; // 1024: 2.1 M triangles, ~0.2 GB of copies for 10 > 0.1 GB
+    EXPECT_TRUE(contains(errorOf(sceneJson(), tess), "--tess 1024: mesh \"ball\""))
+        << errorOf(sceneJson(), tess);
+    // Negative control, and the estimate against a hand count: a sphere at 128 has 256 slices x 254
+    // triangles per slice = 65024 triangles; ten instances' copies (72 B each, 46.8 MB) and the mesh
+    // (257 x 129 vertices of 24 B, 12 B of indices per triangle: 1.6 MB) make 48.4 MB. A 60 MB limit
+    // must accept it, a 40 MB limit refuse it from the estimate (before the mesh is built, so the message
+    // names the tessellation, not the layout).
+    const std::string mid = replaced(sceneJson(), "\"tessellation\": 4", "\"tessellation\": 128");
+    SceneOptions limit;
+    limit.memoryLimitBytes = 60000000;
+    EXPECT_NO_THROW(SceneLoader::parse(mid, "test.json", limit));
+    limit.memoryLimitBytes = 40000000;
+    EXPECT_TRUE(contains(errorOf(mid, limit), "/meshes/0: tessellation 128 (about 65024 triangles"))
+        << errorOf(mid, limit);
 }
 
 TEST(SceneLoaderTest, MissingModelFileIsNamed) {
@@ -620,4 +651,130 @@ TEST(SceneLoaderTest, ModelEntryUpNamesTheFilesUpAxis) {
                   "test.json: /meshes/0/up: expected the file's up axis, one of x, -x, y, -y, z or -z"),
               std::string::npos)
         << errorOf(bad);
+}
+
+// ---- hostile input: every refusal is bad input (exit 2) with one bounded line naming where ---------
+
+TEST(SceneLoaderTest, DeepNestingIsRefusedWithItsPosition) {
+    // 200 KB of "[[[[...]]]]" crashed with SIGSEGV: the error message dumped the value recursively,
+    // one stack frame per level. Refused where the 65th level opens (JsonReader::kMaxDepth = 64).
+    const std::string arrays = std::string(100000, '[') + std::string(100000, ']');
+    EXPECT_EQ(errorOf(arrays), "test.json: invalid JSON at line 1, column 65: arrays and objects nested "
+                               "deeper than 64 levels (a scene file needs about 5)");
+    std::string objects = "{\n\"name\": ";
+    for (int i = 0; i < 50000; ++i) objects += "{\"a\":";
+    objects += "1" + std::string(50000, '}') + "}";
+    // Line 2, column 9 + 5 * 63: the 65th level is the 64th {"a": (the document's { is the first).
+    EXPECT_EQ(errorOf(objects).rfind("test.json: invalid JSON at line 2, column 324: arrays and objects", 0),
+              0u)
+        << errorOf(objects);
+    // Exactly 64 levels parse (the error is then about the value, not the depth), and brackets inside
+    // strings and comments are not nesting.
+    const std::string deep64 = "{\"name\": " + std::string(63, '[') + std::string(63, ']') + "}";
+    EXPECT_TRUE(contains(errorOf(deep64), "test.json: /name: expected a string, got [[[["))
+        << errorOf(deep64);
+    const std::string brackets = std::string(200, '[');
+    const Scene s = SceneLoader::parse(
+        "// " + brackets + "\n/* " + brackets + " */" +
+            replaced(sceneJson(), "\"meshes\"", "\"description\": \"" + brackets + "\", \"meshes\""),
+        "test.json");
+    EXPECT_EQ(s.instances.size(), 11u);
+}
+
+TEST(SceneLoaderTest, DeepValuesAreDescribedWithoutRecursingThroughThem) {
+    // JsonReader also reads documents parsed without JsonReader::parse's depth bound (nlohmann's
+    // parser is iterative and takes 100000 levels); describing one in an error dumped it recursively
+    // and overflowed the stack (SIGSEGV). Now it renders only the first 60 characters.
+    const nlohmann::json deep = nlohmann::json::parse(std::string(100000, '[') + std::string(100000, ']'));
+    try {
+        JsonReader(deep, "x.json").string();
+        ADD_FAILURE() << "a nested array was read as a string";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "x.json: /: expected a string, got " + std::string(57, '[') + "...");
+    }
+}
+
+TEST(SceneLoaderTest, ErrorMessagesShowAShortOneLineExcerpt) {
+    // A 200 KB value in a message is cut to 60 characters; before, the whole value was dumped first.
+    std::string big = "[";
+    for (int i = 0; i < 40000; ++i) big += "12345,";
+    big += "0]";
+    const std::string e = errorOf("{\"name\": " + big + "}");
+    EXPECT_EQ(e, "test.json: /name: expected a string, got [12345,12345,12345,12345,12345,12345,12345,12345,"
+                 "12345,12...");
+    // A key with a newline (and any length) stays one line: control characters are escaped.
+    const std::string key = errorOf("{\"bad\\nkey" + std::string(500, 'k') + "\": 1}");
+    EXPECT_EQ(key.find('\n'), std::string::npos) << key;
+    EXPECT_TRUE(contains(key, "test.json: /bad\\u000akeykkkk")) << key;
+    EXPECT_LT(key.size(), 300u) << key;
+    // nlohmann's reason ends with the token read so far: for an unterminated string, the rest of the file.
+    const std::string open = errorOf("{\"name\": \"" + std::string(200000, 'x'));
+    EXPECT_TRUE(contains(open, "test.json: invalid JSON at line 1, column ")) << open;
+    EXPECT_LT(open.size(), 300u) << open.substr(0, 300);
+}
+
+TEST(SceneLoaderTest, NumberBeyondDoubleRangeNamesFileAndPosition) {
+    // nlohmann throws out_of_range 406 for 1e400 without a position: it left the loader as an
+    // unknown exception, exit 1, naming neither the file nor where.
+    const std::string e = errorOf(replaced(sceneJson(), "\"count\": 10", "\"count\":\n  1e400"));
+    EXPECT_EQ(e.rfind("test.json: invalid JSON at line ", 0), 0u) << e;
+    EXPECT_TRUE(contains(e, ", column 3: the number 1e400 is beyond the range of a double")) << e;
+    EXPECT_TRUE(contains(errorOf("{\"name\": -2e999}"), "column 10: the number -2e999 is beyond"));
+    // An underflow is a number (0 or a denormal), as nlohmann reads it: no error about range.
+    EXPECT_TRUE(contains(errorOf(sceneJson("", ", \"ambient\": [1e-400, 0, 0]")), "(no error)"));
+}
+
+TEST(SceneLoaderTest, NumbersBeyondFloatRangeAreRefused) {
+    // Each was converted to float as +inf (undefined behaviour, in practice inf) and accepted. One row
+    // per float getter of JsonReader the scene loader uses.
+    const struct {
+        const char* name;
+        std::string json;
+        std::string error;
+    } cases[] = {
+        {"vec3", sceneJson("", ", \"instances\": [{\"mesh\": \"ball\", \"position\": [1e308, 0, 0]}]"),
+         "test.json: /instances/0/position: expected an array of 3 numbers within float range (|x| <= "
+         "3.4e38), got [1e+308,0,0]"},
+        {"positiveNumber", sceneJson(", \"scale\": 1e39"),
+         "test.json: /layout/scale: expected a positive number within float range (|x| <= 3.4e38), got "
+         "1e+39"},
+        {"nonNegativeNumber",
+         replaced(sceneJson(), "\"type\": \"directional\"", "\"type\": \"point\", \"intensity\": 4e38"),
+         "test.json: /lights/0/intensity: expected a number >= 0 within float range (|x| <= 3.4e38), got "
+         "4e+38"},
+        {"generator radius", replaced(sceneJson(), "\"tessellation\": 4", "\"radius\": 1e300"),
+         "test.json: /meshes/0/radius: expected a positive number within float range (|x| <= 3.4e38), got "
+         "1e+300"},
+    };
+    for (const auto& c : cases) EXPECT_EQ(errorOf(c.json), c.error) << c.name;
+}
+
+TEST(SceneLoaderTest, OverflowingProductsNameTheInstance) {
+    // Each number is a finite float, but scale * size, or a point a technique squares distances from,
+    // is beyond ModelLoader::kMaxCoordinate (1e18): these loaded and drew inf/NaN.
+    const std::string products =
+        sceneJson("", ", \"instances\": [{\"mesh\": \"ground\"}, {\"mesh\": \"ball\", \"scale\": 1e30}]");
+    EXPECT_EQ(errorOf(products),
+              "test.json: /instances/1: instance 1 of mesh \"ball\": world bounds (-1e+30, "
+              "-1e+30, -1e+30) to (1e+30, 1e+30, 1e+30) reach beyond +-1e18 (position "
+              "+ scale * the mesh's size)");
+    // The layout's instances are named by the layout (its scale and region are to blame).
+    const std::string layout = errorOf(sceneJson(", \"scale\": 1e20"));
+    EXPECT_EQ(layout.rfind("test.json: /layout: instance 1 of mesh \"ball\": world bounds (", 0), 0u)
+        << layout;
+    // A mesh that is itself too large is named by its entry.
+    const std::string mesh = errorOf(replaced(sceneJson(), "\"size\": 50", "\"size\": 1e30"));
+    EXPECT_EQ(mesh, "test.json: /meshes/1: mesh \"ground\": bounds (-5e+29, 0, -5e+29) to (5e+29, 0, 5e+29) "
+                    "reach beyond +-1e18 in object space");
+    EXPECT_EQ(errorOf(replaced(sceneJson(), "[0, 20, 30]", "[0, 2e18, 30]")),
+              "test.json: /cameras/0: the point (0, 2e+18, 30) lies beyond +-1e18");
+    EXPECT_EQ(errorOf(replaced(sceneJson(), "\"type\": \"directional\"",
+                               "\"type\": \"point\", \"position\": [-3e30, 0, 0]")),
+              "test.json: /lights/0/position: the point (-3e+30, 0, 0) lies beyond +-1e18");
+    // Large but sane scenes still load: a 1e6 ground at 1e12.
+    const Scene s = SceneLoader::parse(replaced(replaced(sceneJson(), "\"size\": 50", "\"size\": 1e6"),
+                                                "{\"mesh\": \"ground\",",
+                                                "{\"mesh\": \"ground\", \"position\": [1e12, 0, 0],"),
+                                       "test.json");
+    EXPECT_EQ(s.instances[0].position.x, 1e12f);
 }

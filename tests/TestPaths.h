@@ -5,7 +5,9 @@
 namespace sb::test {
 const char* sourceDir();   ///< the source tree's root
 const char* benchBinary(); ///< the bench executable of this build
+const char* handshadowBinary(); ///< the hand-written shadow map (bench/handshadow/) of this build
 } // namespace sb::test
 
 #define SB_SOURCE_DIR ::sb::test::sourceDir()
 #define SB_BENCH_BINARY ::sb::test::benchBinary()
+#define SB_HANDSHADOW_BINARY ::sb::test::handshadowBinary()

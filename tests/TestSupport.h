@@ -132,11 +132,13 @@ inline bool headerHas(const std::vector<std::string>& header, const std::string&
     });
 }
 
-/// Documented columns only sweeps, bottleneck studies and failed configurations write.
+/// Documented columns a plain run does not write: only sweeps, bottleneck studies, failed
+/// configurations, bench ci (ci_*) and runs with a deliberate regression switched on (injected).
 inline const std::set<std::string>& sweepOnlyColumns() {
     static const std::set<std::string> kColumns = {
         "error",      "technique_spec", "config_index", "config_group", "sweep_id",
-        "sweep_name", "sweep_configs",  "shard",        "perturbation", "study_base"};
+        "sweep_name", "sweep_configs",  "shard",        "perturbation", "study_base",
+        "injected",   "ci_config",      "ci_side",      "ci_round",     "ci_role"};
     return kColumns;
 }
 

@@ -1,6 +1,5 @@
 #include "bench/figures/FigureCatalog.h"
 
-#include <fstream>
 #include <set>
 
 #include "bench/bottleneck/BottleneckStudy.h"
@@ -67,14 +66,8 @@ SweepPlan FigureDeclaration::plan(bool reducedRun, const std::string& catalogPat
 }
 
 std::vector<FigureDeclaration> FigureCatalog::load(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("figure catalog '" + path + "': cannot open it");
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(in, nullptr, true, true); // comments allowed
-    } catch (const nlohmann::json::parse_error& e) {
-        throw Error("figure catalog '" + path + "': not valid JSON: " + e.what());
-    }
+    // The scene files' reader (comments allowed, nesting bounded, errors at a line and column).
+    const nlohmann::json doc = JsonReader::parse(Paths::readTextFile(path), path);
     std::vector<FigureDeclaration> out;
     std::set<std::string> names;
     for (const JsonReader& r : JsonReader(doc, path).elements(true)) {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/JsonReader.h"
 #include "core/Paths.h"
 
 namespace sb {
@@ -20,10 +21,25 @@ struct TechniqueRule {
 
 // Unknown techniques are approximate: a new technique must at least beat no shadow on day one.
 constexpr TechniqueRule kRules[] = {
-    {"none", Rule::NoShadow},       {"shadowmap", Rule::Map},          {"volume", Rule::Exact},
-    {"reference", Rule::Exact},     {"occluder", Rule::Approximate},   {"proxy", Rule::SoftApproximate},
-    {"planar", Rule::Approximate},  {"projective", Rule::Approximate}, {"blob", Rule::SoftApproximate},
+    {"none", Rule::NoShadow},
+    {"shadowmap", Rule::Map},
+    {"volume", Rule::Exact},
+    {"reference", Rule::Exact},
+    {"occluder", Rule::Approximate},
+    {"proxy", Rule::SoftApproximate},
+    {"planar", Rule::Approximate},
+    {"projective", Rule::Approximate},
+    {"blob", Rule::SoftApproximate},
     {"synthetic", Rule::NotJudged},
+    // The shadow-map family: depth maps compared per texel, so exact up to texels and bias like
+    // shadowmap; the filtered members (pcss, vsm, esm) blur edges by a few map texels, which at the
+    // matrix's 2048^2 maps over 128^2 frames stays inside the edge band under a point light.
+    {"cubemap", Rule::Map},
+    {"paraboloid", Rule::Map},
+    {"cascaded", Rule::Map},
+    {"pcss", Rule::Map},
+    {"vsm", Rule::Map},
+    {"esm", Rule::Map},
 };
 
 /// Off the edge band, the share of judged samples an exact technique may get wrong: sample positions a
@@ -59,6 +75,17 @@ constexpr Exception kExceptions[] = {
     {"proxy/synthetic_draws/light0",
      "a dense field of small casters (10000 quads): each proxy's halo reaches past its quad's shadow on "
      "every side, and together the halos outweigh the shadows"},
+    {"vsm/synthetic_draws/light0",
+     "10000 quads of 0.2 units with empty space around each, ~3 texels of the default 1024^2 map: the "
+     "3-texel "
+     "blur mixes each quad's depth with the cleared far depth around it, the variance is large and "
+     "Chebyshev's bound lets the light through (light bleeding at its worst): 7.5% wrong, about no shadow's "
+     "7.8% (blur=0 gives 2.9%, resolution=2048 3.4%)"},
+    {"esm/synthetic_draws/light0",
+     "the same field of tiny quads: filtering exp(c d) (in log space) is dominated by the farthest depth in "
+     "the "
+     "footprint, the cleared far depth around each quad, so every quad filters to lit: no shadow (7.8% "
+     "wrong; blur=0 gives 3.5%)"},
 };
 
 Rule ruleOf(const std::string& technique) {
@@ -198,12 +225,7 @@ std::string AccuracyBounds::toJson(const std::vector<AccuracyBound>& bounds,
 }
 
 std::map<std::string, AccuracyBound> AccuracyBounds::read(const std::string& path) {
-    nlohmann::json root;
-    try {
-        root = nlohmann::json::parse(Paths::readTextFile(path));
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(path + ": not valid JSON: " + e.what());
-    }
+    const nlohmann::json root = JsonReader::parse(Paths::readTextFile(path), path);
     std::map<std::string, AccuracyBound> out;
     if (!root.contains("cells") || !root["cells"].is_object())
         throw Error(path + ": no \"cells\" object (regenerate with bench golden --update)");

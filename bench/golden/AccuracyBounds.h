@@ -3,7 +3,8 @@
 // technique can achieve, never from the technique's own result. One rule per technique:
 //   exact        (volume, reference): visibility is exact up to rasterisation, so off the 1-px band
 //                around reference shadow edges only a sliver may differ;
-//   map          (shadowmap): exact up to the map's texels and bias, a little more off the edge band;
+//   map          (shadowmap and its family: cubemap, paraboloid, cascaded, pcss, vsm, esm): exact up to
+//                the map's texels, bias and filter width, a little more off the edge band;
 //   no_shadow    (none): draws no shadow, so its error must be exactly the reference's shadowed fraction;
 //   approximate  (occluder, planar, projective): an approximation may miss shadows, but a shadow that is
 //                worse than drawing no shadow at all is broken: the bound is the error of no shadow in

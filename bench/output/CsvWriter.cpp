@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <optional>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "bench/output/AtomicFile.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -19,10 +19,7 @@ constexpr char kSeparator = ',';
 constexpr char kQuote = '"';
 constexpr const char* kNeedsQuoting = ",\"\r\n";
 constexpr const char* kUtf8Bom = "\xEF\xBB\xBF";
-constexpr mode_t kNewFileMode = 0666; // the umask decides, as for any file the user creates
 
-// I/O failures while writing results are run failures (ExitCode::Failure): the user asked for a
-// sensible thing, the system refused. The message carries the path and the OS reason.
 [[noreturn]] void failWrite(const std::string& path, const std::string& what, int err) {
     throw Error("cannot write CSV '" + path + "': " + what +
                     (err ? std::string(": ") + std::strerror(err) : ""),
@@ -33,50 +30,29 @@ constexpr mode_t kNewFileMode = 0666; // the umask decides, as for any file the 
     throw Error("cannot read CSV '" + path + "': " + std::strerror(err), ExitCode::Failure);
 }
 
-std::string directoryOf(const std::string& path) {
-    size_t slash = path.rfind('/');
-    if (slash == std::string::npos) return ".";
-    return slash == 0 ? "/" : path.substr(0, slash);
-}
-
-// The pid makes the name unique among concurrent writers; the temp lies in the target's directory
-// because rename() is only atomic within one file system.
-std::string tempPathFor(const std::string& path) {
-    return path + ".tmp." + std::to_string(::getpid());
-}
-
-// ---------------------------------------------------------------------------------------------------
-// Reading
-
-struct FileContent {
-    std::string text;
-    mode_t mode = 0;
-};
-
-// Reads the whole file; nullopt when it does not exist (the first append creates it). Plain POSIX
-// calls so errno is reliable for the message, and so a directory is reported as such (EISDIR) before
-// anything is written.
-std::optional<FileContent> readIfExists(const std::string& path, bool forWriting) {
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        if (errno == ENOENT) return std::nullopt;
-        forWriting ? failWrite(path, "cannot read the existing file", errno) : failRead(path, errno);
-    }
-    FileContent out;
+// Reads the whole file for merge and export. A device is refused before it is opened (/dev/zero would
+// be read forever); a FIFO is read to its end (process substitution hands one over).
+std::string readWhole(const std::string& path) {
     struct stat st {};
-    int err = ::fstat(fd, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : 0;
-    out.mode = st.st_mode & 07777;
+    if (::stat(path.c_str(), &st) != 0) failRead(path, errno);
+    if (S_ISDIR(st.st_mode)) failRead(path, EISDIR);
+    if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
+        throw Error("cannot read CSV '" + path + "': not a regular file");
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) failRead(path, errno);
+    std::string text;
     char buf[1 << 16];
-    while (!err) {
+    int err = 0;
+    for (;;) {
         ssize_t n = ::read(fd, buf, sizeof buf);
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) err = errno;
         if (n <= 0) break;
-        out.text.append(buf, size_t(n));
+        text.append(buf, size_t(n));
     }
     ::close(fd);
-    if (err) forWriting ? failWrite(path, "cannot read the existing file", err) : failRead(path, err);
-    return out;
+    if (err) failRead(path, err);
+    return text;
 }
 
 // RFC 4180 reader. Records end at LF or CRLF (a lone CR is accepted too); quoted fields may hold
@@ -192,74 +168,6 @@ void appendLine(std::string& out, const std::vector<std::string>& cells) {
     out += '\n'; // LF rather than RFC 4180's CRLF: the files live in git and are read by Python/R
 }
 
-bool writeAll(int fd, const std::string& text) {
-    size_t done = 0;
-    while (done < text.size()) {
-        ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) return false;
-        done += size_t(n);
-    }
-    return true;
-}
-
-// Writes the temp file completely and durably. Raw write() has no user-space buffer, so fsync() alone
-// is the "fflush + fsync" step. On failure the temp file is removed and the error thrown.
-void writeTemp(const std::string& path, const std::string& tmp, const std::string& text,
-               std::optional<mode_t> keepMode) {
-    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, kNewFileMode);
-    if (fd < 0) failWrite(path, "cannot create temporary file '" + tmp + "'", errno);
-    // Replacing the file must not change who may read it (best effort: a foreign-owned file may refuse).
-    if (keepMode) (void)::fchmod(fd, *keepMode);
-    int err = 0;
-    if (!writeAll(fd, text) || ::fsync(fd) != 0) err = errno;
-    if (::close(fd) != 0 && !err) err = errno;
-    if (err) {
-        ::unlink(tmp.c_str());
-        failWrite(path, "cannot write temporary file '" + tmp + "'", err);
-    }
-}
-
-// The rename is the commit point: before it readers see the old file, after it the new one. The
-// directory is fsync'ed afterwards so the rename itself survives a power cut; that is best effort
-// (some file systems refuse fsync on directories) because the data is already safe either way.
-void commit(const std::string& path, const std::string& tmp) {
-    if (::rename(tmp.c_str(), path.c_str()) != 0) {
-        int err = errno;
-        ::unlink(tmp.c_str());
-        failWrite(path, "cannot rename '" + tmp + "' over it", err);
-    }
-    int dirFd = ::open(directoryOf(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (dirFd >= 0) {
-        (void)::fsync(dirFd);
-        ::close(dirFd);
-    }
-}
-
-void requireDirectory(const std::string& path, const std::string& dir) {
-    struct stat st {};
-    if (::stat(dir.c_str(), &st) != 0) failWrite(path, "directory '" + dir + "'", errno);
-    if (!S_ISDIR(st.st_mode)) failWrite(path, "'" + dir + "'", ENOTDIR);
-    if (::access(dir.c_str(), W_OK | X_OK) != 0) failWrite(path, "directory '" + dir + "'", errno);
-}
-
-void requireReplaceableFile(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) {
-        if (errno != ENOENT) failWrite(path, "cannot inspect it", errno);
-        return;
-    }
-    if (S_ISDIR(st.st_mode)) failWrite(path, "it is a directory", 0);
-    if (::access(path.c_str(), R_OK | W_OK) != 0) failWrite(path, "existing file", errno);
-}
-
-// Both ways of writing a file end here, so appends and whole-table writes are equally crash-safe.
-void replaceFile(const std::string& path, const std::string& text, std::optional<mode_t> keepMode) {
-    std::string tmp = tempPathFor(path);
-    writeTemp(path, tmp, text, keepMode);
-    commit(path, tmp);
-}
-
 } // namespace
 
 std::string CsvWriter::serialize(const CsvTable& table) {
@@ -276,14 +184,15 @@ CsvTable CsvWriter::toTable(const std::vector<CsvRow>& rows) {
 }
 
 void CsvWriter::writeText(const std::string& path, const std::string& text) {
-    struct stat st {};
-    std::optional<mode_t> keepMode;
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) keepMode = st.st_mode & 07777;
-    replaceFile(path, text, keepMode);
+    AtomicFile file(path, "file");
+    file.replace(text);
 }
 
 std::string CsvWriter::quote(const std::string& field) {
-    if (field.find_first_of(kNeedsQuoting) == std::string::npos) return field;
+    // A field that begins with a byte-order mark is quoted too: unquoted at the start of a file, the
+    // reader would take it for the file's BOM and strip it, renaming the column.
+    const bool startsWithBom = field.compare(0, 3, kUtf8Bom) == 0;
+    if (!startsWithBom && field.find_first_of(kNeedsQuoting) == std::string::npos) return field;
     std::string out(1, kQuote);
     for (char c : field) {
         if (c == kQuote) out += kQuote;
@@ -292,20 +201,19 @@ std::string CsvWriter::quote(const std::string& field) {
     return out + kQuote;
 }
 
-// Concurrent appends by two processes to one file are not serialised (the later rename wins and the
-// other's rows are lost); runs write one CSV each or run one after the other.
+// Read, merge and replace all happen under the file's lock (bench/output/AtomicFile.h), so two processes
+// appending to one file both keep their rows.
 void CsvWriter::appendRows(const std::string& path, const std::vector<CsvRow>& rows) {
     if (rows.empty()) return; // nothing to add, and no header to create a new file with
-    std::optional<FileContent> old = readIfExists(path, true);
+    AtomicFile file(path, "CSV");
     // A corrupt existing file is an error (BadInput, naming file and line), never silently replaced.
-    CsvTable table = old ? parse(old->text, path) : CsvTable{};
+    CsvTable table = parse(file.read(), path);
     mergeRows(table, rows, path);
-    replaceFile(path, serialize(table), old ? std::optional<mode_t>(old->mode) : std::nullopt);
+    file.replace(serialize(table));
 }
 
 // A ragged table would be written without complaint but could not be read back, so it is refused
-// before anything touches the disk. Only the mode of the old file is needed, so stat() suffices
-// where appendRows reads the whole file.
+// before anything touches the disk.
 void CsvWriter::writeTable(const std::string& path, const CsvTable& table) {
     for (size_t i = 0; i < table.rows.size(); ++i)
         if (table.rows[i].size() != table.header.size())
@@ -316,22 +224,12 @@ void CsvWriter::writeTable(const std::string& path, const CsvTable& table) {
     writeText(path, serialize(table));
 }
 
-// Permission checks give the clear messages; the final probe (create and remove the temp file that
-// appendRows will use) catches what they cannot see: read-only mounts, root on NFS, over-long names.
 void CsvWriter::checkWritable(const std::string& path) {
-    requireDirectory(path, directoryOf(path));
-    requireReplaceableFile(path);
-    std::string tmp = tempPathFor(path);
-    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, kNewFileMode);
-    if (fd < 0) failWrite(path, "cannot create temporary file '" + tmp + "'", errno);
-    ::close(fd);
-    ::unlink(tmp.c_str());
+    AtomicFile::checkWritable(path, "CSV");
 }
 
 CsvTable CsvWriter::read(const std::string& path) {
-    std::optional<FileContent> content = readIfExists(path, false);
-    if (!content) failRead(path, ENOENT);
-    return parse(content->text, path);
+    return parse(readWhole(path), path);
 }
 
 CsvTable CsvWriter::parse(const std::string& text, const std::string& sourceName) {

@@ -6,9 +6,19 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "bench/output/AtomicFile.h"
 #include "core/Error.h"
 
 namespace sb {
+
+void ImageWriter::checkWritable(const std::string& path, const std::string& option) {
+    if (path.empty()) throw Error(option + ": the path is empty");
+    AtomicFile::checkWritable(path, "image");
+    if (!OIIO::ImageOutput::create(path)) {
+        (void)OIIO::geterror(); // clears OpenImageIO's pending message
+        throw Error(option + " " + path + ": no image format writes this extension (use .png)");
+    }
+}
 
 void ImageWriter::write(const std::string& path, int width, int height, int channels,
                         const unsigned char* pixels) {

@@ -12,6 +12,10 @@ public:
     static void writeColor(const FrameTargets& targets, const std::string& path);
     /// Visibility of light `light` as 8-bit grey (1 lit = white, 0 shadowed = black; values clamped).
     static void writeVisibility(const FrameTargets& targets, int light, const std::string& path);
+    /// The up-front check of an image output (`option` names it in the message): a format OpenImageIO
+    /// can write for the extension, a regular file or nothing, in a writable directory. Throws
+    /// sb::Error(BadInput).
+    static void checkWritable(const std::string& path, const std::string& option);
     /// Writes `channels` x 8-bit pixels (top row first) to `path`; the format follows the extension.
     static void write(const std::string& path, int width, int height, int channels,
                       const unsigned char* pixels);

@@ -43,12 +43,19 @@ AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness) {
 AccuracyEvaluator::~AccuracyEvaluator() = default;
 
 namespace {
-/// Beyond a point or spot light's range no light arrives, so whether a sample "sees" the light does
-/// not change the image: techniques that use the range (shadow volumes' range culling, scissor and
-/// finite volumes) may leave anything there, and such samples are not judged.
-bool withinRange(const Light& light, const glm::vec3& p) {
-    return light.type == LightType::Directional || light.range <= 0.0f ||
-           glm::length(light.position - p) < light.range;
+/// Beyond a point or spot light's range, and outside a spot's outer cone, no light arrives, so whether
+/// a sample "sees" the light does not change the image: techniques that use the range (shadow volumes'
+/// range culling, scissor and finite volumes) or the cone (a spot's map covers the cone only and calls
+/// what lies outside it lit, while the reference calls it 0) may leave anything there, and such samples
+/// are not judged. Judging them made every technique, exact ones included, 85% "wrong" on sphere_plane
+/// with --light spot.
+bool lightArrives(const Light& light, const glm::vec3& p) {
+    if (light.type == LightType::Directional) return true;
+    const glm::vec3 d = p - light.position;
+    const float dist = glm::length(d);
+    if (light.range > 0.0f && !(dist < light.range)) return false;
+    if (light.type != LightType::Spot || !(dist > 0.0f)) return true;
+    return glm::dot(d / dist, glm::normalize(light.direction)) >= std::cos(glm::radians(light.spotOuterDeg));
 }
 } // namespace
 
@@ -71,7 +78,7 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, co
         if (!g.covered(i)) continue;
         glm::vec3 p(g.position[i]);
         s.mask[i] = glm::dot(mTracer->normalAt(g, i), towardsLight(light, p)) > o.nDotLThreshold &&
-                    withinRange(light, p);
+                    lightArrives(light, p);
     }
     return s;
 }

@@ -123,7 +123,10 @@ void ConsoleReport::printAccuracyTable(std::ostream& os,
     for (const auto& [r, a] : results) {
         std::string bad = std::to_string(a.sanity.nan) + "/" + std::to_string(a.sanity.inf) + "/" +
                           std::to_string(a.sanity.outOfRange);
-        auto opt = [&](double v) { return a.stabilityMeasured ? fmt("%.2f", v) : std::string("-"); };
+        // Captured by value, not the binding: lambdas capture structured bindings only from clang 16.
+        auto opt = [measured = a.stabilityMeasured](double v) {
+            return measured ? fmt("%.2f", v) : std::string("-");
+        };
         table.addRow({r.technique, fmt("%.2f ms", r.wall.median), fmt("%.3f", a.hard.wrongPct),
                       fmt("%.3f", a.hard.wrongNoEdgePct), fmt("%.4f", a.soft.rmse), bad, opt(a.cameraGain),
                       opt(a.lightGain), opt(a.flicker), propertiesText(r)});

@@ -18,9 +18,11 @@
 #include <vector>
 
 #include "bench/run/FrameSample.h"
+#include "bench/run/InjectedPass.h"
 #include "bench/run/RunConfig.h"
 #include "bench/run/Statistics.h"
 #include "bench/run/TimerTrust.h"
+#include "bench/run/WorkCensus.h"
 #include "gl/Context.h"
 #include "gl/FrameTargets.h"
 #include "gl/PipelineStatistics.h"
@@ -40,6 +42,7 @@ namespace sb {
 struct FrameLoads {
     SubmitStats submitted;
     std::optional<PipelineCounts> pipeline; ///< empty without GL_ARB_pipeline_statistics_query
+    FrameWork passes;                       ///< the same, pass by pass (they sum to the above)
 };
 
 struct RunResult {
@@ -83,7 +86,8 @@ public:
     /// Warm-up, then the measured frames (config frames or seconds), the timer re-check where the
     /// timer is trusted (recheckTimer), statistics, then one untimed census frame for the loads.
     RunResult measure(Technique& technique);
-    /// One extra frame, not timed, wrapped in pipeline-statistics queries where the context has them.
+    /// One extra frame, not timed, each pass wrapped in pipeline-statistics queries where the context
+    /// has them (WorkCensus).
     FrameLoads measureLoads(Technique& technique);
     /// Uses a verdict measured elsewhere (a sweep calibrates once and hands it to every worker process)
     /// instead of calibrating here.
@@ -132,6 +136,7 @@ private:
     uint64_t mFrameIndex = 0;
     bool mTimerQueries = true;
     double mSceneLoadMs = 0.0;
+    InjectedPass mInjectedPass; ///< after mContext: its GL objects go first
 };
 
 } // namespace sb

@@ -1,6 +1,7 @@
 #include "bench/run/ResultRow.h"
 
 #include "bench/output/CsvNumber.h"
+#include "core/Injection.h"
 #include "gl/backends/BackendRegistry.h"
 
 namespace sb {
@@ -35,6 +36,23 @@ void addLoads(CsvRow& row, const FrameLoads& loads) {
     row.emplace_back("load_primitives", count(&PipelineCounts::primitivesSubmitted));
     row.emplace_back("load_clipped_primitives", count(&PipelineCounts::clippingOutputPrimitives));
     row.emplace_back("load_fragments", count(&PipelineCounts::fragmentShaderInvocations));
+}
+
+/// The census frame's work pass by pass (bench/run/WorkCensus.h), the exact layer of the perf gate:
+/// `work_<pass>_<counter>`. Pipeline cells stay empty where the context cannot count them.
+void addPassWork(CsvRow& row, const FrameWork& passes) {
+    for (const auto& [pass, w] : passes) {
+        const std::string prefix = "work_" + pass + "_";
+        const std::optional<PipelineCounts>& p = w.pipeline;
+        auto count = [&](uint64_t PipelineCounts::*field) { return p ? std::to_string((*p).*field) : ""; };
+        row.emplace_back(prefix + "gl_calls", std::to_string(w.submitted.glCalls));
+        row.emplace_back(prefix + "draws", std::to_string(w.submitted.drawCalls));
+        row.emplace_back(prefix + "triangles", std::to_string(w.submitted.triangles));
+        row.emplace_back(prefix + "vertices", count(&PipelineCounts::vertexShaderInvocations));
+        row.emplace_back(prefix + "primitives", count(&PipelineCounts::primitivesSubmitted));
+        row.emplace_back(prefix + "clipped_primitives", count(&PipelineCounts::clippingOutputPrimitives));
+        row.emplace_back(prefix + "fragments", count(&PipelineCounts::fragmentShaderInvocations));
+    }
 }
 
 } // namespace
@@ -89,6 +107,9 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? csvNumber(stats.median) : "");
     for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, csvNumber(value));
     addLoads(row, r.loads);
+    addPassWork(row, r.loads.passes);
+    // A row measured with a deliberate regression switched on says so (core/Injection.h).
+    if (!injectionsText().empty()) row.emplace_back("injected", injectionsText());
     return row;
 }
 

@@ -1,6 +1,7 @@
 #include "bench/run/RunOptions.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include <CLI/CLI.hpp>
 
@@ -44,6 +45,29 @@ RunConfig RunOptions::parseArgs(const std::vector<std::string>& args, RunConfig:
 }
 
 namespace {
+
+// Bounds that keep every derived quantity finite and meaningful. --scale multiplies every layout
+// instance: below 1e-4 an aircraft is smaller than float precision at the scene's extent and the camera
+// fit fails with a message about the camera instead of the option; above 1e4 the scene's bounds
+// overflow the depth range. --max-memory-gib: 1 PiB, far beyond any machine, and exact in uint64 bytes.
+constexpr double kMinScale = 1e-4, kMaxScale = 1e4;
+constexpr double kMaxMemoryGiB = 1024.0 * 1024.0;
+
+std::string formatNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+/// An option that names a file or folder and was given as "" would silently mean "not given".
+void requireNonEmptyPaths(const CLI::App& app) {
+    for (const char* name :
+         {"--csv", "--samples", "--screenshot", "--visibility", "--dump-shaders", "--model", "--scene"}) {
+        const CLI::Option* o = app.get_option_no_throw(name);
+        if (o && o->count() > 0 && o->as<std::string>().empty())
+            throw Error(std::string(name) + ": the path is empty");
+    }
+}
 
 /// What CLI11 fills before it is checked: texts, and -1 for "not given", that become RunConfig fields.
 struct RawOptions {
@@ -152,13 +176,22 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     }
     if (!(c.sceneOptions.tessellationFactor >= 0.05f && c.sceneOptions.tessellationFactor <= 20.0f))
         throw Error("--tess-factor: expected a number in [0.05, 20]");
-    if (!(std::isfinite(c.sceneOptions.scale) && c.sceneOptions.scale > 0.0f && c.sceneOptions.scale <= 1e6f))
-        throw Error("--scale: expected a finite number in (0, 1e6]");
+    if (!(c.sceneOptions.scale >= kMinScale && c.sceneOptions.scale <= kMaxScale))
+        throw Error("--scale " + formatNumber(c.sceneOptions.scale) + ": expected a number in [" +
+                    formatNumber(kMinScale) + ", " + formatNumber(kMaxScale) + "]");
+    if (c.context.gpu != -1 && c.context.gpu < 0)
+        throw Error("--gpu " + std::to_string(c.context.gpu) + ": expected a device index 0, 1, ...");
+    if (c.context.gpu >= 0 && c.context.backend != Backend::Auto && c.context.backend != Backend::EglDevice)
+        throw Error("--gpu selects an EGL device, which --backend " + raw.backend +
+                    " does not use (use --backend egl-device or auto)");
     if (c.frames < 1) throw Error("--frames " + std::to_string(c.frames) + ": must be at least 1");
     if (c.warmup < 0) throw Error("--warmup: must be 0 or more");
     if (c.windowFrames < 0) throw Error("--window-frames: must be 0 or more");
     if (!(c.seconds >= 0.0 && c.seconds <= 86400.0)) throw Error("--seconds: expected 0..86400");
-    if (!(raw.maxMemoryGiB > 0.0)) throw Error("--max-memory-gib: must be positive");
+    // Bounded above so that the conversion to bytes cannot overflow (1e30 or inf would wrap to 0).
+    if (!(raw.maxMemoryGiB > 0.0 && raw.maxMemoryGiB <= kMaxMemoryGiB))
+        throw Error("--max-memory-gib " + formatNumber(raw.maxMemoryGiB) + ": expected a number in (0, " +
+                    formatNumber(kMaxMemoryGiB) + "]");
     c.sceneOptions.memoryLimitBytes = uint64_t(raw.maxMemoryGiB * double(1ull << 30));
     c.checkTimer = !raw.noTimerCheck;
 }
@@ -175,6 +208,7 @@ int RunOptions::parse(int argc, char** argv, RunConfig& c, bool& listOnly, const
     const int code =
         parseCli(app, argc, argv, c.mode == RunConfig::Mode::Accuracy ? "bench accuracy" : "bench");
     if (code >= 0 || listOnly) return code;
+    requireNonEmptyPaths(app);
     applyOptions(raw, c);
     return -1;
 }

@@ -1,10 +1,12 @@
 #include "bench/sweep/SweepCommand.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 
 #include "bench/output/CsvWriter.h"
 #include "bench/output/RowExport.h"
+#include "bench/output/StandardStreams.h"
 #include "bench/run/CliParse.h"
 #include "bench/sweep/SweepDefinition.h"
 #include "bench/sweep/SweepOptions.h"
@@ -34,6 +36,7 @@ Exit codes: 0 ok, 1 some configurations failed (rows with status=failed say why)
 struct SweepCli {
     std::string file, csv, shard = "1/1", format = "console", name, mode;
     bool resume = false, dryRun = false, noProgress = false, qualitySweep = false;
+    int64_t maxConfigs = -1;
     SweepOptions axes;
 };
 
@@ -50,6 +53,8 @@ int SweepCommand::main(int argc, char** argv) {
     app.add_option("--mode", cli.mode, "measure (default) or accuracy (judge against the reference too)");
     app.add_flag("--quality-sweep", cli.qualitySweep, "accuracy: walk each technique's quality knobs");
     app.add_option("--name", cli.name, "sweep name recorded in every row (default: the file's stem)");
+    app.add_option("--max-configs", cli.maxConfigs,
+                   "refuse sweeps of more configurations (rows) than this (default 10000)");
     app.add_flag("--resume", cli.resume, "continue the sweep in --csv, skipping the rows it already has");
     app.add_option("--shard", cli.shard, "run slice i of N (i/N) of the combinations")->capture_default_str();
     app.add_flag("--dry-run", cli.dryRun, "print the configurations and exit");
@@ -60,12 +65,18 @@ int SweepCommand::main(int argc, char** argv) {
     if (int code = parseCli(app, argc, argv, "bench sweep"); code >= 0) return code;
 
     const RowFormat format = parseRowFormat(cli.format);
+    if (format != RowFormat::Console) StandardStreams::requireStdout("--format " + cli.format);
     const auto [shard, shardCount] = parseShard(cli.shard);
     SweepDefinition definition =
         cli.file.empty() ? SweepDefinition{} : SweepDefinition::fromJsonFile(cli.file);
     cli.axes.applyTo(definition);
     if (!cli.name.empty()) definition.name = cli.name;
     if (cli.qualitySweep) definition.qualitySweep = true;
+    if (cli.maxConfigs != -1) {
+        if (cli.maxConfigs < 1)
+            throw Error("--max-configs " + std::to_string(cli.maxConfigs) + ": must be at least 1");
+        definition.maxConfigs = uint64_t(cli.maxConfigs);
+    }
     if (!cli.mode.empty()) {
         if (cli.mode != "measure" && cli.mode != "accuracy")
             throw Error("--mode " + cli.mode + ": expected measure or accuracy");
@@ -88,6 +99,7 @@ int SweepCommand::main(int argc, char** argv) {
     SweepReport::printSummary(log, plan, options, summary);
     if (format != RowFormat::Console)
         std::cout << RowExport::format(SweepReport::shardRows(plan, options), format);
+    if (format != RowFormat::Console) StandardStreams::finishStdout("--format " + cli.format);
     if (summary.interrupted) return 130;
     return summary.failed ? int(ExitCode::Failure) : 0;
 }

@@ -1,7 +1,8 @@
 #include "bench/sweep/SweepDefinition.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "bench/run/RunOptions.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
+#include "core/Paths.h"
 #include "core/Strings.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/TechniqueRegistry.h"
@@ -68,24 +70,61 @@ void addOption(std::vector<std::string>& args, const JsonReader& root, const cha
 
 /// Runs bench's own option parser over one combination, so every value is checked exactly as a plain
 /// `bench` run would check it.
-void validateArgs(const std::vector<std::string>& args, SweepPlan::Mode mode, const std::string& where) {
+RunConfig validateArgs(const std::vector<std::string>& args, SweepPlan::Mode mode, const std::string& where) {
     try {
-        RunOptions::parseArgs(args, mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
-                                                                      : RunConfig::Mode::Measure);
+        return RunOptions::parseArgs(args, mode == SweepPlan::Mode::Accuracy ? RunConfig::Mode::Accuracy
+                                                                             : RunConfig::Mode::Measure);
     } catch (const Error& e) {
         throw Error("sweep: " + where + ": " + e.what());
     }
 }
 
-/// Every scene loads and has every camera of the camera axis (before any worker starts).
-void validateScenes(const SweepAxes& axes) {
-    for (const std::string& name : axes.scenes) {
-        const Scene scene = SceneLoader::load(name);
-        for (const std::string& camera : axes.camera)
-            if (!scene.findCamera(camera))
-                throw Error("sweep: scene '" + name + "' has no camera '" + camera + "' (known: " +
-                            join(scene.cameras, ", ", [](const CameraPreset& c) { return c.name; }) + ")");
+/// The scene of one combination loads with the combination's scene options (instances, scale,
+/// tessellation, light, memory limit) and has its camera, exactly as the worker will load it: what a
+/// worker would refuse is bad input before anything is measured, not a failed row after. Scenes are
+/// loaded once per distinct set of scene options (the camera, size and submit axes share one).
+class SceneCheck {
+public:
+    void check(const RunConfig& config, const std::string& where) {
+        const SceneOptions& o = config.sceneOptions;
+        const std::string key = config.scene + "|" + o.modelPath + "|" +
+                                std::to_string(o.instances.value_or(0)) + "|" + std::to_string(o.scale) +
+                                "|" + std::to_string(o.tessellation.value_or(0)) + "|" +
+                                std::to_string(o.tessellationFactor) + "|" +
+                                std::to_string(o.lightType ? int(*o.lightType) : -1) + "|" +
+                                std::to_string(o.seed.value_or(0)) + "|" + std::to_string(o.memoryLimitBytes);
+        auto it = mCameras.find(key);
+        if (it == mCameras.end()) {
+            try {
+                const Scene scene = SceneLoader::load(config.scene, o);
+                std::vector<std::string> names;
+                for (const CameraPreset& c : scene.cameras) names.push_back(c.name);
+                it = mCameras.emplace(key, names).first;
+            } catch (const Error& e) {
+                throw Error("sweep: " + where + ": " + e.what(), e.code());
+            }
+        }
+        const std::vector<std::string>& cameras = it->second;
+        if (std::find(cameras.begin(), cameras.end(), config.camera) == cameras.end())
+            throw Error("sweep: scene '" + config.scene + "' has no camera '" + config.camera +
+                        "' (known: " + join(cameras, ", ") + ")");
     }
+
+private:
+    std::map<std::string, std::vector<std::string>> mCameras; ///< scene-options key -> camera names
+};
+
+/// a * b, saturating at the largest value (the estimate of a sweep's size must not wrap).
+uint64_t saturatingProduct(uint64_t a, uint64_t b) {
+    return a != 0 && b > UINT64_MAX / a ? UINT64_MAX : a * b;
+}
+
+/// How many specs "name:k=a,b:j=c,d,e" expands to (2 x 3 here), without expanding it.
+uint64_t techniqueCount(const std::string& text) {
+    uint64_t n = 1;
+    for (const auto& [key, values] : TechniqueSpec::parse(text).properties)
+        n = saturatingProduct(n, uint64_t(std::count(values.begin(), values.end(), ',')) + 1);
+    return n;
 }
 
 /// One axis of the product: the CSV column it describes, bench's option, its values, and the value
@@ -167,14 +206,8 @@ std::vector<std::string> SweepDefinition::expandTechnique(const std::string& tex
 }
 
 SweepDefinition SweepDefinition::fromJsonFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("sweep definition '" + path + "': cannot open it");
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw Error("sweep definition '" + path + "': not valid JSON: " + e.what());
-    }
+    // The scene files' reader: nesting bounded, numbers checked, errors at a line and column.
+    const nlohmann::json doc = JsonReader::parse(Paths::readTextFile(path), path);
     return fromJson(doc, path, "", std::filesystem::path(path).stem().string());
 }
 
@@ -220,6 +253,15 @@ SweepDefinition SweepDefinition::fromJson(const nlohmann::json& doc, const std::
     return d;
 }
 
+void SweepDefinition::checkSize(uint64_t configurations, const std::string& how) const {
+    if (configurations <= maxConfigs) return;
+    throw Error(
+        "sweep '" + name + "': " +
+        (configurations == UINT64_MAX ? std::string("more than 2^64") : std::to_string(configurations)) +
+        " configurations (" + how + ") exceed the limit of " + std::to_string(maxConfigs) +
+        "; narrow an axis or raise it with --max-configs N");
+}
+
 SweepPlan SweepDefinition::expand() const {
     SweepPlan plan;
     plan.name = name;
@@ -227,6 +269,18 @@ SweepPlan SweepDefinition::expand() const {
     plan.commonArgs = commonArgs;
     if (mode != SweepPlan::Mode::Accuracy && qualitySweep)
         throw Error("sweep '" + name + "': quality_sweep needs \"mode\": \"accuracy\"");
+    // The size is known from the list lengths alone: a sweep of 10^6 configurations is refused in
+    // microseconds rather than after expanding (and validating) every one of them.
+    uint64_t specCount = 0;
+    for (const std::string& t : orDefault(axes.techniques, std::string("shadowmap")))
+        specCount = std::min<uint64_t>(UINT64_MAX - 1, specCount) + techniqueCount(t);
+    uint64_t combinations = 1;
+    for (const auto* axis : {&axes.scenes, &axes.instances, &axes.scale, &axes.tess, &axes.tessFactor,
+                             &axes.submit, &axes.camera, &axes.size, &axes.light})
+        combinations = saturatingProduct(combinations, std::max<uint64_t>(1, axis->size()));
+    checkSize(saturatingProduct(saturatingProduct(specCount, combinations), uint64_t(repeat)),
+              std::to_string(specCount) + " technique specs x " + std::to_string(combinations) +
+                  " axis combinations x " + std::to_string(repeat) + " rounds");
 
     std::vector<std::string> techniques;
     for (const std::string& t : orDefault(axes.techniques, std::string("shadowmap")))
@@ -243,6 +297,11 @@ SweepPlan SweepDefinition::expand() const {
     for (const std::string& t : techniques)
         if (!seen.insert(t).second)
             throw Error("sweep '" + name + "': technique '" + t + "' is listed twice");
+    if (qualitySweep)
+        checkSize(saturatingProduct(saturatingProduct(techniques.size(), combinations), uint64_t(repeat)),
+                  std::to_string(techniques.size()) + " quality-sweep specs x " +
+                      std::to_string(combinations) + " axis combinations x " + std::to_string(repeat) +
+                      " rounds");
 
     const SweepAxes a{{},
                       orDefault(axes.scenes, std::string("aircraft")),
@@ -254,7 +313,7 @@ SweepPlan SweepDefinition::expand() const {
                       orDefault(axes.camera, std::string("far")),
                       orDefault(axes.size, std::string("1024x1024")),
                       orDefault(axes.light, std::string("scene"))};
-    validateScenes(a);
+    SceneCheck scenes;
     // Outer to inner (see the header); an axis value equal to `omit` adds no option (bench's default).
     const std::vector<Axis> product{{"scene", "--scene", a.scenes, ""},
                                     {"light", "--light", a.light, "scene"},
@@ -274,7 +333,8 @@ SweepPlan SweepDefinition::expand() const {
         std::string where = "combination";
         for (size_t i = 0; i < product.size(); ++i)
             where += std::string(" ") + product[i].column + "=" + values[i];
-        validateArgs(all, mode, where); // before identityColumns reads the numbers
+        const RunConfig config = validateArgs(all, mode, where); // before identityColumns reads the numbers
+        scenes.check(config, where);
         plan.addGroup(std::move(args), identityColumns(values), techniques, repeat);
     });
     return plan;

@@ -20,6 +20,7 @@
 // Axes left out take bench's defaults (a single value). "instances": "default" keeps the scene's count.
 // Order of the product, outer to inner: scene, light, camera, size, submit, scale, tess, tess_factor,
 // instances (so the points of an instance curve run next to each other).
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ public:
     SweepAxes axes;
     int repeat = 1;
     std::vector<std::string> commonArgs; ///< fixed options for every run (--frames 30 ...)
+    /// The most configurations (rows) expand() accepts: 10000 rows take hours even at a second each,
+    /// so more is almost always a typo in an axis (--max-configs raises it).
+    uint64_t maxConfigs = 10000;
 
     /// Reads a definition file; errors name the file and the JSON path.
     static SweepDefinition fromJsonFile(const std::string& path);
@@ -54,9 +58,14 @@ public:
     /// Expands property value lists of one spec: "shadowmap:resolution=512,1024:pcf=1,3" -> 4 specs.
     static std::vector<std::string> expandTechnique(const std::string& spec);
 
-    /// The plan: validates every technique spec and every combination's options (no GL needed), so a
-    /// typo fails before the first measurement. Throws sb::Error naming the axis value.
+    /// The plan: refuses more than maxConfigs rows before expanding anything, then validates every
+    /// technique spec, every combination's options and its scene as the worker will load it (no GL
+    /// needed), so a typo fails before the first measurement. Throws sb::Error naming the axis value.
     SweepPlan expand() const;
+
+private:
+    /// Throws when `configurations` exceeds maxConfigs; `how` is the product that gave it.
+    void checkSize(uint64_t configurations, const std::string& how) const;
 };
 
 } // namespace sb

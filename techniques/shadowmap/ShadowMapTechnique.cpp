@@ -3,34 +3,83 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <cmath>
+#include <string>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/Error.h"
-#include "scenes/LightFit.h"
+#include "core/Injection.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/DepthPassState.h"
+#include "techniques/shadowmap/PoissonDisk.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
 namespace {
-constexpr const char* kResolution = "resolution";
-constexpr const char* kBiasConstant = "bias_constant";
-constexpr const char* kBiasSlope = "bias_slope";
-constexpr const char* kPcf = "pcf";
+using P = ShadowMapProperties;
 constexpr const char* kHardwareCompare = "hardware_compare";
-constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert and common/scene.vert
+constexpr const char* kKernel = "kernel";
+constexpr const char* kTaps = "taps";
+constexpr const char* kRadius = "radius";
+constexpr const char* kNormalOffset = "normal_offset";
+constexpr const char* kReceiverPlane = "receiver_plane";
+// shadowmap/lighting.frag: uTexelWorld[LIGHT_COUNT], uNormalOffset, uKernelTaps, uKernel[64].
+constexpr GLint kTexelWorldLocation = 12;
+constexpr GLint kNormalOffsetLocation = 16;
+constexpr GLint kKernelTapsLocation = 17;
+constexpr GLint kKernelLocation = 20; // uKernel[64]
 
 /// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
 std::vector<PropertyDesc> declareProperties() {
     return {
-        integer(kResolution, "2048", 16, 8192, "shadow map width and height (texels)"),
-        real(kBiasConstant, "2", 0, 10000,
-             "glPolygonOffset units: constant depth bias in depth-buffer steps"),
-        real(kBiasSlope, "2", 0, 64, "glPolygonOffset factor: slope-scaled depth bias"),
-        integer(kPcf, "1", 1, 9, "PCF kernel width: pcf x pcf taps one texel apart"),
+        P::resolution("2048", "shadow map width and height (texels)"),
+        P::biasConstant(),
+        P::biasSlope(),
+        P::pcf("PCF kernel width: pcf x pcf taps one texel apart"),
         flag(kHardwareCompare, "true",
              "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"),
+        choice(kKernel, "grid", {"grid", "poisson", "rotated_grid"},
+               "PCF kernel: grid (pcf x pcf), poisson (taps of a fixed Poisson disk), rotated_grid (a grid "
+               "rotated per pixel by interleaved gradient noise)"),
+        integer(kTaps, "16", 4, 64,
+                "taps of the poisson kernel; rotated_grid uses the nearest square n x n (n >= 2)"),
+        real(kRadius, "1.5", 0, 64, "radius of the poisson and rotated_grid kernels (map texels)"),
+        real(kNormalOffset, "0", 0, 64,
+             "normal-offset bias: lookup moved along the normal by this many world texels x (1 - n.l)"),
+        flag(kReceiverPlane, "false", "receiver-plane depth bias: each tap compared with the receiver plane"),
     };
+}
+
+/// Side of the rotated grid for `taps`: the nearest square, at least 2 x 2.
+int rotatedGridSide(int taps) {
+    return std::max(2, int(std::lround(std::sqrt(double(taps)))));
+}
+
+/// The kernel's tap offsets in texels, `radius` applied: the Poisson disk scaled to the radius, or the
+/// unrotated n x n grid of cell centres covering the square [-radius, radius]^2.
+std::vector<glm::vec2> kernelOffsets(const std::string& kernel, int taps, float radius) {
+    std::vector<glm::vec2> out;
+    if (kernel == "poisson") {
+        for (const glm::vec2& p : PoissonDisk::generate(taps)) out.push_back(p * radius);
+        return out;
+    }
+    const int n = rotatedGridSide(taps);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            out.push_back((glm::vec2(float(x), float(y)) + 0.5f - 0.5f * float(n)) *
+                          (2.0f * radius / float(n)));
+    return out;
+}
+
+/// World size of one texel of a map of `resolution` texels rendered with `lightViewProj`, at light-space
+/// w = 1: row r of an orthographic proj * view is (2 / extent_r) times a unit axis, and of a perspective
+/// one (2 / (2 tan(fov / 2))) times it with extent growing with w. The larger of the two axes.
+float texelWorldSize(const glm::mat4& lightViewProj, int resolution) {
+    auto rowLength = [&](int r) {
+        return glm::length(glm::vec3(lightViewProj[0][r], lightViewProj[1][r], lightViewProj[2][r]));
+    };
+    return 2.0f / (std::min(rowLength(0), rowLength(1)) * float(resolution));
 }
 } // namespace
 
@@ -45,125 +94,98 @@ ShadowMapTechnique::ShadowMapTechnique()
            .properties = declareProperties(),
            // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
            .quality = {
-               {kResolution, {"256", "512", "1024", "2048", "4096"}},
-               {kPcf, {"1", "3", "5"}},
-               {kBiasConstant, {"0.5", "2", "8", "32"}},
-               {kBiasSlope, {"0.5", "2", "4"}},
+               {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+               P::pcfSweep(),
+               P::biasConstantSweep(),
+               P::biasSlopeSweep(),
+               {kKernel, {"grid", "poisson", "rotated_grid"}},
+               {kTaps, {"8", "16", "32"}},
+               {kRadius, {"1", "1.5", "3"}},
+               {kNormalOffset, {"0", "1", "2", "4"}},
+               {kReceiverPlane, {"false", "true"}},
            }}) {}
 
-ShadowMapTechnique::~ShadowMapTechnique() {
-    releaseMaps();
-}
-
 void ShadowMapTechnique::setScene(const Scene& scene) {
-    mLightViewProj.clear();
-    mShadowMatrix.clear();
-    size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
-    const glm::mat4 bias =
-        glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
-    for (size_t i = 0; i < count; ++i) {
-        const Light& l = scene.lights[i];
-        if (l.type == LightType::Point)
-            throw Error("shadowmap: light " + std::to_string(i) +
-                            " is a point light, which needs a cube shadow map (not implemented here); use "
-                            "--light directional or --light spot",
-                        ExitCode::Unsupported);
-        mLightViewProj.push_back(fitLightViewProjection(scene, l));
-        mShadowMatrix.push_back(bias * mLightViewProj.back());
-    }
-}
-
-void ShadowMapTechnique::releaseMaps() {
-    if (!mFbos.empty()) glDeleteFramebuffers(GLsizei(mFbos.size()), mFbos.data());
-    mFbos.clear();
-    if (mDepthArray) glDeleteTextures(1, &mDepthArray);
-    mDepthArray = 0;
-    mResolution = mLayers = 0;
-}
-
-void ShadowMapTechnique::allocateMaps(int resolution, int layers) {
-    if (resolution == mResolution && layers == mLayers) return;
-    releaseMaps();
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mDepthArray);
-    glTextureStorage3D(mDepthArray, 1, GL_DEPTH_COMPONENT24, resolution, resolution, layers);
-    glTextureParameteri(mDepthArray, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(mDepthArray, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    mFbos.resize(size_t(layers));
-    glCreateFramebuffers(layers, mFbos.data());
-    for (int i = 0; i < layers; ++i) {
-        glNamedFramebufferTextureLayer(mFbos[size_t(i)], GL_DEPTH_ATTACHMENT, mDepthArray, 0, i);
-        glNamedFramebufferDrawBuffer(mFbos[size_t(i)], GL_NONE);
-        glNamedFramebufferReadBuffer(mFbos[size_t(i)], GL_NONE);
-        GLenum status = glCheckNamedFramebufferStatus(mFbos[size_t(i)], GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE)
-            throw Error("shadowmap: depth framebuffer incomplete (status 0x" + std::to_string(status) + ")",
-                        ExitCode::Failure);
-    }
-    mResolution = resolution;
-    mLayers = layers;
+    mLights.setScene(scene, "shadowmap", FlatLightFits::kOmniAdvice);
+    mCulling.setScene(scene);
 }
 
 void ShadowMapTechnique::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
-    int layers = std::max<int>(1, int(mLightViewProj.size()));
-    allocateMaps(int(p.getInt(kResolution)), layers);
+    int layers = std::max<int>(1, int(mLights.size()));
+    // The perf gate's proof may double the map per side (core/Injection.h); the row's properties
+    // still say the configured resolution, its `injected` column says what ran.
+    const int scale = injected(Injection::DoubleShadowResolution) ? 2 : 1;
+    mMaps.allocate(GL_TEXTURE_2D_ARRAY, scale * int(p.getInt(P::kResolution)), layers, false);
+    const GLuint depthArray = mMaps.texture();
     bool hw = p.getBool(kHardwareCompare);
     // Hardware compare: LINEAR filters the four comparison results (bilinear PCF); without it the shader
     // compares NEAREST depth values itself.
-    glTextureParameteri(mDepthArray, GL_TEXTURE_COMPARE_MODE, hw ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-    glTextureParameteri(mDepthArray, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glTextureParameteri(mDepthArray, GL_TEXTURE_MIN_FILTER, hw ? GL_LINEAR : GL_NEAREST);
-    glTextureParameteri(mDepthArray, GL_TEXTURE_MAG_FILTER, hw ? GL_LINEAR : GL_NEAREST);
+    glTextureParameteri(depthArray, GL_TEXTURE_COMPARE_MODE, hw ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    glTextureParameteri(depthArray, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glTextureParameteri(depthArray, GL_TEXTURE_MIN_FILTER, hw ? GL_LINEAR : GL_NEAREST);
+    glTextureParameteri(depthArray, GL_TEXTURE_MAG_FILTER, hw ? GL_LINEAR : GL_NEAREST);
 
+    mDrawAllIntoMap = injected(Injection::NoCasterCulling);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
     Defines lit = base;
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(layers);
-    lit["PCF_SIZE"] = std::to_string(p.getInt(kPcf));
     if (hw) lit["HW_COMPARE"] = "";
+    // Defaults add no define: the default program is the one before these knobs existed. The other
+    // kernels take their taps as uniforms and ignore pcf, so neither `taps` nor `pcf` multiplies their
+    // programs.
+    const std::string kernel = p.getEnum(kKernel);
+    mKernel.clear();
+    if (kernel == "grid") {
+        lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    } else {
+        mKernel = kernelOffsets(kernel, int(p.getInt(kTaps)), float(p.getFloat(kRadius)));
+        lit[kernel == "poisson" ? "KERNEL_POISSON" : "KERNEL_ROTATED_GRID"] = "";
+    }
+    mNormalOffset = float(p.getFloat(kNormalOffset));
+    if (mNormalOffset > 0.0f) lit["NORMAL_OFFSET"] = "";
+    if (p.getBool(kReceiverPlane)) lit["RECEIVER_PLANE"] = "";
+    mTexelWorld.clear();
+    for (const glm::mat4& vp : mLights.viewProj()) mTexelWorld.push_back(texelWorldSize(vp, mMaps.size()));
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/lighting.frag", ""}, lit);
     setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
 }
 
 void ShadowMapTechnique::renderDepth(FrameContext& ctx) {
     const PropertySet& p = properties();
-    glViewport(0, 0, mResolution, mResolution);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(float(p.getFloat(kBiasSlope)), float(p.getFloat(kBiasConstant)));
+    DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
     mDepthProgram->use();
-    for (size_t i = 0; i < mLightViewProj.size(); ++i) {
-        glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
-        glClear(GL_DEPTH_BUFFER_BIT);
-        glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(mLightViewProj[i]));
-        ctx.submitter.draw(DrawSet::Casters);
-    }
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // Only casters inside the light's frustum reach the map; the gate's proof can lose that culling
+    // (core/Injection.h).
+    mCulled = mLights.renderDepth(ctx.submitter, mCulling, mMaps, mKeep, mDrawAllIntoMap);
 }
 
 void ShadowMapTechnique::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLightingProgram->use();
-    if (!mShadowMatrix.empty())
-        glUniformMatrix4fv(kLightMatrixLocation, GLsizei(mShadowMatrix.size()), GL_FALSE,
-                           glm::value_ptr(mShadowMatrix[0]));
-    glBindTextureUnit(0, mDepthArray);
+    mLights.setShadowMatrices();
+    if (mNormalOffset > 0.0f) {
+        glUniform1fv(kTexelWorldLocation, GLsizei(mTexelWorld.size()), mTexelWorld.data());
+        glUniform1f(kNormalOffsetLocation, mNormalOffset);
+    }
+    if (!mKernel.empty()) {
+        glUniform1i(kKernelTapsLocation, GLint(mKernel.size()));
+        glUniform2fv(kKernelLocation, GLsizei(mKernel.size()), glm::value_ptr(mKernel[0]));
+    }
+    glBindTextureUnit(0, mMaps.texture());
     ctx.submitter.draw(DrawSet::All);
     glBindTextureUnit(0, 0);
 }
 
 void ShadowMapTechnique::execute(FrameContext& ctx) {
-    ctx.submitter.resetStats();
-    ctx.passes.begin("depth");
-    renderDepth(ctx);
-    ctx.passes.begin("lighting");
-    renderLighting(ctx);
-    const SubmitStats& s = ctx.submitter.stats();
+    const SubmitStats s = DepthLightingFrame::run(
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
     mCounters = {{"draw_calls", double(s.drawCalls)},
                  {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", double(mResolution) * mResolution * double(mLightViewProj.size())}};
+                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mLights.size())},
+                 {"casters_culled", double(mCulled)}};
 }
 
 } // namespace sb

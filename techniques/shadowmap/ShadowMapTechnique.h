@@ -3,22 +3,40 @@
 // casters from each light into a layer of a depth texture array, with glPolygonOffset as constant and
 // slope-scaled bias; pass "lighting" renders the scene once, comparing each fragment's light-space
 // depth with the map (PCF_SIZE^2 taps, hardware compare or shader compare) for every light.
+// Filter kernels (property kernel): grid, the pcf x pcf taps one texel apart; poisson, `taps` taps of a
+// fixed Poisson disk of `radius` texels (Fernando 2005, Percentage-Closer Soft Shadows, section 3: PCF
+// with Poisson-disk taps; techniques/shadowmap/PoissonDisk.h); rotated_grid, an n x n grid (n^2 nearest
+// to `taps`) over the square of half-width `radius` rotated per pixel by an angle from interleaved
+// gradient noise (Jimenez 2014, Next Generation Post Processing in Call of Duty: Advanced Warfare,
+// SIGGRAPH course), which trades the grid's banding for per-pixel noise and is a function of the pixel
+// alone, so every submission mode and run gives the same image.
+// Biases besides glPolygonOffset: normal_offset moves the lookup position along the surface normal by
+// that many world-space texels of the map, times (1 - n.l), so acne goes where the receiver grazes the
+// light without pushing contact shadows away where it faces it (Holbert 2010, Normal Offset Shadows;
+// Holbert 2011, Saying Goodbye to Shadow Acne, GDC 2011); receiver_plane compares every tap with the
+// receiver plane's depth at that tap, from the screen-space derivatives of the shadow coordinate (Isidoro
+// 2006, Shadow Mapping: GPU-based Tips and Techniques, GDC 2006, "Receiver Plane Depth Bias";
+// shaders/shadowmap/receiver_plane.glsl). Their defaults (grid, 0, false) compile the program these knobs
+// did not exist for, so the images are unchanged.
 // Directional lights get an orthographic light camera fitted to the casters; spot lights a perspective
-// one with the spot cone (scenes/LightFit.h). Point lights need a cube map: refused with
-// ExitCode::Unsupported.
+// one with the spot cone (scenes/LightFit.h). Each light's depth pass submits only the casters whose
+// bounds reach its frustum (techniques/common/InstanceCulling.h; counter casters_culled). Point lights
+// need an omni map (`cubemap`, `paraboloid`): refused here with ExitCode::Unsupported.
 #include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
 #include "techniques/Technique.h"
+#include "techniques/common/InstanceCulling.h"
+#include "techniques/shadowmap/DepthLayers.h"
+#include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 
 class ShadowMapTechnique final : public Technique {
 public:
     ShadowMapTechnique();
-    ~ShadowMapTechnique() override;
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
@@ -27,14 +45,16 @@ public:
 private:
     void renderDepth(FrameContext& ctx);
     void renderLighting(FrameContext& ctx);
-    void allocateMaps(int resolution, int layers);
-    void releaseMaps();
 
-    std::vector<glm::mat4> mLightViewProj; ///< per light
-    std::vector<glm::mat4> mShadowMatrix;  ///< per light: bias * lightViewProj (to [0,1] texture space)
-    GLuint mDepthArray = 0;
-    std::vector<GLuint> mFbos; ///< per light: the layer as depth attachment
-    int mResolution = 0, mLayers = 0;
+    FlatLightFits mLights;          ///< per light: the camera and the shadow matrix
+    DepthLayers mMaps{"shadowmap"}; ///< GL_TEXTURE_2D_ARRAY, layer i = light i
+    InstanceCulling mCulling;
+    std::vector<uint8_t> mKeep;     ///< the depth pass's mask, reused per light
+    size_t mCulled = 0;             ///< casters culled over all lights, last frame
+    bool mDrawAllIntoMap = false;   ///< the gate's injected regression "no_caster_culling" only
+    std::vector<glm::vec2> mKernel; ///< poisson / rotated_grid tap offsets in texels (empty: grid)
+    std::vector<float> mTexelWorld; ///< per light: world size of a texel at w = 1 (normal offset)
+    float mNormalOffset = 0.0f;     ///< texels; 0 = off
     const Program* mDepthProgram = nullptr;
     const Program* mLightingProgram = nullptr;
     Counters mCounters;

@@ -27,11 +27,12 @@ void DisplayListSubmitter::upload(const Scene& scene) {
     }
 }
 
-void DisplayListSubmitter::draw(DrawSet set) {
+void DisplayListSubmitter::draw(DrawSet set, InstanceMask keep) {
     glBindVertexArray(0);
     mStats.glCalls += 1;
-    for (const Instance& inst : mScene->instances) {
-        if (!inSet(inst, set)) continue;
+    for (size_t i = 0; i < mScene->instances.size(); ++i) {
+        const Instance& inst = mScene->instances[i];
+        if (!inSet(inst, set) || !kept(keep, i)) continue;
         setInstanceUniforms(inst);
         glCallList(mFirstList + inst.mesh);
         mStats.drawCalls += 1;

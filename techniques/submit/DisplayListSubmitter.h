@@ -15,7 +15,8 @@ public:
     ~DisplayListSubmitter() override;
     SubmitMode mode() const override { return SubmitMode::DisplayList; }
     void upload(const Scene& scene) override;
-    void draw(DrawSet set) override;
+    using Submitter::draw;
+    void draw(DrawSet set, InstanceMask keep) override;
 
 private:
     void release();

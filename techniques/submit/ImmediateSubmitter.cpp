@@ -8,11 +8,12 @@ void ImmediateSubmitter::upload(const Scene& scene) {
     mScene = &scene;
 }
 
-void ImmediateSubmitter::draw(DrawSet set) {
+void ImmediateSubmitter::draw(DrawSet set, InstanceMask keep) {
     glBindVertexArray(0);
     mStats.glCalls += 1;
-    for (const Instance& inst : mScene->instances) {
-        if (!inSet(inst, set)) continue;
+    for (size_t i = 0; i < mScene->instances.size(); ++i) {
+        const Instance& inst = mScene->instances[i];
+        if (!inSet(inst, set) || !kept(keep, i)) continue;
         const Mesh& mesh = mScene->meshes[inst.mesh];
         setInstanceUniforms(inst);
         emitImmediate(mesh);

@@ -20,7 +20,8 @@ class ImmediateSubmitter final : public Submitter {
 public:
     SubmitMode mode() const override { return SubmitMode::Immediate; }
     void upload(const Scene& scene) override;
-    void draw(DrawSet set) override;
+    using Submitter::draw;
+    void draw(DrawSet set, InstanceMask keep) override;
 
 private:
     /// Makes the driver draw what it has buffered: one GL call, no fragments.

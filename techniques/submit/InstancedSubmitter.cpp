@@ -26,13 +26,16 @@ void InstancedSubmitter::upload(const Scene& scene) {
     mBuffers.upload(scene);
     // One buffer holding, per draw set and mesh, that set's instances contiguously.
     std::vector<InstanceRecord> records;
+    mRecordInstance.clear();
     for (size_t s = 0; s < kDrawSetCount; ++s) {
         mBatches[s].clear();
         for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
             Batch b{m, uint32_t(records.size()), 0};
-            for (const Instance& inst : scene.instances) {
+            for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+                const Instance& inst = scene.instances[i];
                 if (inst.mesh != m || !inSet(inst, kSets[s])) continue;
                 records.push_back({inst.model, glm::vec4(inst.color, float(inst.objectId))});
+                mRecordInstance.push_back(i);
                 ++b.count;
             }
             if (b.count) mBatches[s].push_back(b);
@@ -56,16 +59,36 @@ void InstancedSubmitter::attachInstances(GLuint vao, GLuint buffer) {
     }
 }
 
-void InstancedSubmitter::draw(DrawSet set) {
+void InstancedSubmitter::drawRun(const Batch& b, uint32_t first, uint32_t count) {
+    const GLsizei indices = mBuffers.indexCount(b.mesh);
+    glDrawElementsInstancedBaseInstance(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr, GLsizei(count),
+                                        first);
+    mStats.drawCalls += 1;
+    mStats.triangles += uint64_t(indices) / 3 * count;
+    mStats.instances += count;
+    mStats.glCalls += 1;
+}
+
+void InstancedSubmitter::draw(DrawSet set, InstanceMask keep) {
     for (const Batch& b : mBatches[size_t(set)]) {
-        glBindVertexArray(mBuffers.vao(b.mesh));
-        GLsizei count = mBuffers.indexCount(b.mesh);
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr, GLsizei(b.count),
-                                            b.first);
-        mStats.drawCalls += 1;
-        mStats.triangles += uint64_t(count) / 3 * b.count;
-        mStats.instances += b.count;
-        mStats.glCalls += 2; // bind, draw
+        // The kept records of the batch as runs [first, end): the instance buffer stays as uploaded,
+        // a culled instance splits its batch instead of costing an upload.
+        bool bound = false;
+        for (uint32_t r = b.first, end = b.first + b.count; r < end;) {
+            if (!kept(keep, mRecordInstance[r])) {
+                ++r;
+                continue;
+            }
+            uint32_t runEnd = r + 1;
+            while (runEnd < end && kept(keep, mRecordInstance[runEnd])) ++runEnd;
+            if (!bound) {
+                glBindVertexArray(mBuffers.vao(b.mesh));
+                mStats.glCalls += 1;
+                bound = true;
+            }
+            drawRun(b, r, runEnd - r);
+            r = runEnd;
+        }
     }
     glBindVertexArray(0);
     mStats.glCalls += 1;

@@ -16,7 +16,8 @@ public:
     ~InstancedSubmitter() override;
     SubmitMode mode() const override { return SubmitMode::Instanced; }
     void upload(const Scene& scene) override;
-    void draw(DrawSet set) override;
+    using Submitter::draw;
+    void draw(DrawSet set, InstanceMask keep) override;
     Defines defines() const override { return {{"SB_INSTANCED", ""}}; }
 
     /// One instance as shaders/common/instance.glsl reads it with SB_INSTANCED.
@@ -35,10 +36,12 @@ private:
         uint32_t count = 0;
     };
     void release();
+    void drawRun(const Batch& b, uint32_t first, uint32_t count);
     const Scene* mScene = nullptr;
     MeshBuffers mBuffers;
     GLuint mInstanceBuffer = 0;
     std::array<std::vector<Batch>, kDrawSetCount> mBatches; ///< per DrawSet
+    std::vector<uint32_t> mRecordInstance; ///< per instance-buffer record: its index in Scene::instances
 };
 
 } // namespace sb

@@ -15,11 +15,11 @@ void RetainedSubmitter::upload(const Scene& scene) {
     });
 }
 
-void RetainedSubmitter::draw(DrawSet set) {
+void RetainedSubmitter::draw(DrawSet set, InstanceMask keep) {
     uint32_t boundMesh = UINT32_MAX;
     for (uint32_t i : mOrder) {
         const Instance& inst = mScene->instances[i];
-        if (!inSet(inst, set)) continue;
+        if (!inSet(inst, set) || !kept(keep, i)) continue;
         if (inst.mesh != boundMesh) {
             glBindVertexArray(mBuffers.vao(inst.mesh));
             boundMesh = inst.mesh;

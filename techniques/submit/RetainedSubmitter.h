@@ -12,7 +12,8 @@ class RetainedSubmitter final : public Submitter {
 public:
     SubmitMode mode() const override { return SubmitMode::Retained; }
     void upload(const Scene& scene) override;
-    void draw(DrawSet set) override;
+    using Submitter::draw;
+    void draw(DrawSet set, InstanceMask keep) override;
 
 private:
     const Scene* mScene = nullptr;

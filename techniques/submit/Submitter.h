@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "core/NameTable.h"
@@ -42,6 +43,11 @@ std::optional<SubmitMode> parseSubmitMode(const std::string& name);
 /// instances that cast no shadow (grounds, walls): what `projective` textures, its casters staying lit.
 enum class DrawSet { All, Casters, Receivers, NonCasters };
 constexpr size_t kDrawSetCount = 4;
+
+/// The instances a draw keeps, indexed like Scene::instances (non-zero = drawn): what a technique's
+/// per-frustum culling leaves (techniques/common/InstanceCulling.h), applied on top of the DrawSet.
+/// Empty keeps every instance of the set.
+using InstanceMask = std::span<const uint8_t>;
 
 /// What the submitter sent since the last reset (counters of the CSV row, per frame).
 struct SubmitStats {
@@ -77,7 +83,10 @@ public:
     /// Must be called with a current context; may be called again for a new scene.
     virtual void upload(const Scene& scene) = 0;
     /// Draws every instance of `set` with the currently bound program.
-    virtual void draw(DrawSet set) = 0;
+    void draw(DrawSet set) { draw(set, InstanceMask{}); }
+    /// Draws the instances of `set` that `keep` keeps. Culled instances cost no GL call; instanced
+    /// mode draws each run of consecutive kept instances of a mesh with one call.
+    virtual void draw(DrawSet set, InstanceMask keep) = 0;
     /// Defines the vertex stage needs for this mode (SB_INSTANCED for instanced).
     virtual Defines defines() const { return {}; }
 
@@ -91,8 +100,11 @@ public:
     /// so a technique that resets between its passes cannot hide a pass's draws.
     SubmitStats lifetimeStats() const { return mLifetime + mStats; }
 
-protected:
+    /// Whether `inst` belongs to `set` (also what per-pass culling narrows: techniques/common).
     static bool inSet(const Instance& inst, DrawSet set);
+
+protected:
+    static bool kept(InstanceMask keep, size_t instance) { return keep.empty() || keep[instance] != 0; }
     /// Sets the per-instance uniforms (locations 0 and 4) of the bound program.
     static void setInstanceUniforms(const Instance& inst);
     /// glBegin/glEnd stream of a mesh, one glVertexAttrib call per attribute and vertex (normal, then

@@ -342,6 +342,153 @@ const HardCase kCases[] = {
      0.01, 3, 3, 3,
      "(0.083%, 0% off the edge; 0.66/1.75/1.02) [none 83.04%]: seen from above, the judged ground lies "
      "inside the clamped frustum: the fan through the mouth is exact up to the staircase (83.04% before)"},
+    // Omnidirectional shadow maps (`cubemap`, `paraboloid`: Gerasimov 2004, GPU Gems ch. 12; Brabec et al.
+    // 2002), measured 2026-12-02 on llvmpipe in parentheses (wrong %, off the edge band; camera gain / light
+    // gain / flicker); bounds ~3x, the off-edge floor 0.01% as for shadowmap. Defaults: cube faces 1024^2,
+    // paraboloid halves 2048^2 (the same texel angle at their centres, 2/1024 rad).
+    {"omni_cubemap_seam", "omni_cube_seam", "seam", "cubemap", 384, 0.17, 0.01, 3, 6.5, 3,
+     "(0.057%, 0% off the edge; 1.06/2.15 = 28 px against 13/1.11): the shadow straddles the +X/-Y face "
+     "boundary; seamless cube filtering carries the bilinear footprint across, so the seam adds nothing "
+     "off the edge band (OmniShadowGLTest checks the closed form along the seam)"},
+    {"omni_cubemap_seam_six_pass", "omni_cube_seam", "seam", "cubemap:layered=false", 384, 0.17, 0.01, 3, 6.5,
+     3, "(the same numbers: six culled passes store the same depths as the layered pass)"},
+    {"omni_paraboloid_seam", "omni_cube_seam", "seam", "paraboloid", 384, 0.16, 0.01, 3, 7, 3,
+     "(0.053%, 0%; 0.91/2.23/1.07): 45 degrees off the front half's axis, between its centre and its rim; "
+     "the 48-ring sphere's triangles are small enough that the paraboloid's chords stay in the edge band"},
+    {"omni_cubemap_jack_o_lantern", "scenes/data/jack_o_lantern.json", "mid", "cubemap", 384, 0.47, 0.01, 4.2,
+     15, 3.8,
+     "(0.155%, 0.0007% off the edge; 1.39/5 = 5 px against 1/1.26) the light inside the closed genus-3 "
+     "shell: every face of the cube sees the shell, only the holes' projections are lit; the light gain is "
+     "the hole rims' texel staircase moving under a 0.01 degree turn, as volume's rows see"},
+    {"omni_cubemap_jack_o_lantern_six_pass", "scenes/data/jack_o_lantern.json", "mid",
+     "cubemap:layered=false", 384, 0.47, 0.01, 4.2, 15, 3.8, "(the same numbers as layered)"},
+    {"omni_paraboloid_jack_o_lantern", "scenes/data/jack_o_lantern.json", "mid", "paraboloid", 384, 0.45,
+     0.01, 5.6, 24, 3.7,
+     "(0.151%, 0%; 1.87/8 = 8 px against 1/1.24): the shell crosses the halves' plane all round; the mouth "
+     "(12..40 degrees below it) lies near the front half's rim, where its texels are smallest, so the fan "
+     "on the ground is as sharp as the cube's; the hole rims are what a light turn moves"},
+    {"omni_cubemap_point_light", "scenes/data/point_light.json", "far", "cubemap", 384, 0.24, 0.025, 3.2, 3,
+     3,
+     "(0.079%, 0.008% = 1 px off the edge; 1.07/0 (0/0)/1.01): the torch among the pillars, its range "
+     "culling the far ones from the layered pass"},
+    {"omni_paraboloid_point_light", "scenes/data/point_light.json", "far", "paraboloid", 384, 0.85, 0.01, 3,
+     3, 3,
+     "(0.28%, 0% off the edge, false shadow 0.007%; 0.93/0/1.01): 3.5x the cube's error, all missing "
+     "shadow on the edge band: the crates (one quad a face) and pillars (24 segments) are coarse for the "
+     "paraboloid's per-vertex projection, their edges drawn as chords (its known limit: tessellation "
+     "matters; at --tess-factor 4, 0.072% against the cube's 0.065%)"},
+    {"omni_cubemap_seam_16", "omni_cube_seam", "seam", "cubemap:resolution=16", 384, 100, 100, 1e9, 1e9, 1e9,
+     "negative control (3.50% off the edge band): 16^2 faces put a texel of 0.2 rad on the sphere, the "
+     "shadow turns into blocks; the harness must see the map's resolution",
+     0.05f, 1.0},
+    // Cascaded shadow maps (`cascaded`, techniques/shadowmap/CascadedTechnique.h): cascade transitions,
+    // measured 2026-12-02 on llvmpipe (wrong %, off the edge band; camera gain / light gain / flicker).
+    // A camera 1.5 above the ground looking along it beside a 120-unit wall, whose shadow's straight
+    // edge runs from 4 units ahead across all four cascades (splits at view depths 10.2, 22.8 and
+    // 49.4), and posts whose shadows lie at every depth: shadow edges cross every split and every
+    // blend band. No pixel may go wrong off the edge band at a split, blended or not; what is left is
+    // each cascade's staircase on the band, finer near the camera than shadowmap's one map (its row
+    // below, for comparison).
+    {"cascaded_transition", "cascade_transition", "ground", "cascaded", 384, 0.2, 0.01, 5, 3, 3,
+     "(0.069%, 0% off the edge, false shadow 0.024%; 1.68/0.28/1.02) [shadowmap 0.130%]: the four "
+     "cascades' staircases on the edge band, nothing at the splits"},
+    {"cascaded_transition_no_blend", "cascade_transition", "ground", "cascaded:blend=0", 384, 0.2, 0.01, 5, 3,
+     3,
+     "(0.071%, 0%; 1.68/0.28/1.02): a hard switch at each split; the texel size jumps there but no sample "
+     "leaves the cascade that covers it"},
+    {"cascaded_transition_wide_blend", "cascade_transition", "ground", "cascaded:blend=0.5", 384, 0.2, 0.01,
+     5, 3, 3,
+     "(0.065%, 0%; 1.60/0.33/1.02): half of each cascade blended into the next, whose fit is widened to "
+     "cover that band: no false light where the next map would have ended"},
+    {"cascaded_transition_tight", "cascade_transition", "ground", "cascaded:stabilize=false", 384, 0.2, 0.01,
+     5, 3, 3,
+     "(0.055%, 0%; 1.60/0.39/1.01): the tight boxes have smaller texels than the spheres (fewer wrong); "
+     "their shimmer under camera motion is CascadedGLTest's negative control, not visible in these "
+     "sub-pixel gains"},
+    {"cascaded_transition_one_cascade", "cascade_transition", "ground", "cascaded:cascades=1", 384, 0.9, 0.13,
+     5, 3, 3,
+     "(0.313%, 0.044% off the edge; 1.64/0.28/1.04): one square stable map over the whole view (clamped to "
+     "the casters' 120 x 10 bounds as 120 x 120): 6 cm texels cover many pixels near the camera, so the "
+     "staircase leaves the edge band; bounded as the reason cascades exist"},
+    {"cascaded_transition_shadowmap", "cascade_transition", "ground", "shadowmap", 384, 0.4, 0.01, 5, 3, 3,
+     "(0.130%, 0%; 1.56/0.72/1.04): shadowmap's one map fitted to the casters, for comparison: about twice "
+     "cascaded's error on the same pixels"},
+    {"cascaded_transition_top", "cascade_transition", "top", "cascaded", 384, 0.015, 0.01, 3, 3, 3,
+     "(0.0047%, 0%; 1.06/0/1.00): the same scene from 150 above, every receiver at nearly one depth: the "
+     "splits are close together and the cascades alike; no seam where they meet"},
+    // pcss (Fernando 2005, Percentage-Closer Soft Shadows) and shadowmap's normal-offset and
+    // receiver-plane biases, measured 2026-12-02 on llvmpipe in parentheses (wrong %, off the edge band;
+    // camera gain / light gain / flicker); ~3x headroom. Against a soft reference (pcss_contact's 5 degree
+    // sun) the 0.5 threshold judges where the penumbra's middle lies.
+    {"pcss_contact_top", "pcss_contact", "top", "pcss", 384, 0.2, 0.01, 4, 15, 3,
+     "(0.068%, 0% off the edge; 1.20/5 = 5 px against 1/1.01): a box and a sphere touching the ground: at "
+     "the contact the blocker's depth is the receiver's, w = L (d_r - d_b) goes to 0 and the filter to its "
+     "one-texel floor, so the shadow stays dark and hard there; finite everywhere (no 0 / 0 in the "
+     "average blocker depth: a receiver with no blocker returns lit before dividing). PcssGLTest checks "
+     "the ground at the shadowed faces' foot is below 0.05"},
+    {"pcss_contact_low", "pcss_contact", "low", "pcss", 384, 0.35, 0.01, 3, 3, 3,
+     "(0.112%, 0% off the edge; 0.95/0.6/1.02): the same from low beside the sphere, its contact point and "
+     "the box's shadowed foot in view"},
+    {"pcss_grazing_80", "grazing_80", "side", "pcss", 384, 0.05, 0.01, 5, 5, 5,
+     "(0%; 0/0/0): a point-shaped sun 80 degrees from the ground's normal: the 1 degree default emitter; "
+     "the receiver-plane bias on every tap keeps the wide search and filter off the grazing ground",
+     0.0f},
+    {"shadowmap_grazing_80_normal_offset", "grazing_80", "side",
+     "shadowmap:bias_constant=0:bias_slope=0:normal_offset=2", 384, 0.01, 0.01, 10, 5, 25,
+     "(0.001% = 1 px, the same off the edge; camera gain 2 = 2 px against 0, flicker 8 px): "
+     "glPolygonOffset off, the lookup moved 2 texels along the normal times 1 - n.l (Holbert 2011): the "
+     "acne of shadowmap_grazing_80_no_bias (1.76% off the edge band) is gone",
+     0.0f},
+    {"shadowmap_grazing_80_receiver_plane", "grazing_80", "side",
+     "shadowmap:bias_constant=0:bias_slope=0:receiver_plane=true", 384, 0.01, 0.01, 5, 5, 5,
+     "(0%; 0/0/0): glPolygonOffset off, the receiver-plane depth bias (Isidoro 2006) with its texel "
+     "quantisation term: no acne either",
+     0.0f},
+    // Filterable shadow maps (`vsm`, `esm`; member "moments"), measured 2026-12-02 on llvmpipe (wrong %, off
+    // the edge band; camera gain / light gain / flicker). Both filter the map, so their edges are soft
+    // against the hard reference and the error sits on the edge band; bounds ~3x the measured values. Gains
+    // whose reference count is 0 are raw pixel counts.
+    {"moments_vsm_baseline", "baseline", "top", "vsm", 384, 0.05, 0.01, 3, 4.5, 3,
+     "(0.002%, none off the edge; 1.00/1.50/1.00): the sphere's ellipse, a 2 mm texel under a 27 mm pixel"},
+    {"moments_esm_baseline", "baseline", "top", "esm", 384, 0.05, 0.01, 3, 3, 3,
+     "(0.001%, none off the edge; 0.84/1.00/1.00) the same at the default exponent 160"},
+    // VSM light bleeding (Lauritzen 2007, section 8.4.3): in the lower plate's shadow, next to the upper
+    // plate's shadow edge, a filter region holds both plates' depths and Chebyshev's bound reads the ground
+    // (1/11 of the plates' depth gap behind the lower one) up to ~0.7 lit. The view holds no other edge.
+    {"moments_vsm_bleeding_known_limit", "moments_bleeding", "crossing", "vsm:bleed_reduction=0", 384, 2.4,
+     2.4, 20, 20, 3500,
+     "known limit, bounded both ways (0.781% = 3 pixel rows along the edge, all off the edge band; camera "
+     "and "
+     "light gain 0/0, flicker 1152 px against 0 of the reference): the halo is the bound's, not a bug; the "
+     "default bleed_reduction 0.2 leaves the same 3 rows (0.781%), 0.3 two (0.521%), 0.4 one (0.260%)",
+     0.05f, 0.25},
+    {"moments_vsm_bleeding_reduced", "moments_bleeding", "crossing", "vsm:bleed_reduction=0.5", 384, 0.05,
+     0.05, 20, 20, 20,
+     "(0%, RMSE 0.030 against 0.067 without; 0/0/0): linstep(0.5, 1, p_max) cuts the halo's p_max <= ~0.7 "
+     "below 0.5; the bound 0.05 sits under the unreduced row's lower bound 0.25, so this row proves the "
+     "reduction helps"},
+    {"moments_esm_bleeding", "moments_bleeding", "crossing", "esm", 384, 0.05, 0.05, 20, 20, 20,
+     "(0%, RMSE 1e-4; 0/0/0): ESM has no such halo: the ground behind the lower plate gets "
+     "exp(-c (t - d_B)) ~ 0 whatever the upper plate's share of the region"},
+    // ESM at the property's maximum exponent: exp(c d) overflows a float for c d > 88.7, i.e. every depth
+    // above 0.18 at c = 500; the log-space filter and lookup never form it (NaN/Inf/out-of-range asserted 0).
+    {"moments_esm_max_exponent_baseline", "baseline", "top", "esm:exponent=500", 384, 0.05, 0.01, 3, 3, 3,
+     "(0.001%, none off the edge; 0.80/0.50/1.00): c = 500, finite, the edge as at c = 160"},
+    {"moments_esm_max_exponent_aircraft", "scenes/data/aircraft.json", "mid", "esm:exponent=500", 384, 2.4,
+     0.01, 3, 3, 3,
+     "(0.808%, 0.002% off the edge; 0.86/1.08/0.81; shadowmap 0.311%, esm at c = 160 0.664%): 200 aircraft "
+     "self-shadowing at c = 500; the filtered 1024^2 map's soft thin wing shadows against the hard reference "
+     "are the edge band's error"},
+    {"moments_esm_max_exponent_teapot_near", "scenes/data/teapot.json", "near", "esm:exponent=500", 384, 3.8,
+     2.8, 3, 3, 3,
+     "(1.259%, 0.928% off the edge, false shadow 0.025%; 0.39/0.33/0.45; shadowmap 0.388% / 0.133%, esm "
+     "at c = 160 1.089% / 0.754%, vsm 0.795% / 0.526%): close up, a map texel covers several pixels, so the "
+     "filtered edge is wider than the 1-px band, and the error is false light: beside an edge the texels of "
+     "a "
+     "receiver sloped in light space lie up to a texel's slope behind it and weigh exp(c slope) > 1, which "
+     "moves the 0.5 crossing into the shadow, more at larger c"},
+    {"moments_vsm_teapot_near", "scenes/data/teapot.json", "near", "vsm", 384, 2.4, 1.6, 3, 6, 3,
+     "(0.795%, 0.526% off the edge, false shadow 0.205%; 0.59/2.00/0.70): the same close-up with VSM"},
 };
 
 class HardCases : public ::testing::TestWithParam<HardCase> {};

@@ -1,0 +1,291 @@
+#include "bench/ci/CiCommand.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "bench/ci/CiSuite.h"
+#include "bench/ci/GateReport.h"
+#include "bench/ci/InstructionLayer.h"
+#include "bench/ci/SuiteRunner.h"
+#include "bench/ci/WallLayer.h"
+#include "bench/ci/WorkGate.h"
+#include "bench/output/AtomicFile.h"
+#include "bench/output/CsvWriter.h"
+#include "bench/run/CliParse.h"
+#include "bench/sweep/ChildProcess.h"
+#include "core/Error.h"
+#include "core/JsonReader.h"
+#include "core/Paths.h"
+
+namespace sb {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kFooter = R"(Examples:
+  bench ci                                      the committed suite against the committed baseline
+  bench ci --quick                              layer A only (exact work; seconds)
+  bench ci --update                             after an intended change: rewrite results/ci/baseline/
+  bench ci --base-bench /tmp/base/bench         this build against another build, all three layers
+  bench ci --base-env LP_NUM_THREADS=2 --head-env LP_NUM_THREADS=1 --layers A,C   a driver A/B
+  SHADOWBENCH_INJECT=extra_fullscreen_pass bench ci --layers A   the proof: a known regression
+
+Layers: A exact work per pass (any increase fails; a decrease passes and asks for --update),
+B instructions per frame under valgrind (fails beyond max(0.5%, the A/A pair)), C wall time
+interleaved with an A/A control (fails beyond max(5%, the control's noise) at p < alpha).
+Exit codes: 0 pass, 1 a gating layer failed, 2 bad input, 3 the machine lacks what a layer needs.)";
+
+struct CiOptions {
+    std::string suitePath, baselineDir, outDir = "ci-out";
+    std::string layers = "A,B,C", advisory;
+    bool update = false, quick = false;
+    std::vector<std::string> configs, baseEnv, headEnv;
+    std::string baseBench, headBench;
+    WallLayerOptions wall;
+    std::string scheme = "abba";
+};
+
+std::vector<std::pair<std::string, std::string>> parseEnv(const std::vector<std::string>& items,
+                                                          const char* option) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const std::string& item : items) {
+        const size_t eq = item.find('=');
+        if (eq == 0 || eq == std::string::npos)
+            throw Error(std::string(option) + " " + item + ": expected NAME=VALUE");
+        out.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+    }
+    return out;
+}
+
+bool hasLayer(const std::string& layers, char layer) {
+    return layers.find(layer) != std::string::npos;
+}
+
+std::string defaultPath(const std::string& given, const char* relative) {
+    if (!given.empty()) return given;
+    const std::string found = Paths::findResource(relative);
+    if (found.empty())
+        throw Error(std::string("cannot find ") + relative + " (give its path)", ExitCode::BadInput);
+    return found;
+}
+
+/// Layer A's rows of one side: every selected configuration's census.
+CsvTable workRows(const CiSuite& suite, const std::vector<const CiConfig*>& configs, const CiSide& side) {
+    std::vector<CsvRow> rows;
+    for (const CiConfig* c : configs) {
+        std::cerr << "ci: work " << c->name << " (" << side.describe() << ")\n";
+        rows.push_back(SuiteRunner::run(suite, *c, side, {suite.work.frames, suite.work.warmup, {}, {}}));
+    }
+    return CsvWriter::toTable(rows);
+}
+
+GateLayer judgeWork(const WorkComparison& w, GateReport& report, const std::string& baseName) {
+    GateLayer layer{"A: exact work", true, false, w.pass() ? "PASS" : "FAIL", {}};
+    for (const WorkChange& c : w.increases) layer.details.push_back("increase: " + c.describe());
+    for (const WorkChange& c : w.decreases) layer.details.push_back("decrease: " + c.describe());
+    for (const std::string& c : w.onlyInBase)
+        layer.details.push_back(c + ": in the " + baseName + " only (not measured now)");
+    for (const std::string& c : w.onlyInHead)
+        layer.details.push_back(c + ": not in the " + baseName + " (add it with --update)");
+    for (const std::string& c : w.notComparable) layer.details.push_back("not comparable: " + c);
+    if (!w.decreases.empty() && w.pass())
+        layer.details.push_back("less work than the " + baseName + ": record it with bench ci --update");
+    layer.details.push_back(std::to_string(w.metrics) + " counts of " + std::to_string(w.configs) +
+                            " configurations compared exactly");
+    for (GateConfigRow& row : report.rows) {
+        std::string worst;
+        double worstPct = 0;
+        int changes = 0;
+        for (const WorkChange& c : w.increases) {
+            if (c.config != row.config) continue;
+            ++changes;
+            const double pct = c.base == 0 ? 1e300 : (c.head - c.base) / c.base;
+            if (worst.empty() || pct > worstPct)
+                worst = c.describe().substr(c.config.size() + 2), worstPct = pct;
+        }
+        if (changes)
+            row.work = {worst + (changes > 1 ? " and " + std::to_string(changes - 1) + " more" : ""), "FAIL"};
+        else
+            row.work = {"exact", "PASS"};
+    }
+    return layer;
+}
+
+/// What the committed baseline keeps of layer A's rows: the configuration's identity and its exact
+/// counts, no times or timestamps, so that its diff in review shows only work that changed.
+CsvTable baselineColumns(const CsvTable& rows) {
+    static const std::vector<std::string> kKeep = {"ci_config", "status",     "renderer", "gl_version",
+                                                   "technique", "properties", "scene",    "instances",
+                                                   "submit",    "width",      "height",   "lights"};
+    std::vector<size_t> keep;
+    for (size_t c = 0; c < rows.header.size(); ++c)
+        if (std::find(kKeep.begin(), kKeep.end(), rows.header[c]) != kKeep.end() ||
+            WorkGate::isWorkColumn(rows.header[c]))
+            keep.push_back(c);
+    CsvTable out;
+    for (size_t c : keep) out.header.push_back(rows.header[c]);
+    for (const auto& row : rows.rows) {
+        out.rows.emplace_back();
+        for (size_t c : keep) out.rows.back().push_back(row[c]);
+    }
+    return out;
+}
+
+/// The baseline's rows of the configurations run now (--configs runs a subset).
+CsvTable onlyConfigs(CsvTable table, const std::vector<const CiConfig*>& configs) {
+    auto column = std::find(table.header.begin(), table.header.end(), "ci_config");
+    if (column == table.header.end()) return table;
+    const size_t c = size_t(column - table.header.begin());
+    std::erase_if(table.rows, [&](const std::vector<std::string>& row) {
+        return std::none_of(configs.begin(), configs.end(),
+                            [&](const CiConfig* k) { return k->name == row[c]; });
+    });
+    return table;
+}
+
+std::string joinArgs(int argc, char** argv) {
+    std::string out = "bench";
+    for (int i = 0; i < argc; ++i) out += std::string(" ") + argv[i];
+    return out;
+}
+
+void writeRows(const std::string& path, const CsvTable& table) {
+    if (!table.rows.empty()) CsvWriter::writeTable(path, table);
+}
+
+} // namespace
+
+int CiCommand::main(int argc, char** argv) {
+    CLI::App app{"bench ci: the perf gate on exact work, instructions per frame and wall time", "bench ci"};
+    app.footer(kFooter);
+    CiOptions o;
+    app.add_option("--suite", o.suitePath, "suite definition (default results/ci/suite.json)");
+    app.add_option("--baseline", o.baselineDir, "committed baseline folder (default results/ci/baseline)");
+    app.add_option("--out", o.outDir, "where report.md, report.json and the rows go")->capture_default_str();
+    app.add_option("--layers", o.layers, "layers to run, from A,B,C")->capture_default_str();
+    app.add_option("--advisory", o.advisory, "layers reported but never failing the gate (e.g. C)");
+    app.add_flag("--quick", o.quick, "layer A only");
+    app.add_flag("--update", o.update,
+                 "rewrite the baseline from this build (layers A and B) instead of judging");
+    app.add_option("--configs", o.configs, "only these configurations (comma-separated)")->delimiter(',');
+    app.add_option("--base-bench", o.baseBench, "the base build's bench binary (measured now, interleaved)");
+    app.add_option("--head-bench", o.headBench, "the head's bench binary (default: this one)");
+    app.add_option("--base-env", o.baseEnv, "NAME=VALUE for the base's runs (repeatable)");
+    app.add_option("--head-env", o.headEnv, "NAME=VALUE for the head's runs (repeatable)");
+    app.add_option("--rounds", o.wall.rounds, "layer C rounds (default: the suite's)")
+        ->check(CLI::Range(2, 1000));
+    app.add_option("--seed", o.wall.seed, "layer C schedule seed (random scheme)");
+    app.add_option("--scheme", o.scheme, "layer C order per round: abba or random")->capture_default_str();
+    app.add_option("--alpha", o.wall.familyAlpha, "layer C family-wise false-alarm rate per run")
+        ->check(CLI::Range(1e-9, 0.5))
+        ->capture_default_str();
+    app.add_option("--floor", o.wall.floor, "layer C: the smallest slowdown that may fail (fraction)")
+        ->check(CLI::Range(0.0, 10.0))
+        ->capture_default_str();
+    if (int code = parseCli(app, argc, argv, "bench ci"); code >= 0) return code;
+    if (o.quick) o.layers = "A";
+    for (char c : o.layers + o.advisory)
+        if (c != ',' && c != 'A' && c != 'B' && c != 'C')
+            throw Error("--layers/--advisory: '" + std::string(1, c) + "' is not a layer (A, B, C)");
+    if (o.scheme != "abba" && o.scheme != "random") throw Error("--scheme " + o.scheme + ": abba or random");
+    o.wall.scheme = o.scheme == "abba" ? ci::Scheme::Abba : ci::Scheme::Random;
+
+    const CiSuite suite = CiSuite::load(defaultPath(o.suitePath, "results/ci/suite.json"));
+    if (!app.count("--rounds")) o.wall.rounds = suite.wall.rounds;
+    const std::string baselineDir = o.baselineDir.empty()
+                                        ? fs::path(suite.path).parent_path().append("baseline").string()
+                                        : o.baselineDir;
+    const CiSide head{"head", o.headBench.empty() ? ChildProcess::selfExecutable() : o.headBench,
+                      parseEnv(o.headEnv, "--head-env")};
+    std::optional<CiSide> base;
+    if (!o.baseBench.empty() || !o.baseEnv.empty())
+        base =
+            CiSide{"base", o.baseBench.empty() ? head.bench : o.baseBench, parseEnv(o.baseEnv, "--base-env")};
+    if (o.update && base)
+        throw Error("--update writes the head's baseline; it takes no --base-bench/--base-env");
+    fs::create_directories(o.outDir);
+    AtomicFile::checkWritable((fs::path(o.outDir) / "report.md").string(), "the report");
+
+    GateReport report;
+    report.title = "shadowbench perf gate";
+    report.reproduce = joinArgs(argc, argv);
+    report.about.push_back("suite " + suite.path + " (" + std::to_string(suite.configs.size()) +
+                           " configurations)");
+    report.about.push_back("head: " + head.describe() + " " + head.bench);
+    report.about.push_back(base ? "base: " + base->describe() + " " + base->bench + ", measured now"
+                                : "base: the committed baseline " + baselineDir);
+    for (const CiConfig* c : suite.select({}, o.configs))
+        report.rows.push_back({c->name, c->bound, {}, {}, {}});
+    auto row = [&](const std::string& name) -> GateConfigRow& {
+        for (GateConfigRow& r : report.rows)
+            if (r.config == name) return r;
+        throw Error("no report row " + name, ExitCode::Failure);
+    };
+
+    if (hasLayer(o.layers, 'A')) {
+        const auto configs = suite.select(suite.work, o.configs);
+        const CsvTable headRows = workRows(suite, configs, head);
+        writeRows((fs::path(o.outDir) / "work.csv").string(), headRows);
+        if (o.update) {
+            fs::create_directories(baselineDir);
+            CsvWriter::writeTable((fs::path(baselineDir) / "work.csv").string(), baselineColumns(headRows));
+            std::cout << "ci: layer A baseline rewritten: " << baselineDir << "/work.csv ("
+                      << headRows.rows.size() << " configurations)\n";
+        } else {
+            const std::string basePath = (fs::path(baselineDir) / "work.csv").string();
+            if (!base && !fs::exists(basePath))
+                throw Error("no committed baseline " + basePath + " (write one with bench ci --update)");
+            const CsvTable baseRows =
+                base ? workRows(suite, configs, *base) : onlyConfigs(CsvWriter::read(basePath), configs);
+            if (base) writeRows((fs::path(o.outDir) / "work_base.csv").string(), baseRows);
+            GateLayer layer =
+                judgeWork(WorkGate::compare(baseRows, headRows), report, base ? "base" : "baseline");
+            layer.advisory = hasLayer(o.advisory, 'A');
+            report.layers.push_back(layer);
+        }
+    }
+    if (hasLayer(o.layers, 'B')) {
+        const auto configs = suite.select(suite.instructions, o.configs);
+        const std::string recordPath = (fs::path(baselineDir) / "instructions.json").string();
+        if (!configs.empty()) {
+            nlohmann::json committed;
+            if (!o.update && !base && fs::exists(recordPath))
+                committed = JsonReader::parse(Paths::readTextFile(recordPath), recordPath);
+            InstructionLayerResult r = InstructionLayer::run(suite, configs, base, head, committed,
+                                                             (fs::path(o.outDir) / "callgrind").string());
+            CsvWriter::writeText((fs::path(o.outDir) / "instructions.json").string(),
+                                 r.record.dump(2) + "\n");
+            if (o.update) {
+                fs::create_directories(baselineDir);
+                CsvWriter::writeText(recordPath, r.record.dump(2) + "\n");
+                std::cout << "ci: layer B baseline rewritten: " << recordPath << " (" << configs.size()
+                          << " configurations)\n";
+            } else {
+                r.layer.advisory = hasLayer(o.advisory, 'B');
+                for (const auto& [name, cell] : r.cells) row(name).instructions = cell;
+                report.layers.push_back(r.layer);
+            }
+        }
+    }
+    if (hasLayer(o.layers, 'C') && !o.update) {
+        const auto configs = suite.select(suite.wall, o.configs);
+        if (!configs.empty()) {
+            WallLayerResult r = WallLayer::run(suite, configs, base, head, o.wall);
+            r.layer.advisory = hasLayer(o.advisory, 'C');
+            for (const auto& [name, cell] : r.cells) row(name).wall = cell;
+            writeRows((fs::path(o.outDir) / "wall.csv").string(), CsvWriter::toTable(r.runs));
+            report.layers.push_back(r.layer);
+        }
+    }
+    if (o.update) return 0;
+    const std::string md = report.markdown();
+    CsvWriter::writeText((fs::path(o.outDir) / "report.md").string(), md);
+    CsvWriter::writeText((fs::path(o.outDir) / "report.json").string(), report.json().dump(2) + "\n");
+    std::cout << md;
+    return report.failed() ? int(ExitCode::Failure) : 0;
+}
+
+} // namespace sb

@@ -1,0 +1,54 @@
+#pragma once
+// The perf gate's suite (results/ci/suite.json; README "Gate a change"): named configurations, each one
+// technique with its run options, and which of them each layer runs. A configuration's name is its
+// identity in the baseline, so renaming one is a baseline change.
+//
+//   {"name": "shadowbench-ci",
+//    "args": ["--size", "160x160", "--seed", "7"],          given to every run; a config's own option
+//                                                           of the same name replaces the suite's
+//    "work": {"frames": 1, "warmup": 0},                    layer A: the census frame after these
+//    "instructions": {"frames": 3, "warmup": 1, "configs": ["none_aircraft"]},   layer B (valgrind)
+//    "wall": {"frames": 10, "warmup": 3, "rounds": 9, "control": "none_aircraft",
+//             "configs": ["none_aircraft"]},                                      layer C
+//    "configs": [{"name": "none_aircraft", "bound": "balanced",
+//                 "args": ["-t", "none", "--instances", "50"]}]}
+//
+// "bound" says which stage the configuration is meant to load (cpu, vertex, fill, balanced); it is
+// reported, not measured here (bench bottleneck measures it).
+#include <string>
+#include <vector>
+
+namespace sb {
+
+struct CiConfig {
+    std::string name;  ///< [a-z0-9_]+, unique
+    std::string bound; ///< cpu | vertex | fill | balanced
+    std::vector<std::string> args;
+};
+
+struct CiLayerRuns {
+    int frames = 1;
+    int warmup = 0;
+    int rounds = 1;                   ///< layer C only
+    std::vector<std::string> configs; ///< names; all configurations when the file gives none (layer A)
+    std::string control;              ///< layer C: the configuration of the A/A control
+};
+
+struct CiSuite {
+    std::string name;
+    std::string path;              ///< where it was read from
+    std::vector<std::string> args; ///< common to every run
+    std::vector<CiConfig> configs;
+    CiLayerRuns work, instructions, wall;
+
+    /// Reads and checks a suite file; every error is sb::Error(BadInput) naming the file and the JSON
+    /// path (unknown keys, a name given twice, a layer naming an unknown configuration, a
+    /// configuration without exactly one -t/--technique).
+    static CiSuite load(const std::string& path);
+    const CiConfig& config(const std::string& wanted) const;
+    /// The configurations a layer runs, in the suite's order, restricted to `only` when non-empty
+    /// (an unknown name in `only` is bad input).
+    std::vector<const CiConfig*> select(const CiLayerRuns& layer, const std::vector<std::string>& only) const;
+};
+
+} // namespace sb

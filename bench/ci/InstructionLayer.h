@@ -1,0 +1,44 @@
+#pragma once
+// Layer B of the perf gate: instructions per frame of the suite's instruction configurations, each run
+// once under callgrind (InstructionCount.h) with llvmpipe pinned, plus an A/A pair (the first
+// configuration run a second time) in every job. The A/A pair is the instrument's check: if it
+// disagrees by more than 1e-4 the layer gives no verdict ("instrument unstable"). Otherwise a
+// configuration fails when its instructions per frame grew by more than max(0.5%, the A/A difference).
+// Against the committed baseline (results/ci/baseline/instructions.json) the fingerprints must match
+// (Fingerprint.h): another CPU, Mesa, LLVM, valgrind or glibc gives no verdict, never a false alarm.
+// Against a base measured now, the differences of the fingerprints are listed (a driver A/B differs on
+// purpose).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/ci/CiSuite.h"
+#include "bench/ci/GateReport.h"
+#include "bench/ci/SuiteRunner.h"
+#include "bench/ci/TechniqueInstructions.h"
+
+namespace sb {
+
+struct InstructionLayerResult {
+    GateLayer layer;
+    std::vector<std::pair<std::string, LayerCell>> cells;
+    nlohmann::json
+        record; ///< {"fingerprint", "configs": {name: TechniqueInstructions::toJson}}: the baseline format
+};
+
+class InstructionLayer {
+public:
+    static constexpr double kFloor = 0.005;        ///< 0.5%: the smallest change that fails
+    static constexpr double kUnstableAbove = 1e-4; ///< A/A disagreement that voids the layer
+
+    /// Measures `head` (and `base` when given) and judges against `base`, else against `baseline`
+    /// (the committed record; null: none yet, the layer reports the counts and gives no verdict).
+    /// `workDir` receives the callgrind files. Throws Error(Unsupported) when valgrind is missing.
+    static InstructionLayerResult run(const CiSuite& suite, const std::vector<const CiConfig*>& configs,
+                                      const std::optional<CiSide>& base, const CiSide& head,
+                                      const nlohmann::json& baseline, const std::string& workDir);
+};
+
+} // namespace sb

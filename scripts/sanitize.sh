@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Builds the asan preset (GCC, AddressSanitizer + UndefinedBehaviorSanitizer, -O1 -g, in build-asan/)
+# and runs the tests of the given ctest labels under it (default: unit cli), with the options and the
+# library-leak suppressions of tools/sanitizers/. Only the test binaries of those labels, bench and
+# handloop are built. Any sanitizer report fails the test that triggered it, so the script fails too.
+# Usage: bash scripts/sanitize.sh [label ...]     e.g. bash scripts/sanitize.sh unit cli gl
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+labels=("$@")
+[ ${#labels[@]} -gt 0 ] || labels=(unit cli)
+
+bash "$root/scripts/install-deps.sh"
+# The options the runs get, also during the build: gtest_discover_tests runs each test binary to list
+# its tests, and a leak report there would fail the build instead of the test.
+# shellcheck source=tools/sanitizers/options.sh
+source "$root/tools/sanitizers/options.sh"
+
+# The test binaries a label needs, by the naming rule of tests/CMakeLists.txt.
+targets=(bench handloop)
+for src in "$root"/tests/*Test.cpp; do
+  name="$(basename "$src" .cpp)"
+  case "$name" in *GLTest) label=gl ;; *CliTest) label=cli ;; *) label=unit ;; esac
+  for want in "${labels[@]}"; do [ "$want" = "$label" ] && targets+=("$name"); done
+done
+for want in "${labels[@]}"; do [ "$want" = hard ] && targets+=(HardCaseTest); done
+
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+cd "$root"
+start=$SECONDS
+cmake --preset asan "${launcher[@]}" >/dev/null
+cmake --build build-asan --parallel "$(nproc)" --target "${targets[@]}"
+echo "sanitize: build ${#targets[@]} targets: $((SECONDS - start)) s"
+
+cd "$root/build-asan"
+# Like scripts/test.sh: without a display, Xvfb, so the GLFW backend is tested too.
+wrap=()
+if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
+  wrap=(xvfb-run -a -s "-screen 0 1280x1024x24")
+fi
+# Left out: Cli.WindowViewerRendersAndQuits (the GLFW window on Xvfb). Its leaks are allocated inside
+# the GLX driver that Mesa dlcloses before exit, so LeakSanitizer sees "<unknown module>" frames and no
+# suppression can name the library; the same test runs in the normal build.
+# handshadow switches LeakSanitizer off for itself (bench/handshadow/HandShadow.cpp says why); ASan and
+# UBSan still run in it.
+exclude='^Cli\.WindowViewerRendersAndQuits$'
+status=0
+summary=()
+for label in "${labels[@]}"; do
+  start=$SECONDS
+  rc=0
+  "${wrap[@]}" ctest --output-on-failure --parallel "$(nproc)" -L "^${label}\$" -E "$exclude" || rc=$?
+  summary+=("$(printf '%-6s %5d s  %s' "$label" $((SECONDS - start)) "$([ $rc -eq 0 ] && echo ok || echo FAILED)")")
+  [ $rc -eq 0 ] || status=1
+done
+echo "sanitize: ctest under ASan + UBSan (build-asan/)"
+printf '  %s\n' "${summary[@]}"
+exit $status

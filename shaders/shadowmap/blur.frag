@@ -1,0 +1,46 @@
+// Filterable shadow maps' separable Gaussian (techniques/shadowmap/SeparableBlur.h): one direction,
+// 2 BLUR_RADIUS + 1 taps one texel apart with the weights uWeights[|k|] the CPU computed (the integral of
+// the truncated Gaussian over each texel; they sum to 1). Texels outside the map read as the edge texel.
+// BLUR_FROM_ARRAY: the horizontal pass, layer uLayer of the map into the intermediate 2D texture;
+// otherwise the vertical pass, the intermediate back into the layer (the bound framebuffer's).
+// LOG_SPACE (`esm`): the channel holds depth d; the pass writes log(sum w_k exp(c d_k)) / c (Salvi 2008,
+// Rendering Filtered Shadows with Exponential Shadow Maps, ShaderX6), as
+// m + log(sum w_k exp(c (d_k - m))) / c with m the largest d_k: every exp() is at most 1 and the sum at
+// least the largest tap's weight, so no exponent overflows or takes the log of 0. Otherwise (`vsm`) every
+// channel is filtered linearly.
+#ifdef BLUR_FROM_ARRAY
+layout(binding = 0) uniform sampler2DArray uSource;
+layout(location = 0) uniform int uLayer;
+const ivec2 kStep = ivec2(1, 0);
+vec4 texel(ivec2 p) { return texelFetch(uSource, ivec3(p, uLayer), 0); }
+#else
+layout(binding = 0) uniform sampler2D uSource;
+const ivec2 kStep = ivec2(0, 1);
+vec4 texel(ivec2 p) { return texelFetch(uSource, p, 0); }
+#endif
+layout(location = 1) uniform float uExponent;
+layout(location = 2) uniform float uWeights[BLUR_RADIUS + 1];
+layout(location = 0) out vec4 oValue;
+
+vec4 tap(ivec2 p, int k, ivec2 size) { return texel(clamp(p + k * kStep, ivec2(0), size - 1)); }
+
+void main() {
+    ivec2 size = textureSize(uSource, 0).xy;
+    ivec2 p = ivec2(gl_FragCoord.xy);
+#ifdef LOG_SPACE
+    float d[2 * BLUR_RADIUS + 1];
+    float m = -3.0e38;
+    for (int k = -BLUR_RADIUS; k <= BLUR_RADIUS; ++k) {
+        d[k + BLUR_RADIUS] = tap(p, k, size).r;
+        m = max(m, d[k + BLUR_RADIUS]);
+    }
+    float sum = 0.0;
+    for (int k = -BLUR_RADIUS; k <= BLUR_RADIUS; ++k)
+        sum += uWeights[abs(k)] * exp(uExponent * (d[k + BLUR_RADIUS] - m));
+    oValue = vec4(m + log(sum) / uExponent);
+#else
+    vec4 sum = uWeights[0] * tap(p, 0, size);
+    for (int k = 1; k <= BLUR_RADIUS; ++k) sum += uWeights[k] * (tap(p, k, size) + tap(p, -k, size));
+    oValue = sum;
+#endif
+}

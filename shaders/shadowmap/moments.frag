@@ -1,0 +1,22 @@
+// Depth pass of the filterable shadow maps: writes only what the map stores, the depth test keeping the
+// nearest caster.
+// VSM (Donnelly and Lauritzen 2006, Variance Shadow Maps, section 3; Lauritzen 2007, GPU Gems 3 ch. 8,
+// Listing 8-1): the moments (d, d^2), the second biased by the depth's variation over the texel
+// (0.25 (ddx(d)^2 + ddy(d)^2)), so a sloped surface does not shadow itself after filtering.
+// Otherwise (ESM, Salvi 2008's log-space form): d itself; the exponential is taken when filtering.
+#include "shadowmap/light_depth.glsl"
+
+layout(location = 32) uniform vec4 uDepthPlane;
+layout(location = 36) uniform vec4 uDepthPoint;
+in vec3 vWorldPos;
+layout(location = 0) out vec4 oMoments;
+
+void main() {
+    float d = lightDepth(uDepthPlane, uDepthPoint, vWorldPos);
+#ifdef VSM
+    float dx = dFdx(d), dy = dFdy(d);
+    oMoments = vec4(d, d * d + 0.25 * (dx * dx + dy * dy), 0.0, 0.0);
+#else
+    oMoments = vec4(d, 0.0, 0.0, 0.0);
+#endif
+}

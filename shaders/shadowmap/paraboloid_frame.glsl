@@ -1,0 +1,23 @@
+// The dual-paraboloid parameterisation (Brabec, Annen, Seidel 2002, Shadow Mapping for Hemispherical
+// and Omnidirectional Light Sources; the paraboloid map of Heidrich and Seidel 1998): two hemispheres
+// per point light, the front one around -Y (the scene below the light), the back one around +Y. In a
+// hemisphere's frame (z along its axis) a unit direction d maps to (d.x, d.y) / (1 + d.z), the whole
+// hemisphere (d.z >= 0) to the unit disc; depth is the distance to the light, linear between near
+// and far. techniques/shadowmap/ParaboloidTechnique.cpp uses the same axes for its culling.
+
+// Light-to-point vector `v` (world) in hemisphere `half_`'s frame (0 front, 1 back). Front: x = X,
+// y = Z, z = -Y (right-handed); back: the front frame turned 180 degrees about x.
+vec3 paraboloidFrame(vec3 v, int half_) {
+    vec3 p = vec3(v.x, v.z, -v.y);
+    return half_ == 0 ? p : vec3(p.x, -p.y, -p.z);
+}
+
+// Unit direction in a hemisphere's frame to map coordinates in [-1, 1]^2 (inside the unit disc).
+vec2 paraboloidProject(vec3 d) {
+    return d.xy / (1.0 + d.z);
+}
+
+// Distance to the light mapped to window depth [0, 1].
+float paraboloidDepth(float dist, vec2 nearFar) {
+    return (dist - nearFar.x) / (nearFar.y - nearFar.x);
+}

@@ -1,0 +1,49 @@
+#pragma once
+// Per-frustum culling of a scene's instances for the passes that render from a light (each shadow map,
+// cube face, paraboloid half or cascade): an instance whose world-space bounding box lies wholly
+// outside one plane of the pass's clip volume cannot put a texel into that map, so it is not
+// submitted. The test is conservative (a box that straddles a plane's corner region is kept), done on
+// the CPU once per pass, and costs 8 corner transforms per instance; what it keeps is the mask
+// Submitter::draw takes (techniques/submit/Submitter.h).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/Mesh.h"
+#include "scenes/Scene.h"
+#include "techniques/submit/Submitter.h"
+
+namespace sb {
+
+/// Which planes of the clip volume cull. A shadow map's casters between the light and the near plane
+/// still shadow what lies inside (a cascade is fitted to the receivers it covers, its casters may lie
+/// anywhere towards the light), so such passes cull against the side planes and the far plane only
+/// and clamp depth instead (GL_DEPTH_CLAMP: "pancaking").
+enum class CullPlanes { All, SidesAndFar };
+
+class InstanceCulling {
+public:
+    /// World-space bounds of every instance and the size of each DrawSet (untimed: at setScene). Keeps
+    /// a pointer to `scene` for the sets' membership, as the Submitter's upload does: it must outlive
+    /// the culls.
+    void setScene(const Scene& scene);
+
+    /// Fills `keep` (one entry per instance) with 1 for each instance of `set` whose bounds may reach
+    /// the clip volume of `viewProj`, 0 for the rest; returns how many of `set` were kept.
+    size_t cull(const glm::mat4& viewProj, DrawSet set, CullPlanes planes, std::vector<uint8_t>& keep) const;
+    /// Instances of `set` (the denominator of a culling counter), counted at setScene.
+    size_t count(DrawSet set) const { return mSetCount[size_t(set)]; }
+
+    /// True if the box may reach the clip volume of `viewProj`: not all 8 corners outside one plane.
+    static bool mayReach(const Aabb& box, const glm::mat4& viewProj, CullPlanes planes);
+
+private:
+    const Scene* mScene = nullptr;
+    std::vector<Aabb> mBounds; ///< per instance, world space
+    std::array<size_t, kDrawSetCount> mSetCount{};
+};
+
+} // namespace sb

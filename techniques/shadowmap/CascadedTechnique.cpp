@@ -1,0 +1,246 @@
+#include "techniques/shadowmap/CascadedTechnique.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/LightFit.h"
+#include "scenes/Math.h"
+#include "techniques/shadowmap/CascadeSplits.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/DepthPassState.h"
+#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+
+namespace sb {
+
+namespace {
+using P = ShadowMapProperties;
+constexpr const char* kCascades = "cascades";
+constexpr const char* kLambda = "lambda";
+constexpr const char* kStabilize = "stabilize";
+constexpr const char* kBlend = "blend";
+// Uniform locations: shadowmap/depth.vert's light matrix, and shadowmap/cascaded_lighting.frag's.
+constexpr GLint kLightMatrixLocation = 8;
+constexpr GLint kSplitFarLocation = 10;
+constexpr GLint kBandStartLocation = 11;
+constexpr GLint kBandScaleLocation = 12;
+constexpr GLint kEmptySlotsLocation = 15;
+constexpr GLint kSlotMatrixLocation = 16; // SLOT_COUNT (at most 16) locations
+constexpr GLint kSlotLayerLocation = 32;  // likewise
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        P::resolution("2048", "width and height of each cascade's map (texels)"),
+        integer(kCascades, "4", 1, CascadedTechnique::kMaxCascades,
+                "slices of the view frustum, one map each (directional lights)"),
+        real(kLambda, "0.75", 0, 1, "practical split weight: 0 uniform, 1 logarithmic (Zhang et al. 2006)"),
+        flag(kStabilize, "true",
+             "bounding-sphere extent snapped to whole texels (no shimmer) instead of the tight box"),
+        real(kBlend, "0.1", 0, 1, "fraction of each cascade, at its far end, blended into the next"),
+        P::biasConstant(),
+        P::biasSlope(),
+        P::pcf("PCF kernel width: pcf x pcf hardware-compare taps one texel apart"),
+    };
+}
+
+} // namespace
+
+CascadedTechnique::CascadedTechnique()
+    : Technique({.name = "cascaded",
+                 .description = "cascaded shadow maps: the view frustum split into slices (practical split), "
+                                "one stable map per slice",
+                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                            Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"depth", "lighting"},
+                 .properties = declareProperties(),
+                 // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
+                 .quality = {
+                     {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+                     {kCascades, {"1", "2", "3", "4"}},
+                     {kLambda, {"0", "0.25", "0.5", "0.75", "1"}},
+                     P::pcfSweep(),
+                 }}) {}
+
+int CascadedTechnique::slotCount() const {
+    return mLights.empty() ? 1 : mLights.back().firstSlot + mLights.back().slots;
+}
+
+void CascadedTechnique::setScene(const Scene& scene) {
+    mLights.clear();
+    const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
+    const int cascades = int(properties().getInt(kCascades));
+    Aabb casters = scene.computeBounds(true), all = scene.computeBounds(false);
+    int slot = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const Light& l = scene.lights[i];
+        FlatLightFits::refusePointLight(l, i, "cascaded", FlatLightFits::kOmniAdvice);
+        LightMaps m;
+        m.directional = l.type == LightType::Directional;
+        m.firstSlot = slot;
+        m.slots = m.directional ? cascades : 1;
+        if (m.directional) {
+            m.lightView = CascadeFit::lightView(l.direction);
+            m.bounds = CascadeFit::sceneBounds(casters, all, m.lightView);
+            m.cascades.resize(size_t(cascades));
+        } else {
+            m.spotViewProj = fitLightViewProjection(scene, l);
+        }
+        slot += m.slots;
+        mLights.push_back(m);
+    }
+    mReceivers.clear();
+    for (const Instance& inst : scene.instances)
+        if (inst.receivesShadow && inst.mesh < scene.meshes.size())
+            mReceivers.push_back(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+    mSlotViewProj.assign(size_t(slotCount()), glm::mat4(1.0f));
+    mSlotShadow.assign(size_t(slotCount()), glm::mat4(1.0f));
+    mSlotLayer.assign(size_t(slotCount()), 0);
+    mCulling.setScene(scene);
+}
+
+void CascadedTechnique::compile(const CompileContext& ctx) {
+    const PropertySet& p = properties();
+    mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), slotCount(), false);
+    Defines base = ctx.submitter.defines();
+    mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
+    Defines lit = base;
+    lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, mLights.size()));
+    lit["SLOT_COUNT"] = std::to_string(slotCount());
+    lit["CASCADE_COUNT"] = std::to_string(p.getInt(kCascades));
+    std::string first, slots;
+    for (const LightMaps& m : mLights) {
+        first += (first.empty() ? "" : ", ") + std::to_string(m.firstSlot);
+        slots += (slots.empty() ? "" : ", ") + std::to_string(m.slots);
+    }
+    lit["FIRST_SLOTS"] = first.empty() ? "0" : first;
+    lit["LIGHT_SLOTS"] = slots.empty() ? "0" : slots;
+    if (p.getInt(kCascades) > 1 && p.getFloat(kBlend) > 0.0) lit["BLEND"] = "";
+    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/cascaded_lighting.frag", ""}, lit);
+    setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
+}
+
+void CascadedTechnique::fitCascades(const FrameContext& ctx) {
+    const PropertySet& p = properties();
+    const int n = int(p.getInt(kCascades));
+    const glm::vec2 range =
+        CascadeSplits::clipToReceivers(CascadeSplits::nearFar(ctx.proj), ctx.view, ctx.proj, mReceivers);
+    mSplits = CascadeSplits::practical(range.x, range.y, n, float(p.getFloat(kLambda)));
+    // Cascade c is looked up from mSplits[c] on, but blends in over the last `blend` of cascade c - 1:
+    // its map must cover that band too.
+    const float blend = float(p.getFloat(kBlend));
+    mFitStart.assign(size_t(n), range.x);
+    for (int c = 1; c < n; ++c)
+        mFitStart[size_t(c)] = mSplits[size_t(c)] - blend * (mSplits[size_t(c)] - mSplits[size_t(c) - 1]);
+    const bool stable = p.getBool(kStabilize);
+    for (LightMaps& m : mLights) {
+        if (!m.directional) {
+            mSlotViewProj[size_t(m.firstSlot)] = m.spotViewProj;
+            mSlotLayer[size_t(m.firstSlot)] = m.firstSlot;
+            continue;
+        }
+        for (int c = 0; c < n; ++c) {
+            Cascade& cascade = m.cascades[size_t(c)];
+            cascade = CascadeFit::fit(m.lightView, ctx.view, ctx.proj, mFitStart[size_t(c)],
+                                      mSplits[size_t(c) + 1], m.bounds, mMaps.size(), stable);
+            mSlotViewProj[size_t(m.firstSlot + c)] = cascade.viewProj;
+        }
+        shareIdenticalFits(m);
+    }
+    for (size_t i = 0; i < mSlotViewProj.size(); ++i)
+        mSlotShadow[i] = FlatLightFits::textureBias() * mSlotViewProj[i];
+}
+
+void CascadedTechnique::shareIdenticalFits(const LightMaps& m) {
+    // A cascade whose fit equals the one before it (both clamped to the whole casters' bounds, as the
+    // far cascades of an overview are) reads that map instead of drawing the same one again.
+    for (int c = 0; c < m.slots; ++c) {
+        const size_t slot = size_t(m.firstSlot + c);
+        mSlotLayer[slot] = int(slot);
+        if (c > 0 && std::memcmp(&mSlotViewProj[slot], &mSlotViewProj[slot - 1], sizeof(glm::mat4)) == 0)
+            mSlotLayer[slot] = mSlotLayer[slot - 1];
+    }
+}
+
+void CascadedTechnique::renderDepth(FrameContext& ctx) {
+    const PropertySet& p = properties();
+    DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
+    // Casters nearer the light than a box's near side are not culled (SidesAndFar); clamping keeps any
+    // that rounding puts in front of it in the map ("pancaking").
+    glEnable(GL_DEPTH_CLAMP);
+    mDepthProgram->use();
+    mCulled = 0;
+    mEmptySlots = 0;
+    mMapsRendered = 0;
+    for (const LightMaps& m : mLights)
+        for (int c = 0; c < m.slots; ++c) {
+            const size_t slot = size_t(m.firstSlot + c);
+            if (mSlotLayer[slot] != int(slot)) { // shares the map of the cascade before it
+                if (mEmptySlots & (1u << (slot - 1))) mEmptySlots |= 1u << slot;
+                continue;
+            }
+            // A spot map's frustum starts at the scene's nearest point: every plane culls.
+            const CullPlanes planes = m.directional ? CullPlanes::SidesAndFar : CullPlanes::All;
+            const size_t kept = mCulling.cull(mSlotViewProj[slot], DrawSet::Casters, planes, mKeep);
+            mCulled += mCulling.count(DrawSet::Casters) - kept;
+            if (kept == 0) { // nothing to shadow with: no clear, no draw, the lookup says lit
+                mEmptySlots |= 1u << slot;
+                continue;
+            }
+            mMaps.beginLayer(int(slot));
+            glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(mSlotViewProj[slot]));
+            ctx.submitter.draw(DrawSet::Casters, mKeep);
+            ++mMapsRendered;
+        }
+    glDisable(GL_DEPTH_CLAMP);
+}
+
+void CascadedTechnique::renderLighting(FrameContext& ctx) {
+    ctx.targets.bind();
+    mLightingProgram->use();
+    const int n = int(properties().getInt(kCascades));
+    glm::vec4 splitFar(FLT_MAX), bandStart(FLT_MAX), bandScale(0.0f);
+    for (int c = 0; c < n; ++c) {
+        splitFar[c] = mSplits[size_t(c) + 1];
+        if (c + 1 == n) break; // the last cascade blends into nothing
+        const float band =
+            float(properties().getFloat(kBlend)) * (mSplits[size_t(c) + 1] - mSplits[size_t(c)]);
+        bandStart[c] = splitFar[c] - band;
+        bandScale[c] = band > 0.0f ? 1.0f / band : 0.0f;
+    }
+    glUniform4fv(kSplitFarLocation, 1, glm::value_ptr(splitFar));
+    glUniform4fv(kBandStartLocation, 1, glm::value_ptr(bandStart));
+    glUniform4fv(kBandScaleLocation, 1, glm::value_ptr(bandScale));
+    glUniform1ui(kEmptySlotsLocation, mEmptySlots);
+    glUniformMatrix4fv(kSlotMatrixLocation, GLsizei(mSlotShadow.size()), GL_FALSE,
+                       glm::value_ptr(mSlotShadow[0]));
+    glUniform1iv(kSlotLayerLocation, GLsizei(mSlotLayer.size()), mSlotLayer.data());
+    glBindTextureUnit(0, mMaps.texture());
+    ctx.submitter.draw(DrawSet::All);
+    glBindTextureUnit(0, 0);
+}
+
+void CascadedTechnique::execute(FrameContext& ctx) {
+    const SubmitStats s = DepthLightingFrame::run(
+        ctx,
+        [&] {
+            fitCascades(ctx);
+            renderDepth(ctx);
+        },
+        [&] { renderLighting(ctx); });
+    double cascades = 0.0;
+    for (const LightMaps& m : mLights) cascades += m.directional ? m.slots : 0;
+    // Texels of the maps drawn this frame: shared and empty cascades draw none.
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mMapsRendered)},
+                 {"cascades", cascades},
+                 {"casters_culled", double(mCulled)}};
+}
+
+} // namespace sb

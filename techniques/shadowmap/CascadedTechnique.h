@@ -1,0 +1,98 @@
+#pragma once
+// `cascaded`: cascaded shadow maps for directional lights (Engel 2006, Cascaded Shadow Maps, ShaderX5;
+// Dimitrov 2007, Cascaded Shadow Maps, NVIDIA whitepaper), with the split positions of the practical
+// split scheme (Zhang et al. 2006, Parallel-Split Shadow Maps for Large-scale Virtual Environments,
+// section 3; techniques/shadowmap/CascadeSplits.h). `shadowmap` fits one map to the whole scene, so the
+// texels near the camera are as large as those far away: near shadows are stair-steps. Here the view
+// frustum of each frame (FrameContext view and proj; near and far clipped to the receivers in view) is
+// cut into `cascades` slices and each gets its own map fitted to it (techniques/shadowmap/CascadeFit.h:
+// the slice's bounding sphere snapped to whole texels when `stabilize`, the tight box when not).
+//
+// Pass "depth": each cascade's casters (culled against its side and far planes: casters between the
+// light and the slice still shadow it, and depth clamping keeps them in the map) into one layer of a
+// depth texture array, glPolygonOffset as constant and slope-scaled bias. Cascades whose fits come out
+// identical (far slices of an overview, each clamped to the whole casters' bounds) share one map, and
+// a cascade no caster reaches is neither cleared nor drawn: the lookup treats it as lit. Pass
+// "lighting": each fragment picks its cascade by view depth (the first whose far split lies beyond
+// it) and, in the last `blend` fraction of that cascade, blends towards the next one so the change of
+// texel size across a split is no seam; PCF pcf x pcf taps one texel apart with hardware compare
+// (bilinear), as `shadowmap`. The lighting program is specialised per scene and properties (each
+// light's slots, the cascade count, blending on or off are defines), so a spot light runs no cascade
+// code and blend=0 no second lookup: on llvmpipe, which executes both sides of every branch, the blend
+// band's second lookup is paid by every fragment (city overview: 1.15x shadowmap's frame with blend=0,
+// 1.68x with the default 0.1).
+//
+// Spot lights get one perspective map fitted as `shadowmap` does (scenes/LightFit.h); point lights
+// need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
+//
+// Default resolution 2048 per cascade, as shadowmap's one map: where a cascade is clamped to the
+// casters' bounds (the far cascades of an overview) it is then no coarser than shadowmap's map, and
+// the near ones are finer. 1024 (4 x 1024^2, shadowmap's texel count) measured 2.4x shadowmap's wrong
+// pixels on city's overview, whose cascades all span the whole city.
+#include <cstdint>
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "techniques/Technique.h"
+#include "techniques/common/InstanceCulling.h"
+#include "techniques/shadowmap/CascadeFit.h"
+#include "techniques/shadowmap/DepthLayers.h"
+
+namespace sb {
+
+class CascadedTechnique final : public Technique {
+public:
+    static constexpr int kMaxCascades = 4;
+    static constexpr int kMaxSlots = kMaxLights * kMaxCascades;
+
+    CascadedTechnique();
+    void setScene(const Scene& scene) override;
+    void compile(const CompileContext& ctx) override;
+    void execute(FrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+    /// The split distances (view depth, cascades + 1) and the cascades of directional light `light` of
+    /// the last frame: what the tests compare against closed forms.
+    const std::vector<float>& splits() const { return mSplits; }
+    const std::vector<Cascade>& cascades(size_t light) const { return mLights[light].cascades; }
+
+private:
+    /// A shadowed light: its slots and how they are fitted.
+    struct LightMaps {
+        bool directional = true;
+        int firstSlot = 0;
+        int slots = 1;                 ///< cascades (directional) or 1 (spot)
+        glm::mat4 lightView{1.0f};     ///< directional: the light's rotation
+        CascadeSceneBounds bounds;     ///< directional: what its cascades are clipped to
+        glm::mat4 spotViewProj{1.0f};  ///< spot: the fitted perspective map
+        std::vector<Cascade> cascades; ///< directional: this frame's fits
+    };
+
+    void fitCascades(const FrameContext& ctx);
+    void renderDepth(FrameContext& ctx);
+    void renderLighting(FrameContext& ctx);
+    int slotCount() const;
+    void shareIdenticalFits(const LightMaps& m);
+
+    std::vector<LightMaps> mLights;
+    std::vector<Aabb> mReceivers; ///< world bounds of every receiving instance
+    std::vector<float> mSplits;   ///< this frame's split distances (view depth)
+    std::vector<float> mFitStart; ///< where each cascade's fit starts (its blend band included)
+    // Per slot (a light's cascade, or a spot light's one map; slot i may use layer i at most):
+    std::vector<glm::mat4> mSlotViewProj; ///< world -> the map's clip space
+    std::vector<glm::mat4> mSlotShadow;   ///< bias * viewProj (to [0, 1] texture space)
+    std::vector<int> mSlotLayer;          ///< the depth array's layer it reads (shared when identical)
+    uint32_t mEmptySlots = 0;             ///< bit per slot: no caster reaches its map this frame
+    int mMapsRendered = 0;                ///< distinct maps drawn last frame
+    DepthLayers mMaps{"cascaded"};        ///< GL_TEXTURE_2D_ARRAY, one layer per slot
+    InstanceCulling mCulling;
+    std::vector<uint8_t> mKeep; ///< the depth pass's mask, reused per map
+    size_t mCulled = 0;         ///< casters culled, summed over the maps drawn, last frame
+    const Program* mDepthProgram = nullptr;
+    const Program* mLightingProgram = nullptr;
+    Counters mCounters;
+};
+
+} // namespace sb

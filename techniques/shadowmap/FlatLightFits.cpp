@@ -1,0 +1,68 @@
+#include "techniques/shadowmap/FlatLightFits.h"
+
+#include <algorithm>
+
+#include <epoxy/gl.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/Error.h"
+#include "gl/FrameTargets.h"
+#include "scenes/LightFit.h"
+
+namespace sb {
+
+namespace {
+constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert; common/scene.vert's shadow matrices
+} // namespace
+
+const glm::mat4& FlatLightFits::textureBias() {
+    static const glm::mat4 kBias =
+        glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+    return kBias;
+}
+
+void FlatLightFits::refusePointLight(const Light& light, size_t index, const std::string& technique,
+                                     const std::string& advice) {
+    if (light.type == LightType::Point)
+        throw Error(technique + ": light " + std::to_string(index) +
+                        " is a point light, which needs an omni shadow map" + advice,
+                    ExitCode::Unsupported);
+}
+
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const std::string& advice) {
+    mViewProj.clear();
+    mShadowMatrix.clear();
+    const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
+    for (size_t i = 0; i < count; ++i) {
+        const Light& l = scene.lights[i];
+        refusePointLight(l, i, technique, advice);
+        mViewProj.push_back(fitLightViewProjection(scene, l));
+        mShadowMatrix.push_back(textureBias() * mViewProj.back());
+    }
+}
+
+void FlatLightFits::setShadowMatrices() const {
+    if (!mShadowMatrix.empty())
+        glUniformMatrix4fv(kLightMatrixLocation, GLsizei(mShadowMatrix.size()), GL_FALSE,
+                           glm::value_ptr(mShadowMatrix[0]));
+}
+
+size_t FlatLightFits::renderDepth(Submitter& submitter, const InstanceCulling& culling,
+                                  const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll) const {
+    size_t culled = 0;
+    for (size_t i = 0; i < mViewProj.size(); ++i) {
+        maps.beginLayer(int(i));
+        glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
+        if (drawAll) {
+            submitter.draw(DrawSet::All);
+            continue;
+        }
+        const size_t kept = culling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, keep);
+        culled += culling.count(DrawSet::Casters) - kept;
+        submitter.draw(DrawSet::Casters, keep);
+    }
+    return culled;
+}
+
+} // namespace sb

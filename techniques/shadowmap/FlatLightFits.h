@@ -1,0 +1,55 @@
+#pragma once
+// The flat light cameras of `shadowmap` and `pcss`: per light of a scene (at most kMaxLights) the
+// orthographic (directional) or perspective (spot) camera fitted to the scene (scenes/LightFit.h,
+// Williams 1978), the shadow matrix that takes world positions to the map's [0, 1] texture space, and
+// their depth pass, one layer of a DepthLayers per light. Point lights need an omni map and are refused
+// here (`cascaded` refuses them with the same words through refusePointLight). Both members fit, render
+// and refuse alike; keeping it in one place keeps their maps, counters and messages identical.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scenes/Scene.h"
+#include "techniques/common/InstanceCulling.h"
+#include "techniques/shadowmap/DepthLayers.h"
+#include "techniques/submit/Submitter.h"
+
+namespace sb {
+
+class FlatLightFits {
+public:
+    /// The advice `shadowmap` and `cascaded` give after "... needs an omni shadow map".
+    static constexpr const char* kOmniAdvice =
+        ": use -t cubemap or -t paraboloid, or --light directional or --light spot";
+
+    /// Clip space to [0, 1] texture space: scale by one half, translate by one half.
+    static const glm::mat4& textureBias();
+    /// Throws Error(Unsupported) "<technique>: light <index> is a point light, which needs an omni shadow
+    /// map<advice>" when `light` is a point light.
+    static void refusePointLight(const Light& light, size_t index, const std::string& technique,
+                                 const std::string& advice);
+
+    /// Fits every light's camera (untimed: setScene), refusing point lights as above.
+    void setScene(const Scene& scene, const std::string& technique, const std::string& advice);
+
+    size_t size() const { return mViewProj.size(); }
+    const std::vector<glm::mat4>& viewProj() const { return mViewProj; }           ///< per light
+    const std::vector<glm::mat4>& shadowMatrices() const { return mShadowMatrix; } ///< bias * viewProj
+
+    /// Sets the bound lighting program's shadow matrices (location 8, common/scene.vert), one per light.
+    void setShadowMatrices() const;
+    /// The depth pass of every light into layer i of `maps` (the depth program bound, DepthPassState
+    /// set by the caller): clears the layer, sets the light's matrix (location 8, shadowmap/depth.vert)
+    /// and draws the casters `culling` keeps in its frustum, or everything when `drawAll` (the perf
+    /// gate's injected regression, core/Injection.h). Returns the casters culled over all lights.
+    size_t renderDepth(Submitter& submitter, const InstanceCulling& culling, const DepthLayers& maps,
+                       std::vector<uint8_t>& keep, bool drawAll = false) const;
+
+private:
+    std::vector<glm::mat4> mViewProj;
+    std::vector<glm::mat4> mShadowMatrix;
+};
+
+} // namespace sb

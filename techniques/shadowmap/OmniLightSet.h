@@ -1,0 +1,62 @@
+#pragma once
+// The lights of a scene as the omnidirectional shadow-map techniques (`cubemap`, `paraboloid`) map
+// them: each point light gets an omni map (six cube faces, or two paraboloid halves) fitted by
+// PointLightFit, unless its range reaches no caster (then no map and no depth work: it cannot be
+// shadowed, kind None); each spot light the perspective map and each directional light the
+// orthographic one that `shadowmap` renders (scenes/LightFit.h, Williams 1978), here called flat maps.
+// Also the lighting pass's per-light uniforms, which both techniques' lighting shaders read through
+// shaders/shadowmap/omni_lighting.glsl, and the flat maps' depth pass, which is the same for both.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/ProgramCache.h"
+#include "scenes/Scene.h"
+#include "techniques/common/InstanceCulling.h"
+#include "techniques/shadowmap/DepthLayers.h"
+#include "techniques/shadowmap/PointLightFit.h"
+#include "techniques/submit/Submitter.h"
+
+namespace sb {
+
+/// How a light is shadowed; the values are omni_lighting.glsl's MAP_* constants.
+enum class OmniMapKind : int { None = 0, Flat = 1, Omni = 2 };
+
+struct OmniLight {
+    OmniMapKind kind = OmniMapKind::None;
+    int index = 0;                ///< among the lights of its kind (the map's slot)
+    PointLightFit point;          ///< point lights
+    glm::mat4 viewProj{1.0f};     ///< flat maps: the light camera
+    glm::mat4 shadowMatrix{1.0f}; ///< flat maps: bias * viewProj (world to [0, 1] texture space)
+};
+
+class OmniLightSet {
+public:
+    /// Classifies the first kMaxLights lights of `scene` and fits their cameras (untimed: setScene).
+    void setScene(const Scene& scene);
+
+    const std::vector<OmniLight>& lights() const { return mLights; }
+    int omniCount() const { return mOmni; } ///< point lights with a map
+    int flatCount() const { return mFlat; }
+    int skippedCount() const { return mSkipped; } ///< point lights whose range reaches no caster
+    /// LIGHT_COUNT of the lighting shader (at least 1: GLSL has no empty arrays).
+    int shaderLightCount() const { return std::max<int>(1, int(mLights.size())); }
+
+    /// Sets the lighting program's per-light uniforms (it must be bound): the flat maps' shadow matrices
+    /// (location 8, common/scene.vert), each light's map kind and first layer (location 16: flat maps at
+    /// flatBase + index, omni maps at omniLayers * index) and omni depth range (location 20).
+    void setLightingUniforms(int flatBase, int omniLayers) const;
+
+    /// Renders every flat map into `layers` (layer flatBase + index) with `depthProgram`, each light's
+    /// casters culled against its frustum; viewport, bias and colour mask are the caller's. Returns
+    /// the casters culled over all flat maps.
+    size_t renderFlatMaps(Submitter& submitter, const InstanceCulling& culling, const Program& depthProgram,
+                          const DepthLayers& layers, int flatBase, std::vector<uint8_t>& keep) const;
+
+private:
+    std::vector<OmniLight> mLights;
+    int mOmni = 0, mFlat = 0, mSkipped = 0;
+};
+
+} // namespace sb

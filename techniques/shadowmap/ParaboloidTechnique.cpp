@@ -1,0 +1,123 @@
+#include "techniques/shadowmap/ParaboloidTechnique.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/DepthPassState.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+
+namespace sb {
+
+namespace {
+using P = ShadowMapProperties;
+constexpr GLint kLightLocation = 8;    // shadowmap/paraboloid_depth.vert: position, hemisphere
+constexpr GLint kNearFarLocation = 12; // shadowmap/paraboloid_depth.vert
+constexpr GLuint kMapUnit = 0;         // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
+
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        P::resolution("2048",
+                      "width and height of each paraboloid half and of each spot/directional map (texels)"),
+        P::biasConstant(),
+        P::biasSlope(),
+        P::pcf("PCF kernel width: pcf x pcf taps one texel apart in map space"),
+    };
+}
+} // namespace
+
+ParaboloidTechnique::ParaboloidTechnique()
+    : Technique({.name = "paraboloid",
+                 .description = "dual-paraboloid shadow maps: two hemispherical depth maps per point light",
+                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                            Effect::MultipleLights,
+                 .capabilities = {{"GL 4.5", 4, 5, ""}},
+                 .passes = {"depth", "lighting"},
+                 .properties = declareProperties(),
+                 .quality = {
+                     {P::kResolution, {"512", "1024", "2048", "4096"}},
+                     P::pcfSweep(),
+                     P::biasConstantSweep(),
+                     P::biasSlopeSweep(),
+                 }}) {}
+
+glm::vec3 ParaboloidTechnique::hemisphereAxis(int half) {
+    return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+void ParaboloidTechnique::setScene(const Scene& scene) {
+    mLights.setScene(scene);
+    mCulling.setScene(scene);
+    mOmniCulling.setScene(scene);
+}
+
+void ParaboloidTechnique::compile(const CompileContext& ctx) {
+    const PropertySet& p = properties();
+    mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), flatBase() + mLights.flatCount(),
+                   false);
+    const Defines base = ctx.submitter.defines();
+    mFlatDepth = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
+    mParaboloidDepth =
+        &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "shadowmap/depth.frag", ""}, base);
+    Defines lit = base;
+    lit["SHADOW_MAP"] = "";
+    lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
+    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    if (mLights.flatCount() > 0) lit["FLAT_MAPS"] = "";
+    if (mLights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/paraboloid_lighting.frag", ""}, lit);
+    setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mLighting->key());
+}
+
+void ParaboloidTechnique::renderHemispheres(FrameContext& ctx) {
+    mParaboloidDepth->use();
+    glEnable(GL_CLIP_DISTANCE0);
+    for (const OmniLight& o : mLights.lights()) {
+        if (o.kind != OmniMapKind::Omni) continue;
+        glUniform2f(kNearFarLocation, o.point.nearZ, o.point.farZ);
+        for (int half = 0; half < 2; ++half) {
+            mMaps.beginLayer(2 * o.index + half);
+            const size_t kept =
+                mOmniCulling.cullHemisphere(o.point.position, o.point.farZ, hemisphereAxis(half), mKeep);
+            mCulled += mOmniCulling.casters() - kept;
+            if (kept == 0) continue; // the cleared half is the answer: nothing casts into it
+            glUniform4f(kLightLocation, o.point.position.x, o.point.position.y, o.point.position.z,
+                        float(half));
+            ctx.submitter.draw(DrawSet::Casters, mKeep);
+            ++mHemispheresRendered;
+        }
+    }
+    glDisable(GL_CLIP_DISTANCE0);
+}
+
+void ParaboloidTechnique::renderDepth(FrameContext& ctx) {
+    const PropertySet& p = properties();
+    mCulled = 0;
+    mHemispheresRendered = 0;
+    if (mMaps.empty()) return; // no light casts: no depth work at all
+    DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
+    mCulled += mLights.renderFlatMaps(ctx.submitter, mCulling, *mFlatDepth, mMaps, flatBase(), mKeep);
+    renderHemispheres(ctx);
+}
+
+void ParaboloidTechnique::renderLighting(FrameContext& ctx) {
+    ctx.targets.bind();
+    mLighting->use();
+    mLights.setLightingUniforms(flatBase(), 2);
+    if (!mMaps.empty()) glBindTextureUnit(kMapUnit, mMaps.texture());
+    ctx.submitter.draw(DrawSet::All);
+    glBindTextureUnit(kMapUnit, 0);
+}
+
+void ParaboloidTechnique::execute(FrameContext& ctx) {
+    const SubmitStats s = DepthLightingFrame::run(
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
+    const double res = double(mMaps.size());
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"shadow_map_texels", res * res * double(mMaps.layers())},
+                 {"hemispheres_rendered", double(mHemispheresRendered)},
+                 {"casters_culled", double(mCulled)},
+                 {"lights_skipped", double(mLights.skippedCount())}};
+}
+
+} // namespace sb

@@ -1,0 +1,61 @@
+// The perf gate's suite file (bench/ci/CiSuite.h): the committed suite covers every technique of the
+// registry, and a wrong suite is refused naming the file and the JSON path.
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/ci/CiSuite.h"
+#include "core/Error.h"
+#include "techniques/TechniqueRegistry.h"
+
+using namespace sb;
+
+namespace {
+
+TEST(CiSuiteTest, CommittedSuiteRunsEveryTechniqueAndEveryBound) {
+    const CiSuite s = CiSuite::load(std::string(SB_SOURCE_DIR) + "/results/ci/suite.json");
+    std::set<std::string> techniques, bounds;
+    for (const CiConfig& c : s.configs) {
+        bounds.insert(c.bound);
+        for (size_t i = 0; i + 1 < c.args.size(); ++i)
+            if (c.args[i] == "-t") techniques.insert(c.args[i + 1].substr(0, c.args[i + 1].find(':')));
+    }
+    for (const std::string& t : TechniqueRegistry::names())
+        EXPECT_TRUE(techniques.count(t)) << "technique " << t << " is not in results/ci/suite.json";
+    EXPECT_EQ(bounds, (std::set<std::string>{"balanced", "cpu", "fill", "vertex"}));
+    EXPECT_FALSE(s.instructions.configs.empty());
+    EXPECT_FALSE(s.wall.configs.empty());
+}
+
+void expectRefused(const std::string& text, const std::string& needle) {
+    const std::string dir = test::freshTestDir("cisuite");
+    const std::string path = dir + "/suite.json";
+    test::writeFile(path, text);
+    try {
+        CiSuite::load(path);
+        ADD_FAILURE() << "accepted: " << text;
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::BadInput);
+        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+}
+
+TEST(CiSuiteTest, WrongSuitesAreRefusedNamingWhere) {
+    expectRefused(R"({"name": "s", "configs": [{"name": "a", "args": ["-t", "none"]},
+                                               {"name": "a", "args": ["-t", "none"]}]})",
+                  "'a' is given twice");
+    expectRefused(R"({"name": "s", "configs": [{"name": "a", "args": ["-t", "none", "-t", "volume"]}]})",
+                  "exactly one technique");
+    expectRefused(R"({"name": "s", "configs": [{"name": "A b", "args": ["-t", "none"]}]})",
+                  "/configs/0/name");
+    expectRefused(R"({"name": "s", "configs": [{"name": "a", "args": ["-t", "none"]}],
+                      "wall": {"configs": ["b"]}})",
+                  "'b', which is not a configuration");
+    expectRefused(R"({"name": "s", "configs": [{"name": "a", "bound": "gpu", "args": ["-t", "none"]}]})",
+                  "not one of cpu, vertex, fill, balanced");
+    expectRefused(R"({"name": "s", "config": []})", "config");
+}
+
+} // namespace

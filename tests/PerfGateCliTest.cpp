@@ -1,0 +1,107 @@
+// The perf gate end to end (bench ci, bench compare; README "Gate a change"): a baseline written by
+// --update passes against the same build, and each deliberate regression (core/Injection.h) fails
+// layer A with the pass that grew named. The expected outcome of each case is known by construction:
+// the injection adds a full-screen pass, so its fragments appear where there were none.
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/output/CsvWriter.h"
+
+using namespace sb;
+
+namespace {
+
+class PerfGateCliTest : public ::testing::Test {
+protected:
+    void SetUp() override { mDir = test::freshTestDir("gate"); }
+    void TearDown() override { std::filesystem::remove_all(mDir); }
+    /// bench ci with layer A on two configurations, baseline and output in the scratch folder.
+    test::CommandResult ci(const std::string& env, const std::string& args) const {
+        return test::runCommand(env + " " + test::benchBinary() + " ci --layers A --configs " + kConfigs +
+                                " --baseline " + mDir + "/baseline --out " + mDir + "/out " + args);
+    }
+    static constexpr const char* kConfigs = "none_aircraft,shadowmap_aircraft";
+    std::string mDir;
+};
+
+TEST_F(PerfGateCliTest, SameBuildPassesAndAnInjectedPassFailsNamingIt) {
+    const auto update = ci("", "--update");
+    ASSERT_EQ(update.exitCode, 0) << update.output;
+    const auto same = ci("", "");
+    EXPECT_EQ(same.exitCode, 0) << same.output;
+    EXPECT_NE(same.output.find("perf gate: PASS"), std::string::npos) << same.output;
+    EXPECT_NE(same.output.find("| none_aircraft | balanced | exact (PASS)"), std::string::npos)
+        << same.output;
+
+    const auto injected = ci("SHADOWBENCH_INJECT=extra_fullscreen_pass", "");
+    EXPECT_EQ(injected.exitCode, 1) << injected.output;
+    EXPECT_NE(injected.output.find("perf gate: FAIL"), std::string::npos) << injected.output;
+    EXPECT_NE(injected.output.find("none_aircraft: injected_fullscreen_fragments 0 -> "), std::string::npos)
+        << injected.output;
+    EXPECT_NE(injected.output.find("shadowmap_aircraft: injected_fullscreen_fragments 0 -> "),
+              std::string::npos)
+        << injected.output;
+    // The report files say the same.
+    const std::string json = test::readFile(mDir + "/out/report.json");
+    EXPECT_NE(json.find("\"verdict\": \"FAIL\""), std::string::npos) << json;
+    EXPECT_NE(test::readFile(mDir + "/out/work.csv").find("extra_fullscreen_pass"), std::string::npos);
+    // Every column bench ci writes is documented in the README's CSV section.
+    const auto documented = test::documentedColumns();
+    for (const std::string& h : CsvWriter::read(mDir + "/out/work.csv").header)
+        EXPECT_TRUE(std::any_of(documented.begin(), documented.end(),
+                                [&](const std::string& c) { return test::headerHas({h}, c); }))
+            << "undocumented column: " << h;
+}
+
+TEST_F(PerfGateCliTest, ShadowMapRegressionsFailOnTheDepthPass) {
+    // Drawing receivers into the map adds the ground's triangles to the depth pass; doubling the map
+    // quadruples its texels. Both are work an unmodified build does not do, so layer A must name them.
+    ASSERT_EQ(ci("", "--update").exitCode, 0);
+    const auto culling = ci("SHADOWBENCH_INJECT=no_caster_culling", "");
+    EXPECT_EQ(culling.exitCode, 1) << culling.output;
+    EXPECT_NE(culling.output.find("increase: shadowmap_aircraft: depth_triangles "), std::string::npos)
+        << culling.output;
+    EXPECT_EQ(culling.output.find("increase: none_aircraft"), std::string::npos) << culling.output;
+    const auto resolution = ci("SHADOWBENCH_INJECT=double_shadow_resolution", "");
+    EXPECT_EQ(resolution.exitCode, 1) << resolution.output;
+    EXPECT_NE(
+        resolution.output.find("shadowmap_aircraft: counter_shadow_map_texels 262144 -> 1048576 (+300.0%)"),
+        std::string::npos)
+        << resolution.output;
+    EXPECT_NE(resolution.output.find("shadowmap_aircraft: depth_fragments "), std::string::npos)
+        << resolution.output;
+}
+
+TEST_F(PerfGateCliTest, CompareJudgesTwoResultFiles) {
+    const std::string header =
+        "status,renderer,gl_version,technique,instances,work_depth_fragments,wall_ms_median\n";
+    test::writeFile(mDir + "/a.csv",
+                    header + "ok,llvmpipe,4.5,shadowmap,10,1000,5\nok,llvmpipe,4.5,shadowmap,10,1000,6\n");
+    test::writeFile(mDir + "/b.csv",
+                    header + "ok,llvmpipe,4.5,shadowmap,10,1120,5\nok,llvmpipe,4.5,shadowmap,10,1120,6\n");
+    const std::string bench = test::benchBinary();
+    const auto same =
+        test::runCommand(bench + " compare " + mDir + "/a.csv " + mDir + "/a.csv --json " + mDir + "/c.json");
+    EXPECT_EQ(same.exitCode, 0) << same.output;
+    EXPECT_NE(same.output.find("C: wall time (unpaired rounds): INCONCLUSIVE"), std::string::npos)
+        << same.output;
+    EXPECT_NE(same.output.find("needs bench ci (valgrind)"), std::string::npos) << same.output;
+    const auto grew = test::runCommand(bench + " compare " + mDir + "/a.csv " + mDir + "/b.csv");
+    EXPECT_EQ(grew.exitCode, 1) << grew.output;
+    EXPECT_NE(grew.output.find("depth_fragments 1000 -> 1120 (+12.0%)"), std::string::npos) << grew.output;
+    const auto shrank = test::runCommand(bench + " compare " + mDir + "/b.csv " + mDir + "/a.csv");
+    EXPECT_EQ(shrank.exitCode, 0) << shrank.output;
+    EXPECT_NE(shrank.output.find("decrease:"), std::string::npos) << shrank.output;
+}
+
+TEST_F(PerfGateCliTest, BadInputIsExitTwo) {
+    const std::string bench = test::benchBinary();
+    EXPECT_EQ(test::runCommand("SHADOWBENCH_INJECT=extra_pass " + bench + " -t none --frames 1").exitCode, 2);
+    EXPECT_EQ(test::runCommand(bench + " ci --layers D").exitCode, 2);
+    EXPECT_EQ(test::runCommand(bench + " ci --configs no_such_config --quick --out " + mDir).exitCode, 2);
+    EXPECT_EQ(test::runCommand(bench + " ci --quick --baseline " + mDir + "/none --out " + mDir).exitCode, 2);
+    EXPECT_EQ(test::runCommand(bench + " compare " + mDir + "/missing.csv " + mDir + "/missing.csv").exitCode,
+              2);
+}
+
+} // namespace
