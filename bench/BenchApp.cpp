@@ -4,6 +4,7 @@
 
 #include <malloc.h>
 
+#include "bench/ExplainCommand.h"
 #include "bench/ExportCommand.h"
 #include "bench/MergeCommand.h"
 #include "bench/RunCommand.h"
@@ -68,6 +69,10 @@ constexpr Mode kModes[] = {
      "the perf gate: exact work, instructions per frame, wall time against\n"
      "the committed baseline or another build/driver (results/ci/)",
      CiCommand::main},
+    {"explain", "bench explain [options]",
+     "what the scene asks for, what each technique delivers of it, the\n"
+     "permutation it compiles and the passes one frame runs or skips",
+     ExplainCommand::main},
     {"compare", "bench compare BASE NEW", "the perf gate's verdict on two result CSVs", CompareCommand::main},
     {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main},
     {"export", "bench export IN.csv --format md", "a result CSV as a Markdown table, JSON or CSV",
@@ -93,6 +98,7 @@ constexpr const char* kExamples = R"(Examples:
   bench -t none -t shadowmap --format json         the rows as JSON on stdout (also csv, md)
   bench sweep -t none -t shadowmap -n 1,50,100,200 --csv inst.csv
   bench bottleneck -t none -t shadowmap -n 100 --csv bn.csv
+  bench explain -t planar --scene aircraft         effects asked for and delivered, passes run
 
 Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 the input is wrong (option, value, file, index),
 3 this machine or context lacks what is needed (an extension, a device, a loader).

@@ -20,6 +20,7 @@
 #include "bench/run/SamplesFile.h"
 #include "bench/viewer/Viewer.h"
 #include "core/Error.h"
+#include "techniques/EffectCoverage.h"
 #include "techniques/TechniqueRegistry.h"
 
 namespace sb {
@@ -75,16 +76,42 @@ const char* statusOf(ExitCode code) {
 /// The row of a technique that threw `e`: what it is and why it has no numbers, in the columns a sweep
 /// uses for the same (`status`, `error`).
 Refusal refusal(const Technique& technique, const Error& e, const Environment& env, int round,
-                const std::string& baseline) {
+                const std::string& baseline, const EffectCoverage& coverage) {
     Refusal r;
     r.code = e.code();
     r.what = e.what();
     r.message = r.what.rfind(technique.name() + ":", 0) == 0 ? r.what : technique.name() + ": " + r.what;
-    r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
-             {"status", statusOf(e.code())},           {"error", r.what},
-             {"technique", technique.name()},          {"properties", technique.properties().toString()},
-             {"repeat", std::to_string(round)},        {"baseline", baseline}};
+    r.row = {{"timestamp", Environment::nowIso8601()},
+             {"git_commit", env.gitCommit},
+             {"status", statusOf(e.code())},
+             {"error", r.what},
+             {"technique", technique.name()},
+             {"properties", technique.properties().toString()},
+             {"repeat", std::to_string(round)},
+             {"baseline", baseline},
+             {"effects_requested", effectMaskToString(coverage.requested)},
+             {"effects_delivered", effectMaskToString(coverage.delivered)},
+             {"effects_missing", effectMaskToString(coverage.missing)}};
     return r;
+}
+
+/// A technique short of an effect the scene asks for, without --strict-effects: one line on stderr,
+/// once per run (not per round), before its progress line; the run goes on (the user may want to
+/// measure it anyway).
+void warnEffects(const RunConfig& config, const Technique& technique, const EffectCoverage& coverage,
+                 const std::string& scene, int round) {
+    if (!coverage.fallsShort() || config.strictEffects || round != 1) return;
+    std::cerr << "bench: warning: " << coverage.shortfall(technique.name(), scene)
+              << "; measured anyway (--strict-effects refuses it)\n";
+}
+
+/// With --strict-effects the same shortfall is a refusal: exit 3, the technique cannot deliver what the
+/// scene needs, as with a missing extension.
+void requireEffects(const RunConfig& config, const Technique& technique, const EffectCoverage& coverage,
+                    const std::string& scene) {
+    if (config.strictEffects && coverage.fallsShort())
+        throw Error(coverage.shortfall(technique.name(), scene) + " (--strict-effects)",
+                    ExitCode::Unsupported);
 }
 
 /// The worst of the refusals: a failed run (1) over bad input (2) over what the context lacks (3).
@@ -193,18 +220,22 @@ int RunCommand::run(const RunConfig& config) {
             ++done;
             // A refusal repeats every round (the same scene, properties and context): reported once.
             if (refused[i]) continue;
+            const EffectCoverage coverage =
+                EffectCoverage::of(harness.scene().effects, technique.info().effects);
+            warnEffects(config, technique, coverage, harness.scene().name, round);
             if (!config.quiet)
                 log << "[" << done << "/" << total << "] " << technique.name() << " "
                     << technique.properties().toString() << " ..." << std::flush;
             std::optional<Measurement> measured;
             try {
+                requireEffects(config, technique, coverage, harness.scene().name);
                 measured = Measurement::take(harness, technique, evaluator.get(), options, env);
             } catch (const Error& e) {
                 // One technique's refusal (an open mesh it was told to refuse, a light type or an
                 // extension it lacks) must not cost the others their measurement: reported as a row,
                 // and the exit code says so at the end. The harness resets the frame state every
                 // frame, so the next technique starts clean.
-                refusals.push_back(refusal(technique, e, env, round, baseline));
+                refusals.push_back(refusal(technique, e, env, round, baseline, coverage));
                 refused[i] = true;
                 ++unwritten;
                 if (!config.quiet) log << " " << statusOf(e.code()) << ": " << e.what() << "\n";

@@ -361,6 +361,7 @@ const OverrideCase kOverrides[] = {
     {"Model", R"("args": ["--model", "a.obj"])", "--model b.obj", "a.obj"},
     {"NoTimerCheck", R"("args": ["--no-timer-check"])", "--no-timer-check", ""},
     {"NoStability", R"("mode": "accuracy", "stability": false)", "--no-stability", ""},
+    {"StrictEffects", R"("args": ["--strict-effects"])", "--strict-effects", ""},
 };
 
 void PrintTo(const OverrideCase& c, std::ostream* os) {

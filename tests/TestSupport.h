@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "TestPaths.h"
+#include "bench/output/CsvWriter.h"
 #include "bench/run/RunConfig.h"
 
 namespace sb::test {
@@ -72,6 +74,18 @@ inline CommandResult runCommand(const std::string& command) {
     int status = pclose(p);
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+/// Every row of the CSV at `path`, column name -> cell (a missing cell is the empty string).
+inline std::vector<std::map<std::string, std::string>> csvRowMaps(const std::string& path) {
+    const CsvTable t = CsvWriter::read(path);
+    std::vector<std::map<std::string, std::string>> out;
+    for (const auto& row : t.rows) {
+        std::map<std::string, std::string> m;
+        for (size_t i = 0; i < t.header.size() && i < row.size(); ++i) m[t.header[i]] = row[i];
+        out.push_back(m);
+    }
+    return out;
 }
 
 inline std::string readFile(const std::string& path) {

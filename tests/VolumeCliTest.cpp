@@ -21,18 +21,6 @@ namespace {
 const std::string kBench = SB_BENCH_BINARY;
 const std::string kQuick = " --size 96x96 --frames 2 --warmup 1 --no-timer-check";
 
-/// Column `name` of every row of `path`, keyed by the row's technique spec (technique + properties).
-std::vector<std::map<std::string, std::string>> rowsOf(const std::string& path) {
-    const CsvTable t = CsvWriter::read(path);
-    std::vector<std::map<std::string, std::string>> out;
-    for (const auto& row : t.rows) {
-        std::map<std::string, std::string> m;
-        for (size_t i = 0; i < t.header.size(); ++i) m[t.header[i]] = row[i];
-        out.push_back(m);
-    }
-    return out;
-}
-
 } // namespace
 
 TEST(VolumeCli, DefaultShadowsAnOpenMesh) {
@@ -40,7 +28,7 @@ TEST(VolumeCli, DefaultShadowsAnOpenMesh) {
     const std::string csv = test::freshTestDir("volumecli") + "/r.csv";
     const auto r = runCommand(kBench + " -t volume --scene teapot --instances 2 --csv " + csv + kQuick);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const auto rows = rowsOf(csv);
+    const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 1u);
     EXPECT_EQ(rows[0].at("status"), "ok");
     EXPECT_NE(rows[0].at("properties").find("open_edges=multiplicity"), std::string::npos);
@@ -55,7 +43,7 @@ TEST(VolumeCli, RefusalIsReportedAndTheNextTechniqueStillRuns) {
         kBench + " -t volume:open_edges=refuse -t none --scene teapot --instances 2 --csv " + csv + kQuick);
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("'teapot' has 128 open edges"), std::string::npos) << r.output;
-    const auto rows = rowsOf(csv);
+    const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 2u) << r.output;
     EXPECT_EQ(rows[0].at("technique"), "volume");
     EXPECT_EQ(rows[0].at("status"), "failed");
@@ -76,7 +64,7 @@ TEST(VolumeCli, ExitCodeIsTheWorstRefusal) {
     const auto r = runCommand(kBench + " -t shadowmap -t volume:open_edges=refuse -t none --scene teapot " +
                               "--instances 2 --light point --csv " + csv + kQuick);
     EXPECT_EQ(r.exitCode, 2) << r.output;
-    const auto rows = rowsOf(csv);
+    const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 3u) << r.output;
     EXPECT_EQ(rows[0].at("status"), "unsupported");
     EXPECT_EQ(rows[1].at("status"), "failed");
@@ -106,7 +94,7 @@ TEST(VolumeCli, RealOpenModelsMatchTheReference) {
                                   "--no-timer-check --no-stability --csv " +
                                   csv);
         ASSERT_EQ(r.exitCode, 0) << model << "\n" << r.output;
-        const auto rows = rowsOf(csv);
+        const auto rows = test::csvRowMaps(csv);
         ASSERT_EQ(rows.size(), 2u);
         EXPECT_GT(std::stod(rows[0].at("acc_evaluated")), 1000.0) << model;
         EXPECT_LT(std::stod(rows[0].at("acc_wrong_pct")), 0.3) << model;

@@ -224,6 +224,7 @@ RunResult Harness::summarize(Technique& technique, std::vector<FrameSample> samp
     r.technique = technique.name();
     r.properties = technique.properties().toString();
     r.permutation = technique.permutationKey();
+    r.effectsProduced = technique.info().effects;
     r.counters = technique.counters();
     std::vector<double> cpu, wall, total;
     std::map<std::string, std::vector<double>> perPass;

@@ -47,9 +47,10 @@ struct FrameLoads {
 
 struct RunResult {
     std::string technique;
-    std::string properties;  ///< canonical PropertySet::toString()
-    std::string permutation; ///< program keys
-    Counters counters;       ///< of the last measured frame
+    std::string properties;         ///< canonical PropertySet::toString()
+    std::string permutation;        ///< program keys
+    EffectMask effectsProduced = 0; ///< TechniqueInfo::effects (the row's effects_* columns)
+    Counters counters;              ///< of the last measured frame
     std::vector<FrameSample> samples;
     Statistics cpuSubmit, wall;
     std::vector<std::pair<std::string, Statistics>> gpuPass; ///< per declared pass (raw timer values)

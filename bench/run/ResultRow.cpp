@@ -3,6 +3,7 @@
 #include "bench/output/CsvNumber.h"
 #include "core/Injection.h"
 #include "gl/backends/BackendRegistry.h"
+#include "techniques/EffectCoverage.h"
 
 namespace sb {
 
@@ -62,6 +63,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
     const Scene& scene = h.scene();
     const Context& ctx = h.context();
     const TimerVerdict& v = h.timerVerdict();
+    const EffectCoverage coverage = EffectCoverage::of(scene.effects, r.effectsProduced);
     CsvRow row{
         {"timestamp", env.timestamp},
         {"git_commit", env.gitCommit},
@@ -80,6 +82,9 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"technique", r.technique},
         {"properties", r.properties},
         {"permutation", r.permutation},
+        {"effects_requested", effectMaskToString(coverage.requested)},
+        {"effects_delivered", effectMaskToString(coverage.delivered)},
+        {"effects_missing", effectMaskToString(coverage.missing)},
         {"instances", std::to_string(scene.countLayoutInstances())},
         {"scale", csvNumber(c.sceneOptions.scale)},
         {"tessellation",

@@ -38,6 +38,9 @@ struct RunConfig {
     bool stability = true;       ///< accuracy: perturbation gain and flicker
     int windowFrames = 0;        ///< --window: close after this many frames (0 = when the window closes)
     bool quiet = false;
+    /// A technique that cannot produce an effect the scene asks for is refused (exit 3) instead of
+    /// measured with a one-line warning (techniques/EffectCoverage.h).
+    bool strictEffects = false;
     int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
     RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
     static constexpr int kMinFrames = 5;

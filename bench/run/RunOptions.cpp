@@ -120,6 +120,9 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
     app.add_option("--max-memory-gib", raw.maxMemoryGiB, "refuse scenes estimated above this memory")
         ->capture_default_str();
     app.add_flag("-q,--quiet", c.quiet, "print only the table");
+    app.add_flag("--strict-effects", c.strictEffects,
+                 "refuse (exit 3) a technique that cannot produce an effect the scene asks for, instead of "
+                 "measuring it with a warning");
     app.add_option("--repeat", c.repeat,
                    "rounds: measure the techniques in turn K times (A B, A B ...); ratios within a round")
         ->capture_default_str();

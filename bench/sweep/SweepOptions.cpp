@@ -31,6 +31,8 @@ const PassThroughOption kPassThrough[] = {
     {"--max-memory-gib", true, "refuse scenes estimated above this memory", nullptr},
     {"--no-timer-check", false, "skip the GPU-timer calibration (rows say unchecked)", nullptr},
     {"--no-stability", false, "accuracy: skip perturbation gain and flicker", nullptr},
+    {"--strict-effects", false, "refuse techniques that cannot produce an effect the scene asks for",
+     nullptr},
 };
 
 const PassThroughOption* findPassThrough(const std::string& name) {

@@ -1,0 +1,114 @@
+#include "bench/ExplainCommand.h"
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "bench/BenchApp.h"
+#include "bench/output/TextColumns.h"
+#include "bench/run/Harness.h"
+#include "bench/run/RunOptions.h"
+#include "core/Error.h"
+#include "techniques/EffectCoverage.h"
+#include "techniques/TechniqueRegistry.h"
+
+namespace sb {
+
+namespace {
+
+std::string workText(const PassWork& w) {
+    std::ostringstream os;
+    os << w.submitted.drawCalls << " draws, " << w.submitted.triangles << " triangles, "
+       << w.submitted.glCalls << " GL calls";
+    if (w.pipeline)
+        os << ", " << w.pipeline->vertexShaderInvocations << " vertices, "
+           << w.pipeline->fragmentShaderInvocations << " fragments";
+    return os.str();
+}
+
+void printEffects(std::ostream& os, const EffectCoverage& c) {
+    TextColumns t("  ");
+    t.addRow({"effects requested", effectMaskToString(c.requested)});
+    t.addRow({"effects delivered", effectMaskToString(c.delivered)});
+    std::string missing = effectMaskToString(c.missing);
+    if (c.fallsShort())
+        missing += "  (a run warns; --strict-effects refuses it)";
+    else if (c.missing)
+        missing += "  (a baseline: it draws no shadow by design)";
+    t.addRow({"cannot deliver", missing});
+    t.print(os);
+}
+
+/// What a pass did: "ran"; "no GL work" when the pipeline counted nothing and nothing was drawn (the
+/// pass was entered, e.g. a blur of radius 0, or it works on the CPU only); "ran" too where the context
+/// cannot count the pipeline, since full-screen passes draw outside the submitter's counts.
+const char* passStatus(const std::string& pass, const PassWork& w) {
+    if (pass == "frame") return "harness";
+    const bool drew = w.submitted.drawCalls > 0 || w.submitted.glCalls > 0;
+    const bool counted =
+        w.pipeline && (w.pipeline->vertexShaderInvocations > 0 || w.pipeline->fragmentShaderInvocations > 0);
+    return drew || counted || !w.pipeline ? "ran" : "no GL work";
+}
+
+/// The passes of one census frame, then the declared passes it never entered.
+void printPasses(std::ostream& os, const TechniqueInfo& info, const FrameWork& work) {
+    os << "  passes of one frame (exact counts, not timed):\n";
+    TextColumns t("    ");
+    for (const auto& [pass, w] : work) t.addRow({pass, passStatus(pass, w), workText(w)});
+    for (const std::string& pass : info.passes) {
+        bool ran = false;
+        for (const auto& entry : work) ran = ran || entry.first == pass;
+        if (!ran) t.addRow({pass, "skipped", "declared, not entered in this frame (see the counters)"});
+    }
+    t.print(os);
+}
+
+void printCounters(std::ostream& os, const Counters& counters) {
+    if (counters.empty()) return;
+    os << "  counters:\n";
+    TextColumns t("    ");
+    for (const auto& [name, value] : counters) t.addRow({name, formatNumber("%.10g", value)});
+    t.print(os);
+}
+
+} // namespace
+
+int ExplainCommand::main(int argc, char** argv) {
+    RunConfig config;
+    bool listOnly = false;
+    if (int code = RunOptions::parse(argc, argv, config, listOnly, BenchApp::helpFooter()); code >= 0)
+        return code;
+    // Declared before the techniques, so destroyed after them: they release GL objects in their
+    // destructors (as in RunCommand::run).
+    std::unique_ptr<Harness> harnessOwner;
+    std::vector<std::unique_ptr<Technique>> techniques; // created first: a typo fails before any GL
+    for (const TechniqueSpec& spec : config.techniques) techniques.push_back(TechniqueRegistry::create(spec));
+    harnessOwner = std::make_unique<Harness>(config);
+    Harness& harness = *harnessOwner;
+    const Scene& scene = harness.scene();
+    std::cout << "scene " << scene.name << ": " << scene.lights.size() << " light(s), "
+              << scene.totalTriangles() << " triangles; " << config.width << "x" << config.height
+              << ", camera " << config.camera << ", " << submitModeName(config.submit) << " submission; "
+              << harness.context().renderer << "\n";
+    int worst = 0;
+    auto rank = [](int c) { return c == 1 ? 3 : c == 2 ? 2 : c == 3 ? 1 : 0; };
+    for (const auto& technique : techniques) {
+        const TechniqueInfo& info = technique->info();
+        std::cout << "\n" << info.name << " " << technique->properties().toString() << "\n";
+        const EffectCoverage coverage = EffectCoverage::of(scene.effects, info.effects);
+        printEffects(std::cout, coverage);
+        try {
+            harness.prepare(*technique);
+            const FrameLoads loads = harness.measureLoads(*technique);
+            std::cout << "  permutation        " << technique->permutationKey() << "\n";
+            printPasses(std::cout, info, loads.passes);
+            printCounters(std::cout, technique->counters());
+        } catch (const Error& e) {
+            std::cout << "  refused            " << e.what() << " (exit code " << int(e.code()) << ")\n";
+            if (rank(int(e.code())) > rank(worst)) worst = int(e.code());
+        }
+    }
+    return worst;
+}
+
+} // namespace sb
