@@ -4,7 +4,6 @@
 #include <memory>
 #include <sstream>
 
-#include "bench/BenchApp.h"
 #include "bench/output/TextColumns.h"
 #include "bench/run/Harness.h"
 #include "bench/run/RunOptions.h"
@@ -71,13 +70,26 @@ void printCounters(std::ostream& os, const Counters& counters) {
     t.print(os);
 }
 
+constexpr const char* kHelp =
+    R"(bench explain [options]: the options of a run (technique, scene, size, camera, submission,
+light ...), nothing timed. For the scene and each technique it prints the effects the scene asks for,
+those the technique delivers and those it cannot (a run warns about them, --strict-effects refuses
+them), the shader permutation compile() chose, and the passes of one frame with their exact work:
+"ran", "no GL work" (entered, nothing drawn), "skipped" (declared, never entered). A technique that
+refuses the configuration is explained with its refusal, and the command exits with its code.
+
+Examples:
+  bench explain -t planar --scene aircraft                    self_shadowing is missing: why planar warns
+  bench explain -t shadowmap -t volume --scene sphere_plane   what each pass draws, side by side
+  bench explain -t vsm:blur=0 --submit instanced              the blur pass entered without work
+  bench explain -t none -t shadowmap --scene point_light      a refusal explained (exit code 3))";
+
 } // namespace
 
 int ExplainCommand::main(int argc, char** argv) {
     RunConfig config;
     bool listOnly = false;
-    if (int code = RunOptions::parse(argc, argv, config, listOnly, BenchApp::helpFooter()); code >= 0)
-        return code;
+    if (int code = RunOptions::parse(argc, argv, config, listOnly, kHelp); code >= 0) return code;
     // Declared before the techniques, so destroyed after them: they release GL objects in their
     // destructors (as in RunCommand::run).
     std::unique_ptr<Harness> harnessOwner;

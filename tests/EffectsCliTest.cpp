@@ -140,6 +140,13 @@ TEST(EffectsCli, ExplainSaysWhatIsMissingAndWhyATechniqueIsRefused) {
         << refused.output;
     EXPECT_NE(refused.output.find("lighting  ran"), std::string::npos) << "none is still explained\n"
                                                                        << refused.output;
+    // Its --help is explain's own, with examples.
+    const auto help = runCommand(kBench + " explain --help");
+    EXPECT_EQ(help.exitCode, 0) << help.output;
+    EXPECT_NE(help.output.find("bench explain [options]: the options of a run"), std::string::npos)
+        << help.output;
+    EXPECT_NE(help.output.find("  bench explain -t planar --scene aircraft"), std::string::npos)
+        << help.output;
     // A typo is bad input before any GL.
     EXPECT_EQ(runCommand(kBench + " explain -t shadowmapp").exitCode, 2);
 }
