@@ -7,6 +7,7 @@
 #include "bench/output/TextColumns.h"
 #include "bench/run/Harness.h"
 #include "bench/run/RunOptions.h"
+#include "bench/select/AutoResolver.h"
 #include "core/Error.h"
 #include "techniques/EffectCoverage.h"
 #include "techniques/TechniqueRegistry.h"
@@ -49,15 +50,20 @@ const char* passStatus(const std::string& pass, const PassWork& w) {
     return drew || counted || !w.pipeline ? "ran" : "no GL work";
 }
 
-/// The passes of one census frame, then the declared passes it never entered.
-void printPasses(std::ostream& os, const TechniqueInfo& info, const FrameWork& work) {
+/// The passes of one census frame, then the declared passes it never entered, with the technique's
+/// reason where it gave one (PassTimer::skip).
+void printPasses(std::ostream& os, const TechniqueInfo& info, const FrameLoads& loads) {
     os << "  passes of one frame (exact counts, not timed):\n";
     TextColumns t("    ");
-    for (const auto& [pass, w] : work) t.addRow({pass, passStatus(pass, w), workText(w)});
+    for (const auto& [pass, w] : loads.passes) t.addRow({pass, passStatus(pass, w), workText(w)});
     for (const std::string& pass : info.passes) {
         bool ran = false;
-        for (const auto& entry : work) ran = ran || entry.first == pass;
-        if (!ran) t.addRow({pass, "skipped", "declared, not entered in this frame (see the counters)"});
+        for (const auto& entry : loads.passes) ran = ran || entry.first == pass;
+        if (ran) continue;
+        std::string why = "declared, not entered in this frame (see the counters)";
+        for (const auto& [skipped, reason] : loads.skipped)
+            if (skipped == pass) why = reason;
+        t.addRow({pass, "skipped", why});
     }
     t.print(os);
 }
@@ -94,7 +100,13 @@ int ExplainCommand::main(int argc, char** argv) {
     // destructors (as in RunCommand::run).
     std::unique_ptr<Harness> harnessOwner;
     std::vector<std::unique_ptr<Technique>> techniques; // created first: a typo fails before any GL
-    for (const TechniqueSpec& spec : config.techniques) techniques.push_back(TechniqueRegistry::create(spec));
+    for (const TechniqueSpec& spec : config.techniques) {
+        // The choice of -t auto is a timed calibration, which explain (untimed, one frame) does not make.
+        if (spec.name == AutoResolver::kName)
+            throw Error("bench explain does not take -t auto: run `bench -t auto` with these options, "
+                        "then explain the technique it chose");
+        techniques.push_back(TechniqueRegistry::create(spec));
+    }
     harnessOwner = std::make_unique<Harness>(config);
     Harness& harness = *harnessOwner;
     const Scene& scene = harness.scene();
@@ -102,8 +114,7 @@ int ExplainCommand::main(int argc, char** argv) {
               << scene.totalTriangles() << " triangles; " << config.width << "x" << config.height
               << ", camera " << config.camera << ", " << submitModeName(config.submit) << " submission; "
               << harness.context().renderer << "\n";
-    int worst = 0;
-    auto rank = [](int c) { return c == 1 ? 3 : c == 2 ? 2 : c == 3 ? 1 : 0; };
+    ExitCode worst = ExitCode::Ok;
     for (const auto& technique : techniques) {
         const TechniqueInfo& info = technique->info();
         std::cout << "\n" << info.name << " " << technique->properties().toString() << "\n";
@@ -113,14 +124,14 @@ int ExplainCommand::main(int argc, char** argv) {
             harness.prepare(*technique);
             const FrameLoads loads = harness.measureLoads(*technique);
             std::cout << "  permutation        " << technique->permutationKey() << "\n";
-            printPasses(std::cout, info, loads.passes);
+            printPasses(std::cout, info, loads);
             printCounters(std::cout, technique->counters());
         } catch (const Error& e) {
             std::cout << "  refused            " << e.what() << " (exit code " << int(e.code()) << ")\n";
-            if (rank(int(e.code())) > rank(worst)) worst = int(e.code());
+            worst = worseExitCode(worst, e.code());
         }
     }
-    return worst;
+    return int(worst);
 }
 
 } // namespace sb

@@ -16,8 +16,10 @@
 #include "bench/run/Harness.h"
 #include "bench/run/Measurement.h"
 #include "bench/run/QualitySweep.h"
+#include "bench/run/ResultRow.h"
 #include "bench/run/RunOptions.h"
 #include "bench/run/SamplesFile.h"
+#include "bench/select/AutoResolver.h"
 #include "bench/viewer/Viewer.h"
 #include "core/Error.h"
 #include "techniques/EffectCoverage.h"
@@ -81,17 +83,11 @@ Refusal refusal(const Technique& technique, const Error& e, const Environment& e
     r.code = e.code();
     r.what = e.what();
     r.message = r.what.rfind(technique.name() + ":", 0) == 0 ? r.what : technique.name() + ": " + r.what;
-    r.row = {{"timestamp", Environment::nowIso8601()},
-             {"git_commit", env.gitCommit},
-             {"status", statusOf(e.code())},
-             {"error", r.what},
-             {"technique", technique.name()},
-             {"properties", technique.properties().toString()},
-             {"repeat", std::to_string(round)},
-             {"baseline", baseline},
-             {"effects_requested", effectMaskToString(coverage.requested)},
-             {"effects_delivered", effectMaskToString(coverage.delivered)},
-             {"effects_missing", effectMaskToString(coverage.missing)}};
+    r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
+             {"status", statusOf(e.code())},           {"error", r.what},
+             {"technique", technique.name()},          {"properties", technique.properties().toString()},
+             {"repeat", std::to_string(round)},        {"baseline", baseline}};
+    for (auto& column : ResultRow::effectColumns(coverage)) r.row.push_back(std::move(column));
     return r;
 }
 
@@ -114,12 +110,19 @@ void requireEffects(const RunConfig& config, const Technique& technique, const E
                     ExitCode::Unsupported);
 }
 
+bool isAuto(const TechniqueSpec& spec) {
+    if (spec.name != AutoResolver::kName) return false;
+    if (!spec.properties.empty())
+        throw Error("-t auto takes no properties (it chooses a technique with its defaults; bound it with "
+                    "--auto-max-wrong)");
+    return true;
+}
+
 /// The worst of the refusals: a failed run (1) over bad input (2) over what the context lacks (3).
 const Refusal& worst(const std::vector<Refusal>& refusals) {
-    auto rank = [](ExitCode c) { return c == ExitCode::Failure ? 3 : c == ExitCode::BadInput ? 2 : 1; };
     const Refusal* w = &refusals.front();
     for (const Refusal& r : refusals)
-        if (rank(r.code) > rank(w->code)) w = &r;
+        if (worseExitCode(w->code, r.code) != w->code) w = &r;
     return *w;
 }
 
@@ -179,13 +182,23 @@ int RunCommand::run(const RunConfig& config) {
     std::unique_ptr<Harness> harnessOwner;
     const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
     // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
-    const std::vector<TechniqueSpec> specs = configurations(config);
+    std::vector<TechniqueSpec> specs = configurations(config);
     std::vector<std::unique_ptr<Technique>> techniques;
-    for (const TechniqueSpec& spec : specs) techniques.push_back(TechniqueRegistry::create(spec));
+    for (const TechniqueSpec& spec : specs)
+        techniques.push_back(isAuto(spec) ? nullptr : TechniqueRegistry::create(spec));
     checkOutputs(config);
 
     harnessOwner = std::make_unique<Harness>(config);
     Harness& harness = *harnessOwner;
+    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows.
+    std::vector<CsvRow> autoColumns(specs.size());
+    for (size_t i = 0; i < specs.size(); ++i) {
+        if (techniques[i]) continue;
+        const AutoResolution chosen = AutoResolver::resolve(harness, config, logStream(config));
+        specs[i] = chosen.spec;
+        techniques[i] = TechniqueRegistry::create(chosen.spec);
+        autoColumns[i] = chosen.columns();
+    }
     if (!accuracy && config.context.backend == Backend::Glfw && config.context.visibleWindow) {
         int code = Viewer::run(harness, techniques, config.windowFrames);
         // The last frame shown, when asked for (the viewer draws with the same targets).
@@ -244,6 +257,7 @@ int RunCommand::run(const RunConfig& config) {
             }
             appendRefusals(config, refusals, unwritten); // the ones before the first measurement
             Measurement& m = *measured;
+            for (const auto& column : autoColumns[i]) m.row.push_back(column);
             if (i == 0) baselineWall = m.run.wall.median;
             m.addRound(round, baseline, baselineWall);
             if (!config.quiet) {

@@ -14,6 +14,15 @@ enum class ExitCode : int {
     Unsupported = 3, ///< the GL context lacks a capability the technique needs
 };
 
+/// The exit code of a run that met several: a failed run (1) over bad input (2) over what the context
+/// lacks (3) over success (0), so the most serious cause is the one the caller sees.
+constexpr ExitCode worseExitCode(ExitCode a, ExitCode b) {
+    auto rank = [](ExitCode c) {
+        return c == ExitCode::Failure ? 3 : c == ExitCode::BadInput ? 2 : c == ExitCode::Unsupported ? 1 : 0;
+    };
+    return rank(b) > rank(a) ? b : a;
+}
+
 class Error : public std::runtime_error {
 public:
     explicit Error(const std::string& message, ExitCode code = ExitCode::BadInput)

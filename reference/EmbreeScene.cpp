@@ -63,7 +63,7 @@ std::vector<glm::vec3> worldVertices(const Scene& scene, size_t i) {
 
 } // namespace
 
-EmbreeScene::EmbreeScene(const Scene& scene) {
+EmbreeScene::EmbreeScene(const Scene& scene, Hits hits) {
     mDevice = rtcNewDevice(kDeviceConfig);
     if (!mDevice)
         throw Error(sceneLabel(scene) + ": Embree device: " + embreeErrorName(rtcGetDeviceError(nullptr)),
@@ -74,7 +74,7 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
         rtcSetSceneBuildQuality(mScene, RTC_BUILD_QUALITY_HIGH);
         mWorldVertices.resize(scene.instances.size());
         mIndices.resize(scene.instances.size(), nullptr);
-        for (size_t i = 0; i < scene.instances.size(); ++i) addInstance(scene, i);
+        for (size_t i = 0; i < scene.instances.size(); ++i) addInstance(scene, i, hits);
         computeNormals();
         rtcCommitScene(mScene);
         checkDevice(mDevice, sceneLabel(scene) + ": rtcCommitScene");
@@ -84,7 +84,7 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
     }
 }
 
-void EmbreeScene::addInstance(const Scene& scene, size_t i) {
+void EmbreeScene::addInstance(const Scene& scene, size_t i, Hits hits) {
     const Instance& inst = scene.instances[i];
     if (inst.mesh >= scene.meshes.size())
         throw Error(sceneLabel(scene) + ": instance " + std::to_string(i) + " names mesh " +
@@ -118,6 +118,9 @@ void EmbreeScene::addInstance(const Scene& scene, size_t i) {
     v.pop_back(); // capacity (and so the padding) stays; the pointer Embree holds stays valid
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(mScene, geom, unsigned(i));
+    // An instance that casts no shadow ("casts_shadow": false) stops no ray; it keeps its ID, its
+    // vertices and its normals for the G-buffer samples that lie on it.
+    if (!inst.castsShadow && hits == Hits::Casters) rtcDisableGeometry(geom);
     rtcReleaseGeometry(geom);
     checkDevice(mDevice, instanceLabel(scene, i) + ": attaching the triangle geometry");
 }

@@ -15,10 +15,15 @@ namespace sb {
 
 class EmbreeScene {
 public:
+    /// What rays can hit: the occluders (instances that cast a shadow; the shadow rays' scene) or
+    /// everything (primary rays, which must see a ground that casts nothing).
+    enum class Hits { Casters, All };
     /// Builds the BVH (RTC_BUILD_QUALITY_HIGH; the build is untimed precompute). Throws sb::Error
     /// naming the instance and the Embree error when a device or geometry cannot be created, or when
     /// the scene has a non-finite vertex ("scene 'x': instance 12 (mesh 'f35') has a non-finite vertex").
-    explicit EmbreeScene(const Scene& scene);
+    /// Every instance keeps its geometry ID and normals either way; with Hits::Casters the others are
+    /// disabled (rtcDisableGeometry).
+    explicit EmbreeScene(const Scene& scene, Hits hits = Hits::Casters);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -32,7 +37,7 @@ public:
 
 private:
     /// Creates, fills and attaches instance `i`'s triangle geometry with geomID i.
-    void addInstance(const Scene& scene, size_t i);
+    void addInstance(const Scene& scene, size_t i, Hits hits);
     /// Releases the scene and the device (also on a failed construction).
     void release();
     /// Fills mNormals from the world vertices (after all instances are added).

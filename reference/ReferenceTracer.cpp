@@ -62,6 +62,14 @@ CentreRay centreRay(const LightFrame& light, const glm::vec3& p) {
     return r;
 }
 
+/// A packet whose every lane holds a valid empty ray (origin, direction and [tnear, tfar] all 0).
+/// Observed with Debian's Embree (assertions on) on an AVX2 machine, where rtcOccluded16 runs 8-wide:
+/// its coherent path asserted `ray.valid()` on the lanes outside the valid mask too, and aborted when the
+/// uninitialised stack there held a NaN. Zeroing costs one memset per packet of 16 rays.
+RTCRay16 emptyPacket() {
+    return RTCRay16{};
+}
+
 void setRay(RTCRay16& rays, int lane, const glm::vec3& o, const glm::vec3& d, float tfar) {
     rays.org_x[lane] = o.x;
     rays.org_y[lane] = o.y;
@@ -87,12 +95,18 @@ struct TraceJob {
     bool hard = true;
     int side = 1; ///< soft: strata per axis
     uint32_t seed = 1;
+    bool castsShadows = true; ///< the light's "casts_shadows"
     VisibilityImage* out = nullptr;
     std::atomic<int> next{0};
     std::atomic<uint64_t> rayCount{0};
 
     glm::vec3 normal(size_t pixel) const {
         return embree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]);
+    }
+    /// False for a light that casts no shadow and on an instance that receives none: nothing
+    /// occludes the light there (the techniques' common/lighting.glsl, shadowApplies).
+    bool occludable(size_t pixel) const {
+        return castsShadows && scene.instances[gbuffer.instance(pixel)].receivesShadow;
     }
     uint64_t hardTile(int tx, int ty) const;
     uint64_t softPixel(size_t pixel) const;
@@ -102,7 +116,7 @@ struct TraceJob {
 /// Hard shadows of one 4x4 tile in one packet: neighbouring pixels see nearly the same BVH nodes,
 /// which is what the coherent flag tells Embree to exploit.
 uint64_t TraceJob::hardTile(int tx, int ty) const {
-    RTCRay16 rays;
+    RTCRay16 rays = emptyPacket();
     alignas(64) int valid[kPacket];
     size_t pixelOf[kPacket];
     int active = 0;
@@ -117,6 +131,10 @@ uint64_t TraceJob::hardTile(int tx, int ty) const {
         const glm::vec3 n = normal(pixel);
         const CentreRay c = centreRay(light, p);
         if (!c.arrives || !(glm::dot(n, c.towards) > 0.0f)) continue; // stays 0: no direct light
+        if (!occludable(pixel)) {
+            out->value[pixel] = 1.0f;
+            continue;
+        }
         const glm::vec3 o = p + n * ReferenceTracer::originEpsilon(p);
         if (c.distance == kInfinity)
             setRay(rays, lane, o, c.towards, kInfinity);
@@ -151,7 +169,7 @@ uint64_t TraceJob::softPixel(size_t pixel) const {
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     for (int first = 0; first < total; first += kPacket) {
-        RTCRay16 rays;
+        RTCRay16 rays = emptyPacket();
         alignas(64) int valid[kPacket];
         int active = 0;
         for (int lane = 0; lane < kPacket; ++lane) {
@@ -163,6 +181,10 @@ uint64_t TraceJob::softPixel(size_t pixel) const {
             // A sample under the receiver's horizon or on the emitter's dark side sends no light: it
             // counts as not seen (stays out of `lit`) without a ray.
             if (!s.valid || !(glm::dot(n, s.direction) > 0.0f)) continue;
+            if (!occludable(pixel)) { // seen unless occluded, and nothing occludes it here
+                ++lit;
+                continue;
+            }
             const float tfar = s.distance == kInfinity ? kInfinity : s.distance * kShortenTfar;
             setRay(rays, lane, o, s.direction, tfar);
             valid[lane] = -1;
@@ -266,6 +288,7 @@ VisibilityImage ReferenceTracer::trace(const GBuffer& gbuffer, int light, const 
     job.hard = options.forceHard || job.sampler.isDelta();
     job.side = job.hard ? 1 : LightSampler::gridSide(std::max(1, options.softSamples));
     job.seed = options.seed;
+    job.castsShadows = mScene.lights[size_t(light)].castsShadows;
     job.out = &image;
 
     int threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());

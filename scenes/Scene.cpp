@@ -45,6 +45,8 @@ void hashLight(Fnv1a& h, const Light& l) {
     h.value(int(l.shape));
     h.value(l.size);
     h.value(l.angularRadiusDeg);
+    // Only a shadowless light changes the hash, so the scenes of before the key keep their hash.
+    if (!l.castsShadows) h.value(uint8_t(0x5A));
 }
 
 void hashCamera(Fnv1a& h, const CameraPreset& c) {
@@ -170,6 +172,19 @@ size_t Scene::countLayoutInstances() const {
     size_t n = 0;
     for (const auto& instance : instances) n += instance.fromLayout && instance.object == 0 ? 1 : 0;
     return n;
+}
+
+uint32_t Scene::shadowlessLightMask() const {
+    uint32_t mask = 0;
+    for (size_t i = 0; i < lights.size() && i < 32; ++i)
+        if (!lights[i].castsShadows) mask |= 1u << i;
+    return mask;
+}
+
+bool Scene::hasNonReceivers() const {
+    for (const Instance& inst : instances)
+        if (!inst.receivesShadow) return true;
+    return false;
 }
 
 } // namespace sb

@@ -90,6 +90,9 @@ struct Light {
     /// disk and sphere: radius in x.
     glm::vec2 size{0.0f};
     float angularRadiusDeg = 0.0f; ///< directional + disk: angular radius of the emitter
+    /// false: the light illuminates but casts no shadow (scene file "casts_shadows": false, a fill
+    /// light): no technique renders a shadow pass for it and its visibility is 1 everywhere.
+    bool castsShadows = true;
     bool isArea() const { return shape != LightShape::Point; }
 };
 
@@ -125,6 +128,10 @@ struct Scene {
     /// Layout instances as the user counts them (--instances): one per placement, however many
     /// objects its model file has.
     size_t countLayoutInstances() const;
+    /// The lights with castsShadows false as a bit mask (bit i = light i, the first 32 lights).
+    uint32_t shadowlessLightMask() const;
+    /// Whether some instance has receivesShadow false.
+    bool hasNonReceivers() const;
 };
 
 } // namespace sb

@@ -613,7 +613,7 @@ void parseLightShapeKeys(const JsonReader& r, Light& light) {
 
 void parseLight(Context& ctx, const JsonReader& r) {
     r.requireObject({"type", "direction", "position", "color", "intensity", "range", "spot_outer_deg",
-                     "spot_inner_deg", "shape", "size", "angular_radius_deg"});
+                     "spot_inner_deg", "shape", "size", "angular_radius_deg", "casts_shadows"});
     Light light;
     if (r.has("type")) light.type = lightType(r["type"]);
     if (r.has("direction")) light.direction = r["direction"].unitDirection();
@@ -628,6 +628,7 @@ void parseLight(Context& ctx, const JsonReader& r) {
         light.spotInnerDeg =
             r["spot_inner_deg"].numberIn(0.0, light.spotOuterDeg, "an angle in [0, spot_outer_deg]");
     parseLightShapeKeys(r, light);
+    if (r.has("casts_shadows")) light.castsShadows = r["casts_shadows"].boolean();
     ctx.scene.lights.push_back(light);
 }
 

@@ -69,7 +69,9 @@
 //   (true), "max_tilt" (degrees of pitch/roll when yaw_only is false, 10), "color", "casts_shadow",
 //   "receives_shadow". SplitMix64-seeded, identical on every platform.
 // - lights: "type", "direction", "position", "color", "intensity", "range", "spot_outer_deg",
-//   "spot_inner_deg". Without "lights", one default directional light.
+//   "spot_inner_deg", "shape", "size", "angular_radius_deg", "casts_shadows" (default true; false: a
+//   light that illuminates and casts no shadow, so no technique renders a shadow pass for it). Without
+//   "lights", one default directional light.
 // - cameras: "name" (required, unique), "eye", "target", "up", "fov", "near", "far"; or "follow":
 //   "first_instance" with "offset" (in units of that instance's scale, so --scale keeps the framing):
 //   eye = first layout instance + offset * scale, target = that instance. An up parallel to the view

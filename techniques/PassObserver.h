@@ -11,6 +11,8 @@ public:
     virtual void passBegins(const char* pass) = 0;
     /// Called when the frame's last pass ends.
     virtual void framePassesEnd() = 0;
+    /// Called when a technique skips a declared pass this frame, with why (PassTimer::skip).
+    virtual void passSkipped(const char* pass, const char* reason) = 0;
 };
 
 } // namespace sb

@@ -23,6 +23,12 @@ public:
     void begin(const char* pass);
     /// Ends the last pass of the frame (error check).
     void end();
+    /// Records that the technique leaves out declared pass `pass` this frame because of `reason`
+    /// ("no light casts shadows"): the census frame reports it (bench explain, CSV `passes_skipped`);
+    /// a timed frame pays one null-pointer test. Both strings must be literals or outlive the frame.
+    void skip(const char* pass, const char* reason) {
+        if (mObserver) mObserver->passSkipped(pass, reason);
+    }
 
 private:
     TimerQueryRing* mRing;

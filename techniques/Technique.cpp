@@ -2,6 +2,14 @@
 
 namespace sb {
 
+Defines CompileContext::defines() const {
+    Defines d = submitter.defines();
+    if (scene.hasNonReceivers()) d["SB_NON_RECEIVERS"] = "";
+    if (const uint32_t mask = scene.shadowlessLightMask())
+        d["SB_SHADOWLESS_LIGHTS"] = std::to_string(mask) + "u";
+    return d;
+}
+
 Technique::Technique(TechniqueInfo info)
     : mInfo(std::move(info)), mProperties(mInfo.name, mInfo.properties) {}
 

@@ -56,6 +56,13 @@ struct CompileContext {
     const Scene& scene;
     const Submitter& submitter; ///< its defines() go into every scene-drawing program
     const Context& context;
+
+    /// What every scene-drawing program is compiled with: the submitter's defines and the scene's
+    /// shadow exceptions, each only where the scene has one (common/lighting.glsl, shadowApplies):
+    /// SB_NON_RECEIVERS when an instance receives no shadow (the instance's sign carries it,
+    /// Submitter::shadowSignedId), SB_SHADOWLESS_LIGHTS=<mask> when a light casts none. A scene
+    /// without exceptions gets the submitter's defines alone, so its programs stay what they were.
+    Defines defines() const;
 };
 
 struct FrameContext {

@@ -56,6 +56,12 @@ std::unique_ptr<Technique> TechniqueRegistry::create(const std::string& name) {
     for (const Entry& e : entries())
         if (name == e.name) return e.create();
     std::string known = join(names(), ", ");
+    // `-t auto` is resolved to a technique by `bench` runs (bench/select) before anything is created;
+    // a command that reaches here with it (sweep, bottleneck, explain) does not make that choice.
+    if (name == "auto")
+        throw Error("-t auto is taken by `bench` and `bench accuracy` runs only; this command needs a "
+                    "named technique (known: " +
+                    known + ")");
     throw Error("unknown technique '" + name + "' (known: " + known + ")");
 }
 

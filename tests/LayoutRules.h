@@ -70,6 +70,8 @@ inline const std::vector<Layer>& layers() {
         {"bench/sweep", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/bottleneck", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
         {"bench/golden", plus(belowBench, {"bench/output", "bench/run"}), {}},
+        // `-t auto`: the calibration runs frames through the harness and judges them like accuracy.
+        {"bench/select", plus(belowBench, {"bench/output", "bench/run"}), {}},
         // The performance gate (work counters, instructions under callgrind, wall-time statistics).
         {"bench/figures",
          plus(belowBench, {"bench/output", "bench/run", "bench/sweep", "bench/bottleneck"}),
@@ -77,7 +79,7 @@ inline const std::vector<Layer>& layers() {
         {"bench/ci", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
         {"bench",
          plus(belowBench, {"bench/output", "bench/run", "bench/viewer", "bench/sweep", "bench/bottleneck",
-                           "bench/figures", "bench/golden", "bench/ci"}),
+                           "bench/figures", "bench/golden", "bench/ci", "bench/select"}),
          {"common"}},
         // The hand-written shadow map that bench is measured against: the scene model only, no harness.
         {"bench/handshadow", {"core", "scenes"}, {}},

@@ -147,12 +147,13 @@ inline bool headerHas(const std::vector<std::string>& header, const std::string&
 }
 
 /// Documented columns a plain run does not write: only sweeps, bottleneck studies, failed
-/// configurations, bench ci (ci_*) and runs with a deliberate regression switched on (injected).
+/// configurations, bench ci (ci_*), runs with a deliberate regression switched on (injected) and rows
+/// of `-t auto` (auto_*: AutoCliTest checks those).
 inline const std::set<std::string>& sweepOnlyColumns() {
     static const std::set<std::string> kColumns = {
-        "error",      "technique_spec", "config_index", "config_group", "sweep_id",
-        "sweep_name", "sweep_configs",  "shard",        "perturbation", "study_base",
-        "injected",   "ci_config",      "ci_side",      "ci_round",     "ci_role"};
+        "error",         "technique_spec", "config_index", "config_group", "sweep_id",       "sweep_name",
+        "sweep_configs", "shard",          "perturbation", "study_base",   "injected",       "ci_config",
+        "ci_side",       "ci_round",       "ci_role",      "auto_choice",  "auto_candidates"};
     return kColumns;
 }
 

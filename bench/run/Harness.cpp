@@ -206,6 +206,7 @@ FrameLoads Harness::measureLoads(Technique& technique) {
     mPassTimer->setObserver(nullptr);
     FrameLoads loads;
     loads.passes = census.finish();
+    loads.skipped = census.skipped();
     const PassWork total = totalWork(loads.passes);
     loads.submitted = total.submitted;
     loads.pipeline = total.pipeline;

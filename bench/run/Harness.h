@@ -43,6 +43,7 @@ struct FrameLoads {
     SubmitStats submitted;
     std::optional<PipelineCounts> pipeline; ///< empty without GL_ARB_pipeline_statistics_query
     FrameWork passes;                       ///< the same, pass by pass (they sum to the above)
+    SkippedPasses skipped;                  ///< passes the technique left out, with its reasons
 };
 
 struct RunResult {

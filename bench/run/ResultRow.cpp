@@ -19,13 +19,22 @@ void addStats(CsvRow& row, const std::string& prefix, const Statistics& s) {
     row.emplace_back(prefix + "_mad", csvNumber(s.mad));
 }
 
+/// "directional+point": a light that casts no shadow is marked ("point:unshadowed").
 std::string lightsText(const Scene& scene) {
     std::string out;
     for (const Light& l : scene.lights) {
         if (!out.empty()) out += '+';
         out += lightTypeName(l.type);
+        if (!l.castsShadows) out += ":unshadowed";
     }
     return out.empty() ? "none" : out;
+}
+
+/// "depth: no light casts a shadow; blur: blur 0"; "" when the frame ran every declared pass.
+std::string skippedText(const SkippedPasses& skipped) {
+    std::string out;
+    for (const auto& [pass, reason] : skipped) out += (out.empty() ? "" : "; ") + pass + ": " + reason;
+    return out;
 }
 
 /// The census frame's loads; the pipeline's cells stay empty where the context cannot count them.
@@ -58,6 +67,12 @@ void addPassWork(CsvRow& row, const FrameWork& passes) {
 
 } // namespace
 
+CsvRow ResultRow::effectColumns(const EffectCoverage& coverage) {
+    return {{"effects_requested", effectMaskToString(coverage.requested)},
+            {"effects_delivered", effectMaskToString(coverage.delivered)},
+            {"effects_missing", effectMaskToString(coverage.missing)}};
+}
+
 CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment& env) {
     const RunConfig& c = h.config();
     const Scene& scene = h.scene();
@@ -82,9 +97,10 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"technique", r.technique},
         {"properties", r.properties},
         {"permutation", r.permutation},
-        {"effects_requested", effectMaskToString(coverage.requested)},
-        {"effects_delivered", effectMaskToString(coverage.delivered)},
-        {"effects_missing", effectMaskToString(coverage.missing)},
+    };
+    for (auto& column : effectColumns(coverage)) row.push_back(std::move(column));
+    row.emplace_back("passes_skipped", skippedText(r.loads.skipped));
+    CsvRow rest{
         {"instances", std::to_string(scene.countLayoutInstances())},
         {"scale", csvNumber(c.sceneOptions.scale)},
         {"tessellation",
@@ -101,6 +117,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"warmup", std::to_string(c.warmup)},
         {"setup_ms", csvNumber(r.setupMs)},
     };
+    for (auto& column : rest) row.push_back(std::move(column));
     addStats(row, "wall_ms", r.wall);
     addStats(row, "cpu_submit_ms", r.cpuSubmit);
     row.emplace_back("fps_median", csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));

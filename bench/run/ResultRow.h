@@ -6,13 +6,14 @@
 #include "bench/output/CsvWriter.h"
 #include "bench/run/Environment.h"
 #include "bench/run/Harness.h"
+#include "techniques/EffectCoverage.h"
 
 namespace sb {
 
 struct ResultRow {
     static CsvRow build(const Harness& harness, const RunResult& result, const Environment& env);
-    /// The fixed columns every row has, in order (per-pass GPU and counter columns follow).
-    static const std::vector<std::string>& fixedColumns();
+    /// effects_requested, effects_delivered, effects_missing: in every row, measured or refused.
+    static CsvRow effectColumns(const EffectCoverage& coverage);
 };
 
 } // namespace sb

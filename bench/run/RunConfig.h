@@ -41,6 +41,11 @@ struct RunConfig {
     /// A technique that cannot produce an effect the scene asks for is refused (exit 3) instead of
     /// measured with a one-line warning (techniques/EffectCoverage.h).
     bool strictEffects = false;
+    /// `-t auto` (bench/select/AutoResolver.h): the accuracy bound, the calibration cache ("" = the
+    /// default under ~/.cache) and whether to measure every candidate again.
+    double autoMaxWrongPct = 10.0;
+    std::string calibrationPath;
+    bool recalibrate = false;
     int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
     RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
     static constexpr int kMinFrames = 5;

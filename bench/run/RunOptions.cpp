@@ -61,8 +61,8 @@ std::string formatNumber(double v) {
 
 /// An option that names a file or folder and was given as "" would silently mean "not given".
 void requireNonEmptyPaths(const CLI::App& app) {
-    for (const char* name :
-         {"--csv", "--samples", "--screenshot", "--visibility", "--dump-shaders", "--model", "--scene"}) {
+    for (const char* name : {"--csv", "--samples", "--screenshot", "--visibility", "--dump-shaders",
+                             "--model", "--scene", "--calibration"}) {
         const CLI::Option* o = app.get_option_no_throw(name);
         if (o && o->count() > 0 && o->as<std::string>().empty())
             throw Error(std::string(name) + ": the path is empty");
@@ -123,6 +123,13 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
     app.add_flag("--strict-effects", c.strictEffects,
                  "refuse (exit 3) a technique that cannot produce an effect the scene asks for, instead of "
                  "measuring it with a warning");
+    app.add_option("--auto-max-wrong", c.autoMaxWrongPct,
+                   "-t auto: the most a candidate may misplace of the reference's shadow (misclassified "
+                   "samples over shadowed ones, %)")
+        ->capture_default_str();
+    app.add_option("--calibration", c.calibrationPath,
+                   "-t auto: the calibration cache (CSV; default ~/.cache/shadowbench/auto-calibration.csv)");
+    app.add_flag("--recalibrate", c.recalibrate, "-t auto: measure every candidate again");
     app.add_option("--repeat", c.repeat,
                    "rounds: measure the techniques in turn K times (A B, A B ...); ratios within a round")
         ->capture_default_str();
@@ -144,6 +151,8 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     if (c.mode != RunConfig::Mode::Accuracy && (c.sweep || raw.noStability))
         throw Error("--sweep and --no-stability belong to `bench accuracy` (see bench --help)");
     if (c.referenceSamples < 1 || c.referenceSamples > 4096) throw Error("--ref-samples: expected 1..4096");
+    if (!(c.autoMaxWrongPct >= 0.0 && c.autoMaxWrongPct <= 100.0))
+        throw Error("--auto-max-wrong: expected a percentage 0..100");
     if (c.accuracyLight < 0 || c.accuracyLight >= kMaxLights)
         throw Error("--light-index: expected 0.." + std::to_string(kMaxLights - 1));
     if (!raw.techniques.empty()) {

@@ -19,6 +19,7 @@ WorkCensus::WorkCensus(const Submitter& submitter, PipelineStatistics* statistic
 
 void WorkCensus::frameBegins() {
     mWork.clear();
+    mSkipped.clear();
     openInterval("frame");
 }
 
@@ -29,6 +30,12 @@ void WorkCensus::passBegins(const char* pass) {
 
 void WorkCensus::framePassesEnd() {
     closeInterval();
+}
+
+void WorkCensus::passSkipped(const char* pass, const char* reason) {
+    for (const auto& entry : mSkipped)
+        if (entry.first == pass) return;
+    mSkipped.emplace_back(pass, reason);
 }
 
 FrameWork WorkCensus::finish() {

@@ -27,6 +27,8 @@ struct PassWork {
 
 /// Per pass, in the order the passes first ran.
 using FrameWork = std::vector<std::pair<std::string, PassWork>>;
+/// Passes a technique left out of the frame and why (PassTimer::skip), in the order it said so.
+using SkippedPasses = std::vector<std::pair<std::string, std::string>>;
 
 class WorkCensus : public PassObserver {
 public:
@@ -37,8 +39,11 @@ public:
     void frameBegins();
     void passBegins(const char* pass) override;
     void framePassesEnd() override;
+    void passSkipped(const char* pass, const char* reason) override;
     /// Closes the open interval (if any) and returns the work per pass.
     FrameWork finish();
+    /// The passes skipped in the frame, each pass once (the first reason given for it).
+    const SkippedPasses& skipped() const { return mSkipped; }
 
 private:
     void closeInterval();
@@ -46,6 +51,7 @@ private:
     const Submitter& mSubmitter;
     PipelineStatistics* mStatistics;
     FrameWork mWork;
+    SkippedPasses mSkipped;
     std::string mOpenPass;
     bool mOpen = false;
     SubmitStats mStart;

@@ -25,3 +25,23 @@ vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
     }
     return uLightColor[i].rgb * (ndotl * atten);
 }
+
+// Whether light i's shadow applies to a fragment of the instance with colour-and-id `colorId`: not for a
+// light that casts none (SB_SHADOWLESS_LIGHTS, a bit per light) nor on an instance that receives none
+// (SB_NON_RECEIVERS: its id is negative). Both are compile-time, set only for scenes that have them
+// (CompileContext::defines): otherwise this is the constant true and costs nothing.
+bool lightCastsShadows(int i) {
+#ifdef SB_SHADOWLESS_LIGHTS
+    return ((uint(SB_SHADOWLESS_LIGHTS) >> uint(i)) & 1u) == 0u;
+#else
+    return true;
+#endif
+}
+
+bool shadowApplies(int i, vec4 colorId) {
+#ifdef SB_NON_RECEIVERS
+    return lightCastsShadows(i) && colorId.w > 0.0;
+#else
+    return lightCastsShadows(i);
+#endif
+}

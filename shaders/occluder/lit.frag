@@ -56,7 +56,7 @@ float worldPlaneVisibility(WorldPlane p, vec3 pos, vec3 towardLight) {
 }
 
 float othersVisibility(int light) {
-    uvec2 range = uCandidates[int(vColorId.w) - 1];
+    uvec2 range = uCandidates[int(abs(vColorId.w)) - 1];
     vec3 towardLight = toLight(light, vWorldPos);
     float v = 1.0;
     for (uint k = 0u; k < range.y && v > 0.0; ++k) {
@@ -74,10 +74,12 @@ void main() {
     vec4 visibility = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         float v = 1.0;
-        for (int j = 0; j < PLANE_COUNT; ++j) v *= planeVisibility(vOccluder[i * PLANE_COUNT + j], vLayer[j / 4][j % 4]);
+        if (shadowApplies(i, vColorId)) {
+            for (int j = 0; j < PLANE_COUNT; ++j) v *= planeVisibility(vOccluder[i * PLANE_COUNT + j], vLayer[j / 4][j % 4]);
 #ifdef RECEIVE_OTHERS
-        v *= othersVisibility(i);
+            v *= othersVisibility(i);
 #endif
+        }
         visibility[i] = v;
         light += v * lightTerm(i, vWorldPos, n);
     }

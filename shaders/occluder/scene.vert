@@ -15,6 +15,7 @@
 // ReceiverSections.h, and marks the others unused in w; u, v and s_I are still computed, so a triangle
 // interpolates them exactly whatever its vertices' sections).
 #include "common/frame.glsl"
+#include "common/lighting.glsl"
 #include "common/instance.glsl"
 
 struct OccluderPlane {
@@ -103,15 +104,19 @@ void main() {
     vColorId = instanceColorId();
     gl_Position = uViewProj * world;
 
-    OccluderInstance inst = uInstances[int(vColorId.w) - 1];
+    OccluderInstance inst = uInstances[int(abs(vColorId.w)) - 1];
     int first = int(inst.planes.x), count = min(int(inst.planes.y), PLANE_COUNT);
     uint received = receivedPlanes(inst.planes.zw);
     for (int j = 0; j < PLANE_COUNT; ++j) vLayer[j / 4][j % 4] = j < count ? uPlanes[first + j].origin.w : 0.0;
 #ifdef TEXTURE_MATRIX
-    int instanceIndex = int(vColorId.w) - 1;
+    int instanceIndex = int(abs(vColorId.w)) - 1;
     vec4 p1 = vec4(aPosition, 1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i)
         for (int j = 0; j < PLANE_COUNT; ++j) {
+            if (!shadowApplies(i, vColorId)) { // lit: the fragment stage reads none of it
+                vOccluder[i * PLANE_COUNT + j] = vec4(0.0);
+                continue;
+            }
             int m = ((instanceIndex * LIGHT_COUNT + i) * PLANE_COUNT + j) * 3;
             float use = float((received >> uint(j)) & 1u);
             vOccluder[i * PLANE_COUNT + j] = j < count ? vec4(dot(uMatrices[m], p1), dot(uMatrices[m + 1], p1),
@@ -120,6 +125,10 @@ void main() {
         }
 #else
     for (int i = 0; i < LIGHT_COUNT; ++i) {
+        if (!shadowApplies(i, vColorId)) { // lit: the fragment stage reads none of it
+            for (int j = 0; j < PLANE_COUNT; ++j) vOccluder[i * PLANE_COUNT + j] = vec4(0.0);
+            continue;
+        }
 #ifdef LIGHT_PER_INSTANCE
         vec4 l = inst.light[i];
 #else

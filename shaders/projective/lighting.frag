@@ -27,7 +27,7 @@ void main() {
     vec3 light = uAmbient.rgb;
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = visibility(i, vShadowCoord[i]);
+        vis[i] = shadowApplies(i, vColorId) ? visibility(i, vShadowCoord[i]) : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

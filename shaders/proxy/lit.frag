@@ -262,7 +262,16 @@ Accum proxies(int self, vec3 receiverNormal) {
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
+#ifdef SB_NON_RECEIVERS
+    // An instance that receives no shadow gets none of the proxies' darkening or bleeding.
+    Accum acc = vColorId.w > 0.0 ? proxies(int(vColorId.w + 0.5), n) : Accum(vec4(1.0), 1.0, vec3(0.0));
+#else
     Accum acc = proxies(int(vColorId.w + 0.5), n);
+#endif
+#ifdef SB_SHADOWLESS_LIGHTS
+    for (int i = 0; i < LIGHT_COUNT; ++i)
+        if (!shadowApplies(i, vColorId)) acc.visibility[i] = 1.0;
+#endif
     vec3 light = uAmbient.rgb * acc.ambient;
     for (int i = 0; i < LIGHT_COUNT; ++i) light += acc.visibility[i] * lightTerm(i, vWorldPos, n);
 #ifdef PROXY_BLEED

@@ -12,6 +12,6 @@ void main() {
     mat4 model = instanceModel();
     vec4 world = model * vec4(aPosition, 1.0);
     vWorldPos = world.xyz;
-    vObjectId = instanceColorId().w;
+    vObjectId = abs(instanceColorId().w);
     gl_Position = uGBufferViewProj * world;
 }

@@ -125,7 +125,7 @@ void main() {
 #else
         vec2 slope = vec2(0.0);
 #endif
-        vis[i] = visibility(i, coord, slope);
+        vis[i] = shadowApplies(i, vColorId) ? visibility(i, coord, slope) : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -99,7 +99,7 @@ void main() {
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec4 coord = vShadowCoord[i];
         vec2 slope = receiverSlope(coord.xyz / coord.w); // before any branch: derivatives
-        vis[i] = pcss(i, coord, slope);
+        vis[i] = shadowApplies(i, vColorId) ? pcss(i, coord, slope) : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -210,7 +210,9 @@ void BlobTechnique::fitAll(const Scene& scene) {
         for (const glm::vec3& c : mMeshBounds[inst.mesh].corners())
             world.extend(glm::vec3(inst.model * glm::vec4(c, 1.0f)));
         for (int l = 0; l < lights; ++l)
-            if (auto blob = fit(world, *mGround, scene.lights[size_t(l)], l, opacity, softness, fade))
+            if (!scene.lights[size_t(l)].castsShadows)
+                continue; // a fill light: no blob
+            else if (auto blob = fit(world, *mGround, scene.lights[size_t(l)], l, opacity, softness, fade))
                 mBlobs.push_back(*blob);
     }
 }

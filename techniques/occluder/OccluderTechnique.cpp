@@ -13,6 +13,7 @@
 #include "core/Error.h"
 #include "scenes/Math.h"
 #include "scenes/ShadowPlaneChooser.h"
+#include "techniques/common/ShadowWork.h"
 #include "techniques/occluder/OccluderTextures.h"
 #include "techniques/occluder/ReceiverSections.h"
 
@@ -202,7 +203,7 @@ void OccluderTechnique::setScene(const Scene& scene) {
     mTextureMatrix = space == "texture_matrix";
     if (mTextureMatrix)
         for (const Light& l : scene.lights)
-            if (l.type != LightType::Directional)
+            if (l.type != LightType::Directional && l.castsShadows)
                 throw Error(
                     "occluder: light_space=texture_matrix needs directional lights (for a point light the "
                     "projection onto a plane is not affine in the vertex); use per_instance",
@@ -424,7 +425,7 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
                       GLsizeiptr(std::max<size_t>(1, mInstanceData.size()) * sizeof(glm::vec4)), nullptr,
                       GL_DYNAMIC_DRAW);
     uploadInstances(false);
-    Defines d = ctx.submitter.defines();
+    Defines d = ctx.defines();
     if (!mSectionTable.empty()) {
         if (!mSectionBuffer) glCreateBuffers(1, &mSectionBuffer);
         glNamedBufferData(mSectionBuffer, GLsizeiptr(mSectionTable.size() * sizeof(glm::uvec4)),
@@ -452,6 +453,7 @@ void OccluderTechnique::uploadInstances(bool lights) {
         for (size_t i = 0; i < mScene->instances.size(); ++i)
             for (int l = 0; l < mLights && l < int(mScene->lights.size()); ++l) {
                 const Light& light = mScene->lights[size_t(l)];
+                if (!light.castsShadows) continue; // never read (occluder/scene.vert)
                 glm::vec4& out = mInstanceData[i * stride + 1 + size_t(l)];
                 if (light.type == LightType::Directional)
                     out = glm::vec4(
@@ -473,6 +475,7 @@ void OccluderTechnique::uploadMatrices() {
     for (size_t i = 0; i < mScene->instances.size(); ++i) {
         const uint32_t mesh = mScene->instances[i].mesh;
         for (int l = 0; l < mLights && l < int(mScene->lights.size()); ++l) {
+            if (!mScene->lights[size_t(l)].castsShadows) continue; // never read (occluder/scene.vert)
             const glm::vec3 toward = glm::normalize(
                 glm::vec3(mInverseModel[i] * glm::vec4(-mScene->lights[size_t(l)].direction, 0.0f)));
             for (uint32_t j = 0; j < mMeshCount[mesh]; ++j) {
@@ -515,7 +518,8 @@ void OccluderTechnique::execute(FrameContext& ctx) {
                  {"shadow_planes", planeInstances},
                  {"occluder_texels", double(mResolution) * mResolution * double(mLayers)},
                  {"receiver_candidates", double(mCandidates.size())},
-                 {"no_useful_planes", double(mNoUsefulPlanes)}};
+                 {"no_useful_planes", double(mNoUsefulPlanes)},
+                 {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, size_t(mLights)))}};
 }
 
 } // namespace sb

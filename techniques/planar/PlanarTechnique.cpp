@@ -11,6 +11,7 @@
 #include "scenes/MeshGenerators.h"
 #include "scenes/ProxyCollection.h"
 #include "techniques/FrameState.h"
+#include "techniques/common/ShadowWork.h"
 #include "techniques/submit/InstancedSubmitter.h"
 
 namespace sb {
@@ -84,6 +85,7 @@ PlanarTechnique::projections(const std::vector<ReceiverPlane>& planes, const Sce
     const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
     for (size_t p = 0; p < planes.size(); ++p)
         for (int l = 0; l < lights; ++l) {
+            if (!scene.lights[size_t(l)].castsShadows) continue; // a fill light: nothing flattened
             const glm::vec4 light = ReceiverPlane::homogeneousLight(scene.lights[size_t(l)]);
             // Relative to the light's coordinates: a light "in" the plane up to float rounding of its
             // position casts nothing (every occluder would collapse onto the light's footprint).
@@ -198,6 +200,18 @@ void PlanarTechnique::execute(FrameContext& ctx) {
     mLitProgram->use();
     ctx.submitter.draw(DrawSet::All);
 
+    if (mProjections.empty()) {
+        const char* reason = ShadowWork::noneNeeded(ctx.scene);
+        ctx.passes.skip("shadows", reason            ? reason
+                                   : mPlanes.empty() ? "no receiver plane"
+                                                     : "no light above a plane");
+    } else {
+        renderShadows(ctx);
+    }
+    setCounters(ctx);
+}
+
+void PlanarTechnique::renderShadows(FrameContext& ctx) {
     ctx.passes.begin("shadows");
     setShadowState(mStencil);
     int ref = 0;
@@ -217,13 +231,16 @@ void PlanarTechnique::execute(FrameContext& ctx) {
         drawOccluders(ctx, p);
     }
     resetFrameState();
+}
 
+void PlanarTechnique::setCounters(const FrameContext& ctx) {
     const SubmitStats& s = ctx.submitter.stats();
     const double proxies = mUseProxies ? double(mProjections.size()) : 0.0;
     mCounters = {{"draw_calls", double(s.drawCalls) + proxies * double(mProxyBatches.size())},
                  {"triangles", double(s.triangles) + proxies * double(mProxyTriangles)},
                  {"receiver_planes", double(mPlanes.size())},
-                 {"flattenings", double(mProjections.size())}};
+                 {"flattenings", double(mProjections.size())},
+                 {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, kMaxLights))}};
 }
 
 } // namespace sb

@@ -67,6 +67,10 @@ private:
     };
     void uploadProxies(const Scene& scene);
     void release();
+    /// The "shadows" pass: every flattening of a caster onto a receiver plane, per light.
+    void renderShadows(FrameContext& ctx);
+    /// The counters of the frame just drawn.
+    void setCounters(const FrameContext& ctx);
     void drawOccluders(FrameContext& ctx, const Projection& p);
     void setShadowState(bool stencil);
 

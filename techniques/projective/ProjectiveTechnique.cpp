@@ -9,6 +9,7 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
+#include "techniques/common/ShadowWork.h"
 
 namespace sb {
 
@@ -149,13 +150,23 @@ ProjectiveTechnique::Projector ProjectiveTechnique::computeProjector(const Scene
 void ProjectiveTechnique::setScene(const Scene& scene) {
     mViewProj.clear();
     mTextureMatrix.clear();
+    mCastsShadows.clear();
     mClamped = 0;
-    // No casters: nothing to project, every receiver is lit (and the frame does no texture work).
-    if (scene.computeBounds(true).empty()) return;
+    // No casters, no light that casts, or no receiver: nothing to project, everything is lit (and the
+    // frame does no texture work).
+    mNoProjector =
+        scene.computeBounds(true).empty() ? "no instance casts a shadow" : ShadowWork::noneNeeded(scene);
+    if (mNoProjector) return;
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     const glm::mat4 bias =
         glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
     for (size_t i = 0; i < count; ++i) {
+        mCastsShadows.push_back(scene.lights[i].castsShadows);
+        if (!scene.lights[i].castsShadows) { // a layer never drawn nor looked up (common/lighting.glsl)
+            mViewProj.emplace_back(1.0f);
+            mTextureMatrix.push_back(bias);
+            continue;
+        }
         const Projector p = computeProjector(scene, scene.lights[i]);
         mViewProj.push_back(p.viewProj);
         mTextureMatrix.push_back(bias * p.viewProj);
@@ -231,8 +242,8 @@ void ProjectiveTechnique::compile(const CompileContext& ctx) {
     mTextureProgram = mProjectiveProgram = mBlurHorizontal = mBlurVertical = nullptr;
     if (!mViewProj.empty()) {
         mTextureProgram = &ctx.programs.get({"projective/texture.vert", "projective/texture.frag", ""}, base);
-        Defines projective = base;
-        projective["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
+        Defines projective = ctx.defines(); // its lookups follow the scene's exceptions
+        projective["SHADOW_MAP"] = "";      // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
         projective["LIGHT_COUNT"] = std::to_string(mViewProj.size());
         mProjectiveProgram =
             &ctx.programs.get({"common/scene.vert", "projective/lighting.frag", ""}, projective);
@@ -255,6 +266,7 @@ void ProjectiveTechnique::renderTexture(FrameContext& ctx) {
     mTextureProgram->use();
     const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     for (size_t i = 0; i < mViewProj.size(); ++i) {
+        if (!mCastsShadows[i]) continue;
         glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
         glClearBufferfv(GL_COLOR, 0, white);
         glUniformMatrix4fv(kMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
@@ -270,6 +282,7 @@ int ProjectiveTechnique::renderBlur(FrameContext&) {
     glBindVertexArray(mEmptyVao);
     int draws = 0;
     for (size_t i = 0; i < mViewProj.size(); ++i) {
+        if (!mCastsShadows[i]) continue;
         // Horizontal: layer i -> the intermediate.
         glBindFramebuffer(GL_FRAMEBUFFER, mBlurFbo);
         mBlurHorizontal->use();
@@ -310,18 +323,30 @@ void ProjectiveTechnique::renderLighting(FrameContext& ctx) {
 
 void ProjectiveTechnique::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
-    ctx.passes.begin("texture");
-    renderTexture(ctx);
-    ctx.passes.begin("blur");
-    const int blurPasses = renderBlur(ctx);
+    int blurPasses = 0;
+    if (mNoProjector) {
+        ctx.passes.skip("texture", mNoProjector);
+        ctx.passes.skip("blur", mNoProjector);
+    } else {
+        ctx.passes.begin("texture");
+        renderTexture(ctx);
+        if (mBlurRadius > 0) {
+            ctx.passes.begin("blur");
+            blurPasses = renderBlur(ctx);
+        } else {
+            ctx.passes.skip("blur", "blur 0");
+        }
+    }
     ctx.passes.begin("lighting");
     renderLighting(ctx);
     const SubmitStats& s = ctx.submitter.stats();
     mCounters = {{"draw_calls", double(s.drawCalls)},
                  {"triangles", double(s.triangles)},
-                 {"projective_texels", double(mResolution) * mResolution * double(mViewProj.size())},
+                 {"projective_texels", double(mResolution) * mResolution *
+                                           double(std::count(mCastsShadows.begin(), mCastsShadows.end(), 1))},
                  {"blur_passes", double(blurPasses)},
-                 {"projector_clamped", double(mClamped)}};
+                 {"projector_clamped", double(mClamped)},
+                 {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, kMaxLights))}};
 }
 
 } // namespace sb

@@ -83,6 +83,8 @@ private:
     std::vector<glm::mat4> mViewProj;      ///< per light with a projector: light camera (clip space)
     std::vector<glm::mat4> mTextureMatrix; ///< per light: bias * viewProj (to [0,1] texture space)
     int mClamped = 0;                      ///< lights whose projector was clamped
+    std::vector<uint8_t> mCastsShadows;    ///< per light: false leaves its layer undrawn
+    const char* mNoProjector = nullptr;    ///< why the scene needs none (ShadowWork), or nullptr
     GLuint mArray = 0;                     ///< R8 2D array, one layer per light
     std::vector<GLuint> mFbos;             ///< per layer
     GLuint mBlurTexture = 0, mBlurFbo = 0; ///< R8 2D: the horizontal pass's result

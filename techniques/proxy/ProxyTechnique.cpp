@@ -112,7 +112,7 @@ void ProxyTechnique::setScene(const Scene& scene) {
 }
 
 void ProxyTechnique::compile(const CompileContext& ctx) {
-    Defines d = ctx.submitter.defines();
+    Defines d = ctx.defines();
     d["LIGHT_COUNT"] = std::to_string(mLights);
     if (mUseGrid) d["PROXY_GRID"] = "";
     if (mModulate) d["PROXY_MODULATE"] = "";

@@ -8,6 +8,7 @@
 
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
+#include "techniques/common/ShadowWork.h"
 #include "techniques/shadowmap/CascadeSplits.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -78,16 +79,17 @@ void CascadedTechnique::setScene(const Scene& scene) {
     int slot = 0;
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
-        FlatLightFits::refusePointLight(l, i, "cascaded", FlatLightFits::kOmniAdvice);
         LightMaps m;
-        m.directional = l.type == LightType::Directional;
+        m.castsShadows = l.castsShadows;
+        if (m.castsShadows) FlatLightFits::refusePointLight(l, i, "cascaded", FlatLightFits::kOmniAdvice);
+        m.directional = l.type == LightType::Directional && m.castsShadows;
         m.firstSlot = slot;
         m.slots = m.directional ? cascades : 1;
         if (m.directional) {
             m.lightView = CascadeFit::lightView(l.direction);
             m.bounds = CascadeFit::sceneBounds(casters, all, m.lightView);
             m.cascades.resize(size_t(cascades));
-        } else {
+        } else if (m.castsShadows) {
             m.spotViewProj = fitLightViewProjection(scene, l);
         }
         slot += m.slots;
@@ -108,7 +110,7 @@ void CascadedTechnique::compile(const CompileContext& ctx) {
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), slotCount(), false);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
-    Defines lit = base;
+    Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, mLights.size()));
     lit["SLOT_COUNT"] = std::to_string(slotCount());
     lit["CASCADE_COUNT"] = std::to_string(p.getInt(kCascades));
@@ -180,6 +182,10 @@ void CascadedTechnique::renderDepth(FrameContext& ctx) {
     for (const LightMaps& m : mLights)
         for (int c = 0; c < m.slots; ++c) {
             const size_t slot = size_t(m.firstSlot + c);
+            if (!m.castsShadows) { // an unshadowed light's slot: never drawn, looked up as lit
+                mEmptySlots |= 1u << slot;
+                continue;
+            }
             if (mSlotLayer[slot] != int(slot)) { // shares the map of the cascade before it
                 if (mEmptySlots & (1u << (slot - 1))) mEmptySlots |= 1u << slot;
                 continue;
@@ -205,7 +211,8 @@ void CascadedTechnique::renderLighting(FrameContext& ctx) {
     mLightingProgram->use();
     const int n = int(properties().getInt(kCascades));
     glm::vec4 splitFar(FLT_MAX), bandStart(FLT_MAX), bandScale(0.0f);
-    for (int c = 0; c < n; ++c) {
+    // No splits when the frame skipped its depth pass (ShadowWork::noneNeeded): nothing is looked up.
+    for (int c = 0; c + 1 < int(mSplits.size()) && c < n; ++c) {
         splitFar[c] = mSplits[size_t(c) + 1];
         if (c + 1 == n) break; // the last cascade blends into nothing
         const float band =
@@ -240,7 +247,8 @@ void CascadedTechnique::execute(FrameContext& ctx) {
                  {"triangles", double(s.triangles)},
                  {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mMapsRendered)},
                  {"cascades", cascades},
-                 {"casters_culled", double(mCulled)}};
+                 {"casters_culled", double(mCulled)},
+                 {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, mLights.size()))}};
 }
 
 } // namespace sb

@@ -62,6 +62,7 @@ private:
     /// A shadowed light: its slots and how they are fitted.
     struct LightMaps {
         bool directional = true;
+        bool castsShadows = true; ///< false: its slots are never drawn (empty: the lookup says lit)
         int firstSlot = 0;
         int slots = 1;                 ///< cascades (directional) or 1 (spot)
         glm::mat4 lightView{1.0f};     ///< directional: the light's rotation

@@ -71,7 +71,7 @@ void CubeMapTechnique::compile(const CompileContext& ctx) {
                                                   "shadowmap/cube_depth.geom"},
                                                  base)
                              : nullptr;
-    Defines lit = base;
+    Defines lit = ctx.defines(); // the depth passes have no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
@@ -154,9 +154,13 @@ void CubeMapTechnique::execute(FrameContext& ctx) {
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
     const double res = double(properties().getInt(P::kResolution));
     const double maps = double(CubeFaces::kFaces * mLights.omniCount() + mLights.flatCount());
-    mCounters = {{"draw_calls", double(s.drawCalls)},     {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", res * res * maps}, {"faces_rendered", double(mFacesRendered)},
-                 {"casters_culled", double(mCulled)},     {"lights_skipped", double(mLights.skippedCount())}};
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"shadow_map_texels", res * res * maps},
+                 {"faces_rendered", double(mFacesRendered)},
+                 {"casters_culled", double(mCulled)},
+                 {"lights_skipped", double(mLights.skippedCount())},
+                 {"lights_unshadowed", double(mLights.unshadowedCount())}};
 }
 
 } // namespace sb

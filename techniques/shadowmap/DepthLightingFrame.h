@@ -13,7 +13,9 @@ namespace sb {
 class DepthLightingFrame {
 public:
     /// Resets ctx.submitter's statistics, begins pass "depth" and calls `depth`, begins pass "lighting"
-    /// and calls `lighting`; returns the statistics of both.
+    /// and calls `lighting`; returns the statistics of both. Where the scene needs no shadow at all
+    /// (ShadowWork::noneNeeded) the depth pass is skipped with that reason and the lighting pass's
+    /// program computes none (every light unshadowed or no receiver: common/lighting.glsl).
     static SubmitStats run(FrameContext& ctx, const std::function<void()>& depth,
                            const std::function<void()>& lighting);
 };

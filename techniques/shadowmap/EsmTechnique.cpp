@@ -53,7 +53,7 @@ void EsmTechnique::compile(const CompileContext& ctx) {
     mMaps.allocate(resolution, GL_R32F);
     mDepthProgram =
         &ctx.programs.get({"shadowmap/moments.vert", "shadowmap/moments.frag", ""}, ctx.submitter.defines());
-    Defines lit = ctx.submitter.defines();
+    Defines lit = ctx.defines();
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/esm.frag", ""}, lit);

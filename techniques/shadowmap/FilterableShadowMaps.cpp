@@ -8,6 +8,7 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
+#include "techniques/common/ShadowWork.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
@@ -111,13 +112,25 @@ float FilterableShadowMaps::linearDepth(const glm::vec4& plane, const glm::vec4&
     return glm::dot(glm::vec3(plane), p) + plane.w;
 }
 
+size_t FilterableShadowMaps::shadowedLights() const {
+    return size_t(std::count(mCastsShadows.begin(), mCastsShadows.end(), uint8_t(1)));
+}
+
 void FilterableShadowMaps::setScene(const Scene& scene) {
     mFitted.clear();
+    mCastsShadows.clear();
     mDirectional.clear();
     mLightPosition.clear();
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
+        mCastsShadows.push_back(l.castsShadows);
+        if (!l.castsShadows) { // lit, never looked up: no fit (a point light has none)
+            mFitted.emplace_back(1.0f);
+            mDirectional.push_back(true);
+            mLightPosition.push_back(l.position);
+            continue;
+        }
         if (l.type == LightType::Point)
             throw Error(mOwner + ": light " + std::to_string(i) +
                             " is a point light, which needs an omni shadow map: use -t cubemap or -t "
@@ -216,6 +229,10 @@ void FilterableShadowMaps::render(FrameContext& ctx, const Program& program, con
     mCulled = 0;
     const float nearest = 0.0f, farthest = 1.0f;
     for (size_t i = 0; i < mViewProj.size(); ++i) {
+        if (!mCastsShadows[i]) { // never looked up (common/lighting.glsl): neither cleared nor blurred
+            mHasCasters[i] = 0;
+            continue;
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
         glClearBufferfv(GL_COLOR, 0, glm::value_ptr(clear));
         const size_t kept = mCulling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, mKeep);
@@ -253,10 +270,20 @@ Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& dep
                                            SeparableBlur& blur, const Program& lighting,
                                            const std::function<void()>& setUniforms) {
     ctx.submitter.resetStats();
-    ctx.passes.begin("depth");
-    render(ctx, depth, clear);
-    ctx.passes.begin("blur");
-    const double blurTexels = blur.apply(texture(), framebuffers(), layerHasCasters());
+    double blurTexels = 0.0;
+    if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+        ctx.passes.skip("depth", reason);
+        ctx.passes.skip("blur", reason);
+    } else {
+        ctx.passes.begin("depth");
+        render(ctx, depth, clear);
+        if (blur.radius() > 0) {
+            ctx.passes.begin("blur");
+            blurTexels = blur.apply(texture(), framebuffers(), layerHasCasters());
+        } else {
+            ctx.passes.skip("blur", "blur below 2 texels: a one-tap kernel");
+        }
+    }
     ctx.passes.begin("lighting");
     ctx.targets.bind();
     lighting.use();
@@ -269,7 +296,8 @@ Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& dep
     const double res = resolution();
     return {{"draw_calls", double(s.drawCalls)},
             {"triangles", double(s.triangles)},
-            {"shadow_map_texels", res * res * double(lights())},
+            {"shadow_map_texels", res * res * double(shadowedLights())},
+            {"lights_unshadowed", double(lights() - shadowedLights())},
             {"blur_texels", blurTexels},
             {"casters_culled", double(castersCulled())}};
 }

@@ -110,6 +110,8 @@ public:
                          const Program& lighting, const std::function<void()>& setUniforms);
 
     size_t lights() const { return mFitted.size(); }
+    /// The lights that cast shadows (their layers are rendered and blurred).
+    size_t shadowedLights() const;
     int marginTexels() const { return mMarginTexels; }
     int layers() const { return mLayers; }
     int resolution() const { return mResolution; }
@@ -131,8 +133,9 @@ public:
 private:
     void release();
 
-    std::string mOwner;             ///< technique name, for error messages
-    std::vector<glm::mat4> mFitted; ///< per light: scenes/LightFit.h's camera, before the margin
+    std::string mOwner;                 ///< technique name, for error messages
+    std::vector<glm::mat4> mFitted;     ///< per light: scenes/LightFit.h's camera, before the margin
+    std::vector<uint8_t> mCastsShadows; ///< per light
     std::vector<uint8_t> mDirectional;
     std::vector<glm::vec3> mLightPosition;
     int mFitResolution = 0, mMarginTexels = -1;

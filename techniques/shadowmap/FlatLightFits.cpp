@@ -33,13 +33,24 @@ void FlatLightFits::refusePointLight(const Light& light, size_t index, const std
 void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const std::string& advice) {
     mViewProj.clear();
     mShadowMatrix.clear();
+    mCastsShadows.clear();
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
+        mCastsShadows.push_back(l.castsShadows);
+        if (!l.castsShadows) { // lit, never looked up: no fit (a point light has none)
+            mViewProj.emplace_back(1.0f);
+            mShadowMatrix.push_back(textureBias());
+            continue;
+        }
         refusePointLight(l, i, technique, advice);
         mViewProj.push_back(fitLightViewProjection(scene, l));
         mShadowMatrix.push_back(textureBias() * mViewProj.back());
     }
+}
+
+size_t FlatLightFits::shadowed() const {
+    return size_t(std::count(mCastsShadows.begin(), mCastsShadows.end(), uint8_t(1)));
 }
 
 void FlatLightFits::setShadowMatrices() const {
@@ -52,6 +63,7 @@ size_t FlatLightFits::renderDepth(Submitter& submitter, const InstanceCulling& c
                                   const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll) const {
     size_t culled = 0;
     for (size_t i = 0; i < mViewProj.size(); ++i) {
+        if (!mCastsShadows[i]) continue;
         maps.beginLayer(int(i));
         glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
         if (drawAll) {

@@ -31,17 +31,21 @@ public:
     static void refusePointLight(const Light& light, size_t index, const std::string& technique,
                                  const std::string& advice);
 
-    /// Fits every light's camera (untimed: setScene), refusing point lights as above.
+    /// Fits every light's camera (untimed: setScene), refusing point lights that cast shadows as above
+    /// (a point light with "casts_shadows": false only illuminates: its matrix is unused).
     void setScene(const Scene& scene, const std::string& technique, const std::string& advice);
 
     size_t size() const { return mViewProj.size(); }
+    /// The lights that cast shadows (their layers are rendered): the texel counters count these.
+    size_t shadowed() const;
     const std::vector<glm::mat4>& viewProj() const { return mViewProj; }           ///< per light
     const std::vector<glm::mat4>& shadowMatrices() const { return mShadowMatrix; } ///< bias * viewProj
 
     /// Sets the bound lighting program's shadow matrices (location 8, common/scene.vert), one per light.
     void setShadowMatrices() const;
-    /// The depth pass of every light into layer i of `maps` (the depth program bound, DepthPassState
-    /// set by the caller): clears the layer, sets the light's matrix (location 8, shadowmap/depth.vert)
+    /// The depth pass of every light that casts shadows into layer i of `maps` (the depth program bound,
+    /// DepthPassState set by the caller; an unshadowed light's layer is neither cleared nor read):
+    /// clears the layer, sets the light's matrix (location 8, shadowmap/depth.vert)
     /// and draws the casters `culling` keeps in its frustum, or everything when `drawAll` (the perf
     /// gate's injected regression, core/Injection.h). Returns the casters culled over all lights.
     size_t renderDepth(Submitter& submitter, const InstanceCulling& culling, const DepthLayers& maps,
@@ -50,6 +54,7 @@ public:
 private:
     std::vector<glm::mat4> mViewProj;
     std::vector<glm::mat4> mShadowMatrix;
+    std::vector<uint8_t> mCastsShadows; ///< per light
 };
 
 } // namespace sb

@@ -19,13 +19,16 @@ constexpr GLint kDepthRangeLocation = 20;  // vec2 (near, far) per light
 
 void OmniLightSet::setScene(const Scene& scene) {
     mLights.clear();
-    mOmni = mFlat = mSkipped = 0;
+    mOmni = mFlat = mSkipped = mUnshadowed = 0;
     const glm::mat4& bias = FlatLightFits::textureBias();
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
         OmniLight o;
-        if (l.type == LightType::Point) {
+        if (!l.castsShadows) { // no map of any kind: its lookups are compiled out (common/lighting.glsl)
+            o.kind = OmniMapKind::None;
+            ++mUnshadowed;
+        } else if (l.type == LightType::Point) {
             o.point = PointLightFit::fit(scene, l);
             o.kind = o.point.castsShadow ? OmniMapKind::Omni : OmniMapKind::None;
             o.index = o.point.castsShadow ? mOmni++ : mSkipped++;

@@ -39,7 +39,8 @@ public:
     const std::vector<OmniLight>& lights() const { return mLights; }
     int omniCount() const { return mOmni; } ///< point lights with a map
     int flatCount() const { return mFlat; }
-    int skippedCount() const { return mSkipped; } ///< point lights whose range reaches no caster
+    int skippedCount() const { return mSkipped; }       ///< point lights whose range reaches no caster
+    int unshadowedCount() const { return mUnshadowed; } ///< lights with "casts_shadows": false (no map)
     /// LIGHT_COUNT of the lighting shader (at least 1: GLSL has no empty arrays).
     int shaderLightCount() const { return std::max<int>(1, int(mLights.size())); }
 
@@ -56,7 +57,7 @@ public:
 
 private:
     std::vector<OmniLight> mLights;
-    int mOmni = 0, mFlat = 0, mSkipped = 0;
+    int mOmni = 0, mFlat = 0, mSkipped = 0, mUnshadowed = 0;
 };
 
 } // namespace sb

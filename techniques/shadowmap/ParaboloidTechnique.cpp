@@ -58,7 +58,7 @@ void ParaboloidTechnique::compile(const CompileContext& ctx) {
     mFlatDepth = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
     mParaboloidDepth =
         &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "shadowmap/depth.frag", ""}, base);
-    Defines lit = base;
+    Defines lit = ctx.defines(); // the depth passes have no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
@@ -117,7 +117,8 @@ void ParaboloidTechnique::execute(FrameContext& ctx) {
                  {"shadow_map_texels", res * res * double(mMaps.layers())},
                  {"hemispheres_rendered", double(mHemispheresRendered)},
                  {"casters_culled", double(mCulled)},
-                 {"lights_skipped", double(mLights.skippedCount())}};
+                 {"lights_skipped", double(mLights.skippedCount())},
+                 {"lights_unshadowed", double(mLights.unshadowedCount())}};
 }
 
 } // namespace sb

@@ -174,7 +174,7 @@ void PcssTechnique::compile(const CompileContext& ctx) {
 
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
-    Defines lit = base;
+    Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(layers);
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/pcss.frag", ""}, lit);
@@ -228,7 +228,8 @@ void PcssTechnique::execute(FrameContext& ctx) {
     for (const LightParams& lp : mParams) defaulted += lp.defaulted ? 1.0 : 0.0;
     mCounters = {{"draw_calls", double(s.drawCalls)},
                  {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mLights.size())},
+                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mLights.shadowed())},
+                 {"lights_unshadowed", double(mLights.size() - mLights.shadowed())},
                  {"casters_culled", double(mCulled)},
                  {"blocker_taps", double(mBlockerKernel.size())},
                  {"filter_taps", double(mFilterKernel.size())},

@@ -129,7 +129,7 @@ void ShadowMapTechnique::compile(const CompileContext& ctx) {
     mDrawAllIntoMap = injected(Injection::NoCasterCulling);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
-    Defines lit = base;
+    Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(layers);
     if (hw) lit["HW_COMPARE"] = "";
@@ -184,7 +184,8 @@ void ShadowMapTechnique::execute(FrameContext& ctx) {
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
     mCounters = {{"draw_calls", double(s.drawCalls)},
                  {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mLights.size())},
+                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mLights.shadowed())},
+                 {"lights_unshadowed", double(mLights.size() - mLights.shadowed())},
                  {"casters_culled", double(mCulled)}};
 }
 

@@ -59,7 +59,7 @@ void VsmTechnique::compile(const CompileContext& ctx) {
     Defines depth = ctx.submitter.defines();
     depth["VSM"] = "";
     mDepthProgram = &ctx.programs.get({"shadowmap/moments.vert", "shadowmap/moments.frag", ""}, depth);
-    Defines lit = ctx.submitter.defines();
+    Defines lit = ctx.defines();
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/vsm.frag", ""}, lit);

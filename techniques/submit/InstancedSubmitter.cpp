@@ -8,7 +8,7 @@ namespace sb {
 
 namespace {
 constexpr DrawSet kSets[kDrawSetCount] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers,
-                                          DrawSet::NonCasters};
+                                          DrawSet::NonCasters, DrawSet::NonReceivers};
 } // namespace
 
 InstancedSubmitter::~InstancedSubmitter() {
@@ -34,7 +34,7 @@ void InstancedSubmitter::upload(const Scene& scene) {
             for (uint32_t i = 0; i < scene.instances.size(); ++i) {
                 const Instance& inst = scene.instances[i];
                 if (inst.mesh != m || !inSet(inst, kSets[s])) continue;
-                records.push_back({inst.model, glm::vec4(inst.color, float(inst.objectId))});
+                records.push_back({inst.model, glm::vec4(inst.color, shadowSignedId(inst))});
                 mRecordInstance.push_back(i);
                 ++b.count;
             }

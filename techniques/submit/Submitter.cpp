@@ -55,14 +55,20 @@ bool Submitter::inSet(const Instance& inst, DrawSet set) {
         return inst.receivesShadow;
     case DrawSet::NonCasters:
         return !inst.castsShadow;
+    case DrawSet::NonReceivers:
+        return !inst.receivesShadow;
     }
     return false;
+}
+
+float Submitter::shadowSignedId(const Instance& inst) {
+    return inst.receivesShadow ? float(inst.objectId) : -float(inst.objectId);
 }
 
 void Submitter::setInstanceUniforms(const Instance& inst) {
     // Fixed locations (layout(location=...) in common/instance.glsl): no glGetUniformLocation per draw.
     glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(inst.model));
-    glUniform4f(4, inst.color.r, inst.color.g, inst.color.b, float(inst.objectId));
+    glUniform4f(4, inst.color.r, inst.color.g, inst.color.b, shadowSignedId(inst));
 }
 
 void Submitter::emitImmediate(const Mesh& mesh) {

@@ -41,8 +41,8 @@ std::optional<SubmitMode> parseSubmitMode(const std::string& name);
 
 /// Which instances a draw covers: shadow casters, shadow receivers, or all; NonCasters are the
 /// instances that cast no shadow (grounds, walls): what `projective` textures, its casters staying lit.
-enum class DrawSet { All, Casters, Receivers, NonCasters };
-constexpr size_t kDrawSetCount = 4;
+enum class DrawSet { All, Casters, Receivers, NonCasters, NonReceivers };
+constexpr size_t kDrawSetCount = 5;
 
 /// The instances a draw keeps, indexed like Scene::instances (non-zero = drawn): what a technique's
 /// per-frustum culling leaves (techniques/common/InstanceCulling.h), applied on top of the DrawSet.
@@ -102,6 +102,11 @@ public:
 
     /// Whether `inst` belongs to `set` (also what per-pass culling narrows: techniques/common).
     static bool inSet(const Instance& inst, DrawSet set);
+    /// The w the shaders get with the instance colour: the object id, negated for an instance that
+    /// receives no shadow. The sign costs no attribute, uniform or call of its own, so every submission
+    /// mode carries it at the price it already pays; shaders read the id as abs(w)
+    /// (common/instance.glsl) and the sign only under SB_NON_RECEIVERS (common/lighting.glsl).
+    static float shadowSignedId(const Instance& inst);
 
 protected:
     static bool kept(InstanceMask keep, size_t instance) { return keep.empty() || keep[instance] != 0; }

@@ -145,6 +145,7 @@ void VolumeTechnique::checkClosed(const Scene& scene) const {
 void VolumeTechnique::setScene(const Scene& scene) {
     mSettings = readSettings();
     mScene = &scene;
+    mHasNonReceivers = scene.hasNonReceivers();
     mBuffers.upload(scene, mSettings.vertexExtrusion, mSettings.policy);
     checkClosed(scene);
     mCasters.clear();
@@ -358,7 +359,14 @@ void VolumeTechnique::renderLight(FrameContext& ctx, int lightIndex) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     mLightProgram->use();
     glUniform1i(kLightIndexLocation, lightIndex);
-    ctx.submitter.draw(DrawSet::All);
+    if (mHasNonReceivers) {
+        // An instance that receives no shadow is lit whatever the stencil count under it says.
+        ctx.submitter.draw(DrawSet::Receivers);
+        glDisable(GL_STENCIL_TEST);
+        ctx.submitter.draw(DrawSet::NonReceivers);
+    } else {
+        ctx.submitter.draw(DrawSet::All);
+    }
     glBlendEquationi(1, GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
@@ -413,9 +421,14 @@ void VolumeTechnique::execute(FrameContext& ctx) {
             glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
             glDepthBoundsEXT(region.depth.x, region.depth.y);
         }
-        ctx.passes.begin("mark");
-        collectDraws(light, view, stats);
-        markShadows(i);
+        if (light.castsShadows) {
+            ctx.passes.begin("mark");
+            collectDraws(light, view, stats);
+            markShadows(i);
+        } else { // no volume, no stencil test: the light pass lights everything it reaches
+            ctx.passes.skip("mark", "a light that casts no shadow");
+            ++stats.unshadowedLights;
+        }
         ctx.passes.begin("lighting");
         renderLight(ctx, i);
         glDisable(GL_SCISSOR_TEST);
@@ -434,7 +447,8 @@ void VolumeTechnique::execute(FrameContext& ctx) {
                  {"casters_zpass", stats.zpass},
                  {"casters_range_culled", stats.rangeCulled},
                  {"caps_culled", stats.capsCulled},
-                 {"stencil_samples_passed", mStencilSamples}};
+                 {"stencil_samples_passed", mStencilSamples},
+                 {"lights_unshadowed", stats.unshadowedLights}};
     // The vertex-shader path finds silhouettes on the GPU: there is no count to report.
     if (!mSettings.vertexExtrusion) mCounters.emplace_back("silhouette_edges", stats.silhouetteEdges);
 }

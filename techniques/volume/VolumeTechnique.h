@@ -89,7 +89,7 @@ private:
     };
     struct FrameStats {
         double silhouetteEdges = 0, volumeTriangles = 0, rangeCulled = 0, capsCulled = 0, zpass = 0,
-               zfail = 0;
+               zfail = 0, unshadowedLights = 0;
     };
     struct View {
         glm::mat4 viewProj{1.0f};
@@ -127,6 +127,7 @@ private:
 
     Settings mSettings;
     const Scene* mScene = nullptr;
+    bool mHasNonReceivers = false; ///< the light pass then draws receivers and non-receivers apart
     std::vector<Caster> mCasters;
     Aabb mSceneBounds; ///< world space, every instance: the receivers a bounded volume must reach past
     VolumeMeshBuffers mBuffers;

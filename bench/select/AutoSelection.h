@@ -1,0 +1,39 @@
+#pragma once
+// `-t auto`: the cheapest technique that delivers what the scene asks for within an accuracy bound.
+// The choice is a pure function of the scene's request and of each candidate's declared effects,
+// measured cost and measured error (bench/select/Calibration.h measures and caches those on the current
+// machine), so it follows the measurements and nothing else: no technique is preferred by name, a
+// candidate that lacks a requested effect or misses the bound is never chosen, and ties go to the
+// candidate listed first (the registry's order).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenes/Scene.h"
+
+namespace sb {
+
+struct AutoCandidate {
+    std::string spec;       ///< technique with its canonical properties ("shadowmap:resolution=2048:...")
+    EffectMask effects = 0; ///< TechniqueInfo::effects
+    bool measured = false;  ///< false: refused on this scene and context (see `refusal`)
+    std::string refusal;    ///< why it could not be measured ("" when measured)
+    double costMs = 0.0;    ///< median wall time per frame of the calibration
+    double wrongPct = 0.0;  ///< misclassified samples over the reference's shadowed ones (%), worst light
+    std::string verdict;    ///< filled by choose(): "chosen", or why not
+};
+
+struct AutoChoice {
+    std::optional<size_t> chosen; ///< index into the candidates; empty when none qualifies
+    std::string reason;           ///< one sentence: what was chosen over what, or why nothing was
+};
+
+class AutoSelection {
+public:
+    /// Fills each candidate's `verdict` and picks the cheapest measured candidate whose effects cover
+    /// `request` and whose wrongPct is at most `maxWrongPct` (so a baseline that declares no effect
+    /// qualifies only for a request of none).
+    static AutoChoice choose(EffectMask request, std::vector<AutoCandidate>& candidates, double maxWrongPct);
+};
+
+} // namespace sb

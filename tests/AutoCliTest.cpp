@@ -1,0 +1,109 @@
+// `-t auto` through the bench binary (bench/select/): the first run measures every candidate on this
+// machine and caches them; a second run reads the cache and measures nothing; costs written into the
+// cache (an injected calibration) move the choice, and a candidate whose cached error misses the bound
+// is passed over however cheap. The chosen technique's row records the choice and the candidates.
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+#include "bench/output/CsvWriter.h"
+
+using namespace sb;
+using test::runCommand;
+
+namespace {
+
+const std::string kBench = SB_BENCH_BINARY;
+// sphere_plane asks for hard shadows only, so planar, projective, shadowmap, volume ... all qualify.
+const std::string kRun = " -t auto --scene sphere_plane --size 64x64 --frames 2 --warmup 0 --no-timer-check";
+
+/// Sets every cached candidate's cost to `others` ms and `cheap`'s to 1 ms (errors as given).
+void injectCosts(const std::string& cache, const std::string& cheap, double others,
+                 const std::map<std::string, std::string>& wrong = {}) {
+    CsvTable t = CsvWriter::read(cache);
+    const auto column = [&](const std::string& name) {
+        return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
+    };
+    const size_t candidate = column("candidate"), wall = column("wall_ms"), wrongPct = column("wrong_pct");
+    ASSERT_LT(wall, t.header.size());
+    for (auto& row : t.rows) {
+        const std::string name = row[candidate].substr(0, row[candidate].find(':'));
+        if (row[wall].empty()) continue; // refused
+        row[wall] = name == cheap ? "1" : std::to_string(others);
+        if (auto it = wrong.find(name); it != wrong.end()) row[wrongPct] = it->second;
+    }
+    CsvWriter::writeTable(cache, t);
+}
+
+std::string chosenIn(const std::string& csv) {
+    const auto rows = test::csvRowMaps(csv);
+    return rows.empty() ? "" : rows.back().at("technique");
+}
+
+} // namespace
+
+TEST(AutoCli, MeasuresOnceThenFollowsTheCachedCosts) {
+    const std::string dir = test::freshTestDir("auto");
+    const std::string cache = dir + "/calibration.csv", csv = dir + "/r.csv";
+    const auto first = runCommand(kBench + kRun + " --calibration " + cache + " --csv " + csv);
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_NE(first.output.find("0 from " + cache), std::string::npos) << first.output;
+    EXPECT_NE(first.output.find("auto: chose "), std::string::npos) << first.output;
+    // The reference judges, it is not a candidate; planar lacks nothing sphere_plane asks for.
+    EXPECT_EQ(first.output.find("  reference "), std::string::npos) << first.output;
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_NE(rows[0].at("auto_choice").find("the cheapest of"), std::string::npos);
+    EXPECT_NE(rows[0].at("auto_candidates").find("planar"), std::string::npos);
+
+    injectCosts(cache, "volume", 100.0);
+    const auto second = runCommand(kBench + kRun + " --calibration " + cache + " --csv " + csv);
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    EXPECT_NE(second.output.find(", 0 measured now"), std::string::npos) << second.output;
+    EXPECT_EQ(chosenIn(csv), "volume") << second.output;
+
+    injectCosts(cache, "planar", 100.0);
+    ASSERT_EQ(runCommand(kBench + kRun + " --calibration " + cache + " --csv " + csv).exitCode, 0);
+    EXPECT_EQ(chosenIn(csv), "planar");
+
+    // Cheapest but 30% wrong: passed over at the default bound, taken when the bound allows it.
+    injectCosts(cache, "planar", 100.0, {{"planar", "30"}});
+    const auto bounded = runCommand(kBench + kRun + " --calibration " + cache + " --csv " + csv);
+    ASSERT_EQ(bounded.exitCode, 0) << bounded.output;
+    EXPECT_NE(chosenIn(csv), "planar") << bounded.output;
+    EXPECT_NE(bounded.output.find("30% wrong > bound 10%"), std::string::npos) << bounded.output;
+    ASSERT_EQ(
+        runCommand(kBench + kRun + " --auto-max-wrong 40 --calibration " + cache + " --csv " + csv).exitCode,
+        0);
+    EXPECT_EQ(chosenIn(csv), "planar");
+}
+
+TEST(AutoCli, NoQualifyingCandidateIsExitThreeAndPropertiesAreBadInput) {
+    const std::string dir = test::freshTestDir("auto_none");
+    const std::string cache = dir + "/calibration.csv";
+    // Every measured candidate made 50% wrong: nothing meets a 1% bound.
+    ASSERT_EQ(runCommand(kBench + kRun + " --calibration " + cache).exitCode, 0);
+    CsvTable t = CsvWriter::read(cache);
+    const size_t wrong = size_t(std::find(t.header.begin(), t.header.end(), "wrong_pct") - t.header.begin());
+    for (auto& row : t.rows)
+        if (!row[wrong].empty()) row[wrong] = "50";
+    CsvWriter::writeTable(cache, t);
+    const auto none = runCommand(kBench + kRun + " --auto-max-wrong 1 --calibration " + cache);
+    EXPECT_EQ(none.exitCode, 3) << none.output;
+    EXPECT_NE(none.output.find("auto: no candidate delivers hard_shadows within 1% wrong"), std::string::npos)
+        << none.output;
+    const auto props = runCommand(kBench + " -t auto:resolution=512 --scene sphere_plane");
+    EXPECT_EQ(props.exitCode, 2) << props.output;
+    EXPECT_NE(props.output.find("-t auto takes no properties"), std::string::npos) << props.output;
+    EXPECT_EQ(runCommand(kBench + kRun + " --auto-max-wrong 101").exitCode, 2);
+    // A sweep does not make the choice: bad input that says which commands do, before any GL.
+    const auto sweep = runCommand(kBench + " sweep -t auto --scene sphere_plane --csv " + dir + "/s.csv");
+    EXPECT_EQ(sweep.exitCode, 2) << sweep.output;
+    EXPECT_NE(sweep.output.find("-t auto is taken by `bench` and `bench accuracy` runs only"),
+              std::string::npos)
+        << sweep.output;
+}
