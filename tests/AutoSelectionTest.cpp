@@ -56,6 +56,7 @@ TEST(AutoSelection, PicksTheCheapestThatCoversTheRequestWithinTheBound) {
     };
     const Case cases[] = {
         {0, 100.0, "none", "nothing asked for: the cheapest of all, the baseline included"},
+        {0, 5.0, "none", "nothing asked for: the bound judges shadows, so none's 40% does not count"},
         {kHard, 5.0, "planar", "hard shadows alone: planar (2 ms) beats shadowmap (5 ms); none lacks them"},
         {kSelf, 5.0, "shadowmap", "self-shadowing rules planar out"},
         {kSelf, 0.1, "volume", "a 0.1% bound rules shadowmap (0.4%) out; volume is exact"},

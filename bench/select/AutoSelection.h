@@ -32,7 +32,8 @@ class AutoSelection {
 public:
     /// Fills each candidate's `verdict` and picks the cheapest measured candidate whose effects cover
     /// `request` and whose wrongPct is at most `maxWrongPct` (so a baseline that declares no effect
-    /// qualifies only for a request of none).
+    /// qualifies only for a request of none). For a request of none the bound does not apply: the
+    /// error is measured against shadows the scene did not ask for.
     static AutoChoice choose(EffectMask request, std::vector<AutoCandidate>& candidates, double maxWrongPct);
 };
 

@@ -131,7 +131,9 @@ std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const Calib
         if (!isCandidate(name)) continue;
         std::unique_ptr<Technique> technique = TechniqueRegistry::create(name);
         AutoCandidate c;
-        c.spec = name + ":" + technique->properties().toString();
+        // A technique without properties (none) is its bare name: "none:" does not parse back.
+        const std::string properties = technique->properties().toString();
+        c.spec = properties.empty() ? name : name + ":" + properties;
         c.effects = technique->info().effects;
         const CsvRow key = keyColumns(harness, c.spec);
         if (const auto* row = options.refresh ? nullptr : cached(table, key)) {
