@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "scenes/Motion.h"
+
 namespace sb {
 
 namespace {
@@ -31,6 +33,10 @@ ReferenceTechnique::ReferenceTechnique()
 
 ReferenceTechnique::~ReferenceTechnique() {
     releaseTexture();
+}
+
+void ReferenceTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+    if (changes & kCastersMoved) setScene(scene);
 }
 
 void ReferenceTechnique::setScene(const Scene& scene) {

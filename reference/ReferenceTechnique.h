@@ -24,6 +24,9 @@ public:
     ReferenceTechnique();
     ~ReferenceTechnique() override;
     void setScene(const Scene& scene) override;
+    /// Moving casters rebuild the Embree scene (its acceleration structure: the reference's per-frame
+    /// cost of motion); the tracer reads the lights as they are.
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     /// draw_calls, triangles (G-buffer and shade passes), rays (all lights), rays_per_second_per_thread,

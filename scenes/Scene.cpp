@@ -4,6 +4,7 @@
 
 #include "core/Fnv1a.h"
 #include "scenes/Math.h"
+#include "scenes/Motion.h"
 
 namespace sb {
 namespace {
@@ -158,6 +159,8 @@ std::string Scene::computeContentHash() const {
     for (const auto& camera : cameras) hashCamera(h, camera);
     h.value(effects);
     h.value(ambient);
+    // Only a scene in motion adds to the hash, so static scenes keep the hash they always had.
+    if (motion) h.string(motion->canonical());
     return h.hex();
 }
 

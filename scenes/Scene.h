@@ -2,6 +2,7 @@
 // The scene model (docs/ARCHITECTURE.md, "Scenes"): meshes, instances, lights, named cameras and the effects
 // the scene asks for. Built by SceneLoader from a JSON file; techniques only read it.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -106,6 +107,8 @@ struct CameraPreset {
     float farZ = 1000.0f;
 };
 
+class Motion;
+
 struct Scene {
     std::string name;       ///< "aircraft", or the file stem
     std::string sourcePath; ///< the JSON file it came from ("" for purely built-in)
@@ -115,13 +118,17 @@ struct Scene {
     std::vector<CameraPreset> cameras;
     EffectMask effects = uint32_t(Effect::HardShadows);
     glm::vec3 ambient{0.15f};
+    /// The scene file's "motion" (scenes/Motion.h), or null for a static scene. Shared: copies of a
+    /// scene (the harness keeps one at rest) move along the same paths.
+    std::shared_ptr<const Motion> motion;
 
     /// Recomputes Instance::model and objectId from position/rotation/scale.
     void updateTransforms();
     /// World-space bounds of all instances (or only casters).
     Aabb computeBounds(bool castersOnly = false) const;
     const CameraPreset* findCamera(const std::string& name) const;
-    /// Hash over everything that changes an image (geometry, instances, lights, cameras), hex string.
+    /// Hash over everything that changes an image (geometry, instances, lights, cameras, motion), hex
+    /// string. Of a scene in motion, hash the scene at rest (the harness's Harness::contentHash()).
     /// Recorded in every CSV row so two rows can be trusted to describe the same content.
     std::string computeContentHash() const;
     size_t totalTriangles() const; ///< over all instances

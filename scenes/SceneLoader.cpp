@@ -21,6 +21,7 @@
 #include "scenes/Math.h"
 #include "scenes/MeshGeneratorTable.h"
 #include "scenes/ModelLoader.h"
+#include "scenes/Motion.h"
 
 namespace sb {
 namespace fs = std::filesystem;
@@ -687,6 +688,125 @@ EffectMask parseEffects(const JsonReader& r) {
     return mask;
 }
 
+// ---- motion ---------------------------------------------------------------------------------------
+
+uint32_t movedLight(const Context& ctx, const JsonReader& r, std::initializer_list<LightType> types,
+                    const char* what) {
+    const auto index = uint32_t(r.integer(0, int64_t(ctx.scene.lights.size()) - 1, "a light index of the scene"));
+    const LightType type = ctx.scene.lights[index].type;
+    if (std::find(types.begin(), types.end(), type) == types.end())
+        r.error(std::string("light ") + std::to_string(index) + " is " + lightTypeName(type) + "; " + what);
+    return index;
+}
+
+glm::vec2 numberPair(const JsonReader& r, double lo, double hi, const char* what) {
+    std::vector<float> v;
+    for (const auto& e : r.elements()) v.push_back(e.numberIn(lo, hi, what));
+    if (v.size() != 2) r.fail(std::string("two numbers, ") + what);
+    return {v[0], v[1]};
+}
+
+SunPath parseSun(const Context& ctx, const JsonReader& r) {
+    r.requireObject({"light", "azimuth_deg", "elevation_deg"});
+    SunPath sun;
+    sun.light = movedLight(ctx, r["light"], {LightType::Directional}, "a sun path moves a directional light");
+    if (r.has("azimuth_deg")) sun.azimuthDeg = numberPair(r["azimuth_deg"], -3600, 3600, "degrees in [-3600, 3600]");
+    if (r.has("elevation_deg")) {
+        sun.elevationDeg = numberPair(r["elevation_deg"], 0.0, 90.0, "degrees in [0, 90]");
+        if (sun.elevationDeg.x > sun.elevationDeg.y) r["elevation_deg"].error("expected [low, high] with low <= high");
+    }
+    return sun;
+}
+
+OrbitPath parseOrbit(const Context& ctx, const JsonReader& r) {
+    r.requireObject({"light", "centre", "radius", "turns", "target"});
+    OrbitPath orbit;
+    orbit.light = movedLight(ctx, r["light"], {LightType::Point, LightType::Spot},
+                             "an orbit moves a point or spot light");
+    orbit.centre = boundedPoint(r["centre"], r["centre"].vec3());
+    orbit.radius = r["radius"].positiveNumber();
+    boundedPoint(r["radius"], orbit.centre + glm::vec3(orbit.radius));
+    if (r.has("turns")) orbit.turns = r["turns"].numberIn(-100.0, 100.0, "turns in [-100, 100]");
+    orbit.target = r.has("target") ? boundedPoint(r["target"], r["target"].vec3())
+                                   : glm::vec3(orbit.centre.x, 0.0f, orbit.centre.z);
+    if (glm::length(orbit.target - orbit.centre) < 1e-6f && orbit.radius < 1e-6f)
+        r.error("a spot on the orbit needs a target away from it");
+    return orbit;
+}
+
+/// A key of the camera path: the name of one of the scene's cameras, or a camera of its own (the keys
+/// of "cameras" but "name", "follow" and "offset").
+CameraPreset cameraKey(const Context& ctx, const JsonReader& r) {
+    if (r.value().is_string()) {
+        const CameraPreset* c = ctx.scene.findCamera(r.string());
+        if (!c) r.fail("the name of one of the scene's cameras or a camera object");
+        return *c;
+    }
+    r.requireObject({"eye", "target", "up", "fov", "near", "far"});
+    CameraPreset c;
+    c.eye = boundedPoint(r["eye"], r["eye"].vec3());
+    c.target = boundedPoint(r["target"], r["target"].vec3());
+    if (r.has("up")) c.up = r["up"].unitDirection();
+    if (r.has("fov")) c.fovYDeg = r["fov"].numberIn(0.1, 179.0, "a field of view in [0.1, 179] degrees");
+    if (r.has("near")) c.nearZ = r["near"].positiveNumber();
+    if (r.has("far")) c.farZ = r["far"].positiveNumber();
+    if (!(c.farZ > c.nearZ)) r.error("expected far > near");
+    if (glm::length(c.target - c.eye) < 1e-6f) r.error("expected eye and target to differ");
+    c.up = validUp(c);
+    return c;
+}
+
+CasterPath parseCasters(const Context& ctx, const JsonReader& r) {
+    r.requireObject({"instances", "translate", "yaw_deg"});
+    CasterPath path;
+    const std::vector<Instance>& instances = ctx.scene.instances;
+    const bool named = !r.has("instances") || r["instances"].value().is_string();
+    if (named) {
+        const std::string kind = r.has("instances") ? r["instances"].string() : "layout";
+        if (kind != "layout" && kind != "casters")
+            r["instances"].fail("\"layout\", \"casters\" or a list of instance indices");
+        for (uint32_t i = 0; i < instances.size(); ++i)
+            if (instances[i].castsShadow && (kind == "casters" || instances[i].fromLayout)) path.instances.push_back(i);
+    } else {
+        for (const auto& e : r["instances"].elements(true)) {
+            const auto i = uint32_t(e.integer(0, int64_t(instances.size()) - 1, "an instance index of the scene"));
+            if (!instances[i].castsShadow)
+                e.error("instance " + std::to_string(i) + " casts no shadow: only casters move (receivers stay put)");
+            path.instances.push_back(i);
+        }
+    }
+    if (path.instances.empty()) r.error("no instance to move: the scene has no caster of that kind");
+    if (r.has("translate")) path.translate = boundedPoint(r["translate"], r["translate"].vec3());
+    if (r.has("yaw_deg")) path.yawDeg = r["yaw_deg"].numberIn(-36000.0, 36000.0, "degrees in [-36000, 36000]");
+    // Every moved caster stays within the coordinate bound at both ends of the path.
+    if (r.has("translate"))
+        for (uint32_t i : path.instances) boundedPoint(r["translate"], instances[i].position + path.translate);
+    return path;
+}
+
+void parseMotion(Context& ctx, const JsonReader& r) {
+    r.requireObject({"frames", "sun", "orbit", "camera", "casters"});
+    auto motion = std::make_shared<Motion>();
+    if (r.has("frames")) motion->frames = uint32_t(r["frames"].integer(2, 1000000, "frames in [2, 1000000]"));
+    if (r.has("sun")) motion->sun = parseSun(ctx, r["sun"]);
+    if (r.has("orbit")) motion->orbit = parseOrbit(ctx, r["orbit"]);
+    if (motion->sun && motion->orbit && motion->sun->light == motion->orbit->light)
+        r["orbit"]["light"].error("light " + std::to_string(motion->orbit->light) + " already follows the sun path");
+    if (r.has("camera")) {
+        CameraPath path;
+        for (const auto& k : r["camera"].elements()) path.keys.push_back(cameraKey(ctx, k));
+        if (path.keys.size() < 2) r["camera"].fail("at least two key cameras");
+        if (ctx.scene.findCamera(Motion::kCameraName))
+            r["camera"].error("the scene already has a camera named \"path\", the camera path's name");
+        motion->camera = std::move(path);
+    }
+    if (r.has("casters")) motion->casters = parseCasters(ctx, r["casters"]);
+    if (!motion->sun && !motion->orbit && !motion->camera && !motion->casters)
+        r.error("expected at least one of \"sun\", \"orbit\", \"camera\", \"casters\"");
+    if (motion->camera) ctx.scene.cameras.push_back(motion->cameraAt(0.0f));
+    ctx.scene.motion = std::move(motion);
+}
+
 // ---- options applied after parsing ----------------------------------------------------------------
 
 /// --light TYPE: every light becomes TYPE. A directional light turned point/spot is placed on the
@@ -774,7 +894,7 @@ void countReferences(Context& ctx, const JsonReader& root) {
 
 void parseDocument(Context& ctx, const JsonReader& root) {
     root.requireObject(
-        {"name", "description", "meshes", "instances", "layout", "lights", "cameras", "effects", "ambient"});
+        {"name", "description", "meshes", "instances", "layout", "lights", "cameras", "effects", "ambient", "motion"});
     if (root.has("name")) ctx.scene.name = root["name"].string();
     if (root.has("description")) root["description"].string();
     checkOptionsApply(ctx, root.has("layout"));
@@ -802,6 +922,7 @@ void parseDocument(Context& ctx, const JsonReader& root) {
         for (const auto& c : root["cameras"].elements()) parseCamera(ctx, c);
     if (root.has("effects")) ctx.scene.effects = parseEffects(root["effects"]);
     if (root.has("ambient")) ctx.scene.ambient = root["ambient"].vec3();
+    if (root.has("motion")) parseMotion(ctx, root["motion"]);
 }
 
 bool looksLikePath(const std::string& s) {
@@ -817,7 +938,13 @@ Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceN
     ctx.scene.name = fs::path(sourceName).stem().string();
     ctx.scene.sourcePath = sourceName;
     parseDocument(ctx, JsonReader(doc, sourceName));
-    if (options.lightType) overrideLightType(ctx.scene, *options.lightType);
+    if (options.lightType) {
+        if (const Motion* m = ctx.scene.motion.get(); m && (m->sun || m->orbit))
+            throw Error("--light " + std::string(lightTypeName(*options.lightType)) + ": scene '" + ctx.scene.name +
+                        "' moves its light along a " + (m->sun ? "sun path (a directional light)" : "orbit (a point or spot light)") +
+                        "; drop --light, or use a scene without \"motion\"");
+        overrideLightType(ctx.scene, *options.lightType);
+    }
     return std::move(ctx.scene);
 }
 

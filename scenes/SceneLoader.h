@@ -76,6 +76,19 @@
 //   "first_instance" with "offset" (in units of that instance's scale, so --scale keeps the framing):
 //   eye = first layout instance + offset * scale, target = that instance. An up parallel to the view
 //   direction (looking straight down) is replaced by -Z.
+// - motion (scenes/Motion.h): paths over a path time t in [0, 1], measured frame f at t = (f mod
+//   "frames") / "frames" (default 60, at least 2); at least one of
+//     "sun": {"light": 0, "azimuth_deg": [-60, 60], "elevation_deg": [15, 70]}   a directional light
+//       (azimuth 0 = +X, 90 = +Z; elevation low + (high - low) sin(pi t), each in [0, 90])
+//     "orbit": {"light": 0, "centre": [x,y,z], "radius": r, "turns": 1, "target": [x,y,z]}  a point or
+//       spot light on a horizontal circle (a spot aims at "target", default below the centre at y = 0)
+//     "camera": ["far", {"eye": [..], "target": [..], "fov": 45}, "near"]  key cameras (names of the
+//       scene's cameras or camera objects without "name"/"follow"), at least two, piecewise linear;
+//       the scene gets a camera named "path" that follows them (--camera path)
+//     "casters": {"instances": "layout" | "casters" | [i, ...], "translate": [x,y,z], "yaw_deg": a}
+//       casters moved by translate and turned by yaw over the path ("layout", the default: the layout's
+//       instances); an instance that casts no shadow may not move (receivers stay put)
+//   A light may follow one path; --light is refused for a scene whose light moves.
 // SceneOptions: --instances/--model need a layout (error otherwise); --model's meshes are named after the
 // model file ("horse.3ds", "test1.3ds:Box01"), so errors about them name it; --light moves a directional
 // light to centre - direction * 2 * radius of the casters' bounds, a spot's cone then encloses them.

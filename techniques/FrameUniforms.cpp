@@ -39,4 +39,8 @@ void FrameUniforms::upload(const FrameUniformData& data) {
     glBindBufferBase(GL_UNIFORM_BUFFER, 0, mBuffer);
 }
 
+void FrameUniforms::bind() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, mBuffer);
+}
+
 } // namespace sb

@@ -32,6 +32,8 @@ public:
                                     const glm::vec3& eye);
     /// Uploads and binds at binding 0.
     void upload(const FrameUniformData& data);
+    /// Binds the block at binding 0 again (after a technique bound one of its own there).
+    void bind() const;
 
 private:
     GLuint mBuffer = 0;

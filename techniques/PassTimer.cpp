@@ -5,6 +5,7 @@
 namespace sb {
 
 void PassTimer::begin(const char* pass) {
+    if (mRouter) pass = mRouter->enter(pass);
     if (mOpen) DebugOutput::check(); // errors of the pass that just ended are reported with its name
     DebugOutput::setCurrentPass(mTechnique.empty() ? std::string(pass) : mTechnique + "/" + pass);
     if (mRing) mRing->beginPass(pass);

@@ -6,6 +6,7 @@
 
 #include "gl/TimerQueryRing.h"
 #include "techniques/PassObserver.h"
+#include "techniques/PassRouter.h"
 
 namespace sb {
 
@@ -18,6 +19,10 @@ public:
     void setTechnique(const std::string& technique) { mTechnique = technique; }
     /// nullptr: none (the timed frames). The census frame sets one to count each pass's work.
     void setObserver(PassObserver* observer) { mObserver = observer; }
+    /// nullptr: passes keep the names their technique gives them. A hybrid technique sets one while a
+    /// part runs (techniques/PassRouter.h).
+    void setRouter(PassRouter* router) { mRouter = router; }
+    PassRouter* router() const { return mRouter; }
     /// Ends the previous pass (error check) and starts `pass`. `pass` must be a string literal or
     /// otherwise outlive the frame (it is kept by pointer in the query ring).
     void begin(const char* pass);
@@ -27,12 +32,13 @@ public:
     /// ("no light casts shadows"): the census frame reports it (bench explain, CSV `passes_skipped`);
     /// a timed frame pays one null-pointer test. Both strings must be literals or outlive the frame.
     void skip(const char* pass, const char* reason) {
-        if (mObserver) mObserver->passSkipped(pass, reason);
+        if (mObserver) mObserver->passSkipped(mRouter ? mRouter->nameOf(pass) : pass, reason);
     }
 
 private:
     TimerQueryRing* mRing;
     PassObserver* mObserver = nullptr;
+    PassRouter* mRouter = nullptr;
     std::string mTechnique;
     bool mOpen = false;
 };

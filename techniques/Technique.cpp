@@ -13,6 +13,10 @@ Defines CompileContext::defines() const {
 Technique::Technique(TechniqueInfo info)
     : mInfo(std::move(info)), mProperties(mInfo.name, mInfo.properties) {}
 
+void Technique::sceneChanged(const Scene& scene, uint32_t) {
+    setScene(scene);
+}
+
 std::string Technique::checkCapabilities(const Context& context) const {
     for (const Capability& cap : mInfo.capabilities) {
         bool versionOk = context.glMajor > cap.glMajor ||

@@ -16,6 +16,7 @@
 #include "gl/FrameTargets.h"
 #include "gl/ProgramCache.h"
 #include "scenes/Scene.h"
+#include "techniques/FrameUniforms.h"
 #include "techniques/PassTimer.h"
 #include "techniques/PropertySet.h"
 #include "techniques/submit/Submitter.h"
@@ -43,6 +44,10 @@ struct TechniqueInfo {
     EffectMask effects = 0;  ///< what it can produce
     std::vector<Capability> capabilities;
     std::vector<std::string> passes; ///< stable names: GPU timer scopes and CSV columns
+    /// The passes that draw the scene as the camera sees it (shading the visible instances), a subset
+    /// of `passes`; the others make shadows (maps, volumes, textures, blurs). A hybrid technique
+    /// restricts only these to the instances its part owns. Empty: {"lighting"}.
+    std::vector<std::string> viewPasses;
     std::vector<PropertyDesc> properties;
     std::vector<QualityKnob> quality; ///< knobs that trade accuracy for time, with sweep values
 };
@@ -73,6 +78,9 @@ struct FrameContext {
     Submitter& submitter;
     PassTimer& passes;
     uint64_t frameIndex = 0;
+    /// The harness's frame block (binding 0). A technique that binds a block of its own there (volume's
+    /// infinite projection) leaves it bound; a hybrid binds this one again before its next part.
+    const FrameUniforms* frameBlock = nullptr;
 };
 
 class Technique {
@@ -93,16 +101,28 @@ public:
     /// Untimed precompute for a scene (adjacency, planes, fitted cameras, GPU resources).
     /// Throws sb::Error(ExitCode::Unsupported) for scenes it cannot handle (e.g. a light type).
     virtual void setScene(const Scene& scene) = 0;
+    /// A scene in motion (scenes/Motion.h) moved: called in every one of its frames, inside the timed
+    /// frame and before execute(), with what moved (SceneChange bits: lights, casters, camera). This is
+    /// the per-frame work a static scene lets setScene do once (light fits, projectors, silhouettes,
+    /// caster bounds), so it is paid where an application pays it. The default runs setScene again: the
+    /// whole precompute, correct for any technique; a technique overrides it with the part that depends
+    /// on what moved. Never compiles: the effects, lights and instances are the same in every frame.
+    virtual void sceneChanged(const Scene& scene, uint32_t changes);
     /// Builds the programs for the current properties, scene effects and submission mode.
     virtual void compile(const CompileContext& ctx) = 0;
     /// Renders one frame into ctx.targets, calling ctx.passes.begin() at each declared pass.
     virtual void execute(FrameContext& ctx) = 0;
+    /// Called after properties were applied from a spec (TechniqueRegistry::create): a technique whose
+    /// declaration depends on its properties (the hybrid's passes and effects) updates it here.
+    virtual void propertiesApplied() {}
     /// Counters of the last executed frame.
     virtual Counters counters() const { return {}; }
     /// Sorted, '|'-joined keys of the programs compile() selected: the permutation logged per row.
     const std::string& permutationKey() const { return mPermutationKey; }
 
 protected:
+    /// For propertiesApplied(): the declaration that follows from the properties.
+    TechniqueInfo& mutableInfo() { return mInfo; }
     void setPermutationKey(std::string key) { mPermutationKey = std::move(key); }
 
 private:

@@ -57,7 +57,7 @@ TEST(ModelFilesCli, ListNamesEveryTechnique) {
     EXPECT_EQ(listedTechniques(),
               (std::vector<std::string>{"none", "shadowmap", "cubemap", "paraboloid", "cascaded", "pcss",
                                         "vsm", "esm", "volume", "occluder", "proxy", "planar", "projective",
-                                        "blob", "reference", "synthetic"}));
+                                        "blob", "hybrid", "reference", "synthetic"}));
 }
 
 TEST(ModelFilesCli, InfiniteVertexIsRefusedByEveryTechniqueOnEveryPath) {

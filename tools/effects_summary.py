@@ -71,6 +71,32 @@ def auto(path):
                                                  r["wall_ms_median"], r["auto_choice"]))
 
 
+def label(row):
+    """A technique with the part properties that tell hybrids apart."""
+    if row["technique"] == "hybrid":
+        return "hybrid self=%s cast=%s" % (spec_value(row["properties"], "self"), spec_value(row["properties"], "cast"))
+    return row["technique"]
+
+
+def hybrids(folder):
+    """Every hybrid and pure technique of scripts/effects.sh's hybrid section: wall time in interleaved
+    rounds as a ratio to the shadow map of the same round, accuracy against the reference, exact work."""
+    time = pd.read_csv(os.path.join(folder, "hybrid_time.csv"))
+    accuracy = pd.read_csv(os.path.join(folder, "hybrid_accuracy.csv"))
+    time["label"] = time.apply(label, axis=1)
+    accuracy["label"] = accuracy.apply(label, axis=1)
+    time["round"] = time.groupby("label").cumcount()
+    base = time[time["label"] == "shadowmap"].set_index("round")["wall_ms_median"]
+    print("| technique | wall median | / shadowmap, per round | wrong % | wrong off edges % | exact work |")
+    print("| --- | --- | --- | --- | --- | --- |")
+    for name, group in time.groupby("label", sort=False):
+        ratios = group["wall_ms_median"].values / base.loc[group["round"]].values
+        acc = accuracy[accuracy["label"] == name].iloc[0]
+        print("| %s | %.1f ms | %.3f [%.3f, %.3f] | %.3f | %.3f | %s |" % (
+            name, group["wall_ms_median"].median(), pd.Series(ratios).median(), ratios.min(), ratios.max(),
+            acc["acc_wrong_pct"], acc["acc_wrong_no_edge_pct"], exact(group.iloc[0])))
+
+
 def main():
     folder = sys.argv[1] if len(sys.argv) > 1 else "results/effects"
     print("| property | on: wall | off: wall | off / on, per round | on: exact work | off: exact work |")
@@ -82,6 +108,9 @@ def main():
     print()
     if os.path.exists(os.path.join(folder, "auto.csv")):
         auto(os.path.join(folder, "auto.csv"))
+        print()
+    if os.path.exists(os.path.join(folder, "hybrid_time.csv")):
+        hybrids(folder)
 
 
 if __name__ == "__main__":

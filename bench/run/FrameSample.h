@@ -11,6 +11,9 @@ namespace sb {
 struct FrameSample {
     double cpuSubmitMs = 0.0;
     double wallMs = 0.0;
+    /// A scene in motion: the part of the CPU submit time spent moving the scene and updating the
+    /// technique for it (Technique::sceneChanged); 0 for a static scene.
+    double motionMs = 0.0;
     std::vector<std::pair<std::string, double>> gpuPassMs; ///< raw timer-query values, pass order
     double gpuTotalMs = -1.0;                              ///< -1: not (yet) available
 };

@@ -8,6 +8,7 @@
 #include "gl/DebugOutput.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/Math.h"
+#include "scenes/Motion.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/FrameState.h"
 
@@ -42,6 +43,20 @@ Harness::Harness(const RunConfig& config) : mConfig(config) {
     mScene = SceneLoader::load(config.scene, config.sceneOptions);
     mSceneLoadMs = msSince(t0, Clock::now());
     mCamera = pickCamera(mScene, config.camera);
+    mContentHash = mScene.computeContentHash();
+    if (!mScene.motion && (config.pathTime >= 0.0 || config.pathFrames > 0))
+        throw Error(std::string(config.pathTime >= 0.0 ? "--time" : "--path-frames") + ": scene '" + mScene.name +
+                    "' does not move (it has no \"motion\")");
+    if (mScene.motion) {
+        mRest = std::make_unique<Scene>(mScene);
+        mCameraFollows = mCamera.name == Motion::kCameraName && mScene.motion->camera;
+        if (config.pathFrames > 0) {
+            auto motion = std::make_shared<Motion>(*mScene.motion);
+            motion->frames = uint32_t(config.pathFrames);
+            mScene.motion = mRest->motion = motion;
+        }
+        moveTo(config.pathTime >= 0.0 ? float(config.pathTime) : 0.0f);
+    }
     if (mScene.lights.size() > size_t(kMaxLights))
         throw Error("scene '" + mScene.name + "' has " + std::to_string(mScene.lights.size()) +
                     " lights; at most " + std::to_string(kMaxLights) + " are supported");
@@ -76,6 +91,32 @@ void Harness::setLight(size_t index, const Light& light) {
         throw Error("light " + std::to_string(index) + " does not exist in scene '" + mScene.name + "'");
     mScene.lights[index] = light;
     updateFrameData();
+}
+
+void Harness::moveTo(float t) {
+    mPathTime = t;
+    mScene.motion->apply(*mRest, mScene, t);
+    if (mCameraFollows) mCamera = mScene.motion->cameraAt(t);
+}
+
+void Harness::seekPath(uint64_t frame) {
+    if (!moving()) return;
+    mPathFrame = frame;
+    moveTo(mScene.motion->timeOfFrame(frame));
+    if (mSubmitter) mSubmitter->instancesMoved(mScene);
+    updateFrameData();
+}
+
+double Harness::advancePath(Technique& technique) {
+    if (!moving()) return 0.0;
+    const auto t0 = Clock::now();
+    const Motion& motion = *mScene.motion;
+    moveTo(motion.timeOfFrame(mPathFrame++));
+    const uint32_t changes = motion.changes(mCameraFollows);
+    if (changes & kCastersMoved) mSubmitter->instancesMoved(mScene);
+    updateFrameData();
+    technique.sceneChanged(mScene, changes);
+    return msSince(t0, Clock::now());
 }
 
 void Harness::updateFrameData() {
@@ -126,12 +167,15 @@ void Harness::setFrameState() {
 FrameSample Harness::renderFrame(Technique& technique) {
     FrameSample s;
     auto t0 = Clock::now();
+    // A scene in motion moves first, as an application animates before it draws: part of the frame.
+    s.motionMs = advancePath(technique);
     mFrameUniforms->upload(mFrameData);
     if (mTimerQueries) mRing->beginFrame();
     setFrameState();
     mTargets->bind();
     mTargets->clear(0.55f, 0.65f, 0.8f);
-    FrameContext ctx{mScene, mView, mProj, mCamera.eye, *mTargets, *mSubmitter, *mPassTimer, mFrameIndex++};
+    FrameContext ctx{mScene,      mView,       mProj,         mCamera.eye,         *mTargets,
+                     *mSubmitter, *mPassTimer, mFrameIndex++, mFrameUniforms.get()};
     technique.execute(ctx);
     mInjectedPass.execute(mPrograms, *mPassTimer,
                           FrameTargets::kColourAttachments); // nothing unless the perf gate's proof asks
@@ -227,11 +271,12 @@ RunResult Harness::summarize(Technique& technique, std::vector<FrameSample> samp
     r.permutation = technique.permutationKey();
     r.effectsProduced = technique.info().effects;
     r.counters = technique.counters();
-    std::vector<double> cpu, wall, total;
+    std::vector<double> cpu, wall, total, motion;
     std::map<std::string, std::vector<double>> perPass;
     for (const FrameSample& s : samples) {
         cpu.push_back(s.cpuSubmitMs);
         wall.push_back(s.wallMs);
+        motion.push_back(s.motionMs);
         if (s.gpuTotalMs < 0.0) {
             r.gpuFramesMissing += mTimerQueries ? 1 : 0;
             continue;
@@ -244,6 +289,7 @@ RunResult Harness::summarize(Technique& technique, std::vector<FrameSample> samp
     }
     r.cpuSubmit = Statistics::compute(cpu);
     r.wall = Statistics::compute(wall);
+    r.motion = Statistics::compute(motion);
     r.gpuTotal = Statistics::compute(total);
     for (const std::string& pass : technique.info().passes)
         r.gpuPass.emplace_back(pass, Statistics::compute(perPass[pass]));

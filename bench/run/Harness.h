@@ -54,6 +54,7 @@ struct RunResult {
     Counters counters;              ///< of the last measured frame
     std::vector<FrameSample> samples;
     Statistics cpuSubmit, wall;
+    Statistics motion; ///< a scene in motion: FrameSample::motionMs (inside cpuSubmit)
     std::vector<std::pair<std::string, Statistics>> gpuPass; ///< per declared pass (raw timer values)
     Statistics gpuTotal;
     uint64_t gpuFramesMissing = 0; ///< measured frames whose queries never came back
@@ -70,7 +71,20 @@ public:
     const RunConfig& config() const { return mConfig; }
     Context& context() { return *mContext; }
     const Context& context() const { return *mContext; }
+    /// The scene as the last frame drew it (a scene in motion moves every frame).
     const Scene& scene() const { return mScene; }
+    /// The scene as loaded, before any motion: what the content hash describes.
+    const Scene& restScene() const { return mRest ? *mRest : mScene; }
+    /// Scene::computeContentHash of the scene at rest (its motion included), computed once.
+    const std::string& contentHash() const { return mContentHash; }
+    /// The scene moves along its path frame by frame (it has motion and no --time freezes it).
+    bool moving() const { return mScene.motion && mConfig.pathTime < 0.0; }
+    /// The path time the last frame was drawn at (0 for a static scene).
+    float pathTime() const { return mPathTime; }
+    /// Moves the scene to path time `t` now (the next frames go on from frame `frame` of the path):
+    /// the accuracy evaluator judges frames along the path this way. Techniques see it at their next
+    /// frame (Technique::sceneChanged).
+    void seekPath(uint64_t frame);
     FrameTargets& targets() { return *mTargets; }
     Submitter& submitter() { return *mSubmitter; }
     ProgramCache& programs() { return mPrograms; }
@@ -117,10 +131,20 @@ public:
 
 private:
     void setFrameState();
+    /// A scene in motion: moves it to the next step of its path and lets `technique` follow
+    /// (Technique::sceneChanged). Returns the milliseconds it took (0 for a static scene).
+    double advancePath(Technique& technique);
+    /// Sets lights, casters and the following camera to path time `t`.
+    void moveTo(float t);
     RunResult summarize(Technique& technique, std::vector<FrameSample> samples, uint64_t firstFrame);
     RunConfig mConfig;
     std::unique_ptr<Context> mContext;
     Scene mScene;
+    std::unique_ptr<Scene> mRest; ///< a scene in motion at rest (null for a static scene)
+    std::string mContentHash;
+    uint64_t mPathFrame = 0; ///< the next frame's step along the path
+    float mPathTime = 0.0f;
+    bool mCameraFollows = false; ///< --camera path
     CameraPreset mCamera;
     glm::mat4 mView{1.0f}, mProj{1.0f};
     glm::vec2 mPixelShift{0.0f};

@@ -3,6 +3,7 @@
 #include "bench/output/CsvNumber.h"
 #include "core/Injection.h"
 #include "gl/backends/BackendRegistry.h"
+#include "scenes/Motion.h"
 #include "techniques/EffectCoverage.h"
 
 namespace sb {
@@ -92,7 +93,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"hw_threads", std::to_string(env.hardwareThreads)},
         {"lp_num_threads", env.lpNumThreads},
         {"scene", scene.name},
-        {"scene_hash", scene.computeContentHash()},
+        {"scene_hash", h.contentHash()},
         {"scene_triangles", std::to_string(scene.totalTriangles())},
         {"technique", r.technique},
         {"properties", r.properties},
@@ -113,6 +114,9 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"width", std::to_string(c.width)},
         {"height", std::to_string(c.height)},
         {"lights", lightsText(scene)},
+        {"motion", scene.motion ? scene.motion->describe() : ""},
+        {"path_frames", scene.motion ? std::to_string(scene.motion->frames) : ""},
+        {"path_time", !scene.motion ? "" : h.moving() ? "moving" : csvNumber(c.pathTime)},
         {"frames", std::to_string(r.wall.n)},
         {"warmup", std::to_string(c.warmup)},
         {"setup_ms", csvNumber(r.setupMs)},
@@ -120,6 +124,8 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
     for (auto& column : rest) row.push_back(std::move(column));
     addStats(row, "wall_ms", r.wall);
     addStats(row, "cpu_submit_ms", r.cpuSubmit);
+    row.emplace_back("motion_ms_median", h.moving() ? csvNumber(r.motion.median) : "");
+    row.emplace_back("motion_ms_p95", h.moving() ? csvNumber(r.motion.p95) : "");
     row.emplace_back("fps_median", csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
     row.emplace_back("timer_verdict", v.label());
     row.emplace_back("timer_reason", v.reason);

@@ -46,6 +46,10 @@ struct RunConfig {
     double autoMaxWrongPct = 10.0;
     std::string calibrationPath;
     bool recalibrate = false;
+    /// A scene in motion (scenes/Motion.h) frozen at this path time in [0, 1] (--time); < 0: the frames
+    /// move along the path.
+    double pathTime = -1.0;
+    int pathFrames = 0; ///< --path-frames: frames per pass along the path (0 = the scene's)
     int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
     RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
     static constexpr int kMinFrames = 5;

@@ -76,6 +76,8 @@ struct RawOptions {
     int instances = -1, tess = -1;
     int64_t seed = -1;
     double maxMemoryGiB = 0.0;
+    double pathTime = -1.0;
+    int pathFrames = 0;
     bool window = false, noTimerCheck = false, noStability = false;
 };
 
@@ -98,7 +100,12 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "multiply every generated mesh's tessellation (0.5: vertex load down)")
         ->capture_default_str();
     app.add_option("--light", raw.light, "replace every light's type: " + lightTypeNames().list());
-    app.add_option("--camera", c.camera, "camera preset: far, mid, near, top")->capture_default_str();
+    app.add_option("--camera", c.camera, "camera preset: far, mid, near, top (path: a moving scene's camera path)")
+        ->capture_default_str();
+    app.add_option("--time", raw.pathTime,
+                   "a scene in motion: freeze it at this path time in [0, 1] (default: frames move along the path)");
+    app.add_option("--path-frames", raw.pathFrames,
+                   "a scene in motion: frames per pass along its path (default: the scene's)");
     app.add_option("--size", raw.size, "render target WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--submit", raw.submit, "submission: " + submitModes().list())->capture_default_str();
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
@@ -197,6 +204,12 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
         throw Error("--gpu selects an EGL device, which --backend " + raw.backend +
                     " does not use (use --backend egl-device or auto)");
     if (c.frames < 1) throw Error("--frames " + std::to_string(c.frames) + ": must be at least 1");
+    if (raw.pathTime != -1.0 && !(raw.pathTime >= 0.0 && raw.pathTime <= 1.0))
+        throw Error("--time " + formatNumber(raw.pathTime) + ": expected a path time in [0, 1]");
+    c.pathTime = raw.pathTime;
+    if (raw.pathFrames != 0 && (raw.pathFrames < 2 || raw.pathFrames > 1000000))
+        throw Error("--path-frames " + std::to_string(raw.pathFrames) + ": expected 2..1000000");
+    c.pathFrames = raw.pathFrames;
     if (c.warmup < 0) throw Error("--warmup: must be 0 or more");
     if (c.windowFrames < 0) throw Error("--window-frames: must be 0 or more");
     if (!(c.seconds >= 0.0 && c.seconds <= 86400.0)) throw Error("--seconds: expected 0..86400");

@@ -110,7 +110,7 @@ CsvRow Calibration::keyColumns(const Harness& harness, const std::string& spec) 
     return {{"renderer", harness.context().renderer},
             {"gl_version", harness.context().version},
             {"scene", harness.scene().name},
-            {"scene_hash", harness.scene().computeContentHash()},
+            {"scene_hash", harness.contentHash()},
             {"width", std::to_string(c.width)},
             {"height", std::to_string(c.height)},
             {"camera", c.camera},

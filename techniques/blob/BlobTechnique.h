@@ -41,6 +41,8 @@ public:
     BlobTechnique();
     ~BlobTechnique() override;
     void setScene(const Scene& scene) override;
+    /// Blobs are fitted to the casters and lights in every frame; the ground does not move.
+    void sceneChanged(const Scene&, uint32_t) override {}
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }

@@ -11,6 +11,8 @@ class NoneTechnique final : public Technique {
 public:
     NoneTechnique();
     void setScene(const Scene& scene) override;
+    /// Nothing depends on where the lights and casters are.
+    void sceneChanged(const Scene&, uint32_t) override {}
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }

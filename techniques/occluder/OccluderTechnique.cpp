@@ -12,6 +12,7 @@
 
 #include "core/Error.h"
 #include "scenes/Math.h"
+#include "scenes/Motion.h"
 #include "scenes/ShadowPlaneChooser.h"
 #include "techniques/common/ShadowWork.h"
 #include "techniques/occluder/OccluderTextures.h"
@@ -396,6 +397,15 @@ void OccluderTechnique::buildTextures(const CompileContext& ctx) {
     glTextureParameteri(mTextures, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(mTextures, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(mTextures, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void OccluderTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+    if (changes & kCastersMoved)
+        for (size_t i = 0; i < scene.instances.size(); ++i) mInverseModel[i] = glm::inverse(scene.instances[i].model);
+    if (mReceiveAll && (changes & (kCastersMoved | kLightsMoved))) {
+        collectCandidates(scene);
+        uploadWorldPlanes();
+    }
 }
 
 void OccluderTechnique::compile(const CompileContext& ctx) {

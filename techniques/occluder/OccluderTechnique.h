@@ -41,6 +41,11 @@ public:
     OccluderTechnique();
     ~OccluderTechnique() override;
     void setScene(const Scene& scene) override;
+    /// The planes and their textures stay (an artist's, made once); the light in each instance's space
+    /// is found every frame anyway. Moving casters change their inverse transforms, and with
+    /// receivers=all the world planes and the caster candidates of every receiver (which also follow
+    /// the lights).
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }

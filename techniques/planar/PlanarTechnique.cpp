@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/MeshGenerators.h"
+#include "scenes/Motion.h"
 #include "scenes/ProxyCollection.h"
 #include "techniques/FrameState.h"
 #include "techniques/common/ShadowWork.h"
@@ -129,6 +130,14 @@ void PlanarTechnique::uploadProxies(const Scene& scene) {
         records.empty() ? nullptr : records.data(), 0);
     for (size_t s = 0; s < shapes.meshes.size(); ++s)
         InstancedSubmitter::attachInstances(mProxyMeshes.vao(s), mProxyInstances);
+}
+
+void PlanarTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+    if (changes & kLightsMoved) mProjections = projections(mPlanes, scene, mGuards);
+    if ((changes & kCastersMoved) && mUseProxies) {
+        release();
+        uploadProxies(scene);
+    }
 }
 
 void PlanarTechnique::compile(const CompileContext& ctx) {

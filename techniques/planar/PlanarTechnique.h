@@ -42,6 +42,8 @@ public:
     PlanarTechnique();
     ~PlanarTechnique() override;
     void setScene(const Scene& scene) override;
+    /// The flattening matrices follow the lights; the proxy occluders (occluder=proxy) the casters.
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }

@@ -146,6 +146,12 @@ void FilterableShadowMaps::setScene(const Scene& scene) {
     mFitResolution = 0;
 }
 
+void FilterableShadowMaps::sceneChanged(const Scene& scene) {
+    const int resolution = mFitResolution, margin = mMarginTexels;
+    setScene(scene);
+    if (resolution > 0) fit(scene, resolution, margin);
+}
+
 void FilterableShadowMaps::fit(const Scene& scene, int resolution, int marginTexels) {
     if (4 * marginTexels > resolution)
         throw Error(mOwner + ": the blur needs a border of " + std::to_string(marginTexels) +

@@ -82,6 +82,8 @@ public:
     /// Fits a light camera per light (at most kMaxLights, scenes/LightFit.h); throws Error(Unsupported)
     /// naming the omni techniques for a point light.
     void setScene(const Scene& scene);
+    /// A scene in motion moved: the light fits again, then the maps fitted as the last fit() did.
+    void sceneChanged(const Scene& scene);
     /// The light cameras for maps of `resolution` texels with a border of `marginTexels` (below), and the
     /// depth parameters for them. Cheap when nothing changed. A margin above a quarter of the resolution
     /// is refused (Error(BadInput)): the casters would keep less than half the map.

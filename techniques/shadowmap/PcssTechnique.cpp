@@ -159,6 +159,18 @@ void PcssTechnique::createSamplers() {
     glSamplerParameteri(mCompareSampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
+void PcssTechnique::sceneChanged(const Scene& scene, uint32_t) {
+    setScene(scene);
+    fitLightSizes(scene);
+}
+
+void PcssTechnique::fitLightSizes(const Scene& scene) {
+    mParams.clear();
+    for (size_t i = 0; i < mLights.size(); ++i)
+        mParams.push_back(
+            lightParams(scene, scene.lights[i], mLights.viewProj()[i], float(properties().getFloat(kLightSize))));
+}
+
 void PcssTechnique::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int layers = std::max<int>(1, int(mLights.size()));
@@ -167,10 +179,7 @@ void PcssTechnique::compile(const CompileContext& ctx) {
     createSamplers();
     mBlockerKernel = PoissonDisk::generate(int(p.getInt(kBlockerTaps)));
     mFilterKernel = PoissonDisk::generate(int(p.getInt(kFilterTaps)), kFilterSeed);
-    mParams.clear();
-    for (size_t i = 0; i < mLights.size(); ++i)
-        mParams.push_back(lightParams(ctx.scene, ctx.scene.lights[i], mLights.viewProj()[i],
-                                      float(p.getFloat(kLightSize))));
+    fitLightSizes(ctx.scene);
 
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);

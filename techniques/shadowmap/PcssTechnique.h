@@ -53,6 +53,8 @@ public:
     PcssTechnique();
     ~PcssTechnique() override;
     void setScene(const Scene& scene) override;
+    /// The light fits, the culling bounds and each light's size in map texels follow the scene.
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
@@ -75,6 +77,7 @@ public:
                                    float sizeOverride);
 
 private:
+    void fitLightSizes(const Scene& scene); ///< mParams for the current fits and light_size
     void renderDepth(FrameContext& ctx);
     void renderLighting(FrameContext& ctx);
     void createSamplers();

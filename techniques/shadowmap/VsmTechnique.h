@@ -38,6 +38,8 @@ class VsmTechnique final : public Technique {
 public:
     VsmTechnique();
     void setScene(const Scene& scene) override;
+    /// The light fits and the maps' fit to the receivers follow the scene (FilterableShadowMaps).
+    void sceneChanged(const Scene& scene, uint32_t) override { mMaps.sceneChanged(scene); }
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }

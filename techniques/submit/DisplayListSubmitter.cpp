@@ -27,7 +27,7 @@ void DisplayListSubmitter::upload(const Scene& scene) {
     }
 }
 
-void DisplayListSubmitter::draw(DrawSet set, InstanceMask keep) {
+void DisplayListSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     glBindVertexArray(0);
     mStats.glCalls += 1;
     for (size_t i = 0; i < mScene->instances.size(); ++i) {

@@ -15,10 +15,9 @@ public:
     ~DisplayListSubmitter() override;
     SubmitMode mode() const override { return SubmitMode::DisplayList; }
     void upload(const Scene& scene) override;
-    using Submitter::draw;
-    void draw(DrawSet set, InstanceMask keep) override;
 
 private:
+    void drawKept(DrawSet set, InstanceMask keep) override;
     void release();
     const Scene* mScene = nullptr;
     GLuint mFirstList = 0;

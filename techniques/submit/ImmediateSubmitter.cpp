@@ -8,7 +8,7 @@ void ImmediateSubmitter::upload(const Scene& scene) {
     mScene = &scene;
 }
 
-void ImmediateSubmitter::draw(DrawSet set, InstanceMask keep) {
+void ImmediateSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     glBindVertexArray(0);
     mStats.glCalls += 1;
     for (size_t i = 0; i < mScene->instances.size(); ++i) {

@@ -20,10 +20,9 @@ class ImmediateSubmitter final : public Submitter {
 public:
     SubmitMode mode() const override { return SubmitMode::Immediate; }
     void upload(const Scene& scene) override;
-    using Submitter::draw;
-    void draw(DrawSet set, InstanceMask keep) override;
 
 private:
+    void drawKept(DrawSet set, InstanceMask keep) override;
     /// Makes the driver draw what it has buffered: one GL call, no fragments.
     static void flushBufferedVertices();
     const Scene* mScene = nullptr;

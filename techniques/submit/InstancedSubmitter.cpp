@@ -25,7 +25,8 @@ void InstancedSubmitter::upload(const Scene& scene) {
     mScene = &scene;
     mBuffers.upload(scene);
     // One buffer holding, per draw set and mesh, that set's instances contiguously.
-    std::vector<InstanceRecord> records;
+    std::vector<InstanceRecord>& records = mRecords;
+    records.clear();
     mRecordInstance.clear();
     for (size_t s = 0; s < kDrawSetCount; ++s) {
         mBatches[s].clear();
@@ -42,11 +43,22 @@ void InstancedSubmitter::upload(const Scene& scene) {
         }
     }
     glCreateBuffers(1, &mInstanceBuffer);
+    // Dynamic storage: a scene in motion rewrites the records of its moving casters every frame.
     glNamedBufferStorage(mInstanceBuffer,
                          GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
-                         records.empty() ? nullptr : records.data(), 0);
+                         records.empty() ? nullptr : records.data(), GL_DYNAMIC_STORAGE_BIT);
     // A VAO per mesh: the shared mesh buffers at binding 0, the instance buffer at binding 1.
     for (size_t m = 0; m < scene.meshes.size(); ++m) attachInstances(mBuffers.vao(m), mInstanceBuffer);
+}
+
+void InstancedSubmitter::instancesMoved(const Scene& scene) {
+    // Every record again, in upload order (an instance appears once per draw set it is in): one upload
+    // of the whole buffer, what an application streaming its instance transforms does.
+    for (size_t r = 0; r < mRecords.size(); ++r) mRecords[r].model = scene.instances[mRecordInstance[r]].model;
+    if (!mRecords.empty())
+        glNamedBufferSubData(mInstanceBuffer, 0, GLsizeiptr(mRecords.size() * sizeof(InstanceRecord)),
+                             mRecords.data());
+    mStats.glCalls += 1;
 }
 
 void InstancedSubmitter::attachInstances(GLuint vao, GLuint buffer) {
@@ -69,7 +81,7 @@ void InstancedSubmitter::drawRun(const Batch& b, uint32_t first, uint32_t count)
     mStats.glCalls += 1;
 }
 
-void InstancedSubmitter::draw(DrawSet set, InstanceMask keep) {
+void InstancedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     for (const Batch& b : mBatches[size_t(set)]) {
         // The kept records of the batch as runs [first, end): the instance buffer stays as uploaded,
         // a culled instance splits its batch instead of costing an upload.

@@ -16,8 +16,7 @@ public:
     ~InstancedSubmitter() override;
     SubmitMode mode() const override { return SubmitMode::Instanced; }
     void upload(const Scene& scene) override;
-    using Submitter::draw;
-    void draw(DrawSet set, InstanceMask keep) override;
+    void instancesMoved(const Scene& scene) override;
     Defines defines() const override { return {{"SB_INSTANCED", ""}}; }
 
     /// One instance as shaders/common/instance.glsl reads it with SB_INSTANCED.
@@ -30,6 +29,7 @@ public:
     static void attachInstances(GLuint vao, GLuint buffer);
 
 private:
+    void drawKept(DrawSet set, InstanceMask keep) override;
     struct Batch {
         uint32_t mesh = 0;
         uint32_t first = 0; ///< base instance in the instance buffer
@@ -42,6 +42,7 @@ private:
     GLuint mInstanceBuffer = 0;
     std::array<std::vector<Batch>, kDrawSetCount> mBatches; ///< per DrawSet
     std::vector<uint32_t> mRecordInstance; ///< per instance-buffer record: its index in Scene::instances
+    std::vector<InstanceRecord> mRecords;  ///< the buffer's contents (rewritten when instances move)
 };
 
 } // namespace sb

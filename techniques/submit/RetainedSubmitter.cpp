@@ -15,7 +15,7 @@ void RetainedSubmitter::upload(const Scene& scene) {
     });
 }
 
-void RetainedSubmitter::draw(DrawSet set, InstanceMask keep) {
+void RetainedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     uint32_t boundMesh = UINT32_MAX;
     for (uint32_t i : mOrder) {
         const Instance& inst = mScene->instances[i];

@@ -12,10 +12,9 @@ class RetainedSubmitter final : public Submitter {
 public:
     SubmitMode mode() const override { return SubmitMode::Retained; }
     void upload(const Scene& scene) override;
-    using Submitter::draw;
-    void draw(DrawSet set, InstanceMask keep) override;
 
 private:
+    void drawKept(DrawSet set, InstanceMask keep) override;
     const Scene* mScene = nullptr;
     MeshBuffers mBuffers;
     std::vector<uint32_t> mOrder; ///< instance indices sorted by mesh

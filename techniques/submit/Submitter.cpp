@@ -61,6 +61,12 @@ bool Submitter::inSet(const Instance& inst, DrawSet set) {
     return false;
 }
 
+InstanceMask Submitter::narrowToScope(InstanceMask keep) {
+    mScoped.resize(mScope.size());
+    for (size_t i = 0; i < mScope.size(); ++i) mScoped[i] = mScope[i] && kept(keep, i) ? 1 : 0;
+    return mScoped;
+}
+
 float Submitter::shadowSignedId(const Instance& inst) {
     return inst.receivesShadow ? float(inst.objectId) : -float(inst.objectId);
 }

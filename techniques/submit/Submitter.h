@@ -15,6 +15,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/NameTable.h"
 #include "gl/ProgramCache.h"
@@ -82,11 +83,27 @@ public:
     /// Untimed preparation for a scene: buffers, display lists, instance buffers, draw orders.
     /// Must be called with a current context; may be called again for a new scene.
     virtual void upload(const Scene& scene) = 0;
+    /// A scene in motion moved instances (their model matrices): modes that keep per-instance data on
+    /// the GPU (instanced) upload it again; the others read it at each draw. Inside the timed frame.
+    virtual void instancesMoved(const Scene&) {}
     /// Draws every instance of `set` with the currently bound program.
     void draw(DrawSet set) { draw(set, InstanceMask{}); }
     /// Draws the instances of `set` that `keep` keeps. Culled instances cost no GL call; instanced
-    /// mode draws each run of consecutive kept instances of a mesh with one call.
-    virtual void draw(DrawSet set, InstanceMask keep) = 0;
+    /// mode draws each run of consecutive kept instances of a mesh with one call. Inside a view scope
+    /// (setViewScope) only the scope's instances are drawn.
+    void draw(DrawSet set, InstanceMask keep) {
+        if (mScope.empty())
+            drawKept(set, keep);
+        else
+            drawKept(set, narrowToScope(keep));
+    }
+    /// Restricts every draw to the instances `scope` keeps (indexed like Scene::instances) until it is
+    /// cleared with an empty mask. A hybrid technique (techniques/hybrid/) sets it while one of its
+    /// parts draws the visible scene, so each instance is shaded once, by the part that owns it; the
+    /// parts' shadow passes run unscoped. The mask must outlive the scope. Empty: no scope (the normal
+    /// path pays one emptiness test per draw call of a technique, not per instance).
+    void setViewScope(InstanceMask scope) { mScope = scope; }
+    InstanceMask viewScope() const { return mScope; }
     /// Defines the vertex stage needs for this mode (SB_INSTANCED for instanced).
     virtual Defines defines() const { return {}; }
 
@@ -109,6 +126,8 @@ public:
     static float shadowSignedId(const Instance& inst);
 
 protected:
+    /// The mode's draw of the instances of `set` that `keep` keeps (empty: all of them).
+    virtual void drawKept(DrawSet set, InstanceMask keep) = 0;
     static bool kept(InstanceMask keep, size_t instance) { return keep.empty() || keep[instance] != 0; }
     /// Sets the per-instance uniforms (locations 0 and 4) of the bound program.
     static void setInstanceUniforms(const Instance& inst);
@@ -121,7 +140,11 @@ protected:
     SubmitStats mStats;
 
 private:
+    /// `keep` and the view scope, combined in mScoped.
+    InstanceMask narrowToScope(InstanceMask keep);
     SubmitStats mLifetime;
+    InstanceMask mScope;
+    std::vector<uint8_t> mScoped;
 };
 
 } // namespace sb

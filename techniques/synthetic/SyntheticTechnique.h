@@ -15,6 +15,8 @@ public:
     SyntheticTechnique();
     ~SyntheticTechnique() override;
     void setScene(const Scene& scene) override;
+    /// The workloads do not depend on where the lights and casters are.
+    void sceneChanged(const Scene&, uint32_t) override {}
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }

@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/Error.h"
+#include "scenes/Motion.h"
 
 namespace sb {
 
@@ -73,6 +74,7 @@ VolumeTechnique::VolumeTechnique()
                             Effect::MultipleLights,
                  .capabilities = {{"GL 4.5", 4, 5, ""}},
                  .passes = {"ambient", "mark", "lighting"},
+                 .viewPasses = {"ambient", "lighting"},
                  .properties = declareProperties(),
                  .quality = {}}) {}
 
@@ -148,13 +150,17 @@ void VolumeTechnique::setScene(const Scene& scene) {
     mHasNonReceivers = scene.hasNonReceivers();
     mBuffers.upload(scene, mSettings.vertexExtrusion, mSettings.policy);
     checkClosed(scene);
+    mMeshBounds.resize(scene.meshes.size());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds[m] = scene.meshes[m].computeBounds();
+    placeCasters(scene);
+}
+
+void VolumeTechnique::placeCasters(const Scene& scene) {
     mCasters.clear();
     mSceneBounds = Aabb{};
-    std::vector<Aabb> meshBounds(scene.meshes.size());
-    for (size_t m = 0; m < scene.meshes.size(); ++m) meshBounds[m] = scene.meshes[m].computeBounds();
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
-        const Aabb bounds = transformBounds(inst.model, meshBounds[inst.mesh]);
+        const Aabb bounds = transformBounds(inst.model, mMeshBounds[inst.mesh]);
         mSceneBounds.extend(bounds);
         if (!inst.castsShadow) continue;
         Caster c;
@@ -169,6 +175,12 @@ void VolumeTechnique::setScene(const Scene& scene) {
     // Draw order inside a light: by mesh, so the VAO changes once per mesh.
     std::stable_sort(mCasters.begin(), mCasters.end(),
                      [](const Caster& a, const Caster& b) { return a.mesh < b.mesh; });
+}
+
+void VolumeTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+    // Silhouettes, extrusions and the light regions are found every frame from the lights as they are;
+    // what a static scene fixes once is where the casters stand.
+    if (changes & kCastersMoved) placeCasters(scene);
 }
 
 void VolumeTechnique::compile(const CompileContext& ctx) {

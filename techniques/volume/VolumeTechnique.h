@@ -52,6 +52,7 @@ public:
     VolumeTechnique();
     ~VolumeTechnique() override;
     void setScene(const Scene& scene) override;
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
@@ -70,6 +71,9 @@ private:
              scissor = true, finiteVolumes = false, boundedVolumes = true, depthBounds = false;
         OpenEdgePolicy policy = OpenEdgePolicy::Multiplicity;
     };
+    /// mCasters and mSceneBounds from where the scene's instances stand.
+    void placeCasters(const Scene& scene);
+    std::vector<Aabb> mMeshBounds; ///< per mesh, object space
     struct Caster {
         uint32_t instance = 0, mesh = 0;
         glm::mat4 model{1.0f}, inverseModel{1.0f};
