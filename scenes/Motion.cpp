@@ -34,7 +34,8 @@ std::string text(float v) {
 /// The unit direction from the scene towards a sun at azimuth `azimuth` and elevation `elevation`
 /// (radians): azimuth 0 is +X, 90 degrees +Z.
 glm::vec3 towardsSun(float azimuth, float elevation) {
-    return {std::cos(elevation) * std::cos(azimuth), std::sin(elevation), std::cos(elevation) * std::sin(azimuth)};
+    return {std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+            std::cos(elevation) * std::sin(azimuth)};
 }
 
 } // namespace
@@ -56,15 +57,18 @@ void Motion::apply(const Scene& rest, Scene& scene, float t) const {
     if (sun) {
         const float pi = std::numbers::pi_v<float>;
         const float azimuth = glm::radians(mix1(sun->azimuthDeg.x, sun->azimuthDeg.y, t));
-        const float elevation =
-            glm::radians(sun->elevationDeg.x + (sun->elevationDeg.y - sun->elevationDeg.x) * std::sin(pi * t));
-        scene.lights[sun->light].direction = -towardsSun(azimuth, elevation);
+        const float elevation = glm::radians(sun->elevationDeg.x +
+                                             (sun->elevationDeg.y - sun->elevationDeg.x) * std::sin(pi * t));
+        const glm::vec3 towards = towardsSun(azimuth, elevation);
+        Light& light = scene.lights[sun->light];
+        light.direction = -towards;
+        if (light.type != LightType::Directional) light.position = sun->centre + towards * sun->distance;
     }
     if (orbit) {
         const float angle = 2.0f * std::numbers::pi_v<float> * orbit->turns * t;
         Light& light = scene.lights[orbit->light];
         light.position = orbit->centre + orbit->radius * glm::vec3(std::cos(angle), 0.0f, std::sin(angle));
-        if (light.type == LightType::Spot) light.direction = glm::normalize(orbit->target - light.position);
+        if (light.type != LightType::Point) light.direction = glm::normalize(orbit->target - light.position);
     }
     if (casters) {
         for (uint32_t i : casters->instances) {
@@ -112,11 +116,11 @@ std::string Motion::describe() const {
 std::string Motion::canonical() const {
     std::string out = "frames=" + std::to_string(frames);
     if (sun)
-        out += ";sun=" + std::to_string(sun->light) + "," + text(sun->azimuthDeg.x) + "," + text(sun->azimuthDeg.y) +
-               "," + text(sun->elevationDeg.x) + "," + text(sun->elevationDeg.y);
+        out += ";sun=" + std::to_string(sun->light) + "," + text(sun->azimuthDeg.x) + "," +
+               text(sun->azimuthDeg.y) + "," + text(sun->elevationDeg.x) + "," + text(sun->elevationDeg.y);
     if (orbit)
-        out += ";orbit=" + std::to_string(orbit->light) + "," + text(orbit->centre) + "," + text(orbit->radius) +
-               "," + text(orbit->turns) + "," + text(orbit->target);
+        out += ";orbit=" + std::to_string(orbit->light) + "," + text(orbit->centre) + "," +
+               text(orbit->radius) + "," + text(orbit->turns) + "," + text(orbit->target);
     if (camera)
         for (const CameraPreset& k : camera->keys)
             out += ";key=" + text(k.eye) + text(k.target) + text(k.up) + "," + text(k.fovYDeg) + "," +

@@ -24,17 +24,22 @@ enum SceneChange : uint32_t {
     kCameraMoved = 1u << 2,
 };
 
-/// A directional light over a day: azimuth from `azimuthDeg[0]` to `[1]` (degrees in the ground plane,
-/// 0 = +X, 90 = +Z), elevation low + (high - low) sin(pi t): low at both ends of the path (long
-/// shadows at sunrise and sunset), highest at noon.
+/// A light over a day: azimuth from `azimuthDeg[0]` to `[1]` (degrees in the ground plane, 0 = +X,
+/// 90 = +Z), elevation low + (high - low) sin(pi t): low at both ends of the path (long shadows at
+/// sunrise and sunset), highest at noon. A directional light takes the sun's direction; a point or spot
+/// light (a scene's sun under --light point) moves on the sphere of its distance around the casters'
+/// centre, a spot aiming at that centre.
 struct SunPath {
     uint32_t light = 0;
     glm::vec2 azimuthDeg{-60.0f, 60.0f};
     glm::vec2 elevationDeg{15.0f, 70.0f}; ///< low, high
+    glm::vec3 centre{0.0f};               ///< the casters' centre (SceneLoader fills it)
+    float distance = 0.0f;                ///< a point or spot light's distance from the centre at rest
 };
 
-/// A point or spot light on a horizontal circle: position = centre + radius (cos, 0, sin) of
-/// 2 pi turns t; a spot aims at `target`.
+/// A light on a horizontal circle: position = centre + radius (cos, 0, sin) of 2 pi turns t; a spot
+/// aims at `target`, and a directional light (a scene's orbit under --light directional) shines from
+/// the position towards it.
 struct OrbitPath {
     uint32_t light = 0;
     glm::vec3 centre{0.0f, 5.0f, 0.0f};

@@ -692,7 +692,8 @@ EffectMask parseEffects(const JsonReader& r) {
 
 uint32_t movedLight(const Context& ctx, const JsonReader& r, std::initializer_list<LightType> types,
                     const char* what) {
-    const auto index = uint32_t(r.integer(0, int64_t(ctx.scene.lights.size()) - 1, "a light index of the scene"));
+    const auto index =
+        uint32_t(r.integer(0, int64_t(ctx.scene.lights.size()) - 1, "a light index of the scene"));
     const LightType type = ctx.scene.lights[index].type;
     if (std::find(types.begin(), types.end(), type) == types.end())
         r.error(std::string("light ") + std::to_string(index) + " is " + lightTypeName(type) + "; " + what);
@@ -710,10 +711,12 @@ SunPath parseSun(const Context& ctx, const JsonReader& r) {
     r.requireObject({"light", "azimuth_deg", "elevation_deg"});
     SunPath sun;
     sun.light = movedLight(ctx, r["light"], {LightType::Directional}, "a sun path moves a directional light");
-    if (r.has("azimuth_deg")) sun.azimuthDeg = numberPair(r["azimuth_deg"], -3600, 3600, "degrees in [-3600, 3600]");
+    if (r.has("azimuth_deg"))
+        sun.azimuthDeg = numberPair(r["azimuth_deg"], -3600, 3600, "degrees in [-3600, 3600]");
     if (r.has("elevation_deg")) {
         sun.elevationDeg = numberPair(r["elevation_deg"], 0.0, 90.0, "degrees in [0, 90]");
-        if (sun.elevationDeg.x > sun.elevationDeg.y) r["elevation_deg"].error("expected [low, high] with low <= high");
+        if (sun.elevationDeg.x > sun.elevationDeg.y)
+            r["elevation_deg"].error("expected [low, high] with low <= high");
     }
     return sun;
 }
@@ -766,22 +769,39 @@ CasterPath parseCasters(const Context& ctx, const JsonReader& r) {
         if (kind != "layout" && kind != "casters")
             r["instances"].fail("\"layout\", \"casters\" or a list of instance indices");
         for (uint32_t i = 0; i < instances.size(); ++i)
-            if (instances[i].castsShadow && (kind == "casters" || instances[i].fromLayout)) path.instances.push_back(i);
+            if (instances[i].castsShadow && (kind == "casters" || instances[i].fromLayout))
+                path.instances.push_back(i);
     } else {
         for (const auto& e : r["instances"].elements(true)) {
-            const auto i = uint32_t(e.integer(0, int64_t(instances.size()) - 1, "an instance index of the scene"));
+            const auto i =
+                uint32_t(e.integer(0, int64_t(instances.size()) - 1, "an instance index of the scene"));
             if (!instances[i].castsShadow)
-                e.error("instance " + std::to_string(i) + " casts no shadow: only casters move (receivers stay put)");
+                e.error("instance " + std::to_string(i) +
+                        " casts no shadow: only casters move (receivers stay put)");
             path.instances.push_back(i);
         }
     }
     if (path.instances.empty()) r.error("no instance to move: the scene has no caster of that kind");
     if (r.has("translate")) path.translate = boundedPoint(r["translate"], r["translate"].vec3());
-    if (r.has("yaw_deg")) path.yawDeg = r["yaw_deg"].numberIn(-36000.0, 36000.0, "degrees in [-36000, 36000]");
+    if (r.has("yaw_deg"))
+        path.yawDeg = r["yaw_deg"].numberIn(-36000.0, 36000.0, "degrees in [-36000, 36000]");
     // Every moved caster stays within the coordinate bound at both ends of the path.
     if (r.has("translate"))
-        for (uint32_t i : path.instances) boundedPoint(r["translate"], instances[i].position + path.translate);
+        for (uint32_t i : path.instances)
+            boundedPoint(r["translate"], instances[i].position + path.translate);
     return path;
+}
+
+/// A sun path's centre and, for a point or spot light (--light point on a scene with a sun), its
+/// distance: known only once the lights have their final types.
+void placeSun(Scene& scene) {
+    auto motion = std::make_shared<Motion>(*scene.motion);
+    Aabb bounds = scene.computeBounds(true);
+    if (bounds.empty()) bounds = scene.computeBounds(false);
+    motion->sun->centre = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+    const Light& light = scene.lights[motion->sun->light];
+    motion->sun->distance = glm::length(light.position - motion->sun->centre);
+    scene.motion = std::move(motion);
 }
 
 void parseMotion(Context& ctx, const JsonReader& r) {
@@ -791,7 +811,8 @@ void parseMotion(Context& ctx, const JsonReader& r) {
     if (r.has("sun")) motion->sun = parseSun(ctx, r["sun"]);
     if (r.has("orbit")) motion->orbit = parseOrbit(ctx, r["orbit"]);
     if (motion->sun && motion->orbit && motion->sun->light == motion->orbit->light)
-        r["orbit"]["light"].error("light " + std::to_string(motion->orbit->light) + " already follows the sun path");
+        r["orbit"]["light"].error("light " + std::to_string(motion->orbit->light) +
+                                  " already follows the sun path");
     if (r.has("camera")) {
         CameraPath path;
         for (const auto& k : r["camera"].elements()) path.keys.push_back(cameraKey(ctx, k));
@@ -893,8 +914,8 @@ void countReferences(Context& ctx, const JsonReader& root) {
 }
 
 void parseDocument(Context& ctx, const JsonReader& root) {
-    root.requireObject(
-        {"name", "description", "meshes", "instances", "layout", "lights", "cameras", "effects", "ambient", "motion"});
+    root.requireObject({"name", "description", "meshes", "instances", "layout", "lights", "cameras",
+                        "effects", "ambient", "motion"});
     if (root.has("name")) ctx.scene.name = root["name"].string();
     if (root.has("description")) root["description"].string();
     checkOptionsApply(ctx, root.has("layout"));
@@ -938,13 +959,8 @@ Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceN
     ctx.scene.name = fs::path(sourceName).stem().string();
     ctx.scene.sourcePath = sourceName;
     parseDocument(ctx, JsonReader(doc, sourceName));
-    if (options.lightType) {
-        if (const Motion* m = ctx.scene.motion.get(); m && (m->sun || m->orbit))
-            throw Error("--light " + std::string(lightTypeName(*options.lightType)) + ": scene '" + ctx.scene.name +
-                        "' moves its light along a " + (m->sun ? "sun path (a directional light)" : "orbit (a point or spot light)") +
-                        "; drop --light, or use a scene without \"motion\"");
-        overrideLightType(ctx.scene, *options.lightType);
-    }
+    if (options.lightType) overrideLightType(ctx.scene, *options.lightType);
+    if (ctx.scene.motion && ctx.scene.motion->sun) placeSun(ctx.scene);
     return std::move(ctx.scene);
 }
 

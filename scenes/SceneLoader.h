@@ -88,7 +88,9 @@
 //     "casters": {"instances": "layout" | "casters" | [i, ...], "translate": [x,y,z], "yaw_deg": a}
 //       casters moved by translate and turned by yaw over the path ("layout", the default: the layout's
 //       instances); an instance that casts no shadow may not move (receivers stay put)
-//   A light may follow one path; --light is refused for a scene whose light moves.
+//   A light may follow one path. Under --light the path still moves the light: a sun path moves a point
+//   or spot light over the sky at its distance from the casters' centre, an orbit turns a directional
+//   light to shine from the orbit towards its target.
 // SceneOptions: --instances/--model need a layout (error otherwise); --model's meshes are named after the
 // model file ("horse.3ds", "test1.3ds:Box01"), so errors about them name it; --light moves a directional
 // light to centre - direction * 2 * radius of the casters' bounds, a spot's cone then encloses them.

@@ -8,16 +8,18 @@
 #   auto.csv        -t auto per built-in scene at 256x256 (calibration cached in auto-calibration.csv)
 #   hybrid_time.csv, hybrid_accuracy.csv  every hybrid of the aircraft against the pure techniques:
 #                   wall time in interleaved rounds, accuracy against the Embree reference
+#   motion_<round>.csv, motion_accuracy.csv  aircraft_day moving against frozen at noon (--time 0.5),
+#                   three runs each in alternating order; accuracy and flicker along the camera path
 # Wall times are ratios measured side by side (interleaved rounds); the exact work columns (load_*,
 # work_*) are what the saving is in, and they do not move with load.
 # Usage: bash scripts/effects.sh [output folder, default results/effects] [section ...]
-#   sections: proxy fill auto hybrid (default: all; about 25 minutes on 2 cores)
+#   sections: proxy fill auto hybrid motion (default: all; about 30 minutes on 2 cores)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$root/results/effects}"
 shift || true
 sections=("$@")
-[ ${#sections[@]} -gt 0 ] || sections=(proxy fill auto hybrid)
+[ ${#sections[@]} -gt 0 ] || sections=(proxy fill auto hybrid motion)
 bench="$root/build/bench"
 [ -x "$bench" ] || bash "$root/scripts/build.sh"
 mkdir -p "$out"
@@ -64,4 +66,24 @@ techniques=(-t none -t occluder -t shadowmap -t volume -t planar -t projective -
 run "${techniques[@]}" --scene aircraft --size 512x512 --repeat 5 --frames 20 --csv "$out/hybrid_time.csv"
 run accuracy "${techniques[@]}" --scene aircraft --size 512x512 --frames 5 --no-stability \
   --csv "$out/hybrid_accuracy.csv"
+fi
+
+if wanted motion; then
+# The per-frame work a static frame hides: the same techniques on aircraft_day frozen at noon and moving
+# (the sun and 40 aircraft), one run each, three rounds in alternating order (a run holds one setting).
+rm -f "$out"/motion_*.csv
+techniques=(-t none -t shadowmap -t cascaded -t vsm -t volume -t occluder -t proxy -t planar -t projective
+            -t blob -t hybrid -t hybrid:self=occluder:cast=planar)
+common=(--scene aircraft_day --camera mid --size 512x512 --frames 30)
+round=0
+for order in "frozen moving" "moving frozen" "frozen moving"; do
+  round=$((round + 1))
+  for kind in $order; do
+    extra=()
+    [ "$kind" = frozen ] && extra=(--time 0.5)
+    run "${techniques[@]}" "${common[@]}" "${extra[@]}" --csv "$out/motion_$round.csv"
+  done
+done
+run accuracy "${techniques[@]}" --scene aircraft_day --camera path --size 384x384 --frames 5 \
+  --csv "$out/motion_accuracy.csv"
 fi

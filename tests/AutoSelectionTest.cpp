@@ -1,7 +1,10 @@
 // `-t auto`'s choice (bench/select/AutoSelection.h) over hand-made candidate tables: it never picks a
 // candidate that lacks a requested effect, misses the accuracy bound or was refused, and among the rest
 // it picks the lowest measured cost, so changing the costs changes the choice (a fixed ranking fails
-// the last test). The effect masks are the ones the techniques declare (their headers), written out here.
+// that test); where the calibration's interleaved rounds cannot separate two candidates, the exact
+// work decides (the last test). The effect masks are the ones the techniques declare (their headers), written
+// out here.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -105,4 +108,45 @@ TEST(AutoSelection, TheChoiceFollowsTheMeasuredCosts) {
     // Equal costs: the first listed (the registry's order), not a name.
     candidates[1].costMs = 5.0;
     EXPECT_EQ(chosenName(kSelf, candidates, 5.0), "shadowmap");
+}
+
+TEST(AutoSelection, TimeDecidesOnlyWhereEveryRoundAgreesAndExactWorkBreaksTheRest) {
+    // Two qualifying candidates timed in the same interleaved calibration (batch "b1"), five rounds.
+    auto timed = [](const std::string& name, std::vector<double> rounds, double work,
+                    const std::string& batch) {
+        AutoCandidate c = candidate(name, kHard, 0.0, 0.0);
+        std::vector<double> sorted = rounds;
+        std::sort(sorted.begin(), sorted.end());
+        c.costMs = sorted[sorted.size() / 2];
+        c.rounds = std::move(rounds);
+        c.work = work;
+        c.batch = batch;
+        return c;
+    };
+    // planar: median 2.1 ms but slower than volume in round 2; volume: median 2.4 ms, a fifth the work.
+    std::vector<AutoCandidate> tie = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, 5e6, "b1"),
+                                      timed("volume", {2.5, 2.0, 2.6, 2.4, 2.3}, 1e6, "b1")};
+    AutoChoice choice = AutoSelection::choose(kHard, tie, 10.0);
+    ASSERT_TRUE(choice.chosen.has_value());
+    EXPECT_EQ(*choice.chosen, 1u) << "time cannot separate them: the least exact work decides";
+    EXPECT_NE(choice.reason.find("planar was not faster in every round"), std::string::npos) << choice.reason;
+    EXPECT_EQ(tie[0].verdict,
+              "qualifies; not faster in every round, more exact work (5e+06 shader invocations)");
+    // planar faster in every round: time decides, whatever the work.
+    std::vector<AutoCandidate> separated = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, 5e6, "b1"),
+                                            timed("volume", {2.5, 2.2, 3.1, 2.4, 2.3}, 1e6, "b1")};
+    EXPECT_EQ(*AutoSelection::choose(kHard, separated, 10.0).chosen, 0u);
+    // Timed in different calibrations: the rounds are not paired, the medians decide.
+    std::vector<AutoCandidate> apart = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, 5e6, "b1"),
+                                        timed("volume", {2.5, 2.0, 2.6, 2.4, 2.3}, 1e6, "b2")};
+    EXPECT_EQ(*AutoSelection::choose(kHard, apart, 10.0).chosen, 0u);
+    // No exact work to compare (a context without pipeline statistics): the fastest median stays.
+    std::vector<AutoCandidate> unknown = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, -1.0, "b1"),
+                                          timed("volume", {2.5, 2.0, 2.6, 2.4, 2.3}, 1e6, "b1")};
+    EXPECT_EQ(*AutoSelection::choose(kHard, unknown, 10.0).chosen, 0u);
+    // A candidate that misses the bound takes no part in the tie, however little work it does.
+    std::vector<AutoCandidate> bounded = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, 5e6, "b1"),
+                                          timed("volume", {2.5, 2.0, 2.6, 2.4, 2.3}, 1e6, "b1")};
+    bounded[1].wrongPct = 50.0;
+    EXPECT_EQ(*AutoSelection::choose(kHard, bounded, 10.0).chosen, 0u);
 }

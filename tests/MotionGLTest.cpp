@@ -79,7 +79,8 @@ Compared compare(const test::RenderedFrame& a, const test::RenderedFrame& b) {
     Compared c;
     for (size_t i = 0; i < a.world.size(); ++i) {
         c.covered += a.world[i].w != 0.0f;
-        for (int k = 0; k < 4; ++k) c.visibility += a.visibility[4 * i + size_t(k)] != b.visibility[4 * i + size_t(k)];
+        for (int k = 0; k < 4; ++k)
+            c.visibility += a.visibility[4 * i + size_t(k)] != b.visibility[4 * i + size_t(k)];
         for (int k = 0; k < 3; ++k) c.colour += a.colour[4 * i + size_t(k)] != b.colour[4 * i + size_t(k)];
     }
     return c;
@@ -216,7 +217,8 @@ TEST(Motion, BadMotionIsRefusedWithItsPointer) {
     };
     const Case cases[] = {
         {R"({"sun": {"light": 1}})", "/motion/sun/light"},
-        {R"({"orbit": {"light": 0, "centre": [0, 5, 0], "radius": 2}})", "an orbit moves a point or spot light"},
+        {R"({"orbit": {"light": 0, "centre": [0, 5, 0], "radius": 2}})",
+         "an orbit moves a point or spot light"},
         {R"({"camera": ["far"]})", "at least two key cameras"},
         {R"({"camera": ["far", "nowhere"]})", "/motion/camera/1"},
         {R"({"casters": {"instances": [0]}})", "only casters move"},

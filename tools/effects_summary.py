@@ -97,6 +97,29 @@ def hybrids(folder):
             acc["acc_wrong_pct"], acc["acc_wrong_no_edge_pct"], exact(group.iloc[0])))
 
 
+def motion(folder):
+    """aircraft_day moving against frozen at noon, per round (scripts/effects.sh's motion section), and
+    accuracy and flicker along the camera path."""
+    rows = pd.concat([pd.read_csv(p).assign(round=i) for i, p in
+                      enumerate(sorted(glob.glob(os.path.join(folder, "motion_[0-9]*.csv"))))])
+    rows["label"] = rows.apply(label, axis=1)
+    rows["moving"] = rows["path_time"] == "moving"
+    accuracy = pd.read_csv(os.path.join(folder, "motion_accuracy.csv"))
+    accuracy["label"] = accuracy.apply(label, axis=1)
+    print("| technique | frozen: wall | moving: wall | moving / frozen, per round | motion update (CPU, median) "
+          "| wrong % along the path (mean, max) | flicker |")
+    print("| --- | --- | --- | --- | --- | --- | --- |")
+    for name, group in rows.groupby("label", sort=False):
+        frozen = group[~group["moving"]].set_index("round")["wall_ms_median"]
+        moving = group[group["moving"]].set_index("round")
+        ratios = (moving["wall_ms_median"] / frozen.loc[moving.index]).values
+        acc = accuracy[accuracy["label"] == name].iloc[0]
+        print("| %s | %.2f ms | %.2f ms | %.3f [%.3f, %.3f] | %.3f ms | %.3f, %.3f | %.4f |" % (
+            name, frozen.median(), moving["wall_ms_median"].median(), pd.Series(ratios).median(), ratios.min(),
+            ratios.max(), moving["motion_ms_median"].median(), acc["acc_path_wrong_mean_pct"],
+            acc["acc_path_wrong_max_pct"], acc["acc_path_flicker"]))
+
+
 def main():
     folder = sys.argv[1] if len(sys.argv) > 1 else "results/effects"
     print("| property | on: wall | off: wall | off / on, per round | on: exact work | off: exact work |")
@@ -111,6 +134,9 @@ def main():
         print()
     if os.path.exists(os.path.join(folder, "hybrid_time.csv")):
         hybrids(folder)
+        print()
+    if os.path.exists(os.path.join(folder, "motion_accuracy.csv")):
+        motion(folder)
 
 
 if __name__ == "__main__":

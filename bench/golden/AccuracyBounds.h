@@ -6,7 +6,8 @@
 //   map          (shadowmap and its family: cubemap, paraboloid, cascaded, pcss, vsm, esm): exact up to
 //                the map's texels, bias and filter width, a little more off the edge band;
 //   no_shadow    (none): draws no shadow, so its error must be exactly the reference's shadowed fraction;
-//   approximate  (occluder, planar, projective, hybrid): an approximation may miss shadows, but a shadow that is
+//   approximate  (occluder, planar, projective, hybrid): an approximation may miss shadows, but a shadow that
+//   is
 //                worse than drawing no shadow at all is broken: the bound is the error of no shadow in
 //                that cell (judged samples the reference shadows);
 //   soft_approximate (proxy, blob): their visibility is continuous by design (ShadowProxies' "infinitely

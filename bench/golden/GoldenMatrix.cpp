@@ -16,6 +16,11 @@ namespace sb {
 
 namespace {
 
+/// A scene in motion is judged part way along a short path, reached frame by frame, so that every cell
+/// runs its technique's per-frame update (Technique::sceneChanged) before the image is taken.
+constexpr int kPathFrames = 8;
+constexpr uint64_t kPathStep = 5;
+
 std::vector<SubmitMode> modesRetainedFirst() {
     std::vector<SubmitMode> modes{SubmitMode::Retained};
     for (SubmitMode m : kAllSubmitModes)
@@ -89,6 +94,7 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
     cell.scene = scene;
     cell.mode = harness.config().submit;
     std::unique_ptr<Technique> technique = TechniqueRegistry::create(techniqueName);
+    harness.seekPath(0); // a scene in motion starts each cell at rest
     try {
         harness.prepare(*technique);
     } catch (const Error& e) {
@@ -96,11 +102,16 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
         cell.unsupported = e.what();
         return cell;
     }
+    if (harness.moving())
+        for (uint64_t f = 0; f < kPathStep; ++f) harness.renderFrame(*technique);
+    harness.seekPath(kPathStep);
     harness.renderFrame(*technique);
     const size_t lights = harness.scene().lights.size();
     readImages(harness, lights, cell);
-    for (size_t l = 0; l < lights; ++l)
+    for (size_t l = 0; l < lights; ++l) {
+        harness.seekPath(kPathStep); // each judged frame is the same frame of the path
         cell.lights.push_back(judgeLight(evaluator, *technique, int(l), harness.scene(), options));
+    }
     return cell;
 }
 
@@ -122,20 +133,26 @@ std::vector<std::string> GoldenMatrix::builtinScenes() {
 }
 
 std::string GoldenMatrix::cameraFor(const std::string& scene) {
-    const Scene s = SceneLoader::load(scene);
+    return cameraFor(SceneLoader::load(scene));
+}
+
+std::string GoldenMatrix::cameraFor(const Scene& s) {
     for (const CameraPreset& c : s.cameras)
         if (c.name == "mid") return c.name;
-    if (s.cameras.empty()) throw Error("scene '" + scene + "' has no camera", ExitCode::BadInput);
+    if (s.cameras.empty()) throw Error("scene '" + s.name + "' has no camera", ExitCode::BadInput);
     return s.cameras.front().name;
 }
 
 std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, const MatrixOptions& options) {
     const std::vector<std::string> techniques =
         options.techniques.empty() ? TechniqueRegistry::names() : options.techniques;
-    const std::string camera = cameraFor(scene); // loads the scene once, not once per mode
+    const Scene loaded = SceneLoader::load(scene); // once, not once per mode
+    const std::string camera = cameraFor(loaded);
     std::vector<MatrixCell> cells;
     for (SubmitMode mode : modesRetainedFirst()) {
-        Harness harness(RunConfig::oneFrame(scene, camera, options.size, mode));
+        RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
+        if (loaded.motion) config.pathFrames = kPathFrames;
+        Harness harness(config);
         AccuracyEvaluator evaluator(harness);
         for (const std::string& technique : techniques) {
             try {

@@ -1,6 +1,7 @@
 #pragma once
 // The technique x submission x scene matrix (docs/ARCHITECTURE.md, "Results"): every technique of the
-// registry, in every submission mode, on every built-in scene, rendered small. Each cell yields the
+// registry, in every submission mode, on every built-in scene, rendered small. A scene in motion
+// (aircraft_day) is rendered at frame 5 of an 8-frame path, reached frame by frame. Each cell yields the
 // images that are compared with the retained mode and with the committed golden, and its accuracy
 // against the Embree reference per light. A cell a technique cannot handle is kept with the reason the
 // technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently.
@@ -10,6 +11,7 @@
 
 #include "bench/golden/ImageDiff.h"
 #include "reference/AccuracyMetrics.h"
+#include "scenes/Scene.h"
 #include "techniques/submit/Submitter.h"
 
 namespace sb {
@@ -53,6 +55,7 @@ public:
     /// The camera a scene's cells use: "mid" where the scene has one (every shadow visible at a small
     /// size), else its first camera.
     static std::string cameraFor(const std::string& scene);
+    static std::string cameraFor(const Scene& scene);
     /// Every cell of one scene, retained mode first (the others are compared with it), then the other
     /// modes in their table order; techniques in registry order.
     static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options);

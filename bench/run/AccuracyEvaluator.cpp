@@ -8,6 +8,7 @@
 #include "bench/output/CsvNumber.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
+#include "scenes/Motion.h"
 
 namespace sb {
 
@@ -33,7 +34,7 @@ Light turnLight(const Light& l, float deg, const glm::vec3& sceneCentre) {
 }
 } // namespace
 
-AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness) {
+AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness), mEmbreeTime(harness.pathTime()) {
     mEmbree = std::make_unique<EmbreeScene>(harness.scene());
     mTracer = std::make_unique<ReferenceTracer>(harness.scene(), *mEmbree);
     mGBuffer = std::make_unique<GBufferRenderer>(harness.config().width, harness.config().height);
@@ -41,6 +42,15 @@ AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness) {
 }
 
 AccuracyEvaluator::~AccuracyEvaluator() = default;
+
+void AccuracyEvaluator::followCasters() {
+    const Scene& scene = mHarness.scene();
+    if (!scene.motion || !scene.motion->casters || mHarness.pathTime() == mEmbreeTime) return;
+    mTracer.reset(); // it holds the Embree scene it replaces
+    mEmbree = std::make_unique<EmbreeScene>(scene);
+    mTracer = std::make_unique<ReferenceTracer>(scene, *mEmbree);
+    mEmbreeTime = mHarness.pathTime();
+}
 
 namespace {
 /// Beyond a point or spot light's range, and outside a spot's outer cone, no light arrives, so whether
@@ -63,6 +73,7 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, co
                                                         TraceStats* stats) {
     const Scene& scene = mHarness.scene();
     mHarness.renderFrame(technique);
+    followCasters(); // the reference traces the scene as this frame drew it
     Sample s;
     s.techniqueRgba = mHarness.targets().readVisibilityRGBA32F();
     s.technique = AccuracyMetrics::channel(s.techniqueRgba, o.light);
@@ -140,6 +151,7 @@ AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyO
     AccuracyResult r;
     r.light = o.light;
     r.softReference = scene.lights[size_t(o.light)].isArea();
+    mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
     Sample base = judgeFrame(technique, o, &r.reference);
     uint64_t evaluated = std::count(base.mask.begin(), base.mask.end(), uint8_t(1));
     if (evaluated == 0)
@@ -151,8 +163,39 @@ AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyO
     r.hard = AccuracyMetrics::hard(base.technique, base.reference, base.mask, mHarness.config().width,
                                    mHarness.config().height);
     r.soft = AccuracyMetrics::soft(base.technique, base.reference, base.mask);
-    if (o.stability) measureStability(technique, o, base, r);
+    if (mHarness.moving())
+        measurePath(technique, o, r); // perturbing one frame of a moving scene would measure its motion
+    else if (o.stability)
+        measureStability(technique, o, base, r);
     return r;
+}
+
+void AccuracyEvaluator::measurePath(Technique& technique, const AccuracyOptions& o, AccuracyResult& r) {
+    const Motion& motion = *mHarness.scene().motion;
+    const int w = mHarness.config().width, h = mHarness.config().height;
+    AccuracyResult::Path path;
+    path.points = kPathSamples;
+    for (int k = 0; k < kPathSamples; ++k) {
+        mHarness.seekPath(uint64_t(k) * motion.frames / kPathSamples);
+        const Sample at = judgeFrame(technique, o, nullptr);
+        const Sample next = judgeFrame(technique, o, nullptr); // the frame after it on the path
+        const double wrong = AccuracyMetrics::hard(at.technique, at.reference, at.mask, w, h).wrongPct;
+        path.wrongMeanPct += wrong / kPathSamples;
+        path.wrongMaxPct = std::max(path.wrongMaxPct, wrong);
+        std::vector<uint8_t> both(at.mask.size());
+        for (size_t i = 0; i < both.size(); ++i) both[i] = at.mask[i] && next.mask[i];
+        for (size_t i = 0; i < both.size(); ++i) {
+            if (!both[i]) continue;
+            const bool technique = (at.technique[i] < 0.5f) != (next.technique[i] < 0.5f);
+            const bool reference = (at.reference[i] < 0.5f) != (next.reference[i] < 0.5f);
+            path.changesTechnique += technique;
+            path.changesReference += reference;
+            path.falseChanges += technique && !reference;
+        }
+    }
+    path.flicker = AccuracyMetrics::perturbationGain(path.falseChanges, path.changesReference);
+    r.path = path;
+    mHarness.seekPath(0);
 }
 
 void AccuracyResult::appendColumns(CsvRow& row) const {
@@ -175,6 +218,13 @@ void AccuracyResult::appendColumns(CsvRow& row) const {
     row.emplace_back("acc_gain_camera", stabilityMeasured ? csvNumber(cameraGain) : "");
     row.emplace_back("acc_gain_light", stabilityMeasured ? csvNumber(lightGain) : "");
     row.emplace_back("acc_flicker", stabilityMeasured ? csvNumber(flicker) : "");
+    row.emplace_back("acc_path_points", path ? std::to_string(path->points) : "");
+    row.emplace_back("acc_path_wrong_mean_pct", path ? csvNumber(path->wrongMeanPct) : "");
+    row.emplace_back("acc_path_wrong_max_pct", path ? csvNumber(path->wrongMaxPct) : "");
+    row.emplace_back("acc_path_changes_technique", path ? std::to_string(path->changesTechnique) : "");
+    row.emplace_back("acc_path_changes_reference", path ? std::to_string(path->changesReference) : "");
+    row.emplace_back("acc_path_false_changes", path ? std::to_string(path->falseChanges) : "");
+    row.emplace_back("acc_path_flicker", path ? csvNumber(path->flicker) : "");
     add("ref_samples", reference.samplesPerPixel);
     add("ref_noise_bound", reference.noiseBound);
     add("ref_rays", double(reference.rays));

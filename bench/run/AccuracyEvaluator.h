@@ -13,6 +13,13 @@
 //  5. stability: perturbation gain for a 0.25 px camera shift and for a 0.01 degree light turn
 //     (technique changes / max(1, reference changes)), and flicker over a short camera drift (the
 //     same ratio summed over kDriftSteps steps of 0.5 px).
+// A scene in motion (scenes/Motion.h) is judged along its path instead of perturbed: at kPathSamples
+// points spread over the path, the frame there (the metrics above are the first point's, at t = 0)
+// and the frame after it; the worst and mean error over the points, and the temporal flicker: the
+// samples whose lit/shadowed state changes from a frame to the next in the technique but not in the
+// reference (whose changes are the motion's own), over the reference's changes, summed over the
+// point pairs. Every
+// judged frame is traced against the scene as that frame drew it.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -46,6 +53,17 @@ struct AccuracyResult {
     uint64_t lightChangesTechnique = 0, lightChangesReference = 0;
     double cameraGain = 0.0, lightGain = 0.0, flicker = 0.0;
     bool stabilityMeasured = false;
+    /// A scene in motion: judged along the path (see above).
+    struct Path {
+        int points = 0;
+        double wrongMeanPct = 0.0, wrongMaxPct = 0.0;
+        uint64_t changesTechnique = 0, changesReference = 0;
+        /// Samples that change in the technique where the reference does not: flicker the motion
+        /// does not explain.
+        uint64_t falseChanges = 0;
+        double flicker = 0.0; ///< falseChanges / max(1, changesReference)
+    };
+    std::optional<Path> path;
     TraceStats reference;
     /// The columns of this result (appended to the timing row of the same configuration).
     void appendColumns(CsvRow& row) const;
@@ -54,6 +72,7 @@ struct AccuracyResult {
 class AccuracyEvaluator {
 public:
     static constexpr int kDriftSteps = 6;
+    static constexpr int kPathSamples = 4;
     explicit AccuracyEvaluator(Harness& harness);
     ~AccuracyEvaluator();
     /// The technique must have been prepared on this harness (Harness::measure does it). Restores the
@@ -72,6 +91,12 @@ private:
     uint64_t techniqueChanges(const Sample& a, const Sample& b) const;
     void measureStability(Technique& technique, const AccuracyOptions& options, const Sample& base,
                           AccuracyResult& result);
+    /// A scene in motion: the metrics along the path (AccuracyResult::Path); the harness is left at
+    /// the path's start.
+    void measurePath(Technique& technique, const AccuracyOptions& options, AccuracyResult& result);
+    /// The Embree scene rebuilt where the harness's casters stand now (a scene in motion).
+    void followCasters();
+    float mEmbreeTime = 0.0f; ///< the path time whose casters the Embree scene holds
     Harness& mHarness;
     std::unique_ptr<EmbreeScene> mEmbree;
     std::unique_ptr<ReferenceTracer> mTracer;

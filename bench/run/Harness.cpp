@@ -45,8 +45,8 @@ Harness::Harness(const RunConfig& config) : mConfig(config) {
     mCamera = pickCamera(mScene, config.camera);
     mContentHash = mScene.computeContentHash();
     if (!mScene.motion && (config.pathTime >= 0.0 || config.pathFrames > 0))
-        throw Error(std::string(config.pathTime >= 0.0 ? "--time" : "--path-frames") + ": scene '" + mScene.name +
-                    "' does not move (it has no \"motion\")");
+        throw Error(std::string(config.pathTime >= 0.0 ? "--time" : "--path-frames") + ": scene '" +
+                    mScene.name + "' does not move (it has no \"motion\")");
     if (mScene.motion) {
         mRest = std::make_unique<Scene>(mScene);
         mCameraFollows = mCamera.name == Motion::kCameraName && mScene.motion->camera;

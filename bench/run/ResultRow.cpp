@@ -116,7 +116,9 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"lights", lightsText(scene)},
         {"motion", scene.motion ? scene.motion->describe() : ""},
         {"path_frames", scene.motion ? std::to_string(scene.motion->frames) : ""},
-        {"path_time", !scene.motion ? "" : h.moving() ? "moving" : csvNumber(c.pathTime)},
+        {"path_time", !scene.motion ? ""
+                      : h.moving()  ? "moving"
+                                    : csvNumber(c.pathTime)},
         {"frames", std::to_string(r.wall.n)},
         {"warmup", std::to_string(c.warmup)},
         {"setup_ms", csvNumber(r.setupMs)},

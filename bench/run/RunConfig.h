@@ -50,7 +50,7 @@ struct RunConfig {
     /// move along the path.
     double pathTime = -1.0;
     int pathFrames = 0; ///< --path-frames: frames per pass along the path (0 = the scene's)
-    int repeat = 1;                        ///< rounds of interleaved measurement (--repeat)
+    int repeat = 1;     ///< rounds of interleaved measurement (--repeat)
     RowFormat format = RowFormat::Console; ///< what goes to stdout (--format); progress then goes to stderr
     static constexpr int kMinFrames = 5;
 

@@ -100,10 +100,12 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "multiply every generated mesh's tessellation (0.5: vertex load down)")
         ->capture_default_str();
     app.add_option("--light", raw.light, "replace every light's type: " + lightTypeNames().list());
-    app.add_option("--camera", c.camera, "camera preset: far, mid, near, top (path: a moving scene's camera path)")
+    app.add_option("--camera", c.camera,
+                   "camera preset: far, mid, near, top (path: a moving scene's camera path)")
         ->capture_default_str();
-    app.add_option("--time", raw.pathTime,
-                   "a scene in motion: freeze it at this path time in [0, 1] (default: frames move along the path)");
+    app.add_option(
+        "--time", raw.pathTime,
+        "a scene in motion: freeze it at this path time in [0, 1] (default: frames move along the path)");
     app.add_option("--path-frames", raw.pathFrames,
                    "a scene in motion: frames per pass along its path (default: the scene's)");
     app.add_option("--size", raw.size, "render target WIDTHxHEIGHT")->capture_default_str();

@@ -2,9 +2,12 @@
 // The measurements `-t auto` chooses from (bench/select/AutoSelection.h): for the harness's scene,
 // camera, size and submission on the current renderer, each candidate technique (every registered one
 // with its default properties, except the reference, which is the judge, and the synthetic calibration
-// workloads) is prepared, timed over a few frames (median wall time per frame, after a warm-up frame)
-// and judged against the Embree reference on every light (samples misclassified at 0.5 as a share of
-// those the reference shadows: the misplaced share of the shadow, the worst light). A candidate that refuses
+// workloads) is prepared, then all of them are timed in interleaved rounds, one frame of each per round
+// after a warm-up frame (so load that comes and goes falls on all alike; the cost is the median, the
+// rounds are kept for AutoSelection's every-round comparison), their exact work counted in one census
+// frame (vertex plus fragment shader invocations), and each judged against the Embree reference on
+// every light (samples misclassified at 0.5 as a share of those the reference shadows: the misplaced
+// share of the shadow, the worst light). A candidate that refuses
 // the configuration is kept with its refusal. Results are cached in a CSV keyed by renderer, GL version,
 // scene hash, size, camera, submission and the candidate's canonical spec, so a second run on the same
 // machine measures nothing;
@@ -21,7 +24,7 @@ namespace sb {
 struct CalibrationOptions {
     std::string cachePath; ///< "" = defaultCachePath()
     bool refresh = false;  ///< measure every candidate again (and replace its cached row)
-    int frames = 5;        ///< timed frames per candidate
+    int frames = 5;        ///< interleaved rounds: timed frames per candidate
     int warmup = 1;
 };
 

@@ -401,7 +401,8 @@ void OccluderTechnique::buildTextures(const CompileContext& ctx) {
 
 void OccluderTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
     if (changes & kCastersMoved)
-        for (size_t i = 0; i < scene.instances.size(); ++i) mInverseModel[i] = glm::inverse(scene.instances[i].model);
+        for (size_t i = 0; i < scene.instances.size(); ++i)
+            mInverseModel[i] = glm::inverse(scene.instances[i].model);
     if (mReceiveAll && (changes & (kCastersMoved | kLightsMoved))) {
         collectCandidates(scene);
         uploadWorldPlanes();

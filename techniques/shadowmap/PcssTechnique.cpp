@@ -167,8 +167,8 @@ void PcssTechnique::sceneChanged(const Scene& scene, uint32_t) {
 void PcssTechnique::fitLightSizes(const Scene& scene) {
     mParams.clear();
     for (size_t i = 0; i < mLights.size(); ++i)
-        mParams.push_back(
-            lightParams(scene, scene.lights[i], mLights.viewProj()[i], float(properties().getFloat(kLightSize))));
+        mParams.push_back(lightParams(scene, scene.lights[i], mLights.viewProj()[i],
+                                      float(properties().getFloat(kLightSize))));
 }
 
 void PcssTechnique::compile(const CompileContext& ctx) {

@@ -54,7 +54,8 @@ void InstancedSubmitter::upload(const Scene& scene) {
 void InstancedSubmitter::instancesMoved(const Scene& scene) {
     // Every record again, in upload order (an instance appears once per draw set it is in): one upload
     // of the whole buffer, what an application streaming its instance transforms does.
-    for (size_t r = 0; r < mRecords.size(); ++r) mRecords[r].model = scene.instances[mRecordInstance[r]].model;
+    for (size_t r = 0; r < mRecords.size(); ++r)
+        mRecords[r].model = scene.instances[mRecordInstance[r]].model;
     if (!mRecords.empty())
         glNamedBufferSubData(mInstanceBuffer, 0, GLsizeiptr(mRecords.size() * sizeof(InstanceRecord)),
                              mRecords.data());
