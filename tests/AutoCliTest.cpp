@@ -29,10 +29,17 @@ void injectCosts(const std::string& cache, const std::string& cheap, double othe
         return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
     };
     const size_t candidate = column("candidate"), wall = column("wall_ms"), wrongPct = column("wrong_pct");
+    const size_t rounds = column("wall_rounds"), batch = column("batch");
     ASSERT_LT(wall, t.header.size());
+    ASSERT_LT(rounds, t.header.size());
+    ASSERT_LT(batch, t.header.size());
     for (auto& row : t.rows) {
         const std::string name = row[candidate].substr(0, row[candidate].find(':'));
         if (row[wall].empty()) continue; // refused
+        // An injected calibration has one cost per candidate and no rounds, as a hand-written cache:
+        // the medians decide (AutoSelection::faster).
+        row[rounds] = "";
+        row[batch] = "";
         row[wall] = name == cheap ? "1" : std::to_string(others);
         if (auto it = wrong.find(name); it != wrong.end()) row[wrongPct] = it->second;
     }

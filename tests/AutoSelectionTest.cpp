@@ -128,10 +128,22 @@ TEST(AutoSelection, TimeDecidesOnlyWhereEveryRoundAgreesAndExactWorkBreaksTheRes
                                       timed("volume", {2.5, 2.0, 2.6, 2.4, 2.3}, 1e6, "b1")};
     AutoChoice choice = AutoSelection::choose(kHard, tie, 10.0);
     ASSERT_TRUE(choice.chosen.has_value());
-    EXPECT_EQ(*choice.chosen, 1u) << "time cannot separate them: the least exact work decides";
-    EXPECT_NE(choice.reason.find("planar was not faster in every round"), std::string::npos) << choice.reason;
-    EXPECT_EQ(tie[0].verdict,
-              "qualifies; not faster in every round, more exact work (5e+06 shader invocations)");
+    EXPECT_EQ(*choice.chosen, 1u)
+        << "time cannot separate them, both are exact: the least exact work decides";
+    EXPECT_NE(choice.reason.find("time could not separate planar and volume"), std::string::npos)
+        << choice.reason;
+    EXPECT_NE(choice.reason.find("volume does the least exact work"), std::string::npos) << choice.reason;
+    EXPECT_EQ(tie[0].verdict, "qualifies; as fast as volume within the rounds, ranked after it (0% wrong, "
+                              "5e+06 shader invocations)");
+    // Time cannot separate them and planar is the more accurate: accuracy decides before the work.
+    std::vector<AutoCandidate> accurate = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, 5e6, "b1"),
+                                           timed("volume", {2.5, 2.0, 2.6, 2.4, 2.3}, 1e6, "b1")};
+    accurate[1].wrongPct = 2.0;
+    choice = AutoSelection::choose(kHard, accurate, 10.0);
+    EXPECT_EQ(*choice.chosen, 0u);
+    EXPECT_NE(choice.reason.find("planar is the most accurate of them"), std::string::npos) << choice.reason;
+    // A scene that asks for no shadow: the error measures shadows nobody asked for, the work decides.
+    EXPECT_EQ(*AutoSelection::choose(0, accurate, 10.0).chosen, 1u);
     // planar faster in every round: time decides, whatever the work.
     std::vector<AutoCandidate> separated = {timed("planar", {2.0, 2.1, 3.0, 2.0, 2.2}, 5e6, "b1"),
                                             timed("volume", {2.5, 2.2, 3.1, 2.4, 2.3}, 1e6, "b1")};

@@ -1,5 +1,5 @@
 // The perf gate's suite file (bench/ci/CiSuite.h): the committed suite covers every technique of the
-// registry, and a wrong suite is refused naming the file and the JSON path.
+// registry, -t auto and a scene in motion, and a wrong suite is refused naming the file and the JSON path.
 #include <set>
 
 #include <gtest/gtest.h>
@@ -23,6 +23,12 @@ TEST(CiSuiteTest, CommittedSuiteRunsEveryTechniqueAndEveryBound) {
     }
     for (const std::string& t : TechniqueRegistry::names())
         EXPECT_TRUE(techniques.count(t)) << "technique " << t << " is not in results/ci/suite.json";
+    EXPECT_TRUE(techniques.count("auto")) << "-t auto is not in results/ci/suite.json";
+    bool moving = false; // a scene in motion: the per-frame work a static frame hides
+    for (const CiConfig& c : s.configs)
+        for (size_t i = 0; i + 1 < c.args.size(); ++i)
+            moving = moving || (c.args[i] == "--scene" && c.args[i + 1] == "aircraft_day");
+    EXPECT_TRUE(moving) << "no configuration of results/ci/suite.json moves (aircraft_day)";
     EXPECT_EQ(bounds, (std::set<std::string>{"balanced", "cpu", "fill", "vertex"}));
     EXPECT_FALSE(s.instructions.configs.empty());
     EXPECT_FALSE(s.wall.configs.empty());

@@ -69,9 +69,10 @@ inline const std::vector<Layer>& layers() {
         {"bench/viewer", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/sweep", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/bottleneck", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
-        {"bench/golden", plus(belowBench, {"bench/output", "bench/run"}), {}},
         // `-t auto`: the calibration runs frames through the harness and judges them like accuracy.
         {"bench/select", plus(belowBench, {"bench/output", "bench/run"}), {}},
+        // The matrix resolves its `auto` cells as a run does.
+        {"bench/golden", plus(belowBench, {"bench/output", "bench/run", "bench/select"}), {}},
         // The performance gate (work counters, instructions under callgrind, wall-time statistics).
         {"bench/figures",
          plus(belowBench, {"bench/output", "bench/run", "bench/sweep", "bench/bottleneck"}),

@@ -29,8 +29,8 @@ class Matrix : public ::testing::TestWithParam<std::string> {};
 TEST_P(Matrix, EveryCellMatchesRetainedGoldenAndBound) {
     const std::string scene = GetParam();
     const std::vector<MatrixCell> cells = GoldenMatrix::renderScene(scene, MatrixOptions{});
-    // Every technique in every mode is a cell: none may be dropped on the way.
-    ASSERT_EQ(cells.size(), TechniqueRegistry::names().size() * std::size(kAllSubmitModes));
+    // Every technique in every mode is a cell, and so is -t auto: none may be dropped on the way.
+    ASSERT_EQ(cells.size(), (TechniqueRegistry::names().size() + 1) * std::size(kAllSubmitModes));
     const std::vector<CellVerdict> verdicts =
         MatrixCheck::check(cells, std::string(SB_SOURCE_DIR) + "/results/goldens", committedBounds());
     size_t checked = 0, unsupported = 0;

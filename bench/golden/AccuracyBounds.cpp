@@ -191,8 +191,9 @@ double AccuracyBound::measured(const CellAccuracy& a) const {
 }
 
 AccuracyBound AccuracyBounds::derive(const MatrixCell& cell, size_t light) {
-    const std::string name = cell.technique + "/" + cell.scene + "/light" + std::to_string(light);
-    const Rule rule = ruleOf(cell.technique);
+    // An `auto` cell is held to the bound of the technique it chose.
+    const std::string name = cell.judgedAs() + "/" + cell.scene + "/light" + std::to_string(light);
+    const Rule rule = ruleOf(cell.judgedAs());
     if (rule == Rule::NotJudged)
         return {
             name, "", 0.0, 0.0, ruleName(rule), "not a shadow technique: its image is checked, not judged"};

@@ -12,6 +12,7 @@
 #include "bench/golden/MatrixCheck.h"
 #include "bench/output/CsvWriter.h"
 #include "bench/run/CliParse.h"
+#include "bench/select/AutoResolver.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "core/Strings.h"
@@ -84,6 +85,8 @@ std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vecto
                       const MatrixCell& retained) {
     std::ostringstream row;
     row << "| " << retained.technique << " | " << retained.scene << " | ";
+    if (retained.autoPick)
+        row << "chose " << retained.autoPick->spec.substr(0, retained.autoPick->spec.find(':')) << ", ";
     if (!retained.unsupported.empty()) {
         row << "unsupported | " << retained.unsupported << " |";
         return row.str();
@@ -115,7 +118,10 @@ std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vecto
 void writeGoldens(const GoldenCli& cli, const std::vector<MatrixCell>& cells,
                   std::map<std::string, std::pair<AccuracyBound, double>>& fresh) {
     for (const MatrixCell& cell : cells) {
-        if (cell.mode != SubmitMode::Retained || !cell.failure.empty()) continue;
+        // An `auto` cell has no golden of its own: it is held to the chosen technique's.
+        if (cell.mode != SubmitMode::Retained || !cell.failure.empty() ||
+            cell.technique == AutoResolver::kName)
+            continue;
         const std::string vis = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "visibility");
         const std::string col = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "colour");
         if (!cell.ran()) {
@@ -168,7 +174,7 @@ std::string exceptionList(const std::vector<std::vector<MatrixCell>>& rendered) 
     std::string out;
     for (const std::vector<MatrixCell>& cells : rendered)
         for (const MatrixCell& cell : cells) {
-            if (cell.mode != SubmitMode::Retained || !cell.ran()) continue;
+            if (cell.mode != SubmitMode::Retained || !cell.ran() || cell.autoPick) continue;
             for (size_t l = 0; l < cell.lights.size(); ++l) {
                 const AccuracyBound b = AccuracyBounds::derive(cell, l);
                 if (b.rule == "exception") out += "- `" + b.cell + "`: " + b.why + "\n";
@@ -244,7 +250,8 @@ reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails.)")
         if (std::find(known.begin(), known.end(), s) == known.end())
             throw Error("--scene " + s + ": not a built-in scene (known: " + join(known, ", ") + ")");
     cli.matrix.techniques = techniques;
-    for (const std::string& t : cli.matrix.techniques) TechniqueRegistry::create(t); // names it if unknown
+    for (const std::string& t : cli.matrix.techniques)
+        if (t != AutoResolver::kName) TechniqueRegistry::create(t); // names it if unknown
     if (cli.dir.empty()) cli.dir = defaultGoldenDir();
     if (cli.update) return runUpdate(cli, chosen, scenes.empty() && techniques.empty());
     return runCheck(cli, chosen);

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <sstream>
+#include <unistd.h>
 
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Harness.h"
+#include "bench/select/AutoResolver.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "scenes/SceneLoader.h"
@@ -87,13 +90,13 @@ CellAccuracy judgeLight(AccuracyEvaluator& evaluator, Technique& technique, int 
     return a;
 }
 
-MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std::string& techniqueName,
-                      const std::string& scene, const MatrixOptions& options) {
+MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std::string& cellName,
+                      const TechniqueSpec& spec, const std::string& scene, const MatrixOptions& options) {
     MatrixCell cell;
-    cell.technique = techniqueName;
+    cell.technique = cellName;
     cell.scene = scene;
     cell.mode = harness.config().submit;
-    std::unique_ptr<Technique> technique = TechniqueRegistry::create(techniqueName);
+    std::unique_ptr<Technique> technique = TechniqueRegistry::create(spec);
     harness.seekPath(0); // a scene in motion starts each cell at rest
     try {
         harness.prepare(*technique);
@@ -115,7 +118,62 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
     return cell;
 }
 
+/// -t auto on the retained harness, as `bench -t auto` resolves it, with a calibration of its own (a
+/// temporary cache, measured afresh) so no earlier run's cache decides.
+AutoPick resolveAuto(Harness& harness) {
+    RunConfig config = harness.config();
+    const std::filesystem::path cache = std::filesystem::temp_directory_path() /
+                                        ("shadowbench-matrix-auto-" + std::to_string(::getpid()) + ".csv");
+    config.calibrationPath = cache.string();
+    config.recalibrate = true;
+    std::ostringstream log;
+    struct Remove {
+        std::filesystem::path path;
+        ~Remove() {
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+        }
+    } removeCache{cache};
+    const AutoResolution r = AutoResolver::resolve(harness, config, log);
+    AutoPick pick;
+    pick.spec = r.spec.toString();
+    pick.reason = r.reason;
+    pick.request = harness.scene().effects;
+    pick.wrongPct = r.chosen.wrongPct;
+    pick.bound = config.autoMaxWrongPct;
+    return pick;
+}
+
+MatrixCell renderAutoCell(Harness& harness, AccuracyEvaluator& evaluator, std::optional<AutoPick>& pick,
+                          std::string& refusal, const std::string& scene, const MatrixOptions& options) {
+    if (!pick && refusal.empty()) {
+        try {
+            pick = resolveAuto(harness);
+        } catch (const Error& e) {
+            if (e.code() != ExitCode::Unsupported) throw;
+            refusal = e.what();
+        }
+    }
+    if (!pick) {
+        MatrixCell cell;
+        cell.technique = AutoResolver::kName;
+        cell.scene = scene;
+        cell.mode = harness.config().submit;
+        cell.unsupported = refusal;
+        return cell;
+    }
+    MatrixCell cell =
+        renderCell(harness, evaluator, AutoResolver::kName, TechniqueSpec::parse(pick->spec), scene, options);
+    cell.autoPick = pick;
+    cell.autoPick->effects = TechniqueRegistry::create(TechniqueSpec::parse(pick->spec))->info().effects;
+    return cell;
+}
+
 } // namespace
+
+std::string MatrixCell::judgedAs() const {
+    return autoPick ? autoPick->spec.substr(0, autoPick->spec.find(':')) : technique;
+}
 
 std::string MatrixCell::name() const {
     return technique + "/" + scene + "/" + submitModeName(mode);
@@ -144,11 +202,16 @@ std::string GoldenMatrix::cameraFor(const Scene& s) {
 }
 
 std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, const MatrixOptions& options) {
-    const std::vector<std::string> techniques =
-        options.techniques.empty() ? TechniqueRegistry::names() : options.techniques;
+    std::vector<std::string> techniques = options.techniques;
+    if (techniques.empty()) {
+        techniques = TechniqueRegistry::names();
+        techniques.push_back(AutoResolver::kName);
+    }
     const Scene loaded = SceneLoader::load(scene); // once, not once per mode
     const std::string camera = cameraFor(loaded);
     std::vector<MatrixCell> cells;
+    std::optional<AutoPick> pick; // -t auto's choice, resolved on the retained harness (the first)
+    std::string refusal;          // or why nothing qualifies
     for (SubmitMode mode : modesRetainedFirst()) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         if (loaded.motion) config.pathFrames = kPathFrames;
@@ -156,7 +219,11 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
         AccuracyEvaluator evaluator(harness);
         for (const std::string& technique : techniques) {
             try {
-                cells.push_back(renderCell(harness, evaluator, technique, scene, options));
+                if (technique == AutoResolver::kName)
+                    cells.push_back(renderAutoCell(harness, evaluator, pick, refusal, scene, options));
+                else
+                    cells.push_back(renderCell(harness, evaluator, technique, TechniqueSpec{technique, {}},
+                                               scene, options));
             } catch (const std::exception& e) {
                 MatrixCell failed;
                 failed.technique = technique;

@@ -6,6 +6,7 @@
 // against the Embree reference per light. A cell a technique cannot handle is kept with the reason the
 // technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,19 @@ struct CellAccuracy {
     bool softReference = false;
 };
 
+/// What `-t auto` chose for a scene (the matrix's `auto` cells): the cell is that technique's, held to
+/// its golden and bound, and to auto's own rule (the choice delivers the request within the bound).
+struct AutoPick {
+    std::string spec, reason;
+    EffectMask request = 0, effects = 0; ///< the scene's request; the rendered technique's effects
+    double wrongPct = 0.0, bound = 0.0;  ///< the calibration's error of the choice; --auto-max-wrong
+};
+
 struct MatrixCell {
     std::string technique, scene;
+    std::optional<AutoPick> autoPick; ///< the `auto` cell: its choice
+    /// The technique whose golden and bound hold the cell: the chosen one for `auto`.
+    std::string judgedAs() const;
     SubmitMode mode = SubmitMode::Retained;
     std::string unsupported; ///< non-empty: the technique refused this scene, and why
     std::string failure;     ///< non-empty: the cell threw while rendering (a defect, not a refusal)
@@ -44,7 +56,7 @@ struct MatrixCell {
 struct MatrixOptions {
     int size = 128;                      ///< square frame size (the committed goldens are 128^2)
     std::vector<std::string> scenes;     ///< empty: every built-in scene
-    std::vector<std::string> techniques; ///< empty: every registered technique
+    std::vector<std::string> techniques; ///< empty: every registered technique, then `auto`
     int referenceSamples = 64;           ///< per pixel for area lights
 };
 
@@ -57,7 +69,9 @@ public:
     static std::string cameraFor(const std::string& scene);
     static std::string cameraFor(const Scene& scene);
     /// Every cell of one scene, retained mode first (the others are compared with it), then the other
-    /// modes in their table order; techniques in registry order.
+    /// modes in their table order; techniques in registry order, then `auto`: -t auto resolved on the
+    /// retained harness (a fresh calibration at the matrix's size, 10% bound) and its choice rendered in
+    /// every mode. No candidate within the bound makes the auto cell unsupported with the reason.
     static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options);
 };
 

@@ -60,7 +60,7 @@ using GoldenCache = std::map<std::string, Image8>;
 
 void checkGolden(const MatrixCell& cell, const std::string& dir, const std::string& kind, const Image8& image,
                  GoldenCache& goldens, CellVerdict& v) {
-    const std::string path = MatrixCheck::goldenPath(dir, cell.scene, cell.technique, kind);
+    const std::string path = MatrixCheck::goldenPath(dir, cell.scene, cell.judgedAs(), kind);
     auto [it, fresh] = goldens.try_emplace(path);
     if (fresh && std::filesystem::exists(path)) it->second = GoldenImage::read(path);
     if (it->second.empty()) {
@@ -105,6 +105,21 @@ void checkAccuracy(const MatrixCell& cell, const std::map<std::string, AccuracyB
     }
 }
 
+/// The `auto` cell's own rule: the technique it chose delivers what the scene asks for and was within
+/// the bound in auto's calibration (its image and accuracy here are held to that technique's golden and
+/// bound like its own cell).
+void checkAutoPick(const MatrixCell& cell, CellVerdict& v) {
+    if (!cell.autoPick) return;
+    const AutoPick& p = *cell.autoPick;
+    const EffectMask missing = p.request & ~p.effects;
+    std::vector<std::string>& sink = missing ? v.failures : v.details;
+    sink.push_back("auto chose " + p.spec + " (" + p.reason + ")" +
+                   (missing ? ", which lacks " + effectMaskToString(missing) : ""));
+    if (p.request && p.wrongPct > p.bound)
+        v.failures.push_back("auto's choice was " + number(p.wrongPct) +
+                             "% wrong in its calibration, over the " + number(p.bound) + "% bound");
+}
+
 } // namespace
 
 std::string MatrixCheck::goldenPath(const std::string& dir, const std::string& scene,
@@ -124,7 +139,7 @@ std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells
             v.failures.push_back("threw: " + cell.failure);
         } else if (!cell.unsupported.empty()) {
             v.unsupported = cell.unsupported;
-            if (cell.mode == SubmitMode::Retained &&
+            if (cell.mode == SubmitMode::Retained && !cell.autoPick &&
                 std::filesystem::exists(goldenPath(goldenDir, cell.scene, cell.technique, "visibility")))
                 v.failures.push_back("refuses the scene but has a golden: " + cell.unsupported);
         } else {
@@ -136,6 +151,7 @@ std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells
             checkGolden(cell, goldenDir, "visibility", cell.visibility, goldens, v);
             checkGolden(cell, goldenDir, "colour", cell.colour, goldens, v);
             checkAccuracy(cell, bounds, v);
+            checkAutoPick(cell, v);
         }
         verdicts.push_back(std::move(v));
     }

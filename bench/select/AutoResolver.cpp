@@ -39,6 +39,7 @@ AutoResolution AutoResolver::resolve(Harness& harness, const RunConfig& config, 
     if (!choice.chosen) throw Error("auto: " + choice.reason, ExitCode::Unsupported);
     log << "auto: chose " << choice.reason << "\n";
     r.spec = TechniqueSpec::parse(candidates[*choice.chosen].spec);
+    r.chosen = candidates[*choice.chosen];
     r.reason = choice.reason;
     return r;
 }

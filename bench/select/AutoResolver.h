@@ -7,6 +7,7 @@
 
 #include "bench/output/CsvWriter.h"
 #include "bench/run/Harness.h"
+#include "bench/select/AutoSelection.h"
 #include "techniques/PropertySet.h"
 
 namespace sb {
@@ -15,6 +16,7 @@ struct AutoResolution {
     TechniqueSpec spec;     ///< the chosen technique with its properties
     std::string reason;     ///< AutoChoice::reason
     std::string candidates; ///< "shadowmap 3.1 ms 0.2% qualifies; planar lacks self_shadowing; ..."
+    AutoCandidate chosen;   ///< the chosen candidate as calibrated (effects, cost, error)
     /// auto_choice, auto_candidates: appended to every row of the chosen technique.
     CsvRow columns() const { return {{"auto_choice", reason}, {"auto_candidates", candidates}}; }
 };

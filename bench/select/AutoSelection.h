@@ -8,9 +8,10 @@
 // Time decides only where it can: the calibration times every candidate in the same rounds,
 // interleaved, so a candidate is faster than another only if it was faster in every round (with five
 // rounds, a sign test at p = 1/32); medians that close in on each other under load decide nothing. The
-// qualifying candidates that time cannot separate from the fastest are then ranked by their exact
-// work (vertex plus fragment shader invocations of one frame, which does not move with load), and
-// remaining ties go to the candidate listed first (the registry's order). Candidates timed in different
+// qualifying candidates that time cannot separate from the fastest are ranked by their error against
+// the reference (equal cost, better image; not where the scene asks for no shadow), then by their
+// exact work (vertex plus fragment shader invocations of one frame, which does not move with load),
+// and remaining ties go to the candidate listed first (the registry's order). Candidates timed in different
 // calibrations, or without rounds (a cache file written by hand), are compared by their medians.
 #include <optional>
 #include <string>
@@ -43,8 +44,8 @@ public:
     /// Fills each candidate's `verdict` and picks the cheapest measured candidate whose effects cover
     /// `request` and whose wrongPct is at most `maxWrongPct` (so a baseline that declares no effect
     /// qualifies only for a request of none), as the header says: by time where time separates, by
-    /// exact work where it does not. For a request of none the bound does not apply: the error is
-    /// measured against shadows the scene did not ask for.
+    /// accuracy and then exact work where it does not. For a request of none the bound does not apply: the
+    /// error is measured against shadows the scene did not ask for.
     static AutoChoice choose(EffectMask request, std::vector<AutoCandidate>& candidates, double maxWrongPct);
     /// Whether `a` was faster than `b` in every round of one calibration (or, without comparable
     /// rounds, by its median).
