@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Builds the fuzz preset (clang 14, libFuzzer + ASan + UBSan, build-fuzz/) and runs every target of
+# Builds the fuzz targets of the asan preset (clang 14, libFuzzer + ASan + UBSan, build-asan/, the tree
+# scripts/sanitize.sh builds its tests in, so after it only the targets link) and runs every target of
 # fuzz/ (docs/ARCHITECTURE.md, "Fuzzing and sanitizers"):
 #   1. the reach check: the target runs once on each input of fuzz/reach/<target>/ and must come to the
 #      outcome the file's name states (parsed.* parses, rejected.* ends in the parser's sb::Error), so
 #      a fuzzer that cannot get into its parser fails here instead of reporting empty executions; then
 #      once on each input of fuzz/regressions/<target>/ (crashes found and fixed), which must not crash;
 #   2. libFuzzer for SECONDS (default 60) each, from a copy of fuzz/corpus/<target>/ in
-#      build-fuzz/fuzz-runs/<target>/ (the committed corpus never grows in CI), targets in parallel, one
+#      build-asan/fuzz-runs/<target>/ (the committed corpus never grows in CI), targets in parallel, one
 #      per core.
 # Prints executions and coverage per target and exits non-zero when a reach check fails or a fuzzer
 # crashes, naming the input it wrote. Fuzz longer: bash scripts/fuzz.sh 3600; one target:
@@ -26,17 +27,17 @@ if command -v ccache >/dev/null; then
 fi
 cd "$root"
 start=$SECONDS
-cmake --preset fuzz "${launcher[@]}" >/dev/null
-cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
+cmake --preset asan "${launcher[@]}" >/dev/null
+cmake --build build-asan --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
 echo "fuzz: build: $((SECONDS - start)) s"
 
-runs="$root/build-fuzz/fuzz-runs"
+runs="$root/build-asan/fuzz-runs"
 failed=0
 
 # ---- 1. reach check and regressions ------------------------------------------------------------------
 declare -A reach
 for t in "${targets[@]}"; do
-  bin="$root/build-fuzz/fuzz/fuzz_$t"
+  bin="$root/build-asan/fuzz/fuzz_$t"
   reach[$t]=ok
   inputs=("$root"/fuzz/reach/"$t"/*)
   if [ ! -e "${inputs[0]}" ]; then
@@ -71,7 +72,7 @@ run_one() {
   # -max_len 4096: larger inputs add nothing the parsers do not see in 4 KiB (deep nesting is bounded by
   # JsonReader's pre-scan and pinned by SceneLoaderTest).
   local rc=0
-  "$root/build-fuzz/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
+  "$root/build-asan/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -timeout=10 \
     -rss_limit_mb=2048 -max_len=4096 -close_fd_mask=1 -artifact_prefix="$dir/" "${dict[@]}" \
     "$dir/corpus" >"$dir/log" 2>&1 || rc=$?
   echo "$rc" >"$dir/rc"
@@ -115,6 +116,6 @@ for t in "${targets[@]}"; do
   echo
   echo "fuzz: $t crashed; the report ($dir/log):"
   grep -vE '^#[0-9]+|^INFO:' "$dir/log" | tail -60
-  echo "fuzz: reproduce: build-fuzz/fuzz/fuzz_$t <the input above>; once fixed, commit the input under fuzz/regressions/$t/"
+  echo "fuzz: reproduce: build-asan/fuzz/fuzz_$t <the input above>; once fixed, commit the input under fuzz/regressions/$t/"
 done
 exit $failed

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the asan preset (GCC, AddressSanitizer + UndefinedBehaviorSanitizer, -O1 -g, in build-asan/)
+# Builds the asan preset (clang 14, AddressSanitizer + UndefinedBehaviorSanitizer, -O1 -g1, in build-asan/,
+# the tree scripts/fuzz.sh builds its targets in)
 # and runs the tests of the given ctest labels under it (default: unit cli), with the options and the
 # library-leak suppressions of tools/sanitizers/. Only the test binaries of those labels, bench and
 # handloop are built. Any sanitizer report fails the test that triggered it, so the script fails too.

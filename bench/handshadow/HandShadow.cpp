@@ -112,7 +112,13 @@ Options parseOptions(int argc, char** argv) {
 }
 
 // ---- the sanitizer build --------------------------------------------------------------------------
-#if defined(__SANITIZE_ADDRESS__)
+// GCC says __SANITIZE_ADDRESS__; clang 14 (the asan preset) says __has_feature(address_sanitizer).
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SB_ADDRESS_SANITIZER 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(SB_ADDRESS_SANITIZER)
 /// LeakSanitizer is off for this program alone; AddressSanitizer and UBSan still check every access.
 /// Why: LSan's stop-the-world tracer crashed at handshadow's exit on the CI machine in two of two runs
 /// ("Tracer caught signal 11", exit 1, after all frames and the image were right), a fault inside the
