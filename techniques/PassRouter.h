@@ -8,8 +8,8 @@ namespace sb {
 class PassRouter {
 public:
     virtual ~PassRouter() = default;
-    /// Called as `pass` begins: the name it is recorded under. The returned string must outlive the
-    /// frame (the query ring keeps it by pointer).
+    /// Called as `pass` begins: the name it is recorded under. The returned string must live for the
+    /// process (the query ring keeps it by pointer and may read it after the router is gone).
     virtual const char* enter(const char* pass) = 0;
     /// The name `pass` is recorded under, without entering it (a pass the technique skips).
     virtual const char* nameOf(const char* pass) const = 0;

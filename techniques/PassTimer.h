@@ -24,7 +24,8 @@ public:
     void setRouter(PassRouter* router) { mRouter = router; }
     PassRouter* router() const { return mRouter; }
     /// Ends the previous pass (error check) and starts `pass`. `pass` must be a string literal or
-    /// otherwise outlive the frame (it is kept by pointer in the query ring).
+    /// otherwise live for the process: the query ring keeps it by pointer and reads it back frames
+    /// later, possibly after the technique that named it is gone.
     void begin(const char* pass);
     /// Ends the last pass of the frame (error check).
     void end();

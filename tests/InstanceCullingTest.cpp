@@ -73,3 +73,78 @@ TEST(InstanceCulling, MaskFollowsTheDrawSetAndTheFrustum) {
     EXPECT_EQ(culling.cull(handOrtho(), DrawSet::All, CullPlanes::All, keep), 2u);
     EXPECT_EQ(keep, (std::vector<uint8_t>{1, 0, 1}));
 }
+
+namespace {
+
+/// A scene of one ground (casts nothing) and unit boxes at `centres` (cast), for the shadow culls.
+Scene boxes(const std::vector<glm::vec3>& centres) {
+    Scene s;
+    Mesh cube;
+    cube.positions = {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}};
+    cube.normals.assign(3, glm::vec3(0, 1, 0));
+    cube.indices = {0, 1, 2};
+    s.meshes.push_back(cube);
+    Instance ground;
+    ground.castsShadow = false;
+    s.instances.push_back(ground);
+    for (const glm::vec3& c : centres) {
+        Instance i;
+        i.position = c;
+        s.instances.push_back(i);
+    }
+    s.updateTransforms();
+    return s;
+}
+
+} // namespace
+
+TEST(InstanceCulling, AShadowOutsideTheViewIsCulledOneThatFallsIntoItIsNot) {
+    // The view is the hand ortho: x, y in [-2, 2], z from -1 to -9 (looking down -z). A directional
+    // light along -z: each box's shadow runs from it towards -z, through the receivers' bounds z in
+    // [-20, -1]. Box A at (0, 0, 5) sits behind the eye, but its shadow comes down the middle of the
+    // view: kept. Box B at (0, 6, -5) is above the view (y > 2), and so is its shadow under any light
+    // without a y component: culled. Box C at (6, 0, 5) is beside the view and its shadow under the
+    // straight light too (x > 2): culled; a light along (-0.8, 0, -1) slants its shadow into the view
+    // (at x = 0 it is down at z = 5 - 6 / 0.8 = -2.5): kept.
+    const Scene scene = boxes({{0, 0, 5}, {0, 6, -5}, {6, 0, 5}});
+    InstanceCulling culling;
+    culling.setScene(scene);
+    const Aabb receivers = box({-20, -20, -20}, {20, 20, -1});
+    Light straight;
+    straight.direction = {0, 0, -1};
+    std::vector<uint8_t> keep;
+    EXPECT_EQ(culling.cullShadows(straight, receivers, handOrtho(), keep), 1u);
+    EXPECT_EQ(keep, (std::vector<uint8_t>{0, 1, 0, 0})) << "the ground casts nothing; only A's shadow shows";
+    Light slanted;
+    slanted.direction = glm::normalize(glm::vec3(-0.8f, 0, -1));
+    EXPECT_EQ(culling.cullShadows(slanted, receivers, handOrtho(), keep), 2u);
+    EXPECT_EQ(keep, (std::vector<uint8_t>{0, 1, 0, 1}));
+    // A point light at (0, 0, 8) fans the shadows out from the view's axis: A's straight down the
+    // middle (kept), B's further up (culled), C's further out (culled).
+    Light point;
+    point.type = LightType::Point;
+    point.position = {0, 0, 8};
+    EXPECT_EQ(culling.cullShadows(point, receivers, handOrtho(), keep), 1u);
+    EXPECT_EQ(keep, (std::vector<uint8_t>{0, 1, 0, 0}));
+    // Nothing known of the receivers: every caster is kept.
+    EXPECT_EQ(culling.cullShadows(straight, Aabb{}, handOrtho(), keep), 3u);
+}
+
+TEST(InstanceCulling, AFlattenedCasterIsCulledWhereItsShadowLands) {
+    // Flattening onto the plane z = -5 along -z (a directional light straight down the view axis):
+    // M maps (x, y, z, 1) to (x, y, -5, 1). Box A at (0, 0, 5) lands in the middle of the view, box
+    // B at (6, 0, 5) beside it.
+    glm::mat4 flatten(1.0f);
+    flatten[2][2] = 0.0f;  // z' = 0 z ...
+    flatten[3][2] = -5.0f; // ... - 5
+    const Scene scene = boxes({{0, 0, 5}, {6, 0, 5}});
+    InstanceCulling culling;
+    culling.setScene(scene);
+    std::vector<uint8_t> keep;
+    EXPECT_EQ(culling.cullFlattened(flatten, handOrtho(), false, keep), 1u);
+    EXPECT_EQ(keep, (std::vector<uint8_t>{0, 1, 0}));
+    // Divided per vertex with a corner beyond the light (w <= 0): kept, whatever the other corners say.
+    glm::mat4 beyond = flatten;
+    beyond[0][3] = -1.0f; // w = 1 - x: the box at x = 6 has w < 0
+    EXPECT_EQ(culling.cullFlattened(beyond, handOrtho(), true, keep), 2u);
+}

@@ -1,5 +1,9 @@
 #include "techniques/common/InstanceCulling.h"
 
+#include <algorithm>
+#include <array>
+#include <limits>
+
 #include "scenes/Math.h"
 
 namespace sb {
@@ -18,12 +22,20 @@ void InstanceCulling::setScene(const Scene& scene) {
 
 bool InstanceCulling::mayReach(const Aabb& box, const glm::mat4& viewProj, CullPlanes planes) {
     if (box.empty()) return false;
-    // Clip-space planes: -w <= x, y, z <= w. Bit k set = the corner is outside plane k
-    // (0: x < -w, 1: x > w, 2: y < -w, 3: y > w, 4: z > w (far), 5: z < -w (near)). A box is culled
-    // when one bit is set for all its corners.
+    std::array<glm::vec4, 8> points;
+    const std::array<glm::vec3, 8> corners = box.corners();
+    for (size_t i = 0; i < 8; ++i) points[i] = glm::vec4(corners[i], 1.0f);
+    return hullMayReach(points.data(), points.size(), viewProj, planes);
+}
+
+bool InstanceCulling::hullMayReach(const glm::vec4* points, size_t count, const glm::mat4& viewProj,
+                                   CullPlanes planes) {
+    // Clip-space planes: -w <= x, y, z <= w. Bit k set = the point is outside plane k
+    // (0: x < -w, 1: x > w, 2: y < -w, 3: y > w, 4: z > w (far), 5: z < -w (near)). The points are
+    // culled when one bit is set for all of them.
     unsigned allOutside = planes == CullPlanes::All ? 0x3fu : 0x1fu;
-    for (const glm::vec3& c : box.corners()) {
-        const glm::vec4 p = viewProj * glm::vec4(c, 1.0f);
+    for (size_t i = 0; i < count; ++i) {
+        const glm::vec4 p = viewProj * points[i];
         unsigned out = 0;
         out |= p.x < -p.w ? 1u : 0u;
         out |= p.x > p.w ? 2u : 0u;
@@ -35,6 +47,69 @@ bool InstanceCulling::mayReach(const Aabb& box, const glm::mat4& viewProj, CullP
         if (!allOutside) return true;
     }
     return false;
+}
+
+size_t InstanceCulling::cullShadows(const Light& light, const Aabb& receivers, const glm::mat4& viewProj,
+                                    std::vector<uint8_t>& keep) const {
+    keep.assign(mBounds.size(), 0);
+    size_t kept = 0;
+    const float receiverSize = receivers.empty() ? 0.0f : glm::length(receivers.extent());
+    const glm::vec3 towards = glm::normalize(light.direction);
+    for (size_t i = 0; i < mBounds.size(); ++i) {
+        if (!mScene->instances[i].castsShadow || mBounds[i].empty()) continue;
+        bool may = receivers.empty(); // nothing known of the receivers: keep
+        if (!may) {
+            // The shadow lies in the hull of the box and its copy moved away from the light past every
+            // receiver: a directional light sweeps it by `reach` along its direction, a point or spot
+            // light scales it about the light by `scale` (each point b of the shadow volume is a convex
+            // combination of a corner and its far copy).
+            const Aabb& b = mBounds[i];
+            const float reach =
+                glm::length(b.center() - receivers.center()) + glm::length(b.extent()) + receiverSize;
+            std::array<glm::vec4, 16> points;
+            const std::array<glm::vec3, 8> corners = b.corners();
+            float nearest = std::numeric_limits<float>::max();
+            for (const glm::vec3& c : corners) nearest = std::min(nearest, glm::length(c - light.position));
+            const bool directional = light.type == LightType::Directional;
+            const float scale = directional || nearest <= 0.0f ? 1.0f : 1.0f + reach / nearest;
+            for (size_t k = 0; k < 8; ++k) {
+                points[k] = glm::vec4(corners[k], 1.0f);
+                const glm::vec3 far = directional ? corners[k] + towards * reach
+                                                  : light.position + scale * (corners[k] - light.position);
+                points[8 + k] = glm::vec4(far, 1.0f);
+            }
+            may = (!directional && nearest <= 0.0f) ||
+                  hullMayReach(points.data(), 16, viewProj, CullPlanes::All);
+        }
+        if (!may) continue;
+        keep[i] = 1;
+        ++kept;
+    }
+    return kept;
+}
+
+size_t InstanceCulling::cullFlattened(const glm::mat4& flatten, const glm::mat4& viewProj, bool divided,
+                                      std::vector<uint8_t>& keep) const {
+    keep.assign(mBounds.size(), 0);
+    size_t kept = 0;
+    for (size_t i = 0; i < mBounds.size(); ++i) {
+        if (!mScene->instances[i].castsShadow || mBounds[i].empty()) continue;
+        std::array<glm::vec4, 8> points;
+        const std::array<glm::vec3, 8> corners = mBounds[i].corners();
+        bool beyondLight = false;
+        for (size_t k = 0; k < 8; ++k) {
+            points[k] = flatten * glm::vec4(corners[k], 1.0f);
+            beyondLight = beyondLight || !(points[k].w > 0.0f);
+            if (divided && points[k].w > 0.0f)
+                points[k] = glm::vec4(glm::vec3(points[k]) / points[k].w, 1.0f);
+        }
+        if (!(divided && beyondLight) &&
+            !hullMayReach(points.data(), points.size(), viewProj, CullPlanes::All))
+            continue;
+        keep[i] = 1;
+        ++kept;
+    }
+    return kept;
 }
 
 size_t InstanceCulling::cull(const glm::mat4& viewProj, DrawSet set, CullPlanes planes,

@@ -4,7 +4,9 @@
 // outside one plane of the pass's clip volume cannot put a texel into that map, so it is not
 // submitted. The test is conservative (a box that straddles a plane's corner region is kept), done on
 // the CPU once per pass, and costs 8 corner transforms per instance; what it keeps is the mask
-// Submitter::draw takes (techniques/submit/Submitter.h).
+// Submitter::draw takes (techniques/submit/Submitter.h). The same test culls casters whose shadow
+// cannot reach the camera's view (cullShadows, cullFlattened): the passes that draw casters for
+// the receivers the camera sees (projective's texture, planar's flattening) leave those out.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -37,8 +39,29 @@ public:
     /// Instances of `set` (the denominator of a culling counter), counted at setScene.
     size_t count(DrawSet set) const { return mSetCount[size_t(set)]; }
 
+    /// The casters (DrawSet::Casters) whose shadow may fall on something the camera sees: the caster's
+    /// bounds extruded away from `light` until past `receivers` (the bounds of what can receive), tested
+    /// against the camera's `viewProj`. A caster whose shadow lies wholly outside the view is 0 in
+    /// `keep`, so a technique that draws casters into a light's texture (projective) leaves it out.
+    size_t cullShadows(const Light& light, const Aabb& receivers, const glm::mat4& viewProj,
+                       std::vector<uint8_t>& keep) const;
+    /// The casters whose flattening by `flatten` (a planar projection matrix, homogeneous: planar's
+    /// ReceiverPlane::projection) may reach the camera's view `viewProj`. `divided`: the vertex stage
+    /// divides the flattened point by its w before projecting (planar without guards), which keeps
+    /// hulls convex only where every corner has w > 0, so a caster with one corner beyond the light is
+    /// kept.
+    size_t cullFlattened(const glm::mat4& flatten, const glm::mat4& viewProj, bool divided,
+                         std::vector<uint8_t>& keep) const;
+    /// Instances' world bounds are read again (a scene in motion moved its casters).
+    void instancesMoved(const Scene& scene) { setScene(scene); }
+
     /// True if the box may reach the clip volume of `viewProj`: not all 8 corners outside one plane.
     static bool mayReach(const Aabb& box, const glm::mat4& viewProj, CullPlanes planes);
+    /// True unless every homogeneous point (world space, or a flattening's output) lies outside one
+    /// plane of the clip volume of `viewProj`. Each clip plane is a half-space of homogeneous space, so
+    /// then the points' convex hull, and whatever lies inside it, misses the view too.
+    static bool hullMayReach(const glm::vec4* points, size_t count, const glm::mat4& viewProj,
+                             CullPlanes planes);
 
 private:
     const Scene* mScene = nullptr;

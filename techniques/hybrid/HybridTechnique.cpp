@@ -1,6 +1,8 @@
 #include "techniques/hybrid/HybridTechnique.h"
 
 #include <algorithm>
+#include <mutex>
+#include <set>
 
 #include "core/Error.h"
 #include "core/Strings.h"
@@ -20,6 +22,14 @@ std::vector<PropertyDesc> declareProperties(const std::vector<std::string>& choi
         choice(kCast, "shadowmap", choices,
                "the technique that shades the instances that cast none (where cast shadows fall)"),
     };
+}
+
+/// A pass name that lives as long as the process (PassTimer keeps names by pointer).
+const char* intern(const std::string& name) {
+    static std::mutex mutex;
+    static std::set<std::string> names;
+    const std::lock_guard<std::mutex> lock(mutex);
+    return names.insert(name).first->c_str();
 }
 
 /// The instances a role shades: the casters for self, the others for cast.
@@ -83,7 +93,7 @@ HybridTechnique::Part HybridTechnique::makePart(const std::string& role, const s
     std::vector<std::string> view = info.viewPasses;
     if (view.empty()) view = {"lighting"};
     for (const std::string& pass : info.passes) {
-        part.passNames.push_back(role + "_" + pass);
+        part.passNames.push_back(intern(role + "_" + pass));
         part.viewPass.push_back(std::find(view.begin(), view.end(), pass) != view.end());
     }
     return part;
@@ -205,11 +215,11 @@ size_t HybridTechnique::Part::indexOf(const char* pass) const {
 const char* HybridTechnique::Part::enter(const char* pass) {
     const size_t i = indexOf(pass);
     if (submitter) submitter->setViewScope(viewPass[i] ? InstanceMask(scope) : InstanceMask{});
-    return passNames[i].c_str();
+    return passNames[i];
 }
 
 const char* HybridTechnique::Part::nameOf(const char* pass) const {
-    return passNames[indexOf(pass)].c_str();
+    return passNames[indexOf(pass)];
 }
 
 } // namespace sb

@@ -12,6 +12,7 @@
 #include "scenes/Motion.h"
 #include "scenes/ProxyCollection.h"
 #include "techniques/FrameState.h"
+#include "techniques/common/InstanceCulling.h"
 #include "techniques/common/ShadowWork.h"
 #include "techniques/submit/InstancedSubmitter.h"
 
@@ -22,6 +23,7 @@ constexpr const char* kStencil = "stencil";
 constexpr const char* kOccluder = "occluder";
 constexpr const char* kDarkness = "darkness";
 constexpr const char* kGuards = "guards";
+constexpr const char* kCull = "cull";
 constexpr GLint kFlattenLocation = 8, kPlaneLocation = 12, kLightLocation = 13, kAlbedoLightLocation = 14,
                 kDarknessLocation = 15; // shaders/planar/shadow.*
 
@@ -52,6 +54,9 @@ std::vector<PropertyDesc> declareProperties() {
         flag(kGuards, "true",
              "clip occluder parts behind the receiver or beyond the light, skip lights behind the plane "
              "(false: the slides' wrong shadows and anti-shadows)"),
+        flag(kCull, "true",
+             "leave out of a flattening the casters whose flattened bounds miss the view (mesh occluders; "
+             "a flattening none reaches is skipped, its receiver marking too)"),
     };
 }
 } // namespace
@@ -106,6 +111,7 @@ void PlanarTechnique::setScene(const Scene& scene) {
                      "nothing is shadowed\n";
     mReceivers.upload(mPlanes);
     uploadProxies(scene);
+    mCulling.setScene(scene);
 }
 
 void PlanarTechnique::uploadProxies(const Scene& scene) {
@@ -134,6 +140,7 @@ void PlanarTechnique::uploadProxies(const Scene& scene) {
 
 void PlanarTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
     if (changes & kLightsMoved) mProjections = projections(mPlanes, scene, mGuards);
+    if (changes & kCastersMoved) mCulling.instancesMoved(scene);
     if ((changes & kCastersMoved) && mUseProxies) {
         release();
         uploadProxies(scene);
@@ -145,6 +152,7 @@ void PlanarTechnique::compile(const CompileContext& ctx) {
     mStencil = p.getBool(kStencil);
     mUseProxies = p.getEnum(kOccluder) == "proxy";
     mGuards = p.getBool(kGuards);
+    mCull = p.getBool(kCull) && !mUseProxies;
     mDarkness = float(p.getFloat(kDarkness));
     mProjections = projections(mPlanes, ctx.scene, mGuards);
 
@@ -165,7 +173,7 @@ void PlanarTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(key);
 }
 
-void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p) {
+void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p, InstanceMask keep) {
     const ReceiverPlane& plane = mPlanes[p.plane];
     const Program& program = mUseProxies ? *mProxyProgram : *mShadowProgram;
     program.use();
@@ -175,7 +183,7 @@ void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p) {
     glUniform4f(kAlbedoLightLocation, plane.albedo.r, plane.albedo.g, plane.albedo.b, float(p.light));
     glUniform1f(kDarknessLocation, mDarkness);
     if (!mUseProxies) {
-        ctx.submitter.draw(DrawSet::Casters);
+        ctx.submitter.draw(DrawSet::Casters, keep);
         return;
     }
     for (const ProxyBatch& b : mProxyBatches) {
@@ -224,7 +232,15 @@ void PlanarTechnique::renderShadows(FrameContext& ctx) {
     ctx.passes.begin("shadows");
     setShadowState(mStencil);
     int ref = 0;
+    mCulled = 0;
+    const glm::mat4 viewProj = ctx.proj * ctx.view;
     for (const Projection& p : mProjections) {
+        if (mCull) {
+            // Casters whose flattened bounds miss the view darken nothing the camera sees.
+            const size_t kept = mCulling.cullFlattened(p.matrix, viewProj, !mGuards, mKeep);
+            mCulled += mCulling.count(DrawSet::Casters) - kept;
+            if (kept == 0) continue; // nothing to flatten: no receiver marking either
+        }
         if (mStencil) {
             // A fresh reference value per flattening marks the receiver anew without clearing the
             // stencil: values left by the previous one never equal it. 255 flattenings, then a clear.
@@ -237,7 +253,7 @@ void PlanarTechnique::renderShadows(FrameContext& ctx) {
             // darkens once).
             mReceivers.mark(p.plane, ref, GL_ZERO);
         }
-        drawOccluders(ctx, p);
+        drawOccluders(ctx, p, mCull ? InstanceMask(mKeep) : InstanceMask{});
     }
     resetFrameState();
 }
@@ -249,6 +265,7 @@ void PlanarTechnique::setCounters(const FrameContext& ctx) {
                  {"triangles", double(s.triangles) + proxies * double(mProxyTriangles)},
                  {"receiver_planes", double(mPlanes.size())},
                  {"flattenings", double(mProjections.size())},
+                 {"casters_culled", double(mCulled)},
                  {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, kMaxLights))}};
 }
 

@@ -32,6 +32,7 @@
 
 #include "scenes/ReceiverPlane.h"
 #include "techniques/Technique.h"
+#include "techniques/common/InstanceCulling.h"
 #include "techniques/common/ReceiverStencil.h"
 #include "techniques/submit/MeshBuffers.h"
 
@@ -73,7 +74,7 @@ private:
     void renderShadows(FrameContext& ctx);
     /// The counters of the frame just drawn.
     void setCounters(const FrameContext& ctx);
-    void drawOccluders(FrameContext& ctx, const Projection& p);
+    void drawOccluders(FrameContext& ctx, const Projection& p, InstanceMask keep);
     void setShadowState(bool stencil);
 
     std::vector<ReceiverPlane> mPlanes;
@@ -83,7 +84,10 @@ private:
     GLuint mProxyInstances = 0;
     std::vector<ProxyBatch> mProxyBatches;
     uint64_t mProxyTriangles = 0; ///< per flattening
-    bool mStencil = true, mUseProxies = false, mGuards = true;
+    bool mStencil = true, mUseProxies = false, mGuards = true, mCull = true;
+    InstanceCulling mCulling;   ///< the casters' bounds, for cull
+    std::vector<uint8_t> mKeep; ///< the casters one flattening keeps
+    size_t mCulled = 0;         ///< casters left out over the frame's flattenings
     float mDarkness = 1.0f;
     const Program* mLitProgram = nullptr;
     const Program* mMarkProgram = nullptr; ///< mReceivers' program

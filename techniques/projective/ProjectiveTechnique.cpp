@@ -16,6 +16,7 @@ namespace sb {
 namespace {
 constexpr const char* kResolution = "resolution";
 constexpr const char* kBlur = "blur";
+constexpr const char* kCull = "cull";
 constexpr GLint kMatrixLocation = 8; // projective/texture.vert and common/scene.vert (SHADOW_MAP)
 constexpr GLint kLayerLocation = 0;  // projective/blur.frag (BLUR_FROM_ARRAY)
 
@@ -24,6 +25,9 @@ std::vector<PropertyDesc> declareProperties() {
     return {
         integer(kResolution, "512", 16, 8192, "projective texture width and height (texels)"),
         integer(kBlur, "0", 0, 32, "blur radius in texels: the slides' fake softness"),
+        flag(kCull, "true",
+             "leave out of each light's texture the casters whose shadow cannot reach the view (blur 0 only: "
+             "a blurred edge reaches further)"),
     };
 }
 } // namespace
@@ -148,6 +152,8 @@ ProjectiveTechnique::Projector ProjectiveTechnique::computeProjector(const Scene
 }
 
 void ProjectiveTechnique::setScene(const Scene& scene) {
+    mCulling.setScene(scene);
+    mReceivers = receiverBounds(scene);
     mViewProj.clear();
     mTextureMatrix.clear();
     mCastsShadows.clear();
@@ -230,6 +236,7 @@ void ProjectiveTechnique::compile(const CompileContext& ctx) {
     const int layers = std::max<int>(1, int(mViewProj.size()));
     allocateTextures(int(p.getInt(kResolution)), layers);
     mBlurRadius = int(p.getInt(kBlur));
+    mCull = p.getBool(kCull) && mBlurRadius == 0;
     if (!mEmptyVao) glCreateVertexArrays(1, &mEmptyVao);
 
     const Defines base = ctx.submitter.defines();
@@ -265,12 +272,21 @@ void ProjectiveTechnique::renderTexture(FrameContext& ctx) {
     glDisable(GL_DEPTH_TEST); // a silhouette: every caster fragment is black, whatever its depth
     mTextureProgram->use();
     const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const glm::mat4 camera = ctx.proj * ctx.view;
+    mCulled = 0;
     for (size_t i = 0; i < mViewProj.size(); ++i) {
         if (!mCastsShadows[i]) continue;
         glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
         glClearBufferfv(GL_COLOR, 0, white);
         glUniformMatrix4fv(kMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
-        ctx.submitter.draw(DrawSet::Casters);
+        if (!mCull) {
+            ctx.submitter.draw(DrawSet::Casters);
+            continue;
+        }
+        // A caster whose shadow misses the view puts no texel where a visible receiver looks it up.
+        const size_t kept = mCulling.cullShadows(ctx.scene.lights[i], mReceivers, camera, mKeep);
+        mCulled += mCulling.count(DrawSet::Casters) - kept;
+        if (kept) ctx.submitter.draw(DrawSet::Casters, mKeep);
     }
     glEnable(GL_DEPTH_TEST);
 }
@@ -346,6 +362,7 @@ void ProjectiveTechnique::execute(FrameContext& ctx) {
                                            double(std::count(mCastsShadows.begin(), mCastsShadows.end(), 1))},
                  {"blur_passes", double(blurPasses)},
                  {"projector_clamped", double(mClamped)},
+                 {"casters_culled", double(mCulled)},
                  {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, kMaxLights))}};
 }
 

@@ -43,6 +43,7 @@
 #include <glm/glm.hpp>
 
 #include "techniques/Technique.h"
+#include "techniques/common/InstanceCulling.h"
 
 namespace sb {
 
@@ -90,6 +91,11 @@ private:
     GLuint mBlurTexture = 0, mBlurFbo = 0; ///< R8 2D: the horizontal pass's result
     GLuint mEmptyVao = 0;                  ///< attribute-less full-screen triangle
     int mResolution = 0, mLayers = 0, mBlurRadius = 0;
+    bool mCull = true;          ///< cull casters whose shadow misses the view (blur 0)
+    InstanceCulling mCulling;   ///< the casters' bounds
+    Aabb mReceivers;            ///< the non-casters' bounds: where shadows can fall
+    std::vector<uint8_t> mKeep; ///< the casters a light's texture keeps
+    size_t mCulled = 0;         ///< casters left out over the frame's textures
     const Program* mTextureProgram = nullptr;
     const Program* mBlurHorizontal = nullptr; ///< layer -> mBlurTexture
     const Program* mBlurVertical = nullptr;   ///< mBlurTexture -> layer
