@@ -80,7 +80,8 @@ std::string tieText(const std::vector<AutoCandidate>& candidates, const std::vec
     return "; time could not separate " + names + " (none was faster than the others in every round of the " +
            "calibration), and " + nameOf(c) +
            (accuracyDecided ? " is the most accurate of them"
-                            : " does the least exact work of the most accurate (" + workText(c.work) + ")");
+            : judged        ? " does the least exact work of the most accurate (" + workText(c.work) + ")"
+                            : " does the least exact work of them (" + workText(c.work) + ")");
 }
 
 } // namespace
