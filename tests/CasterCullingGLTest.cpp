@@ -1,6 +1,7 @@
 // The casters that cannot shadow anything the camera sees are left out of the passes that draw
 // casters for the receivers in view (techniques/common/InstanceCulling: cullFlattened for planar's
-// flattenings, cullShadows for projective's textures). The independent answer is the same technique
+// flattenings, cullShadows for projective's textures, keepReachingView for the shadow map's depth
+// pass, each caster grown by the filter's footprint). The independent answer is the same technique
 // with `cull=false`, which draws every caster: the frame must be the same, value for value (tolerance
 // 0: the culled casters put nothing on a visible pixel, and everything else is the same draw), while
 // the work drops. The aircraft scene from `near` (looking down on one aircraft from 3.5 units) has
@@ -31,6 +32,12 @@ const Case kCases[] = {
     {"planar", "planar:cull=false"},
     {"planar:guards=false", "planar:guards=false:cull=false"},
     {"projective", "projective:cull=false"},
+    {"shadowmap", "shadowmap:cull=false"},
+    {"vsm", "vsm:cull=false"},
+    {"esm:blur=9", "esm:blur=9:cull=false"},
+    {"shadowmap:pcf=5:hardware_compare=false", "shadowmap:pcf=5:hardware_compare=false:cull=false"},
+    {"shadowmap:kernel=poisson:radius=4:normal_offset=2",
+     "shadowmap:kernel=poisson:radius=4:normal_offset=2:cull=false"},
 };
 
 size_t differing(const std::vector<float>& a, const std::vector<float>& b) {
@@ -88,4 +95,24 @@ TEST(CasterCulling, NotVacuousTheViewFromNearShowsShadowsAndFromFarKeepsMost) {
     auto planar = TechniqueRegistry::create("planar");
     const test::RenderedFrame f = test::renderOnce(far, *planar);
     EXPECT_LT(test::counter(f.counters, "casters_culled"), 20.0);
+}
+
+TEST(CasterCulling, ASpotLightsMapGrowsItsMarginWithDistance) {
+    // A spot's texels grow with the distance from it: the margin is taken at the farthest receiver.
+    RunConfig config = test::quickConfig("aircraft", "near", kSize);
+    config.sceneOptions.lightType = LightType::Spot;
+    Harness h(config);
+    for (const Case& c :
+         {Case{"shadowmap", "shadowmap:cull=false"},
+          Case{"shadowmap:kernel=poisson:radius=4", "shadowmap:kernel=poisson:radius=4:cull=false"},
+          Case{"projective", "projective:cull=false"}}) {
+        SCOPED_TRACE(c.culled);
+        auto culled = TechniqueRegistry::create(TechniqueSpec::parse(c.culled));
+        auto all = TechniqueRegistry::create(TechniqueSpec::parse(c.unculled));
+        const test::RenderedFrame a = test::renderOnce(h, *culled);
+        const test::RenderedFrame b = test::renderOnce(h, *all);
+        EXPECT_EQ(differing(a.visibility, b.visibility), 0u);
+        EXPECT_EQ(differing(a.colour, b.colour), 0u);
+        EXPECT_GT(test::counter(a.counters, "casters_culled"), test::counter(b.counters, "casters_culled"));
+    }
 }

@@ -49,41 +49,59 @@ bool InstanceCulling::hullMayReach(const glm::vec4* points, size_t count, const 
     return false;
 }
 
+bool InstanceCulling::shadowMayReach(const Aabb& box, const Light& light, const Aabb& receivers,
+                                     const glm::mat4& viewProj, float margin) {
+    if (box.empty()) return false;
+    if (receivers.empty()) return true; // nothing known of the receivers: keep
+    Aabb b = box;
+    b.min -= glm::vec3(margin);
+    b.max += glm::vec3(margin);
+    // The shadow lies in the hull of the box and its copy moved away from the light past every
+    // receiver: a directional light sweeps it by `reach` along its direction, a point or spot light
+    // scales it about the light by `scale` (each point of the shadow volume is a convex combination of
+    // a corner and its far copy).
+    const float reach = glm::length(b.center() - receivers.center()) + glm::length(b.extent()) +
+                        glm::length(receivers.extent());
+    const std::array<glm::vec3, 8> corners = b.corners();
+    float nearest = std::numeric_limits<float>::max();
+    for (const glm::vec3& c : corners) nearest = std::min(nearest, glm::length(c - light.position));
+    const bool directional = light.type == LightType::Directional;
+    if (!directional && !(nearest > 0.0f)) return true; // the light inside the box: every direction
+    const float scale = directional ? 1.0f : 1.0f + reach / nearest;
+    const glm::vec3 towards = glm::normalize(light.direction);
+    std::array<glm::vec4, 16> points;
+    for (size_t k = 0; k < 8; ++k) {
+        points[k] = glm::vec4(corners[k], 1.0f);
+        const glm::vec3 far = directional ? corners[k] + towards * reach
+                                          : light.position + scale * (corners[k] - light.position);
+        points[8 + k] = glm::vec4(far, 1.0f);
+    }
+    return hullMayReach(points.data(), points.size(), viewProj, CullPlanes::All);
+}
+
 size_t InstanceCulling::cullShadows(const Light& light, const Aabb& receivers, const glm::mat4& viewProj,
                                     std::vector<uint8_t>& keep) const {
     keep.assign(mBounds.size(), 0);
     size_t kept = 0;
-    const float receiverSize = receivers.empty() ? 0.0f : glm::length(receivers.extent());
-    const glm::vec3 towards = glm::normalize(light.direction);
     for (size_t i = 0; i < mBounds.size(); ++i) {
-        if (!mScene->instances[i].castsShadow || mBounds[i].empty()) continue;
-        bool may = receivers.empty(); // nothing known of the receivers: keep
-        if (!may) {
-            // The shadow lies in the hull of the box and its copy moved away from the light past every
-            // receiver: a directional light sweeps it by `reach` along its direction, a point or spot
-            // light scales it about the light by `scale` (each point b of the shadow volume is a convex
-            // combination of a corner and its far copy).
-            const Aabb& b = mBounds[i];
-            const float reach =
-                glm::length(b.center() - receivers.center()) + glm::length(b.extent()) + receiverSize;
-            std::array<glm::vec4, 16> points;
-            const std::array<glm::vec3, 8> corners = b.corners();
-            float nearest = std::numeric_limits<float>::max();
-            for (const glm::vec3& c : corners) nearest = std::min(nearest, glm::length(c - light.position));
-            const bool directional = light.type == LightType::Directional;
-            const float scale = directional || nearest <= 0.0f ? 1.0f : 1.0f + reach / nearest;
-            for (size_t k = 0; k < 8; ++k) {
-                points[k] = glm::vec4(corners[k], 1.0f);
-                const glm::vec3 far = directional ? corners[k] + towards * reach
-                                                  : light.position + scale * (corners[k] - light.position);
-                points[8 + k] = glm::vec4(far, 1.0f);
-            }
-            may = (!directional && nearest <= 0.0f) ||
-                  hullMayReach(points.data(), 16, viewProj, CullPlanes::All);
-        }
-        if (!may) continue;
+        if (!mScene->instances[i].castsShadow ||
+            !shadowMayReach(mBounds[i], light, receivers, viewProj, 0.0f))
+            continue;
         keep[i] = 1;
         ++kept;
+    }
+    return kept;
+}
+
+size_t InstanceCulling::keepReachingView(const Light& light, const ViewReach& view, float margin,
+                                         std::vector<uint8_t>& keep) const {
+    size_t kept = 0;
+    for (size_t i = 0; i < keep.size() && i < mBounds.size(); ++i) {
+        if (!keep[i]) continue;
+        if (shadowMayReach(mBounds[i], light, view.receivers, view.camera, margin))
+            ++kept;
+        else
+            keep[i] = 0;
     }
     return kept;
 }

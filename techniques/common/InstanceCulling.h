@@ -26,6 +26,13 @@ namespace sb {
 /// and clamp depth instead (GL_DEPTH_CLAMP: "pancaking").
 enum class CullPlanes { All, SidesAndFar };
 
+/// What the camera sees, for leaving out casters whose shadow cannot fall there (cullShadows,
+/// keepReachingView).
+struct ViewReach {
+    glm::mat4 camera{1.0f}; ///< the camera's projection * view
+    Aabb receivers;         ///< the bounds of what can receive a shadow (empty: unknown, keep all)
+};
+
 class InstanceCulling {
 public:
     /// World-space bounds of every instance and the size of each DrawSet (untimed: at setScene). Keeps
@@ -45,6 +52,11 @@ public:
     /// `keep`, so a technique that draws casters into a light's texture (projective) leaves it out.
     size_t cullShadows(const Light& light, const Aabb& receivers, const glm::mat4& viewProj,
                        std::vector<uint8_t>& keep) const;
+    /// Clears in `keep` (a mask from cull()) the casters whose shadow from `light`, each caster's bounds
+    /// grown by `margin` world units on every side (a map filter's footprint), cannot reach
+    /// `view`; returns how many stay kept. What a light's map needs for the receivers in view.
+    size_t keepReachingView(const Light& light, const ViewReach& view, float margin,
+                            std::vector<uint8_t>& keep) const;
     /// The casters whose flattening by `flatten` (a planar projection matrix, homogeneous: planar's
     /// ReceiverPlane::projection) may reach the camera's view `viewProj`. `divided`: the vertex stage
     /// divides the flattened point by its w before projecting (planar without guards), which keeps
@@ -57,6 +69,10 @@ public:
 
     /// True if the box may reach the clip volume of `viewProj`: not all 8 corners outside one plane.
     static bool mayReach(const Aabb& box, const glm::mat4& viewProj, CullPlanes planes);
+    /// Whether the shadow `light` casts from `box` (grown by `margin`), swept past `receivers`, may
+    /// reach the clip volume of `viewProj`.
+    static bool shadowMayReach(const Aabb& box, const Light& light, const Aabb& receivers,
+                               const glm::mat4& viewProj, float margin);
     /// True unless every homogeneous point (world space, or a flattening's output) lies outside one
     /// plane of the clip volume of `viewProj`. Each clip plane is a half-space of homogeneous space, so
     /// then the points' convex hull, and whatever lies inside it, misses the view too.

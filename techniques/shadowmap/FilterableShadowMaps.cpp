@@ -141,6 +141,10 @@ void FilterableShadowMaps::setScene(const Scene& scene) {
         mLightPosition.push_back(l.position);
     }
     mCulling.setScene(scene);
+    mReceiverBounds = Aabb{};
+    for (const Instance& inst : scene.instances)
+        if (inst.receivesShadow && inst.mesh < scene.meshes.size())
+            mReceiverBounds.extend(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
     mViewProj.clear(); // fit() makes them
     mMarginTexels = -1;
     mFitResolution = 0;
@@ -241,7 +245,15 @@ void FilterableShadowMaps::render(FrameContext& ctx, const Program& program, con
         }
         glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
         glClearBufferfv(GL_COLOR, 0, glm::value_ptr(clear));
-        const size_t kept = mCulling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, mKeep);
+        size_t kept = mCulling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, mKeep);
+        if (mViewCull) {
+            // The blur and the bilinear lookup reach mMarginTexels (+2 for rounding) around a texel.
+            const float margin = float(mMarginTexels + 2) *
+                                 FlatLightFits::texelWorldSize(mViewProj[i], mResolution) *
+                                 FlatLightFits::farthestW(mViewProj[i], mReceiverBounds);
+            kept = mCulling.keepReachingView(ctx.scene.lights[i], {ctx.proj * ctx.view, mReceiverBounds},
+                                             margin, mKeep);
+        }
         mCulled += mCulling.count(DrawSet::Casters) - kept;
         mHasCasters[i] = kept > 0;
         if (kept == 0) continue; // no caster reaches this light's map: it stays "no occluder"

@@ -115,6 +115,9 @@ public:
     /// The lights that cast shadows (their layers are rendered and blurred).
     size_t shadowedLights() const;
     int marginTexels() const { return mMarginTexels; }
+    /// Leave out of each light's map the casters whose shadow, grown by the filter's reach, cannot
+    /// reach the view (vsm's and esm's `cull`).
+    void setViewCull(bool on) { mViewCull = on; }
     int layers() const { return mLayers; }
     int resolution() const { return mResolution; }
     GLuint texture() const { return mArray; }
@@ -141,6 +144,8 @@ private:
     std::vector<uint8_t> mDirectional;
     std::vector<glm::vec3> mLightPosition;
     int mFitResolution = 0, mMarginTexels = -1;
+    bool mViewCull = true;
+    Aabb mReceiverBounds; ///< what can receive a shadow (setScene), for mViewCull
     std::vector<glm::mat4> mViewProj, mShadowMatrix;
     std::vector<glm::vec4> mDepthPlane, mDepthPoint;
     GLuint mArray = 0, mDepthBuffer = 0;

@@ -49,6 +49,21 @@ void FlatLightFits::setScene(const Scene& scene, const std::string& technique, c
     }
 }
 
+float FlatLightFits::texelWorldSize(const glm::mat4& lightViewProj, int resolution) {
+    auto rowLength = [&](int r) {
+        return glm::length(glm::vec3(lightViewProj[0][r], lightViewProj[1][r], lightViewProj[2][r]));
+    };
+    return 2.0f / (std::min(rowLength(0), rowLength(1)) * float(resolution));
+}
+
+float FlatLightFits::farthestW(const glm::mat4& lightViewProj, const Aabb& bounds) {
+    float w = 1.0f;
+    if (!bounds.empty())
+        for (const glm::vec3& c : bounds.corners())
+            w = std::max(w, std::abs((lightViewProj * glm::vec4(c, 1.0f)).w));
+    return w;
+}
+
 size_t FlatLightFits::shadowed() const {
     return size_t(std::count(mCastsShadows.begin(), mCastsShadows.end(), uint8_t(1)));
 }
@@ -60,7 +75,8 @@ void FlatLightFits::setShadowMatrices() const {
 }
 
 size_t FlatLightFits::renderDepth(Submitter& submitter, const InstanceCulling& culling,
-                                  const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll) const {
+                                  const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll,
+                                  const ViewCull* view) const {
     size_t culled = 0;
     for (size_t i = 0; i < mViewProj.size(); ++i) {
         if (!mCastsShadows[i]) continue;
@@ -70,7 +86,8 @@ size_t FlatLightFits::renderDepth(Submitter& submitter, const InstanceCulling& c
             submitter.draw(DrawSet::All);
             continue;
         }
-        const size_t kept = culling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, keep);
+        size_t kept = culling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, keep);
+        if (view) kept = culling.keepReachingView((*view->lights)[i], view->reach, view->margins[i], keep);
         culled += culling.count(DrawSet::Casters) - kept;
         submitter.draw(DrawSet::Casters, keep);
     }

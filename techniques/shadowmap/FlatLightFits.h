@@ -18,12 +18,29 @@
 
 namespace sb {
 
+/// The view a light's casters must reach to be drawn into its map (shadowmap's `cull`): the scene's
+/// lights, the camera and the receivers, and per light the world margin the lighting pass's filter
+/// reads around a texel (InstanceCulling::keepReachingView).
+struct ViewCull {
+    const std::vector<Light>* lights = nullptr;
+    ViewReach reach;
+    std::vector<float> margins; ///< per light, world units
+};
+
 class FlatLightFits {
 public:
     /// The advice `shadowmap` and `cascaded` give after "... needs an omni shadow map".
     static constexpr const char* kOmniAdvice =
         ": use -t cubemap or -t paraboloid, or --light directional or --light spot";
 
+    /// World size of one texel of a map of `resolution` texels rendered with `lightViewProj`, at
+    /// light-space w = 1: row r of an orthographic proj * view is (2 / extent_r) times a unit axis, and
+    /// of a perspective one (2 / (2 tan(fov / 2))) times it with extent growing with w. The larger of
+    /// the two axes.
+    static float texelWorldSize(const glm::mat4& lightViewProj, int resolution);
+    /// The largest light-space w over the corners of `bounds` (1 for an orthographic map): how much a
+    /// perspective map's texels grow out to the farthest of them.
+    static float farthestW(const glm::mat4& lightViewProj, const Aabb& bounds);
     /// Clip space to [0, 1] texture space: scale by one half, translate by one half.
     static const glm::mat4& textureBias();
     /// Throws Error(Unsupported) "<technique>: light <index> is a point light, which needs an omni shadow
@@ -47,9 +64,11 @@ public:
     /// DepthPassState set by the caller; an unshadowed light's layer is neither cleared nor read):
     /// clears the layer, sets the light's matrix (location 8, shadowmap/depth.vert)
     /// and draws the casters `culling` keeps in its frustum, or everything when `drawAll` (the perf
-    /// gate's injected regression, core/Injection.h). Returns the casters culled over all lights.
+    /// gate's injected regression, core/Injection.h). With `view`, of those only the casters whose
+    /// shadow may reach the view. Returns the casters culled over all lights.
     size_t renderDepth(Submitter& submitter, const InstanceCulling& culling, const DepthLayers& maps,
-                       std::vector<uint8_t>& keep, bool drawAll = false) const;
+                       std::vector<uint8_t>& keep, bool drawAll = false,
+                       const ViewCull* view = nullptr) const;
 
 private:
     std::vector<glm::mat4> mViewProj;

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/Injection.h"
+#include "scenes/Math.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
 #include "techniques/shadowmap/PoissonDisk.h"
@@ -23,6 +24,7 @@ constexpr const char* kKernel = "kernel";
 constexpr const char* kTaps = "taps";
 constexpr const char* kRadius = "radius";
 constexpr const char* kNormalOffset = "normal_offset";
+constexpr const char* kCull = "cull";
 constexpr const char* kReceiverPlane = "receiver_plane";
 // shadowmap/lighting.frag: uTexelWorld[LIGHT_COUNT], uNormalOffset, uKernelTaps, uKernel[64].
 constexpr GLint kTexelWorldLocation = 12;
@@ -48,6 +50,9 @@ std::vector<PropertyDesc> declareProperties() {
         real(kNormalOffset, "0", 0, 64,
              "normal-offset bias: lookup moved along the normal by this many world texels x (1 - n.l)"),
         flag(kReceiverPlane, "false", "receiver-plane depth bias: each tap compared with the receiver plane"),
+        flag(kCull, "true",
+             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
+             "filter's footprint)"),
     };
 }
 
@@ -72,15 +77,6 @@ std::vector<glm::vec2> kernelOffsets(const std::string& kernel, int taps, float 
     return out;
 }
 
-/// World size of one texel of a map of `resolution` texels rendered with `lightViewProj`, at light-space
-/// w = 1: row r of an orthographic proj * view is (2 / extent_r) times a unit axis, and of a perspective
-/// one (2 / (2 tan(fov / 2))) times it with extent growing with w. The larger of the two axes.
-float texelWorldSize(const glm::mat4& lightViewProj, int resolution) {
-    auto rowLength = [&](int r) {
-        return glm::length(glm::vec3(lightViewProj[0][r], lightViewProj[1][r], lightViewProj[2][r]));
-    };
-    return 2.0f / (std::min(rowLength(0), rowLength(1)) * float(resolution));
-}
 } // namespace
 
 ShadowMapTechnique::ShadowMapTechnique()
@@ -147,10 +143,39 @@ void ShadowMapTechnique::compile(const CompileContext& ctx) {
     mNormalOffset = float(p.getFloat(kNormalOffset));
     if (mNormalOffset > 0.0f) lit["NORMAL_OFFSET"] = "";
     if (p.getBool(kReceiverPlane)) lit["RECEIVER_PLANE"] = "";
-    mTexelWorld.clear();
-    for (const glm::mat4& vp : mLights.viewProj()) mTexelWorld.push_back(texelWorldSize(vp, mMaps.size()));
+    mCull = p.getBool(kCull);
+    fitTexels(ctx.scene);
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/lighting.frag", ""}, lit);
     setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
+}
+
+void ShadowMapTechnique::sceneChanged(const Scene& scene, uint32_t) {
+    setScene(scene);
+    fitTexels(scene);
+}
+
+void ShadowMapTechnique::fitTexels(const Scene& scene) {
+    const PropertySet& p = properties();
+    mTexelWorld.clear();
+    for (const glm::mat4& vp : mLights.viewProj())
+        mTexelWorld.push_back(FlatLightFits::texelWorldSize(vp, mMaps.size()));
+    // What the lighting pass reads around a receiver's texel, in texels: the kernel's half-width (the
+    // grid's pcf x pcf, the other kernels' radius), the normal offset, and two for the bilinear
+    // compare's footprint and rounding. In world units at the farthest receiver (w = 1 for an
+    // orthographic map; a spot's texels grow with the distance).
+    const double kernel = mKernel.empty() ? double(p.getInt(P::kPcf)) : p.getFloat(kRadius);
+    const float texels = float(kernel) + mNormalOffset + 2.0f;
+    mView.lights = &scene.lights;
+    mView.reach.receivers = Aabb{};
+    for (const Instance& inst : scene.instances)
+        if (inst.receivesShadow && inst.mesh < scene.meshes.size())
+            mView.reach.receivers.extend(
+                transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+    mView.margins.clear();
+    for (size_t i = 0; i < mLights.viewProj().size(); ++i) {
+        mView.margins.push_back(texels * mTexelWorld[i] *
+                                FlatLightFits::farthestW(mLights.viewProj()[i], mView.reach.receivers));
+    }
 }
 
 void ShadowMapTechnique::renderDepth(FrameContext& ctx) {
@@ -159,7 +184,9 @@ void ShadowMapTechnique::renderDepth(FrameContext& ctx) {
     mDepthProgram->use();
     // Only casters inside the light's frustum reach the map; the gate's proof can lose that culling
     // (core/Injection.h).
-    mCulled = mLights.renderDepth(ctx.submitter, mCulling, mMaps, mKeep, mDrawAllIntoMap);
+    mView.reach.camera = ctx.proj * ctx.view;
+    mCulled = mLights.renderDepth(ctx.submitter, mCulling, mMaps, mKeep, mDrawAllIntoMap,
+                                  mCull && !mDrawAllIntoMap ? &mView : nullptr);
 }
 
 void ShadowMapTechnique::renderLighting(FrameContext& ctx) {

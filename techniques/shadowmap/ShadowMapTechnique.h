@@ -20,7 +20,9 @@
 // did not exist for, so the images are unchanged.
 // Directional lights get an orthographic light camera fitted to the casters; spot lights a perspective
 // one with the spot cone (scenes/LightFit.h). Each light's depth pass submits only the casters whose
-// bounds reach its frustum (techniques/common/InstanceCulling.h; counter casters_culled). Point lights
+// bounds reach its frustum and, with `cull` (default), whose shadow (swept past the receivers, grown by
+// the filter's footprint in world units) may reach the camera's view (techniques/common/
+// InstanceCulling.h; counter casters_culled). Point lights
 // need an omni map (`cubemap`, `paraboloid`): refused here with ExitCode::Unsupported.
 #include <vector>
 
@@ -38,12 +40,16 @@ class ShadowMapTechnique final : public Technique {
 public:
     ShadowMapTechnique();
     void setScene(const Scene& scene) override;
+    /// The light fits, the culling bounds and what depends on the fits (texel sizes, cull margins).
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
 
 private:
     void renderDepth(FrameContext& ctx);
+    /// mTexelWorld and mView's margins from the current fits and properties.
+    void fitTexels(const Scene& scene);
     void renderLighting(FrameContext& ctx);
 
     FlatLightFits mLights;          ///< per light: the camera and the shadow matrix
@@ -55,6 +61,8 @@ private:
     std::vector<glm::vec2> mKernel; ///< poisson / rotated_grid tap offsets in texels (empty: grid)
     std::vector<float> mTexelWorld; ///< per light: world size of a texel at w = 1 (normal offset)
     float mNormalOffset = 0.0f;     ///< texels; 0 = off
+    bool mCull = true;              ///< leave out casters whose shadow cannot reach the view
+    ViewCull mView;                 ///< for mCull: the lights, the receivers, the margins
     const Program* mDepthProgram = nullptr;
     const Program* mLightingProgram = nullptr;
     Counters mCounters;

@@ -5,6 +5,7 @@ namespace sb {
 namespace {
 constexpr const char* kResolution = "resolution";
 constexpr const char* kBlur = "blur";
+constexpr const char* kCull = "cull";
 constexpr const char* kReceiverBackground = "receiver_background";
 constexpr const char* kMinVariance = "min_variance";
 constexpr const char* kBleedReduction = "bleed_reduction";
@@ -21,6 +22,9 @@ std::vector<PropertyDesc> declareProperties() {
         flag(kReceiverBackground, "true",
              "non-casters drawn behind the casters as the map's background (the farthest per texel): the "
              "filter sees the receiver, not the far plane, beside an occluder's edge"),
+        flag(kCull, "true",
+             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
+             "blur's reach)"),
         real(kMinVariance, "1e-06", 0, 0.01,
              "lower bound of the filtered variance (linear depth in [0, 1], squared): against the "
              "bound's numeric acne"),
@@ -53,6 +57,7 @@ void VsmTechnique::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int resolution = int(p.getInt(kResolution));
     mMaps.setReceiverBackground(p.getBool(kReceiverBackground));
+    mMaps.setViewCull(p.getBool(kCull));
     // The border the filter's reads need: the blur's radius and the bilinear footprint's texel.
     mMaps.fit(ctx.scene, resolution, int(p.getInt(kBlur)) / 2 + 1);
     mMaps.allocate(resolution, GL_RG32F);
