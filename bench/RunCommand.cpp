@@ -19,6 +19,7 @@
 #include "bench/run/ResultRow.h"
 #include "bench/run/RunOptions.h"
 #include "bench/run/SamplesFile.h"
+#include "bench/run/VulkanHarness.h"
 #include "bench/select/AutoResolver.h"
 #include "bench/viewer/Viewer.h"
 #include "core/Error.h"
@@ -165,6 +166,130 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
     for (const Refusal& r : refusals)
         std::cerr << "bench: error: " << r.message << " (exit code " << int(r.code) << ")\n";
 }
+
+/// `--api vulkan` (bench/run/VulkanHarness.h): the techniques with a Vulkan form, measured as on GL,
+/// their rows carrying api=vulkan. `bench accuracy --api vulkan` judges the Vulkan visibility of the
+/// census frame against the Embree reference of a GL harness of the same configuration (its G-buffer
+/// gives the reference its sample positions; same size and camera, so the same pixels), without the
+/// stability perturbations. What is GL's alone says so before anything is created: -t auto, the viewer
+/// and the techniques without a Vulkan form (exit 3 each).
+int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs) {
+    const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
+    if (config.context.visibleWindow)
+        throw Error("--window draws with GL; --api vulkan measures headless only", ExitCode::Unsupported);
+    // Declared before the techniques, destroyed after them: they release Vulkan objects of its device.
+    std::unique_ptr<VulkanHarness> owner;
+    std::vector<std::unique_ptr<VulkanTechnique>> techniques;
+    for (const TechniqueSpec& spec : specs) {
+        if (isAuto(spec))
+            throw Error("-t auto chooses among GL techniques; with --api vulkan name the technique",
+                        ExitCode::Unsupported);
+        techniques.push_back(TechniqueRegistry::createVulkan(spec));
+    }
+    checkOutputs(config);
+    owner = std::make_unique<VulkanHarness>(config);
+    VulkanHarness& harness = *owner;
+    std::unique_ptr<Harness> judge; // bench accuracy: the GL harness whose reference judges the frames
+    std::unique_ptr<AccuracyEvaluator> evaluator;
+    AccuracyOptions options;
+    if (accuracy) {
+        RunConfig gl = config;
+        gl.api = RunConfig::Api::GL;
+        gl.submit = SubmitMode::Retained; // the G-buffer's submission: the same triangles in any mode
+        judge = std::make_unique<Harness>(gl);
+        evaluator = std::make_unique<AccuracyEvaluator>(*judge);
+        options.light = config.accuracyLight;
+        options.referenceSamples = config.referenceSamples;
+        options.stability = false;
+    }
+    std::ostream& log = logStream(config);
+    const RowSource source = harness.rowSource();
+    if (!config.quiet) {
+        ConsoleReport::printHeader(log, source);
+        ConsoleReport::printTimerVerdict(log, harness.timerVerdict());
+    }
+    Environment env = Environment::capture();
+    std::vector<Measurement> results;
+    std::vector<CsvRow> rows;
+    const std::string baseline = specs.front().toString();
+    for (int round = 1; round <= config.repeat; ++round) {
+        std::optional<double> baselineWall;
+        for (size_t i = 0; i < techniques.size(); ++i) {
+            VulkanTechnique& technique = *techniques[i];
+            const EffectCoverage coverage =
+                EffectCoverage::of(harness.scene().effects, technique.info().effects);
+            if (config.strictEffects && coverage.fallsShort())
+                throw Error(coverage.shortfall(technique.name(), harness.scene().name) +
+                                " (--strict-effects)",
+                            ExitCode::Unsupported);
+            if (!config.quiet)
+                log << "[" << (round - 1) * techniques.size() + i + 1 << "/"
+                    << techniques.size() * size_t(config.repeat) << "] " << technique.name() << " "
+                    << technique.properties().toString() << " ..." << std::flush;
+            Measurement m;
+            m.run = harness.measure(technique);
+            // The census frame after the measured ones wrote the visibility target: the frame judged.
+            if (evaluator)
+                m.accuracy =
+                    evaluator->evaluateVisibility(harness.targets().readVisibilityRGBA32F(), options);
+            env.timestamp = Environment::nowIso8601();
+            m.row = ResultRow::build(source, m.run, env);
+            if (m.accuracy) m.accuracy->appendColumns(m.row);
+            if (i == 0) baselineWall = m.run.wall.median;
+            m.addRound(round, baseline, baselineWall);
+            for (const std::string& message : harness.takeValidationMessages())
+                std::cerr << "bench: vulkan validation: " << message << "\n";
+            if (!config.quiet) {
+                log << " " << m.run.wall.n << " frames, median " << m.run.wall.median << " ms";
+                if (m.accuracy) log << ", " << m.accuracy->hard.wrongPct << "% wrong";
+                log << "\n";
+            }
+            if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
+            const bool several = config.techniques.size() > 1;
+            VulkanTargets& t = harness.targets();
+            if (!config.screenshotPath.empty())
+                ImageWriter::writeColor(t.width(), t.height(), t.readColorRGBA8(),
+                                        several ? withSuffix(config.screenshotPath, technique.name())
+                                                : config.screenshotPath);
+            if (!config.visibilityPath.empty()) {
+                const std::string base =
+                    several ? withSuffix(config.visibilityPath, technique.name()) : config.visibilityPath;
+                const std::vector<float> vis = t.readVisibilityRGBA32F();
+                const size_t lights =
+                    std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
+                for (size_t l = 0; l < lights; ++l)
+                    ImageWriter::writeVisibility(t.width(), t.height(), vis, int(l),
+                                                 l == 0 ? base
+                                                        : withSuffix(base, "light" + std::to_string(l)));
+            }
+            rows.push_back(m.row);
+            results.push_back(std::move(m));
+        }
+    }
+    std::vector<RunResult> runs;
+    for (const Measurement& m : results) runs.push_back(m.run);
+    if (accuracy) {
+        std::vector<std::pair<RunResult, AccuracyResult>> judged;
+        for (const Measurement& m : results) judged.emplace_back(m.run, *m.accuracy);
+        ConsoleReport::printAccuracyTable(log, judged);
+    } else {
+        ConsoleReport::printTable(log, harness.timerVerdict(), runs, config.repeat);
+    }
+    if (config.repeat > 1) ConsoleReport::printPairedRatios(log, runs, config.repeat);
+    if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
+    if (config.format != RowFormat::Console) {
+        std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
+        StandardStreams::finishStdout("--format");
+    }
+    // With --vk-validation a run the layer found fault with did not render what the API promises: it
+    // failed, whatever its numbers.
+    if (const size_t errors = harness.context().validationErrors()) {
+        std::cerr << "bench: error: the Vulkan validation layer reported " << errors
+                  << " error(s) (above); the run is not valid (exit code 1)\n";
+        return int(ExitCode::Failure);
+    }
+    return 0;
+}
 } // namespace
 
 std::vector<TechniqueSpec> RunCommand::configurations(const RunConfig& config) {
@@ -183,6 +308,7 @@ int RunCommand::run(const RunConfig& config) {
     const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
     // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
     std::vector<TechniqueSpec> specs = configurations(config);
+    if (config.api == RunConfig::Api::Vulkan) return runVulkan(config, specs);
     std::vector<std::unique_ptr<Technique>> techniques;
     for (const TechniqueSpec& spec : specs)
         techniques.push_back(isAuto(spec) ? nullptr : TechniqueRegistry::create(spec));

@@ -24,8 +24,6 @@ constexpr Named<GLenum> kStageNames[] = {
 };
 constexpr NameTable kStageNameTable{kStageNames};
 
-constexpr const char* kVersionLine = "#version 450 compatibility\n";
-
 const std::regex& includePattern() {
     static const std::regex pattern(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
     return pattern;
@@ -49,7 +47,7 @@ void appendDefines(const Defines& defines, std::string& out) {
 std::string ShaderPreprocessor::build(const std::string& file, const Defines& defines, GLenum stage) {
     mFiles.clear();
     mIncluded.clear();
-    std::string out = kVersionLine;
+    std::string out = mVersionLine;
     appendDefines(defines, out);
     out += std::string("#define ") + stageDefine(stage) + " 1\n";
     expand(file, "", out);
@@ -96,6 +94,7 @@ std::string ShaderPreprocessor::readFile(const std::string& file, const std::str
 std::string ShaderPreprocessor::mapLog(const std::string& log) const {
     static const std::regex mesa(R"(^\s*(\d+):(\d+)\((\d+)\):\s*(.*)$)");
     static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    static const std::regex glslang(R"(^\s*(ERROR|WARNING):\s*(\d+):(\d+):\s*(.*)$)");
     auto fileName = [this](const std::string& index) {
         size_t i = std::stoul(index);
         return i < mFiles.size() ? mFiles[i] : "<source " + index + ">";
@@ -108,6 +107,9 @@ std::string ShaderPreprocessor::mapLog(const std::string& log) const {
             line = fileName(m[1]) + ":" + m[2].str() + ":" + m[3].str() + ": " + m[4].str();
         } else if (std::regex_match(line, m, nvidia)) {
             line = fileName(m[1]) + ":" + m[2].str() + ": " + m[3].str();
+        } else if (std::regex_match(line, m, glslang)) {
+            line = fileName(m[2]) + ":" + m[3].str() + ": " + (m[1] == "ERROR" ? "error: " : "warning: ") +
+                   m[4].str();
         }
         if (!line.empty()) out += (out.empty() ? "" : "\n") + line;
     }

@@ -9,6 +9,9 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   # GL platform: EGL + Mesa llvmpipe, OSMesa fallback, GLFW window, libepoxy loader
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libglfw3-dev libepoxy-dev
+  # Vulkan: the loader and headers, lavapipe (Mesa's CPU device), the Khronos validation layer the
+  # tests run under, vulkaninfo, glslang's library (run-time GLSL to SPIR-V) and the SPIR-V tools it links
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-dev spirv-tools
   # maths, JSON, CLI, images, model files, ray tracing reference
   libglm-dev nlohmann-json3-dev libcli11-dev libopenimageio-dev libassimp-dev libembree-dev
   # tests (GNU parallel: the sharded-sweep test runs shards the way the README documents)

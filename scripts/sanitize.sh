@@ -20,7 +20,7 @@ source "$root/tools/sanitizers/options.sh"
 targets=(bench handloop)
 for src in "$root"/tests/*Test.cpp; do
   name="$(basename "$src" .cpp)"
-  case "$name" in *GLTest) label=gl ;; *CliTest) label=cli ;; *) label=unit ;; esac
+  case "$name" in *GLTest) label=gl ;; *VkTest) label=vulkan ;; *CliTest) label=cli ;; *) label=unit ;; esac
   for want in "${labels[@]}"; do [ "$want" = "$label" ] && targets+=("$name"); done
 done
 for want in "${labels[@]}"; do [ "$want" = hard ] && targets+=(HardCaseTest); done

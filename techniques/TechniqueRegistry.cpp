@@ -6,19 +6,23 @@
 #include "techniques/blob/BlobTechnique.h"
 #include "techniques/hybrid/HybridTechnique.h"
 #include "techniques/none/NoneTechnique.h"
+#include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderTechnique.h"
 #include "techniques/planar/PlanarTechnique.h"
 #include "techniques/projective/ProjectiveTechnique.h"
 #include "techniques/proxy/ProxyTechnique.h"
 #include "techniques/shadowmap/CascadedTechnique.h"
 #include "techniques/shadowmap/CubeMapTechnique.h"
+#include "techniques/shadowmap/CubeMapVulkan.h"
 #include "techniques/shadowmap/EsmTechnique.h"
 #include "techniques/shadowmap/ParaboloidTechnique.h"
 #include "techniques/shadowmap/PcssTechnique.h"
 #include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/shadowmap/ShadowMapVulkan.h"
 #include "techniques/shadowmap/VsmTechnique.h"
 #include "techniques/synthetic/SyntheticTechnique.h"
 #include "techniques/volume/VolumeTechnique.h"
+#include "techniques/volume/VolumeVulkan.h"
 
 namespace sb {
 
@@ -93,6 +97,39 @@ std::unique_ptr<Technique> TechniqueRegistry::create(const TechniqueSpec& spec) 
     t->properties().apply(spec.properties);
     t->propertiesApplied();
     return t;
+}
+
+const std::vector<TechniqueRegistry::VulkanEntry>& TechniqueRegistry::vulkanEntries() {
+    // The techniques with a Vulkan form (techniques/vulkan/VulkanTechnique.h); the others run on GL only
+    // and --api vulkan refuses them (exit 3), as --list says.
+    static const std::vector<VulkanEntry> kEntries = {
+        {"none", [] { return std::unique_ptr<VulkanTechnique>(new NoneVulkan()); }},
+        {"cubemap", [] { return std::unique_ptr<VulkanTechnique>(new CubeMapVulkan()); }},
+        {"shadowmap", [] { return std::unique_ptr<VulkanTechnique>(new ShadowMapVulkan()); }},
+        {"volume", [] { return std::unique_ptr<VulkanTechnique>(new VolumeVulkan()); }},
+    };
+    return kEntries;
+}
+
+bool TechniqueRegistry::hasVulkan(const std::string& name) {
+    for (const VulkanEntry& e : vulkanEntries())
+        if (name == e.name) return true;
+    return false;
+}
+
+std::unique_ptr<VulkanTechnique> TechniqueRegistry::createVulkan(const TechniqueSpec& spec) {
+    for (const VulkanEntry& e : vulkanEntries()) {
+        if (spec.name != e.name) continue;
+        auto t = e.create();
+        t->properties().apply(spec.properties);
+        return t;
+    }
+    create(spec.name); // an unknown name: the same error as on GL
+    std::vector<std::string> known;
+    for (const VulkanEntry& e : vulkanEntries()) known.emplace_back(e.name);
+    throw Error(spec.name + " has no Vulkan form yet (on Vulkan: " + join(known, ", ") +
+                    "); run it with --api gl",
+                ExitCode::Unsupported);
 }
 
 } // namespace sb

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "techniques/Technique.h"
+#include "techniques/vulkan/VulkanTechnique.h"
 
 namespace sb {
 
@@ -23,6 +24,18 @@ public:
     static std::unique_ptr<Technique> create(const std::string& name);
     /// Creates the technique and applies the spec's properties ("shadowmap:resolution=2048").
     static std::unique_ptr<Technique> create(const TechniqueSpec& spec);
+
+    /// The techniques with a Vulkan form (`--api vulkan`), a subset of entries() in the same order.
+    using VulkanFactory = std::function<std::unique_ptr<VulkanTechnique>()>;
+    struct VulkanEntry {
+        const char* name;
+        VulkanFactory create;
+    };
+    static const std::vector<VulkanEntry>& vulkanEntries();
+    static bool hasVulkan(const std::string& name);
+    /// The Vulkan form with the spec's properties. A known technique without one is
+    /// sb::Error(Unsupported) naming those that have one; an unknown name is create()'s error.
+    static std::unique_ptr<VulkanTechnique> createVulkan(const TechniqueSpec& spec);
 };
 
 } // namespace sb

@@ -48,8 +48,12 @@ struct Layer {
 inline const std::vector<Layer>& layers() {
     const std::vector<std::string> base = {"core", "gl", "scenes"};
     const std::vector<std::string> techniques = {"core", "gl", "scenes", "techniques", "techniques/submit"};
+    // A technique folder may hold a Vulkan form of its technique (techniques/vulkan/ and vk/ below it).
+    const std::vector<std::string> vulkanTechniques = {"vk", "techniques/vulkan"};
     const std::vector<std::string> belowBench = {
-        "core", "gl", "gl/backends", "scenes", "techniques", "techniques/submit", "reference"};
+        "core",     "gl",         "gl/backends",       "vk",
+        "scenes",   "techniques", "techniques/submit", "techniques/vulkan",
+        "reference"};
     auto plus = [](std::vector<std::string> a, const std::vector<std::string>& b) {
         a.insert(a.end(), b.begin(), b.end());
         return a;
@@ -58,11 +62,15 @@ inline const std::vector<Layer>& layers() {
         {"core", {}, {}},
         {"gl", {"core"}, {}},
         {"gl/backends", {"core", "gl"}, {}},
+        // The Vulkan platform stands on gl/ for the shader preprocessor (one GLSL source, two APIs).
+        {"vk", {"core", "gl"}, {}},
         {"scenes", {"core"}, {}},
         {"techniques/submit", base, {}},
         {"techniques", plus(base, {"techniques/submit"}), {}},
         {"techniques/common", techniques, {"common"}},
-        {"techniques/*", plus(techniques, {"techniques/common"}), {"common"}},
+        // The technique contract on Vulkan: the declaration and submission of techniques/, drawn with vk/.
+        {"techniques/vulkan", plus(techniques, {"vk"}), {}},
+        {"techniques/*", plus(plus(techniques, {"techniques/common"}), vulkanTechniques), {"common"}},
         {"reference", techniques, {"reference", "common"}},
         {"bench/output", {"core", "gl"}, {}},
         {"bench/run", plus(belowBench, {"bench/output"}), {"calibrate", "common"}},
@@ -103,6 +111,10 @@ inline const std::vector<Exception>& exceptions() {
          {"techniques/*", "reference"},
          "the one table of techniques names every technique, the reference included: the layout's one "
          "intended arrow up"},
+        {"techniques/TechniqueRegistry.h",
+         {"techniques/vulkan"},
+         "the table's Vulkan half hands out the Vulkan form of a technique (techniques/vulkan/), which "
+         "stands on techniques/ like every technique"},
     };
     return kExceptions;
 }
@@ -111,7 +123,8 @@ inline const std::vector<Exception>& exceptions() {
 inline std::string layerOf(const std::string& folder) {
     static const std::regex technique("techniques/([A-Za-z0-9_]+)");
     std::smatch m;
-    if (std::regex_match(folder, m, technique) && m[1] != "submit" && m[1] != "common") return "techniques/*";
+    if (std::regex_match(folder, m, technique) && m[1] != "submit" && m[1] != "common" && m[1] != "vulkan")
+        return "techniques/*";
     return folder;
 }
 

@@ -1,12 +1,11 @@
-// `shadowmap` against closed forms: the shadow of a sphere on a plane under a directional light is an
-// exact ellipse; a ground point p is in it iff the ray p - t*L (towards the light) passes within r of
-// the sphere's centre. Every ground pixel's world position comes from the depth buffer, so each pixel
-// is judged against the exact answer at its own sample position.
+// `shadowmap` against closed forms: the sphere's shadow on the plane is an exact ellipse
+// (tests/SphereShadowJudge.h, which tests/ShadowMapVkTest.cpp runs on Vulkan as well).
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "SphereShadowJudge.h"
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "core/Error.h"
@@ -38,15 +37,6 @@ const SphereShadowCase kCases[] = {
 
 class SphereShadow : public ::testing::TestWithParam<SphereShadowCase> {};
 
-// Distance from the sphere centre c to the ray from p towards the light, minus the radius: negative
-// inside the shadow ellipse, positive outside, in world units perpendicular to the light.
-double shadowMargin(const glm::dvec3& p, const glm::dvec3& toLight, const glm::dvec3& c, double r) {
-    glm::dvec3 pc = c - p;
-    double t = glm::dot(pc, toLight);
-    if (t <= 0.0) return 1e9; // the sphere is behind the point (below the plane): no shadow
-    return glm::length(pc - t * toLight) - r;
-}
-
 TEST_P(SphereShadow, MatchesAnalyticEllipse) {
     const SphereShadowCase& tc = GetParam();
     constexpr int kSize = 384;
@@ -60,71 +50,9 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
     sm.properties().apply(spec.properties);
     h.prepare(sm);
     h.renderFrame(sm);
-
-    const Scene& scene = h.scene();
-    // The sphere: the instance whose mesh is not the ground; centre and radius from its geometry.
-    const Instance* sphere = nullptr;
-    for (const Instance& i : scene.instances)
-        if (i.castsShadow) sphere = &i;
-    ASSERT_NE(sphere, nullptr);
-    double meshRadius = 0.0;
-    for (const glm::vec3& p : scene.meshes[sphere->mesh].positions)
-        meshRadius = std::max(meshRadius, double(glm::length(p)));
-    glm::dvec3 centre = glm::dvec3(sphere->model * glm::vec4(0, 0, 0, 1));
-    double radius = meshRadius * sphere->scale;
-    glm::dvec3 toLight = -glm::normalize(glm::dvec3(scene.lights[0].direction));
-
-    // Tolerance band around the ellipse's edge, in world units perpendicular to the light:
-    //  - the shadow map's texel (plus PCF half-width, and one texel for bilinear hardware compare);
-    //  - the screen pixel's footprint on the ground (the pixel centre decides, the edge may cross it);
-    //  - the polygonal sphere's silhouette error r(1 - cos(pi/64)).
-    glm::mat4 lightVP = fitLightViewProjection(scene, scene.lights[0]);
-    // Orthographic light: row i of proj*view is (2 / extent_i) times a unit axis, so the extent of the
-    // map in world units is 2 / |row|.
-    auto rowLength = [&](int r) {
-        return glm::length(glm::vec3(lightVP[0][r], lightVP[1][r], lightVP[2][r]));
-    };
-    double orthoWidth = 2.0 / std::min(rowLength(0), rowLength(1));
-    int res = int(sm.properties().getInt("resolution"));
-    int pcf = int(sm.properties().getInt("pcf"));
-    double texel = orthoWidth / res;
-    double band = texel * (1.5 + 0.5 * pcf) + radius * (1.0 - std::cos(M_PI / 64.0));
-
-    auto depth = h.targets().readDepth();
-    auto vis = h.targets().readVisibilityRGBA32F();
     glm::mat4 viewProj = cameraProjection(h.camera(), 1.0f) * cameraView(h.camera());
-    auto world = test::unprojectDepth(depth, kSize, kSize, viewProj);
-
-    int ground = 0, shadowedExpected = 0, shadowedGot = 0, judged = 0, wrong = 0;
-    for (int y = 1; y < kSize - 1; ++y)
-        for (int x = 1; x < kSize - 1; ++x) {
-            size_t i = size_t(y) * kSize + size_t(x);
-            if (world[i].w == 0.0f || std::abs(world[i].y) > 1e-2f) continue; // ground pixels only
-            ++ground;
-            double footprint = glm::length(glm::vec3(world[i + 1]) - glm::vec3(world[i]));
-            double margin = shadowMargin(glm::dvec3(world[i]), toLight, centre, radius);
-            bool expectShadow = margin < 0.0;
-            bool gotShadow = vis[i * 4] < 0.5f;
-            shadowedExpected += expectShadow;
-            shadowedGot += gotShadow;
-            if (std::abs(margin) <= band + footprint) continue; // the edge band: either answer is right
-            ++judged;
-            if (expectShadow != gotShadow) {
-                ++wrong;
-                if (wrong <= 5)
-                    ADD_FAILURE() << "pixel (" << x << "," << y << ") world " << world[i].x << ","
-                                  << world[i].z << " margin " << margin << " expected "
-                                  << (expectShadow ? "shadow" : "lit") << " got visibility " << vis[i * 4];
-            }
-        }
-    // The ellipse must be substantially in view, or the test proves nothing.
-    EXPECT_GT(ground, kSize * kSize / 4);
-    EXPECT_GT(shadowedExpected, 500) << "the analytic shadow hardly covers any pixel";
-    EXPECT_GT(judged, ground * 9 / 10) << "the tolerance band swallowed the image";
-    EXPECT_EQ(wrong, 0) << "pixels outside the edge band classified wrongly (band " << band
-                        << " world units)";
-    // Shadow area agrees with the ellipse's within the band's share of pixels.
-    EXPECT_NEAR(double(shadowedGot), double(shadowedExpected), 0.05 * shadowedExpected + 50);
+    test::judgeSphereShadow(h.scene(), test::shadowMapBand(h.scene(), sm.properties()),
+                            h.targets().readDepth(), h.targets().readVisibilityRGBA32F(), viewProj, kSize);
 }
 
 INSTANTIATE_TEST_SUITE_P(ShadowMap, SphereShadow, ::testing::ValuesIn(kCases),

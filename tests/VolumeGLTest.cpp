@@ -2,15 +2,18 @@
 // target means shadowing only (1 lit, 0 shadowed): beyond a point light's range, outside the scissor
 // rectangle of section 9.6.2, no volume is counted and nothing is shadowed; the light's range is a
 // lighting term (the colour gets no light there), not a shadow. The reference ray-casts without the
-// range, so on the lit ground there it says 1, and so must the technique.
+// range, so on the lit ground there it says 1, and so must the technique. And the closed form on GL
+// (tests/SphereShadowJudge.h), as tests/ShadowMapVkTest.cpp runs it on Vulkan.
 #include <iostream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "RenderedFrame.h"
+#include "SphereShadowJudge.h"
 #include "TestSupport.h"
 #include "scenes/Math.h"
+#include "techniques/TechniqueRegistry.h"
 #include "techniques/volume/VolumeGeometry.h"
 
 using namespace sb;
@@ -101,3 +104,44 @@ TEST(VolumeGLTest, OutsideTheScissorRectangleIsUnshadowed) {
         EXPECT_LT(insideWrong, 80) << spec << ": " << inside << " ground pixels inside";
     }
 }
+
+namespace {
+
+struct SphereCase {
+    const char* name;
+    const char* spec;
+    SubmitMode submit;
+};
+void PrintTo(const SphereCase& c, std::ostream* os) {
+    *os << c.name;
+}
+
+// The same cases tests/ShadowMapVkTest.cpp runs on Vulkan. `volume` is exact: its band is the polygonal
+// silhouette and the pixel footprint alone; far=depth_clamp keeps the camera's own far plane, so the
+// depth buffer unprojects with the camera's matrices.
+const SphereCase kSphereCases[] = {
+    {"volume_cpu_retained", "volume:far=depth_clamp", SubmitMode::Retained},
+    {"volume_vertex_instanced", "volume:far=depth_clamp:extrusion=vertex", SubmitMode::Instanced},
+    {"volume_zfail", "volume:far=depth_clamp:mode=zfail", SubmitMode::Retained},
+};
+
+class VolumeSphereShadow : public ::testing::TestWithParam<SphereCase> {};
+
+} // namespace
+
+TEST_P(VolumeSphereShadow, MatchesAnalyticEllipse) {
+    const SphereCase& tc = GetParam();
+    constexpr int kSphereSize = 384;
+    RunConfig cfg = test::quickConfig("sphere_plane", "top", kSphereSize, tc.submit);
+    cfg.sceneOptions.tessellation = 64;
+    cfg.sceneOptions.lightType = LightType::Directional;
+    Harness h(cfg);
+    auto volume = TechniqueRegistry::create(TechniqueSpec::parse(tc.spec));
+    h.prepare(*volume);
+    h.renderFrame(*volume);
+    test::judgeSphereShadow(h.scene(), 0.0, h.targets().readDepth(), h.targets().readVisibilityRGBA32F(),
+                            h.projection() * h.view(), kSphereSize);
+}
+
+INSTANTIATE_TEST_SUITE_P(Volume, VolumeSphereShadow, ::testing::ValuesIn(kSphereCases),
+                         [](const auto& p) { return std::string(p.param.name); });

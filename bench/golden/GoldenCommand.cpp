@@ -91,13 +91,25 @@ std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vecto
         row << "unsupported | " << retained.unsupported << " |";
         return row.str();
     }
-    size_t modes = 0, passed = 0;
+    size_t modes = 0, passed = 0, vulkanModes = 0, vulkanPassed = 0;
+    std::string vulkanWhy;
     for (size_t i = 0; i < cells.size(); ++i) {
         if (cells[i].technique != retained.technique) continue;
-        ++modes;
-        passed += verdicts[i].passed() && cells[i].ran();
+        const bool ok = verdicts[i].passed() && cells[i].ran();
+        if (!cells[i].vulkan()) {
+            ++modes;
+            passed += ok;
+        } else if (!cells[i].unsupported.empty()) {
+            vulkanWhy = cells[i].unsupported;
+        } else {
+            ++vulkanModes;
+            vulkanPassed += ok;
+        }
     }
-    row << passed << "/" << modes << " pass | ";
+    row << passed << "/" << modes << " pass; Vulkan "
+        << (vulkanModes ? std::to_string(vulkanPassed) + "/" + std::to_string(vulkanModes) + " pass"
+                        : "unsupported (" + vulkanWhy + ")")
+        << " | ";
     for (size_t l = 0; l < retained.lights.size(); ++l) {
         const AccuracyBound b = AccuracyBounds::derive(retained, l);
         std::ostringstream value;
@@ -120,7 +132,7 @@ void writeGoldens(const GoldenCli& cli, const std::vector<MatrixCell>& cells,
     for (const MatrixCell& cell : cells) {
         // An `auto` cell has no golden of its own: it is held to the chosen technique's.
         if (cell.mode != SubmitMode::Retained || !cell.failure.empty() ||
-            cell.technique == AutoResolver::kName)
+            cell.technique == AutoResolver::kName || cell.vulkan())
             continue;
         const std::string vis = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "visibility");
         const std::string col = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "colour");
@@ -163,7 +175,11 @@ std::string matrixHeader(int size) {
            std::to_string(size) + "x" + std::to_string(size) +
            ", its camera `mid` where the scene has one. *modes*: the submission modes whose cell passes "
            "every "
-           "check (image equal to retained's and to the golden, accuracy within the bound); *accuracy*: the "
+           "check (image equal to retained's and to the golden, accuracy within the bound), then the Vulkan "
+           "axis: the technique on Vulkan (lavapipe) in retained and instanced submission, each image held "
+           "to "
+           "the GL retained cell's and to the same golden, the retained one to the same bound, with the "
+           "validation layer on (immediate and display lists are GL's own); *accuracy*: the "
            "retained cell against the Embree reference, per light, and its bound (rules in "
            "bench/golden/AccuracyBounds.h). An unsupported cell gives the technique's reason.\n\n"
            "| technique | scene | modes | accuracy |\n|---|---|---|---|\n";
@@ -174,7 +190,7 @@ std::string exceptionList(const std::vector<std::vector<MatrixCell>>& rendered) 
     std::string out;
     for (const std::vector<MatrixCell>& cells : rendered)
         for (const MatrixCell& cell : cells) {
-            if (cell.mode != SubmitMode::Retained || !cell.ran() || cell.autoPick) continue;
+            if (cell.mode != SubmitMode::Retained || !cell.ran() || cell.autoPick || cell.vulkan()) continue;
             for (size_t l = 0; l < cell.lights.size(); ++l) {
                 const AccuracyBound b = AccuracyBounds::derive(cell, l);
                 if (b.rule == "exception") out += "- `" + b.cell + "`: " + b.why + "\n";
@@ -204,7 +220,7 @@ int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool
                 std::cout << verdicts[i].cell << ": FAILED\n";
                 for (const std::string& f : verdicts[i].failures) std::cout << "  " << f << "\n";
             }
-            if (cells[i].mode != SubmitMode::Retained) continue;
+            if (cells[i].mode != SubmitMode::Retained || cells[i].vulkan()) continue;
             rows += matrixRow(verdicts, cells, cells[i]) + "\n";
             written += cells[i].ran();
         }

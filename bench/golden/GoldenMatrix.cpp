@@ -9,6 +9,7 @@
 
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Harness.h"
+#include "bench/run/VulkanHarness.h"
 #include "bench/select/AutoResolver.h"
 #include "core/Error.h"
 #include "core/Paths.h"
@@ -42,11 +43,8 @@ size_t flippedRow(size_t index, int width, int height) {
     return (size_t(height) - 1 - y) * size_t(width) + x;
 }
 
-void readImages(Harness& harness, size_t lightCount, MatrixCell& cell) {
-    FrameTargets& targets = harness.targets();
-    const int w = targets.width(), h = targets.height();
-    const std::vector<float> vis = targets.readVisibilityRGBA32F();
-    const std::vector<unsigned char> rgba = targets.readColorRGBA8();
+void readImages(int w, int h, const std::vector<float>& vis, const std::vector<unsigned char>& rgba,
+                size_t lightCount, MatrixCell& cell) {
     const size_t pixels = size_t(w) * size_t(h);
     const size_t lights = std::min<size_t>(lightCount, 3);
     cell.visibility = {w, h, lights == 1 ? 1 : 3, std::vector<uint8_t>(pixels * (lights == 1 ? 1 : 3), 0)};
@@ -63,13 +61,16 @@ void readImages(Harness& harness, size_t lightCount, MatrixCell& cell) {
     cell.sanity = AccuracyMetrics::sanity(vis);
 }
 
-CellAccuracy judgeLight(AccuracyEvaluator& evaluator, Technique& technique, int light, const Scene& scene,
-                        const MatrixOptions& options) {
+AccuracyOptions optionsFor(int light, const MatrixOptions& options) {
     AccuracyOptions o;
     o.light = light;
     o.stability = false;
     o.referenceSamples = options.referenceSamples;
-    const AccuracyEvaluator::Sample s = evaluator.judgeFrame(technique, o, nullptr);
+    return o;
+}
+
+CellAccuracy scoreLight(const AccuracyEvaluator::Sample& s, int light, const Scene& scene,
+                        const MatrixOptions& options) {
     const int w = options.size, h = options.size;
     CellAccuracy a;
     a.hard = AccuracyMetrics::hard(s.technique, s.reference, s.mask, w, h);
@@ -110,10 +111,13 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
     harness.seekPath(kPathStep);
     harness.renderFrame(*technique);
     const size_t lights = harness.scene().lights.size();
-    readImages(harness, lights, cell);
+    readImages(harness.targets().width(), harness.targets().height(),
+               harness.targets().readVisibilityRGBA32F(), harness.targets().readColorRGBA8(), lights, cell);
     for (size_t l = 0; l < lights; ++l) {
         harness.seekPath(kPathStep); // each judged frame is the same frame of the path
-        cell.lights.push_back(judgeLight(evaluator, *technique, int(l), harness.scene(), options));
+        cell.lights.push_back(
+            scoreLight(evaluator.judgeFrame(*technique, optionsFor(int(l), options), nullptr), int(l),
+                       harness.scene(), options));
     }
     return cell;
 }
@@ -169,6 +173,99 @@ MatrixCell renderAutoCell(Harness& harness, AccuracyEvaluator& evaluator, std::o
     return cell;
 }
 
+MatrixCell unsupportedCell(const std::string& technique, const std::string& scene, SubmitMode mode,
+                           const std::string& api, const std::string& why) {
+    MatrixCell cell;
+    cell.technique = technique;
+    cell.scene = scene;
+    cell.mode = mode;
+    cell.api = api;
+    cell.unsupported = why;
+    return cell;
+}
+
+/// One Vulkan cell: rendered by `vulkan`, judged (retained mode) against `evaluator`'s GL reference of
+/// the same frame. A validation error fails the cell.
+MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator, const std::string& technique,
+                            const std::string& scene, const MatrixOptions& options) {
+    MatrixCell cell;
+    cell.technique = technique;
+    cell.scene = scene;
+    cell.mode = vulkan.config().submit;
+    cell.api = "vulkan";
+    std::unique_ptr<VulkanTechnique> t = TechniqueRegistry::createVulkan(TechniqueSpec{technique, {}});
+    const size_t errorsBefore = vulkan.context().validationErrors();
+    try {
+        vulkan.prepare(*t);
+    } catch (const Error& e) {
+        if (e.code() != ExitCode::Unsupported) throw;
+        cell.unsupported = e.what();
+        return cell;
+    }
+    vulkan.renderFrame(*t);
+    VulkanTargets& targets = vulkan.targets();
+    const std::vector<float> vis = targets.readVisibilityRGBA32F();
+    readImages(targets.width(), targets.height(), vis, targets.readColorRGBA8(), vulkan.scene().lights.size(),
+               cell);
+    if (cell.mode == SubmitMode::Retained)
+        for (size_t l = 0; l < vulkan.scene().lights.size(); ++l)
+            cell.lights.push_back(
+                scoreLight(evaluator.judgeVisibility(vis, optionsFor(int(l), options), nullptr), int(l),
+                           vulkan.scene(), options));
+    if (vulkan.context().validationErrors() > errorsBefore) {
+        const std::vector<std::string> messages = vulkan.takeValidationMessages();
+        cell.failure = "the Vulkan validation layer reported an error: " +
+                       (messages.empty() ? std::string("(no message kept)") : messages.back());
+    }
+    return cell;
+}
+
+/// The Vulkan axis of one scene (GoldenMatrix::renderScene).
+void renderVulkanCells(const std::string& scene, const std::string& camera,
+                       const std::vector<std::string>& techniques, const MatrixOptions& options,
+                       std::vector<MatrixCell>& cells) {
+    RunConfig gl = RunConfig::oneFrame(scene, camera, options.size, SubmitMode::Retained);
+    std::unique_ptr<Harness> judge;
+    std::unique_ptr<AccuracyEvaluator> evaluator;
+    for (SubmitMode mode : {SubmitMode::Retained, SubmitMode::Instanced}) {
+        RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
+        config.api = RunConfig::Api::Vulkan;
+        config.vulkan.validation = true;
+        std::unique_ptr<VulkanHarness> vulkan;
+        std::string refusal;
+        try {
+            vulkan = std::make_unique<VulkanHarness>(config);
+        } catch (const Error& e) {
+            if (e.code() != ExitCode::Unsupported) throw;
+            refusal = e.what(); // a scene in motion, or no Vulkan driver at all
+        }
+        if (vulkan && !judge) {
+            judge = std::make_unique<Harness>(gl);
+            evaluator = std::make_unique<AccuracyEvaluator>(*judge);
+        }
+        for (const std::string& technique : techniques) {
+            if (!vulkan) {
+                cells.push_back(unsupportedCell(technique, scene, mode, "vulkan", refusal));
+            } else if (technique == AutoResolver::kName) {
+                cells.push_back(
+                    unsupportedCell(technique, scene, mode, "vulkan",
+                                    "-t auto chooses among GL techniques (name one with --api vulkan)"));
+            } else if (!TechniqueRegistry::hasVulkan(technique)) {
+                cells.push_back(
+                    unsupportedCell(technique, scene, mode, "vulkan", technique + " has no Vulkan form yet"));
+            } else {
+                try {
+                    cells.push_back(renderVulkanCell(*vulkan, *evaluator, technique, scene, options));
+                } catch (const std::exception& e) {
+                    MatrixCell failed = unsupportedCell(technique, scene, mode, "vulkan", "");
+                    failed.failure = e.what();
+                    cells.push_back(std::move(failed));
+                }
+            }
+        }
+    }
+}
+
 } // namespace
 
 std::string MatrixCell::judgedAs() const {
@@ -176,7 +273,7 @@ std::string MatrixCell::judgedAs() const {
 }
 
 std::string MatrixCell::name() const {
-    return technique + "/" + scene + "/" + submitModeName(mode);
+    return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan() ? "/vulkan" : "");
 }
 
 std::vector<std::string> GoldenMatrix::builtinScenes() {
@@ -234,6 +331,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
             }
         }
     }
+    renderVulkanCells(scene, camera, techniques, options, cells);
     return cells;
 }
 

@@ -41,6 +41,10 @@ struct MatrixCell {
     /// The technique whose golden and bound hold the cell: the chosen one for `auto`.
     std::string judgedAs() const;
     SubmitMode mode = SubmitMode::Retained;
+    /// "gl", or "vulkan": the API axis. A Vulkan cell is held to the same golden and bound as the GL
+    /// cell of its technique and scene, and its image to the GL retained cell's.
+    std::string api = "gl";
+    bool vulkan() const { return api == "vulkan"; }
     std::string unsupported; ///< non-empty: the technique refused this scene, and why
     std::string failure;     ///< non-empty: the cell threw while rendering (a defect, not a refusal)
     Image8 visibility;       ///< light i in channel i (one channel for one light, else RGB)
@@ -48,7 +52,7 @@ struct MatrixCell {
     std::vector<float> visibilityFloat; ///< the raw read-back of the lights' channels, for the mode check
     std::vector<CellAccuracy> lights;
     NumericSanity sanity; ///< over the whole visibility read-back
-    /// "technique/scene/mode"
+    /// "technique/scene/mode", with "/vulkan" appended for a Vulkan cell
     std::string name() const;
     bool ran() const { return unsupported.empty() && failure.empty(); }
 };
@@ -72,6 +76,10 @@ public:
     /// modes in their table order; techniques in registry order, then `auto`: -t auto resolved on the
     /// retained harness (a fresh calibration at the matrix's size, 10% bound) and its choice rendered in
     /// every mode. No candidate within the bound makes the auto cell unsupported with the reason.
+    /// Then the Vulkan axis: every technique in Vulkan's two submission modes (retained, instanced),
+    /// rendered with the validation layer on (a validation error fails the cell) and judged against the
+    /// GL retained harness's reference; a technique without a Vulkan form, `auto` and a scene in motion
+    /// are unsupported cells with their reason.
     static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options);
 };
 

@@ -32,13 +32,15 @@ ImageDiffResult compareVisibility(const std::vector<float>& expected, const std:
 
 const MatrixCell* retainedOf(const std::vector<MatrixCell>& cells, const MatrixCell& cell) {
     for (const MatrixCell& c : cells)
-        if (c.technique == cell.technique && c.scene == cell.scene && c.mode == SubmitMode::Retained)
+        if (c.technique == cell.technique && c.scene == cell.scene && c.mode == SubmitMode::Retained &&
+            !c.vulkan())
             return &c;
     return nullptr;
 }
 
 void checkModes(const std::vector<MatrixCell>& cells, const MatrixCell& cell, CellVerdict& v) {
-    if (cell.mode == SubmitMode::Retained) return;
+    // Every other mode, and every Vulkan cell, against the GL retained cell of the technique.
+    if (cell.mode == SubmitMode::Retained && !cell.vulkan()) return;
     const MatrixCell* retained = retainedOf(cells, cell);
     if (!retained || !retained->ran()) {
         v.failures.push_back("runs in this mode but not in retained mode");
@@ -139,7 +141,7 @@ std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells
             v.failures.push_back("threw: " + cell.failure);
         } else if (!cell.unsupported.empty()) {
             v.unsupported = cell.unsupported;
-            if (cell.mode == SubmitMode::Retained && !cell.autoPick &&
+            if (cell.mode == SubmitMode::Retained && !cell.autoPick && !cell.vulkan() &&
                 std::filesystem::exists(goldenPath(goldenDir, cell.scene, cell.technique, "visibility")))
                 v.failures.push_back("refuses the scene but has a golden: " + cell.unsupported);
         } else {

@@ -30,8 +30,10 @@ void ImageWriter::write(const std::string& path, int width, int height, int chan
 }
 
 void ImageWriter::writeColor(const FrameTargets& targets, const std::string& path) {
-    int w = targets.width(), h = targets.height();
-    std::vector<unsigned char> rgba = targets.readColorRGBA8();
+    writeColor(targets.width(), targets.height(), targets.readColorRGBA8(), path);
+}
+
+void ImageWriter::writeColor(int w, int h, const std::vector<unsigned char>& rgba, const std::string& path) {
     std::vector<unsigned char> rgb(size_t(w) * size_t(h) * 3);
     for (int y = 0; y < h; ++y) // GL rows are bottom-up; images are top-down
         for (int x = 0; x < w; ++x)
@@ -42,8 +44,11 @@ void ImageWriter::writeColor(const FrameTargets& targets, const std::string& pat
 }
 
 void ImageWriter::writeVisibility(const FrameTargets& targets, int light, const std::string& path) {
-    int w = targets.width(), h = targets.height();
-    std::vector<float> vis = targets.readVisibilityRGBA32F();
+    writeVisibility(targets.width(), targets.height(), targets.readVisibilityRGBA32F(), light, path);
+}
+
+void ImageWriter::writeVisibility(int w, int h, const std::vector<float>& vis, int light,
+                                  const std::string& path) {
     std::vector<unsigned char> grey(size_t(w) * size_t(h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {

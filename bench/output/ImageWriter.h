@@ -1,6 +1,7 @@
 #pragma once
 // PNG output through OpenImageIO: --screenshot (colour) and --visibility (the visibility target).
 #include <string>
+#include <vector>
 
 #include "gl/FrameTargets.h"
 
@@ -12,6 +13,12 @@ public:
     static void writeColor(const FrameTargets& targets, const std::string& path);
     /// Visibility of light `light` as 8-bit grey (1 lit = white, 0 shadowed = black; values clamped).
     static void writeVisibility(const FrameTargets& targets, int light, const std::string& path);
+    /// The same from pixels already read back (either API's targets: rows bottom-up, RGBA8 colour and
+    /// 4 floats of visibility per pixel).
+    static void writeColor(int width, int height, const std::vector<unsigned char>& rgba,
+                           const std::string& path);
+    static void writeVisibility(int width, int height, const std::vector<float>& visibility, int light,
+                                const std::string& path);
     /// The up-front check of an image output (`option` names it in the message): a format OpenImageIO
     /// can write for the extension, a regular file or nothing, in a writable directory. Throws
     /// sb::Error(BadInput).

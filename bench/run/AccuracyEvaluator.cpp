@@ -71,11 +71,16 @@ bool lightArrives(const Light& light, const glm::vec3& p) {
 
 AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, const AccuracyOptions& o,
                                                         TraceStats* stats) {
-    const Scene& scene = mHarness.scene();
     mHarness.renderFrame(technique);
+    return judgeVisibility(mHarness.targets().readVisibilityRGBA32F(), o, stats);
+}
+
+AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> visibilityRgba,
+                                                             const AccuracyOptions& o, TraceStats* stats) {
+    const Scene& scene = mHarness.scene();
     followCasters(); // the reference traces the scene as this frame drew it
     Sample s;
-    s.techniqueRgba = mHarness.targets().readVisibilityRGBA32F();
+    s.techniqueRgba = std::move(visibilityRgba);
     s.technique = AccuracyMetrics::channel(s.techniqueRgba, o.light);
     GBuffer g =
         mGBuffer->render(mHarness.submitter(), mHarness.programs(), mHarness.projection() * mHarness.view());
@@ -144,6 +149,25 @@ void AccuracyEvaluator::measureStability(Technique& technique, const AccuracyOpt
 }
 
 AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyOptions& o) {
+    AccuracyResult r = start(o);
+    mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
+    const Sample base = judgeFrame(technique, o, &r.reference);
+    score(base, o, r);
+    if (mHarness.moving())
+        measurePath(technique, o, r); // perturbing one frame of a moving scene would measure its motion
+    else if (o.stability)
+        measureStability(technique, o, base, r);
+    return r;
+}
+
+AccuracyResult AccuracyEvaluator::evaluateVisibility(std::vector<float> visibilityRgba,
+                                                     const AccuracyOptions& o) {
+    AccuracyResult r = start(o);
+    score(judgeVisibility(std::move(visibilityRgba), o, &r.reference), o, r);
+    return r;
+}
+
+AccuracyResult AccuracyEvaluator::start(const AccuracyOptions& o) const {
     const Scene& scene = mHarness.scene();
     if (o.light < 0 || size_t(o.light) >= scene.lights.size())
         throw Error("accuracy: light " + std::to_string(o.light) + " does not exist (scene '" + scene.name +
@@ -151,8 +175,11 @@ AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyO
     AccuracyResult r;
     r.light = o.light;
     r.softReference = scene.lights[size_t(o.light)].isArea();
-    mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
-    Sample base = judgeFrame(technique, o, &r.reference);
+    return r;
+}
+
+void AccuracyEvaluator::score(const Sample& base, const AccuracyOptions& o, AccuracyResult& r) const {
+    const Scene& scene = mHarness.scene();
     uint64_t evaluated = std::count(base.mask.begin(), base.mask.end(), uint8_t(1));
     if (evaluated == 0)
         throw Error("accuracy: no pixel of scene '" + scene.name + "' shows geometry facing light " +
@@ -163,11 +190,6 @@ AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyO
     r.hard = AccuracyMetrics::hard(base.technique, base.reference, base.mask, mHarness.config().width,
                                    mHarness.config().height);
     r.soft = AccuracyMetrics::soft(base.technique, base.reference, base.mask);
-    if (mHarness.moving())
-        measurePath(technique, o, r); // perturbing one frame of a moving scene would measure its motion
-    else if (o.stability)
-        measureStability(technique, o, base, r);
-    return r;
 }
 
 void AccuracyEvaluator::measurePath(Technique& technique, const AccuracyOptions& o, AccuracyResult& r) {

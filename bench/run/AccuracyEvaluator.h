@@ -78,6 +78,10 @@ public:
     /// The technique must have been prepared on this harness (Harness::measure does it). Restores the
     /// harness's camera shift and lights afterwards.
     AccuracyResult evaluate(Technique& technique, const AccuracyOptions& options);
+    /// The same judgement of one frame's visibility rendered by another API for this harness's
+    /// configuration (bench accuracy --api vulkan): hard and soft metrics and the numeric sanity, no
+    /// stability (the perturbations would have to be rendered by that API too) and no path.
+    AccuracyResult evaluateVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options);
 
     /// One judged image: the technique's and the reference's visibility of the light, and the mask.
     struct Sample {
@@ -86,8 +90,17 @@ public:
         std::vector<float> techniqueRgba; ///< the whole read-back, for the numeric sanity check
     };
     Sample judgeFrame(Technique& technique, const AccuracyOptions& options, TraceStats* stats);
+    /// The same judgement of a visibility read-back rendered elsewhere (RGBA per pixel, rows bottom-up,
+    /// the harness's size and camera): another API's frame of the same configuration (bench accuracy
+    /// --api vulkan, the matrix's Vulkan cells) against this harness's G-buffer and reference.
+    Sample judgeVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options,
+                           TraceStats* stats);
 
 private:
+    /// The result's light fields; throws for a light the scene does not have.
+    AccuracyResult start(const AccuracyOptions& options) const;
+    /// Hard, soft and sanity metrics of `base` into `result`; throws when no pixel can be judged.
+    void score(const Sample& base, const AccuracyOptions& options, AccuracyResult& result) const;
     uint64_t techniqueChanges(const Sample& a, const Sample& b) const;
     void measureStability(Technique& technique, const AccuracyOptions& options, const Sample& base,
                           AccuracyResult& result);

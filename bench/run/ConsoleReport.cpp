@@ -6,9 +6,11 @@
 #include <ostream>
 #include <string>
 
+#include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/SceneLoader.h"
 #include "techniques/TechniqueRegistry.h"
+#include "vk/VulkanContext.h"
 
 namespace sb {
 
@@ -34,16 +36,19 @@ std::string effectsText(EffectMask m) {
 } // namespace
 
 void ConsoleReport::printHeader(std::ostream& os, const Harness& h) {
-    const Context& c = h.context();
-    const RunConfig& cfg = h.config();
-    const size_t layout = h.scene().countLayoutInstances();
-    os << "backend   " << backendName(c.backend()) << (c.deviceName.empty() ? "" : " (" + c.deviceName + ")")
-       << "\n"
-       << "renderer  " << c.renderer << "\n"
-       << "GL        " << c.version << "\n"
-       << "scene     " << h.scene().name << ": " << layout << " instances, scale " << cfg.sceneOptions.scale
-       << ", " << h.scene().totalTriangles() << " triangles, camera " << cfg.camera << ", " << cfg.width
-       << "x" << cfg.height << ", submit " << submitModeName(cfg.submit) << "\n"
+    printHeader(os, h.rowSource());
+}
+
+void ConsoleReport::printHeader(std::ostream& os, const RowSource& h) {
+    const RunConfig& cfg = h.config;
+    const size_t layout = h.scene.countLayoutInstances();
+    const bool vulkan = h.api == "vulkan";
+    os << "backend   " << h.backend << (h.device.empty() || vulkan ? "" : " (" + h.device + ")") << "\n"
+       << (vulkan ? "device    " : "renderer  ") << h.renderer << "\n"
+       << (vulkan ? "Vulkan    " + h.apiVersion + ", " + h.vendor : "GL        " + h.glVersion) << "\n"
+       << "scene     " << h.scene.name << ": " << layout << " instances, scale " << cfg.sceneOptions.scale
+       << ", " << h.scene.totalTriangles() << " triangles, camera " << cfg.camera << ", " << cfg.width << "x"
+       << cfg.height << ", submit " << submitModeName(cfg.submit) << "\n"
        << "frames    " << (cfg.seconds > 0 ? fmt("%.1f s", cfg.seconds) : std::to_string(cfg.frames))
        << " after " << cfg.warmup << " warm-up\n";
 }
@@ -58,13 +63,18 @@ void ConsoleReport::printTimerVerdict(std::ostream& os, const TimerVerdict& v) {
 
 void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::vector<RunResult>& results,
                                int rounds) {
+    printTable(os, h.timerVerdict(), results, rounds);
+}
+
+void ConsoleReport::printTable(std::ostream& os, const TimerVerdict& verdict,
+                               const std::vector<RunResult>& results, int rounds) {
     if (results.empty()) return;
     const size_t perRound = roundSize(results, rounds);
-    const bool gpu = h.timerVerdict().checked && h.timerVerdict().trusted;
+    const bool gpu = verdict.checked && verdict.trusted;
     // Announced before the table: the verdict printed at the start no longer holds.
-    if (h.timerVerdict().revoked) {
+    if (verdict.revoked) {
         os << "\n";
-        printTimerVerdict(os, h.timerVerdict());
+        printTimerVerdict(os, verdict);
     }
     const bool several = results.size() > perRound;
     TextColumns table;
@@ -142,6 +152,10 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
         os << info.name << "  " << info.description << "\n";
         os << "  effects:  " << effectsText(info.effects) << "\n";
         os << "  passes:   " << join(info.passes, ", ") << "\n";
+        os << "  apis:     "
+           << (TechniqueRegistry::hasVulkan(info.name) ? "gl, vulkan"
+                                                       : "gl (no Vulkan form: --api vulkan exits 3)")
+           << "\n";
         if (!info.quality.empty())
             os << "  sweep:    " << join(info.quality, "; ", [](const QualityKnob& k) {
                 return k.property + " " + join(k.values, "/");
@@ -156,6 +170,21 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
     }
     os << "scenes: ";
     os << join(SceneLoader::listBuiltinScenes(), ", ") << "\n";
+    printVulkanDevices(os);
+}
+
+void ConsoleReport::printVulkanDevices(std::ostream& os) {
+    // --api vulkan --vk-device N picks one of these; a machine without a Vulkan driver says so here
+    // and runs GL as before.
+    try {
+        const std::vector<VulkanDeviceInfo> devices = VulkanContext::listDevices();
+        os << "vulkan devices (--api vulkan --vk-device N; default: lavapipe, else 0):\n";
+        for (const VulkanDeviceInfo& d : devices)
+            os << "  " << d.index << "  " << d.name << " (" << d.type << ", Vulkan " << d.apiVersion << ", "
+               << d.driver << ")\n";
+    } catch (const Error& e) {
+        os << "vulkan devices: none (" << e.what() << ")\n";
+    }
 }
 
 } // namespace sb

@@ -14,6 +14,8 @@ namespace sb {
 class ConsoleReport {
 public:
     static void printHeader(std::ostream& os, const Harness& harness);
+    /// Either API's run (bench/run/RowSource.h).
+    static void printHeader(std::ostream& os, const RowSource& run);
     static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
     /// The table, one row per measurement. `results` holds `rounds` rounds of the same techniques in
     /// the same order (--repeat; one round without it); with several rounds a column says which. The
@@ -22,6 +24,9 @@ public:
     /// Measurement::addRound), so the console and the rows never disagree.
     static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results,
                            int rounds = 1);
+    /// The same with the run's timer verdict given (either API).
+    static void printTable(std::ostream& os, const TimerVerdict& verdict,
+                           const std::vector<RunResult>& results, int rounds = 1);
     /// After --repeat K: `results` holds K rounds of the same techniques in the same order; prints each
     /// technique's median over the rounds and its ratio to the first technique, taken per round (runs
     /// next to each other) and summarised as median [min, max]: the median of the rows'
@@ -32,6 +37,8 @@ public:
                                    const std::vector<std::pair<RunResult, AccuracyResult>>& results);
     /// `bench --list`: techniques with effects, passes, properties (name, type, default, range).
     static void printTechniqueList(std::ostream& os);
+    /// The Vulkan devices the loader sees (indices for --vk-device), or why there are none.
+    static void printVulkanDevices(std::ostream& os);
 };
 
 } // namespace sb

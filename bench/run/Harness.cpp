@@ -76,6 +76,22 @@ Harness::Harness(const RunConfig& config) : mConfig(config) {
 
 Harness::~Harness() = default;
 
+RowSource Harness::rowSource() const {
+    const Context& c = *mContext;
+    return {mConfig,
+            mScene,
+            mContentHash,
+            moving(),
+            mVerdict,
+            "gl",
+            c.version,
+            c.renderer,
+            c.version,
+            c.vendor,
+            backendName(c.backend()),
+            c.deviceName};
+}
+
 void Harness::setCamera(const CameraPreset& camera) {
     mCamera = camera;
     updateFrameData();

@@ -19,6 +19,7 @@
 
 #include "bench/run/FrameSample.h"
 #include "bench/run/InjectedPass.h"
+#include "bench/run/RowSource.h"
 #include "bench/run/RunConfig.h"
 #include "bench/run/Statistics.h"
 #include "bench/run/TimerTrust.h"
@@ -93,6 +94,8 @@ public:
     /// or the calibration's before the first run.
     const TimerVerdict& timerVerdict() const { return mVerdict; }
     double sceneLoadMs() const { return mSceneLoadMs; }
+    /// What the rows and the console header take from this run (api "gl").
+    RowSource rowSource() const;
 
     /// Checks capabilities (throws ExitCode::Unsupported naming the missing one), then setScene and
     /// compile.

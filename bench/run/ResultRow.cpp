@@ -75,25 +75,30 @@ CsvRow ResultRow::effectColumns(const EffectCoverage& coverage) {
 }
 
 CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment& env) {
-    const RunConfig& c = h.config();
-    const Scene& scene = h.scene();
-    const Context& ctx = h.context();
-    const TimerVerdict& v = h.timerVerdict();
+    return build(h.rowSource(), r, env);
+}
+
+CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environment& env) {
+    const RunConfig& c = h.config;
+    const Scene& scene = h.scene;
+    const TimerVerdict& v = h.verdict;
     const EffectCoverage coverage = EffectCoverage::of(scene.effects, r.effectsProduced);
     CsvRow row{
         {"timestamp", env.timestamp},
         {"git_commit", env.gitCommit},
         {"status", "ok"},
-        {"renderer", ctx.renderer},
-        {"gl_version", ctx.version},
-        {"gl_vendor", ctx.vendor},
-        {"backend", backendName(ctx.backend())},
-        {"device", ctx.deviceName},
+        {"api", h.api},
+        {"api_version", h.apiVersion},
+        {"renderer", h.renderer},
+        {"gl_version", h.glVersion},
+        {"gl_vendor", h.vendor},
+        {"backend", h.backend},
+        {"device", h.device},
         {"cpu_model", env.cpuModel},
         {"hw_threads", std::to_string(env.hardwareThreads)},
         {"lp_num_threads", env.lpNumThreads},
         {"scene", scene.name},
-        {"scene_hash", h.contentHash()},
+        {"scene_hash", h.contentHash},
         {"scene_triangles", std::to_string(scene.totalTriangles())},
         {"technique", r.technique},
         {"properties", r.properties},
@@ -117,7 +122,7 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
         {"motion", scene.motion ? scene.motion->describe() : ""},
         {"path_frames", scene.motion ? std::to_string(scene.motion->frames) : ""},
         {"path_time", !scene.motion ? ""
-                      : h.moving()  ? "moving"
+                      : h.moving    ? "moving"
                                     : csvNumber(c.pathTime)},
         {"frames", std::to_string(r.wall.n)},
         {"warmup", std::to_string(c.warmup)},
@@ -126,8 +131,8 @@ CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment&
     for (auto& column : rest) row.push_back(std::move(column));
     addStats(row, "wall_ms", r.wall);
     addStats(row, "cpu_submit_ms", r.cpuSubmit);
-    row.emplace_back("motion_ms_median", h.moving() ? csvNumber(r.motion.median) : "");
-    row.emplace_back("motion_ms_p95", h.moving() ? csvNumber(r.motion.p95) : "");
+    row.emplace_back("motion_ms_median", h.moving ? csvNumber(r.motion.median) : "");
+    row.emplace_back("motion_ms_p95", h.moving ? csvNumber(r.motion.p95) : "");
     row.emplace_back("fps_median", csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
     row.emplace_back("timer_verdict", v.label());
     row.emplace_back("timer_reason", v.reason);

@@ -12,6 +12,8 @@ namespace sb {
 
 struct ResultRow {
     static CsvRow build(const Harness& harness, const RunResult& result, const Environment& env);
+    /// The same row from either API's run (bench/run/RowSource.h).
+    static CsvRow build(const RowSource& source, const RunResult& result, const Environment& env);
     /// effects_requested, effects_delivered, effects_missing: in every row, measured or refused.
     static CsvRow effectColumns(const EffectCoverage& coverage);
 };

@@ -10,6 +10,7 @@
 #include "scenes/SceneOptions.h"
 #include "techniques/PropertySet.h"
 #include "techniques/submit/Submitter.h"
+#include "vk/VulkanContext.h"
 
 namespace sb {
 
@@ -26,6 +27,11 @@ struct RunConfig {
     double seconds = 0.0; ///< measure for this long instead (at least kMinFrames frames)
     int warmup = 5;       ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)
     ContextOptions context;
+    /// The API the frames are rendered with (--api): GL (the context above) or Vulkan (the device of
+    /// `vulkan`; bench/run/VulkanHarness.h).
+    enum class Api { GL, Vulkan };
+    Api api = Api::GL;
+    VulkanOptions vulkan;
     std::string csvPath;         ///< --csv: append one row per technique
     std::string samplesPath;     ///< --samples: per-frame samples
     std::string screenshotPath;  ///< --screenshot: colour PNG (technique name inserted when several)

@@ -73,6 +73,7 @@ void requireNonEmptyPaths(const CLI::App& app) {
 struct RawOptions {
     std::vector<std::string> techniques;
     std::string size = "1024x1024", submit = "retained", backend = "auto", light, format = "console";
+    std::string api = "gl";
     int instances = -1, tess = -1;
     int64_t seed = -1;
     double maxMemoryGiB = 0.0;
@@ -113,6 +114,14 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
     app.add_option("--seconds", c.seconds, "measure for this many seconds instead of --frames");
     app.add_option("--warmup", c.warmup, "discarded warm-up frames")->capture_default_str();
+    app.add_option("--api", raw.api,
+                   "gl or vulkan: the API the frames are drawn with (vulkan: lavapipe by default; techniques "
+                   "with a Vulkan form in --list)")
+        ->capture_default_str();
+    app.add_option("--vk-device", c.vulkan.device,
+                   "--api vulkan: device index as --list shows (default: lavapipe, else the first)");
+    app.add_flag("--vk-validation", c.vulkan.validation,
+                 "--api vulkan: Khronos validation layer on, its messages printed (slows every frame)");
     app.add_option("--backend", raw.backend, backendNames())->capture_default_str();
     app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
     app.add_flag("--window", raw.window, "on-screen viewer (GLFW) instead of a measurement");
@@ -221,6 +230,13 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
                     formatNumber(kMaxMemoryGiB) + "]");
     c.sceneOptions.memoryLimitBytes = uint64_t(raw.maxMemoryGiB * double(1ull << 30));
     c.checkTimer = !raw.noTimerCheck;
+    if (raw.api != "gl" && raw.api != "vulkan") throw Error("--api " + raw.api + ": expected gl or vulkan");
+    c.api = raw.api == "vulkan" ? RunConfig::Api::Vulkan : RunConfig::Api::GL;
+    if (c.vulkan.device < -1)
+        throw Error("--vk-device " + std::to_string(c.vulkan.device) + ": expected a device index 0, 1, ...");
+    if (c.api == RunConfig::Api::GL && (c.vulkan.device != -1 || c.vulkan.validation))
+        throw Error(std::string(c.vulkan.device != -1 ? "--vk-device" : "--vk-validation") +
+                    " applies to --api vulkan only");
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // Per-instance data as the Submitter provides it (techniques/Submitter.h):
 //  - immediate, displaylist, retained: uniforms at fixed locations, set before each draw;
-//  - instanced (SB_INSTANCED): per-instance vertex attributes (divisor 1).
+//  - instanced (SB_INSTANCED): per-instance vertex attributes (divisor 1);
+//  - Vulkan per-instance draws (VULKAN): the push constants of common/push.glsl.
 // Instances have uniform scale only, so mat3(model) transforms normals up to length.
 // The colour's w is the 1-based object id, negative for an instance that receives no shadow
 // (Submitter::shadowSignedId): read the id as abs(w).
@@ -11,6 +12,11 @@ layout(location = 4) in mat4 aModel; // locations 4..7
 layout(location = 8) in vec4 aColorId;
 mat4 instanceModel() { return aModel; }
 vec4 instanceColorId() { return aColorId; }
+#elif defined(VULKAN)
+// Vulkan per-instance draws: the instance in the push constants (common/push.glsl).
+#include "common/push.glsl"
+mat4 instanceModel() { return uPush.model; }
+vec4 instanceColorId() { return uPush.colorId; }
 #else
 layout(location = 0) uniform mat4 uModel;
 layout(location = 4) uniform vec4 uColorId;

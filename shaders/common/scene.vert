@@ -6,7 +6,14 @@ out vec3 vWorldPos;
 out vec3 vNormal;
 out vec4 vColorId;
 #ifdef SHADOW_MAP
+#ifdef VULKAN
+// The head of shadowmap/lighting.frag's block (techniques/shadowmap/ShadowMapVulkan.h).
+layout(std140, set = 1, binding = 0) uniform ShadowMapBlock {
+    mat4 uShadowMatrix[LIGHT_COUNT];
+};
+#else
 layout(location = 8) uniform mat4 uShadowMatrix[LIGHT_COUNT]; // bias * lightProj * lightView
+#endif
 out vec4 vShadowCoord[LIGHT_COUNT];
 #endif
 

@@ -9,8 +9,16 @@ layout(triangle_strip, max_vertices = 18) out;
 
 in vec4 vWorld[];
 
+#ifdef VULKAN
+// One slot per cube of a dynamic uniform buffer (techniques/shadowmap/CubeMapVulkan.h).
+layout(std140, set = 1, binding = 0) uniform CubePass {
+    mat4 uFaceViewProj[6];
+    int uLayerBase;
+};
+#else
 layout(location = 12) uniform mat4 uFaceViewProj[6]; // techniques/shadowmap/CubeFaces.h
 layout(location = 18) uniform int uLayerBase;
+#endif
 
 // Bit k: outside plane k (x < -w, x > w, y < -w, y > w, z < -w, z > w).
 uint outcode(vec4 p) {

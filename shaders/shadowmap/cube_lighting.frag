@@ -12,7 +12,11 @@
 #include "shadowmap/omni_lighting.glsl"
 
 #ifdef OMNI_MAPS
+#ifdef VULKAN
+layout(set = 1, binding = 2) uniform samplerCubeArrayShadow uCubeMaps;
+#else
 layout(binding = 1) uniform samplerCubeArrayShadow uCubeMaps;
+#endif
 
 float omniVisibility(int light, int cube, vec3 d, vec2 nearFar) {
     vec3 a = abs(d);

@@ -23,20 +23,35 @@ in vec4 vShadowCoord[LIGHT_COUNT];
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
-#ifdef HW_COMPARE
-layout(binding = 0) uniform sampler2DArrayShadow uShadowMap;
+#ifdef VULKAN
+// Set 1 (techniques/shadowmap/ShadowMapVulkan.h): the uniforms GL sets by location, in one block whose
+// head common/scene.vert reads, and the map. std140: each float and vec2 of an array takes 16 bytes.
+layout(std140, set = 1, binding = 0) uniform ShadowMapBlock {
+    mat4 uShadowMatrix[LIGHT_COUNT];
+    float uTexelWorld[LIGHT_COUNT];
+    float uNormalOffset;
+    int uKernelTaps;
+    float uTargetHeight; // pixels: gl_FragCoord's y from the bottom, as on GL
+    vec2 uKernel[64];
+};
+#define SB_MAP_BINDING set = 1, binding = 1
 #else
-layout(binding = 0) uniform sampler2DArray uShadowMap;
+#define SB_MAP_BINDING binding = 0
+#endif
+#ifdef HW_COMPARE
+layout(SB_MAP_BINDING) uniform sampler2DArrayShadow uShadowMap;
+#else
+layout(SB_MAP_BINDING) uniform sampler2DArray uShadowMap;
 #endif
 
-#ifdef NORMAL_OFFSET
+#if defined(NORMAL_OFFSET) && !defined(VULKAN)
 // The same matrices common/scene.vert projects with (one uniform across both stages).
 layout(location = 8) uniform mat4 uShadowMatrix[LIGHT_COUNT];
 // World size of one map texel at light-space w = 1 (orthographic: everywhere; perspective: times w).
 layout(location = 12) uniform float uTexelWorld[LIGHT_COUNT];
 layout(location = 16) uniform float uNormalOffset; // in texels
 #endif
-#if defined(KERNEL_POISSON) || defined(KERNEL_ROTATED_GRID)
+#if (defined(KERNEL_POISSON) || defined(KERNEL_ROTATED_GRID)) && !defined(VULKAN)
 // The taps are uniforms, not defines, so that `taps` costs no program permutation.
 layout(location = 17) uniform int uKernelTaps;
 layout(location = 20) uniform vec2 uKernel[64]; // tap offsets in texels (radius applied)
@@ -74,6 +89,9 @@ vec4 lookupCoord(int i, vec3 n) {
 
 #ifdef KERNEL_ROTATED_GRID
 float interleavedGradientNoise(vec2 pixel) {
+#ifdef VULKAN
+    pixel.y = uTargetHeight - pixel.y; // GL's lower-left origin: the same noise on both APIs
+#endif
     return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 #endif

@@ -16,15 +16,29 @@ in vec4 vShadowCoord[LIGHT_COUNT];
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 (techniques/shadowmap/CubeMapVulkan.h): the uniforms GL sets by location, in one block whose
+// head common/scene.vert reads. std140: each ivec2 and vec2 of an array takes 16 bytes.
+layout(std140, set = 1, binding = 0) uniform ShadowMapBlock {
+    mat4 uShadowMatrix[LIGHT_COUNT];
+    ivec2 uMap[LIGHT_COUNT];       // (kind, layer)
+    vec2 uDepthRange[LIGHT_COUNT]; // omni maps: (near, far)
+};
+#else
 layout(location = 16) uniform ivec2 uMap[LIGHT_COUNT];       // (kind, layer)
 layout(location = 20) uniform vec2 uDepthRange[LIGHT_COUNT]; // omni maps: (near, far)
+#endif
 
 /// Visibility of light `light` at the fragment from its omni map (first layer `layer`), `fromLight`
 /// the vector from the light to the fragment, `nearFar` the map's depth range.
 float omniVisibility(int light, int layer, vec3 fromLight, vec2 nearFar);
 
 #ifdef FLAT_MAPS
+#ifdef VULKAN
+layout(set = 1, binding = 1) uniform sampler2DArrayShadow uFlatMaps;
+#else
 layout(binding = 0) uniform sampler2DArrayShadow uFlatMaps;
+#endif
 
 // As shaders/shadowmap/lighting.frag's visibility(), with hardware compare.
 float flatVisibility(int layer, vec4 coord) {

@@ -9,13 +9,26 @@ in vec3 vNormal;
 in vec4 vColorId;
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
+#ifdef VULKAN
+// Set 1 (techniques/volume/VolumeVulkan.h): GL's uniforms in one block. std140: each vec2 of the array
+// takes 16 bytes.
+layout(std140, set = 1, binding = 0) uniform VolumeAmbient {
+    ivec4 uLitRect[4];
+    vec2 uDepthRange[4];
+    float uTargetHeight; // pixels: gl_FragCoord's y from the bottom, as on GL
+};
+#else
 layout(location = 13) uniform ivec4 uLitRect[4];  // per light: pixels x0, y0 (inclusive), x1, y1 (exclusive)
 layout(location = 17) uniform vec2 uDepthRange[4]; // per light: window depth bounds of the light pass
+#endif
 
 // 1 when light i's pass does not run at this fragment (or there is no light i), else 0.
 float unshadowed(int i) {
     if (i >= frameLightCount()) return 1.0;
     ivec2 p = ivec2(gl_FragCoord.xy);
+#ifdef VULKAN
+    p.y = int(uTargetHeight - gl_FragCoord.y); // GL's lower-left origin: the rectangles are GL's
+#endif
     bool inRect = all(greaterThanEqual(p, uLitRect[i].xy)) && all(lessThan(p, uLitRect[i].zw));
     bool inDepth = gl_FragCoord.z >= uDepthRange[i].x && gl_FragCoord.z <= uDepthRange[i].y;
     return inRect && inDepth ? 0.0 : 1.0;

@@ -9,7 +9,13 @@ in vec3 vNormal;
 in vec4 vColorId;
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
+#ifdef VULKAN
+// The light index in the push constants (techniques/volume/VolumeVulkan.h).
+#include "common/push.glsl"
+#define uLightIndex uPush.ints.x
+#else
 layout(location = 12) uniform int uLightIndex;
+#endif
 
 void main() {
     vec3 n = normalize(vNormal);

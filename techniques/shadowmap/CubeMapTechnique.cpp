@@ -29,20 +29,23 @@ std::vector<PropertyDesc> declareProperties() {
 }
 } // namespace
 
-CubeMapTechnique::CubeMapTechnique()
-    : Technique({.name = "cubemap",
-                 .description = "omnidirectional shadow mapping: a depth cube map per point light",
-                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                            Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {P::kResolution, {"256", "512", "1024", "2048"}},
-                     P::pcfSweep(),
-                     P::biasConstantSweep(),
-                     P::biasSlopeSweep(),
-                 }}) {}
+TechniqueInfo CubeMapTechnique::describe() {
+    return {.name = "cubemap",
+            .description = "omnidirectional shadow mapping: a depth cube map per point light",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{"GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {P::kResolution, {"256", "512", "1024", "2048"}},
+                P::pcfSweep(),
+                P::biasConstantSweep(),
+                P::biasSlopeSweep(),
+            }};
+}
+
+CubeMapTechnique::CubeMapTechnique() : Technique(describe()) {}
 
 bool CubeMapTechnique::layeredAvailable(const Context& context) {
     return context.glMajor > 3 || (context.glMajor == 3 && context.glMinor >= 2);

@@ -41,6 +41,9 @@ namespace sb {
 class CubeMapTechnique final : public Technique {
 public:
     CubeMapTechnique();
+    /// The declaration (name, effects, passes, properties, quality knobs), shared with the Vulkan form
+    /// (CubeMapVulkan.h).
+    static TechniqueInfo describe();
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;

@@ -63,7 +63,7 @@ int rotatedGridSide(int taps) {
 
 /// The kernel's tap offsets in texels, `radius` applied: the Poisson disk scaled to the radius, or the
 /// unrotated n x n grid of cell centres covering the square [-radius, radius]^2.
-std::vector<glm::vec2> kernelOffsets(const std::string& kernel, int taps, float radius) {
+std::vector<glm::vec2> kernelTaps(const std::string& kernel, int taps, float radius) {
     std::vector<glm::vec2> out;
     if (kernel == "poisson") {
         for (const glm::vec2& p : PoissonDisk::generate(taps)) out.push_back(p * radius);
@@ -79,27 +79,29 @@ std::vector<glm::vec2> kernelOffsets(const std::string& kernel, int taps, float 
 
 } // namespace
 
-ShadowMapTechnique::ShadowMapTechnique()
-    : Technique(
-          {.name = "shadowmap",
-           .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
-           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                      Effect::MultipleLights,
-           .capabilities = {{"GL 4.5", 4, 5, ""}},
-           .passes = {"depth", "lighting"},
-           .properties = declareProperties(),
-           // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
-           .quality = {
-               {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
-               P::pcfSweep(),
-               P::biasConstantSweep(),
-               P::biasSlopeSweep(),
-               {kKernel, {"grid", "poisson", "rotated_grid"}},
-               {kTaps, {"8", "16", "32"}},
-               {kRadius, {"1", "1.5", "3"}},
-               {kNormalOffset, {"0", "1", "2", "4"}},
-               {kReceiverPlane, {"false", "true"}},
-           }}) {}
+TechniqueInfo ShadowMapTechnique::describe() {
+    return {.name = "shadowmap",
+            .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{"GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "lighting"},
+            .properties = declareProperties(),
+            // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
+            .quality = {
+                {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+                P::pcfSweep(),
+                P::biasConstantSweep(),
+                P::biasSlopeSweep(),
+                {kKernel, {"grid", "poisson", "rotated_grid"}},
+                {kTaps, {"8", "16", "32"}},
+                {kRadius, {"1", "1.5", "3"}},
+                {kNormalOffset, {"0", "1", "2", "4"}},
+                {kReceiverPlane, {"false", "true"}},
+            }};
+}
+
+ShadowMapTechnique::ShadowMapTechnique() : Technique(describe()) {}
 
 void ShadowMapTechnique::setScene(const Scene& scene) {
     mLights.setScene(scene, "shadowmap", FlatLightFits::kOmniAdvice);
@@ -137,7 +139,7 @@ void ShadowMapTechnique::compile(const CompileContext& ctx) {
     if (kernel == "grid") {
         lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
     } else {
-        mKernel = kernelOffsets(kernel, int(p.getInt(kTaps)), float(p.getFloat(kRadius)));
+        mKernel = kernelOffsets(p);
         lit[kernel == "poisson" ? "KERNEL_POISSON" : "KERNEL_ROTATED_GRID"] = "";
     }
     mNormalOffset = float(p.getFloat(kNormalOffset));
@@ -149,6 +151,12 @@ void ShadowMapTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
 }
 
+std::vector<glm::vec2> ShadowMapTechnique::kernelOffsets(const PropertySet& p) {
+    const std::string& kernel = p.getEnum(kKernel);
+    if (kernel == "grid") return {};
+    return kernelTaps(kernel, int(p.getInt(kTaps)), float(p.getFloat(kRadius)));
+}
+
 void ShadowMapTechnique::sceneChanged(const Scene& scene, uint32_t) {
     setScene(scene);
     fitTexels(scene);
@@ -156,26 +164,30 @@ void ShadowMapTechnique::sceneChanged(const Scene& scene, uint32_t) {
 
 void ShadowMapTechnique::fitTexels(const Scene& scene) {
     const PropertySet& p = properties();
-    mTexelWorld.clear();
-    for (const glm::mat4& vp : mLights.viewProj())
-        mTexelWorld.push_back(FlatLightFits::texelWorldSize(vp, mMaps.size()));
+    const double kernel = mKernel.empty() ? double(p.getInt(P::kPcf)) : p.getFloat(kRadius);
+    fitTexels(scene, mLights, mMaps.size(), kernel, mNormalOffset, mTexelWorld, mView);
+}
+
+void ShadowMapTechnique::fitTexels(const Scene& scene, const FlatLightFits& lights, int mapSize,
+                                   double kernelTexels, float normalOffset, std::vector<float>& texelWorld,
+                                   ViewCull& view) {
+    texelWorld.clear();
+    for (const glm::mat4& vp : lights.viewProj())
+        texelWorld.push_back(FlatLightFits::texelWorldSize(vp, mapSize));
     // What the lighting pass reads around a receiver's texel, in texels: the kernel's half-width (the
     // grid's pcf x pcf, the other kernels' radius), the normal offset, and two for the bilinear
     // compare's footprint and rounding. In world units at the farthest receiver (w = 1 for an
     // orthographic map; a spot's texels grow with the distance).
-    const double kernel = mKernel.empty() ? double(p.getInt(P::kPcf)) : p.getFloat(kRadius);
-    const float texels = float(kernel) + mNormalOffset + 2.0f;
-    mView.lights = &scene.lights;
-    mView.reach.receivers = Aabb{};
+    const float texels = float(kernelTexels) + normalOffset + 2.0f;
+    view.lights = &scene.lights;
+    view.reach.receivers = Aabb{};
     for (const Instance& inst : scene.instances)
         if (inst.receivesShadow && inst.mesh < scene.meshes.size())
-            mView.reach.receivers.extend(
-                transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
-    mView.margins.clear();
-    for (size_t i = 0; i < mLights.viewProj().size(); ++i) {
-        mView.margins.push_back(texels * mTexelWorld[i] *
-                                FlatLightFits::farthestW(mLights.viewProj()[i], mView.reach.receivers));
-    }
+            view.reach.receivers.extend(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+    view.margins.clear();
+    for (size_t i = 0; i < lights.viewProj().size(); ++i)
+        view.margins.push_back(texels * texelWorld[i] *
+                               FlatLightFits::farthestW(lights.viewProj()[i], view.reach.receivers));
 }
 
 void ShadowMapTechnique::renderDepth(FrameContext& ctx) {

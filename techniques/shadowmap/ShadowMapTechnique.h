@@ -39,6 +39,16 @@ namespace sb {
 class ShadowMapTechnique final : public Technique {
 public:
     ShadowMapTechnique();
+    /// The declaration (name, effects, passes, properties, quality knobs), shared with the Vulkan form
+    /// (ShadowMapVulkan.h).
+    static TechniqueInfo describe();
+    /// The kernel's tap offsets in texels for `p` (empty: the grid kernel, pcf x pcf, a define).
+    static std::vector<glm::vec2> kernelOffsets(const PropertySet& p);
+    /// Per light, the world size of a map texel at w = 1 (`texelWorld`), and `view`'s receivers and
+    /// margins: how far each light's shadow may reach beyond a caster's bounds through the filter,
+    /// `kernelTexels` + the normal offset + 2 texels at the farthest receiver.
+    static void fitTexels(const Scene& scene, const FlatLightFits& lights, int mapSize, double kernelTexels,
+                          float normalOffset, std::vector<float>& texelWorld, ViewCull& view);
     void setScene(const Scene& scene) override;
     /// The light fits, the culling bounds and what depends on the fits (texel sizes, cull margins).
     void sceneChanged(const Scene& scene, uint32_t changes) override;

@@ -44,6 +44,7 @@
 #include "techniques/volume/ShadowVolumeMesh.h"
 #include "techniques/volume/VolumeGeometry.h"
 #include "techniques/volume/VolumeMeshBuffers.h"
+#include "techniques/volume/VolumePlanner.h"
 
 namespace sb {
 
@@ -51,6 +52,8 @@ class VolumeTechnique final : public Technique {
 public:
     VolumeTechnique();
     ~VolumeTechnique() override;
+    /// The declaration (name, effects, passes, properties), shared with VolumeVulkan.
+    static TechniqueInfo describe();
     void setScene(const Scene& scene) override;
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
@@ -59,66 +62,14 @@ public:
 
     /// The camera projection with its far plane moved to infinity (Listing 9-2 plus the epsilon guard),
     /// from a glm::perspective-style matrix. Public for tests.
-    static glm::mat4 infiniteFrom(const glm::mat4& proj);
+    static glm::mat4 infiniteFrom(const glm::mat4& proj) { return VolumePlanner::infiniteFrom(proj); }
 
 private:
-    enum class Mode { ZFail, ZPass, Auto };
-    enum class Far { Infinite, DepthClamp, Finite };
-    struct Settings {
-        Mode mode = Mode::Auto;
-        Far far = Far::Infinite;
-        bool vertexExtrusion = false, directional = true, rangeCull = true, frustumCull = true,
-             scissor = true, finiteVolumes = false, boundedVolumes = true, depthBounds = false;
-        OpenEdgePolicy policy = OpenEdgePolicy::Multiplicity;
-    };
-    /// mCasters and mSceneBounds from where the scene's instances stand.
-    void placeCasters(const Scene& scene);
-    std::vector<Aabb> mMeshBounds; ///< per mesh, object space
-    struct Caster {
-        uint32_t instance = 0, mesh = 0;
-        glm::mat4 model{1.0f}, inverseModel{1.0f};
-        Aabb bounds; ///< world space
-        float scale = 1.0f;
-    };
-    /// One caster's draw for the current light.
-    struct Draw {
-        const Caster* caster = nullptr;
-        glm::vec4 lightObject{0.0f};
-        GLint first = 0;       ///< CPU path: into the stream buffer; vertex path: into the static IBO
-        GLsizei count = 0;     ///< CPU path: all of its volume
-        GLsizei capCount = 0;  ///< vertex path: caps drawn (0 or all)
-        GLsizei sideCount = 0; ///< vertex path
-        float extrusion = 0;   ///< world-space extrusion length of a finite volume (range or bounded)
-        bool zfail = true;
-    };
-    struct FrameStats {
-        double silhouetteEdges = 0, volumeTriangles = 0, rangeCulled = 0, capsCulled = 0, zpass = 0,
-               zfail = 0, unshadowedLights = 0;
-    };
-    struct View {
-        glm::mat4 viewProj{1.0f};
-        std::array<Plane, 5> frustum{};
-        std::array<glm::vec3, 4> nearRect{};
-        int width = 0, height = 0;
-    };
+    using Draw = VolumePlanner::Draw;
+    using FrameStats = VolumePlanner::FrameStats;
+    using View = VolumePlanner::View;
+    using LightRegion = VolumePlanner::LightRegion;
 
-    /// Where light i's pass runs this frame: its scissor rectangle {x0, y0, x1, y1} in pixels (the
-    /// viewport without scissoring, empty when the range is off screen) and its depth bounds.
-    struct LightRegion {
-        glm::ivec4 rect{0};
-        bool depthBounds = false;
-        glm::vec2 depth{0.0f, 1.0f};
-        bool empty() const { return rect.z <= rect.x || rect.w <= rect.y; }
-    };
-
-    Settings readSettings() const;
-    LightRegion regionOf(const Light& light, const FrameContext& ctx, const View& view,
-                         const glm::mat4& proj) const;
-    /// The policy buildVolume() gets for `mesh`: Closed for closed meshes, else the property's.
-    OpenEdgePolicy policyFor(const ShadowVolumeMesh& mesh) const;
-    /// bounded_volumes applies to this light (directional, scene not empty).
-    bool boundedFor(const Light& light) const;
-    void checkClosed(const Scene& scene) const;
     /// The ambient pass; the visibility target starts as 1 outside each light's region (no shadow
     /// there), 0 inside (the light pass adds 1 where the stencil count is 0).
     void renderAmbient(FrameContext& ctx, int lights);
@@ -129,11 +80,8 @@ private:
     void setStencilCounting(bool zfail) const;
     void readStencilQuery();
 
-    Settings mSettings;
+    VolumePlanner mPlanner; ///< settings, casters, regions and draw lists (shared with VolumeVulkan)
     const Scene* mScene = nullptr;
-    bool mHasNonReceivers = false; ///< the light pass then draws receivers and non-receivers apart
-    std::vector<Caster> mCasters;
-    Aabb mSceneBounds; ///< world space, every instance: the receivers a bounded volume must reach past
     VolumeMeshBuffers mBuffers;
     std::unique_ptr<FrameUniforms> mFrameUniforms; ///< created in compile(): needs a context
     const Program* mAmbientProgram = nullptr;
@@ -143,10 +91,7 @@ private:
     bool mHasDepthBounds = false;
 
     // Per-frame scratch, kept to avoid allocation in the measured frames.
-    std::vector<Draw> mDraws;
     std::array<LightRegion, kMaxLights> mRegions{};
-    std::vector<uint32_t> mStream;
-    VolumeIndices mVolume;
 
     // GL_SAMPLES_PASSED of the marking passes, read one frame late so the frame never waits on it.
     std::array<std::array<GLuint, kMaxLights>, 2> mQueries{};

@@ -1,0 +1,40 @@
+#include "techniques/none/NoneVulkan.h"
+
+#include <algorithm>
+
+#include "techniques/none/NoneTechnique.h"
+#include "techniques/vulkan/ScenePass.h"
+
+namespace sb {
+
+NoneVulkan::NoneVulkan() : VulkanTechnique(NoneTechnique().info()) {}
+
+NoneVulkan::~NoneVulkan() {
+    if (mLayout) vkDestroyPipelineLayout(mDevice, mLayout, nullptr);
+}
+
+void NoneVulkan::compile(const VulkanCompileContext& ctx) {
+    mDevice = ctx.context.device();
+    if (!mLayout) mLayout = createScenePipelineLayout(ctx);
+    Defines defines = ctx.submitter.defines();
+    defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    std::string key;
+    GraphicsPipelineDesc desc =
+        scenePipeline(ctx, "common/scene.vert", "common/lit.frag", defines, mLayout, key);
+    mPipeline.build(ctx.pipelines, key, desc, ctx.targets);
+    setPermutationKey(definesKey(defines));
+}
+
+void NoneVulkan::execute(VulkanFrameContext& ctx) {
+    ctx.passes.begin("lighting");
+    ctx.submitter.resetStats();
+    ctx.targets.beginPass(ctx.cmd);
+    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.get(ctx.targets));
+    ctx.frame.bind(ctx.cmd, mLayout, ctx.frameOffset);
+    ctx.submitter.draw(ctx.cmd, mLayout, DrawSet::All);
+    vkCmdEndRenderPass(ctx.cmd);
+    const SubmitStats& s = ctx.submitter.stats();
+    mCounters = {{"draw_calls", double(s.drawCalls)}, {"triangles", double(s.triangles)}};
+}
+
+} // namespace sb

@@ -1,0 +1,359 @@
+#include "techniques/shadowmap/CubeMapVulkan.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/Error.h"
+#include "techniques/common/ShadowWork.h"
+#include "techniques/shadowmap/CubeMapTechnique.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/shadowmap/VulkanDepthMaps.h"
+#include "techniques/vulkan/ScenePass.h"
+
+namespace sb {
+
+namespace {
+using P = ShadowMapProperties;
+constexpr const char* kLayered = "layered";
+
+/// std140 offsets of omni_lighting.glsl's block for `lights` lights: mat4 uShadowMatrix[], then
+/// ivec2 uMap[] and vec2 uDepthRange[], 16 bytes per element.
+struct BlockLayout {
+    explicit BlockLayout(uint32_t lights) : maps(64 * lights), ranges(80 * lights), size(96 * lights) {}
+    uint32_t maps, ranges, size;
+};
+
+/// cube_depth.geom's CubePass (std140): six face matrices and the cube's first layer; its first matrix
+/// is shadowmap/depth.vert's LightPass.
+constexpr uint32_t kFaceMatricesBytes = 6 * 64;
+constexpr uint32_t kCubePassBytes = kFaceMatricesBytes + 16;
+
+} // namespace
+
+CubeMapVulkan::CubeMapVulkan() : VulkanTechnique(CubeMapTechnique::describe()) {}
+
+CubeMapVulkan::~CubeMapVulkan() {
+    release();
+}
+
+void CubeMapVulkan::release() {
+    if (!mDevice) return;
+    for (VkFramebuffer f : mFlatFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
+    for (VkFramebuffer f : mFaceFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
+    mFlatFramebuffers.clear();
+    mFaceFramebuffers.clear();
+    vkDestroyFramebuffer(mDevice, mLayeredFramebuffer, nullptr);
+    vkDestroyImageView(mDevice, mCubesLayers, nullptr);
+    vkDestroyRenderPass(mDevice, mDepthPass, nullptr);
+    vkDestroySampler(mDevice, mSampler, nullptr);
+    vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
+    vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
+    mLayeredFramebuffer = VK_NULL_HANDLE;
+    mCubesLayers = VK_NULL_HANDLE;
+    mDepthPass = VK_NULL_HANDLE;
+    mSampler = VK_NULL_HANDLE;
+    mSets = DescriptorSets();
+    mDepthLayout = mLightingLayout = VK_NULL_HANDLE;
+    mFaceDepthPipeline = mLayeredDepthPipeline = VK_NULL_HANDLE; // owned by the pipeline cache
+    mCubes = VulkanImage();
+    mFlat = VulkanImage();
+    mPassSlots = VulkanBuffer();
+    mLightingBlock = VulkanBuffer();
+}
+
+void CubeMapVulkan::setScene(const Scene& scene) {
+    mLights.setScene(scene);
+    mCubeLights.clear();
+    for (const OmniLight& o : mLights.lights())
+        if (o.kind == OmniMapKind::Omni)
+            mCubeLights.push_back({o.point, CubeFaces(o.point.position, o.point.nearZ, o.point.farZ)});
+    mCulling.setScene(scene);
+    mOmniCulling.setScene(scene);
+}
+
+VkFramebuffer CubeMapVulkan::createFramebuffer(VkImageView view, uint32_t layers) {
+    return VulkanDepthMaps::framebuffer(mDevice, mDepthPass, view, uint32_t(mSize), layers);
+}
+
+void CubeMapVulkan::createMaps(VulkanContext& context) {
+    const VkFormat format = VulkanDepthMaps::format(context.physicalDevice());
+    // A kind the scene lacks gets a 1 x 1 stand-in (its lookups are compiled out, FLAT_MAPS/OMNI_MAPS).
+    const uint32_t cubeLayers = uint32_t(CubeFaces::kFaces * std::max(1, mCubeCount));
+    mCubes = VulkanDepthMaps::image(context, format, mCubeCount > 0 ? uint32_t(mSize) : 1u, cubeLayers, true);
+    mFlat = VulkanDepthMaps::image(context, format, mFlatCount > 0 ? uint32_t(mSize) : 1u,
+                       uint32_t(std::max(1, mFlatCount)), false);
+    mDepthPass = VulkanDepthMaps::renderPass(mDevice, format);
+    for (int i = 0; i < mFlatCount; ++i)
+        mFlatFramebuffers.push_back(createFramebuffer(mFlat.layerView(uint32_t(i)), 1));
+    if (mCubeCount == 0) return;
+    if (mLayered) {
+        VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        info.image = mCubes.image();
+        info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+        info.format = format;
+        info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, cubeLayers};
+        VulkanContext::check(vkCreateImageView(mDevice, &info, nullptr, &mCubesLayers),
+                             "vkCreateImageView (cubemap layers)");
+        mLayeredFramebuffer = createFramebuffer(mCubesLayers, cubeLayers);
+    } else {
+        for (uint32_t layer = 0; layer < cubeLayers; ++layer)
+            mFaceFramebuffers.push_back(createFramebuffer(mCubes.layerView(layer), 1));
+    }
+}
+
+void CubeMapVulkan::createDescriptors(VulkanContext& context) {
+    // As DepthLayers on GL: hardware compare (LEQUAL) with LINEAR, the four comparison results filtered.
+    mSampler = VulkanDepthMaps::sampler(mDevice, true);
+    // Set 1 of the depth passes: a dynamic slot per pass (CubePass, whose first matrix is LightPass).
+    // Set 1 of the lighting pass: the lights' block, the flat maps and the cube maps.
+    using D = DescriptorSets;
+    const VkShaderStageFlags vertexFragment = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    mSets = DescriptorSets(
+        mDevice,
+        {{D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT)},
+         {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertexFragment),
+          D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+          D::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
+        "cubemap");
+
+    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
+    mSlotStride = uint32_t((kCubePassBytes + align - 1) / align * align);
+    const uint32_t slots = uint32_t(std::max(1, mFlatCount + (CubeFaces::kFaces + 1) * mCubeCount));
+    mPassSlots = VulkanBuffer(context, VkDeviceSize(mSlotStride) * slots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    std::memset(mPassSlots.map(), 0, size_t(mSlotStride) * slots);
+    const BlockLayout block{uint32_t(mLights.shaderLightCount())};
+    mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    std::memset(mLightingBlock.map(), 0, block.size);
+
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mPassSlots.buffer(), kCubePassBytes);
+    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(), block.size);
+    mSets.writeImage(kLightingSet, 1, mSampler, mFlat.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeImage(kLightingSet, 2, mSampler, mCubes.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+}
+
+void CubeMapVulkan::writeBlocks() {
+    // The lighting pass's uniforms as OmniLightSet::setLightingUniforms(0, 1) sets them on GL: flat maps
+    // at their index, cubes by cube index.
+    char* base = static_cast<char*>(mLightingBlock.map());
+    const int n = mLights.shaderLightCount();
+    const BlockLayout block{uint32_t(n)};
+    std::vector<glm::mat4> matrices(size_t(n), glm::mat4(1.0f));
+    std::vector<glm::ivec4> maps(size_t(n), glm::ivec4(0));
+    std::vector<glm::vec4> ranges(size_t(n), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+    const auto& lights = mLights.lights();
+    for (size_t i = 0; i < lights.size() && i < size_t(n); ++i) {
+        const OmniLight& o = lights[i];
+        matrices[i] = o.shadowMatrix;
+        maps[i] = {int(o.kind), o.index, 0, 0}; // flat: flatBase 0 + index; omni: 1 layer-cube per index
+        ranges[i] = {o.point.nearZ, o.point.farZ, 0.0f, 0.0f};
+    }
+    std::memcpy(base, matrices.data(), 64 * size_t(n));
+    std::memcpy(base + block.maps, maps.data(), 16 * size_t(n));
+    std::memcpy(base + block.ranges, ranges.data(), 16 * size_t(n));
+
+    // The depth passes' matrices: Vulkan's depth range, no flip (VulkanFrameBlock::depthFromGl).
+    char* slots = static_cast<char*>(mPassSlots.map());
+    const glm::mat4 z = VulkanFrameBlock::depthFromGl();
+    for (const OmniLight& o : lights) {
+        if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
+        const glm::mat4 m = z * o.viewProj;
+        std::memcpy(slots + size_t(mSlotStride) * flatSlot(o.index), &m, sizeof m);
+    }
+    for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
+        glm::mat4 faces[CubeFaces::kFaces];
+        for (int f = 0; f < CubeFaces::kFaces; ++f) {
+            faces[f] = z * mCubeLights[cube].faces.viewProjection(f);
+            std::memcpy(slots + size_t(mSlotStride) * faceSlot(cube, f), &faces[f], sizeof(glm::mat4));
+        }
+        char* layered = slots + size_t(mSlotStride) * layeredSlot(cube);
+        std::memcpy(layered, faces, kFaceMatricesBytes);
+        const int32_t layerBase = CubeFaces::kFaces * int32_t(cube);
+        std::memcpy(layered + kFaceMatricesBytes, &layerBase, sizeof layerBase);
+    }
+}
+
+void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
+    release();
+    mDevice = ctx.context.device();
+    VkPhysicalDeviceFeatures features{};
+    vkGetPhysicalDeviceFeatures(ctx.context.physicalDevice(), &features); // VulkanContext enables these
+    if (!features.imageCubeArray)
+        throw Error("cubemap: the Vulkan device '" + ctx.context.info().name +
+                        "' has no imageCubeArray (samplerCubeArrayShadow); run it with --api gl",
+                    ExitCode::Unsupported);
+    const PropertySet& p = properties();
+    mSize = int(p.getInt(P::kResolution));
+    mLayered = p.getBool(kLayered) && features.geometryShader;
+    mCubeCount = mLights.omniCount();
+    mFlatCount = mLights.flatCount();
+    createMaps(ctx.context);
+    createDescriptors(ctx.context);
+    writeBlocks();
+
+    // Depth passes: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
+    mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
+    const Defines base = ctx.submitter.defines();
+    const std::string bias = "|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
+                             std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    auto depthState = [&](GraphicsPipelineDesc& d) {
+        d.depthBias = true;
+        d.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
+        d.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
+        d.colourAttachments = 0;
+        d.renderPass = mDepthPass;
+    };
+    std::string faceKey = "cubemap-depth" + bias;
+    GraphicsPipelineDesc face =
+        scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, faceKey);
+    depthState(face);
+    mFaceDepthPipeline = ctx.pipelines.get(faceKey, face);
+    if (mLayered) {
+        std::string layeredKey = "cubemap-layered-depth" + bias;
+        GraphicsPipelineDesc layered = scenePipeline(ctx, "shadowmap/cube_depth.vert", "shadowmap/depth.frag",
+                                                     base, mDepthLayout, layeredKey);
+        layered.geometry = ctx.shaders.get("shadowmap/cube_depth.geom", base, GL_GEOMETRY_SHADER);
+        layeredKey += "+shadowmap/cube_depth.geom";
+        depthState(layered);
+        mLayeredDepthPipeline = ctx.pipelines.get(layeredKey, layered);
+    }
+
+    // Lighting pass: the GL technique's defines, permutation for permutation.
+    Defines lit = ctx.defines(); // the depth passes have no shadow to apply
+    lit["SHADOW_MAP"] = "";
+    lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
+    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    if (mFlatCount > 0) lit["FLAT_MAPS"] = "";
+    if (mCubeCount > 0) lit["OMNI_MAPS"] = "";
+    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    std::string litKey = "cubemap-lighting|";
+    GraphicsPipelineDesc lighting =
+        scenePipeline(ctx, "common/scene.vert", "shadowmap/cube_lighting.frag", lit, mLightingLayout, litKey);
+    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
+    std::string key = definesKey(base) + "|" + definesKey(lit);
+    if (mLayered) key += "|layered:" + definesKey(base);
+    setPermutationKey(key);
+}
+
+void CubeMapVulkan::beginDepthPass(VulkanFrameContext& ctx, VkFramebuffer framebuffer, VkPipeline pipeline) {
+    VkClearValue clear{};
+    clear.depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = mDepthPass;
+    begin.framebuffer = framebuffer;
+    begin.renderArea.extent = {uint32_t(mSize), uint32_t(mSize)};
+    begin.clearValueCount = 1;
+    begin.pClearValues = &clear;
+    vkCmdBeginRenderPass(ctx.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {uint32_t(mSize), uint32_t(mSize)}};
+    vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
+    vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
+}
+
+void CubeMapVulkan::bindSlot(VulkanFrameContext& ctx, uint32_t slot) {
+    const uint32_t offset = mSlotStride * slot;
+    const VkDescriptorSet set = mSets.set(kDepthSet);
+    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &set, 1, &offset);
+}
+
+void CubeMapVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
+    // OmniLightSet::renderFlatMaps: each flat map cleared, its casters culled against its frustum.
+    for (const OmniLight& o : mLights.lights()) {
+        if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
+        beginDepthPass(ctx, mFlatFramebuffers[size_t(o.index)], mFaceDepthPipeline);
+        bindSlot(ctx, flatSlot(o.index));
+        const size_t kept = mCulling.cull(o.viewProj, DrawSet::Casters, CullPlanes::All, mKeep);
+        mCulled += mCulling.count(DrawSet::Casters) - kept;
+        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        vkCmdEndRenderPass(ctx.cmd);
+    }
+}
+
+void CubeMapVulkan::renderCubesLayered(VulkanFrameContext& ctx) {
+    // Every cube in the array belongs to a light that casts: the render pass clears them all.
+    beginDepthPass(ctx, mLayeredFramebuffer, mLayeredDepthPipeline);
+    for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
+        const Cube& c = mCubeLights[cube];
+        const size_t kept = mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
+        mCulled += mOmniCulling.casters() - kept;
+        if (kept == 0) continue;
+        bindSlot(ctx, layeredSlot(cube));
+        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mRange);
+        mFacesRendered += CubeFaces::kFaces;
+    }
+    vkCmdEndRenderPass(ctx.cmd);
+}
+
+void CubeMapVulkan::renderCubesSixPass(VulkanFrameContext& ctx) {
+    for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
+        const Cube& c = mCubeLights[cube];
+        mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
+        for (int f = 0; f < CubeFaces::kFaces; ++f) {
+            beginDepthPass(ctx, mFaceFramebuffers[size_t(CubeFaces::kFaces * int(cube) + f)],
+                           mFaceDepthPipeline);
+            mCulling.cull(c.faces.viewProjection(f), DrawSet::Casters, CullPlanes::All, mKeep);
+            size_t kept = 0;
+            for (size_t i = 0; i < mKeep.size(); ++i) kept += (mKeep[i] &= mRange[i]) ? 1 : 0;
+            mCulled += mCulling.count(DrawSet::Casters) - kept;
+            if (kept > 0) { // else the cleared face is the answer: nothing casts into it
+                bindSlot(ctx, faceSlot(cube, f));
+                ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+                ++mFacesRendered;
+            }
+            vkCmdEndRenderPass(ctx.cmd);
+        }
+    }
+}
+
+void CubeMapVulkan::renderDepth(VulkanFrameContext& ctx) {
+    if (mCubeCount == 0 && mFlatCount == 0) return; // no light casts: no depth work at all
+    if (mFlatCount > 0) renderFlatMaps(ctx);
+    if (mCubeCount > 0) {
+        if (mLayered)
+            renderCubesLayered(ctx);
+        else
+            renderCubesSixPass(ctx);
+    }
+}
+
+void CubeMapVulkan::renderLighting(VulkanFrameContext& ctx) {
+    ctx.targets.beginPass(ctx.cmd);
+    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingPipeline.get(ctx.targets));
+    ctx.frame.bind(ctx.cmd, mLightingLayout, ctx.frameOffset);
+    const VkDescriptorSet set = mSets.set(kLightingSet);
+    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0, nullptr);
+    ctx.submitter.draw(ctx.cmd, mLightingLayout, DrawSet::All);
+    vkCmdEndRenderPass(ctx.cmd);
+}
+
+void CubeMapVulkan::execute(VulkanFrameContext& ctx) {
+    // As GL sets its uniforms every frame: a scene in motion (sceneChanged -> setScene) moved the fits.
+    // The previous frame's fence has been waited for, so no slot is in flight.
+    writeBlocks();
+    mCulled = 0;
+    mFacesRendered = 0;
+    ctx.submitter.resetStats();
+    if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+        ctx.passes.skip("depth", reason);
+    } else {
+        ctx.passes.begin("depth");
+        renderDepth(ctx);
+    }
+    ctx.passes.begin("lighting");
+    renderLighting(ctx);
+    const SubmitStats& s = ctx.submitter.stats();
+    const double res = double(mSize);
+    const double maps = double(CubeFaces::kFaces * mLights.omniCount() + mLights.flatCount());
+    mCounters = {{"draw_calls", double(s.drawCalls)},
+                 {"triangles", double(s.triangles)},
+                 {"shadow_map_texels", res * res * maps},
+                 {"faces_rendered", double(mFacesRendered)},
+                 {"casters_culled", double(mCulled)},
+                 {"lights_skipped", double(mLights.skippedCount())},
+                 {"lights_unshadowed", double(mLights.unshadowedCount())}};
+}
+
+} // namespace sb

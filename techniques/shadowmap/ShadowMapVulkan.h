@@ -1,0 +1,71 @@
+#pragma once
+// `shadowmap` on Vulkan: ShadowMapTechnique's two passes with the same declaration, properties, light
+// fits (FlatLightFits), caster culling and shaders (shadowmap/depth.vert, common/scene.vert,
+// shadowmap/lighting.frag, their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
+//
+// Depth pass: one layer per shadowed light of a depth array image (X8_D24, the GL map's 24-bit depth,
+// so the same polygon-offset factors mean the same bias), each a render pass of its own that clears it,
+// the light's view-projection from a dynamic uniform buffer slot (LightPass), slope and constant depth
+// bias as glPolygonOffset(slope, constant). Lighting pass: the map through a depth-compare sampler
+// (hardware_compare) or a nearest one, and the uniforms GL sets by location in one block
+// (ShadowMapBlock). Directional and spot lights; a point light is refused as on GL.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "techniques/common/InstanceCulling.h"
+#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/vulkan/VulkanTechnique.h"
+#include "vk/DescriptorSets.h"
+#include "vk/VulkanBuffer.h"
+#include "vk/VulkanImage.h"
+
+namespace sb {
+
+class ShadowMapVulkan final : public VulkanTechnique {
+public:
+    ShadowMapVulkan();
+    ~ShadowMapVulkan() override;
+    void setScene(const Scene& scene) override;
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
+    void compile(const VulkanCompileContext& ctx) override;
+    void execute(VulkanFrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+private:
+    void release();
+    void createMaps(VulkanContext& context, int size, int layers);
+    void createDescriptors(VulkanContext& context);
+    void fitTexels(const Scene& scene);
+    void writeLightingBlock(float targetHeight);
+    void renderDepth(VulkanFrameContext& ctx);
+    void renderLighting(VulkanFrameContext& ctx);
+
+    VkDevice mDevice = VK_NULL_HANDLE;
+    FlatLightFits mLights;
+    InstanceCulling mCulling;
+    std::vector<uint8_t> mKeep;
+    size_t mCulled = 0;
+    int mSize = 0, mLayers = 0;
+    VulkanImage mMaps;
+    std::vector<VkFramebuffer> mFramebuffers; ///< per layer
+    VkRenderPass mDepthPass = VK_NULL_HANDLE;
+    VkSampler mSampler = VK_NULL_HANDLE;
+    VulkanBuffer mLightPass; ///< LightPass slots, one per light
+    uint32_t mLightStride = 0;
+    VulkanBuffer mLightingBlock; ///< ShadowMapBlock
+    static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
+    DescriptorSets mSets;
+    VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
+    VkPipeline mDepthPipeline = VK_NULL_HANDLE;
+    ScenePipeline mLightingPipeline;
+
+    std::vector<glm::vec2> mKernel;
+    std::vector<float> mTexelWorld;
+    float mNormalOffset = 0.0f;
+    bool mCull = true;
+    ViewCull mView;
+    Counters mCounters;
+};
+
+} // namespace sb

@@ -1,0 +1,107 @@
+#include "techniques/shadowmap/VulkanDepthMaps.h"
+
+#include "vk/VulkanContext.h"
+
+namespace sb {
+
+VkFormat VulkanDepthMaps::format(VkPhysicalDevice physical) {
+    const VkFormatFeatureFlags need = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                      VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                      VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+    VkFormatProperties p{};
+    vkGetPhysicalDeviceFormatProperties(physical, VK_FORMAT_X8_D24_UNORM_PACK32, &p);
+    return (p.optimalTilingFeatures & need) == need ? VK_FORMAT_X8_D24_UNORM_PACK32 : VK_FORMAT_D32_SFLOAT;
+}
+
+VulkanImage VulkanDepthMaps::image(VulkanContext& context, VkFormat format, uint32_t size, uint32_t layers,
+                                   bool cube) {
+    VulkanImageDesc d;
+    d.width = d.height = size;
+    d.layers = layers;
+    d.format = format;
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+              VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    d.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+    d.viewType = cube ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    d.cube = cube;
+    VulkanImage image(context, d);
+    context.submitNow([&](VkCommandBuffer cmd) {
+        transitionImage(cmd, image.image(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layers);
+        VkClearDepthStencilValue one{1.0f, 0};
+        VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, layers};
+        vkCmdClearDepthStencilImage(cmd, image.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1, &range);
+        transitionImage(cmd, image.image(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                        VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, layers);
+    });
+    return image;
+}
+
+VkRenderPass VulkanDepthMaps::renderPass(VkDevice device, VkFormat format) {
+    VkAttachmentDescription a{};
+    a.format = format;
+    a.samples = VK_SAMPLE_COUNT_1_BIT;
+    a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    a.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription sub{};
+    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    sub.pDepthStencilAttachment = &ref;
+    // Before: the previous frame's lighting pass read the map (write after read). After: this frame's
+    // lighting pass reads what the depth tests wrote.
+    VkSubpassDependency deps[2]{};
+    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    deps[0].dstSubpass = 0;
+    deps[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    deps[0].dstStageMask = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    deps[0].srcAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    deps[0].dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    deps[1].srcSubpass = 0;
+    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    deps[1].srcStageMask = VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    deps[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    deps[1].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.attachmentCount = 1;
+    info.pAttachments = &a;
+    info.subpassCount = 1;
+    info.pSubpasses = &sub;
+    info.dependencyCount = 2;
+    info.pDependencies = deps;
+    VkRenderPass pass = VK_NULL_HANDLE;
+    VulkanContext::check(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass (shadow map)");
+    return pass;
+}
+
+VkFramebuffer VulkanDepthMaps::framebuffer(VkDevice device, VkRenderPass pass, VkImageView view, uint32_t size,
+                                           uint32_t layers) {
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = pass;
+    info.attachmentCount = 1;
+    info.pAttachments = &view;
+    info.width = info.height = size;
+    info.layers = layers;
+    VkFramebuffer fb = VK_NULL_HANDLE;
+    VulkanContext::check(vkCreateFramebuffer(device, &info, nullptr, &fb), "vkCreateFramebuffer (shadow map)");
+    return fb;
+}
+
+VkSampler VulkanDepthMaps::sampler(VkDevice device, bool compare) {
+    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    s.magFilter = s.minFilter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    s.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    s.compareEnable = compare ? VK_TRUE : VK_FALSE;
+    s.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    s.maxLod = 0.0f;
+    VkSampler sampler = VK_NULL_HANDLE;
+    VulkanContext::check(vkCreateSampler(device, &s, nullptr, &sampler), "vkCreateSampler (shadow map)");
+    return sampler;
+}
+
+} // namespace sb

@@ -1,0 +1,36 @@
+#pragma once
+// The depth maps of the shadow-map family on Vulkan (techniques/shadowmap/DepthLayers.h on GL), shared
+// by ShadowMapVulkan and CubeMapVulkan: the map format, an image of layers cleared to "lit", the render
+// pass a depth layer is drawn with, a layer's framebuffer, and the sampler the lighting pass compares
+// through.
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/VulkanImage.h"
+
+namespace sb {
+
+class VulkanContext;
+
+class VulkanDepthMaps {
+public:
+    /// X8_D24 where it can be attached, sampled and filtered (GL's DEPTH_COMPONENT24: the same depth
+    /// quantum, so glPolygonOffset's constant means the same bias), else D32_SFLOAT.
+    static VkFormat format(VkPhysicalDevice physical);
+    /// `layers` layers of size^2 (a cube array when `cube`), every layer cleared to the far plane and left
+    /// in the layout the lighting pass samples: layers a frame does not render (a light that casts no
+    /// shadow, a face nothing reaches) are read as they are.
+    static VulkanImage image(VulkanContext& context, VkFormat format, uint32_t size, uint32_t layers, bool cube);
+    /// One depth attachment cleared at the start and left DEPTH_STENCIL_READ_ONLY for the lighting pass,
+    /// with the dependencies on the previous frame's reads and this frame's. The caller owns it.
+    static VkRenderPass renderPass(VkDevice device, VkFormat format);
+    /// A framebuffer of `view` (`layers` layers: a layered pass writes gl_Layer) at size^2 for `pass`.
+    static VkFramebuffer framebuffer(VkDevice device, VkRenderPass pass, VkImageView view, uint32_t size,
+                                     uint32_t layers = 1);
+    /// The lighting pass's sampler: with `compare`, LEQUAL depth compare with LINEAR filtering of the four
+    /// results (bilinear PCF); without, NEAREST depths the shader compares. Clamped at the edges.
+    static VkSampler sampler(VkDevice device, bool compare);
+};
+
+} // namespace sb

@@ -1,0 +1,98 @@
+#pragma once
+// `volume` on Vulkan: VolumeTechnique's program (GPU Gems ch. 9, Listing 9-1) with the same declaration,
+// properties and CPU logic (VolumePlanner: casters, light regions, per-light draw lists and statistics)
+// and the same shaders (common/scene.vert, volume/ambient.frag, volume/light.frag, volume/extrude.vert,
+// volume/stencil.frag and their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
+//
+// Passes. ambient: depth written, ambient colour, visibility 0 inside each light's region and 1 outside
+// (the regions in a uniform block, set 1, GL's bottom-up rectangles). Per light whose region is on
+// screen: mark (the stencil cleared inside the scissor rectangle with vkCmdClearAttachments, then every
+// caster's volume counted with two-sided wrapping stencil operations, z-fail casters first; no colour,
+// depth LESS without writes, no culling) and lighting (depth EQUAL, stencil EQUAL 0, colour ONE + ONE,
+// visibility MAX). A light that casts no shadow skips mark and lights without the stencil test; with
+// non-receivers in the scene, receivers are lit with the stencil test and non-receivers without, as on GL.
+//
+// Geometry. extrusion=cpu: each caster mesh's doubled vertex buffer (device-local) and one host-visible
+// index stream per frame that holds every light's volumes (the frame's command buffer draws them all;
+// the harness waits for each frame's fence, so the stream is rewritten in place). extrusion=vertex: the
+// McGuire-Hughes mesh (positions with face planes, caps then sides) in device-local buffers. Per draw the
+// push constants (common/push.glsl) carry the model matrix, the object-space light (vec) and the finite
+// extrusion length (ints.y, as float bits).
+//
+// far=infinite draws every pass with the camera's projection at infinity (a frame-block slot of its own);
+// far=depth_clamp needs the depthClamp feature (ExitCode::Unsupported without it); depth_bounds is
+// refused (ExitCode::Unsupported: the device is created without the depthBounds feature).
+// Counters: GL's, except stencil_samples_passed: the device is created without occlusionQueryPrecise,
+// so a Vulkan occlusion query only promises zero or non-zero, not GL_SAMPLES_PASSED's count; the counter
+// is left out rather than reported with another meaning.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "techniques/volume/ShadowVolumeMesh.h"
+#include "techniques/volume/VolumePlanner.h"
+#include "techniques/vulkan/VulkanTechnique.h"
+#include "vk/DescriptorSets.h"
+#include "vk/VulkanBuffer.h"
+
+namespace sb {
+
+class VolumeVulkan final : public VulkanTechnique {
+public:
+    VolumeVulkan();
+    ~VolumeVulkan() override;
+    void setScene(const Scene& scene) override;
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
+    void compile(const VulkanCompileContext& ctx) override;
+    void execute(VulkanFrameContext& ctx) override;
+    Counters counters() const override { return mCounters; }
+
+private:
+    struct MeshGpu {
+        std::unique_ptr<ShadowVolumeMesh> mesh;   ///< null for meshes no caster uses
+        std::unique_ptr<ExtrusionMesh> extrusion; ///< extrusion=vertex, until compile() uploads it
+        VulkanBuffer doubled;                     ///< (x, y, z, 1) then (x, y, z, 0)
+        VulkanBuffer extrusionVertices, extrusionIndices;
+        uint32_t capIndices = 0, sideIndices = 0;
+    };
+    /// A light's draws in mDraws (first into the frame's stream already offset).
+    struct LightDraws {
+        size_t begin = 0, end = 0;
+    };
+
+    void release();
+    void uploadMeshes(VulkanContext& context);
+    void createDescriptors(VulkanContext& context);
+    void buildPipelines(const VulkanCompileContext& ctx);
+    /// Per light the planner's draws, the CPU path's indices gathered into one frame stream.
+    void collectFrame(const VulkanFrameContext& ctx, const VolumePlanner::View& view, int lights,
+                      VolumePlanner::FrameStats& stats);
+    void writeAmbientBlock(int lights, int height);
+    VkRect2D scissorOf(const VolumePlanner::LightRegion& region, int width, int height) const;
+    void renderAmbient(VulkanFrameContext& ctx, uint32_t frame);
+    void markShadows(VulkanFrameContext& ctx, uint32_t frame, int light, const VkRect2D& scissor);
+    void renderLight(VulkanFrameContext& ctx, uint32_t frame, int light, const VkRect2D& scissor);
+
+    VolumePlanner mPlanner;
+    const Scene* mScene = nullptr;
+    VulkanContext* mContext = nullptr;
+    VkDevice mDevice = VK_NULL_HANDLE;
+    std::vector<MeshGpu> mMeshes;
+    bool mUploaded = false;
+
+    VulkanBuffer mStream; ///< host-visible index stream of the CPU path, grown geometrically
+    std::vector<uint32_t> mFrameStream;
+    std::vector<VolumePlanner::Draw> mDraws;
+    std::array<LightDraws, kMaxLights> mLightDraws{};
+    std::array<VolumePlanner::LightRegion, kMaxLights> mRegions{};
+
+    VulkanBuffer mAmbientBlock; ///< ambient.frag's VolumeAmbient
+    DescriptorSets mSets; ///< set 1: ambient.frag's block
+    VkPipelineLayout mLayout = VK_NULL_HANDLE; ///< frame block, VolumeAmbient, push constants
+    ScenePipeline mAmbient;
+    ScenePipeline mLight[2];   ///< [stencil test]
+    ScenePipeline mMark[2][2]; ///< [finite][zfail]
+    Counters mCounters;
+};
+
+} // namespace sb

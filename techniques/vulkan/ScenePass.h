@@ -1,0 +1,29 @@
+#pragma once
+// What every pass that draws the scene through the submitter shares on Vulkan: the pipeline layout (set 0
+// the frame block, then the technique's sets; common/push.glsl's push constants) and the description of
+// a pipeline drawing the scene's meshes with GL's default state (depth LESS with writes, no culling,
+// counter-clockwise front faces), which a pass then changes where its GL counterpart changes state.
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gl/ProgramCache.h"
+#include "vk/GraphicsPipeline.h"
+
+namespace sb {
+
+struct VulkanCompileContext;
+
+/// Set 0 = the frame block, then `sets`; push constants of VulkanPush. The caller owns the layout.
+VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
+                                           const std::vector<VkDescriptorSetLayout>& sets = {});
+
+/// A pipeline drawing the scene with `vertex` and `fragment` (files under shaders/) compiled with
+/// `defines`, the submitter's vertex input and `layout`. `key` gets the shader files and defines
+/// appended: the pipeline cache's key for the shaders part.
+GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::string& vertex,
+                                   const std::string& fragment, const Defines& defines,
+                                   VkPipelineLayout layout, std::string& key);
+
+} // namespace sb

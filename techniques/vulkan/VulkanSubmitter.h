@@ -1,0 +1,96 @@
+#pragma once
+// Submission on Vulkan (techniques/submit/Submitter.h on GL): the scene's meshes in device-local vertex
+// and index buffers, drawn into the frame's command buffer by the technique's bound pipeline. Two of GL's
+// four modes have a Vulkan form:
+//   retained   one vkCmdDrawIndexed per instance, the instance in push constants (common/push.glsl):
+//              the per-instance command stream, recorded every frame as an application's render loop
+//              records it;
+//   instanced  one vkCmdDrawIndexed per mesh and run of kept instances, per-instance vertex attributes
+//              from an instance buffer (common/instance.glsl, SB_INSTANCED).
+// immediate and displaylist are GL's own (glBegin/glEnd, display lists): create() refuses them with
+// ExitCode::Unsupported and says so.
+// Vertex attributes as on GL: binding 0 interleaved position (location 0) and normal (1); instanced
+// binding 1: model matrix (4..7) and colour with signed id (8).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gl/ProgramCache.h"
+#include "scenes/Scene.h"
+#include "techniques/submit/Submitter.h"
+#include "vk/VulkanBuffer.h"
+
+namespace sb {
+
+class VulkanContext;
+
+/// common/push.glsl's block. Per-instance draws fill model and colorId; a technique may fill the rest.
+struct VulkanPush {
+    glm::mat4 model{1.0f};
+    glm::vec4 colorId{0.0f};
+    glm::ivec4 ints{0};
+    glm::vec4 vec{0.0f};
+};
+/// Stage flags of every vkCmdPushConstants and of the push range of every pipeline layout.
+constexpr VkShaderStageFlags kPushStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+class VulkanSubmitter {
+public:
+    /// Throws sb::Error(Unsupported) for the GL-only modes.
+    VulkanSubmitter(VulkanContext& context, SubmitMode mode);
+    SubmitMode mode() const { return mMode; }
+    /// Untimed: buffers for the scene's meshes and, instanced, its instance records.
+    void upload(const Scene& scene);
+    /// A scene in motion moved instances: instanced mode rewrites its records (host-visible, in place).
+    void instancesMoved(const Scene& scene);
+    /// SB_INSTANCED for instanced.
+    Defines defines() const;
+    /// Vertex input of scene-drawing pipelines (position, normal and, instanced, the instance).
+    std::vector<VkVertexInputBindingDescription> bindings() const;
+    std::vector<VkVertexInputAttributeDescription> attributes() const;
+
+    /// Records the draws of the instances of `set` that `keep` keeps (empty: all) with the bound
+    /// pipeline of `layout`; `push` (a technique's per-pass values) is pushed with each instance's.
+    void draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep = {},
+              const VulkanPush& push = {});
+    const SubmitStats& stats() const { return mStats; }
+    void resetStats() {
+        mLifetime += mStats;
+        mStats = {};
+    }
+    SubmitStats lifetimeStats() const { return mLifetime + mStats; }
+
+private:
+    struct MeshGpu {
+        VulkanBuffer vertices, indices;
+        uint32_t indexCount = 0;
+    };
+    struct InstanceRecord {
+        glm::mat4 model;
+        glm::vec4 colorId;
+    };
+    struct Batch {
+        uint32_t mesh = 0, first = 0, count = 0;
+    };
+    void drawRetained(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
+                      VulkanPush push);
+    void drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
+                       const VulkanPush& push);
+    void bindMesh(VkCommandBuffer cmd, uint32_t mesh);
+
+    VulkanContext& mContext;
+    SubmitMode mMode;
+    const Scene* mScene = nullptr;
+    std::vector<MeshGpu> mMeshes;
+    std::vector<uint32_t> mOrder; ///< retained: instances by mesh
+    std::vector<InstanceRecord> mRecords;
+    std::vector<uint32_t> mRecordInstance;
+    std::vector<Batch> mBatches[kDrawSetCount];
+    VulkanBuffer mInstances; ///< host-visible
+    SubmitStats mStats, mLifetime;
+};
+
+} // namespace sb

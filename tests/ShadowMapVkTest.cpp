@@ -1,0 +1,95 @@
+// `shadowmap` and `volume` on Vulkan against the same closed form as on GL (tests/SphereShadowJudge.h:
+// the sphere's shadow on the plane is an exact ellipse; tests/ShadowMapGLTest.cpp and
+// tests/VolumeGLTest.cpp on GL), in the same cases, with the validation layer on: no validation error in
+// any of them.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "SphereShadowJudge.h"
+#include "TestSupport.h"
+#include "bench/run/VulkanHarness.h"
+#include "techniques/TechniqueRegistry.h"
+
+using namespace sb;
+
+namespace {
+
+struct Case {
+    const char* name;
+    const char* spec;
+    SubmitMode submit;
+};
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.name;
+}
+
+const Case kCases[] = {
+    {"hw_compare_retained", "shadowmap", SubmitMode::Retained},
+    {"shader_compare_pcf1", "shadowmap:hardware_compare=false", SubmitMode::Retained},
+    {"pcf3_instanced", "shadowmap:pcf=3", SubmitMode::Instanced},
+    {"low_res_512", "shadowmap:resolution=512", SubmitMode::Retained},
+};
+
+class SphereShadowVulkan : public ::testing::TestWithParam<Case> {};
+
+TEST_P(SphereShadowVulkan, MatchesAnalyticEllipse) {
+    const Case& tc = GetParam();
+    constexpr int kSize = 384;
+    RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize, tc.submit);
+    cfg.sceneOptions.tessellation = 64;
+    cfg.sceneOptions.lightType = LightType::Directional;
+    cfg.api = RunConfig::Api::Vulkan;
+    cfg.vulkan.validation = true;
+    VulkanHarness h(cfg);
+    auto sm = TechniqueRegistry::createVulkan(TechniqueSpec::parse(tc.spec));
+    h.prepare(*sm);
+    h.renderFrame(*sm);
+    test::judgeSphereShadow(h.scene(), test::shadowMapBand(h.scene(), sm->properties()),
+                            h.targets().readDepth(), h.targets().readVisibilityRGBA32F(),
+                            h.projection() * h.view(), kSize);
+    std::string errors;
+    for (const std::string& m : h.context().validationMessages())
+        if (m.rfind("error", 0) == 0) errors += m + "\n";
+    EXPECT_TRUE(errors.empty()) << errors;
+    sm.reset();
+}
+
+INSTANTIATE_TEST_SUITE_P(ShadowMap, SphereShadowVulkan, ::testing::ValuesIn(kCases),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+// `volume` is exact: its band is the polygonal silhouette and the pixel footprint alone. The camera's own
+// far plane (far=depth_clamp) keeps the depth buffer unprojectable with the camera's matrices.
+const Case kVolumeCases[] = {
+    {"volume_cpu_retained", "volume:far=depth_clamp", SubmitMode::Retained},
+    {"volume_vertex_instanced", "volume:far=depth_clamp:extrusion=vertex", SubmitMode::Instanced},
+    {"volume_zfail", "volume:far=depth_clamp:mode=zfail", SubmitMode::Retained},
+};
+
+class VolumeSphereShadowVulkan : public ::testing::TestWithParam<Case> {};
+
+TEST_P(VolumeSphereShadowVulkan, MatchesAnalyticEllipse) {
+    const Case& tc = GetParam();
+    constexpr int kSize = 384;
+    RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize, tc.submit);
+    cfg.sceneOptions.tessellation = 64;
+    cfg.sceneOptions.lightType = LightType::Directional;
+    cfg.api = RunConfig::Api::Vulkan;
+    cfg.vulkan.validation = true;
+    VulkanHarness h(cfg);
+    auto volume = TechniqueRegistry::createVulkan(TechniqueSpec::parse(tc.spec));
+    h.prepare(*volume);
+    h.renderFrame(*volume);
+    test::judgeSphereShadow(h.scene(), 0.0, h.targets().readDepth(), h.targets().readVisibilityRGBA32F(),
+                            h.projection() * h.view(), kSize);
+    std::string errors;
+    for (const std::string& m : h.context().validationMessages())
+        if (m.rfind("error", 0) == 0) errors += m + "\n";
+    EXPECT_TRUE(errors.empty()) << errors;
+    volume.reset();
+}
+
+INSTANTIATE_TEST_SUITE_P(Volume, VolumeSphereShadowVulkan, ::testing::ValuesIn(kVolumeCases),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+} // namespace

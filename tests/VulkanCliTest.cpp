@@ -1,0 +1,154 @@
+// `bench --api vulkan` end to end: a measured run with the validation layer on (rows with api=vulkan,
+// no validation error), and every way the Vulkan path can be refused, each one clear line with the exit
+// code of its cause: the machine lacks something (no Vulkan driver, a technique or submission mode
+// without a Vulkan form, a GL-only command: 3) or the input is wrong (a device index out of range,
+// a Vulkan option without --api vulkan: 2). Never a crash.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "TestSupport.h"
+
+using namespace sb;
+using test::runCommand;
+
+namespace {
+
+const std::string kBench = SB_BENCH_BINARY;
+const std::string kQuick = " --size 96x96 --frames 2 --warmup 1 --instances 6";
+// The refusals need no timer calibration: they must come before any frame.
+const std::string kNoTimer = " --no-timer-check";
+
+std::string vulkan(const std::string& args) {
+    return kBench + " --api vulkan" + kQuick + kNoTimer + " " + args;
+}
+
+/// The lines of `output` that start with `prefix`.
+int linesStartingWith(const std::string& output, const std::string& prefix) {
+    int n = 0;
+    size_t pos = 0;
+    while (pos < output.size()) {
+        const size_t end = output.find('\n', pos);
+        if (output.compare(pos, prefix.size(), prefix) == 0) ++n;
+        if (end == std::string::npos) break;
+        pos = end + 1;
+    }
+    return n;
+}
+
+TEST(VulkanCli, MeasuresWithTheValidationLayerOnAndRecordsTheApi) {
+    const std::string dir = test::freshDir("vulkan-cli");
+    const std::string csv = dir + "/r.csv";
+    auto r = runCommand(kBench + " --api vulkan" + kQuick +
+                        " -t none -t shadowmap:pcf=3 --vk-validation --csv " + csv);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(linesStartingWith(r.output, "bench: vulkan validation: error"), 0) << r.output;
+    EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << "lavapipe is the default device:\n"
+                                                            << r.output;
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 2u);
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("api"), "vulkan");
+        EXPECT_EQ(row.at("backend"), "vulkan");
+        EXPECT_EQ(row.at("status"), "ok");
+        EXPECT_NE(row.at("api_version").find("1."), std::string::npos) << row.at("api_version");
+        // The timestamps are checked against the frame as on GL; GPU times appear only when trusted.
+        ASSERT_TRUE(row.at("timer_verdict") == "trusted" || row.at("timer_verdict") == "untrusted")
+            << row.at("timer_verdict");
+        EXPECT_NE(row.at("timer_reason").find("vkCmdWriteTimestamp"), std::string::npos)
+            << row.at("timer_reason");
+        EXPECT_EQ(row.at("gpu_ms_median").empty(), row.at("timer_verdict") != "trusted")
+            << row.at("gpu_ms_median");
+        EXPECT_NE(row.at("counter_draw_calls"), "");
+    }
+    EXPECT_EQ(rows[1].at("technique"), "shadowmap");
+    // The census frame's work per pass: the depth pass drew the casters, the lighting pass everything.
+    EXPECT_GT(std::stoi(rows[1].at("work_depth_draws")), 0) << "per-pass submitted work";
+    EXPECT_GT(std::stoi(rows[1].at("work_lighting_draws")), std::stoi(rows[1].at("work_depth_draws")))
+        << "the lighting pass draws the ground too";
+}
+
+TEST(VulkanCli, GlRowsSayGl) {
+    const std::string dir = test::freshDir("vulkan-cli-gl");
+    const std::string csv = dir + "/r.csv";
+    auto r = runCommand(kBench + kQuick + " -t none --no-timer-check --csv " + csv);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].at("api"), "gl");
+}
+
+TEST(VulkanCli, ATechniqueWithoutAVulkanFormIsUnsupported) {
+    auto r = runCommand(vulkan("-t occluder"));
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("occluder has no Vulkan form"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--api gl"), std::string::npos) << r.output;
+}
+
+TEST(VulkanCli, GlOnlySubmissionModesAreUnsupported) {
+    for (const char* mode : {"immediate", "displaylist"}) {
+        auto r = runCommand(vulkan(std::string("-t none --submit ") + mode));
+        EXPECT_EQ(r.exitCode, 3) << mode << "\n" << r.output;
+        EXPECT_NE(r.output.find("is GL-only"), std::string::npos) << r.output;
+    }
+}
+
+TEST(VulkanCli, ADeviceIndexOutOfRangeIsBadInput) {
+    auto r = runCommand(vulkan("-t none --vk-device 99"));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("99"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << "names the devices there are:\n" << r.output;
+}
+
+TEST(VulkanCli, NoVulkanDriverIsOneLineAndUnsupported) {
+    // The loader finds no driver (VK_DRIVER_FILES takes precedence over VK_ICD_FILENAMES in newer loaders).
+    auto r = runCommand("VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json " +
+                        vulkan("-t none"));
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_EQ(linesStartingWith(r.output, "bench: error: vulkan:"), 1) << r.output;
+}
+
+TEST(VulkanCli, VulkanOptionsWithoutApiVulkanAreBadInput) {
+    auto r = runCommand(kBench + kQuick + " -t none --vk-device 0");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--api vulkan only"), std::string::npos) << r.output;
+    r = runCommand(kBench + kQuick + " -t none --api metal");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+}
+
+TEST(VulkanCli, AccuracyJudgesTheVulkanFrameAgainstTheSameReference) {
+    // The Vulkan visibility against the Embree reference of a GL harness of the same configuration:
+    // the images agree to the last bit of the half-float target (tests/GlVulkanImageVkTest.cpp), so the
+    // wrong-pixel shares must agree to within a pixel's worth of 96^2 (0.011 points; 0.02 allowed).
+    const std::string dir = test::freshDir("vulkan-cli-accuracy");
+    const std::string csv = dir + "/a.csv";
+    for (const char* api : {"gl", "vulkan"}) {
+        auto r = runCommand(kBench + " accuracy --api " + api + kQuick + kNoTimer +
+                            " -t shadowmap:resolution=512 --no-stability --csv " + csv);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[1].at("api"), "vulkan");
+    const double gl = std::stod(rows[0].at("acc_wrong_pct")), vk = std::stod(rows[1].at("acc_wrong_pct"));
+    EXPECT_NEAR(gl, vk, 0.02) << "GL " << gl << "% wrong, Vulkan " << vk << "%";
+    EXPECT_GT(std::stod(rows[1].at("acc_evaluated")), 0.0);
+}
+
+TEST(VulkanCli, GlOnlyCommandsSaySo) {
+    auto r = runCommand(vulkan("-t auto"));
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    r = runCommand(vulkan("--scene aircraft_day -t shadowmap"));
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("motion"), std::string::npos) << r.output;
+}
+
+TEST(VulkanCli, ListSaysWhichTechniquesHaveAVulkanFormAndTheDevices) {
+    auto r = runCommand(kBench + " --list");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("apis:     gl, vulkan"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("apis:     gl (no Vulkan form"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("vulkan devices"), std::string::npos) << r.output;
+}
+
+} // namespace

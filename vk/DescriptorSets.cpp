@@ -1,0 +1,94 @@
+#include "vk/DescriptorSets.h"
+
+#include <map>
+#include <string>
+#include <utility>
+
+#include "vk/VulkanContext.h"
+
+namespace sb {
+
+DescriptorSets::DescriptorSets(VkDevice device, const std::vector<Bindings>& layouts, const char* what)
+    : mDevice(device) {
+    const std::string name = std::string(" (") + what + ")";
+    std::map<VkDescriptorType, uint32_t> counts;
+    for (const Bindings& bindings : layouts) {
+        VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        info.bindingCount = uint32_t(bindings.size());
+        info.pBindings = bindings.data();
+        VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+        VulkanContext::check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
+                             ("vkCreateDescriptorSetLayout" + name).c_str());
+        mLayouts.push_back(layout);
+        for (const VkDescriptorSetLayoutBinding& b : bindings) counts[b.descriptorType] += b.descriptorCount;
+    }
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (const auto& [type, count] : counts) sizes.push_back({type, count});
+    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool.maxSets = uint32_t(layouts.size());
+    pool.poolSizeCount = uint32_t(sizes.size());
+    pool.pPoolSizes = sizes.data();
+    VulkanContext::check(vkCreateDescriptorPool(device, &pool, nullptr, &mPool),
+                         ("vkCreateDescriptorPool" + name).c_str());
+    mSets.resize(mLayouts.size());
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = mPool;
+    alloc.descriptorSetCount = uint32_t(mLayouts.size());
+    alloc.pSetLayouts = mLayouts.data();
+    VulkanContext::check(vkAllocateDescriptorSets(device, &alloc, mSets.data()),
+                         ("vkAllocateDescriptorSets" + name).c_str());
+}
+
+DescriptorSets::~DescriptorSets() {
+    release();
+}
+
+DescriptorSets::DescriptorSets(DescriptorSets&& other) noexcept {
+    *this = std::move(other);
+}
+
+DescriptorSets& DescriptorSets::operator=(DescriptorSets&& other) noexcept {
+    if (this == &other) return *this;
+    release();
+    mDevice = std::exchange(other.mDevice, VK_NULL_HANDLE);
+    mPool = std::exchange(other.mPool, VK_NULL_HANDLE);
+    mLayouts = std::exchange(other.mLayouts, {});
+    mSets = std::exchange(other.mSets, {});
+    return *this;
+}
+
+void DescriptorSets::release() {
+    if (!mDevice) return;
+    vkDestroyDescriptorPool(mDevice, mPool, nullptr); // frees the sets
+    for (VkDescriptorSetLayout l : mLayouts) vkDestroyDescriptorSetLayout(mDevice, l, nullptr);
+    mPool = VK_NULL_HANDLE;
+    mLayouts.clear();
+    mSets.clear();
+    mDevice = VK_NULL_HANDLE;
+}
+
+void DescriptorSets::writeBuffer(size_t i, uint32_t binding, VkDescriptorType type, VkBuffer buffer,
+                                 VkDeviceSize range) const {
+    VkDescriptorBufferInfo info{buffer, 0, range};
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = mSets[i];
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    w.pBufferInfo = &info;
+    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+}
+
+void DescriptorSets::writeImage(size_t i, uint32_t binding, VkSampler sampler, VkImageView view,
+                                VkImageLayout layout) const {
+    VkDescriptorImageInfo info{sampler, view, layout};
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = mSets[i];
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w.pImageInfo = &info;
+    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+}
+
+} // namespace sb

@@ -1,0 +1,120 @@
+#pragma once
+// The Vulkan platform (docs/ARCHITECTURE.md, "Layout": vk/): one instance, one physical device, one
+// logical device with a graphics queue, and a command pool, for headless rendering (no surface, no
+// swapchain). It is to the Vulkan back end what gl/Context is to the GL one, and it knows nothing of
+// scenes or techniques.
+//
+// Device choice: by default Mesa's lavapipe (the llvmpipe device, the software rasteriser GL runs on,
+// so GL and Vulkan compare on the same gallivm back end), else the first device; `device` picks one by
+// index in vkEnumeratePhysicalDevices order (`bench --api vulkan --vk-device N`, listed by
+// `bench --list`).
+//
+// Errors: no Vulkan loader, no ICD or no device is ExitCode::Unsupported (the machine lacks it); an
+// index out of range is ExitCode::BadInput (the input is wrong), naming the devices there are.
+//
+// Validation: with `validation` on, the Khronos validation layer (VK_LAYER_KHRONOS_validation) is enabled
+// and a VK_EXT_debug_utils messenger records every message of severity warning or error. Tests run with
+// it on and require validationErrors() == 0; timed runs leave it off (the layer's checks would be
+// measured). A requested layer that is not installed is ExitCode::Unsupported.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace sb {
+
+struct VulkanOptions {
+    int device = -1;         ///< index into the physical devices; -1: lavapipe, else the first
+    bool validation = false; ///< Khronos validation layer and the message log
+};
+
+/// One physical device as `bench --list` shows it.
+struct VulkanDeviceInfo {
+    int index = 0;
+    std::string name;       ///< VkPhysicalDeviceProperties::deviceName ("llvmpipe (LLVM 15.0.6, 256 bits)")
+    std::string type;       ///< "cpu", "integrated", "discrete", "virtual", "other"
+    std::string driver;     ///< driverName and driverInfo ("llvmpipe Mesa 22.3.6 (LLVM 15.0.6)")
+    std::string apiVersion; ///< "1.3.230"
+};
+
+class VulkanContext {
+public:
+    /// Creates instance, device, queue and command pool. Throws sb::Error as described above.
+    explicit VulkanContext(const VulkanOptions& options);
+    ~VulkanContext();
+    VulkanContext(const VulkanContext&) = delete;
+    VulkanContext& operator=(const VulkanContext&) = delete;
+
+    /// The devices the loader sees, without creating a device. Throws ExitCode::Unsupported when there is
+    /// no loader or no device.
+    static std::vector<VulkanDeviceInfo> listDevices();
+
+    VkInstance instance() const { return mInstance; }
+    VkPhysicalDevice physicalDevice() const { return mPhysical; }
+    VkDevice device() const { return mDevice; }
+    VkQueue queue() const { return mQueue; }
+    uint32_t queueFamily() const { return mQueueFamily; }
+    VkCommandPool commandPool() const { return mCommandPool; }
+    const VulkanDeviceInfo& info() const { return mInfo; }
+    const VkPhysicalDeviceProperties& properties() const { return mProperties; }
+    /// Nanoseconds per timestamp tick; 0 when the queue writes no timestamps (timestampValidBits 0).
+    double timestampPeriodNs() const { return mTimestampPeriodNs; }
+    /// Whether depthClamp (volume's closed far cap) and the other features used were enabled.
+    bool depthClamp() const { return mDepthClamp; }
+    bool pipelineStatistics() const { return mPipelineStatistics; }
+    /// Blend state per colour attachment (volume's light pass: colour ADD, visibility MAX).
+    bool independentBlend() const { return mIndependentBlend; }
+
+    /// A memory type index with `bits` allowed and `flags` set. Throws sb::Error(Failure) when none.
+    uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags flags) const;
+    /// A depth-stencil format the device can attach and sample: D24_UNORM_S8_UINT, else D32_SFLOAT_S8_UINT.
+    VkFormat depthStencilFormat() const;
+
+    /// Records `record` into a fresh primary command buffer, submits it and waits (uploads, readbacks,
+    /// layout changes outside frames). Throws sb::Error(Failure) on a failed submit.
+    void submitNow(const std::function<void(VkCommandBuffer)>& record);
+    /// Submits `cmd` and signals `fence` (the frame's submit).
+    void submit(VkCommandBuffer cmd, VkFence fence);
+
+    /// Validation messages recorded so far (severity warning and error), "error: <message>" or
+    /// "warning: <message>", oldest first; empty without validation.
+    const std::vector<std::string>& validationMessages() const { return mMessages; }
+    size_t validationErrors() const { return mErrors; }
+    bool validationEnabled() const { return mMessenger != VK_NULL_HANDLE; }
+    /// Forgets the messages recorded so far (a test that provoked one on purpose).
+    void clearValidationMessages();
+
+    /// Throws sb::Error(Failure) naming `what` and the VkResult when `result` is not VK_SUCCESS.
+    static void check(VkResult result, const char* what);
+
+private:
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                    VkDebugUtilsMessageTypeFlagsEXT types,
+                                                    const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                    void* self);
+    void createInstance(bool validation);
+    void pickDevice(int index);
+    void createDevice();
+    void destroy(); ///< releases whatever was created (the destructor, and a constructor that throws)
+
+    VkInstance mInstance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;
+    VkPhysicalDevice mPhysical = VK_NULL_HANDLE;
+    VkDevice mDevice = VK_NULL_HANDLE;
+    VkQueue mQueue = VK_NULL_HANDLE;
+    uint32_t mQueueFamily = 0;
+    VkCommandPool mCommandPool = VK_NULL_HANDLE;
+    VulkanDeviceInfo mInfo;
+    VkPhysicalDeviceProperties mProperties{};
+    double mTimestampPeriodNs = 0.0;
+    bool mDepthClamp = false;
+    bool mPipelineStatistics = false;
+    bool mIndependentBlend = false;
+    std::vector<std::string> mMessages;
+    size_t mErrors = 0;
+};
+
+} // namespace sb
