@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Builds the asan preset (clang 14, AddressSanitizer + UndefinedBehaviorSanitizer, -O1 -g1, in build-asan/,
 # the tree scripts/fuzz.sh builds its targets in)
-# and runs the tests of the given ctest labels under it (default: unit cli), with the options and the
+# and runs the tests of the given ctest labels under it (default: unit cli vulkan), with the options and the
 # library-leak suppressions of tools/sanitizers/. Only the test binaries of those labels, bench and
 # handloop are built. Any sanitizer report fails the test that triggered it, so the script fails too.
 # Usage: bash scripts/sanitize.sh [label ...]     e.g. bash scripts/sanitize.sh unit cli gl
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 labels=("$@")
-[ ${#labels[@]} -gt 0 ] || labels=(unit cli)
+[ ${#labels[@]} -gt 0 ] || labels=(unit cli vulkan)
 
 bash "$root/scripts/install-deps.sh"
 # The options the runs get, also during the build: gtest_discover_tests runs each test binary to list

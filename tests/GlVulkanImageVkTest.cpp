@@ -169,7 +169,9 @@ TEST_P(GlVulkanImage, SamePixelsOnBothApis) {
     }
     EXPECT_LE(double(flips), c.flipFraction * double(pixels)) << "pixels whose visibility changed sides";
     // A case whose image has no shadow would compare nothing a shadow technique does.
-    if (std::string(c.technique).rfind("none", 0) != 0) EXPECT_GT(shadowed, 0u) << "no shadowed pixel on GL";
+    if (std::string(c.technique).rfind("none", 0) != 0) {
+        EXPECT_GT(shadowed, 0u) << "no shadowed pixel on GL";
+    }
     EXPECT_LE(worstColour, 1) << colourOff << " pixels differ in colour (where visibility agrees)";
 
     EXPECT_LE(double(colourOff), c.colourFraction * double(pixels))

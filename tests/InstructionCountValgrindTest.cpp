@@ -53,7 +53,7 @@ protected:
 
 } // namespace
 
-TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsWithinOneInTenThousand) {
+TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsWithinTwoInTenThousand) {
     const InstructionRun a = countFrames(kFrames, "a");
     const InstructionRun again = countFrames(kFrames, "again");
     const InstructionRun twice = countFrames(2 * kFrames, "twice");
@@ -72,10 +72,12 @@ TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsWithin
         EXPECT_GT(n.irPerFrame, 1e6);
 
         // Repeatability. With the pinned environment (LP_NUM_THREADS=0: no rasteriser thread) repeated
-        // runs were bit-identical (4 of 4); what could still move the count is the harness acting on
-        // clock readings. 1e-4 keeps that margin and still fails a run that lost its pinning: with one
-        // rasteriser thread, identical runs spread by up to 7.6e-4 (heap history through calloc).
-        EXPECT_LT(relativeDifference(n.irPerFrame, n2.irPerFrame), 1e-4)
+        // runs were bit-identical (4 of 4, and again in later runs), but once, in a full parallel ctest
+        // run, a pair differed by 1.006e-4 (not reproduced in three reruns, alone and under load; the
+        // process's heap layout under address randomisation is the likely source). 2e-4 keeps that margin
+        // and still fails a run that lost its pinning: with one rasteriser thread, identical runs spread by
+        // up to 7.6e-4 (heap history through calloc).
+        EXPECT_LT(relativeDifference(n.irPerFrame, n2.irPerFrame), 2e-4)
             << n.irPerFrame << " vs " << n2.irPerFrame;
 
         // Only the measured frames are counted. Two points give the cost of a frame, (T(2N) - T(N)) / N,

@@ -26,13 +26,15 @@ public:
     VkDescriptorSet set(size_t i) const { return mSets[i]; }
 
     /// Points binding `binding` of set `i` at `range` bytes of `buffer` (a uniform buffer, dynamic or not).
-    void writeBuffer(size_t i, uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize range) const;
+    void writeBuffer(size_t i, uint32_t binding, VkDescriptorType type, VkBuffer buffer,
+                     VkDeviceSize range) const;
     /// Points binding `binding` of set `i` at `view` through `sampler`, read in `layout`.
-    void writeImage(size_t i, uint32_t binding, VkSampler sampler, VkImageView view, VkImageLayout layout) const;
+    void writeImage(size_t i, uint32_t binding, VkSampler sampler, VkImageView view,
+                    VkImageLayout layout) const;
 
     /// One binding of `count` descriptors of `type`, seen by `stages`.
-    static VkDescriptorSetLayoutBinding binding(uint32_t binding, VkDescriptorType type, VkShaderStageFlags stages,
-                                                uint32_t count = 1) {
+    static VkDescriptorSetLayoutBinding binding(uint32_t binding, VkDescriptorType type,
+                                                VkShaderStageFlags stages, uint32_t count = 1) {
         return {binding, type, count, stages, nullptr};
     }
 

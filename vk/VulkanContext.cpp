@@ -1,11 +1,42 @@
 #include "vk/VulkanContext.h"
 
 #include <cstring>
+#include <string>
+
+#include <dlfcn.h>
+#include <link.h>
 
 #include "core/Error.h"
 
 namespace sb {
 namespace {
+
+// ---- the sanitizer build ----------------------------------------------------------------------------
+// GCC says __SANITIZE_ADDRESS__; clang 14 (the asan preset) says __has_feature(address_sanitizer).
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SB_ADDRESS_SANITIZER 1
+#endif
+#endif
+
+/// Under AddressSanitizer only: keeps the Vulkan driver and layer libraries the loader opened mapped until
+/// the process exits. The loader unloads them in vkDestroyInstance, and what they keep for the process
+/// (reachable from their globals while they are mapped) then looks to LeakSanitizer, which reports at
+/// exit, like a leak in "<unknown module>" that no suppression can name (measured: 128 bytes per run
+/// from lavapipe). Pinned, it stays reachable, and a leak of ours is still reported. Nothing changes in
+/// the normal build.
+void pinVulkanLibraries() {
+#if defined(__SANITIZE_ADDRESS__) || defined(SB_ADDRESS_SANITIZER)
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void*) {
+            const std::string path = info->dlpi_name ? info->dlpi_name : "";
+            if (path.find("libvulkan_") != std::string::npos || path.find("libVkLayer_") != std::string::npos)
+                dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+            return 0;
+        },
+        nullptr);
+#endif
+}
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
@@ -165,6 +196,7 @@ void VulkanContext::check(VkResult result, const char* what) {
 
 std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
     VkInstance instance = createBareInstance();
+    pinVulkanLibraries();
     std::vector<VulkanDeviceInfo> out;
     try {
         std::vector<VkPhysicalDevice> devices = physicalDevices(instance);
@@ -180,6 +212,7 @@ std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
 VulkanContext::VulkanContext(const VulkanOptions& options) {
     try {
         createInstance(options.validation);
+        pinVulkanLibraries();
         pickDevice(options.device);
         createDevice();
     } catch (...) {

@@ -81,7 +81,7 @@ void CubeMapVulkan::createMaps(VulkanContext& context) {
     const uint32_t cubeLayers = uint32_t(CubeFaces::kFaces * std::max(1, mCubeCount));
     mCubes = VulkanDepthMaps::image(context, format, mCubeCount > 0 ? uint32_t(mSize) : 1u, cubeLayers, true);
     mFlat = VulkanDepthMaps::image(context, format, mFlatCount > 0 ? uint32_t(mSize) : 1u,
-                       uint32_t(std::max(1, mFlatCount)), false);
+                                   uint32_t(std::max(1, mFlatCount)), false);
     mDepthPass = VulkanDepthMaps::renderPass(mDevice, format);
     for (int i = 0; i < mFlatCount; ++i)
         mFlatFramebuffers.push_back(createFramebuffer(mFlat.layerView(uint32_t(i)), 1));
@@ -126,10 +126,14 @@ void CubeMapVulkan::createDescriptors(VulkanContext& context) {
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
 
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mPassSlots.buffer(), kCubePassBytes);
-    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(), block.size);
-    mSets.writeImage(kLightingSet, 1, mSampler, mFlat.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
-    mSets.writeImage(kLightingSet, 2, mSampler, mCubes.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mPassSlots.buffer(),
+                      kCubePassBytes);
+    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
+                      block.size);
+    mSets.writeImage(kLightingSet, 1, mSampler, mFlat.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeImage(kLightingSet, 2, mSampler, mCubes.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
 }
 
 void CubeMapVulkan::writeBlocks() {
@@ -324,7 +328,8 @@ void CubeMapVulkan::renderLighting(VulkanFrameContext& ctx) {
     vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingPipeline.get(ctx.targets));
     ctx.frame.bind(ctx.cmd, mLightingLayout, ctx.frameOffset);
     const VkDescriptorSet set = mSets.set(kLightingSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0, nullptr);
+    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0,
+                            nullptr);
     ctx.submitter.draw(ctx.cmd, mLightingLayout, DrawSet::All);
     vkCmdEndRenderPass(ctx.cmd);
 }

@@ -93,7 +93,7 @@ private:
     VkSampler mSampler = VK_NULL_HANDLE;
     VulkanBuffer mPassSlots; ///< CubePass-sized slots (LightPass reads the first matrix)
     uint32_t mSlotStride = 0;
-    VulkanBuffer mLightingBlock; ///< CubeMapBlock
+    VulkanBuffer mLightingBlock;                             ///< CubeMapBlock
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;

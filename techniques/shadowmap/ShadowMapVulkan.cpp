@@ -80,18 +80,23 @@ void ShadowMapVulkan::createDescriptors(VulkanContext& context) {
     mSets = DescriptorSets(
         mDevice,
         {{D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT)},
-         {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT),
+         {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT),
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "shadowmap");
     const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
     mLightStride = uint32_t((sizeof(glm::mat4) + align - 1) / align * align);
-    mLightPass = VulkanBuffer(context, VkDeviceSize(mLightStride) * uint32_t(mLayers), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    mLightPass = VulkanBuffer(context, VkDeviceSize(mLightStride) * uint32_t(mLayers),
+                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     const BlockLayout block{uint32_t(mLayers)};
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mLightPass.buffer(), sizeof(glm::mat4));
-    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(), block.size);
-    mSets.writeImage(kLightingSet, 1, mSampler, mMaps.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mLightPass.buffer(),
+                      sizeof(glm::mat4));
+    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
+                      block.size);
+    mSets.writeImage(kLightingSet, 1, mSampler, mMaps.view(),
+                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
 }
 
 void ShadowMapVulkan::writeLightingBlock(float targetHeight) {
@@ -190,7 +195,8 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
         ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
         const uint32_t offset = mLightStride * uint32_t(i);
         const VkDescriptorSet depthSet = mSets.set(kDepthSet);
-        vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &depthSet, 1, &offset);
+        vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &depthSet, 1,
+                                &offset);
         ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }

@@ -53,7 +53,7 @@ private:
     VkSampler mSampler = VK_NULL_HANDLE;
     VulkanBuffer mLightPass; ///< LightPass slots, one per light
     uint32_t mLightStride = 0;
-    VulkanBuffer mLightingBlock; ///< ShadowMapBlock
+    VulkanBuffer mLightingBlock;                             ///< ShadowMapBlock
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;

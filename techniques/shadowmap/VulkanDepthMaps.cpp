@@ -30,7 +30,8 @@ VulkanImage VulkanDepthMaps::image(VulkanContext& context, VkFormat format, uint
                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layers);
         VkClearDepthStencilValue one{1.0f, 0};
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, layers};
-        vkCmdClearDepthStencilImage(cmd, image.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1, &range);
+        vkCmdClearDepthStencilImage(cmd, image.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1,
+                                    &range);
         transitionImage(cmd, image.image(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, layers);
     });
@@ -57,9 +58,11 @@ VkRenderPass VulkanDepthMaps::renderPass(VkDevice device, VkFormat format) {
     deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
     deps[0].dstSubpass = 0;
     deps[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    deps[0].dstStageMask = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    deps[0].dstStageMask =
+        VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     deps[0].srcAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    deps[0].dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    deps[0].dstAccessMask =
+        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     deps[1].srcSubpass = 0;
     deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
     deps[1].srcStageMask = VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
@@ -74,12 +77,13 @@ VkRenderPass VulkanDepthMaps::renderPass(VkDevice device, VkFormat format) {
     info.dependencyCount = 2;
     info.pDependencies = deps;
     VkRenderPass pass = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass (shadow map)");
+    VulkanContext::check(vkCreateRenderPass(device, &info, nullptr, &pass),
+                         "vkCreateRenderPass (shadow map)");
     return pass;
 }
 
-VkFramebuffer VulkanDepthMaps::framebuffer(VkDevice device, VkRenderPass pass, VkImageView view, uint32_t size,
-                                           uint32_t layers) {
+VkFramebuffer VulkanDepthMaps::framebuffer(VkDevice device, VkRenderPass pass, VkImageView view,
+                                           uint32_t size, uint32_t layers) {
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     info.renderPass = pass;
     info.attachmentCount = 1;
@@ -87,7 +91,8 @@ VkFramebuffer VulkanDepthMaps::framebuffer(VkDevice device, VkRenderPass pass, V
     info.width = info.height = size;
     info.layers = layers;
     VkFramebuffer fb = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateFramebuffer(device, &info, nullptr, &fb), "vkCreateFramebuffer (shadow map)");
+    VulkanContext::check(vkCreateFramebuffer(device, &info, nullptr, &fb),
+                         "vkCreateFramebuffer (shadow map)");
     return fb;
 }
 

@@ -21,7 +21,8 @@ public:
     /// `layers` layers of size^2 (a cube array when `cube`), every layer cleared to the far plane and left
     /// in the layout the lighting pass samples: layers a frame does not render (a light that casts no
     /// shadow, a face nothing reaches) are read as they are.
-    static VulkanImage image(VulkanContext& context, VkFormat format, uint32_t size, uint32_t layers, bool cube);
+    static VulkanImage image(VulkanContext& context, VkFormat format, uint32_t size, uint32_t layers,
+                             bool cube);
     /// One depth attachment cleared at the start and left DEPTH_STENCIL_READ_ONLY for the lighting pass,
     /// with the dependencies on the previous frame's reads and this frame's. The caller owns it.
     static VkRenderPass renderPass(VkDevice device, VkFormat format);

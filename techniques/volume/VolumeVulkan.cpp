@@ -119,7 +119,8 @@ void VolumeVulkan::uploadMeshes(VulkanContext& context) {
 void VolumeVulkan::createDescriptors(VulkanContext& context) {
     // Set 1: ambient.frag's block (the lights' regions and the target height).
     mSets = DescriptorSets(
-        mDevice, {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
+        mDevice,
+        {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "volume");
     mAmbientBlock = VulkanBuffer(context, kAmbientBlockSize, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mAmbientBlock.map(), 0, kAmbientBlockSize);

@@ -86,8 +86,8 @@ private:
     std::array<LightDraws, kMaxLights> mLightDraws{};
     std::array<VolumePlanner::LightRegion, kMaxLights> mRegions{};
 
-    VulkanBuffer mAmbientBlock; ///< ambient.frag's VolumeAmbient
-    DescriptorSets mSets; ///< set 1: ambient.frag's block
+    VulkanBuffer mAmbientBlock;                ///< ambient.frag's VolumeAmbient
+    DescriptorSets mSets;                      ///< set 1: ambient.frag's block
     VkPipelineLayout mLayout = VK_NULL_HANDLE; ///< frame block, VolumeAmbient, push constants
     ScenePipeline mAmbient;
     ScenePipeline mLight[2];   ///< [stencil test]

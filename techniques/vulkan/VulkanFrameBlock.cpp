@@ -27,12 +27,14 @@ VulkanFrameBlock::VulkanFrameBlock(VulkanContext& context) : mDevice(context.dev
     mStride = uint32_t((sizeof(FrameUniformData) + align - 1) / align * align);
     mBuffer = VulkanBuffer(context, VkDeviceSize(mStride) * kSlots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 
-    mSets = DescriptorSets(mDevice,
-                           {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
-                                                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
-                                                         VK_SHADER_STAGE_FRAGMENT_BIT)}},
-                           "frame block");
-    mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mBuffer.buffer(), sizeof(FrameUniformData));
+    mSets =
+        DescriptorSets(mDevice,
+                       {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                                                 VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
+                                                     VK_SHADER_STAGE_FRAGMENT_BIT)}},
+                       "frame block");
+    mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mBuffer.buffer(),
+                      sizeof(FrameUniformData));
 }
 
 VulkanFrameBlock::~VulkanFrameBlock() = default;
