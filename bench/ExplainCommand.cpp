@@ -96,6 +96,7 @@ int ExplainCommand::main(int argc, char** argv) {
     RunConfig config;
     bool listOnly = false;
     if (int code = RunOptions::parse(argc, argv, config, listOnly, kHelp); code >= 0) return code;
+    RunOptions::requireGl(config, "bench explain");
     // Declared before the techniques, so destroyed after them: they release GL objects in their
     // destructors (as in RunCommand::run).
     std::unique_ptr<Harness> harnessOwner;

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
         // Same options as bench (scene, instances, size, camera ...); --frames is the number of pairs.
         int code = RunOptions::parse(argc, argv, config, listOnly, BenchApp::helpFooter());
         if (code >= 0) return code;
+        RunOptions::requireGl(config, "handloop");
         config.submit = SubmitMode::Retained;
         Harness h(config);
         // Through the registry, as bench creates it (declared after the harness, released before it).

@@ -136,7 +136,21 @@ TEST(VulkanCli, AccuracyJudgesTheVulkanFrameAgainstTheSameReference) {
 }
 
 TEST(VulkanCli, GlOnlyCommandsSaySo) {
-    auto r = runCommand(vulkan("-t auto"));
+    // Commands that render with GL only refuse --api vulkan instead of running GL under a Vulkan label:
+    // explain takes bench's options and refuses it (3); sweep and bottleneck have no such option (2).
+    auto r = runCommand(kBench + " explain --api vulkan -t shadowmap");
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("renders with GL only"), std::string::npos) << r.output;
+    r = runCommand(kBench + " sweep --api vulkan -t shadowmap -n 1,2");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    // ... and a sweep definition whose args ask for it names the combination (its input: exit 2).
+    const std::string def = test::freshDir("vulkan-cli-sweep") + "/vk.json";
+    test::writeFile(def, R"({"name": "vk", "techniques": ["none"], "scenes": ["sphere_plane"],
+                             "size": ["64x64"], "frames": 1, "warmup": 0, "args": ["--api", "vulkan"]})");
+    r = runCommand(kBench + " sweep " + def + " --csv " + def + ".csv");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("renders with GL only"), std::string::npos) << r.output;
+    r = runCommand(vulkan("-t auto"));
     EXPECT_EQ(r.exitCode, 3) << r.output;
     r = runCommand(vulkan("--scene aircraft_day -t shadowmap"));
     EXPECT_EQ(r.exitCode, 3) << r.output;

@@ -41,7 +41,15 @@ RunConfig RunOptions::parseArgs(const std::vector<std::string>& args, RunConfig:
     bool listOnly = false;
     if (parse(int(pointers.size()), pointers.data(), config, listOnly) >= 0 || listOnly)
         throw Error("options '" + join(args, " ") + "': --help and --list do not belong here");
+    // Sweeps, the bottleneck study and the figures measure through the GL harness (their workers).
+    requireGl(config, "bench sweep (and bottleneck, figures)");
     return config;
+}
+
+void RunOptions::requireGl(const RunConfig& config, const std::string& command) {
+    if (config.api == RunConfig::Api::Vulkan)
+        throw Error(command + " renders with GL only; --api vulkan is taken by `bench` and `bench accuracy`",
+                    ExitCode::Unsupported);
 }
 
 namespace {

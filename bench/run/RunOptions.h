@@ -19,6 +19,10 @@ public:
                      const std::string& footer = {});
     /// parse() over a list of options (no program name): the sweep checks and the worker use it.
     static RunConfig parseArgs(const std::vector<std::string>& args, RunConfig::Mode mode);
+    /// For the commands that render with GL only (explain, sweep and what stands on it, handloop): throws
+    /// sb::Error(Unsupported) naming `command` when `config` asks for --api vulkan, so it never runs GL
+    /// while the user asked for Vulkan.
+    static void requireGl(const RunConfig& config, const std::string& command);
     /// "1024x768" -> (1024, 768); throws sb::Error naming the option.
     static std::pair<int, int> parseSize(const std::string& text);
 };
