@@ -15,6 +15,7 @@
 #include "TestPaths.h"
 #include "bench/ci/Fingerprint.h"
 #include "bench/ci/InstructionCount.h"
+#include "bench/ci/InstructionLayer.h"
 
 using namespace sb;
 namespace fs = std::filesystem;
@@ -53,7 +54,7 @@ protected:
 
 } // namespace
 
-TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsWithinTwoInTenThousand) {
+TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsExactlyOutsideLibc) {
     const InstructionRun a = countFrames(kFrames, "a");
     const InstructionRun again = countFrames(kFrames, "again");
     const InstructionRun twice = countFrames(2 * kFrames, "twice");
@@ -72,12 +73,22 @@ TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsWithin
         EXPECT_GT(n.irPerFrame, 1e6);
 
         // Repeatability. With the pinned environment (LP_NUM_THREADS=0: no rasteriser thread) repeated
-        // runs were bit-identical (4 of 4, and again in later runs), but once, in a full parallel ctest
-        // run, a pair differed by 1.006e-4 (not reproduced in three reruns, alone and under load; the
-        // process's heap layout under address randomisation is the likely source). 2e-4 keeps that margin
-        // and still fails a run that lost its pinning: with one rasteriser thread, identical runs spread by
-        // up to 7.6e-4 (heap history through calloc).
-        EXPECT_LT(relativeDifference(n.irPerFrame, n2.irPerFrame), 2e-4)
+        // runs are bit-identical in the driver, the shader code and the harness; libc is not. In a full
+        // parallel ctest run (landing CI of 2026-12-04) a pair of `none` runs differed by 2.76e-4 in
+        // total, every instruction of it in System (607107 against 636357 Ir over 3 frames: calloc's
+        // memset clears reused heap memory but not fresh pages, so it follows the heap's history), while
+        // Mesa, ShaderJit and Harness were equal to the instruction. So: everything outside libc within
+        // 2e-4 (0 measured; once 1.006e-4 before the categories were compared), and the total within the
+        // gate's A/A limit, 1e-3 (InstructionLayer::kUnstableAbove), which still fails a run that lost its
+        // pinning only if it drifts further: with one rasteriser thread identical runs spread by 7.6e-4.
+        double outside = 0.0, outside2 = 0.0;
+        for (int c = 0; c < kCostCategoryCount; ++c)
+            if (c != int(CostCategory::System)) {
+                outside += double(n.byCategory[c]);
+                outside2 += double(n2.byCategory[c]);
+            }
+        EXPECT_LT(relativeDifference(outside, outside2), 2e-4) << outside << " vs " << outside2;
+        EXPECT_LT(relativeDifference(n.irPerFrame, n2.irPerFrame), InstructionLayer::kUnstableAbove)
             << n.irPerFrame << " vs " << n2.irPerFrame;
 
         // Only the measured frames are counted. Two points give the cost of a frame, (T(2N) - T(N)) / N,
