@@ -1,9 +1,11 @@
 #include "bench/BenchApp.h"
 
+#include <filesystem>
 #include <iostream>
 
 #include <malloc.h>
 
+#include "bench/run/BuildInfo.h"
 #include "bench/ExplainCommand.h"
 #include "bench/ExportCommand.h"
 #include "bench/MergeCommand.h"
@@ -14,10 +16,12 @@
 #include "bench/figures/FiguresCommand.h"
 #include "bench/golden/GoldenCommand.h"
 #include "bench/output/StandardStreams.h"
+#include "bench/report/ReportCommand.h"
 #include "bench/sweep/SweepCommand.h"
 #include "bench/sweep/SweepWorker.h"
 #include "core/Error.h"
 #include "core/Injection.h"
+#include "core/Paths.h"
 
 namespace sb {
 
@@ -75,8 +79,11 @@ constexpr Mode kModes[] = {
      ExplainCommand::main},
     {"compare", "bench compare BASE NEW", "the perf gate's verdict on two result CSVs", CompareCommand::main},
     {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main},
-    {"export", "bench export IN.csv --format md", "a result CSV as a Markdown table, JSON or CSV",
+    {"export", "bench export IN.csv --format md",
+     "a result CSV as a Markdown table, JSON, CSV, Google Benchmark JSON\n"
+     "or github-action-benchmark input (dashboards)",
      ExportCommand::main},
+    {"report", "bench report DIR [-o PAGE]", "results as one HTML page (sortable)", ReportCommand::main},
     {"sweep-worker", "bench sweep-worker JOB.json", nullptr, workerMain},
 };
 
@@ -92,7 +99,7 @@ constexpr const char* kExamples = R"(Examples:
   bench --csv results.csv --samples frames.csv     append a row per technique, keep per-frame samples
   bench --screenshot out.png --visibility vis.png  images of the last frame
   bench --model path/to/model.obj                  your own caster through assimp
-  bench --window                                   on-screen viewer (GLFW): drag to orbit, Tab switches
+  bench --window                                   on-screen viewer (GLFW): overlay, Tab switches, V visibility
   bench accuracy -t shadowmap --sweep --csv acc.csv  error against time for every shadowmap knob
   bench -t none -t shadowmap --repeat 5            interleaved rounds: ratios from runs side by side
   bench -t none -t shadowmap --format json         the rows as JSON on stdout (also csv, md)
@@ -100,6 +107,9 @@ constexpr const char* kExamples = R"(Examples:
   bench sweep -t none -t shadowmap -n 1,50,100,200 --csv inst.csv
   bench bottleneck -t none -t shadowmap -n 100 --csv bn.csv
   bench explain -t planar --scene aircraft         effects asked for and delivered, passes run
+  bench report out/                                the CSVs, figures and images of out/ as one HTML page
+  bench export r.csv --format gbench -o r.json     Google Benchmark JSON for dashboards
+  bench --version                                  version, the commit it was built from, build type
 
 Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 the input is wrong (option, value, file, index),
 3 this machine or context lacks what is needed (an extension, a device, a loader).
@@ -121,8 +131,24 @@ std::string BenchApp::helpFooter() {
     return out + "\n" + kExamples;
 }
 
+std::string BenchApp::versionText() {
+    std::string data;
+    try {
+        data = std::filesystem::path(Paths::findResourceDirectory("shaders")).parent_path().string();
+    } catch (const Error& e) {
+        data = std::string("none found (") + e.what() + ")";
+    }
+    return std::string("shadowbench ") + BuildInfo::version() + "\ncommit " + BuildInfo::commit() +
+           "\nbuild " + BuildInfo::buildType() + ", " + BuildInfo::compiler() + "\ndata " + data + "\n";
+}
+
 int BenchApp::dispatch(int argc, char** argv) {
     const std::string sub = argc > 1 ? argv[1] : "";
+    if (sub == "--version" || sub == "-V") {
+        if (argc > 2) throw Error("--version takes no other arguments", ExitCode::BadInput);
+        std::cout << versionText();
+        return 0;
+    }
     for (const Mode& m : kModes)
         if (*m.name && sub == m.name) return m.main(argc - 1, argv + 1);
     return measureMain(argc, argv);

@@ -10,11 +10,13 @@
 namespace sb {
 
 int ExportCommand::main(int argc, char** argv) {
-    CLI::App app{"bench export: a result CSV as JSON, Markdown or CSV", "bench export"};
+    CLI::App app{"bench export: a result CSV as JSON, Markdown, CSV or a dashboard's JSON", "bench export"};
     app.footer(R"(Examples:
   bench export results.csv --format md                 key columns as a Markdown table on stdout
   bench export results.csv --format md --all-columns   every column
-  bench export results.csv --format json -o results.json)");
+  bench export results.csv --format json -o results.json
+  bench export results.csv --format gbench -o bench.json        Google Benchmark JSON (compare.py, Bencher)
+  bench export ci-out/work.csv --format gh-benchmark -o gh.json  github-action-benchmark customSmallerIsBetter)");
     std::string input, output, format = "json";
     bool allColumns = false;
     app.add_option("input", input, "a CSV written by bench")->required();

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "bench/BenchApp.h"
+#include "bench/images/AccuracyImages.h"
 #include "bench/output/CsvWriter.h"
 #include "bench/output/ImageWriter.h"
 #include "bench/output/RowExport.h"
@@ -55,6 +56,29 @@ void checkOutputs(const RunConfig& config) {
     if (!config.screenshotPath.empty()) ImageWriter::checkWritable(config.screenshotPath, "--screenshot");
     if (!config.visibilityPath.empty()) ImageWriter::checkWritable(config.visibilityPath, "--visibility");
     if (config.format != RowFormat::Console) StandardStreams::requireStdout("--format");
+}
+
+/// bench accuracy --images: the pictures of the frame `evaluator` has just scored, as configuration
+/// `label` (only the first round's: a later round of the same configuration would replace them).
+void drawImages(AccuracyImages* images, const AccuracyEvaluator* evaluator, const Measurement& m,
+                const std::string& label, EffectMask effects, int round, const RunConfig& config,
+                std::ostream& log) {
+    if (!images || !evaluator || !m.accuracy || round != 1 || !evaluator->lastJudged()) return;
+    const AccuracyEvaluator::Sample& s = *evaluator->lastJudged();
+    const std::vector<std::string> written =
+        images->add(label, s.technique, s.reference, s.mask, m.accuracy->hard, m.accuracy->soft,
+                    hasEffect(effects, Effect::SoftShadows), m.accuracy->softReference);
+    if (config.quiet) return;
+    log << "  images:";
+    for (const std::string& path : written) log << " " << path;
+    log << "\n";
+}
+
+/// The contact sheet once every configuration is drawn.
+void finishImages(const AccuracyImages* images, const RunConfig& config, std::ostream& log) {
+    if (!images) return;
+    const std::string sheet = images->writeContactSheet();
+    if (!sheet.empty() && !config.quiet) log << "contact sheet: " << sheet << "\n";
 }
 
 /// Progress and tables go to stdout, unless stdout carries the rows in a machine format (--format).
@@ -173,7 +197,8 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
 /// gives the reference its sample positions; same size and camera, so the same pixels), without the
 /// stability perturbations. What is GL's alone says so before anything is created: -t auto, the viewer
 /// and the techniques without a Vulkan form (exit 3 each).
-int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs) {
+int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs,
+              const std::string& imagesDir) {
     const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
     if (config.context.visibleWindow)
         throw Error("--window draws with GL; --api vulkan measures headless only", ExitCode::Unsupported);
@@ -187,6 +212,7 @@ int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs) 
         techniques.push_back(TechniqueRegistry::createVulkan(spec));
     }
     checkOutputs(config);
+    if (!imagesDir.empty()) AccuracyImages::prepareDirectory(imagesDir);
     owner = std::make_unique<VulkanHarness>(config);
     VulkanHarness& harness = *owner;
     std::unique_ptr<Harness> judge; // bench accuracy: the GL harness whose reference judges the frames
@@ -202,6 +228,10 @@ int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs) 
         options.referenceSamples = config.referenceSamples;
         options.stability = false;
     }
+    std::unique_ptr<AccuracyImages> images;
+    if (evaluator && !imagesDir.empty())
+        images = std::make_unique<AccuracyImages>(imagesDir, harness.scene().name, config.accuracyLight,
+                                                  config.width, config.height);
     std::ostream& log = logStream(config);
     const RowSource source = harness.rowSource();
     if (!config.quiet) {
@@ -245,6 +275,8 @@ int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs) 
                 log << "\n";
             }
             if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
+            drawImages(images.get(), evaluator.get(), m, specs[i].toString(), technique.info().effects, round,
+                       config, log);
             const bool several = config.techniques.size() > 1;
             VulkanTargets& t = harness.targets();
             if (!config.screenshotPath.empty())
@@ -266,6 +298,7 @@ int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs) 
             results.push_back(std::move(m));
         }
     }
+    finishImages(images.get(), config, log);
     std::vector<RunResult> runs;
     for (const Measurement& m : results) runs.push_back(m.run);
     if (accuracy) {
@@ -301,18 +334,29 @@ std::vector<TechniqueSpec> RunCommand::configurations(const RunConfig& config) {
     return specs;
 }
 
+namespace {
+int runMeasured(const RunConfig& config, const std::string& imagesDir);
+} // namespace
+
 int RunCommand::run(const RunConfig& config) {
+    return runMeasured(config, "");
+}
+
+namespace {
+/// RunCommand::run, with bench accuracy's pictures written into `imagesDir` when it is not empty.
+int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     // Declared before the techniques so that it is destroyed after them: techniques release GL objects
     // in their destructors, which needs the harness's context (also when an exception unwinds).
     std::unique_ptr<Harness> harnessOwner;
     const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
     // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
-    std::vector<TechniqueSpec> specs = configurations(config);
-    if (config.api == RunConfig::Api::Vulkan) return runVulkan(config, specs);
+    std::vector<TechniqueSpec> specs = RunCommand::configurations(config);
+    if (config.api == RunConfig::Api::Vulkan) return runVulkan(config, specs, imagesDir);
     std::vector<std::unique_ptr<Technique>> techniques;
     for (const TechniqueSpec& spec : specs)
         techniques.push_back(isAuto(spec) ? nullptr : TechniqueRegistry::create(spec));
     checkOutputs(config);
+    if (!imagesDir.empty()) AccuracyImages::prepareDirectory(imagesDir);
 
     harnessOwner = std::make_unique<Harness>(config);
     Harness& harness = *harnessOwner;
@@ -341,6 +385,10 @@ int RunCommand::run(const RunConfig& config) {
     options.light = config.accuracyLight;
     options.referenceSamples = config.referenceSamples;
     options.stability = config.stability;
+    std::unique_ptr<AccuracyImages> images;
+    if (evaluator && !imagesDir.empty())
+        images = std::make_unique<AccuracyImages>(imagesDir, harness.scene().name, config.accuracyLight,
+                                                  config.width, config.height);
 
     Environment env = Environment::capture();
     std::vector<Measurement> results;
@@ -394,27 +442,53 @@ int RunCommand::run(const RunConfig& config) {
             if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
             if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, m.run);
             writeImages(config, harness, technique.name());
+            drawImages(images.get(), evaluator.get(), m, specs[i].toString(), technique.info().effects, round,
+                       config, log);
             results.push_back(std::move(m));
         }
     }
     // Nothing measured: the run failed as a whole, with the worst error's own line and code, as a
     // single technique always did (and an existing CSV is left as it was).
     if (results.empty() && !refusals.empty()) throw Error(worst(refusals).what, worst(refusals).code);
+    finishImages(images.get(), config, log);
     report(config, harness, results, refusals);
     return refusals.empty() ? 0 : int(worst(refusals).code);
 }
+} // namespace
+
+namespace {
+// `bench accuracy --help`'s end: what it measures, the columns it adds, examples.
+constexpr const char* kAccuracyFooter =
+    R"(Each technique renders one frame; its visibility of the judged light is compared pixel by pixel
+with Embree's exact answer at the same pixels (bench --help: every other option). Columns added to
+the row (README, "CSV columns"): acc_wrong_pct (pixels on the wrong side of the shadow edge),
+acc_wrong_no_edge_pct (the same outside the edge band), acc_rmse (soft shadows), acc_nan, acc_inf,
+acc_out_of_range (numeric sanity), acc_gain_camera, acc_gain_light, acc_flicker (stability under
+small perturbations; --no-stability skips them).
+
+Examples:
+  bench accuracy -t shadowmap -t volume                  both against the reference, aircraft x200
+  bench accuracy -t shadowmap --sweep --csv acc.csv      error against time for every shadowmap knob
+  bench accuracy -t pcss -t vsm --ref-samples 64        soft shadows against a 64-sample area light
+  bench accuracy --api vulkan -t shadowmap               the Vulkan frame judged the same way
+  bench accuracy -t shadowmap -t pcss --images out/maps  error maps, signed maps, one contact sheet
+
+Exit codes as for bench: 0 ok, 1 run failed, 2 wrong input, 3 the machine lacks what is needed.)";
+} // namespace
 
 int RunCommand::main(int argc, char** argv, RunConfig::Mode mode) {
     RunConfig config;
     config.mode = mode;
     bool listOnly = false;
-    if (int code = RunOptions::parse(argc, argv, config, listOnly, BenchApp::helpFooter()); code >= 0)
+    const std::string footer = mode == RunConfig::Mode::Accuracy ? kAccuracyFooter : BenchApp::helpFooter();
+    std::string imagesDir; // bench accuracy --images
+    if (int code = RunOptions::parse(argc, argv, config, listOnly, footer, &imagesDir); code >= 0)
         return code;
     if (listOnly) {
         ConsoleReport::printTechniqueList(std::cout);
         return 0;
     }
-    return run(config);
+    return runMeasured(config, imagesDir);
 }
 
 } // namespace sb

@@ -22,6 +22,12 @@ std::vector<std::string> Paths::searchRoots() {
     if (!ec && exe.has_parent_path()) {
         roots.push_back(exe.parent_path().string());
         if (exe.parent_path().has_parent_path()) roots.push_back(exe.parent_path().parent_path().string());
+#ifdef SHADOWBENCH_INSTALL_DATADIR
+        // Installed: <prefix>/bin/bench reads <prefix>/share/shadowbench (relative, so a prefix moved
+        // or unpacked elsewhere, as a .deb's or a test's temporary prefix, still finds its files).
+        if (exe.parent_path().has_parent_path())
+            roots.push_back((exe.parent_path().parent_path() / SHADOWBENCH_INSTALL_DATADIR).string());
+#endif
     }
 #ifdef SHADOWBENCH_SOURCE_DIR
     roots.push_back(SHADOWBENCH_SOURCE_DIR);
@@ -36,6 +42,17 @@ std::string Paths::findResource(const std::string& relative) {
         if (fs::is_regular_file(candidate, ec)) return candidate.string();
     }
     return "";
+}
+
+std::string Paths::findResourceDirectory(const std::string& relative) {
+    std::string searched;
+    for (const std::string& root : searchRoots()) {
+        const fs::path candidate = fs::path(root) / relative;
+        std::error_code error;
+        if (fs::is_directory(candidate, error)) return candidate.string();
+        searched += (searched.empty() ? "" : ", ") + root;
+    }
+    throw Error("directory '" + relative + "/' not found (searched: " + searched + ")", ExitCode::Failure);
 }
 
 std::string Paths::readTextFile(const std::string& path) {

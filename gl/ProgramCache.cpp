@@ -60,18 +60,6 @@ std::string cacheKey(const ShaderSources& sources, const Defines& defines) {
     return key;
 }
 
-/// Paths::findResource matches regular files only, so the directory is looked for in its search roots.
-std::string findShaderRoot() {
-    std::string searched;
-    for (const std::string& root : Paths::searchRoots()) {
-        std::filesystem::path candidate = std::filesystem::path(root) / kShaderDirectory;
-        std::error_code error;
-        if (std::filesystem::is_directory(candidate, error)) return candidate.string();
-        searched += (searched.empty() ? "" : ", ") + root;
-    }
-    throw Error("shader directory 'shaders/' not found (searched: " + searched + ")", ExitCode::Failure);
-}
-
 /// Compiles one stage; throws with the log mapped back to file:line through the #line table.
 GLuint compileStage(const std::string& root, const std::string& file, const Defines& defines, GLenum stage) {
     ShaderPreprocessor preprocessor(root);
@@ -169,7 +157,7 @@ std::string definesKey(const Defines& d) {
 }
 
 ProgramCache::ProgramCache(std::string shaderRoot)
-    : mRoot(shaderRoot.empty() ? findShaderRoot() : std::move(shaderRoot)) {}
+    : mRoot(shaderRoot.empty() ? Paths::findResourceDirectory(kShaderDirectory) : std::move(shaderRoot)) {}
 
 const Program& ProgramCache::get(const ShaderSources& sources, const Defines& defines) {
     if (!mDumpDirectory.empty()) dump(sources, defines);

@@ -16,6 +16,10 @@ PACKAGES=(
   libglm-dev nlohmann-json3-dev libcli11-dev libopenimageio-dev libassimp-dev libembree-dev
   # tests (GNU parallel: the sharded-sweep test runs shards the way the README documents)
   googletest libgtest-dev libgmock-dev xvfb xauth parallel
+  # the HTML report's test loads the page in a real browser (headless)
+  chromium
+  # the viewer's test under Xvfb: synthetic key taps (xdotool) and window screenshots (xwd)
+  xdotool x11-apps
   # real clients and offline tools the tests drive: glslang compiles every shader permutation, apitrace
   # traces and replays a run
   glslang-tools apitrace
@@ -29,6 +33,8 @@ PACKAGES=(
   python3-matplotlib python3-pandas
   # the workflow templates' test parses them with PyYAML
   python3-yaml
+  # the dashboard exports are read back by Google Benchmark's own compare.py (which needs SciPy)
+  libbenchmark-tools python3-scipy
 )
 
 missing=()

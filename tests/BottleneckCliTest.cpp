@@ -114,4 +114,30 @@ TEST(BottleneckCli, FromACsvWithoutStudyRowsIsAClearError) {
     EXPECT_NE(r.output.find("no bottleneck rows"), std::string::npos) << r.output;
 }
 
+// What each stage's load is, as --help says it and as the README says it: the same definitions,
+// compared as words (line breaks and the README's backticks aside), and both the ones the classifier
+// uses (bench/bottleneck/BottleneckStudy.cpp reads load_gl_calls, load_primitives, load_fragments).
+TEST(BottleneckCli, HelpAndReadmeDefineTheLoadsAlike) {
+    auto squash = [](std::string text) {
+        std::string out;
+        for (char c : text) {
+            if (c == '`') continue;
+            const char d = c == '\n' ? ' ' : c;
+            if (d == ' ' && !out.empty() && out.back() == ' ') continue;
+            out += d;
+        }
+        return out;
+    };
+    const auto help = runCommand(kBench + " bottleneck --help");
+    ASSERT_EQ(help.exitCode, 0) << help.output;
+    const std::string readme = squash(test::readFile(std::string(SB_SOURCE_DIR) + "/README.md"));
+    for (const char* definition :
+         {"CPU load = GL calls issued", "vertex load = primitives submitted (not vertex shader invocations",
+          "fill load = fragment shader invocations"}) {
+        EXPECT_NE(squash(help.output).find(definition), std::string::npos) << definition << "\n"
+                                                                           << help.output;
+        EXPECT_NE(readme.find(definition), std::string::npos) << definition << " is not in the README";
+    }
+}
+
 } // namespace

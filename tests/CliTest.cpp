@@ -44,6 +44,21 @@ TEST(Cli, HelpShowsExamples) {
     EXPECT_NE(r.output.find("--technique"), std::string::npos);
 }
 
+// `bench accuracy --help` is the accuracy mode's own help: its title, its options in their group, its
+// columns and examples; the plain run's help hides those options (it refuses them).
+TEST(Cli, AccuracyHelpShowsTheAccuracyOptions) {
+    auto r = runCommand(bench("accuracy --help"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* s :
+         {"bench accuracy: render each technique", "Accuracy options", "--sweep", "--light-index",
+          "--ref-samples", "--no-stability", "acc_wrong_pct", "bench accuracy -t shadowmap --sweep"})
+        EXPECT_NE(r.output.find(s), std::string::npos) << "missing '" << s << "' in:\n" << r.output;
+    auto plain = runCommand(bench("--help"));
+    ASSERT_EQ(plain.exitCode, 0);
+    EXPECT_EQ(plain.output.find("--ref-samples"), std::string::npos) << plain.output;
+    EXPECT_NE(plain.output.find("bench accuracy [options]"), std::string::npos); // the mode is still listed
+}
+
 TEST(Cli, ListShowsTechniquesEffectsPassesAndProperties) {
     auto r = runCommand(bench("--list"));
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
+#include "VkTestSupport.h"
 #include "bench/run/Harness.h"
 #include "bench/run/VulkanHarness.h"
 #include "techniques/TechniqueRegistry.h"
@@ -129,8 +130,7 @@ Images renderVulkan(const Case& c, std::string& validation) {
     h.prepare(*t);
     h.renderFrame(*t);
     Images out{h.targets().readColorRGBA8(), h.targets().readVisibilityRGBA32F()};
-    for (const std::string& m : h.context().validationMessages())
-        if (m.rfind("error", 0) == 0) validation += m + "\n";
+    validation += test::validationErrorLog(h.context());
     t.reset(); // before the device goes
     return out;
 }

@@ -2,7 +2,7 @@
 // The layout's dependency rules (docs/ARCHITECTURE.md, "Layout"), checked over a source tree as text:
 //   - includes: a file may include its own folder and the folders its layer lists, nothing else
 //     (gl/ and scenes/ stand side by side on core/; no technique folder includes another; bench/'s
-//     folders form one order: output < run < viewer, sweep < bottleneck < figures < bench/);
+//     folders form one order: output < images, run < viewer, sweep < bottleneck < figures, report < bench/);
 //   - core/ includes only the C++ standard library, GLM and nlohmann/json;
 //   - shaders: a technique's C++ names programs from shaders/<its name>/ and shaders/common/ only, and a
 //     shader includes only its own folder and common/;
@@ -73,22 +73,27 @@ inline const std::vector<Layer>& layers() {
         {"techniques/*", plus(plus(techniques, {"techniques/common"}), vulkanTechniques), {"common"}},
         {"reference", techniques, {"reference", "common"}},
         {"bench/output", {"core", "gl"}, {}},
+        // Pictures of results (error maps, difference maps, contact sheets): pixels and the accuracy
+        // classes in, pixels out, written through bench/output's ImageWriter.
+        {"bench/images", plus(belowBench, {"bench/output"}), {}},
         {"bench/run", plus(belowBench, {"bench/output"}), {"calibrate", "common"}},
-        {"bench/viewer", plus(belowBench, {"bench/output", "bench/run"}), {}},
+        {"bench/viewer", plus(belowBench, {"bench/output", "bench/run"}), {"viewer", "common"}},
         {"bench/sweep", plus(belowBench, {"bench/output", "bench/run"}), {}},
         {"bench/bottleneck", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
         // `-t auto`: the calibration runs frames through the harness and judges them like accuracy.
         {"bench/select", plus(belowBench, {"bench/output", "bench/run"}), {}},
         // The matrix resolves its `auto` cells as a run does.
-        {"bench/golden", plus(belowBench, {"bench/output", "bench/run", "bench/select"}), {}},
+        {"bench/golden", plus(belowBench, {"bench/output", "bench/images", "bench/run", "bench/select"}), {}},
         // The performance gate (work counters, instructions under callgrind, wall-time statistics).
         {"bench/figures",
          plus(belowBench, {"bench/output", "bench/run", "bench/sweep", "bench/bottleneck"}),
          {}},
         {"bench/ci", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
+        {"bench/report", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
         {"bench",
-         plus(belowBench, {"bench/output", "bench/run", "bench/viewer", "bench/sweep", "bench/bottleneck",
-                           "bench/figures", "bench/golden", "bench/ci", "bench/select"}),
+         plus(belowBench,
+              {"bench/output", "bench/images", "bench/report", "bench/run", "bench/viewer", "bench/sweep",
+               "bench/bottleneck", "bench/figures", "bench/golden", "bench/ci", "bench/select"}),
          {"common"}},
         // The hand-written shadow map that bench is measured against: the scene model only, no harness.
         {"bench/handshadow", {"core", "scenes"}, {}},

@@ -3,6 +3,7 @@
 // layer A with the pass that grew named. The expected outcome of each case is known by construction:
 // the injection adds a full-screen pass, so its fragments appear where there were none.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
 #include "bench/output/CsvWriter.h"
@@ -45,6 +46,24 @@ TEST_F(PerfGateCliTest, SameBuildPassesAndAnInjectedPassFailsNamingIt) {
     const std::string json = test::readFile(mDir + "/out/report.json");
     EXPECT_NE(json.find("\"verdict\": \"FAIL\""), std::string::npos) << json;
     EXPECT_NE(test::readFile(mDir + "/out/work.csv").find("extra_fullscreen_pass"), std::string::npos);
+    // And the dashboard files chart the same rows, named by configuration, with the frame's exact work
+    // as work.csv has it (the injected pass's fragments included).
+    const auto rows = test::csvRowMaps(mDir + "/out/work.csv");
+    const auto gh = nlohmann::json::parse(test::readFile(mDir + "/out/gh-benchmark.json"));
+    const auto gbench = nlohmann::json::parse(test::readFile(mDir + "/out/gbench.json"));
+    ASSERT_EQ(gbench["benchmarks"].size(), rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+        EXPECT_EQ(gbench["benchmarks"][i]["name"], rows[i].at("ci_config"));
+        EXPECT_DOUBLE_EQ(gbench["benchmarks"][i]["load_fragments"].get<double>(),
+                         std::stod(rows[i].at("load_fragments")));
+        bool found = false;
+        for (const auto& item : gh)
+            if (item["name"] == rows[i].at("ci_config") + " load_fragments") {
+                found = true;
+                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(rows[i].at("load_fragments")));
+            }
+        EXPECT_TRUE(found) << gh.dump(1);
+    }
     // Every column bench ci writes is documented in the README's CSV section.
     const auto documented = test::documentedColumns();
     for (const std::string& h : CsvWriter::read(mDir + "/out/work.csv").header)

@@ -49,7 +49,7 @@ TEST_F(RowExportTest, ParseRowFormatRejectsOthersListingTheValidNames) {
         } catch (const Error& e) {
             EXPECT_EQ(e.code(), ExitCode::BadInput);
             EXPECT_EQ(std::string(e.what()), "unknown output format '" + std::string(bad) +
-                                                 "' (valid: console, csv, json, md, markdown)");
+                                                 "' (valid: console, csv, json, md, markdown, gbench, gh-benchmark)");
         }
     }
 }

@@ -25,6 +25,14 @@ inline std::string validationLog(const VulkanContext& context) {
     return out;
 }
 
+/// The layer's error messages only (those starting "error"), one per line; "" when there were none.
+inline std::string validationErrorLog(const VulkanContext& context) {
+    std::string out;
+    for (const std::string& m : context.validationMessages())
+        if (m.rfind("error", 0) == 0) out += m + "\n";
+    return out;
+}
+
 class VulkanTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {

@@ -3,10 +3,13 @@
 (/usr/bin/python3, python3-matplotlib, python3-pandas):
 
   /usr/bin/python3 tools/plot.py pareto results/accuracy/aircraft.csv --out results/accuracy/pareto
-      error against median frame time, one series per technique, the Pareto front highlighted;
+      error against median frame time, one series per technique, the Pareto front highlighted; the
+      points are numbered (placed so that no two numbers or markers overlap) and listed in a key beside
+      the chart (number, time, error, configuration);
   /usr/bin/python3 tools/plot.py lines inst.csv --out inst --x instances [--y wall_ms_median]
-      a measure against an axis, one line per technique (median over rounds; bars: the spread over
-      rounds, or p5..p95 of the frames with a single round), one panel per --facet value;
+      a measure against an axis, one line per technique (median over rounds; bars: min-max over the
+      rounds, or p5..p95 of the frames with a single round, as the legend's title says), one panel per
+      --facet value;
   /usr/bin/python3 tools/plot.py bottleneck bn_classes.csv --out bn
       the bottleneck classification: each stage's share of the frame, and the evidence (T/T0 for
       every perturbation).
@@ -15,8 +18,16 @@
       with its speed-up over the first bar of its panel (e.g. every optimisation off); --diff-labels
       names each bar by the properties that differ from the first.
 Each writes OUT.png and OUT.svg. `bench figures` calls it for every declared figure.
+
+Every figure says what it shows: a line under the title gives the parameters read from the rows
+themselves (size, frames, warm-up, rounds, renderer), so a reduced run (`bench figures --reduced`)
+is not titled with the full run's size, and the legend's title says what the error bars are. The
+output is byte for byte the same for the same CSV and the same matplotlib (no date, a fixed SVG id
+salt), so replotting committed figures leaves git clean.
 """
 import argparse
+import os
+import re
 import sys
 import textwrap
 
@@ -26,6 +37,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+
+# Reproducible output: matplotlib names SVG clip paths and glyphs by hashes salted with a random value
+# unless this is set, and stamps the date into the SVG metadata unless save() clears it.
+matplotlib.rcParams["svg.hashsalt"] = "shadowbench-plot"
+CREATOR = "shadowbench tools/plot.py"
 
 METRIC_LABELS = {
     "acc_wrong_pct": "wrongly classified pixels (%)",
@@ -53,8 +69,59 @@ def short_label(row, default_props):
     return ",".join(diff) if diff else "default"
 
 
+def distinct_ints(df, col):
+    """The distinct integer values of a column, sorted ([] when it is absent or empty)."""
+    if col not in df.columns:
+        return []
+    return sorted({int(v) for v in pd.to_numeric(df[col], errors="coerce").dropna()})
+
+
+def distinct_sizes(df):
+    """The distinct 'WxH' of the rows, smallest first."""
+    if "width" not in df.columns or "height" not in df.columns:
+        return []
+    pairs = df[["width", "height"]].apply(pd.to_numeric, errors="coerce").dropna().astype(int)
+    return [f"{w}x{h}" for w, h in sorted({(int(w), int(h)) for w, h in pairs.itertuples(index=False)})]
+
+
+def spread(values):
+    return "" if not values else str(values[0]) if len(values) == 1 else f"{values[0]}-{values[-1]}"
+
+
+def run_parameters(df, frames_df=None, what=""):
+    """The line under a title: the parameters the rows were measured with, e.g. 'measured: 128x128, 2
+    frames after 1 warm-up, 2 rounds; llvmpipe (...)'. frames_df holds the frame counts when df does not
+    (a bottleneck figure's classes.csv: its data.csv). `what` says what a point or bar is."""
+    src = df if frames_df is None else frames_df
+    parts = []
+    sizes = distinct_sizes(df)
+    if sizes:
+        parts.append(", ".join(sizes) if len(sizes) <= 3 else f"{sizes[0]} ... {sizes[-1]}")
+    frames, warmup, rounds = distinct_ints(src, "frames"), distinct_ints(src, "warmup"), distinct_ints(src, "repeat")
+    if frames:
+        parts.append(f"{spread(frames)} frames" + (f" after {spread(warmup)} warm-up" if warmup else ""))
+    if rounds:
+        parts.append(f"{max(rounds)} round{'s' if max(rounds) > 1 else ''}")
+    renderer = next((str(v) for v in df.get("renderer", pd.Series(dtype=str)).dropna()), "")
+    text = "measured: " + ", ".join(parts) + (f"; {renderer}" if renderer else "")
+    return text + (f"\n{what}" if what else "")
+
+
+def true_title(title, df):
+    """The declared title with its size ('1024x1024') and instance count (' x200') replaced by the
+    measured ones where the rows hold exactly one and it differs: a reduced run's figure must not carry
+    the full run's parameters."""
+    sizes = distinct_sizes(df)
+    if len(sizes) == 1 and len(re.findall(r"\b\d+x\d+\b", title)) == 1:
+        title = re.sub(r"\b\d+x\d+\b", sizes[0], title)
+    counts = [n for n in distinct_ints(df, "instances") if n > 0]
+    if len(counts) == 1 and len(re.findall(r"(?<= )x\d+\b", title)) == 1:
+        title = re.sub(r"(?<= )x\d+\b", f"x{counts[0]}", title)
+    return title
+
+
 def pareto(args):
-    frames = [pd.read_csv(path) for path in args.csv]
+    frames = [pd.read_csv(path, low_memory=False) for path in args.csv]
     df = pd.concat(frames, ignore_index=True)
     for col in ("technique", "properties", "wall_ms_median", args.metric):
         if col not in df.columns:
@@ -65,30 +132,47 @@ def pareto(args):
         base.setdefault(row["technique"], dict(kv.split("=", 1) for kv in str(row["properties"]).split(":") if "=" in kv))
 
     facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
-    fig, axes = plt.subplots(1, len(facets), figsize=(8 * len(facets), 5.5), dpi=120, squeeze=False)
-    fronts = 0
-    for ax, facet in zip(axes[0], facets):
+    # Each panel is the chart and, beside it, the key of its numbered points (labels written at the
+    # points collide where configurations cost the same); two panels a row.
+    cols = min(len(facets), 2)
+    rows = (len(facets) + cols - 1) // cols
+    fig = plt.figure(figsize=(12.5 * cols, 5.6 * rows + 0.6), dpi=120)
+    grid = fig.add_gridspec(rows, 2 * cols, width_ratios=[1.55, 1] * cols)
+    panels = []
+    for i, facet in enumerate(facets):
+        ax = fig.add_subplot(grid[i // cols, 2 * (i % cols)])
+        key = fig.add_subplot(grid[i // cols, 2 * (i % cols) + 1])
         part = df if facet is None else df[df[args.facet] == facet]
-        fronts += pareto_panel(ax, part, base, args)
-        first = part.iloc[0]
-        default = (f"Accuracy against time: {first.get('scene', '')}, {first.get('width', '')}x"
-                   f"{first.get('height', '')}, {first.get('renderer', '')}")
-        ax.set_title(f"{args.facet} = {facet}" if facet is not None else (args.title or default), fontsize=9)
-    if args.facet and args.title:
-        fig.suptitle(args.title, fontsize=10)
-    save(fig, args.out, f"{len(df)} points, {fronts} on the front(s)")
+        panels.append((ax, key, pareto_panel(ax, part, base, args)))
+        ax.set_title(f"{args.facet} = {facet}" if facet is not None else "", fontsize=9)
+    first = df.iloc[0]
+    title = true_title(args.title, df) if args.title else \
+        f"Accuracy against time: {first.get('scene', '')}"
+    headline(fig, title + "\n" + run_parameters(df, what="each point: one configuration, the median of its "
+                                                 "frames' wall time against its error over the judged pixels"))
+    layout(fig)
+    fronts = 0
+    for ax, key, (points, front) in panels:
+        fronts += len(front)
+        place_numbers(ax, points)
+        write_key(key, ax, points, args.metric)
+    save(fig, args.out, f"{len(df)} points, {fronts} on the front(s)", relayout=False)
 
 
 def pareto_panel(ax, df, base, args):
-    """One accuracy-against-time scatter with its Pareto front; returns the front's size."""
+    """One accuracy-against-time scatter with its Pareto front; returns its points (number, x, y,
+    colour, technique, label) and the front's indices."""
+    points = []
     for tech, group in df.groupby("technique", sort=False):
-        ax.scatter(group["wall_ms_median"], group[args.metric], label=tech, s=36, zorder=3)
-        for _, row in group.iterrows():
-            ax.annotate(short_label(row, base), (row["wall_ms_median"], row[args.metric]), fontsize=6,
-                        xytext=(4, 3), textcoords="offset points", color="0.3")
-    points = list(zip(df["wall_ms_median"], df[args.metric]))
-    front = [points[i] for i in pareto_front(points)]
-    ax.plot([p[0] for p in front], [p[1] for p in front], color="black", lw=1.2, ls="--", zorder=2,
+        dots = ax.scatter(group["wall_ms_median"], group[args.metric], label=tech, s=36, zorder=3)
+        colour = dots.get_facecolor()[0]
+        for _, row in group.sort_values("wall_ms_median").iterrows():
+            points.append((len(points) + 1, float(row["wall_ms_median"]), float(row[args.metric]), colour, tech,
+                           short_label(row, base)))
+    xy = [(p[1], p[2]) for p in points]
+    front = pareto_front(xy)
+    ordered = sorted(front, key=lambda i: xy[i])
+    ax.plot([xy[i][0] for i in ordered], [xy[i][1] for i in ordered], color="black", lw=1.2, ls="--", zorder=2,
             label="Pareto front")
     ax.set_xlabel("median frame time, wall (ms)")
     ax.set_ylabel(METRIC_LABELS.get(args.metric, args.metric))
@@ -101,8 +185,85 @@ def pareto_panel(ax, df, base, args):
             # chart, linear below the smallest non-zero error and logarithmic above it.
             ax.set_yscale("symlog", linthresh=float(positive.min()))
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
-    return len(front)
+    ax.margins(0.08)
+    return points, front
+
+
+# Where a point's number may go, tried in this order: the directions (unit steps) at growing distances
+# (points) from the marker; the first place that overlaps no marker, no other number and stays inside
+# the axes wins.
+LABEL_DIRECTIONS = [(1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
+LABEL_DISTANCES = [2, 6, 11, 17, 24, 32, 42]
+
+
+def place_numbers(ax, points, fontsize=7):
+    """Writes each point's number beside it without overlapping another number or marker (greedy, in
+    display space, after the layout is final); a number pushed away from its point gets a thin leader."""
+    fig = ax.figure
+    renderer = fig.canvas.get_renderer()
+    scale = fig.dpi / 72.0  # pixels per point
+    marker = 3.5 * scale    # scatter s=36: a 6 pt disc, plus a margin
+    centres = [ax.transData.transform((x, y)) for _, x, y, *_ in points]
+    boxes = [(cx - marker, cy - marker, cx + marker, cy + marker) for cx, cy in centres]
+    frame = ax.get_window_extent(renderer)
+
+    def free(box):
+        x0, y0, x1, y1 = box
+        if x0 < frame.x0 or y0 < frame.y0 or x1 > frame.x1 or y1 > frame.y1:
+            return False
+        return not any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in boxes)
+
+    for (number, x, y, colour, *_), (cx, cy) in zip(points, centres):
+        probe = ax.text(0, 0, str(number), fontsize=fontsize, fontweight="bold")
+        extent = probe.get_window_extent(renderer)
+        probe.remove()
+        w, h = extent.width + 2, extent.height + 1
+        chosen = None
+        for distance in LABEL_DISTANCES:
+            for dx, dy in LABEL_DIRECTIONS:
+                ox = dx * (marker + distance * scale + w / 2)
+                oy = dy * (marker + distance * scale + h / 2)
+                box = (cx + ox - w / 2, cy + oy - h / 2, cx + ox + w / 2, cy + oy + h / 2)
+                if free(box):
+                    chosen = (ox, oy, box, distance)
+                    break
+            if chosen:
+                break
+        if chosen is None:  # crowded beyond every place tried: the farthest north-east one
+            ox = oy = marker + LABEL_DISTANCES[-1] * scale + w / 2
+            chosen = (ox, oy, (cx + ox - w / 2, cy + oy - h / 2, cx + ox + w / 2, cy + oy + h / 2),
+                      LABEL_DISTANCES[-1])
+        ox, oy, box, distance = chosen
+        boxes.append(box)
+        leader = {"arrowstyle": "-", "color": colour, "lw": 0.5, "shrinkA": 0, "shrinkB": 3} \
+            if distance > LABEL_DISTANCES[1] else None
+        note = ax.annotate(str(number), (x, y), xytext=(ox / scale, oy / scale), textcoords="offset points",
+                           ha="center", va="center", fontsize=fontsize, fontweight="bold", color=colour,
+                           arrowprops=leader, zorder=4)
+        note.set_in_layout(False)
+
+
+def write_key(key, ax, points, metric):
+    """The numbered points' table beside the chart: number, technique, configuration, time, error."""
+    key.axis("off")
+    handles, labels = ax.get_legend_handles_labels()
+    legend = key.legend(handles, labels, fontsize=7, loc="upper left", ncol=2, frameon=False)
+    box = legend.get_window_extent(key.figure.canvas.get_renderer()).transformed(key.transAxes.inverted())
+    lines = [f"{'#':>3}  {'ms':>6}  {metric_short(metric):>9}  configuration"]
+    for number, x, y, colour, tech, label in points:
+        lines.append((f"{number:>3}  {x:6.1f}  {y:9.4g}  {tech} {label if label != 'default' else ''}".rstrip(),
+                      colour))
+    top = box.y0 - 0.04
+    size = min(7.0, 300.0 / max(len(lines), 1))
+    step = size * 1.35 / (key.get_window_extent().height * 72.0 / key.figure.dpi)
+    for i, line in enumerate(lines):
+        text, colour = (line, "black") if isinstance(line, str) else line
+        key.text(0.0, top - i * step, text, transform=key.transAxes, fontsize=size, family="monospace",
+                 color=colour, va="top")
+
+
+def metric_short(metric):
+    return {"acc_wrong_pct": "wrong %", "acc_wrong_no_edge_pct": "no-edge %", "acc_rmse": "RMSE"}.get(metric, metric)
 
 
 def ok_rows(df):
@@ -114,7 +275,7 @@ def series_label(row, columns):
 
 
 def lines(args):
-    df = ok_rows(pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True))
+    df = ok_rows(pd.concat([pd.read_csv(path, low_memory=False) for path in args.csv], ignore_index=True))
     series = args.series.split(",")
     if "technique_spec" in df.columns and series == ["technique"]:
         series = ["technique_spec"]
@@ -123,16 +284,25 @@ def lines(args):
             sys.exit(f"plot.py: {args.csv}: column '{col}' missing")
     facets = list(dict.fromkeys(df[args.facet])) if args.facet else [None]
     fits = []
-    fig, axes = plt.subplots(1, len(facets), figsize=(6.5 * len(facets), 4.8), dpi=120, squeeze=False)
+    described = set()
+    fig, axes = plt.subplots(1, len(facets), figsize=(6.5 * len(facets), 5.2), dpi=120, squeeze=False)
     for ax, facet in zip(axes[0], facets):
         part = df if facet is None else df[df[args.facet] == facet]
+        kinds = []
         for key, group in part.groupby(series if len(series) > 1 else series[0], sort=False):
             key = key if isinstance(key, tuple) else (key,)
             stats = group.groupby(args.x)[args.y].agg(["median", "min", "max", "count"]).sort_index()
+            # What a bar is depends on the rows: with several rounds (one row per round and x), the
+            # range of the rounds' values; with one round, the frames' p5..p95 (wall time only).
             lo, hi = stats["median"] - stats["min"], stats["max"] - stats["median"]
-            if stats["count"].max() <= 1 and args.y == "wall_ms_median" and "wall_ms_p5" in group.columns:
+            rounds = int(stats["count"].max())
+            kind = f"min-max over {rounds} rounds" if rounds > 1 else "none (one round)"
+            if rounds <= 1 and args.y == "wall_ms_median" and "wall_ms_p5" in group.columns:
                 pct = group.groupby(args.x)[["wall_ms_p5", "wall_ms_p95"]].median().sort_index()
                 lo, hi = stats["median"] - pct["wall_ms_p5"], pct["wall_ms_p95"] - stats["median"]
+                kind = "p5-p95 of the frames (one round)"
+            kinds.append(kind)
+            described.add(rounds)
             label = " ".join(str(k) for k in key)
             if args.fit and len(stats) >= 2:
                 fit = linear_fit(stats.index.to_numpy(float), stats["median"].to_numpy(float))
@@ -150,11 +320,16 @@ def lines(args):
         if args.logy:
             ax.set_yscale("log")
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+        # The legend says what the error bars are (the same for every line of a panel, as a rule).
+        legend = ax.legend(fontsize=8, title="error bars: " + "; ".join(dict.fromkeys(kinds)), title_fontsize=7)
+        legend._legend_box.align = "left"
         if facet is not None:
             ax.set_title(f"{args.facet} = {facet}", fontsize=9)
     first = df.iloc[0]
-    fig.suptitle(args.title or f"{args.y} against {args.x} ({first.get('renderer', '')})", fontsize=10)
+    measure = "median frame time (wall)" if args.y == "wall_ms_median" else args.y
+    point = f"median over the rounds of each round's {measure}" if max(described, default=1) > 1 else f"the {measure}"
+    title = true_title(args.title, df) if args.title else f"{args.y} against {args.x} ({first.get('renderer', '')})"
+    headline(fig, title + "\n" + run_parameters(df, what=f"points: {point}"))
     save(fig, args.out, f"{len(df)} rows")
     if args.fit:
         # The fit of each line, for write-ups: y = intercept + slope * x over the medians.
@@ -172,7 +347,7 @@ def linear_fit(x, y):
 
 
 def bottleneck(args):
-    df = pd.read_csv(args.csv[0])
+    df = pd.read_csv(args.csv[0], low_memory=False)
     for col in ("technique_spec", "share_cpu", "share_vertex", "share_fill", "class"):
         if col not in df.columns:
             sys.exit(f"plot.py: {args.csv[0]}: column '{col}' missing (written by bench bottleneck?)")
@@ -183,7 +358,7 @@ def bottleneck(args):
     labels = [f"{r['technique_spec']} @ {where(r)}" for _, r in df.iterrows()]
     perts = [c[len("time_ratio_"):] for c in df.columns if c.startswith("time_ratio_") and
              c != "time_ratio_baseline"]
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 1.2 + 0.55 * len(df)), dpi=120,
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 1.9 + 0.55 * len(df)), dpi=120,
                                   gridspec_kw={"width_ratios": [1, 1.3]})
     y = range(len(df))
     left = [0.0] * len(df)
@@ -193,11 +368,12 @@ def bottleneck(args):
         left = [a + b for a, b in zip(left, df[col])]
     for i, (_, r) in enumerate(df.iterrows()):
         poor = " ?" if str(r.get("poor_fit", False)).lower() == "true" else ""
-        ax.text(1.02, i, f"{r['class']}{poor}  ({r['wall_ms_baseline']:.1f} ms)", va="center", fontsize=8)
+        ax.text(1.02, i, f"{r['class']}{poor}  ({r['wall_ms_baseline']:.1f} ms)", va="center", fontsize=7.5)
     ax.set_yticks(list(y))
     ax.set_yticklabels(labels, fontsize=8)
     ax.invert_yaxis()
-    ax.set_xlim(0, 1.45)
+    ax.set_xlim(0, 1.8)  # room for the longest class text ("mixed:fill+vertex ?  (14.6 ms)")
+    ax.set_xticks([0, 0.2, 0.4, 0.6, 0.8, 1.0])  # shares: nothing beyond 1
     ax.set_xlabel("share of the baseline frame time (fitted)")
     ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.35 if len(df) < 4 else -0.12), ncol=3)
     for j, p in enumerate(perts):
@@ -210,7 +386,13 @@ def bottleneck(args):
     ax2.set_xlabel("frame time / baseline frame time (evidence)")
     ax2.grid(True, axis="x", alpha=0.3)
     ax2.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.0, 0.5))
-    fig.suptitle(args.title or "Bottleneck classification", fontsize=10)
+    # classes.csv has no frame counts: `bench figures` writes it beside the rows it classifies.
+    beside = os.path.join(os.path.dirname(os.path.abspath(args.csv[0])), "data.csv")
+    rows = pd.read_csv(beside, low_memory=False) if os.path.abspath(args.csv[0]) != beside and \
+        os.path.exists(beside) else None
+    title = true_title(args.title, df) if args.title else "Bottleneck classification"
+    headline(fig, title + "\n" + run_parameters(df, rows, what="baseline size shown; each perturbation "
+                                                 "changes one thing (size, tessellation, submission, scale)"))
     save(fig, args.out, f"{len(df)} classifications")
 
 
@@ -242,7 +424,15 @@ def diff_labels(specs):
 
 
 def bars(args):
-    every = pd.concat([pd.read_csv(path) for path in args.csv], ignore_index=True)
+    every = pd.concat([pd.read_csv(path, low_memory=False) for path in args.csv], ignore_index=True)
+    if "technique_spec" not in every.columns and "technique" in every.columns:
+        # A plain run's rows (no sweep): the technique and its properties name the configuration.
+        spec = every["technique"].astype(str)
+        # The properties only where a technique was measured with several sets of them.
+        if "properties" in every.columns and (every.groupby("technique")["properties"].nunique() > 1).any():
+            props = every["properties"].fillna("").astype(str)
+            spec = spec + (":" + props).where(props != "", "")
+        every["technique_spec"] = spec
     df = ok_rows(every)
     for col in ["technique_spec", args.y] + ([args.facet] if args.facet else []):
         if col not in every.columns:
@@ -251,7 +441,7 @@ def bars(args):
     specs = list(dict.fromkeys(every["technique_spec"]))
     names = dict(zip(specs, diff_labels(specs))) if args.diff_labels else \
         {spec: spec.replace(args.strip, "", 1) if args.strip else spec for spec in specs}
-    height = 0.45 * len(specs) * len(facets) + 1.5
+    height = 0.45 * len(specs) * len(facets) + 2.1
     fig, axes = plt.subplots(len(facets), 1, figsize=(9, height), dpi=120, squeeze=False)
     for ax, facet in zip(axes[:, 0], facets):
         part = df if facet is None else df[df[args.facet] == facet]
@@ -282,17 +472,33 @@ def bars(args):
         if facet is not None:
             ax.set_title(f"{args.facet} = {facet}", fontsize=9)
     first = df.iloc[0]
-    # Above the first panel's title (tight_layout does not make room for a suptitle; bbox "tight"
-    # saving keeps what lies above 1.0).
-    fig.suptitle(args.title or f"{args.y} per configuration ({first.get('renderer', '')})", fontsize=10,
-                 y=1.0 + 0.3 / height)
+    rounds = distinct_ints(df, "repeat")
+    measure = "median frame time (wall)" if args.y == "wall_ms_median" else args.y
+    ratio = ("the first bar's time divided by it (speed-up)" if args.y.startswith(("wall_ms", "cpu_ms", "gpu_ms"))
+             else "it divided by the first bar's")
+    what = (f"each bar: the median over {max(rounds)} rounds of each round's {measure}" if rounds and max(rounds) > 1
+            else f"each bar: the {measure} of one round") + f"; the label: its value and {ratio}"
+    title = true_title(args.title, df) if args.title else f"{args.y} per configuration ({first.get('renderer', '')})"
+    headline(fig, title + "\n" + run_parameters(df, what=what))
     save(fig, args.out, f"{len(df)} rows")
 
 
-def save(fig, out, what):
+def headline(fig, text, fontsize=10):
+    """The figure's title block (several lines) above the panels; layout() keeps the panels below it."""
+    fig.suptitle(text, fontsize=fontsize, y=0.995, va="top")
+
+
+def layout(fig):
+    """tight_layout below the title block (matplotlib 3.6 makes room for the suptitle)."""
     fig.tight_layout()
-    for ext in ("png", "svg"):
-        fig.savefig(f"{out}.{ext}", bbox_inches="tight")
+
+
+def save(fig, out, what, relayout=True):
+    if relayout:
+        layout(fig)
+    # No date and a fixed creator: the same rows give the same bytes (the module's docstring).
+    fig.savefig(f"{out}.png", bbox_inches="tight", metadata={"Software": CREATOR})
+    fig.savefig(f"{out}.svg", bbox_inches="tight", metadata={"Date": None, "Creator": CREATOR})
     print(f"wrote {out}.png and {out}.svg ({what})")
 
 

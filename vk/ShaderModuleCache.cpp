@@ -17,18 +17,6 @@ namespace {
 
 constexpr const char* kVersionLine = "#version 450\n";
 
-/// The same search as gl/ProgramCache's: the first "shaders" directory among Paths::searchRoots().
-std::string findShaderRoot() {
-    std::string searched;
-    for (const std::string& root : Paths::searchRoots()) {
-        std::filesystem::path candidate = std::filesystem::path(root) / "shaders";
-        std::error_code error;
-        if (std::filesystem::is_directory(candidate, error)) return candidate.string();
-        searched += (searched.empty() ? "" : ", ") + root;
-    }
-    throw Error("shader directory 'shaders/' not found (searched: " + searched + ")", ExitCode::Failure);
-}
-
 /// glslang's process-wide tables, built once (never finalized: they live until exit).
 void initializeGlslang() {
     static std::once_flag once;
@@ -104,7 +92,8 @@ std::string fullKey(const Defines& defines) {
 } // namespace
 
 ShaderModuleCache::ShaderModuleCache(VulkanContext& context, std::string shaderRoot)
-    : mContext(context), mRoot(shaderRoot.empty() ? findShaderRoot() : std::move(shaderRoot)) {}
+    : mContext(context),
+      mRoot(shaderRoot.empty() ? Paths::findResourceDirectory("shaders") : std::move(shaderRoot)) {}
 
 ShaderModuleCache::~ShaderModuleCache() {
     for (auto& [key, module] : mModules) vkDestroyShaderModule(mContext.device(), module, nullptr);

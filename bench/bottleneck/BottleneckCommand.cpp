@@ -19,8 +19,9 @@ const char* kFooter = R"(Perturbations (each its own worker process, techniques 
   scale_x0.01 (fill up/down at equal vertex count, thesis section 6.2); size_half, size_double (fill
   only); tess_half, tess_double (vertex only); lp_no_rast (Mesa llvmpipe: rasteriser off).
 Each technique is classified from a fit of frame time against the loads measured in an untimed
-census frame (GL calls, vertex and fragment shader invocations): the stage with >= 50% of the
-frame time names the bottleneck.
+census frame: CPU load = GL calls issued; vertex load = primitives submitted (not vertex shader
+invocations, which the submission mode changes by itself); fill load = fragment shader invocations.
+The stage with >= 50% of the frame time names the bottleneck.
 
 Examples:
   bench bottleneck -t none -t shadowmap --instances 100 --csv bn.csv

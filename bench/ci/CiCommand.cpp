@@ -1,6 +1,7 @@
 #include "bench/ci/CiCommand.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "bench/ci/WorkGate.h"
 #include "bench/output/AtomicFile.h"
 #include "bench/output/CsvWriter.h"
+#include "bench/output/DashboardExport.h"
 #include "bench/run/CliParse.h"
 #include "bench/sweep/ChildProcess.h"
 #include "core/Error.h"
@@ -62,6 +64,23 @@ std::vector<std::pair<std::string, std::string>> parseEnv(const std::vector<std:
 
 bool hasLayer(const std::string& layers, char layer) {
     return layers.find(layer) != std::string::npos;
+}
+
+/// Adds the column ir_per_frame to layer A's rows from layer B's record ({"configs": {name: {...}}}),
+/// matching on ci_config; configurations layer B did not count keep an empty cell.
+void joinInstructions(CsvTable& rows, const nlohmann::json& record) {
+    if (rows.rows.empty() || !record.contains("configs")) return;
+    const auto config = std::find(rows.header.begin(), rows.header.end(), "ci_config");
+    if (config == rows.header.end()) return;
+    const size_t at = size_t(config - rows.header.begin());
+    rows.header.push_back("ir_per_frame");
+    for (auto& row : rows.rows) {
+        const auto& configs = record["configs"];
+        const bool counted = configs.contains(row[at]) && configs[row[at]].contains("ir_per_frame");
+        char text[64] = "";
+        if (counted) std::snprintf(text, sizeof text, "%.1f", configs[row[at]]["ir_per_frame"].get<double>());
+        row.push_back(text);
+    }
 }
 
 std::string defaultPath(const std::string& given, const char* relative) {
@@ -225,9 +244,11 @@ int CiCommand::main(int argc, char** argv) {
         throw Error("no report row " + name, ExitCode::Failure);
     };
 
+    CsvTable dashboardRows; // layer A's rows, with layer B's Ir per frame joined in: the dashboard files
     if (hasLayer(o.layers, 'A')) {
         const auto configs = suite.select(suite.work, o.configs);
         const CsvTable headRows = workRows(suite, configs, head);
+        dashboardRows = headRows;
         writeRows((fs::path(o.outDir) / "work.csv").string(), headRows);
         if (o.update) {
             fs::create_directories(baselineDir);
@@ -258,6 +279,7 @@ int CiCommand::main(int argc, char** argv) {
                                                              (fs::path(o.outDir) / "callgrind").string());
             CsvWriter::writeText((fs::path(o.outDir) / "instructions.json").string(),
                                  r.record.dump(2) + "\n");
+            joinInstructions(dashboardRows, r.record);
             if (o.update) {
                 fs::create_directories(baselineDir);
                 CsvWriter::writeText(recordPath, r.record.dump(2) + "\n");
@@ -284,6 +306,13 @@ int CiCommand::main(int argc, char** argv) {
     const std::string md = report.markdown();
     CsvWriter::writeText((fs::path(o.outDir) / "report.md").string(), md);
     CsvWriter::writeText((fs::path(o.outDir) / "report.json").string(), report.json().dump(2) + "\n");
+    if (!dashboardRows.rows.empty()) {
+        // The gate's numbers in the formats dashboards chart (bench/output/DashboardExport.h).
+        CsvWriter::writeText((fs::path(o.outDir) / "gbench.json").string(),
+                             DashboardExport::googleBenchmark(dashboardRows));
+        CsvWriter::writeText((fs::path(o.outDir) / "gh-benchmark.json").string(),
+                             DashboardExport::githubActionBenchmark(dashboardRows));
+    }
     std::cout << md;
     return report.failed() ? int(ExitCode::Failure) : 0;
 }

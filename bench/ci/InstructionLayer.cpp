@@ -135,7 +135,8 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
                                                            "the instruction baseline, " + configs[i]->name);
     }
     std::string noVerdict;
-    if (unstable) noVerdict = "instrument unstable: the A/A pair disagrees by more than " + pct(kUnstableAbove);
+    if (unstable)
+        noVerdict = "instrument unstable: the A/A pair disagrees by more than " + pct(kUnstableAbove);
     if (!baseFingerprint) noVerdict = "no instruction baseline yet (bench ci --update writes one)";
     const auto differences = baseFingerprint ? baseFingerprint->differences(heads.front().fingerprint)
                                              : std::vector<std::string>{};

@@ -7,9 +7,11 @@
 #include <sstream>
 
 #include "bench/golden/AccuracyBounds.h"
+#include "bench/golden/GoldenDiff.h"
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
+#include "bench/images/AccuracyImages.h"
 #include "bench/output/CsvWriter.h"
 #include "bench/run/CliParse.h"
 #include "bench/select/AutoResolver.h"
@@ -25,8 +27,14 @@ namespace {
 struct GoldenCli {
     bool check = false, update = false, verbose = false;
     std::string dir;
+    std::string diffDir; ///< --check: where the pictures of changed goldens go
     MatrixOptions matrix;
 };
+
+/// --diff-dir's default: a folder of the system's temporary directory (the source tree stays clean).
+std::string defaultDiffDir() {
+    return (std::filesystem::temp_directory_path() / "shadowbench-golden-diff").string();
+}
 
 /// results/goldens of the source tree: the first search root that has a results/ folder.
 std::string defaultGoldenDir() {
@@ -44,6 +52,9 @@ std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
 
 int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     const std::map<std::string, AccuracyBound> bounds = readBounds(cli.dir);
+    // Checked before the first scene renders: a folder that cannot take the pictures fails in
+    // milliseconds, not after the matrix.
+    AccuracyImages::prepareDirectory(cli.diffDir, "--diff-dir");
     size_t checked = 0, unsupported = 0, failed = 0;
     for (const std::string& scene : scenes) {
         for (const CellVerdict& v :
@@ -57,6 +68,12 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
             failed += !v.passed();
             if (!v.passed() || cli.verbose) std::cout << v.cell << (v.passed() ? ": ok\n" : ": FAILED\n");
             for (const std::string& f : v.failures) std::cout << "  " << f << "\n";
+            for (const GoldenChange& change : v.changed) {
+                std::cout << "  " << change.kind << " difference against " << change.goldenPath << ":";
+                for (const std::string& path : GoldenDiff::write(cli.diffDir, v.cell, change))
+                    std::cout << " " << path;
+                std::cout << "\n";
+            }
             if (cli.verbose)
                 for (const std::string& d : v.details) std::cout << "  " << d << "\n";
         }
@@ -247,7 +264,9 @@ int GoldenCommand::main(int argc, char** argv) {
 
 Each cell: every submission mode's image must equal retained's, the retained image the golden
 (results/goldens/<scene>/<technique>.{visibility,colour}.png), and the accuracy against the Embree
-reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails.)");
+reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails. An image that no
+longer matches its golden gets pictures of where it differs in --diff-dir, their paths printed
+under the cell (bench/golden/GoldenDiff.h).)");
     GoldenCli cli;
     std::vector<std::string> scenes, techniques;
     auto* check = app.add_flag("--check", cli.check, "judge every cell (the default)");
@@ -258,6 +277,10 @@ reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails.)")
     app.add_option("--size", cli.matrix.size, "frame size (default 128, the size of the committed goldens)")
         ->check(CLI::Range(16, 1024));
     app.add_option("--dir", cli.dir, "golden folder (default: the source tree's results/goldens)");
+    app.add_option("--diff-dir", cli.diffDir,
+                   "--check: write an error map and a signed difference map of every image that no longer "
+                   "matches its golden into this folder (default: shadowbench-golden-diff in the temporary "
+                   "directory)");
     app.add_flag("-v,--verbose", cli.verbose, "print every cell, its comparisons and unsupported cells");
     if (int code = parseCli(app, argc, argv, "bench golden"); code >= 0) return code;
     const std::vector<std::string> known = GoldenMatrix::builtinScenes();
@@ -269,6 +292,9 @@ reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails.)")
     for (const std::string& t : cli.matrix.techniques)
         if (t != AutoResolver::kName) TechniqueRegistry::create(t); // names it if unknown
     if (cli.dir.empty()) cli.dir = defaultGoldenDir();
+    if (cli.update && !cli.diffDir.empty())
+        throw Error("--diff-dir belongs to --check (see bench golden --help)");
+    if (cli.diffDir.empty()) cli.diffDir = defaultDiffDir();
     if (cli.update) return runUpdate(cli, chosen, scenes.empty() && techniques.empty());
     return runCheck(cli, chosen);
 }

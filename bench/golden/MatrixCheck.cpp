@@ -72,6 +72,8 @@ void checkGolden(const MatrixCell& cell, const std::string& dir, const std::stri
     const ImageDiffResult d = ImageDiff::compare(it->second, image, MatrixCheck::kGoldenTolerance);
     const std::string text = kind + " vs golden: " + d.describe(MatrixCheck::kGoldenTolerance);
     (d.passes(MatrixCheck::kGoldenTolerance) ? v.details : v.failures).push_back(text);
+    if (d.comparable && !d.passes(MatrixCheck::kGoldenTolerance))
+        v.changed.push_back({kind, path, it->second, image});
 }
 
 std::string number(double v) {

@@ -18,11 +18,21 @@
 
 namespace sb {
 
+/// A cell's image that no longer matches its golden (kind "visibility" or "colour"): both images, for
+/// the difference pictures `bench golden --check` writes (bench/golden/GoldenDiff.h). Only comparable
+/// images (same size and channels) that fail kGoldenTolerance are listed.
+struct GoldenChange {
+    std::string kind;
+    std::string goldenPath;
+    Image8 golden, rendered;
+};
+
 struct CellVerdict {
     std::string cell;                  ///< technique/scene/mode
     std::string unsupported;           ///< the technique's reason, when it refused the scene
     std::vector<std::string> failures; ///< one line per broken check
     std::vector<std::string> details;  ///< what was compared and by how much (for --verbose)
+    std::vector<GoldenChange> changed; ///< images that no longer match their golden (a subset of failures)
     bool passed() const { return failures.empty(); }
 };
 

@@ -1,7 +1,10 @@
 #include "bench/output/ImageWriter.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include <OpenImageIO/imageio.h>
@@ -27,6 +30,25 @@ void ImageWriter::write(const std::string& path, int width, int height, int chan
     OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
     if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels) || !out->close())
         throw Error("cannot write image '" + path + "': " + out->geterror(), ExitCode::Failure);
+}
+
+void ImageWriter::writeAtomic(const std::string& path, int width, int height, int channels,
+                              const unsigned char* pixels) {
+    // The format comes from the final name; the temp name only receives the bytes.
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw Error("cannot write image '" + path + "': " + OIIO::geterror(), ExitCode::Failure);
+    const std::string temp = AtomicFile::tempPathFor(path);
+    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels) || !out->close()) {
+        const std::string why = out->geterror();
+        std::remove(temp.c_str());
+        throw Error("cannot write image '" + path + "': " + why, ExitCode::Failure);
+    }
+    if (std::rename(temp.c_str(), path.c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        std::remove(temp.c_str());
+        throw Error("cannot write image '" + path + "': " + why, ExitCode::Failure);
+    }
 }
 
 void ImageWriter::writeColor(const FrameTargets& targets, const std::string& path) {

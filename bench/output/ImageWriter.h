@@ -26,6 +26,11 @@ public:
     /// Writes `channels` x 8-bit pixels (top row first) to `path`; the format follows the extension.
     static void write(const std::string& path, int width, int height, int channels,
                       const unsigned char* pixels);
+    /// The same, atomically: the image is written to AtomicFile::tempPathFor(path) in the same folder
+    /// (in the format of `path`'s extension) and renamed over `path`, so a reader never sees half a
+    /// picture and a failed write leaves no file behind. Throws sb::Error naming the path.
+    static void writeAtomic(const std::string& path, int width, int height, int channels,
+                            const unsigned char* pixels);
 };
 
 } // namespace sb

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/output/DashboardExport.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -28,6 +29,8 @@ constexpr RowFormatEntry kFormatEntries[] = {
     {RowFormat::Json, "json", "", true},
     {RowFormat::Markdown, "md", "", true},
     {RowFormat::Markdown, "markdown", "", true},
+    {RowFormat::GoogleBenchmark, "gbench", "Google Benchmark JSON", true},
+    {RowFormat::GithubBenchmark, "gh-benchmark", "github-action-benchmark", true},
 };
 constexpr NameTable kFormats{kFormatEntries};
 
@@ -228,6 +231,10 @@ std::string RowExport::format(const CsvTable& table, RowFormat format) {
         return toJson(table);
     case RowFormat::Markdown:
         return toMarkdown(table);
+    case RowFormat::GoogleBenchmark:
+        return DashboardExport::googleBenchmark(table);
+    case RowFormat::GithubBenchmark:
+        return DashboardExport::githubActionBenchmark(table);
     case RowFormat::Console:
         break;
     }

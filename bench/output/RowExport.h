@@ -10,7 +10,7 @@
 
 namespace sb {
 
-enum class RowFormat { Console, Csv, Json, Markdown };
+enum class RowFormat { Console, Csv, Json, Markdown, GoogleBenchmark, GithubBenchmark };
 
 /// One row of the format table (RowExport.cpp): adding a format is one value above, one row and its
 /// writer in RowExport::format; --format's help and errors everywhere come from the table.
@@ -21,7 +21,8 @@ struct RowFormatEntry {
     bool text;        ///< a text export of the rows (`bench export` writes only these)
 };
 const NameTable<RowFormatEntry>& rowFormats();
-/// "console", "csv", "json", "md" (also "markdown"); exact, lower case. Throws sb::Error(BadInput)
+/// "console", "csv", "json", "md" (also "markdown"), "gbench", "gh-benchmark" (bench/output/
+/// DashboardExport.h); exact, lower case. Throws sb::Error(BadInput)
 /// naming the bad value and listing the valid names.
 RowFormat parseRowFormat(const std::string& name);
 /// --format's help: "console (tables), csv, json or md"; `textOnly`: "csv, json or md".
@@ -29,8 +30,9 @@ std::string rowFormatChoices(bool textOnly = false);
 
 class RowExport {
 public:
-    /// toCsv, toJson or toMarkdown (curated columns) by format. RowFormat::Console is not a text export
-    /// (ConsoleReport prints it); asking for it throws std::invalid_argument, a caller's bug.
+    /// toCsv, toJson, toMarkdown (curated columns) or a dashboard format (DashboardExport) by format.
+    /// RowFormat::Console is not a text export (ConsoleReport prints it); asking for it throws
+    /// std::invalid_argument, a caller's bug.
     static std::string format(const CsvTable& table, RowFormat format);
 
     /// RFC 4180 text exactly as CsvWriter writes files (header line + rows, LF line ends); it is

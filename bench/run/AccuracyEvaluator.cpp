@@ -153,6 +153,7 @@ AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyO
     mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
     const Sample base = judgeFrame(technique, o, &r.reference);
     score(base, o, r);
+    keepJudged(base);
     if (mHarness.moving())
         measurePath(technique, o, r); // perturbing one frame of a moving scene would measure its motion
     else if (o.stability)
@@ -163,8 +164,19 @@ AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyO
 AccuracyResult AccuracyEvaluator::evaluateVisibility(std::vector<float> visibilityRgba,
                                                      const AccuracyOptions& o) {
     AccuracyResult r = start(o);
-    score(judgeVisibility(std::move(visibilityRgba), o, &r.reference), o, r);
+    const Sample judged = judgeVisibility(std::move(visibilityRgba), o, &r.reference);
+    score(judged, o, r);
+    keepJudged(judged);
     return r;
+}
+
+void AccuracyEvaluator::keepJudged(const Sample& sample) {
+    // A copy, not the read-back: three values per pixel instead of seven.
+    Sample kept;
+    kept.technique = sample.technique;
+    kept.reference = sample.reference;
+    kept.mask = sample.mask;
+    mLastJudged = std::move(kept);
 }
 
 AccuracyResult AccuracyEvaluator::start(const AccuracyOptions& o) const {
@@ -208,11 +220,11 @@ void AccuracyEvaluator::measurePath(Technique& technique, const AccuracyOptions&
         for (size_t i = 0; i < both.size(); ++i) both[i] = at.mask[i] && next.mask[i];
         for (size_t i = 0; i < both.size(); ++i) {
             if (!both[i]) continue;
-            const bool technique = (at.technique[i] < 0.5f) != (next.technique[i] < 0.5f);
-            const bool reference = (at.reference[i] < 0.5f) != (next.reference[i] < 0.5f);
-            path.changesTechnique += technique;
-            path.changesReference += reference;
-            path.falseChanges += technique && !reference;
+            const bool techniqueFlips = (at.technique[i] < 0.5f) != (next.technique[i] < 0.5f);
+            const bool referenceFlips = (at.reference[i] < 0.5f) != (next.reference[i] < 0.5f);
+            path.changesTechnique += techniqueFlips;
+            path.changesReference += referenceFlips;
+            path.falseChanges += techniqueFlips && !referenceFlips;
         }
     }
     path.flicker = AccuracyMetrics::perturbationGain(path.falseChanges, path.changesReference);

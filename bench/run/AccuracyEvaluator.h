@@ -95,6 +95,10 @@ public:
     /// --api vulkan, the matrix's Vulkan cells) against this harness's G-buffer and reference.
     Sample judgeVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options,
                            TraceStats* stats);
+    /// The frame the last evaluate() or evaluateVisibility() scored (its hard, soft and sanity metrics
+    /// are this frame's: a moving scene's first path point), without the RGBA read-back; null before
+    /// the first. `bench accuracy --images` draws it (bench/images/AccuracyImages.h).
+    const Sample* lastJudged() const { return mLastJudged ? &*mLastJudged : nullptr; }
 
 private:
     /// The result's light fields; throws for a light the scene does not have.
@@ -109,8 +113,11 @@ private:
     void measurePath(Technique& technique, const AccuracyOptions& options, AccuracyResult& result);
     /// The Embree scene rebuilt where the harness's casters stand now (a scene in motion).
     void followCasters();
-    float mEmbreeTime = 0.0f; ///< the path time whose casters the Embree scene holds
+    /// Keeps `sample` (without its RGBA read-back) as lastJudged().
+    void keepJudged(const Sample& sample);
     Harness& mHarness;
+    std::optional<Sample> mLastJudged;
+    float mEmbreeTime = 0.0f; ///< the path time whose casters the Embree scene holds
     std::unique_ptr<EmbreeScene> mEmbree;
     std::unique_ptr<ReferenceTracer> mTracer;
     std::unique_ptr<GBufferRenderer> mGBuffer;

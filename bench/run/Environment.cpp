@@ -1,8 +1,8 @@
 #include "bench/run/Environment.h"
 
-#include <array>
+#include "bench/run/BuildInfo.h"
+
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -15,16 +15,6 @@ std::string trim(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
     size_t i = s.find_first_not_of(' ');
     return i == std::string::npos ? "" : s.substr(i);
-}
-
-std::string runCommand(const std::string& cmd) {
-    std::string out;
-    if (FILE* p = popen(cmd.c_str(), "r")) {
-        std::array<char, 256> buf{};
-        while (fgets(buf.data(), int(buf.size()), p)) out += buf.data();
-        if (pclose(p) != 0) return "";
-    }
-    return trim(out);
 }
 
 std::string readCpuModel() {
@@ -51,10 +41,9 @@ std::string Environment::nowIso8601() {
 Environment Environment::capture() {
     Environment e;
     e.timestamp = nowIso8601();
-    // The source tree's state at run time (not at configure time, which goes stale between commits).
-    std::string commit =
-        runCommand("git -C '" SHADOWBENCH_SOURCE_DIR "' describe --always --dirty --abbrev=12 2>/dev/null");
-    e.gitCommit = commit.empty() ? "unknown" : commit;
+    // The commit the binary was built from (stamped at build time), never the tree's state now: a
+    // checkout or edit after the build must not relabel rows measured with the old code.
+    e.gitCommit = BuildInfo::commit();
     e.cpuModel = readCpuModel();
     e.hardwareThreads = int(std::thread::hardware_concurrency());
     if (const char* lp = std::getenv("LP_NUM_THREADS")) e.lpNumThreads = lp;

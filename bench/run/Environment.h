@@ -6,7 +6,7 @@ namespace sb {
 
 struct Environment {
     std::string timestamp; ///< ISO 8601 UTC, when the row was measured
-    std::string gitCommit; ///< `git describe --always --dirty` of the source tree, or "unknown"
+    std::string gitCommit; ///< the commit the binary was built from (bench/run/BuildInfo.h), or "unknown"
     std::string cpuModel;  ///< /proc/cpuinfo "model name"
     int hardwareThreads = 0;
     std::string lpNumThreads; ///< LP_NUM_THREADS if set (llvmpipe rasteriser threads), else ""

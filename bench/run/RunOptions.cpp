@@ -70,7 +70,7 @@ std::string formatNumber(double v) {
 /// An option that names a file or folder and was given as "" would silently mean "not given".
 void requireNonEmptyPaths(const CLI::App& app) {
     for (const char* name : {"--csv", "--samples", "--screenshot", "--visibility", "--dump-shaders",
-                             "--model", "--scene", "--calibration"}) {
+                             "--model", "--scene", "--calibration", "--images"}) {
         const CLI::Option* o = app.get_option_no_throw(name);
         if (o && o->count() > 0 && o->as<std::string>().empty())
             throw Error(std::string(name) + ": the path is empty");
@@ -161,11 +161,18 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
         ->capture_default_str();
     app.add_option("--format", raw.format, "stdout: " + rowFormatChoices() + " (the rows)")
         ->capture_default_str();
-    app.add_flag("--sweep", c.sweep, "accuracy: walk each technique's quality knobs (see --list)");
-    app.add_option("--light-index", c.accuracyLight, "accuracy: which light to judge")->capture_default_str();
-    app.add_option("--ref-samples", c.referenceSamples, "accuracy: reference samples per pixel (area lights)")
-        ->capture_default_str();
-    app.add_flag("--no-stability", raw.noStability, "accuracy: skip perturbation gain and flicker");
+    // `bench accuracy`'s own options: their group under `bench accuracy --help`, hidden (an empty group)
+    // from the plain run's help, which refuses them.
+    const std::string accuracy = c.mode == RunConfig::Mode::Accuracy ? "Accuracy options" : "";
+    app.add_flag("--sweep", c.sweep, "walk each technique's quality knobs (see --list): error against time")
+        ->group(accuracy);
+    app.add_option("--light-index", c.accuracyLight, "which light to judge")
+        ->capture_default_str()
+        ->group(accuracy);
+    app.add_option("--ref-samples", c.referenceSamples, "reference samples per pixel (area lights)")
+        ->capture_default_str()
+        ->group(accuracy);
+    app.add_flag("--no-stability", raw.noStability, "skip perturbation gain and flicker")->group(accuracy);
 }
 
 /// Checks the raw options and moves them into `c`. Throws sb::Error naming the option.
@@ -249,17 +256,34 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
 
 } // namespace
 
-int RunOptions::parse(int argc, char** argv, RunConfig& c, bool& listOnly, const std::string& footer) {
-    CLI::App app{"shadowbench: measure real-time shadow techniques on the same scenes", "bench"};
+int RunOptions::parse(int argc, char** argv, RunConfig& c, bool& listOnly, const std::string& footer,
+                      std::string* imagesDir) {
+    const bool accuracy = c.mode == RunConfig::Mode::Accuracy;
+    CLI::App app{accuracy
+                     ? "bench accuracy: render each technique, then judge its visibility against the exact "
+                       "Embree reference at the same pixels"
+                     : "shadowbench: measure real-time shadow techniques on the same scenes",
+                 accuracy ? "bench accuracy" : "bench"};
     app.footer(footer);
     app.get_formatter()->column_width(34);
     RawOptions raw;
     raw.maxMemoryGiB = double(c.sceneOptions.memoryLimitBytes) / double(1ull << 30);
     addOptions(app, c, raw, listOnly);
-    const int code =
-        parseCli(app, argc, argv, c.mode == RunConfig::Mode::Accuracy ? "bench accuracy" : "bench");
+    // --images: only where the caller draws the pictures (bench/RunCommand.cpp); hidden from and refused
+    // by the plain run like the other accuracy options.
+    CLI::Option* images = nullptr;
+    if (imagesDir)
+        images = app.add_option("--images", *imagesDir,
+                                "write each technique's and the reference's visibility, an error map (and "
+                                "a signed difference map where visibility is not binary) and one contact "
+                                "sheet into DIR")
+                     ->type_name("DIR")
+                     ->group(accuracy ? "Accuracy options" : "");
+    const int code = parseCli(app, argc, argv, accuracy ? "bench accuracy" : "bench");
     if (code >= 0 || listOnly) return code;
     requireNonEmptyPaths(app);
+    if (images && images->count() > 0 && !accuracy)
+        throw Error("--images belongs to `bench accuracy` (see bench accuracy --help)");
     applyOptions(raw, c);
     return -1;
 }

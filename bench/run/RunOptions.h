@@ -15,8 +15,11 @@ public:
     /// Parses arguments into `config` (argv[0] is the program name). Returns -1 to continue, or an exit
     /// code when the command is finished (--help, a parse error; --list sets `listOnly` and returns -1).
     /// `footer` ends --help (the dispatcher's subcommands and examples). Throws sb::Error for bad values.
-    static int parse(int argc, char** argv, RunConfig& config, bool& listOnly,
-                     const std::string& footer = {});
+    /// `imagesDir`, when given, takes `--images DIR` (bench accuracy's pictures,
+    /// bench/images/AccuracyImages.h; refused outside `bench accuracy`); without it the option does not
+    /// exist (the sweep's workers, explain and handloop draw no such pictures).
+    static int parse(int argc, char** argv, RunConfig& config, bool& listOnly, const std::string& footer = {},
+                     std::string* imagesDir = nullptr);
     /// parse() over a list of options (no program name): the sweep checks and the worker use it.
     static RunConfig parseArgs(const std::vector<std::string>& args, RunConfig::Mode mode);
     /// For the commands that render with GL only (explain, sweep and what stands on it, handloop): throws

@@ -3,10 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <set>
+#include <iostream>
+#include <string>
 
 #include <GLFW/glfw3.h>
 #include <glm/gtc/constants.hpp>
+
+#include "bench/output/RowExport.h"
+#include "bench/viewer/InputQueue.h"
+#include "bench/viewer/Overlay.h"
+#include "bench/viewer/RollingMedian.h"
+#include "bench/viewer/VisibilityView.h"
 
 namespace sb {
 
@@ -35,81 +42,127 @@ struct Orbit {
     }
 };
 
-double gScroll = 0.0;
-void onScroll(GLFWwindow*, double, double dy) {
-    gScroll += dy;
-}
+// Zoom per key event (a press, or each auto-repeat while held) and per wheel step.
+constexpr float kKeyZoom = 0.95f;
+constexpr double kWheelZoom = 0.9;
 
-// Key edge detection: true once per press.
-bool pressed(GLFWwindow* w, int key, std::set<int>& down) {
-    bool isDown = glfwGetKey(w, key) == GLFW_PRESS;
-    bool edge = isDown && !down.count(key);
-    if (isDown)
-        down.insert(key);
-    else
-        down.erase(key);
-    return edge;
+std::string fixed2(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", v);
+    return text;
 }
 } // namespace
 
 int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techniques, int maxFrames) {
+    if (techniques.empty()) return 0;
     auto* window = static_cast<GLFWwindow*>(harness.context().nativeWindow());
-    glfwSetScrollCallback(window, onScroll);
+    const RunConfig& config = harness.config();
+    std::ostream& log = config.format == RowFormat::Console ? std::cout : std::cerr;
+    // The verdict a measurement of this configuration would report (ConsoleReport prints the same one).
+    if (config.checkTimer) harness.calibrateTimer();
+
+    InputQueue input(window);
+    Overlay overlay(harness.programs());
+    VisibilityView visibilityView(harness.programs());
     const CameraPreset preset = harness.camera();
     Orbit orbit = Orbit::from(preset);
+    const int lightCount = int(harness.scene().lights.size());
+    const int visibleLights = std::clamp(lightCount, 1, kMaxLights); // channels worth showing
     size_t current = 0;
     std::vector<bool> prepared(techniques.size(), false);
-    bool showVisibility = false;
-    std::set<int> down;
-    double lastX = 0, lastY = 0, wallEma = 0, cpuEma = 0;
+    bool showVisibility = false, quit = false;
+    int light = 0;
+    RollingMedian wall(kMedianFrames), cpu(kMedianFrames);
+    size_t announcedTechnique = techniques.size(); // none yet
+    std::string announcedView;
+    double lastX = 0, lastY = 0;
     glfwGetCursorPos(window, &lastX, &lastY);
     int frames = 0;
-    while (!harness.context().shouldClose() && (maxFrames <= 0 || frames < maxFrames)) {
-        if (!prepared[current]) {
-            harness.prepare(*techniques[current]);
-            prepared[current] = true;
+    while (!quit && !harness.context().shouldClose() && (maxFrames <= 0 || frames < maxFrames)) {
+        const size_t before = current;
+        for (const KeyEvent& e : input.takeKeys()) {
+            if (e.action == GLFW_RELEASE) continue;
+            const bool press = e.action == GLFW_PRESS;
+            const size_t n = techniques.size();
+            if (e.key == GLFW_KEY_ESCAPE && press) quit = true;
+            if (e.key == GLFW_KEY_TAB && press)
+                current = (e.mods & GLFW_MOD_SHIFT) ? (current + n - 1) % n : (current + 1) % n;
+            for (int k = 0; k < 9; ++k)
+                if (press && (e.key == GLFW_KEY_1 + k || e.key == GLFW_KEY_KP_1 + k) && size_t(k) < n)
+                    current = size_t(k);
+            if (e.key == GLFW_KEY_V && press) showVisibility = !showVisibility;
+            if (e.key == GLFW_KEY_L && press) light = (light + 1) % visibleLights;
+            if (e.key == GLFW_KEY_R && press) orbit = Orbit::from(preset);
+            if (e.key == GLFW_KEY_EQUAL || e.key == GLFW_KEY_KP_ADD) orbit.distance *= kKeyZoom;
+            if (e.key == GLFW_KEY_MINUS || e.key == GLFW_KEY_KP_SUBTRACT) orbit.distance /= kKeyZoom;
         }
-        if (pressed(window, GLFW_KEY_ESCAPE, down)) break;
-        if (pressed(window, GLFW_KEY_TAB, down)) current = (current + 1) % techniques.size();
-        for (int k = 0; k < 9 && k < int(techniques.size()); ++k)
-            if (pressed(window, GLFW_KEY_1 + k, down)) current = size_t(k);
-        if (pressed(window, GLFW_KEY_V, down)) showVisibility = !showVisibility;
-        if (pressed(window, GLFW_KEY_R, down)) orbit = Orbit::from(preset);
-        if (glfwGetKey(window, GLFW_KEY_EQUAL) == GLFW_PRESS) orbit.distance *= 0.98f;
-        if (glfwGetKey(window, GLFW_KEY_MINUS) == GLFW_PRESS) orbit.distance *= 1.02f;
+        if (quit) break;
+        if (current != before) {
+            wall.clear(); // the medians describe one technique
+            cpu.clear();
+        }
         double x, y;
         glfwGetCursorPos(window, &x, &y);
-        if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) {
+        if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) { // a drag is a state: polled
             orbit.yaw -= float(x - lastX) * 0.005f;
             orbit.pitch += float(y - lastY) * 0.005f;
         }
         lastX = x;
         lastY = y;
-        orbit.distance *= float(std::pow(0.9, gScroll));
-        gScroll = 0.0;
+        orbit.distance *= float(std::pow(kWheelZoom, input.takeScroll()));
         harness.setCamera(orbit.apply(preset));
-        if (!prepared[current]) continue; // switched: prepare on the next iteration
+        Technique& technique = *techniques[current];
+        if (!prepared[current]) { // untimed, as in a measurement
+            harness.prepare(technique);
+            prepared[current] = true;
+        }
 
-        FrameSample s = harness.renderFrame(*techniques[current]);
-        wallEma = wallEma == 0 ? s.wallMs : 0.9 * wallEma + 0.1 * s.wallMs;
-        cpuEma = cpuEma == 0 ? s.cpuSubmitMs : 0.9 * cpuEma + 0.1 * s.cpuSubmitMs;
+        const FrameSample s = harness.renderFrame(technique);
+        wall.add(s.wallMs);
+        cpu.add(s.cpuSubmitMs);
+
+        // The harness must not distort what it measures: everything below runs after the frame's wall
+        // time was taken, draws only into the default framebuffer (the visibility view and the overlay
+        // after the blit), never into the frame targets, which keep what the technique drew
+        // (--screenshot after the viewer reads them), and leaves the GL state as it found it.
         int fw, fh;
         glfwGetFramebufferSize(window, &fw, &fh);
         FrameTargets& t = harness.targets();
-        glNamedFramebufferReadBuffer(t.fbo(), showVisibility ? GL_COLOR_ATTACHMENT1 : GL_COLOR_ATTACHMENT0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glBlitNamedFramebuffer(t.fbo(), 0, 0, 0, t.width(), t.height(), 0, 0, fw, fh, GL_COLOR_BUFFER_BIT,
-                               GL_LINEAR);
-        glNamedFramebufferReadBuffer(t.fbo(), GL_COLOR_ATTACHMENT0);
-        char title[256];
-        std::snprintf(title, sizeof title,
-                      "shadowbench: %s%s  wall %.2f ms  cpu submit %.2f ms  [Tab/1-9 technique, V "
-                      "visibility, drag orbit]",
-                      techniques[current]->name().c_str(), showVisibility ? " (visibility)" : "", wallEma,
-                      cpuEma);
-        glfwSetWindowTitle(window, title);
+        if (showVisibility) {
+            visibilityView.draw(t, light, fw, fh);
+        } else {
+            glNamedFramebufferReadBuffer(t.fbo(), GL_COLOR_ATTACHMENT0);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glBlitNamedFramebuffer(t.fbo(), 0, 0, 0, t.width(), t.height(), 0, 0, fw, fh, GL_COLOR_BUFFER_BIT,
+                                   GL_LINEAR);
+        }
+        const std::string properties = technique.properties().toString();
+        const std::string view =
+            showVisibility ? "visibility of light " + std::to_string(light + 1) : "colour";
+        const std::string times = "wall " + fixed2(wall.median()) + " ms  cpu submit " +
+                                  fixed2(cpu.median()) + " ms  (median of " + std::to_string(wall.count()) +
+                                  ")";
+        overlay.draw(fw, fh,
+                     {technique.name(),
+                      "properties: " + (properties.empty() ? std::string("none") : properties), times,
+                      std::string("GPU timer: ") + harness.timerVerdict().label(),
+                      "lights: " + std::to_string(lightCount), "view: " + view},
+                     showVisibility);
+        const std::string title = "shadowbench: " + technique.name() +
+                                  (showVisibility ? " (visibility)" : "") + "  " + times +
+                                  "  [Tab/1-9 technique, V visibility, drag orbit]";
+        glfwSetWindowTitle(window, title.c_str());
         harness.context().present();
+        // The swap and the overlay's draws finish here, not inside the next frame's wall time.
+        glFinish();
         ++frames;
+        if (!config.quiet) {
+            if (current != announcedTechnique) {
+                announcedTechnique = current;
+                log << "viewer: technique " << technique.name() << std::endl;
+            }
+            if (view != announcedView) log << "viewer: view " << (announcedView = view) << std::endl;
+        }
     }
     return 0;
 }

@@ -28,11 +28,7 @@ void NoneVulkan::compile(const VulkanCompileContext& ctx) {
 void NoneVulkan::execute(VulkanFrameContext& ctx) {
     ctx.passes.begin("lighting");
     ctx.submitter.resetStats();
-    ctx.targets.beginPass(ctx.cmd);
-    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.get(ctx.targets));
-    ctx.frame.bind(ctx.cmd, mLayout, ctx.frameOffset);
-    ctx.submitter.draw(ctx.cmd, mLayout, DrawSet::All);
-    vkCmdEndRenderPass(ctx.cmd);
+    drawLitScene(ctx, mPipeline, mLayout);
     const SubmitStats& s = ctx.submitter.stats();
     mCounters = {{"draw_calls", double(s.drawCalls)}, {"triangles", double(s.triangles)}};
 }

@@ -323,17 +323,6 @@ void CubeMapVulkan::renderDepth(VulkanFrameContext& ctx) {
     }
 }
 
-void CubeMapVulkan::renderLighting(VulkanFrameContext& ctx) {
-    ctx.targets.beginPass(ctx.cmd);
-    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingPipeline.get(ctx.targets));
-    ctx.frame.bind(ctx.cmd, mLightingLayout, ctx.frameOffset);
-    const VkDescriptorSet set = mSets.set(kLightingSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0,
-                            nullptr);
-    ctx.submitter.draw(ctx.cmd, mLightingLayout, DrawSet::All);
-    vkCmdEndRenderPass(ctx.cmd);
-}
-
 void CubeMapVulkan::execute(VulkanFrameContext& ctx) {
     // As GL sets its uniforms every frame: a scene in motion (sceneChanged -> setScene) moved the fits.
     // The previous frame's fence has been waited for, so no slot is in flight.
@@ -348,7 +337,7 @@ void CubeMapVulkan::execute(VulkanFrameContext& ctx) {
         renderDepth(ctx);
     }
     ctx.passes.begin("lighting");
-    renderLighting(ctx);
+    drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
     const SubmitStats& s = ctx.submitter.stats();
     const double res = double(mSize);
     const double maps = double(CubeFaces::kFaces * mLights.omniCount() + mLights.flatCount());

@@ -60,7 +60,6 @@ private:
     void renderFlatMaps(VulkanFrameContext& ctx);
     void renderCubesLayered(VulkanFrameContext& ctx);
     void renderCubesSixPass(VulkanFrameContext& ctx);
-    void renderLighting(VulkanFrameContext& ctx);
     /// Slots of the depth passes' uniform buffer: flat maps, then six-pass faces, then layered cubes.
     uint32_t flatSlot(int index) const { return uint32_t(index); }
     uint32_t faceSlot(size_t cube, int face) const {

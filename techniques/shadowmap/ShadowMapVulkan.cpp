@@ -202,17 +202,6 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
     }
 }
 
-void ShadowMapVulkan::renderLighting(VulkanFrameContext& ctx) {
-    ctx.targets.beginPass(ctx.cmd);
-    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingPipeline.get(ctx.targets));
-    ctx.frame.bind(ctx.cmd, mLightingLayout, ctx.frameOffset);
-    const VkDescriptorSet lightingSet = mSets.set(kLightingSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &lightingSet, 0,
-                            nullptr);
-    ctx.submitter.draw(ctx.cmd, mLightingLayout, DrawSet::All);
-    vkCmdEndRenderPass(ctx.cmd);
-}
-
 void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {
     ctx.submitter.resetStats();
     if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
@@ -222,7 +211,7 @@ void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {
         renderDepth(ctx);
     }
     ctx.passes.begin("lighting");
-    renderLighting(ctx);
+    drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
     const SubmitStats& s = ctx.submitter.stats();
     mCounters = {{"draw_calls", double(s.drawCalls)},
                  {"triangles", double(s.triangles)},

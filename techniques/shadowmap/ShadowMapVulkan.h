@@ -39,7 +39,6 @@ private:
     void fitTexels(const Scene& scene);
     void writeLightingBlock(float targetHeight);
     void renderDepth(VulkanFrameContext& ctx);
-    void renderLighting(VulkanFrameContext& ctx);
 
     VkDevice mDevice = VK_NULL_HANDLE;
     FlatLightFits mLights;

@@ -24,4 +24,15 @@ GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::s
     return d;
 }
 
+void drawLitScene(VulkanFrameContext& ctx, const ScenePipeline& pipeline, VkPipelineLayout layout,
+                  VkDescriptorSet set) {
+    ctx.targets.beginPass(ctx.cmd);
+    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get(ctx.targets));
+    ctx.frame.bind(ctx.cmd, layout, ctx.frameOffset);
+    if (set != VK_NULL_HANDLE)
+        vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
+    ctx.submitter.draw(ctx.cmd, layout, DrawSet::All);
+    vkCmdEndRenderPass(ctx.cmd);
+}
+
 } // namespace sb

@@ -9,11 +9,13 @@
 #include <vulkan/vulkan.h>
 
 #include "gl/ProgramCache.h"
+#include "techniques/vulkan/VulkanPipelineCache.h"
 #include "vk/GraphicsPipeline.h"
 
 namespace sb {
 
 struct VulkanCompileContext;
+struct VulkanFrameContext;
 
 /// Set 0 = the frame block, then `sets`; push constants of VulkanPush. The caller owns the layout.
 VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
@@ -25,5 +27,11 @@ VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
 GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::string& vertex,
                                    const std::string& fragment, const Defines& defines,
                                    VkPipelineLayout layout, std::string& key);
+
+/// The lit pass over every mesh into the frame targets, as none's, shadowmap's and cubemap's lighting
+/// passes draw it: begins the targets' render pass, binds `pipeline` (the variant for this frame's
+/// targets), the frame block as set 0 and `set` as set 1 when given, draws DrawSet::All, ends the pass.
+void drawLitScene(VulkanFrameContext& ctx, const ScenePipeline& pipeline, VkPipelineLayout layout,
+                  VkDescriptorSet set = VK_NULL_HANDLE);
 
 } // namespace sb

@@ -13,6 +13,7 @@
 
 #include "HardCases.h"
 #include "TestSupport.h"
+#include "VkTestSupport.h"
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Harness.h"
 #include "bench/run/VulkanHarness.h"
@@ -59,10 +60,7 @@ TEST_P(HardCasesVulkan, BoundsHold) {
     EXPECT_LE(r.hard.wrongNoEdgePct, c.maxWrongNoEdgePct) << c.why;
     EXPECT_GE(r.hard.wrongNoEdgePct, c.minWrongNoEdgePct) << c.why;
     EXPECT_LE(r.hard.falseShadowPct, c.maxFalseShadowPct) << c.why;
-    std::string errors;
-    for (const std::string& m : vulkan.context().validationMessages())
-        if (m.rfind("error", 0) == 0) errors += m + "\n";
-    EXPECT_TRUE(errors.empty()) << errors;
+    EXPECT_EQ(test::validationErrorLog(vulkan.context()), "");
     technique.reset();
 }
 

@@ -1,0 +1,162 @@
+// Installing and packaging, as a user of a C++/CMake tool would: `cmake --install` into a temporary
+// prefix gives a bench that finds its own shaders, scenes and tools there (its --version names the
+// folder, so a silent fall-back to the source tree would show), CPack builds a .deb of the same files,
+// and the commit a binary reports is the one it was built from, whatever happens to the tree after the
+// build. About 20 s in all (the install copies ~3 MB; cpack runs dpkg-shlibdeps over three binaries).
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "TestPaths.h"
+#include "TestSupport.h"
+
+using namespace sb;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kBuildDir = fs::path(SB_BENCH_BINARY).parent_path();
+
+std::string shellQuoted(const fs::path& p) {
+    return "'" + p.string() + "'";
+}
+
+/// The value of "KEY VALUE" lines in `bench --version`'s output.
+std::string versionField(const std::string& text, const std::string& key) {
+    std::smatch m;
+    const std::regex line("(^|\\n)" + key + " ([^\\n]*)");
+    return std::regex_search(text, m, line) ? m[2].str() : "";
+}
+
+class InstallCliTest : public ::testing::Test {
+protected:
+    void SetUp() override { mDir = test::freshTestDir("install"); }
+    void TearDown() override { fs::remove_all(mDir); }
+    std::string mDir;
+};
+
+/// Restores a file's bytes when it goes out of scope, so a failed assertion never leaves the tree
+/// edited.
+class RestoreFile {
+public:
+    explicit RestoreFile(fs::path path) : mPath(std::move(path)), mText(test::readFile(mPath.string())) {}
+    ~RestoreFile() { test::writeFile(mPath.string(), mText); }
+    const std::string& original() const { return mText; }
+
+private:
+    fs::path mPath;
+    std::string mText;
+};
+
+} // namespace
+
+TEST_F(InstallCliTest, InstalledBenchFindsItsShadersScenesAndTools) {
+    const fs::path prefix = fs::path(mDir) / "prefix";
+    const auto install =
+        test::runCommand("cmake --install " + shellQuoted(kBuildDir) + " --prefix " + shellQuoted(prefix));
+    ASSERT_EQ(install.exitCode, 0) << install.output;
+    const fs::path share = prefix / "share" / "shadowbench";
+    for (const fs::path& f :
+         {prefix / "bin" / "bench", prefix / "bin" / "handloop", prefix / "bin" / "handshadow",
+          share / "shaders" / "common" / "lighting.glsl", share / "scenes" / "data" / "aircraft.json",
+          share / "tools" / "plot.py", share / "results" / "ci" / "suite.json",
+          share / "results" / "goldens" / "bounds.json", share / "sweeps",
+          prefix / "share" / "doc" / "shadowbench" / "LICENSE"})
+        EXPECT_TRUE(fs::exists(f)) << f << " not installed";
+
+    const fs::path bench = prefix / "bin" / "bench";
+    const auto version = test::runCommand(shellQuoted(bench) + " --version");
+    ASSERT_EQ(version.exitCode, 0) << version.output;
+    // The installed binary reads its own prefix: not the build tree, not the source tree.
+    EXPECT_EQ(fs::weakly_canonical(versionField(version.output, "data")), fs::weakly_canonical(share))
+        << version.output;
+    // A run of a built-in scene file and a shader-heavy technique from the prefix alone.
+    const auto run = test::runCommand("cd " + shellQuoted(mDir) + " && " + shellQuoted(bench) +
+                                      " -t shadowmap --scene sphere_plane --frames 2 --warmup 0 --size 64x64"
+                                      " --no-timer-check -q --format json");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const auto rows = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+    ASSERT_EQ(rows["rows"].size(), 1u) << run.output;
+    EXPECT_EQ(rows["rows"][0]["status"], "ok");
+    EXPECT_EQ(rows["rows"][0]["scene"], "sphere_plane");
+}
+
+TEST_F(InstallCliTest, CPackBuildsADebOfTheSameFilesWithDependencies) {
+    const auto pack =
+        test::runCommand("cd " + shellQuoted(mDir) + " && cpack -G DEB --config " +
+                         shellQuoted(kBuildDir / "CPackConfig.cmake") + " -B " + shellQuoted(mDir));
+    ASSERT_EQ(pack.exitCode, 0) << pack.output;
+    fs::path deb;
+    for (const auto& e : fs::directory_iterator(mDir))
+        if (e.path().extension() == ".deb") deb = e.path();
+    ASSERT_FALSE(deb.empty()) << pack.output;
+    const auto contents = test::runCommand("dpkg-deb -c " + shellQuoted(deb));
+    ASSERT_EQ(contents.exitCode, 0) << contents.output;
+    for (const char* f :
+         {"./usr/bin/bench", "./usr/share/shadowbench/shaders/common/lighting.glsl",
+          "./usr/share/shadowbench/scenes/data/aircraft.json", "./usr/share/shadowbench/tools/plot.py"})
+        EXPECT_NE(contents.output.find(f), std::string::npos) << f << " not in the package:\n"
+                                                              << contents.output;
+    // dpkg-shlibdeps found the shared libraries the binaries link: Embree's among them.
+    const auto depends = test::runCommand("dpkg-deb -f " + shellQuoted(deb) + " Depends");
+    EXPECT_NE(depends.output.find("libembree"), std::string::npos) << depends.output;
+    const auto name = test::runCommand("dpkg-deb -f " + shellQuoted(deb) + " Package Version");
+    EXPECT_NE(name.output.find("Package: shadowbench"), std::string::npos) << name.output;
+}
+
+TEST_F(InstallCliTest, ReportsTheCommitItWasBuiltFromAfterTheTreeChanges) {
+    const fs::path source = SB_SOURCE_DIR;
+    if (!fs::exists(source / ".git"))
+        GTEST_SKIP() << "the source tree is not a git checkout: commit is 'unknown'";
+    const auto before = test::runCommand(shellQuoted(SB_BENCH_BINARY) + " --version");
+    ASSERT_EQ(before.exitCode, 0) << before.output;
+    const std::string built = versionField(before.output, "commit");
+    // The build stamped HEAD of the tree it compiled (a "-dirty" suffix when that tree had edits).
+    const auto head = test::runCommand("git -C " + shellQuoted(source) + " rev-parse --short=12 HEAD");
+    ASSERT_EQ(head.exitCode, 0) << head.output;
+    EXPECT_EQ(built.substr(0, 12), head.output.substr(0, 12)) << before.output;
+
+    std::string describedAfterEdit;
+    {
+        // Edit a tracked file no test reads, then ask again: the tree is now dirty, the binary is not.
+        RestoreFile changelog(source / "CHANGELOG.md");
+        test::writeFile((source / "CHANGELOG.md").string(),
+                        changelog.original() + "\nedited by InstallCliTest\n");
+        describedAfterEdit =
+            test::runCommand("git -C " + shellQuoted(source) + " describe --always --dirty --abbrev=12")
+                .output;
+        const auto after = test::runCommand(shellQuoted(SB_BENCH_BINARY) + " --version");
+        EXPECT_EQ(versionField(after.output, "commit"), built) << after.output;
+        // A row measured now records the same commit.
+        const auto run =
+            test::runCommand(shellQuoted(SB_BENCH_BINARY) +
+                             " -t none --frames 1 --warmup 0 --size 32x32 --no-timer-check -q --format json");
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        const auto rows = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+        EXPECT_EQ(rows["rows"][0]["git_commit"], built);
+    }
+    EXPECT_NE(describedAfterEdit.find("-dirty"), std::string::npos)
+        << "the edit did not make the tree dirty, so the check above proved nothing: " << describedAfterEdit;
+}
+
+TEST_F(InstallCliTest, VersionAgreesWithCitationAndChangelog) {
+    const auto version = test::runCommand(shellQuoted(SB_BENCH_BINARY) + " --version");
+    ASSERT_EQ(version.exitCode, 0);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(version.output, m, std::regex("^shadowbench ([0-9]+\\.[0-9]+\\.[0-9]+)")))
+        << version.output;
+    const std::string v = m[1].str();
+    const std::string citation = test::readFile((fs::path(SB_SOURCE_DIR) / "CITATION.cff").string());
+    EXPECT_NE(citation.find("\nversion: " + v + "\n"), std::string::npos)
+        << "CITATION.cff's version is not " << v;
+    const std::string changelog = test::readFile((fs::path(SB_SOURCE_DIR) / "CHANGELOG.md").string());
+    EXPECT_NE(changelog.find(v), std::string::npos) << "CHANGELOG.md has no entry for " << v;
+    EXPECT_NE(test::readFile((fs::path(SB_SOURCE_DIR) / "LICENSE").string()).find("Apache License"),
+              std::string::npos);
+    // --version takes nothing else: a stray argument is the user's mistake (exit 2).
+    EXPECT_EQ(test::runCommand(shellQuoted(SB_BENCH_BINARY) + " --version extra").exitCode, 2);
+}

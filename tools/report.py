@@ -1,0 +1,505 @@
+#!/usr/bin/python3
+"""One static HTML page from result CSVs, figures and images (`bench report`, bench/report/ReportCommand.h).
+
+  /usr/bin/python3 tools/report.py DIR_OR_FILE... [--out PAGE.html] [--title T] [--embed]
+
+Each argument is a result CSV, an image (PNG, SVG, JPEG), a README.md, or a folder searched for them
+(recursively, in name order). The page holds, per CSV, a table of its rows (the key columns; every
+column under "all columns"), sortable by a click on a heading with the page's own script (no server,
+nothing fetched: the page works from file://), the figures of the CSV's folder beside it, and each
+row's screenshot where `bench --screenshot` named one after its technique (shot_<technique>.png).
+Above the tables: the environment the rows record (renderer, GL version, CPU, commit ...) and the
+commands that rerun them, rebuilt from the rows' columns, with the commands a README beside them gives.
+
+The page is the same bytes for the same inputs (no generation time), so a committed example stays put.
+Images are linked relative to the page, or with --embed written into it (a single file to send).
+
+The script checks itself: a page opened with #selftest sorts every table by every column both ways
+and writes the verdict into <output id="selftest">; #sort=TABLE:COLUMN:asc|desc sorts one table on
+load as a click would. Script errors are written into <pre id="js-errors">, and <body> gets
+data-js-ready="1" once the script has run to its end (tests/ReportCliTest.cpp reads both).
+
+Python standard library only (csv, html), so /usr/bin/python3 of any Debian 12 runs it.
+"""
+import argparse
+import base64
+import csv
+import html
+import os
+import re
+import sys
+
+CSV_LIMIT = 10 * 1024 * 1024  # a result CSV larger than this is listed, not tabulated
+IMAGE_EXTS = (".png", ".svg", ".jpg", ".jpeg", ".gif")
+# The key columns of a bench row, in this order, where present (README.md, "CSV columns").
+KEY_COLUMNS = [
+    "status", "technique", "technique_spec", "properties", "scene", "instances", "camera", "submit", "width",
+    "height", "frames", "repeat", "wall_ms_median", "wall_ms_p5", "wall_ms_p95", "cpu_submit_ms_median",
+    "gpu_ms_median", "fps_median", "wall_ratio_vs_baseline", "acc_wrong_pct", "acc_wrong_no_edge_pct",
+    "acc_rmse", "timer_verdict", "error",
+]
+# What a row says about the machine and build that measured it.
+ENVIRONMENT_COLUMNS = [
+    "api", "api_version", "renderer", "gl_version", "gl_vendor", "backend", "device", "cpu_model", "hw_threads",
+    "lp_num_threads", "git_commit", "timestamp",
+]
+WIDE = 14  # a table with more columns than this shows the key ones, the rest under "all columns"
+
+
+def bad_input(message):
+    """Exit code 2, bench's code for wrong input (core/Error.h), with the message on stderr."""
+    print(f"report.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_csv(path):
+    with open(path, newline="", encoding="utf-8", errors="replace") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return [], []
+    header, body = rows[0], rows[1:]
+    return header, [r + [""] * (len(header) - len(r)) for r in body]
+
+
+def collect(paths, out_path):
+    """The CSVs, images and READMEs of the arguments, in a stable order; the page itself left out."""
+    csvs, images, readmes = [], [], []
+    out_real = os.path.realpath(out_path)
+
+    def add(path):
+        low = path.lower()
+        if os.path.realpath(path) == out_real:
+            return
+        if low.endswith(".csv"):
+            csvs.append(path)
+        elif low.endswith(IMAGE_EXTS):
+            images.append(path)
+        elif os.path.basename(low) == "readme.md":
+            readmes.append(path)
+
+    for p in paths:
+        if os.path.isdir(p):
+            for root, dirs, files in os.walk(p):
+                dirs.sort()
+                for name in sorted(files):
+                    add(os.path.join(root, name))
+        elif os.path.isfile(p):
+            add(p)
+        else:
+            bad_input(f"{p}: no such file or folder")
+    return csvs, images, readmes
+
+
+def is_number(text):
+    try:
+        float(text)
+        return text.strip() != ""
+    except ValueError:
+        return False
+
+
+def link(path, out_dir, embed):
+    """The src of an image: relative to the page, or the file itself as a data: URL (--embed)."""
+    if embed:
+        ext = os.path.splitext(path)[1].lower().lstrip(".")
+        mime = {"svg": "image/svg+xml", "jpg": "image/jpeg"}.get(ext, f"image/{ext}")
+        with open(path, "rb") as f:
+            return f"data:{mime};base64," + base64.b64encode(f.read()).decode("ascii")
+    return os.path.relpath(path, out_dir).replace(os.sep, "/")
+
+
+def shown_path(path, out_dir):
+    return os.path.relpath(path, out_dir).replace(os.sep, "/")
+
+
+def sanitized(name):
+    return re.sub(r"[^A-Za-z0-9_.=-]", "_", name)
+
+
+def row_images(header, rows, images, csv_dir):
+    """Per row, the images of the CSV's folder named after its technique: `bench --screenshot shot.png`
+    with several techniques writes shot_<technique>.png (bench/RunCommand.cpp); with one, shot.png."""
+    here = [i for i in images if os.path.dirname(i) == csv_dir]
+    col = {name: k for k, name in enumerate(header)}
+    found = []
+    for r in rows:
+        names = {r[col[c]] for c in ("technique", "technique_spec") if c in col and r[col[c]]}
+        mine = []
+        for image in here:
+            stem = os.path.splitext(os.path.basename(image))[0]
+            if any(stem.endswith("_" + n) or stem.endswith("_" + sanitized(n)) for n in names):
+                mine.append(image)
+        found.append(mine)
+    if len(rows) == 1 and not found[0]:  # one technique: the screenshot keeps its name
+        found[0] = [i for i in here if not os.path.basename(i).startswith("figure")]
+    return found
+
+
+def table_html(table_id, header, rows, columns, pictures, out_dir, embed, caption):
+    """A sortable table: the CSV's row number first, then `columns` (raw cell text, so the page shows
+    exactly what the CSV holds), then the row's images if any."""
+    index = {name: k for k, name in enumerate(header)}
+    numeric = {c: all(is_number(r[index[c]]) for r in rows if r[index[c]].strip()) and
+               any(r[index[c]].strip() for r in rows) for c in columns}
+    out = [f'<table class="rows" id="{table_id}">', f"<caption>{html.escape(caption)}</caption>", "<thead><tr>"]
+    out.append('<th data-col="row" data-type="number" title="the row\'s place in the CSV; click to sort">row</th>')
+    if pictures is not None:  # the row's images next to its numbers, before the long columns
+        out.append('<th class="nosort">image</th>')
+    for c in columns:
+        kind = "number" if numeric[c] else "text"
+        out.append(f'<th data-col="{html.escape(c)}" data-type="{kind}" title="click to sort">{html.escape(c)}</th>')
+    out.append("</tr></thead><tbody>")
+    for n, r in enumerate(rows, start=1):
+        cells = [f'<td data-col="row" data-value="{n}">{n}</td>']
+        if pictures is not None:
+            imgs = "".join(f'<a href="{html.escape(link(p, out_dir, embed))}"><img class="thumb" alt="'
+                           f'{html.escape(os.path.basename(p))}" src="{html.escape(link(p, out_dir, embed))}"></a>'
+                           for p in pictures[n - 1])
+            cells.append(f'<td class="pics">{imgs}</td>')
+        for c in columns:
+            v = r[index[c]]
+            cls = ' class="num"' if numeric[c] else ""
+            cells.append(f'<td data-col="{html.escape(c)}" data-value="{html.escape(v)}"{cls}>{html.escape(v)}</td>')
+        out.append(f'<tr data-row="{n}">' + "".join(cells) + "</tr>")
+    out.append("</tbody></table>")
+    return "\n".join(out)
+
+
+def environment_html(tables):
+    """Each environment column's distinct values over every row, with how many rows hold each."""
+    seen = {}
+    for header, rows in tables:
+        for c in ENVIRONMENT_COLUMNS:
+            if c in header:
+                k = header.index(c)
+                for r in rows:
+                    if r[k].strip():
+                        seen.setdefault(c, {}).setdefault(r[k], 0)
+                        seen[c][r[k]] += 1
+    if not seen:
+        return "<p>The CSVs record no environment columns.</p>"
+    out = ['<table class="env" id="environment"><thead><tr><th>column</th><th>value</th><th>rows</th></tr>'
+           "</thead><tbody>"]
+    for c in ENVIRONMENT_COLUMNS:
+        if c not in seen:
+            continue
+        values = seen[c]
+        if c == "timestamp":
+            stamps = sorted(values)
+            items = [(stamps[0] + (" ... " + stamps[-1] if len(stamps) > 1 else ""), sum(values.values()))]
+        else:
+            items = sorted(values.items(), key=lambda kv: (-kv[1], kv[0]))
+        for v, count in items:
+            out.append(f'<tr><td>{html.escape(c)}</td><td data-col="{html.escape(c)}">{html.escape(v)}</td>'
+                       f"<td>{count}</td></tr>")
+    out.append("</tbody></table>")
+    return "\n".join(out)
+
+
+def commands(header, rows):
+    """`bench` commands that measure the rows again, rebuilt from their columns: one per group of rows
+    sharing everything but the technique (the techniques become -t options of one command)."""
+    if "command" in header:  # rows that record their own command line
+        k = header.index("command")
+        return list(dict.fromkeys(r[k] for r in rows if r[k]))
+    col = {name: k for k, name in enumerate(header)}
+    if "technique" not in col or "scene" not in col:
+        return []
+    groups = {}
+    for r in rows:
+        get = lambda c: r[col[c]].strip() if c in col else ""  # noqa: E731
+        if get("status") not in ("", "ok"):
+            continue
+        accuracy = any(c.startswith("acc_") and r[k].strip() for c, k in col.items())
+        opts = []
+        if get("api") and get("api") != "gl":
+            opts.append(f"--api {get('api')}")
+        opts.append(f"--scene {get('scene')}")
+        if get("instances") not in ("", "0"):
+            opts.append(f"-n {get('instances')}")
+        if get("scale") not in ("", "1", "1.0", "1.0000"):
+            opts.append(f"--scale {get('scale')}")
+        if get("tessellation") not in ("", "default"):
+            opts.append(f"--tess {get('tessellation')}")
+        if get("seed") not in ("", "default"):
+            opts.append(f"--seed {get('seed')}")
+        if get("camera"):
+            opts.append(f"--camera {get('camera')}")
+        if get("submit"):
+            opts.append(f"--submit {get('submit')}")
+        if get("width") and get("height"):
+            opts.append(f"--size {get('width')}x{get('height')}")
+        if get("frames"):
+            opts.append(f"--frames {get('frames')}")
+        if get("warmup"):
+            opts.append(f"--warmup {get('warmup')}")
+        group = groups.setdefault(("bench accuracy" if accuracy else "bench", " ".join(opts)),
+                                  {"techniques": [], "rounds": 1})
+        spec = get("technique_spec") or (get("technique") + (":" + get("properties") if get("properties") else ""))
+        if spec not in group["techniques"]:
+            group["techniques"].append(spec)
+        if get("repeat").isdigit():  # the round a row was measured in: the largest is the round count
+            group["rounds"] = max(group["rounds"], int(get("repeat")))
+    out = []
+    for (mode, opts), group in groups.items():
+        ts = " ".join(f"-t {t}" for t in group["techniques"])
+        out.append(f"{mode} {ts} {opts}" + (f" --repeat {group['rounds']}" if group["rounds"] > 1 else ""))
+    return out
+
+
+def readme_commands(text):
+    """The command lines of a README's code blocks: those that run bench, a script or python."""
+    out = []
+    for block in re.findall(r"```[a-z]*\n(.*?)```", text, flags=re.S):
+        for line in block.splitlines():
+            s = line.strip()
+            if re.match(r"^(\S*/)?(bench|build/bench)\b|^scripts/|^/usr/bin/python3|^python3", s):
+                out.append(s)
+    return out
+
+
+SCRIPT_ERRORS = r"""
+// Runs first, in its own element, so that it also reports a syntax error in the script below.
+// Messages are kept until the body (and its error box) exists.
+(function () {
+  var pending = [];
+  function flush() {
+    var box = document.getElementById("js-errors");
+    if (!box) return;
+    pending.forEach(function (m) { box.hidden = false; box.textContent += m + "\n"; });
+    pending = [];
+  }
+  function report(message) {
+    pending.push(message);
+    document.documentElement.setAttribute("data-js-errors", String((window.reportErrors = (window.reportErrors || 0) + 1)));
+    flush();
+  }
+  document.addEventListener("DOMContentLoaded", flush);
+  window.addEventListener("error", function (e) {
+    report("error: " + e.message + " (line " + e.lineno + ")");
+  });
+  var original = console.error;
+  console.error = function () {
+    report("console.error: " + Array.prototype.join.call(arguments, " "));
+    original.apply(console, arguments);
+  };
+})();
+"""
+
+SCRIPT_MAIN = r"""
+"use strict";
+// Sorting: a click on a heading sorts its table by that column, ascending, then descending. Numbers
+// compare as numbers; empty cells go last either way; ties keep the CSV's order (the row number).
+function cellValue(row, col) {
+  var cell = row.querySelector('td[data-col="' + col + '"]');
+  return cell ? cell.getAttribute("data-value") : "";
+}
+function compareRows(a, b, col, type, direction) {
+  var x = cellValue(a, col), y = cellValue(b, col);
+  if (x === "" || y === "") {
+    if (x === y) return Number(a.dataset.row) - Number(b.dataset.row);
+    return x === "" ? 1 : -1;
+  }
+  var d = type === "number" ? Number(x) - Number(y) : x.localeCompare(y);
+  if (d === 0) return Number(a.dataset.row) - Number(b.dataset.row);
+  return direction === "desc" ? -d : d;
+}
+function sortTable(table, th, direction) {
+  var col = th.dataset.col, type = th.dataset.type;
+  var body = table.tBodies[0];
+  var rows = Array.prototype.slice.call(body.rows);
+  rows.sort(function (a, b) { return compareRows(a, b, col, type, direction); });
+  rows.forEach(function (r) { body.appendChild(r); });
+  Array.prototype.forEach.call(table.tHead.rows[0].cells, function (c) { c.removeAttribute("aria-sort"); });
+  th.setAttribute("aria-sort", direction === "desc" ? "descending" : "ascending");
+}
+function onHeading(event) {
+  var th = event.currentTarget, table = th.closest("table");
+  sortTable(table, th, th.getAttribute("aria-sort") === "ascending" ? "desc" : "asc");
+}
+function inOrder(table, th, direction) {
+  var rows = table.tBodies[0].rows;
+  for (var i = 1; i < rows.length; ++i)
+    if (compareRows(rows[i - 1], rows[i], th.dataset.col, th.dataset.type, direction) > 0) return false;
+  return true;
+}
+// #selftest: every sortable column of every table, clicked twice (ascending, descending), checked in
+// order; then the CSV's order is restored.
+function selfTest() {
+  var checks = 0, failures = [];
+  document.querySelectorAll("table.rows").forEach(function (table) {
+    table.querySelectorAll("th[data-col]").forEach(function (th) {
+      ["asc", "desc"].forEach(function (direction) {
+        th.click();
+        checks++;
+        if (th.getAttribute("aria-sort") !== (direction === "asc" ? "ascending" : "descending") ||
+            !inOrder(table, th, direction))
+          failures.push(table.id + ":" + th.dataset.col + ":" + direction);
+      });
+    });
+    var first = table.querySelector('th[data-col="row"]');
+    sortTable(table, first, "asc");
+  });
+  var out = document.getElementById("selftest");
+  out.setAttribute("data-checks", String(checks));
+  out.setAttribute("data-result", failures.length ? "fail" : "pass");
+  out.textContent = (failures.length ? "sort self-test FAILED: " + failures.join(", ")
+                                     : "sort self-test passed") + " (" + checks + " checks)";
+}
+// #sort=TABLE:COLUMN:asc|desc: sorts one table on load the way clicks on its heading do.
+function sortFromFragment(fragment) {
+  var m = /^sort=([^:]+):(.+):(asc|desc)$/.exec(fragment);
+  if (!m) return;
+  var table = document.getElementById(m[1]);
+  var th = table && table.querySelector('th[data-col="' + m[2] + '"]');
+  if (!th) { console.error("#sort: no column " + m[2] + " in table " + m[1]); return; }
+  th.click();
+  if (m[3] === "desc") th.click();
+}
+document.addEventListener("DOMContentLoaded", function () {
+  document.querySelectorAll("table.rows th[data-col]").forEach(function (th) {
+    th.addEventListener("click", onHeading);
+    th.tabIndex = 0;
+    th.addEventListener("keydown", function (e) { if (e.key === "Enter") th.click(); });
+  });
+  var fragment = decodeURIComponent(location.hash.replace(/^#/, ""));
+  if (fragment === "selftest") selfTest();
+  else sortFromFragment(fragment);
+  document.body.setAttribute("data-js-ready", "1");
+});
+"""
+
+STYLE = """
+body { font: 14px/1.4 system-ui, sans-serif; margin: 1.5em; color: #222; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 2em; border-bottom: 1px solid #ccc; }
+code, pre, td { font-family: ui-monospace, monospace; font-size: 12px; }
+pre { background: #f5f5f5; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
+table { border-collapse: collapse; margin: .5em 0; }
+th, td { border: 1px solid #ccc; padding: 2px 6px; vertical-align: top; }
+td[data-col="properties"], td[data-col="technique_spec"], td[data-col="error"] { max-width: 22em; overflow-wrap: anywhere; font-size: 11px; }
+th { background: #eef; position: sticky; top: 0; }
+table.rows th[data-col] { cursor: pointer; user-select: none; }
+th[aria-sort="ascending"]::after { content: " \\25B2"; } th[aria-sort="descending"]::after { content: " \\25BC"; }
+td.num { text-align: right; }
+caption { text-align: left; font-weight: bold; padding: .3em 0; }
+.pair { display: flex; flex-wrap: wrap; gap: 1.5em; align-items: flex-start; }
+.tablewrap { overflow-x: auto; max-width: 100%; }
+.figures img { max-width: 560px; border: 1px solid #ddd; display: block; margin-bottom: .5em; }
+img.thumb { width: 96px; image-rendering: pixelated; border: 1px solid #ccc; }
+#js-errors { color: #a00; background: #fee; }
+output#selftest { display: block; color: #555; }
+"""
+
+
+def build(args):
+    out_dir = os.path.dirname(os.path.abspath(args.out))
+    csvs, images, readmes = collect(args.inputs, args.out)
+    if not csvs and not images:
+        bad_input(f"no CSV or image in {' '.join(args.inputs)}")
+    tables, sections, used_images = [], [], set()
+    for t, path in enumerate(csvs, start=1):
+        if os.path.getsize(path) > CSV_LIMIT:
+            sections.append(f"<h2>{html.escape(shown_path(path, out_dir))}</h2><p>Larger than "
+                            f"{CSV_LIMIT // (1024 * 1024)} MiB: not tabulated.</p>")
+            continue
+        header, rows = read_csv(path)
+        if not header:
+            continue
+        tables.append((header, rows))
+        csv_dir = os.path.dirname(path)
+        pictures = row_images(header, rows, images, csv_dir)
+        has_pictures = any(pictures)
+        used_images.update(p for ps in pictures for p in ps)
+        key = [c for c in KEY_COLUMNS if c in header] if len(header) > WIDE else list(header)
+        if not key:
+            key = header[:WIDE]
+        table_id = f"t{t}"
+        name = shown_path(path, out_dir)
+        part = [f'<h2 id="{table_id}-section">{html.escape(name)}</h2>',
+                f"<p>{len(rows)} row(s), {len(header)} column(s). Click a heading to sort.</p>",
+                '<div class="pair"><div class="tablewrap">',
+                table_html(table_id, header, rows, key, pictures if has_pictures else None, out_dir, args.embed,
+                           f"{name}: key columns" if key != header else name)]
+        if key != header:
+            part.append(f"<details><summary>all {len(header)} columns</summary>")
+            part.append(table_html(f"{table_id}-all", header, rows, header, None, out_dir, args.embed, name))
+            part.append("</details>")
+        part.append("</div>")
+        # The figures of the CSV's folder (bench figures: figure.svg beside data.csv) go beside it.
+        figures = [i for i in images if os.path.dirname(i) == csv_dir and i not in used_images]
+        svgs = {os.path.splitext(i)[0] for i in figures if i.lower().endswith(".svg")}
+        figures = [i for i in figures if not (i.lower().endswith(".png") and os.path.splitext(i)[0] in svgs)]
+        if figures:
+            part.append('<div class="figures">')
+            for fig in figures:
+                used_images.add(fig)
+                part.append(f'<figure><a href="{html.escape(link(fig, out_dir, args.embed))}"><img alt="'
+                            f'{html.escape(os.path.basename(fig))}" src="{html.escape(link(fig, out_dir, args.embed))}">'
+                            f"</a><figcaption>{html.escape(shown_path(fig, out_dir))}</figcaption></figure>")
+            used_images.update(i for i in images if os.path.splitext(i)[0] in svgs)
+            part.append("</div>")
+        part.append("</div>")
+        rerun = commands(header, rows)
+        if rerun:
+            part.append("<p>Commands that measure these rows again (rebuilt from the rows' columns; "
+                        "add --csv FILE to write them):</p><pre class=\"commands\">" +
+                        html.escape("\n".join(rerun)) + "</pre>")
+        sections.append("\n".join(part))
+    rest = [i for i in images if i not in used_images]
+    if rest:
+        sections.append("<h2>Other images</h2><div class=\"pair\">" + "".join(
+            f'<figure><img class="figure" style="max-width:400px" alt="{html.escape(os.path.basename(i))}" '
+            f'src="{html.escape(link(i, out_dir, args.embed))}"><figcaption>{html.escape(shown_path(i, out_dir))}'
+            f"</figcaption></figure>" for i in rest) + "</div>")
+    notes = []
+    for path in readmes:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        lines = readme_commands(text)
+        notes.append(f"<h3>{html.escape(shown_path(path, out_dir))}</h3>")
+        if lines:
+            notes.append("<p>Its commands:</p><pre class=\"commands\">" + html.escape("\n".join(lines)) + "</pre>")
+        notes.append(f"<details><summary>the whole file</summary><pre>{html.escape(text)}</pre></details>")
+    inputs = ", ".join(html.escape(shown_path(p, out_dir)) for p in args.inputs)
+    title = args.title or "shadowbench results: " + ", ".join(os.path.basename(os.path.normpath(p)) for p in args.inputs)
+    page = [
+        "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        f"<title>{html.escape(title)}</title>", f"<style>{STYLE}</style>",
+        f"<script>{SCRIPT_ERRORS}</script>", f"<script>{SCRIPT_MAIN}</script>", "</head><body>",
+        f"<h1>{html.escape(title)}</h1>",
+        f"<p>Written by <code>bench report</code> (tools/report.py) from {inputs}: {len(tables)} table(s), "
+        f"{len(images)} image(s). Static: sorting runs in this page, nothing is fetched.</p>",
+        '<pre id="js-errors" hidden></pre>', '<output id="selftest"></output>',
+        "<h2>Environment</h2><p>What the rows record about the machine, driver and build that measured them.</p>",
+        environment_html(tables),
+    ]
+    if notes:
+        page.append("<h2>Notes beside the results</h2>")
+        page.extend(notes)
+    page.extend(sections)
+    page.append("</body></html>\n")
+    os.makedirs(out_dir, exist_ok=True)
+    text = "\n".join(page)
+    tmp = args.out + ".partial"
+    with open(tmp, "w", encoding="utf-8", newline="\n") as f:
+        f.write(text)
+    os.replace(tmp, args.out)
+    print(f"wrote {args.out} ({len(tables)} table(s), {len(images)} image(s), {len(text) // 1024} KiB)")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("inputs", nargs="+", help="folders, CSVs, images, README.md")
+    parser.add_argument("--out", default="", help="the page (default: FIRST_FOLDER/report.html)")
+    parser.add_argument("--title", default="")
+    parser.add_argument("--embed", action="store_true", help="write the images into the page (data: URLs)")
+    args = parser.parse_args()
+    if not args.out:
+        first = args.inputs[0]
+        args.out = os.path.join(first if os.path.isdir(first) else os.path.dirname(first) or ".", "report.html")
+    build(args)
+
+
+if __name__ == "__main__":
+    main()
