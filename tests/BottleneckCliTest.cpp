@@ -112,6 +112,11 @@ TEST(BottleneckCli, FromACsvWithoutStudyRowsIsAClearError) {
     auto r = runCommand(kBench + " bottleneck --from " + dir + "/r.csv");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("no bottleneck rows"), std::string::npos) << r.output;
+    // A dashboard format has nothing to chart in a classification: refused before anything runs.
+    auto gbench = runCommand(kBench + " bottleneck -t none --format gbench --csv " + dir + "/never.csv");
+    EXPECT_EQ(gbench.exitCode, 2) << gbench.output;
+    EXPECT_NE(gbench.output.find("bench export"), std::string::npos) << gbench.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/never.csv"));
 }
 
 // What each stage's load is, as --help says it and as the README says it: the same definitions,

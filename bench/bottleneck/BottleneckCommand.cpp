@@ -74,6 +74,12 @@ int BottleneckCommand::main(int argc, char** argv) {
     axes.add(app);
     if (int code = parseCli(app, argc, argv, "bench bottleneck"); code >= 0) return code;
     const RowFormat rowFormat = parseRowFormat(format);
+    // Checked before the study runs: the classification has shares and ratios, no frame time to chart.
+    if (rowFormat == RowFormat::GoogleBenchmark || rowFormat == RowFormat::GithubBenchmark)
+        throw Error("--format " + format +
+                    ": the classification has no frame times; chart the study's "
+                    "rows with bench export CSV --format " +
+                    format);
     if (!from.empty()) return classify(from, classes.empty() ? defaultClassesPath(from) : classes, rowFormat);
     if (csv.empty())
         throw Error("bench bottleneck: --csv FILE is required (where the rows go), or --from FILE");
