@@ -50,8 +50,8 @@ struct ShadowPlane {
     /// planes). A vertex shared by several parts receives the plane only if all of them do.
     std::vector<std::string> receivers;
     /// Where the occluder texture comes from when not solid: "auto" bakes it from `parts` at the
-    /// technique's resolution (the thesis's future work); anything else is an image file read with
-    /// OpenImageIO (the scene loader makes it absolute, relative to the scene file). Image convention:
+    /// technique's resolution (the thesis's future work); anything else is a PNG file read with
+    /// core/PngFile (the scene loader makes it absolute, relative to the scene file). Image convention:
     /// dark = occluder, the image's bottom-left corner is uv (0, 0).
     std::string texture = "auto";
     /// Non-empty: use the texture of the named plane of the same mesh (the thesis's two tail fins

@@ -13,7 +13,7 @@ PACKAGES=(
   # tests run under, vulkaninfo, glslang's library (run-time GLSL to SPIR-V) and the SPIR-V tools it links
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-dev spirv-tools
   # maths, JSON, CLI, images, model files, ray tracing reference
-  libglm-dev nlohmann-json3-dev libcli11-dev libopenimageio-dev libassimp-dev libembree-dev
+  libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev libassimp-dev libembree-dev
   # tests (GNU parallel: the sharded-sweep test runs shards the way the README documents)
   googletest libgtest-dev libgmock-dev xvfb xauth parallel
   # the HTML report's test loads the page in a real browser (headless)

@@ -1,5 +1,5 @@
 // `bench accuracy --images DIR` and `bench golden --check --diff-dir DIR` end to end: the pictures are
-// read back from disk (OpenImageIO, as bench/golden/GoldenImage reads goldens) and held to numbers
+// read back from disk (bench/golden/GoldenImage, as goldens are read) and held to numbers
 // that reach the test by another path: the error map's marked pixels against the CSV row's
 // percentages times its judged-sample count, the signed map's presence against the technique's own
 // visibility picture, the contact sheet's tiles against the error maps; and a golden broken on purpose

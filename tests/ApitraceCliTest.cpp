@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "PngDecoder.h"
 #include "TestSupport.h"
 #include "gl/backends/ApitraceHandoff.h"
 #include "techniques/TechniqueRegistry.h"
@@ -35,18 +35,15 @@ struct Rgb8 {
 /// An 8-bit image as RGB (alpha dropped); width 0 when it cannot be read.
 Rgb8 readRgb(const std::string& path) {
     Rgb8 image;
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return image;
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<unsigned char> all(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, all.data())) return image;
-    image.width = spec.width;
-    image.height = spec.height;
-    image.pixels.resize(size_t(spec.width) * size_t(spec.height) * 3);
-    for (size_t p = 0; p < size_t(spec.width) * size_t(spec.height); ++p)
+    const test::DecodedPng png = test::decodePng(path);
+    if (!png.ok) return image;
+    const size_t channels = size_t(png.channels);
+    image.width = png.width;
+    image.height = png.height;
+    image.pixels.resize(size_t(png.width) * size_t(png.height) * 3);
+    for (size_t p = 0; p < size_t(png.width) * size_t(png.height); ++p)
         for (size_t c = 0; c < 3; ++c)
-            image.pixels[p * 3 + c] =
-                all[p * size_t(spec.nchannels) + std::min<size_t>(c, spec.nchannels - 1)];
+            image.pixels[p * 3 + c] = png.pixels[p * channels + std::min(c, channels - 1)];
     return image;
 }
 

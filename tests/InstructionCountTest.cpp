@@ -1,9 +1,15 @@
 // The instruction-count gate's pure parts (bench/ci/): the callgrind parser on a hand-written file with
 // hand-computed self costs (tests/data/callgrind/two_calls.out, its header comment has the sums), the
-// cost categories, pairing dumps with bench rows, the per-frame diff and the fingerprint comparison.
-// No valgrind needed: InstructionCountValgrindTest runs the real thing.
+// cost categories, pairing dumps with bench rows, the per-frame diff, the fingerprint comparison and the
+// one-line reason a child under valgrind died (on tests/data/callgrind/sigill-libhwy.stderr.txt, the log
+// of `valgrind --tool=callgrind bench --version` on an AMD EPYC whose CPUID hides RDTSCP, with the bench
+// linking OpenImageIO and through it libhwy). No valgrind needed: InstructionCountValgrindTest runs the
+// real thing.
+#include <csignal>
+#include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +18,7 @@
 #include "bench/ci/Fingerprint.h"
 #include "bench/ci/InstructionCount.h"
 #include "bench/ci/InstructionDiff.h"
+#include "bench/ci/ValgrindDiagnosis.h"
 #include "core/Error.h"
 
 using namespace sb;
@@ -203,4 +210,67 @@ TEST(FingerprintTest, ParsesTheRendererAndNamesEveryDifferingField) {
     EXPECT_NO_THROW(Fingerprint::requireComparable(a, b, FingerprintUse::ExactCounters));
     EXPECT_NO_THROW(Fingerprint::requireComparable(a, back, FingerprintUse::Instructions));
     EXPECT_THROW(Fingerprint::fromJson({{"renderer", 3}}, "inline"), Error);
+}
+
+namespace {
+
+std::string readFixture(const std::string& name) {
+    std::ifstream in(std::string(SB_SOURCE_DIR) + "/tests/data/callgrind/" + name);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// A wait status as waitpid reports a child killed by `signal` / exiting with `code` (POSIX's encoding,
+/// decoded by WIFSIGNALED/WTERMSIG and WIFEXITED/WEXITSTATUS).
+int killedBy(int signal) {
+    return signal & 0x7f;
+}
+int exitedWith(int code) {
+    return (code & 0xff) << 8;
+}
+
+} // namespace
+
+// The log of a real failure: the reason names the signal, the instruction, the function and library, and
+// that it happened while a library was loaded; it is the machine lacking what layer B needs.
+TEST(ValgrindDiagnosisTest, AnInstructionValgrindCannotRunIsUnsupportedAndNamed) {
+    const std::string log = readFixture("sigill-libhwy.stderr.txt");
+    ASSERT_FALSE(log.empty());
+    ASSERT_TRUE(WIFSIGNALED(killedBy(SIGILL)));
+    ASSERT_EQ(WTERMSIG(killedBy(SIGILL)), SIGILL);
+    const ValgrindDiagnosis d = ValgrindDiagnosis::of(killedBy(SIGILL), log);
+    EXPECT_TRUE(d.unsupported);
+    EXPECT_EQ(d.reason,
+              "killed by SIGILL: valgrind cannot execute the instruction at 0x2251d522 (bytes 0F 01 F9, "
+              "RDTSCP) in hwy::platform::TimerResolution() (libhwy.so.1.0.3), while a shared library was "
+              "being loaded (before main)");
+    EXPECT_EQ(d.reason.find('\n'), std::string::npos);
+}
+
+TEST(ValgrindDiagnosisTest, InstructionNamesFromTheirBytes) {
+    EXPECT_EQ(ValgrindDiagnosis::instructionName("0xF 0x1 0xF9 0x48 0xC1"), "RDTSCP");
+    EXPECT_EQ(ValgrindDiagnosis::instructionName("0x62 0xF1 0x7D 0x48 0xEF 0xC0"),
+              "an AVX-512 (EVEX-encoded) instruction");
+    EXPECT_EQ(ValgrindDiagnosis::instructionName("0xF3 0xF 0xC7 0xF8"), "RDPID");
+    EXPECT_EQ(ValgrindDiagnosis::instructionName("0x48 0xF 0xC7 0xF0"), "RDRAND");
+    EXPECT_EQ(ValgrindDiagnosis::instructionName("0xF 0xB"), ""); // ud2: not one of the table's
+    EXPECT_EQ(ValgrindDiagnosis::instructionName(""), "");
+}
+
+// Other ways a child ends: the program's own failure is reported with its own last line, not valgrind's
+// summary ("I refs: 0"), and only its exit 3 is "unsupported".
+TEST(ValgrindDiagnosisTest, TheProgramsOwnFailureKeepsItsOwnLine) {
+    const std::string log = "==12== Callgrind, a call-graph generating cache profiler\n"
+                            "bench: --size 0x0: width and height must be positive\n"
+                            "==12== \n==12== I   refs:      0\n";
+    const ValgrindDiagnosis bad = ValgrindDiagnosis::of(exitedWith(2), log);
+    EXPECT_FALSE(bad.unsupported);
+    EXPECT_EQ(bad.reason, "exit 2: bench: --size 0x0: width and height must be positive");
+    EXPECT_TRUE(ValgrindDiagnosis::of(exitedWith(3), log).unsupported);
+    const ValgrindDiagnosis segv = ValgrindDiagnosis::of(
+        killedBy(SIGSEGV), "==9== Process terminating with default action of signal 11 (SIGSEGV)\n"
+                           "==9==    at 0x4011: sb::Harness::measure() (in /tmp/bench)\n");
+    EXPECT_FALSE(segv.unsupported);
+    EXPECT_EQ(segv.reason, "killed by SIGSEGV in sb::Harness::measure() (bench)");
 }

@@ -1,13 +1,26 @@
-// Instructions per measured frame, measured for real: the bench under callgrind (bench/ci/InstructionCount)
-// on a small configuration (256x256, 10 instances, one warm-up frame), `-t none -t shadowmap` in one
-// process (two dumps), three runs: N frames, the same again, and 2N frames. 20-30 s per run (mostly
-// valgrind's start-up and the uninstrumented shader compiles), 80 s in all on a loaded 2-core machine;
-// skipped when valgrind is not installed. Prints each run's numbers (the figures of the
-// instruction-count layer) as JSON.
+// Instructions per measured frame, measured for real: the bench under callgrind (bench/ci/InstructionCount).
+//  - TheMeasuredBinaryRunsUnderValgrind: one frame of the bench under callgrind, on whatever CPU runs the
+//    suite, failing with the one-line reason when valgrind cannot run it (a library executing an
+//    instruction valgrind's CPU does not know, as OpenImageIO's libhwy did on CPUs whose CPUID hides
+//    RDTSCP). 5-10 s.
+//  - AnUnknownInstructionIsNamed: the negative control of that reason: valgrind on a program that runs an
+//    AVX-512 instruction during its static initialisation (valgrind 3.19 decodes none on any CPU).
+//  - CountsOnlyTheMeasuredFrames...: a small configuration (256x256, 10 instances, one warm-up frame),
+//    `-t none -t shadowmap` in one process (two dumps), three runs: N frames, the same again, and 2N
+//    frames. 20-30 s per run (mostly valgrind's start-up and the uninstrumented shader compiles), 80 s
+//    in all on a loaded 2-core machine. Prints each run's numbers (the figures of the instruction-count
+//    layer) as JSON.
+// valgrind is installed by scripts/install-deps.sh: where it is missing these tests fail, they do not skip.
 #include <cmath>
+#include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <spawn.h>
+#include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -16,11 +29,24 @@
 #include "bench/ci/Fingerprint.h"
 #include "bench/ci/InstructionCount.h"
 #include "bench/ci/InstructionLayer.h"
+#include "bench/ci/ValgrindDiagnosis.h"
+#include "core/Error.h"
 
 using namespace sb;
 namespace fs = std::filesystem;
 
+extern char** environ;
+
 namespace {
+
+// The negative control's instruction, run before main when SB_VALGRIND_PROBE is set (only ever under
+// valgrind, in AnUnknownInstructionIsNamed): vpxord zmm0, zmm0, zmm0, EVEX-encoded. Valgrind 3.19 has no
+// AVX-512 decoder, so it stops at the 0x62 prefix on every x86-64 CPU, as it stopped at RDTSCP in libhwy.
+// The register is cleared, so a CPU that has AVX-512 and runs it natively loses nothing.
+const int kProbe = [] {
+    if (std::getenv("SB_VALGRIND_PROBE")) asm volatile(".byte 0x62, 0xf1, 0x7d, 0x48, 0xef, 0xc0" ::: "xmm0");
+    return 0;
+}();
 
 constexpr int kFrames = 3;
 
@@ -47,12 +73,71 @@ double relativeDifference(double a, double b) {
 class InstructionCountValgrindTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        if (!InstructionCount::valgrindAvailable())
-            GTEST_SKIP() << "valgrind is not installed (apt-get install valgrind)";
+        ASSERT_TRUE(InstructionCount::valgrindAvailable())
+            << "valgrind does not run: scripts/install-deps.sh installs it (Debian package valgrind)";
     }
 };
 
 } // namespace
+
+// Layer B's precondition on this machine: the measured binary runs under callgrind for one frame. When it
+// cannot, the failure is InstructionCount's one-line reason (the signal, the instruction, the library, the
+// log file), which is what `bench ci` prints with exit 3.
+TEST_F(InstructionCountValgrindTest, TheMeasuredBinaryRunsUnderValgrindForOneFrame) {
+    InstructionCount::Options o;
+    o.bench = SB_BENCH_BINARY;
+    o.benchArgs = {"-t",     "none",  "--frames",    "1", "--warmup",        "0",
+                   "--size", "32x32", "--instances", "1", "--no-timer-check"};
+    o.outDir = (fs::temp_directory_path() / ("sb-ir-" + std::to_string(getpid()) + "-one")).string();
+    try {
+        const InstructionRun run = InstructionCount(o).run();
+        ASSERT_EQ(run.techniques.size(), 1u);
+        EXPECT_EQ(run.techniques[0].frames, 1);
+        EXPECT_GT(run.techniques[0].irPerFrame, 1e5); // a clear and one instance drawn: far above zero
+    } catch (const Error& e) {
+        ADD_FAILURE() << "the bench does not run under valgrind on this machine: " << e.what();
+    }
+    fs::remove_all(o.outDir);
+}
+
+// The reason above is read from valgrind's own log, so it must name an instruction valgrind cannot run:
+// this test binary re-run under valgrind with SB_VALGRIND_PROBE set executes one before main.
+TEST_F(InstructionCountValgrindTest, AnUnknownInstructionIsNamed) {
+    const fs::path log =
+        fs::temp_directory_path() / ("sb-valgrind-probe-" + std::to_string(getpid()) + ".txt");
+    const std::string self = fs::read_symlink("/proc/self/exe").string();
+    std::vector<std::string> argv = {"valgrind", "--tool=none", self, "--gtest_list_tests"};
+    std::vector<char*> args;
+    for (std::string& a : argv) args.push_back(a.data());
+    args.push_back(nullptr);
+    std::vector<std::string> env;
+    for (char** e = environ; *e; ++e) env.push_back(*e);
+    env.push_back("SB_VALGRIND_PROBE=1");
+    std::vector<char*> envp;
+    for (std::string& e : env) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawnp(&pid, "valgrind", &actions, nullptr, args.data(), envp.data()), 0);
+    posix_spawn_file_actions_destroy(&actions);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    std::ifstream in(log);
+    std::ostringstream text;
+    text << in.rdbuf();
+    fs::remove(log);
+    const ValgrindDiagnosis d = ValgrindDiagnosis::of(status, text.str());
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGILL) << text.str();
+    EXPECT_TRUE(d.unsupported) << d.reason;
+    EXPECT_NE(d.reason.find("killed by SIGILL: valgrind cannot execute the instruction"), std::string::npos)
+        << d.reason;
+    EXPECT_NE(d.reason.find("bytes 62 F1 7D, an AVX-512 (EVEX-encoded) instruction"), std::string::npos)
+        << d.reason;
+    EXPECT_NE(d.reason.find("InstructionCountValgrindTest"), std::string::npos) << d.reason; // the object
+}
 
 TEST_F(InstructionCountValgrindTest, CountsOnlyTheMeasuredFramesAndRepeatsExactlyOutsideLibc) {
     const InstructionRun a = countFrames(kFrames, "a");

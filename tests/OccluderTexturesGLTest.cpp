@@ -16,11 +16,12 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <glm/gtc/constants.hpp>
 
+#include "PngDecoder.h"
 #include "TestSupport.h"
 #include "core/Error.h"
+#include "core/PngFile.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/TextureFramebuffer.h"
@@ -529,14 +530,12 @@ TEST_F(OccluderTexturesGLTest, WriteLoadRoundTripKeepsTexelsAndOrientation) {
 
     // As viewed, the image's bottom-left pixel (last row, first column) is texel (0, 0), v near 0, and
     // its top-left pixel is texel (0, h - 1).
-    auto in = OIIO::ImageInput::open(path);
-    ASSERT_TRUE(in) << OIIO::geterror();
-    ASSERT_EQ(in->spec().width, w);
-    ASSERT_EQ(in->spec().height, h);
-    ASSERT_EQ(in->spec().nchannels, 1);
-    std::vector<uint8_t> image(size_t(w * h));
-    ASSERT_TRUE(in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, image.data()));
-    in->close();
+    const test::DecodedPng png = test::decodePng(path); // a reader independent of core/PngFile
+    ASSERT_TRUE(png.ok) << png.why;
+    ASSERT_EQ(png.width, w);
+    ASSERT_EQ(png.height, h);
+    ASSERT_EQ(png.channels, 1);
+    const std::vector<uint8_t>& image = png.pixels;
     EXPECT_EQ(image[size_t((h - 1) * w)], texels[0]);
     EXPECT_EQ(image[0], texels[size_t((h - 1) * w)]);
 
@@ -556,13 +555,7 @@ TEST_F(OccluderTexturesGLTest, RgbImagesLoadAsLuma) {
     // (100, 150, 200): 21.26 + 107.28 + 14.44 = 142.98 -> 143. Alpha (RGBA) is ignored: not
     // multiplied in (alpha 0 and 10 on red and green would give 0 and 7).
     const uint8_t rgba[4 * 4] = {255, 0, 0, 0, 0, 255, 0, 10, 0, 0, 255, 200, 100, 150, 200, 255};
-    {
-        auto out = OIIO::ImageOutput::create(path);
-        ASSERT_TRUE(out);
-        ASSERT_TRUE(out->open(path, OIIO::ImageSpec(4, 1, 4, OIIO::TypeDesc::UINT8)));
-        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, rgba));
-        ASSERT_TRUE(out->close());
-    }
+    PngFile::write(path, 4, 1, 4, rgba); // PngFileTest holds the writer to an independent decoder
     const GLuint texture = OccluderTextures::load(path);
     int w = 0, h = 0;
     const std::vector<uint8_t> back = OccluderTextures::readBack(texture, w, h);

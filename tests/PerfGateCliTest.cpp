@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "TestPaths.h"
 #include "TestSupport.h"
 #include "bench/output/CsvWriter.h"
 
@@ -111,6 +112,45 @@ TEST_F(PerfGateCliTest, CompareJudgesTwoResultFiles) {
     const auto shrank = test::runCommand(bench + " compare " + mDir + "/b.csv " + mDir + "/a.csv");
     EXPECT_EQ(shrank.exitCode, 0) << shrank.output;
     EXPECT_NE(shrank.output.find("decrease:"), std::string::npos) << shrank.output;
+}
+
+// Layer B on a machine where valgrind cannot run the bench: exit 3 (the machine lacks what the layer
+// needs, not a failed gate) with the one-line reason and the log's path, and --update rewrites nothing,
+// layer A's file included. The valgrind on PATH here replays a real failure: it prints the committed log of
+// callgrind dying on RDTSCP in libhwy (tests/data/callgrind/sigill-libhwy.stderr.txt) and kills itself
+// with SIGILL, as valgrind does; InstructionCountValgrindTest makes the real valgrind fail the same way.
+TEST_F(PerfGateCliTest, LayerBWhereValgrindCannotRunIsExitThreeAndUpdateWritesNothing) {
+    ASSERT_EQ(ci("", "--update").exitCode, 0);
+    const std::string committed = test::readFile(mDir + "/baseline/work.csv");
+    ASSERT_FALSE(committed.empty());
+    const std::string fake = mDir + "/fake-valgrind";
+    std::filesystem::create_directories(fake);
+    test::writeFile(fake + "/valgrind", "#!/bin/sh\n"
+                                        "if [ \"$1\" = --version ]; then echo valgrind-3.19.0; exit 0; fi\n"
+                                        "cat '" +
+                                            std::string(SB_SOURCE_DIR) +
+                                            "/tests/data/callgrind/sigill-libhwy.stderr.txt' >&2\n"
+                                            "kill -ILL $$\n");
+    std::filesystem::permissions(fake + "/valgrind", std::filesystem::perms::owner_all);
+    const std::string path = "PATH=" + fake + ":$PATH";
+    for (const std::string args : {"--layers A,B --update", "--layers B"}) {
+        SCOPED_TRACE(args);
+        const auto r =
+            test::runCommand(path + " " + test::benchBinary() + " ci --configs none_aircraft --baseline " +
+                             mDir + "/baseline --out " + mDir + "/out " + args);
+        EXPECT_EQ(r.exitCode, 3) << r.output;
+        EXPECT_NE(
+            r.output.find("killed by SIGILL: valgrind cannot execute the instruction at 0x2251d522 "
+                          "(bytes 0F 01 F9, RDTSCP) in hwy::platform::TimerResolution() (libhwy.so.1.0.3)"),
+            std::string::npos)
+            << r.output;
+        EXPECT_NE(r.output.find("(log: " + mDir + "/out/callgrind/none_aircraft/stderr.txt)"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_EQ(r.output.find("I   refs"), std::string::npos) << r.output;
+        EXPECT_EQ(test::readFile(mDir + "/baseline/work.csv"), committed);
+        EXPECT_FALSE(std::filesystem::exists(mDir + "/baseline/instructions.json"));
+    }
 }
 
 TEST_F(PerfGateCliTest, BadInputIsExitTwo) {

@@ -245,16 +245,21 @@ int CiCommand::main(int argc, char** argv) {
     };
 
     CsvTable dashboardRows; // layer A's rows, with layer B's Ir per frame joined in: the dashboard files
+    // --update writes the baseline files only once every layer it updates has succeeded: a layer that
+    // throws (valgrind unable to run, a configuration failing) leaves the committed baseline as it was,
+    // never half rewritten.
+    std::vector<std::pair<std::string, std::string>> baselineFiles; ///< path, text
+    std::vector<std::string> baselineNotes;
     if (hasLayer(o.layers, 'A')) {
         const auto configs = suite.select(suite.work, o.configs);
         const CsvTable headRows = workRows(suite, configs, head);
         dashboardRows = headRows;
         writeRows((fs::path(o.outDir) / "work.csv").string(), headRows);
         if (o.update) {
-            fs::create_directories(baselineDir);
-            CsvWriter::writeTable((fs::path(baselineDir) / "work.csv").string(), baselineColumns(headRows));
-            std::cout << "ci: layer A baseline rewritten: " << baselineDir << "/work.csv ("
-                      << headRows.rows.size() << " configurations)\n";
+            baselineFiles.emplace_back((fs::path(baselineDir) / "work.csv").string(),
+                                       CsvWriter::serialize(baselineColumns(headRows)));
+            baselineNotes.push_back("ci: layer A baseline rewritten: " + baselineDir + "/work.csv (" +
+                                    std::to_string(headRows.rows.size()) + " configurations)");
         } else {
             const std::string basePath = (fs::path(baselineDir) / "work.csv").string();
             if (!base && !fs::exists(basePath))
@@ -281,10 +286,9 @@ int CiCommand::main(int argc, char** argv) {
                                  r.record.dump(2) + "\n");
             joinInstructions(dashboardRows, r.record);
             if (o.update) {
-                fs::create_directories(baselineDir);
-                CsvWriter::writeText(recordPath, r.record.dump(2) + "\n");
-                std::cout << "ci: layer B baseline rewritten: " << recordPath << " (" << configs.size()
-                          << " configurations)\n";
+                baselineFiles.emplace_back(recordPath, r.record.dump(2) + "\n");
+                baselineNotes.push_back("ci: layer B baseline rewritten: " + recordPath + " (" +
+                                        std::to_string(configs.size()) + " configurations)");
             } else {
                 r.layer.advisory = hasLayer(o.advisory, 'B');
                 for (const auto& [name, cell] : r.cells) row(name).instructions = cell;
@@ -302,7 +306,12 @@ int CiCommand::main(int argc, char** argv) {
             report.layers.push_back(r.layer);
         }
     }
-    if (o.update) return 0;
+    if (o.update) {
+        fs::create_directories(baselineDir);
+        for (const auto& [path, text] : baselineFiles) CsvWriter::writeText(path, text);
+        for (const std::string& note : baselineNotes) std::cout << note << "\n";
+        return 0;
+    }
     const std::string md = report.markdown();
     CsvWriter::writeText((fs::path(o.outDir) / "report.md").string(), md);
     CsvWriter::writeText((fs::path(o.outDir) / "report.json").string(), report.json().dump(2) + "\n");

@@ -13,6 +13,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "bench/ci/ValgrindDiagnosis.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 
@@ -31,15 +32,6 @@ std::string readFile(const fs::path& path) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
-}
-
-/// The last line of `text` that is not empty, for a one-line error message.
-std::string lastLine(const std::string& text) {
-    std::istringstream in(text);
-    std::string last;
-    for (std::string line; std::getline(in, line);)
-        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-    return JsonReader::excerpt(last, 200);
 }
 
 /// A row's text column, "" when absent or null (the bench writes null for an empty cell).
@@ -164,11 +156,14 @@ InstructionRun InstructionCount::run() const {
     if (child.timedOut)
         throw Error(where + ": killed after " + std::to_string(int(mOptions.timeoutSeconds)) + " s",
                     ExitCode::Failure);
-    if (!WIFEXITED(child.status) || WEXITSTATUS(child.status) != 0)
-        throw Error(where + " failed (exit " +
-                        std::to_string(WIFEXITED(child.status) ? WEXITSTATUS(child.status) : -1) +
-                        "): " + lastLine(readFile(dir / "stderr.txt")),
-                    ExitCode::Failure);
+    if (!WIFEXITED(child.status) || WEXITSTATUS(child.status) != 0) {
+        // One line with the cause, not the log's last line (valgrind's summary, "I refs: 0"): an
+        // instruction valgrind cannot run is this machine lacking what layer B needs (exit 3).
+        const fs::path log = dir / "stderr.txt";
+        const ValgrindDiagnosis why = ValgrindDiagnosis::of(child.status, readFile(log));
+        throw Error(where + ": " + why.reason + " (log: " + log.string() + ")",
+                    why.unsupported ? ExitCode::Unsupported : ExitCode::Failure);
+    }
 
     run.rows = JsonReader::parse(readFile(dir / "stdout.json"), (dir / "stdout.json").string())
                    .value("rows", nlohmann::json());

@@ -2,25 +2,24 @@
 
 #include <filesystem>
 
-#include <OpenImageIO/imageio.h>
-
 #include "bench/output/ImageWriter.h"
 #include "core/Error.h"
+#include "core/PngFile.h"
 
 namespace sb {
 
 Image8 GoldenImage::read(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw Error("cannot read golden '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
+    PngImage png;
+    try {
+        png = PngFile::read8(path);
+    } catch (const Error& e) {
+        throw Error(std::string("golden: ") + e.what(), e.code());
+    }
     Image8 image;
-    image.width = spec.width;
-    image.height = spec.height;
-    image.channels = spec.nchannels;
-    image.pixels.resize(image.pixelCount() * size_t(image.channels));
-    if (!in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::UINT8, image.pixels.data()))
-        throw Error("cannot read golden '" + path + "': " + in->geterror());
-    in->close();
+    image.width = png.width;
+    image.height = png.height;
+    image.channels = png.channels;
+    image.pixels = std::move(png.pixels);
     return image;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Golden images on disk: 8-bit PNGs (small, diffable by eye, reviewed like code). Read and written
-// through OpenImageIO.
+// Golden images on disk: 8-bit PNGs (small, diffable by eye, reviewed like code), read and written
+// through core/PngFile.
 #include <string>
 
 #include "bench/golden/ImageDiff.h"
@@ -9,9 +9,10 @@ namespace sb {
 
 class GoldenImage {
 public:
-    /// Reads `path`; throws sb::Error naming the path when it is missing or not an 8-bit image.
+    /// Reads `path` (16-bit files reduced to 8 bits); throws sb::Error naming the path when it is missing
+    /// or not a PNG.
     static Image8 read(const std::string& path);
-    /// Writes `image` to `path` (format from the extension), creating the parent folder.
+    /// Writes `image` to `path` as PNG, creating the parent folder.
     static void write(const std::string& path, const Image8& image);
 };
 

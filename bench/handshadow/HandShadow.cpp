@@ -24,7 +24,6 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
@@ -32,6 +31,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/Error.h"
+#include "core/PngFile.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
 #include "scenes/SceneLoader.h"
@@ -310,14 +310,13 @@ void writePng(const std::string& path, int w, int h) {
     std::vector<unsigned char> px(size_t(w) * size_t(h) * 3); // RGB, as bench --screenshot writes
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, px.data());
-    auto out = OIIO::ImageOutput::create(path);
-    OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-    if (!out || !out->open(path, spec))
-        throw Error("handshadow: --png: cannot write " + path, ExitCode::Failure);
     // GL rows are bottom-up; a negative stride writes them top-down.
-    const OIIO::stride_t row = OIIO::stride_t(w) * 3;
-    out->write_image(OIIO::TypeDesc::UINT8, px.data() + size_t(h - 1) * size_t(row), OIIO::AutoStride, -row);
-    out->close();
+    const std::ptrdiff_t row = std::ptrdiff_t(w) * 3;
+    try {
+        PngFile::write(path, w, h, 3, px.data() + size_t(h - 1) * size_t(row), -row);
+    } catch (const Error& e) {
+        throw Error(std::string("handshadow: --png: ") + e.what(), ExitCode::Failure);
+    }
 }
 } // namespace
 

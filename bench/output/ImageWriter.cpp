@@ -7,43 +7,28 @@
 #include <cstring>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "bench/output/AtomicFile.h"
 #include "core/Error.h"
+#include "core/PngFile.h"
 
 namespace sb {
 
 void ImageWriter::checkWritable(const std::string& path, const std::string& option) {
     if (path.empty()) throw Error(option + ": the path is empty");
-    AtomicFile::checkWritable(path, "image");
-    if (!OIIO::ImageOutput::create(path)) {
-        (void)OIIO::geterror(); // clears OpenImageIO's pending message
-        throw Error(option + " " + path + ": no image format writes this extension (use .png)");
-    }
+    AtomicFile::checkWritable(path, "image"); // a folder, device or missing parent first: the bigger mistake
+    if (!PngFile::hasPngExtension(path))
+        throw Error(option + " " + path + ": images are written as PNG (name the file .png)");
 }
 
 void ImageWriter::write(const std::string& path, int width, int height, int channels,
                         const unsigned char* pixels) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw Error("cannot write image '" + path + "': " + OIIO::geterror(), ExitCode::Failure);
-    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels) || !out->close())
-        throw Error("cannot write image '" + path + "': " + out->geterror(), ExitCode::Failure);
+    PngFile::write(path, width, height, channels, pixels);
 }
 
 void ImageWriter::writeAtomic(const std::string& path, int width, int height, int channels,
                               const unsigned char* pixels) {
-    // The format comes from the final name; the temp name only receives the bytes.
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw Error("cannot write image '" + path + "': " + OIIO::geterror(), ExitCode::Failure);
     const std::string temp = AtomicFile::tempPathFor(path);
-    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
-    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels) || !out->close()) {
-        const std::string why = out->geterror();
-        std::remove(temp.c_str());
-        throw Error("cannot write image '" + path + "': " + why, ExitCode::Failure);
-    }
+    PngFile::write(temp, width, height, channels, pixels); // names the temp file; leaves none on failure
     if (std::rename(temp.c_str(), path.c_str()) != 0) {
         const std::string why = std::strerror(errno);
         std::remove(temp.c_str());

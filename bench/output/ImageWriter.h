@@ -1,5 +1,5 @@
 #pragma once
-// PNG output through OpenImageIO: --screenshot (colour) and --visibility (the visibility target).
+// PNG output (core/PngFile): --screenshot (colour) and --visibility (the visibility target).
 #include <string>
 #include <vector>
 
@@ -19,15 +19,14 @@ public:
                            const std::string& path);
     static void writeVisibility(int width, int height, const std::vector<float>& visibility, int light,
                                 const std::string& path);
-    /// The up-front check of an image output (`option` names it in the message): a format OpenImageIO
-    /// can write for the extension, a regular file or nothing, in a writable directory. Throws
-    /// sb::Error(BadInput).
+    /// The up-front check of an image output (`option` names it in the message): a `.png` name, a
+    /// regular file or nothing, in a writable directory. Throws sb::Error(BadInput).
     static void checkWritable(const std::string& path, const std::string& option);
-    /// Writes `channels` x 8-bit pixels (top row first) to `path`; the format follows the extension.
+    /// Writes `channels` x 8-bit pixels (top row first) to `path` as PNG.
     static void write(const std::string& path, int width, int height, int channels,
                       const unsigned char* pixels);
     /// The same, atomically: the image is written to AtomicFile::tempPathFor(path) in the same folder
-    /// (in the format of `path`'s extension) and renamed over `path`, so a reader never sees half a
+    /// and renamed over `path`, so a reader never sees half a
     /// picture and a failed write leaves no file behind. Throws sb::Error naming the path.
     static void writeAtomic(const std::string& path, int width, int height, int channels,
                             const unsigned char* pixels);

@@ -6,9 +6,8 @@
 #include <filesystem>
 #include <memory>
 
-#include <OpenImageIO/imageio.h>
-
 #include "core/Error.h"
+#include "core/PngFile.h"
 #include "gl/TextureFramebuffer.h"
 
 namespace sb {
@@ -283,28 +282,23 @@ GLuint OccluderTextures::load(const std::string& path) {
     const std::string what = "occluder texture '" + path + "'";
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(what + ": no such file");
-    // Alpha is ignored, so it must not be multiplied in either: OpenImageIO associates (premultiplies)
-    // the colour of PNG and similar files unless asked for the stored values.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) throw Error(what + ": cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    const int w = spec.width, h = spec.height, channels = spec.nchannels;
-    if (w <= 0 || h <= 0 || channels <= 0)
-        throw Error(what + ": zero size (" + std::to_string(w) + "x" + std::to_string(h) + ", " +
-                    std::to_string(channels) + " channels)");
-    // Float, so 8-bit values come through exactly (x / 255 * 255) and 16-bit ones are rounded once.
-    std::vector<float> pixels(size_t(w) * size_t(h) * size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throw Error(what + ": cannot read image: " + in->geterror());
-    in->close();
+    // PngFile keeps the stored values (alpha, which is ignored, is not multiplied in).
+    PngImage image;
+    try {
+        image = PngFile::read(path);
+    } catch (const Error& e) {
+        throw Error(what + ": " + e.what());
+    }
+    const int w = image.width, h = image.height, channels = image.channels;
+    // Normalised floats, so 8-bit values come through exactly (x / 255 * 255) and 16-bit ones are
+    // rounded once.
     std::vector<uint8_t> texels(size_t(w) * size_t(h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const float* p = &pixels[(size_t(y) * size_t(w) + size_t(x)) * size_t(channels)];
-            const uint8_t value = channels >= 3 ? luma(p[0] * 255.0f, p[1] * 255.0f, p[2] * 255.0f)
-                                                : uint8_t(std::lround(std::clamp(p[0], 0.0f, 1.0f) * 255.0f));
+            auto at = [&](int c) { return image.normalized(x, y, c); };
+            const uint8_t value = channels >= 3
+                                      ? luma(at(0) * 255.0f, at(1) * 255.0f, at(2) * 255.0f)
+                                      : uint8_t(std::lround(std::clamp(at(0), 0.0f, 1.0f) * 255.0f));
             texels[size_t(h - 1 - y) * size_t(w) + size_t(x)] = value; // images are top-down
         }
     return createOccluderTexture(texels, w, h);
@@ -335,11 +329,7 @@ void OccluderTextures::write(const std::string& path, const std::vector<uint8_t>
     for (int y = 0; y < height; ++y) // texture rows are bottom-up, images top-down
         std::copy_n(&texels[size_t(height - 1 - y) * size_t(width)], size_t(width),
                     &image[size_t(y) * size_t(width)]);
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw Error(what + ": cannot write image: " + OIIO::geterror(), ExitCode::Failure);
-    const OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.data()) || !out->close())
-        throw Error(what + ": cannot write image: " + out->geterror(), ExitCode::Failure);
+    PngFile::write(path, width, height, 1, image.data());
 }
 
 } // namespace sb

@@ -11,7 +11,7 @@
 //    what extending the fin's silhouette "down into the object" achieved by hand;
 //  - dilation: the silhouette is grown by a few texels, because a raster edge never matches the
 //    floating-point geometric edge and shadows must reach the caster.
-// load() and write() exchange the same format with image files (OpenImageIO).
+// load() and write() exchange the same format with PNG files (core/PngFile).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -50,16 +50,16 @@ struct OccluderTextures {
     /// (viewport, framebuffer bindings, program, vertex array, enables, masks, stencil state).
     static GLuint bake(ProgramCache& programs, const Mesh& mesh, const ShadowPlane& plane,
                        const OccluderBakeOptions& options);
-    /// Loads an image file with OpenImageIO into the same format: the first channel of grey or
-    /// grey+alpha images; for three or more channels the Rec. 709 luma of the stored (encoded) values,
-    /// round(0.2126 R + 0.7152 G + 0.0722 B); alpha ignored; 16-bit and float data scaled to 8 bits;
+    /// Loads a PNG file into the same format: the first channel of grey or grey+alpha images; for three
+    /// or more channels the Rec. 709 luma of the stored (encoded) values,
+    /// round(0.2126 R + 0.7152 G + 0.0722 B); alpha ignored; 16-bit data scaled to 8 bits;
     /// flipped so the image's bottom-left corner (as viewed) is uv (0, 0). Throws sb::Error naming the
-    /// file and what was wrong (missing, unreadable, zero size).
+    /// file and what was wrong (missing, not a PNG, corrupt).
     static GLuint load(const std::string& path);
     /// Reads level 0 of an R8 texture back: width * height bytes, row 0 = v near 0.
     static std::vector<uint8_t> readBack(GLuint texture, int& width, int& height);
-    /// Writes width x height 8-bit single-channel texels (row 0 = v near 0) as an image whose format
-    /// follows the extension (PNG for .png), top row = v near 1, so load(write(x)) round-trips exactly.
+    /// Writes width x height 8-bit single-channel texels (row 0 = v near 0) as a grey PNG, top row =
+    /// v near 1, so load(write(x)) round-trips exactly.
     /// Throws sb::Error (ExitCode::Failure) naming the file on failure, BadInput for a size mismatch.
     static void write(const std::string& path, const std::vector<uint8_t>& texels, int width, int height);
     /// The (2k+1)^2 min filter bake() applies (clamped at the border), exposed for tests.
