@@ -50,7 +50,12 @@ fi
 # ASan: PlotCli and ReportCli (Python's matplotlib and headless Chromium; bench report only starts
 # the script), InstallCliTest's CPack case (cmake and dpkg-deb) and FiguresCli (about 140 s here: its
 # sweeps' code paths run under ASan in SweepCli, its plots are Python). All of them run in the normal build.
-exclude='^Cli\.WindowViewerRendersAndQuits$|^PlotCli\.|^ReportCli\.|^InstallCliTest\.CPack|^FiguresCli\.'
+# And the vertex- and fill-bound cases of Synthetic/KnownBottleneck: the classifier reads wall times, and
+# under ASan the harness's own code runs several times slower, which moves time into the CPU stage those
+# workloads must not show (a run of 2026-12-05: vertex classed "cpu", fit residual 60%). The study's code
+# still runs under ASan in the CPU-bound case, which ASan leaves CPU-bound; all three are held in the
+# normal build.
+exclude='^Cli\.WindowViewerRendersAndQuits$|^PlotCli\.|^ReportCli\.|^InstallCliTest\.CPack|^FiguresCli\.|^Synthetic/KnownBottleneck\.IsNamedCorrectly/(vertex|fill)'
 status=0
 summary=()
 for label in "${labels[@]}"; do
