@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include <malloc.h>
 
 #include "bench/run/BuildInfo.h"
+#include "bench/run/MeasuredHarness.h"
 #include "bench/ExplainCommand.h"
 #include "bench/ExportCommand.h"
 #include "bench/MergeCommand.h"
@@ -37,11 +37,11 @@ struct Mode {
 };
 
 int measureMain(int argc, char** argv) {
-    return RunCommand::main(argc, argv, RunConfig::Mode::Measure);
+    return RunCommand::main(argc, argv, RunConfig::Mode::Measure, BenchApp::helpFooter());
 }
 
 int accuracyMain(int argc, char** argv) {
-    return RunCommand::main(argc, argv, RunConfig::Mode::Accuracy);
+    return RunCommand::main(argc, argv, RunConfig::Mode::Accuracy, BenchApp::helpFooter());
 }
 
 int workerMain(int argc, char** argv) {
@@ -154,20 +154,9 @@ int BenchApp::dispatch(int argc, char** argv) {
     return measureMain(argc, argv);
 }
 
-void BenchApp::pinAllocator() {
-    // glibc trims the top of the heap whenever a free leaves more than the trim threshold there, and
-    // llvmpipe frees its per-draw vertex buffers every draw. Measured (none, aircraft x40, 160x160):
-    // ~300 brk calls and ~8000 page faults per frame, tripling CPU submit, and they vanished when an
-    // unrelated allocation happened to pin the heap's top (an extra pass made the frame 3x *faster*).
-    // Frame times must not depend on heap-layout luck, so the thresholds are fixed: no trimming below
-    // 256 MiB, mmap from 32 MiB (mallopt also stops glibc adjusting them at run time).
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-}
-
 int BenchApp::main(int argc, char** argv) {
     StandardStreams::protect(); // before any file is opened (see bench/output/StandardStreams.h)
-    pinAllocator();
+    MeasuredHarness::pinAllocator();
     try {
         checkInjections(); // a typo in SHADOWBENCH_INJECT must not measure the unmodified code
         return dispatch(argc, argv);

@@ -15,7 +15,6 @@ public:
     static int dispatch(int argc, char** argv);
     /// Fixes glibc's heap trim and mmap thresholds (BenchApp.cpp says why: heap trimming churn made
     /// frame times depend on heap layout). Called by main() and by handloop.
-    static void pinAllocator();
     /// `bench --version`: version, the commit the binary was built from (bench/run/BuildInfo.h), build type
     /// and compiler, and the folder its shaders and scenes are read from.
     static std::string versionText();

@@ -10,7 +10,7 @@
 #include "bench/select/AutoResolver.h"
 #include "core/Error.h"
 #include "techniques/EffectCoverage.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -100,7 +100,7 @@ int ExplainCommand::main(int argc, char** argv) {
     // Declared before the techniques, so destroyed after them: they release GL objects in their
     // destructors (as in RunCommand::run).
     std::unique_ptr<Harness> harnessOwner;
-    std::vector<std::unique_ptr<Technique>> techniques; // created first: a typo fails before any GL
+    std::vector<std::unique_ptr<GlTechnique>> techniques; // created first: a typo fails before any GL
     for (const TechniqueSpec& spec : config.techniques) {
         // The choice of -t auto is a timed calibration, which explain (untimed, one frame) does not make.
         if (spec.name == AutoResolver::kName)

@@ -16,18 +16,24 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "bench/BenchApp.h"
 #include "bench/run/Harness.h"
 #include "bench/run/RunOptions.h"
 #include "bench/run/Statistics.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
 namespace {
 using Clock = std::chrono::steady_clock;
+
+constexpr const char* kFooter = R"(handloop alternates a hand-written GL loop and bench's `none` frame on one context,
+frame by frame, and prints both medians and the median of the paired ratios: the harness's overhead.
+--frames is the number of pairs; the scene, size, camera, instances and backend options are bench's.
+
+Example:
+  handloop --instances 200 --size 512x512 --frames 200)";
 
 struct MeshGpu {
     GLuint vao = 0;
@@ -89,7 +95,7 @@ double handFrame(Harness& h, GLuint program, GLuint ubo, const FrameUniformData&
 } // namespace
 
 int main(int argc, char** argv) {
-    BenchApp::pinAllocator(); // the harness's frames and the hand loop's share one allocator, as bench's
+    MeasuredHarness::pinAllocator(); // the harness's frames and the hand loop's share one allocator, as bench's
     try {
         RunConfig config;
         config.techniques = {{"none", {}}};
@@ -97,20 +103,20 @@ int main(int argc, char** argv) {
         config.warmup = 2;
         bool listOnly = false;
         // Same options as bench (scene, instances, size, camera ...); --frames is the number of pairs.
-        int code = RunOptions::parse(argc, argv, config, listOnly, BenchApp::helpFooter());
+        int code = RunOptions::parse(argc, argv, config, listOnly, kFooter);
         if (code >= 0) return code;
         RunOptions::requireGl(config, "handloop");
         config.submit = SubmitMode::Retained;
         Harness h(config);
         // Through the registry, as bench creates it (declared after the harness, released before it).
-        const std::unique_ptr<Technique> none = TechniqueRegistry::create("none");
+        const std::unique_ptr<GlTechnique> none = TechniqueRegistry::create("none");
         h.prepare(*none);
         Defines d;
         d["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(h.scene().lights.size()), 1, kMaxLights));
         GLuint program = h.programs().get({"common/scene.vert", "common/lit.frag", ""}, d).id();
         GLuint ubo;
         glCreateBuffers(1, &ubo);
-        FrameUniformData data = FrameUniforms::compute(
+        FrameUniformData data = computeFrameUniforms(
             h.scene(), cameraView(h.camera()),
             cameraProjection(h.camera(), float(config.width) / float(config.height)), h.camera().eye);
         glNamedBufferStorage(ubo, sizeof data, &data, GL_DYNAMIC_STORAGE_BIT);

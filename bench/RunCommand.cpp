@@ -5,7 +5,6 @@
 #include <memory>
 #include <optional>
 
-#include "bench/BenchApp.h"
 #include "bench/images/AccuracyImages.h"
 #include "bench/output/CsvWriter.h"
 #include "bench/output/ImageWriter.h"
@@ -24,8 +23,9 @@
 #include "bench/select/AutoResolver.h"
 #include "bench/viewer/Viewer.h"
 #include "core/Error.h"
+#include "shading/ShaderLimits.h"
 #include "techniques/EffectCoverage.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -35,16 +35,19 @@ std::string withSuffix(const std::string& path, const std::string& suffix) {
     return (p.parent_path() / (p.stem().string() + "_" + suffix + p.extension().string())).string();
 }
 
-void writeImages(const RunConfig& config, Harness& harness, const std::string& technique) {
-    bool several = config.techniques.size() > 1;
+/// --screenshot and --visibility of the frame just measured (the census frame, which writes the visibility
+/// target), on either API. With several configurations each keeps its own file: the technique's name and,
+/// where two configurations share a technique, its index in the run are inserted.
+void writeImages(const RunConfig& config, MeasuredHarness& harness, const std::string& label) {
     if (!config.screenshotPath.empty())
-        ImageWriter::writeColor(harness.targets(), several ? withSuffix(config.screenshotPath, technique)
-                                                           : config.screenshotPath);
+        ImageWriter::writeColor(harness.width(), harness.height(), harness.readColor(),
+                                label.empty() ? config.screenshotPath : withSuffix(config.screenshotPath, label));
     if (!config.visibilityPath.empty()) {
-        std::string base = several ? withSuffix(config.visibilityPath, technique) : config.visibilityPath;
-        size_t lights = std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
+        const std::string base = label.empty() ? config.visibilityPath : withSuffix(config.visibilityPath, label);
+        const std::vector<float> vis = harness.readVisibility();
+        const size_t lights = std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
         for (size_t i = 0; i < lights; ++i)
-            ImageWriter::writeVisibility(harness.targets(), int(i),
+            ImageWriter::writeVisibility(harness.width(), harness.height(), vis, int(i),
                                          i == 0 ? base : withSuffix(base, "light" + std::to_string(i)));
     }
 }
@@ -102,15 +105,15 @@ const char* statusOf(ExitCode code) {
 
 /// The row of a technique that threw `e`: what it is and why it has no numbers, in the columns a sweep
 /// uses for the same (`status`, `error`).
-Refusal refusal(const Technique& technique, const Error& e, const Environment& env, int round,
-                const std::string& baseline, const EffectCoverage& coverage) {
+Refusal refusal(const std::string& technique, const std::string& properties, const Error& e,
+                const Environment& env, int round, const std::string& baseline, const EffectCoverage& coverage) {
     Refusal r;
     r.code = e.code();
     r.what = e.what();
-    r.message = r.what.rfind(technique.name() + ":", 0) == 0 ? r.what : technique.name() + ": " + r.what;
+    r.message = r.what.rfind(technique + ":", 0) == 0 ? r.what : technique + ": " + r.what;
     r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
              {"status", statusOf(e.code())},           {"error", r.what},
-             {"technique", technique.name()},          {"properties", technique.properties().toString()},
+             {"technique", technique},                 {"properties", properties},
              {"repeat", std::to_string(round)},        {"baseline", baseline}};
     for (auto& column : ResultRow::effectColumns(coverage)) r.row.push_back(std::move(column));
     return r;
@@ -164,7 +167,7 @@ void appendRefusals(const RunConfig& config, const std::vector<Refusal>& refusal
 
 /// The end of a run: the console table (and, with several rounds, the paired ratios), or the rows in
 /// the format --format asked for; then each refusal on stderr.
-void report(const RunConfig& config, const Harness& harness, const std::vector<Measurement>& results,
+void report(const RunConfig& config, const MeasuredHarness& harness, const std::vector<Measurement>& results,
             const std::vector<Refusal>& refusals) {
     std::ostream& log = logStream(config);
     std::vector<RunResult> runs;
@@ -191,138 +194,6 @@ void report(const RunConfig& config, const Harness& harness, const std::vector<M
         std::cerr << "bench: error: " << r.message << " (exit code " << int(r.code) << ")\n";
 }
 
-/// `--api vulkan` (bench/run/VulkanHarness.h): the techniques with a Vulkan form, measured as on GL,
-/// their rows carrying api=vulkan. `bench accuracy --api vulkan` judges the Vulkan visibility of the
-/// census frame against the Embree reference of a GL harness of the same configuration (its G-buffer
-/// gives the reference its sample positions; same size and camera, so the same pixels), without the
-/// stability perturbations. What is GL's alone says so before anything is created: -t auto, the viewer
-/// and the techniques without a Vulkan form (exit 3 each).
-int runVulkan(const RunConfig& config, const std::vector<TechniqueSpec>& specs,
-              const std::string& imagesDir) {
-    const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
-    if (config.context.visibleWindow)
-        throw Error("--window draws with GL; --api vulkan measures headless only", ExitCode::Unsupported);
-    // Declared before the techniques, destroyed after them: they release Vulkan objects of its device.
-    std::unique_ptr<VulkanHarness> owner;
-    std::vector<std::unique_ptr<VulkanTechnique>> techniques;
-    for (const TechniqueSpec& spec : specs) {
-        if (isAuto(spec))
-            throw Error("-t auto chooses among GL techniques; with --api vulkan name the technique",
-                        ExitCode::Unsupported);
-        techniques.push_back(TechniqueRegistry::createVulkan(spec));
-    }
-    checkOutputs(config);
-    if (!imagesDir.empty()) AccuracyImages::prepareDirectory(imagesDir);
-    owner = std::make_unique<VulkanHarness>(config);
-    VulkanHarness& harness = *owner;
-    std::unique_ptr<Harness> judge; // bench accuracy: the GL harness whose reference judges the frames
-    std::unique_ptr<AccuracyEvaluator> evaluator;
-    AccuracyOptions options;
-    if (accuracy) {
-        RunConfig gl = config;
-        gl.api = RunConfig::Api::GL;
-        gl.submit = SubmitMode::Retained; // the G-buffer's submission: the same triangles in any mode
-        judge = std::make_unique<Harness>(gl);
-        evaluator = std::make_unique<AccuracyEvaluator>(*judge);
-        options.light = config.accuracyLight;
-        options.referenceSamples = config.referenceSamples;
-        options.stability = false;
-    }
-    std::unique_ptr<AccuracyImages> images;
-    if (evaluator && !imagesDir.empty())
-        images = std::make_unique<AccuracyImages>(imagesDir, harness.scene().name, config.accuracyLight,
-                                                  config.width, config.height);
-    std::ostream& log = logStream(config);
-    const RowSource source = harness.rowSource();
-    if (!config.quiet) {
-        ConsoleReport::printHeader(log, source);
-        ConsoleReport::printTimerVerdict(log, harness.timerVerdict());
-    }
-    Environment env = Environment::capture();
-    std::vector<Measurement> results;
-    std::vector<CsvRow> rows;
-    const std::string baseline = specs.front().toString();
-    for (int round = 1; round <= config.repeat; ++round) {
-        std::optional<double> baselineWall;
-        for (size_t i = 0; i < techniques.size(); ++i) {
-            VulkanTechnique& technique = *techniques[i];
-            const EffectCoverage coverage =
-                EffectCoverage::of(harness.scene().effects, technique.info().effects);
-            if (config.strictEffects && coverage.fallsShort())
-                throw Error(coverage.shortfall(technique.name(), harness.scene().name) +
-                                " (--strict-effects)",
-                            ExitCode::Unsupported);
-            if (!config.quiet)
-                log << "[" << (round - 1) * techniques.size() + i + 1 << "/"
-                    << techniques.size() * size_t(config.repeat) << "] " << technique.name() << " "
-                    << technique.properties().toString() << " ..." << std::flush;
-            Measurement m;
-            m.run = harness.measure(technique);
-            // The census frame after the measured ones wrote the visibility target: the frame judged.
-            if (evaluator)
-                m.accuracy =
-                    evaluator->evaluateVisibility(harness.targets().readVisibilityRGBA32F(), options);
-            env.timestamp = Environment::nowIso8601();
-            m.row = ResultRow::build(source, m.run, env);
-            if (m.accuracy) m.accuracy->appendColumns(m.row);
-            if (i == 0) baselineWall = m.run.wall.median;
-            m.addRound(round, baseline, baselineWall);
-            for (const std::string& message : harness.takeValidationMessages())
-                std::cerr << "bench: vulkan validation: " << message << "\n";
-            if (!config.quiet) {
-                log << " " << m.run.wall.n << " frames, median " << m.run.wall.median << " ms";
-                if (m.accuracy) log << ", " << m.accuracy->hard.wrongPct << "% wrong";
-                log << "\n";
-            }
-            if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
-            drawImages(images.get(), evaluator.get(), m, specs[i].toString(), technique.info().effects, round,
-                       config, log);
-            const bool several = config.techniques.size() > 1;
-            VulkanTargets& t = harness.targets();
-            if (!config.screenshotPath.empty())
-                ImageWriter::writeColor(t.width(), t.height(), t.readColorRGBA8(),
-                                        several ? withSuffix(config.screenshotPath, technique.name())
-                                                : config.screenshotPath);
-            if (!config.visibilityPath.empty()) {
-                const std::string base =
-                    several ? withSuffix(config.visibilityPath, technique.name()) : config.visibilityPath;
-                const std::vector<float> vis = t.readVisibilityRGBA32F();
-                const size_t lights =
-                    std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
-                for (size_t l = 0; l < lights; ++l)
-                    ImageWriter::writeVisibility(t.width(), t.height(), vis, int(l),
-                                                 l == 0 ? base
-                                                        : withSuffix(base, "light" + std::to_string(l)));
-            }
-            rows.push_back(m.row);
-            results.push_back(std::move(m));
-        }
-    }
-    finishImages(images.get(), config, log);
-    std::vector<RunResult> runs;
-    for (const Measurement& m : results) runs.push_back(m.run);
-    if (accuracy) {
-        std::vector<std::pair<RunResult, AccuracyResult>> judged;
-        for (const Measurement& m : results) judged.emplace_back(m.run, *m.accuracy);
-        ConsoleReport::printAccuracyTable(log, judged);
-    } else {
-        ConsoleReport::printTable(log, harness.timerVerdict(), runs, config.repeat);
-    }
-    if (config.repeat > 1) ConsoleReport::printPairedRatios(log, runs, config.repeat);
-    if (!config.csvPath.empty() && !config.quiet) log << "rows appended to " << config.csvPath << "\n";
-    if (config.format != RowFormat::Console) {
-        std::cout << RowExport::format(CsvWriter::toTable(rows), config.format);
-        StandardStreams::finishStdout("--format");
-    }
-    // With --vk-validation a run the layer found fault with did not render what the API promises: it
-    // failed, whatever its numbers.
-    if (const size_t errors = harness.context().validationErrors()) {
-        std::cerr << "bench: error: the Vulkan validation layer reported " << errors
-                  << " error(s) (above); the run is not valid (exit code 1)\n";
-        return int(ExitCode::Failure);
-    }
-    return 0;
-}
 } // namespace
 
 std::vector<TechniqueSpec> RunCommand::configurations(const RunConfig& config) {
@@ -343,36 +214,99 @@ int RunCommand::run(const RunConfig& config) {
 }
 
 namespace {
-/// RunCommand::run, with bench accuracy's pictures written into `imagesDir` when it is not empty.
+
+/// The techniques of a run on its API, created before anything else so that a typo fails in milliseconds.
+/// A configuration whose technique has no form on the API is not an error of the run: it becomes a
+/// refusal (a row, exit 3 at the end) while the others are measured, as any other refusal does.
+struct Configured {
+    TechniqueSpec spec;
+    std::unique_ptr<Technique> technique; ///< null: `-t auto` (resolved later) or refused
+    std::optional<Error> refused;         ///< why there is no technique on this API
+};
+
+std::vector<Configured> createTechniques(const RunConfig& config, const std::vector<TechniqueSpec>& specs) {
+    const Api api = config.api == RunConfig::Api::Vulkan ? Api::Vulkan : Api::GL;
+    std::vector<Configured> out;
+    for (const TechniqueSpec& spec : specs) {
+        Configured c{spec, nullptr, std::nullopt};
+        if (isAuto(spec)) {
+            if (api == Api::Vulkan)
+                throw Error("-t auto chooses among GL techniques; with --api vulkan name the technique",
+                            ExitCode::Unsupported);
+        } else {
+            try {
+                c.technique = TechniqueRegistry::create(spec, api);
+            } catch (const Error& e) {
+                if (e.code() != ExitCode::Unsupported) throw; // bad input fails before anything runs
+                c.refused = e;
+            }
+        }
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+/// The harness of the run's API. Accuracy is judged on GL (its G-buffer places the reference's samples):
+/// on Vulkan a GL harness of the same configuration is the judge, `judge` keeps it.
+std::unique_ptr<MeasuredHarness> createHarness(const RunConfig& config, std::unique_ptr<Harness>& judge) {
+    if (config.api != RunConfig::Api::Vulkan) return std::make_unique<Harness>(config);
+    if (config.context.visibleWindow)
+        throw Error("--window draws with GL; --api vulkan measures headless only", ExitCode::Unsupported);
+    auto harness = std::make_unique<VulkanHarness>(config);
+    if (config.mode == RunConfig::Mode::Accuracy) {
+        RunConfig gl = config;
+        gl.api = RunConfig::Api::GL;
+        gl.submit = SubmitMode::Retained; // the G-buffer's submission: the same triangles in any mode
+        gl.dumpShadersPath.clear();       // the judge's programs are not the run's
+        judge = std::make_unique<Harness>(gl);
+    }
+    return harness;
+}
+
+/// The label an image file gets when a run has several configurations: the technique's name, and its
+/// position in the run when two configurations share a technique (so every configuration keeps its own).
+std::string imageLabel(const std::vector<Configured>& configured, size_t i) {
+    if (configured.size() < 2) return "";
+    size_t sameName = 0;
+    for (const Configured& c : configured) sameName += c.spec.name == configured[i].spec.name ? 1 : 0;
+    return configured[i].spec.name + (sameName > 1 ? std::to_string(i + 1) : "");
+}
+
+/// RunCommand::run, with bench accuracy's pictures written into `imagesDir` when it is not empty: the one
+/// run loop of every API (bench/run/MeasuredHarness.h).
 int runMeasured(const RunConfig& config, const std::string& imagesDir) {
-    // Declared before the techniques so that it is destroyed after them: techniques release GL objects
-    // in their destructors, which needs the harness's context (also when an exception unwinds).
-    std::unique_ptr<Harness> harnessOwner;
+    // Declared before the techniques so that it is destroyed after them: techniques release API objects
+    // in their destructors, which needs the harness's context or device (also when an exception unwinds).
+    std::unique_ptr<Harness> judge; // bench accuracy on Vulkan: the GL harness whose reference judges
+    std::unique_ptr<MeasuredHarness> harnessOwner;
     const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
-    // Validate everything that needs no GL first: a typo fails in milliseconds, not after a run.
+    // Validate everything that needs no context first: a typo fails in milliseconds, not after a run.
     std::vector<TechniqueSpec> specs = RunCommand::configurations(config);
-    if (config.api == RunConfig::Api::Vulkan) return runVulkan(config, specs, imagesDir);
-    std::vector<std::unique_ptr<Technique>> techniques;
-    for (const TechniqueSpec& spec : specs)
-        techniques.push_back(isAuto(spec) ? nullptr : TechniqueRegistry::create(spec));
+    std::vector<Configured> configured = createTechniques(config, specs);
     checkOutputs(config);
     if (!imagesDir.empty()) AccuracyImages::prepareDirectory(imagesDir);
 
-    harnessOwner = std::make_unique<Harness>(config);
-    Harness& harness = *harnessOwner;
-    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows.
-    std::vector<CsvRow> autoColumns(specs.size());
-    for (size_t i = 0; i < specs.size(); ++i) {
-        if (techniques[i]) continue;
-        const AutoResolution chosen = AutoResolver::resolve(harness, config, logStream(config));
-        specs[i] = chosen.spec;
-        techniques[i] = TechniqueRegistry::create(chosen.spec);
+    harnessOwner = createHarness(config, judge);
+    MeasuredHarness& harness = *harnessOwner;
+    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows (GL).
+    std::vector<CsvRow> autoColumns(configured.size());
+    for (size_t i = 0; i < configured.size(); ++i) {
+        if (configured[i].technique || configured[i].refused) continue;
+        const AutoResolution chosen =
+            AutoResolver::resolve(static_cast<Harness&>(harness), config, logStream(config));
+        configured[i].spec = specs[i] = chosen.spec;
+        configured[i].technique = TechniqueRegistry::create(chosen.spec, Api::GL);
         autoColumns[i] = chosen.columns();
     }
-    if (!accuracy && config.context.backend == Backend::Glfw && config.context.visibleWindow) {
-        int code = Viewer::run(harness, techniques, config.windowFrames);
+    if (!accuracy && harness.api() == Api::GL && config.context.backend == Backend::Glfw &&
+        config.context.visibleWindow) {
+        std::vector<std::unique_ptr<GlTechnique>> techniques;
+        for (Configured& c : configured)
+            if (c.technique) techniques.emplace_back(static_cast<GlTechnique*>(c.technique.release()));
+        Harness& gl = static_cast<Harness&>(harness);
+        int code = Viewer::run(gl, techniques, config.windowFrames);
         // The last frame shown, when asked for (the viewer draws with the same targets).
-        if (!config.screenshotPath.empty()) ImageWriter::writeColor(harness.targets(), config.screenshotPath);
+        if (!config.screenshotPath.empty()) ImageWriter::writeColor(gl.targets(), config.screenshotPath);
         return code;
     }
     std::ostream& log = logStream(config);
@@ -380,11 +314,14 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     if (config.checkTimer) harness.calibrateTimer();
     if (!config.quiet) ConsoleReport::printTimerVerdict(log, harness.timerVerdict());
     std::unique_ptr<AccuracyEvaluator> evaluator;
-    if (accuracy) evaluator = std::make_unique<AccuracyEvaluator>(harness);
+    if (accuracy) evaluator = std::make_unique<AccuracyEvaluator>(judge ? *judge : static_cast<Harness&>(harness));
     AccuracyOptions options;
     options.light = config.accuracyLight;
     options.referenceSamples = config.referenceSamples;
-    options.stability = config.stability;
+    options.stability = config.stability && harness.api() == Api::GL;
+    if (accuracy && config.stability && harness.api() != Api::GL && !config.quiet)
+        log << "stability (camera and light gains, flicker): perturbed frames are rendered on GL only; "
+               "these rows leave them empty\n";
     std::unique_ptr<AccuracyImages> images;
     if (evaluator && !imagesDir.empty())
         images = std::make_unique<AccuracyImages>(imagesDir, harness.scene().name, config.accuracyLight,
@@ -393,20 +330,38 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     Environment env = Environment::capture();
     std::vector<Measurement> results;
     std::vector<Refusal> refusals;
-    std::vector<bool> refused(techniques.size(), false);
+    std::vector<bool> refused(configured.size(), false);
     size_t unwritten = 0; // refusal rows not in the CSV yet: held until a technique has been measured
     const std::string baseline = specs.front().toString();
     const size_t total = specs.size() * size_t(config.repeat);
     size_t done = 0;
+    auto refuse = [&](size_t i, const std::string& name, const std::string& properties, const Error& e,
+                      const EffectCoverage& coverage, int round) {
+        // One technique's refusal (an open mesh it was told to refuse, a light type or an extension it
+        // lacks, no form on this API) must not cost the others their measurement: reported as a row,
+        // and the exit code says so at the end. The harness resets the frame state every frame, so the
+        // next technique starts clean.
+        refusals.push_back(refusal(name, properties, e, env, round, baseline, coverage));
+        refused[i] = true;
+        ++unwritten;
+        if (!config.quiet) log << " " << statusOf(e.code()) << ": " << e.what() << "\n";
+        if (!results.empty()) appendRefusals(config, refusals, unwritten);
+    };
     // Rounds interleave the techniques (A B C, A B C ...): ratios are taken within a round, between
     // runs measured next to each other.
     for (int round = 1; round <= config.repeat; ++round) {
         std::optional<double> baselineWall;
-        for (size_t i = 0; i < techniques.size(); ++i) {
-            Technique& technique = *techniques[i];
+        for (size_t i = 0; i < configured.size(); ++i) {
             ++done;
             // A refusal repeats every round (the same scene, properties and context): reported once.
             if (refused[i]) continue;
+            if (!configured[i].technique) {
+                if (!config.quiet) log << "[" << done << "/" << total << "] " << specs[i].toString() << " ...";
+                refuse(i, specs[i].name, TechniqueRegistry::create(specs[i])->properties().toString(),
+                       *configured[i].refused, EffectCoverage::of(harness.scene().effects, 0), round);
+                continue;
+            }
+            Technique& technique = *configured[i].technique;
             const EffectCoverage coverage =
                 EffectCoverage::of(harness.scene().effects, technique.info().effects);
             warnEffects(config, technique, coverage, harness.scene().name, round);
@@ -418,15 +373,7 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
                 requireEffects(config, technique, coverage, harness.scene().name);
                 measured = Measurement::take(harness, technique, evaluator.get(), options, env);
             } catch (const Error& e) {
-                // One technique's refusal (an open mesh it was told to refuse, a light type or an
-                // extension it lacks) must not cost the others their measurement: reported as a row,
-                // and the exit code says so at the end. The harness resets the frame state every
-                // frame, so the next technique starts clean.
-                refusals.push_back(refusal(technique, e, env, round, baseline, coverage));
-                refused[i] = true;
-                ++unwritten;
-                if (!config.quiet) log << " " << statusOf(e.code()) << ": " << e.what() << "\n";
-                if (!results.empty()) appendRefusals(config, refusals, unwritten);
+                refuse(i, technique.name(), technique.properties().toString(), e, coverage, round);
                 continue;
             }
             appendRefusals(config, refusals, unwritten); // the ones before the first measurement
@@ -434,6 +381,8 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
             for (const auto& column : autoColumns[i]) m.row.push_back(column);
             if (i == 0) baselineWall = m.run.wall.median;
             m.addRound(round, baseline, baselineWall);
+            for (const std::string& message : harness.takeValidationMessages())
+                std::cerr << "bench: " << apiName(harness.api()) << " validation: " << message << "\n";
             if (!config.quiet) {
                 log << " " << m.run.wall.n << " frames, median " << m.run.wall.median << " ms";
                 if (m.accuracy) log << ", " << m.accuracy->hard.wrongPct << "% wrong";
@@ -441,7 +390,7 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
             }
             if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
             if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, m.run);
-            writeImages(config, harness, technique.name());
+            writeImages(config, harness, imageLabel(configured, i));
             drawImages(images.get(), evaluator.get(), m, specs[i].toString(), technique.info().effects, round,
                        config, log);
             results.push_back(std::move(m));
@@ -452,6 +401,13 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     if (results.empty() && !refusals.empty()) throw Error(worst(refusals).what, worst(refusals).code);
     finishImages(images.get(), config, log);
     report(config, harness, results, refusals);
+    // With validation (--vk-validation) a run the layer found fault with did not render what the API
+    // promises: it failed, whatever its numbers.
+    if (const size_t errors = harness.validationErrors()) {
+        std::cerr << "bench: error: the " << apiName(harness.api()) << " validation layer reported " << errors
+                  << " error(s) (above); the run is not valid (exit code 1)\n";
+        return int(ExitCode::Failure);
+    }
     return refusals.empty() ? 0 : int(worst(refusals).code);
 }
 } // namespace
@@ -476,11 +432,11 @@ Examples:
 Exit codes as for bench: 0 ok, 1 run failed, 2 wrong input, 3 the machine lacks what is needed.)";
 } // namespace
 
-int RunCommand::main(int argc, char** argv, RunConfig::Mode mode) {
+int RunCommand::main(int argc, char** argv, RunConfig::Mode mode, const std::string& modesFooter) {
     RunConfig config;
     config.mode = mode;
     bool listOnly = false;
-    const std::string footer = mode == RunConfig::Mode::Accuracy ? kAccuracyFooter : BenchApp::helpFooter();
+    const std::string footer = mode == RunConfig::Mode::Accuracy ? kAccuracyFooter : modesFooter;
     std::string imagesDir; // bench accuracy --images
     if (int code = RunOptions::parse(argc, argv, config, listOnly, footer, &imagesDir); code >= 0)
         return code;

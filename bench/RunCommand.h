@@ -11,9 +11,10 @@ namespace sb {
 
 class RunCommand {
 public:
-    /// argv from the program name on (`bench ...`, or `accuracy ...` for Mode::Accuracy). Returns the
-    /// exit code; errors are thrown as sb::Error.
-    static int main(int argc, char** argv, RunConfig::Mode mode);
+    /// argv from the program name on (`bench ...`, or `accuracy ...` for Mode::Accuracy). `modesFooter`
+    /// ends `bench --help` (the dispatcher's list of modes and examples). Returns the exit code; errors
+    /// are thrown as sb::Error.
+    static int main(int argc, char** argv, RunConfig::Mode mode, const std::string& modesFooter);
     /// Measures every technique of `config`, round by round when --repeat asks for several. A technique
     /// that throws sb::Error is reported (row, console line) and the others still run; the exit code is
     /// then the worst of the refusals (1 over 2 over 3), else 0. When no technique could be measured,

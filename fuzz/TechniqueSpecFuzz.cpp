@@ -16,7 +16,7 @@
 #include "core/Error.h"
 #include "fuzz/FuzzReach.h"
 #include "techniques/PropertySet.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace {
 

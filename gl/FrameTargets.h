@@ -8,10 +8,9 @@
 #include <epoxy/gl.h>
 
 #include "gl/TextureFramebuffer.h"
+#include "shading/ShaderLimits.h"
 
 namespace sb {
-
-constexpr int kMaxLights = 4; ///< one visibility channel per light
 
 class FrameTargets {
 public:

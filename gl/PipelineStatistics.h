@@ -11,22 +11,9 @@
 
 #include <epoxy/gl.h>
 
+#include "core/PipelineCounts.h"
+
 namespace sb {
-
-struct PipelineCounts {
-    uint64_t vertexShaderInvocations = 0;
-    uint64_t primitivesSubmitted = 0; ///< primitives assembled from the draws (before clipping)
-    uint64_t clippingOutputPrimitives = 0;
-    uint64_t fragmentShaderInvocations = 0;
-
-    PipelineCounts& operator+=(const PipelineCounts& o) {
-        vertexShaderInvocations += o.vertexShaderInvocations;
-        primitivesSubmitted += o.primitivesSubmitted;
-        clippingOutputPrimitives += o.clippingOutputPrimitives;
-        fragmentShaderInvocations += o.fragmentShaderInvocations;
-        return *this;
-    }
-};
 
 class PipelineStatistics {
 public:

@@ -1,31 +1,28 @@
 #pragma once
 // Program cache keyed by (shader files, sorted defines) (docs/ARCHITECTURE.md, "The technique contract":
-// named, listable permutations). Shader files are GLSL without a #version line; the cache prepends
-// "#version 450 compatibility", then one "#define NAME VALUE" per define (sorted), then the file with
-// `#include "common/x.glsl"` lines expanded (relative to shaders/). Compile errors throw sb::Error
+// named, listable permutations). Shader files are GLSL without a #version line; shading/ShaderPreprocessor
+// prepends "#version 450 compatibility", then one "#define NAME VALUE" per define (sorted), then the file
+// with `#include "common/x.glsl"` lines expanded (relative to shaders/). Compile errors throw sb::Error
 // naming the shader file and the line in that file (the #line bookkeeping maps back through includes).
 // With a dump directory set (bench --dump-shaders DIR), every stage of every program get() hands out is
-// also written, exactly as it goes to glShaderSource, to
-//   DIR/<label>/<program>/<permutation>/<stage>.<ext>
-// label: the technique being compiled (setDumpLabel); program: its files, '/' as '-', joined by '+'
-// ("common-scene.vert+shadowmap-lighting.frag"); permutation: definesKey ("default" when empty);
-// stage and ext: vertex.vert, fragment.frag, geometry.geom (the extensions glslangValidator takes the
-// stage from). The path names the source exactly: the files, the defines and the stage determine it.
+// also written, exactly as it goes to glShaderSource, in shading/ShaderDump.h's layout.
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <set>
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
 
+#include "shading/Defines.h"
+#include "shading/ShaderDump.h"
+#include "shading/ShaderSources.h"
+#include "shading/ShaderStage.h"
+
 namespace sb {
 
-/// Sorted NAME -> VALUE list; the key of a permutation. VALUE "" means "#define NAME 1".
-using Defines = std::map<std::string, std::string>;
-/// "PCF_SIZE=3,SB_INSTANCED" style key: sorted, comma separated, VALUE 1 and "" omitted.
-std::string definesKey(const Defines& d);
+/// The GL name of a stage (GL_VERTEX_SHADER ...).
+GLenum glStage(ShaderStage stage);
 
 class Program {
 public:
@@ -46,12 +43,6 @@ private:
     mutable std::map<std::string, GLint> mUniforms;
 };
 
-struct ShaderSources {
-    std::string vertex;   ///< path relative to shaders/, e.g. "shadowmap/lighting.vert"
-    std::string fragment; ///< may be "" for depth-only programs
-    std::string geometry; ///< optional
-};
-
 class ProgramCache {
 public:
     /// `shaderRoot`: the shaders/ directory itself (paths in ShaderSources are relative to it);
@@ -65,27 +56,20 @@ public:
     void clear();
     /// Full source after #version/#define/#include processing (for tests and --dump-shaders). `stage`
     /// adds "#define SB_VERTEX_SHADER 1" (SB_FRAGMENT_SHADER, SB_GEOMETRY_SHADER) after the defines.
-    std::string preprocess(const std::string& file, const Defines& defines, GLenum stage) const;
+    std::string preprocess(const std::string& file, const Defines& defines, ShaderStage stage) const;
 
     /// Dump every stage get() hands out under `directory` (created; "" stops dumping). Throws
     /// sb::Error(BadInput) naming the directory when it cannot be created.
-    void setDumpDirectory(const std::string& directory);
+    void setDumpDirectory(const std::string& directory) { mDump.setDirectory(directory); }
     /// First path component of the dumped files (the technique name); "" = "untagged".
-    void setDumpLabel(const std::string& label) { mDumpLabel = label; }
+    void setDumpLabel(const std::string& label) { mDump.setLabel(label); }
     /// While dumping: the dump-relative paths of the stages get() handed out (hits included) since the
     /// last call, in order. Tests use it to tell which sources one compile() selected.
-    std::vector<std::string> takeDumpLog();
-    /// "label/program/permutation/stage.ext" of one stage (the layout above).
-    static std::string dumpPath(const std::string& label, const ShaderSources& sources,
-                                const Defines& defines, GLenum stage);
+    std::vector<std::string> takeDumpLog() { return mDump.takeLog(); }
 
 private:
-    void dump(const ShaderSources& sources, const Defines& defines);
     std::string mRoot;
-    std::string mDumpDirectory;
-    std::string mDumpLabel;
-    std::set<std::string> mDumped; ///< dump-relative paths already written
-    std::vector<std::string> mDumpLog;
+    ShaderDump mDump;
     std::map<std::string, std::unique_ptr<Program>> mPrograms;
     size_t mCompiles = 0;
 };

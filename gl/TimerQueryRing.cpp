@@ -39,7 +39,7 @@ void TimerQueryRing::beginFrame() {
     if (slot.pending) {
         // The ring came round before anyone collected this frame: keep it if the GPU is done, else drop it
         // (waiting here would stall the frame being measured).
-        if (std::optional<PassGpuTimes> times = read(slot, false)) {
+        if (std::optional<PassTimes> times = read(slot, false)) {
             mReady.push_back(std::move(*times));
         } else {
             ++mDropped;
@@ -71,7 +71,7 @@ void TimerQueryRing::endFrame() {
     slot.pending = true;
 }
 
-std::optional<PassGpuTimes> TimerQueryRing::read(Slot& s, bool wait) {
+std::optional<PassTimes> TimerQueryRing::read(Slot& s, bool wait) {
     const int stamps = s.used + 1;
     if (!wait) {
         // Every stamp is checked, not only the last: the spec does not order availability.
@@ -83,7 +83,7 @@ std::optional<PassGpuTimes> TimerQueryRing::read(Slot& s, bool wait) {
     }
     std::vector<GLuint64> time(static_cast<size_t>(stamps));
     for (int i = 0; i < stamps; ++i) glGetQueryObjectui64v(s.queries[i], GL_QUERY_RESULT, &time[i]);
-    PassGpuTimes result;
+    PassTimes result;
     result.frame = s.frame;
     for (int i = 0; i < s.used; ++i) result.passMs.emplace_back(s.names[i], elapsedMs(time[i], time[i + 1]));
     result.totalMs = elapsedMs(time[0], time[s.used]);
@@ -91,23 +91,23 @@ std::optional<PassGpuTimes> TimerQueryRing::read(Slot& s, bool wait) {
     return result;
 }
 
-std::vector<PassGpuTimes> TimerQueryRing::collect() {
-    std::vector<PassGpuTimes> out = std::move(mReady);
+std::vector<PassTimes> TimerQueryRing::collect() {
+    std::vector<PassTimes> out = std::move(mReady);
     mReady.clear();
     // Oldest first: the slots after the current one, wrapping round, end with the current one.
     const int depth = static_cast<int>(mSlots.size());
     for (int k = 1; k <= depth; ++k) {
         Slot& slot = mSlots[(mCurrent + k) % depth];
         if (!slot.pending) continue;
-        std::optional<PassGpuTimes> times = read(slot, false);
+        std::optional<PassTimes> times = read(slot, false);
         if (!times) break; // a newer frame is not reported before an older one
         out.push_back(std::move(*times));
     }
     return out;
 }
 
-std::vector<PassGpuTimes> TimerQueryRing::drain() {
-    std::vector<PassGpuTimes> out = std::move(mReady);
+std::vector<PassTimes> TimerQueryRing::drain() {
+    std::vector<PassTimes> out = std::move(mReady);
     mReady.clear();
     const int depth = static_cast<int>(mSlots.size());
     for (int k = 1; k <= depth; ++k) {

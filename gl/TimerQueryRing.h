@@ -10,13 +10,10 @@
 
 #include <epoxy/gl.h>
 
+#include "core/PassTimes.h"
+
 namespace sb {
 
-struct PassGpuTimes {
-    uint64_t frame = 0;
-    std::vector<std::pair<std::string, double>> passMs; ///< in pass order
-    double totalMs = 0.0;                               ///< first mark to endFrame
-};
 
 class TimerQueryRing {
 public:
@@ -30,9 +27,9 @@ public:
     void beginPass(const char* name);
     void endFrame();
     /// Collects every completed frame without waiting (GL_QUERY_RESULT_AVAILABLE), oldest first.
-    std::vector<PassGpuTimes> collect();
+    std::vector<PassTimes> collect();
     /// Waits for all outstanding frames (only at the end of a run, outside timed frames).
-    std::vector<PassGpuTimes> drain();
+    std::vector<PassTimes> drain();
     uint64_t droppedFrames() const { return mDropped; }
 
 private:
@@ -43,7 +40,7 @@ private:
         std::vector<const char*> names;
         int used = 0;
     };
-    std::optional<PassGpuTimes> read(Slot& s, bool wait);
+    std::optional<PassTimes> read(Slot& s, bool wait);
     std::vector<Slot> mSlots;
     int mCurrent = -1;
     uint64_t mFrame = 0;
@@ -51,7 +48,7 @@ private:
     int mMaxPasses;
     /// Added to the interface sketch: frames read in beginFrame() when their slot came round again while
     /// complete; handed out by the next collect()/drain() so no completed frame is lost.
-    std::vector<PassGpuTimes> mReady;
+    std::vector<PassTimes> mReady;
 };
 
 } // namespace sb

@@ -20,8 +20,8 @@
 #include "gl/TextureFramebuffer.h"
 #include "reference/GBuffer.h"
 #include "scenes/Scene.h"
-#include "techniques/submit/MeshBuffers.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/MeshBuffers.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "reference/ReferenceTechnique.h"
+#include "reference/ReferenceGL.h"
 
 #include <algorithm>
 
@@ -7,39 +7,23 @@
 namespace sb {
 
 namespace {
-constexpr const char* kSamples = "samples";
-constexpr const char* kThreads = "threads";
-constexpr const char* kHard = "hard";
 constexpr uint32_t kSeed = 1; // fixed: the same frame traces to the same image, frame after frame
 
-/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        integer(kSamples, "64", 1, 4096, "area-light samples per pixel (stratified)"),
-        integer(kThreads, "0", 0, 256, "tracing threads, 0 = all"),
-        flag(kHard, "false", "treat area lights as points"),
-    };
-}
+
 } // namespace
 
-ReferenceTechnique::ReferenceTechnique()
-    : Technique({.name = "reference",
-                 .description = "exact visibility by ray tracing (Intel Embree): the ground truth",
-                 .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
-                            Effect::NonPlanarReceivers | Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"gbuffer", "trace", "shade"},
-                 .properties = declareProperties()}) {}
+ReferenceGL::ReferenceGL()
+    : GlTechnique(Reference::declaration()) {}
 
-ReferenceTechnique::~ReferenceTechnique() {
+ReferenceGL::~ReferenceGL() {
     releaseTexture();
 }
 
-void ReferenceTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+void ReferenceGL::sceneChanged(const Scene& scene, uint32_t changes) {
     if (changes & kCastersMoved) setScene(scene);
 }
 
-void ReferenceTechnique::setScene(const Scene& scene) {
+void ReferenceGL::setScene(const Scene& scene) {
     // Tracer first: it holds a reference to the Embree scene it replaces.
     mTracer.reset();
     mEmbree = std::make_unique<EmbreeScene>(scene);
@@ -48,7 +32,7 @@ void ReferenceTechnique::setScene(const Scene& scene) {
     if (mGBufferRenderer) mGBufferRenderer->setScene(scene);
 }
 
-void ReferenceTechnique::compile(const CompileContext& ctx) {
+void ReferenceGL::compile(const CompileContext& ctx) {
     mPrograms = &ctx.programs;
     Defines base = ctx.submitter.defines();
     // Compiled here so the JIT cost and any error fall into setup; the renderer finds it cached.
@@ -59,12 +43,12 @@ void ReferenceTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(gbuffer.key() + "|" + mShadeProgram->key());
 }
 
-void ReferenceTechnique::releaseTexture() {
+void ReferenceGL::releaseTexture() {
     if (mVisibilityTexture) glDeleteTextures(1, &mVisibilityTexture);
     mVisibilityTexture = 0;
 }
 
-void ReferenceTechnique::ensureTargets(int width, int height) {
+void ReferenceGL::ensureTargets(int width, int height) {
     if (width == mWidth && height == mHeight && mGBufferRenderer) return;
     releaseTexture();
     mGBufferRenderer = std::make_unique<GBufferRenderer>(width, height);
@@ -77,24 +61,24 @@ void ReferenceTechnique::ensureTargets(int width, int height) {
     mHeight = height;
 }
 
-ReferenceTracer::Options ReferenceTechnique::tracerOptions() const {
+ReferenceTracer::Options ReferenceGL::tracerOptions() const {
     const PropertySet& p = properties();
     ReferenceTracer::Options o;
-    o.softSamples = int(p.getInt(kSamples));
-    o.threads = int(p.getInt(kThreads));
+    o.softSamples = int(p.getInt(Reference::kSamples));
+    o.threads = int(p.getInt(Reference::kThreads));
     o.seed = kSeed;
-    o.forceHard = p.getBool(kHard);
+    o.forceHard = p.getBool(Reference::kHard);
     return o;
 }
 
-void ReferenceTechnique::renderGBuffer(FrameContext& ctx) {
+void ReferenceGL::renderGBuffer(FrameContext& ctx) {
     ensureTargets(ctx.targets.width(), ctx.targets.height());
-    // proj * view as the frame uniforms compute it (techniques/FrameUniforms.cpp): the same float
+    // proj * view as the frame uniforms compute it (techniques/gl/FrameUniforms.cpp): the same float
     // matrix as the shade pass's uViewProj, so both passes rasterise identically.
     mGBuffer = mGBufferRenderer->render(ctx.submitter, *mPrograms, ctx.proj * ctx.view);
 }
 
-void ReferenceTechnique::trace() {
+void ReferenceGL::trace() {
     const ReferenceTracer::Options options = tracerOptions();
     size_t lights = std::min<size_t>(mScene->lights.size(), kMaxLights);
     mVisibility.assign(lights, {});
@@ -103,7 +87,7 @@ void ReferenceTechnique::trace() {
         mVisibility[i] = mTracer->trace(mGBuffer, int(i), options, &mTraceStats[i]);
 }
 
-void ReferenceTechnique::uploadVisibility() {
+void ReferenceGL::uploadVisibility() {
     // Channel i = light i; channels without a light stay 1 (lit), as the cleared target would be.
     std::vector<float> rgba(size_t(mWidth) * size_t(mHeight) * 4, 1.0f);
     for (size_t light = 0; light < mVisibility.size(); ++light) {
@@ -116,7 +100,7 @@ void ReferenceTechnique::uploadVisibility() {
     glTextureSubImage2D(mVisibilityTexture, 0, 0, 0, mWidth, mHeight, GL_RGBA, GL_FLOAT, rgba.data());
 }
 
-void ReferenceTechnique::shade(FrameContext& ctx) {
+void ReferenceGL::shade(FrameContext& ctx) {
     // The harness cleared depth before execute() and the G-buffer pass drew into its own FBO, so the
     // depth test (LESS) resolves the same visible surface per pixel as the G-buffer did.
     ctx.targets.bind();
@@ -126,7 +110,7 @@ void ReferenceTechnique::shade(FrameContext& ctx) {
     glBindTextureUnit(0, 0);
 }
 
-void ReferenceTechnique::execute(FrameContext& ctx) {
+void ReferenceGL::execute(FrameContext& ctx) {
     ctx.passes.begin("gbuffer");
     renderGBuffer(ctx);
     ctx.passes.begin("trace");
@@ -138,7 +122,7 @@ void ReferenceTechnique::execute(FrameContext& ctx) {
     updateCounters(ctx.submitter.stats());
 }
 
-void ReferenceTechnique::updateCounters(const SubmitStats& shadeStats) {
+void ReferenceGL::updateCounters(const SubmitStats& shadeStats) {
     // Both passes' draws, the G-buffer's counted by its renderer (it may draw without the submitter).
     const SubmitStats& g = mGBufferRenderer->lastStats();
     const SubmitStats s = g + shadeStats;

@@ -15,14 +15,15 @@
 #include "reference/GBuffer.h"
 #include "reference/GBufferRenderer.h"
 #include "reference/ReferenceTracer.h"
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "reference/Reference.h"
 
 namespace sb {
 
-class ReferenceTechnique final : public Technique {
+class ReferenceGL final : public GlTechnique {
 public:
-    ReferenceTechnique();
-    ~ReferenceTechnique() override;
+    ReferenceGL();
+    ~ReferenceGL() override;
     void setScene(const Scene& scene) override;
     /// Moving casters rebuild the Embree scene (its acceleration structure: the reference's per-frame
     /// cost of motion); the tracer reads the lights as they are.

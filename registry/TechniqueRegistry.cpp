@@ -1,27 +1,27 @@
-#include "techniques/TechniqueRegistry.h"
-#include "core/Strings.h"
+#include "registry/TechniqueRegistry.h"
 
 #include "core/Error.h"
-#include "reference/ReferenceTechnique.h"
-#include "techniques/blob/BlobTechnique.h"
-#include "techniques/hybrid/HybridTechnique.h"
-#include "techniques/none/NoneTechnique.h"
+#include "core/Strings.h"
+#include "reference/ReferenceGL.h"
+#include "techniques/blob/BlobGL.h"
+#include "techniques/hybrid/HybridGL.h"
+#include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
-#include "techniques/occluder/OccluderTechnique.h"
-#include "techniques/planar/PlanarTechnique.h"
-#include "techniques/projective/ProjectiveTechnique.h"
-#include "techniques/proxy/ProxyTechnique.h"
-#include "techniques/shadowmap/CascadedTechnique.h"
-#include "techniques/shadowmap/CubeMapTechnique.h"
+#include "techniques/occluder/OccluderGL.h"
+#include "techniques/planar/PlanarGL.h"
+#include "techniques/projective/ProjectiveGL.h"
+#include "techniques/proxy/ProxyGL.h"
+#include "techniques/shadowmap/CascadedGL.h"
+#include "techniques/shadowmap/CubeMapGL.h"
 #include "techniques/shadowmap/CubeMapVulkan.h"
-#include "techniques/shadowmap/EsmTechnique.h"
-#include "techniques/shadowmap/ParaboloidTechnique.h"
-#include "techniques/shadowmap/PcssTechnique.h"
-#include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/shadowmap/EsmGL.h"
+#include "techniques/shadowmap/ParaboloidGL.h"
+#include "techniques/shadowmap/PcssGL.h"
+#include "techniques/shadowmap/ShadowMapGL.h"
 #include "techniques/shadowmap/ShadowMapVulkan.h"
-#include "techniques/shadowmap/VsmTechnique.h"
-#include "techniques/synthetic/SyntheticTechnique.h"
-#include "techniques/volume/VolumeTechnique.h"
+#include "techniques/shadowmap/VsmGL.h"
+#include "techniques/synthetic/SyntheticGL.h"
+#include "techniques/volume/VolumeGL.h"
 #include "techniques/volume/VolumeVulkan.h"
 
 namespace sb {
@@ -40,35 +40,44 @@ std::vector<std::string> partNames() {
     return out;
 }
 
-std::unique_ptr<Technique> createPart(const std::string& name) {
+std::unique_ptr<GlTechnique> createPart(const std::string& name) {
     return TechniqueRegistry::create(name);
 }
 
 } // namespace
 
+template <typename T>
+std::unique_ptr<GlTechnique> gl() {
+    return std::make_unique<T>();
+}
+template <typename T>
+std::unique_ptr<VulkanTechnique> vulkan() {
+    return std::make_unique<T>();
+}
+
 const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
     // The one table of techniques. Order is the order of --list and of "all".
     static const std::vector<Entry> kEntries = {
-        {"none", [] { return std::unique_ptr<Technique>(new NoneTechnique()); }},
-        {"shadowmap", [] { return std::unique_ptr<Technique>(new ShadowMapTechnique()); }},
+        {"none", gl<NoneGL>, vulkan<NoneVulkan>},
+        {"shadowmap", gl<ShadowMapGL>, vulkan<ShadowMapVulkan>},
         // The shadow-map family: omni maps for point lights, cascades, soft and filterable maps.
-        {"cubemap", [] { return std::unique_ptr<Technique>(new CubeMapTechnique()); }},
-        {"paraboloid", [] { return std::unique_ptr<Technique>(new ParaboloidTechnique()); }},
-        {"cascaded", [] { return std::unique_ptr<Technique>(new CascadedTechnique()); }},
-        {"pcss", [] { return std::unique_ptr<Technique>(new PcssTechnique()); }},
-        {"vsm", [] { return std::unique_ptr<Technique>(new VsmTechnique()); }},
-        {"esm", [] { return std::unique_ptr<Technique>(new EsmTechnique()); }},
-        {"volume", [] { return std::unique_ptr<Technique>(new VolumeTechnique()); }},
-        {"occluder", [] { return std::unique_ptr<Technique>(new OccluderTechnique()); }},
-        {"proxy", [] { return std::unique_ptr<Technique>(new ProxyTechnique()); }},
-        {"planar", [] { return std::unique_ptr<Technique>(new PlanarTechnique()); }},
-        {"projective", [] { return std::unique_ptr<Technique>(new ProjectiveTechnique()); }},
-        {"blob", [] { return std::unique_ptr<Technique>(new BlobTechnique()); }},
+        {"cubemap", gl<CubeMapGL>, vulkan<CubeMapVulkan>},
+        {"paraboloid", gl<ParaboloidGL>, {}},
+        {"cascaded", gl<CascadedGL>, {}},
+        {"pcss", gl<PcssGL>, {}},
+        {"vsm", gl<VsmGL>, {}},
+        {"esm", gl<EsmGL>, {}},
+        {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
+        {"occluder", gl<OccluderGL>, {}},
+        {"proxy", gl<ProxyGL>, {}},
+        {"planar", gl<PlanarGL>, {}},
+        {"projective", gl<ProjectiveGL>, {}},
+        {"blob", gl<BlobGL>, {}},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
-        {"hybrid", [] { return std::unique_ptr<Technique>(new HybridTechnique(createPart, partNames())); }},
-        {"reference", [] { return std::unique_ptr<Technique>(new ReferenceTechnique()); }},
+        {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
+        {"reference", gl<ReferenceGL>, {}},
         // Not a shadow technique: the bottleneck study's calibration workloads.
-        {"synthetic", [] { return std::unique_ptr<Technique>(new SyntheticTechnique()); }},
+        {"synthetic", gl<SyntheticGL>, {}},
     };
     return kEntries;
 }
@@ -79,10 +88,25 @@ std::vector<std::string> TechniqueRegistry::names() {
     return out;
 }
 
-std::unique_ptr<Technique> TechniqueRegistry::create(const std::string& name) {
+bool TechniqueRegistry::has(const std::string& name, Api api) {
     for (const Entry& e : entries())
-        if (name == e.name) return e.create();
-    std::string known = join(names(), ", ");
+        if (name == e.name) return api == Api::GL ? bool(e.gl) : bool(e.vulkan);
+    return false;
+}
+
+std::vector<std::string> TechniqueRegistry::namesOn(Api api) {
+    std::vector<std::string> out;
+    for (const Entry& e : entries())
+        if (has(e.name, api)) out.emplace_back(e.name);
+    return out;
+}
+
+namespace {
+
+const TechniqueRegistry::Entry& entryOf(const std::string& name) {
+    for (const TechniqueRegistry::Entry& e : TechniqueRegistry::entries())
+        if (name == e.name) return e;
+    const std::string known = join(TechniqueRegistry::names(), ", ");
     // `-t auto` is resolved to a technique by `bench` runs (bench/select) before anything is created;
     // a command that reaches here with it (sweep, bottleneck, explain) does not make that choice.
     if (name == "auto")
@@ -92,44 +116,37 @@ std::unique_ptr<Technique> TechniqueRegistry::create(const std::string& name) {
     throw Error("unknown technique '" + name + "' (known: " + known + ")");
 }
 
-std::unique_ptr<Technique> TechniqueRegistry::create(const TechniqueSpec& spec) {
+void apply(Technique& t, const TechniqueSpec& spec) {
+    t.properties().apply(spec.properties);
+    t.propertiesApplied();
+}
+
+} // namespace
+
+std::unique_ptr<Technique> TechniqueRegistry::create(const TechniqueSpec& spec, Api api) {
+    if (api == Api::Vulkan) return createVulkan(spec);
+    return create(spec);
+}
+
+std::unique_ptr<GlTechnique> TechniqueRegistry::create(const std::string& name) {
+    return entryOf(name).gl();
+}
+
+std::unique_ptr<GlTechnique> TechniqueRegistry::create(const TechniqueSpec& spec) {
     auto t = create(spec.name);
-    t->properties().apply(spec.properties);
-    t->propertiesApplied();
+    apply(*t, spec);
     return t;
 }
 
-const std::vector<TechniqueRegistry::VulkanEntry>& TechniqueRegistry::vulkanEntries() {
-    // The techniques with a Vulkan form (techniques/vulkan/VulkanTechnique.h); the others run on GL only
-    // and --api vulkan refuses them (exit 3), as --list says.
-    static const std::vector<VulkanEntry> kEntries = {
-        {"none", [] { return std::unique_ptr<VulkanTechnique>(new NoneVulkan()); }},
-        {"cubemap", [] { return std::unique_ptr<VulkanTechnique>(new CubeMapVulkan()); }},
-        {"shadowmap", [] { return std::unique_ptr<VulkanTechnique>(new ShadowMapVulkan()); }},
-        {"volume", [] { return std::unique_ptr<VulkanTechnique>(new VolumeVulkan()); }},
-    };
-    return kEntries;
-}
-
-bool TechniqueRegistry::hasVulkan(const std::string& name) {
-    for (const VulkanEntry& e : vulkanEntries())
-        if (name == e.name) return true;
-    return false;
-}
-
 std::unique_ptr<VulkanTechnique> TechniqueRegistry::createVulkan(const TechniqueSpec& spec) {
-    for (const VulkanEntry& e : vulkanEntries()) {
-        if (spec.name != e.name) continue;
-        auto t = e.create();
-        t->properties().apply(spec.properties);
-        return t;
-    }
-    create(spec.name); // an unknown name: the same error as on GL
-    std::vector<std::string> known;
-    for (const VulkanEntry& e : vulkanEntries()) known.emplace_back(e.name);
-    throw Error(spec.name + " has no Vulkan form yet (on Vulkan: " + join(known, ", ") +
-                    "); run it with --api gl",
-                ExitCode::Unsupported);
+    const Entry& e = entryOf(spec.name);
+    if (!e.vulkan)
+        throw Error(spec.name + " has no Vulkan form yet (on Vulkan: " + join(namesOn(Api::Vulkan), ", ") +
+                        "); run it with --api gl",
+                    ExitCode::Unsupported);
+    auto t = e.vulkan();
+    apply(*t, spec);
+    return t;
 }
 
 } // namespace sb

@@ -1,4 +1,4 @@
-#include "techniques/common/InstanceCulling.h"
+#include "scenes/InstanceCulling.h"
 
 #include <algorithm>
 #include <array>
@@ -16,7 +16,7 @@ void InstanceCulling::setScene(const Scene& scene) {
         mBounds.push_back(inst.mesh < scene.meshes.size()
                               ? transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model)
                               : Aabb{});
-        for (size_t s = 0; s < kDrawSetCount; ++s) mSetCount[s] += Submitter::inSet(inst, DrawSet(s)) ? 1 : 0;
+        for (size_t s = 0; s < kDrawSetCount; ++s) mSetCount[s] += inDrawSet(inst, DrawSet(s)) ? 1 : 0;
     }
 }
 
@@ -135,7 +135,7 @@ size_t InstanceCulling::cull(const glm::mat4& viewProj, DrawSet set, CullPlanes 
     keep.assign(mBounds.size(), 0);
     size_t kept = 0;
     for (size_t i = 0; i < mBounds.size(); ++i) {
-        if (!Submitter::inSet(mScene->instances[i], set) || !mayReach(mBounds[i], viewProj, planes)) continue;
+        if (!inDrawSet(mScene->instances[i], set) || !mayReach(mBounds[i], viewProj, planes)) continue;
         keep[i] = 1;
         ++kept;
     }

@@ -4,7 +4,7 @@
 // outside one plane of the pass's clip volume cannot put a texel into that map, so it is not
 // submitted. The test is conservative (a box that straddles a plane's corner region is kept), done on
 // the CPU once per pass, and costs 8 corner transforms per instance; what it keeps is the mask
-// Submitter::draw takes (techniques/submit/Submitter.h). The same test culls casters whose shadow
+// Submitter::draw takes (techniques/gl/Submitter.h). The same test culls casters whose shadow
 // cannot reach the camera's view (cullShadows, cullFlattened): the passes that draw casters for
 // the receivers the camera sees (projective's texture, planar's flattening) leave those out.
 #include <array>
@@ -16,7 +16,7 @@
 
 #include "scenes/Mesh.h"
 #include "scenes/Scene.h"
-#include "techniques/submit/Submitter.h"
+#include "scenes/DrawSet.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/common/ShadowWork.h"
+#include "scenes/ShadowWork.h"
 
 #include <algorithm>
 

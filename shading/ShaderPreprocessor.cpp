@@ -1,4 +1,4 @@
-#include "gl/ShaderPreprocessor.h"
+#include "shading/ShaderPreprocessor.h"
 
 #include <filesystem>
 #include <fstream>
@@ -6,23 +6,9 @@
 #include <sstream>
 
 #include "core/Error.h"
-#include "core/NameTable.h"
 
 namespace sb {
 namespace {
-
-constexpr Named<GLenum> kStageDefines[] = {
-    {GL_VERTEX_SHADER, "SB_VERTEX_SHADER"},
-    {GL_FRAGMENT_SHADER, "SB_FRAGMENT_SHADER"},
-    {GL_GEOMETRY_SHADER, "SB_GEOMETRY_SHADER"},
-};
-constexpr NameTable kStageDefineTable{kStageDefines};
-constexpr Named<GLenum> kStageNames[] = {
-    {GL_VERTEX_SHADER, "vertex"},
-    {GL_FRAGMENT_SHADER, "fragment"},
-    {GL_GEOMETRY_SHADER, "geometry"},
-};
-constexpr NameTable kStageNameTable{kStageNames};
 
 const std::regex& includePattern() {
     static const std::regex pattern(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
@@ -44,7 +30,7 @@ void appendDefines(const Defines& defines, std::string& out) {
 
 } // namespace
 
-std::string ShaderPreprocessor::build(const std::string& file, const Defines& defines, GLenum stage) {
+std::string ShaderPreprocessor::build(const std::string& file, const Defines& defines, ShaderStage stage) {
     mFiles.clear();
     mIncluded.clear();
     std::string out = mVersionLine;
@@ -114,14 +100,6 @@ std::string ShaderPreprocessor::mapLog(const std::string& log) const {
         if (!line.empty()) out += (out.empty() ? "" : "\n") + line;
     }
     return out;
-}
-
-const char* ShaderPreprocessor::stageDefine(GLenum stage) {
-    return kStageDefineTable.name(stage, "SB_UNKNOWN_SHADER_STAGE");
-}
-
-const char* ShaderPreprocessor::stageName(GLenum stage) {
-    return kStageNameTable.name(stage, "unknown-stage");
 }
 
 } // namespace sb

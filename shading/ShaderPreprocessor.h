@@ -1,5 +1,6 @@
 #pragma once
-// Builds the source of one shader stage for ProgramCache: "#version 450 compatibility", the sorted
+// Builds the source of one shader stage for both APIs' caches (gl/ProgramCache, vk/ShaderModuleCache):
+// "#version 450 compatibility", the sorted
 // defines, a stage define, then the file with `#include "common/x.glsl"` lines expanded (paths relative
 // to the shader root, each file included once per stage, like #pragma once). Every file gets a GLSL
 // source-string number through `#line LINE FILE_INDEX`, so a compile log line such as
@@ -9,7 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "gl/ProgramCache.h"
+#include "shading/Defines.h"
+#include "shading/ShaderStage.h"
 
 namespace sb {
 
@@ -21,17 +23,13 @@ public:
     void setVersionLine(std::string line) { mVersionLine = std::move(line); }
 
     /// Throws sb::Error naming the missing file (and which file:line included it) or a bad define name.
-    std::string build(const std::string& file, const Defines& defines, GLenum stage);
+    std::string build(const std::string& file, const Defines& defines, ShaderStage stage);
     /// Source-string number -> path relative to the root; 0 is the main file.
     const std::vector<std::string>& files() const { return mFiles; }
     /// Rewrites driver log lines "N:LINE(COL): msg" (Mesa) and "N(LINE) : msg" (NVIDIA) as
     /// "path:LINE:COL: msg" / "path:LINE: msg", and glslang's "ERROR: N:LINE: msg" / "WARNING: N:LINE: msg"
     /// as "path:LINE: error: msg" / "path:LINE: warning: msg"; other lines are kept as they are.
     std::string mapLog(const std::string& log) const;
-
-    /// "SB_VERTEX_SHADER" etc.: defined to 1 in the stage being built, so a file can serve several stages.
-    static const char* stageDefine(GLenum stage);
-    static const char* stageName(GLenum stage); ///< "vertex", "fragment", "geometry"
 
 private:
     void expand(const std::string& file, const std::string& includedFrom, std::string& out);

@@ -12,7 +12,7 @@
 #include "bench/run/Harness.h"
 #include "reference/AccuracyMetrics.h"
 #include "scenes/Math.h"
-#include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/shadowmap/ShadowMapGL.h"
 
 using namespace sb;
 
@@ -21,7 +21,7 @@ TEST(AccuracyMask, SpotLightJudgesOnlyInsideItsCone) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize);
     cfg.sceneOptions.lightType = LightType::Spot;
     Harness h(cfg);
-    ShadowMapTechnique t;
+    ShadowMapGL t;
     h.prepare(t);
     AccuracyEvaluator evaluator(h);
     AccuracyOptions options;

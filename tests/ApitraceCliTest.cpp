@@ -18,7 +18,7 @@
 #include "PngDecoder.h"
 #include "TestSupport.h"
 #include "gl/backends/ApitraceHandoff.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 using test::runCommand;

@@ -1,4 +1,4 @@
-// BlobTechnique::fit against hand-computed ellipses: the bounds' corners projected along the light,
+// BlobGL::fit against hand-computed ellipses: the bounds' corners projected along the light,
 // centred on their mean, principal axes, semi-axes sqrt(2) standard deviations (through the corners of
 // a rectangular footprint), opacity falling linearly with height.
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "scenes/Scene.h"
-#include "techniques/blob/BlobTechnique.h"
+#include "techniques/blob/BlobGL.h"
 
 using namespace sb;
 
@@ -37,7 +37,7 @@ TEST(BlobFitTest, OverheadSunGivesTheFootprint) {
     // A 2x2x2 box from y = 2 to 4 under a sun straight down: the footprint [-1, 1]^2 (variance 1 on
     // every axis), the circle through its corners: radius sqrt(2) at the origin.
     const auto b =
-        BlobTechnique::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({0, -1, 0}), 0, 1.0f, 0.5f, 8.0f);
+        BlobGL::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({0, -1, 0}), 0, 1.0f, 0.5f, 8.0f);
     ASSERT_TRUE(b);
     EXPECT_NEAR(glm::length(glm::vec3(b->centre)), 0.0f, 1e-5f);
     EXPECT_NEAR(axisLength(b->axisU), std::sqrt(2.0f), 1e-5f);
@@ -53,7 +53,7 @@ TEST(BlobFitTest, ObliqueSunStretchesAlongTheLight) {
     // Sun along (1, -1, 0): a corner at height h moves +h in x: x = 1, 3, 3, 5 (mean 3, variance 2),
     // z = +-1 (variance 1): centre (3, 0, 0), semi-axes 2 along x and sqrt(2) along z.
     const auto b =
-        BlobTechnique::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({1, -1, 0}), 2, 1.0f, 0.0f, 8.0f);
+        BlobGL::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({1, -1, 0}), 2, 1.0f, 0.0f, 8.0f);
     ASSERT_TRUE(b);
     EXPECT_NEAR(glm::distance(glm::vec3(b->centre), glm::vec3(3, 0, 0)), 0.0f, 1e-4f);
     const glm::vec3 u(b->axisU), v(b->axisV);
@@ -73,7 +73,7 @@ TEST(BlobFitTest, PointLightProjectsFromItsPosition) {
     Light l;
     l.type = LightType::Point;
     l.position = {0, 8, 0};
-    const auto b = BlobTechnique::fit(box({3, 2, -1}, {5, 4, 1}), ground(), l, 0, 1.0f, 0.5f, 8.0f);
+    const auto b = BlobGL::fit(box({3, 2, -1}, {5, 4, 1}), ground(), l, 0, 1.0f, 0.5f, 8.0f);
     ASSERT_TRUE(b);
     EXPECT_NEAR(b->centre.x, 20.0f / 3.0f, 1e-4f);
     EXPECT_NEAR(b->centre.z, 0.0f, 1e-4f);
@@ -92,7 +92,7 @@ TEST(BlobFitTest, SquareFootprintIsStableUnderRotation) {
         }
         // The bounds of a turned square are a bigger square: half extent c + s.
         const float half = c + s;
-        const auto blob = BlobTechnique::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8);
+        const auto blob = BlobGL::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8);
         ASSERT_TRUE(blob);
         EXPECT_NEAR(axisLength(blob->axisU), std::sqrt(2.0f) * half, 1e-4f) << deg;
         EXPECT_NEAR(axisLength(blob->axisV), std::sqrt(2.0f) * half, 1e-4f) << deg;
@@ -104,13 +104,13 @@ TEST(BlobFitTest, NoBlobWhereNoShadowCanBe) {
     Light below;
     below.type = LightType::Point;
     below.position = {0, -3, 0};
-    EXPECT_FALSE(BlobTechnique::fit(b, ground(), below, 0, 1, 0.5f, 8));          // light under the ground
-    EXPECT_FALSE(BlobTechnique::fit(b, ground(), sun({1, 0, 0}), 0, 1, 0.5f, 8)); // light in its plane
-    EXPECT_FALSE(BlobTechnique::fit(box({-1, -4, -1}, {1, -2, 1}), ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8));
-    EXPECT_FALSE(BlobTechnique::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 0.5f)); // faded out (2 > 0.87)
-    EXPECT_FALSE(BlobTechnique::fit(Aabb{}, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8)); // empty bounds
+    EXPECT_FALSE(BlobGL::fit(b, ground(), below, 0, 1, 0.5f, 8));          // light under the ground
+    EXPECT_FALSE(BlobGL::fit(b, ground(), sun({1, 0, 0}), 0, 1, 0.5f, 8)); // light in its plane
+    EXPECT_FALSE(BlobGL::fit(box({-1, -4, -1}, {1, -2, 1}), ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8));
+    EXPECT_FALSE(BlobGL::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 0.5f)); // faded out (2 > 0.87)
+    EXPECT_FALSE(BlobGL::fit(Aabb{}, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8)); // empty bounds
     Light under;
     under.type = LightType::Point;
     under.position = {0, 1.5f, 0}; // between the ground and the box's bottom (y = 2)
-    EXPECT_FALSE(BlobTechnique::fit(b, ground(), under, 0, 1, 0.5f, 8));
+    EXPECT_FALSE(BlobGL::fit(b, ground(), under, 0, 1, 0.5f, 8));
 }

@@ -17,7 +17,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

@@ -23,7 +23,7 @@
 #include "bench/run/Harness.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
-#include "techniques/shadowmap/CascadedTechnique.h"
+#include "techniques/shadowmap/CascadedGL.h"
 
 using namespace sb;
 
@@ -37,7 +37,7 @@ struct Frame {
     std::vector<glm::vec4> world;
 };
 
-Frame render(Harness& h, Technique& t) {
+Frame render(Harness& h, GlTechnique& t) {
     h.renderFrame(t);
     Frame f;
     const auto rgba = h.targets().readVisibilityRGBA32F();
@@ -48,8 +48,8 @@ Frame render(Harness& h, Technique& t) {
     return f;
 }
 
-std::unique_ptr<CascadedTechnique> cascaded(const std::string& props) {
-    auto t = std::make_unique<CascadedTechnique>();
+std::unique_ptr<CascadedGL> cascaded(const std::string& props) {
+    auto t = std::make_unique<CascadedGL>();
     if (!props.empty()) t->properties().apply(TechniqueSpec::parse("cascaded:" + props).properties);
     return t;
 }
@@ -279,7 +279,7 @@ struct Wrong {
 };
 
 /// Wrong pixels against the reference; "near": view depth below `nearDepth`.
-Wrong countWrong(Harness& h, Technique& t, AccuracyEvaluator& evaluator, float nearDepth) {
+Wrong countWrong(Harness& h, GlTechnique& t, AccuracyEvaluator& evaluator, float nearDepth) {
     h.prepare(t);
     AccuracyOptions o;
     o.stability = false;
@@ -334,11 +334,11 @@ TEST(CascadedLongView, NearShadowEdgesSharperThanShadowmap) {
 
 // --- lights -------------------------------------------------------------------------------------------
 
-TEST(CascadedTechnique, PointLightIsRefusedNamingTheOmniTechniques) {
+TEST(CascadedGL, PointLightIsRefusedNamingTheOmniTechniques) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 64);
     cfg.sceneOptions.lightType = LightType::Point;
     Harness h(cfg);
-    CascadedTechnique t;
+    CascadedGL t;
     try {
         h.prepare(t);
         FAIL() << "point light accepted";
@@ -351,13 +351,13 @@ TEST(CascadedTechnique, PointLightIsRefusedNamingTheOmniTechniques) {
     }
 }
 
-TEST(CascadedTechnique, SpotLightShadowsTheGroundUnderTheSphere) {
+TEST(CascadedGL, SpotLightShadowsTheGroundUnderTheSphere) {
     // One perspective map as shadowmap's: under the sphere shadowed, off its projection lit (the
     // closed form of ShadowMapGLTest's spot case), with a 10% radius band for perspective texels.
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 256);
     cfg.sceneOptions.lightType = LightType::Spot;
     Harness h(cfg);
-    CascadedTechnique t;
+    CascadedGL t;
     h.prepare(t);
     const Frame f = render(h, t);
     const Light& light = h.scene().lights[0];
@@ -382,7 +382,7 @@ TEST(CascadedTechnique, SpotLightShadowsTheGroundUnderTheSphere) {
     EXPECT_EQ(test::counter(t.counters(), "cascades"), 0.0); // no directional light, no cascade
 }
 
-TEST(CascadedTechnique, CountersAndCulling) {
+TEST(CascadedGL, CountersAndCulling) {
     // city from "mid" (oblique, 0.5 to ~150 units): four cascades of one directional light, each culling
     // the blocks outside its sides and far plane (casters towards the light are kept); the culled
     // count is summed over the maps drawn, the texels are those of the maps drawn.
@@ -401,7 +401,7 @@ TEST(CascadedTechnique, CountersAndCulling) {
     EXPECT_GT(test::counter(f.counters, "triangles"), 0.0);
 }
 
-TEST(CascadedTechnique, IdenticalCascadesShareOneMap) {
+TEST(CascadedGL, IdenticalCascadesShareOneMap) {
     // city from straight above (190 up, every receiver 162-190 away): each slice's sphere is wider than
     // the blocks, so every cascade is clamped to the casters' whole bounds, the four fits are equal and
     // one map is drawn; the image must still match the reference as shadowmap's one map does.

@@ -1,5 +1,5 @@
 // The casters that cannot shadow anything the camera sees are left out of the passes that draw
-// casters for the receivers in view (techniques/common/InstanceCulling: cullFlattened for planar's
+// casters for the receivers in view (scenes/InstanceCulling: cullFlattened for planar's
 // flattenings, cullShadows for projective's textures, keepReachingView for the shadow map's depth
 // pass, each caster grown by the filter's footprint). The independent answer is the same technique
 // with `cull=false`, which draws every caster: the frame must be the same, value for value (tolerance
@@ -15,7 +15,7 @@
 #include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

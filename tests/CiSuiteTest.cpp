@@ -7,7 +7,7 @@
 #include "TestSupport.h"
 #include "bench/ci/CiSuite.h"
 #include "core/Error.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

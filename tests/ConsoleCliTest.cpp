@@ -11,7 +11,7 @@
 
 #include "TestSupport.h"
 #include "bench/output/CsvWriter.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 using test::runCommand;
@@ -154,7 +154,7 @@ TEST(Console, ListSeparatesEveryPropertyCell) {
     const std::vector<std::string> text = lines(r.output);
     size_t checked = 0;
     for (const auto& entry : TechniqueRegistry::entries()) {
-        const auto technique = entry.create();
+        const auto technique = entry.gl();
         // The technique's block: from its "<name>  <description>" line to the blank line after it
         // (several techniques declare a property of the same name).
         const std::string title = technique->info().name + "  ";

@@ -3,13 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "techniques/EffectCoverage.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
 TEST(EffectCoverage, PlanarOnAircraftMissesSelfShadowingOnly) {
     // aircraft asks for hard shadows and self-shadowing; planar projects onto a plane: hard shadows and
-    // several lights, no self-shadowing (techniques/planar/PlanarTechnique.h).
+    // several lights, no self-shadowing (techniques/planar/PlanarGL.h).
     const EffectMask aircraft = Effect::HardShadows | Effect::SelfShadowing;
     const EffectMask planar = Effect::HardShadows | Effect::MultipleLights;
     const EffectCoverage c = EffectCoverage::of(aircraft, planar);
@@ -66,7 +66,7 @@ TEST(EffectCoverage, EveryShadowTechniqueOfTheRegistryDeclaresSomething) {
     // The baseline rule exempts a technique only by declaring nothing: every technique that draws shadows
     // must declare at least one effect, or it would silently escape the warning and --strict-effects.
     for (const auto& entry : TechniqueRegistry::entries()) {
-        const auto t = entry.create();
+        const auto t = entry.gl();
         const std::string& name = t->info().name;
         if (name == "none" || name == "synthetic") continue;
         EXPECT_NE(t->info().effects, 0u) << name;

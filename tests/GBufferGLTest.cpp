@@ -14,7 +14,7 @@
 #include "core/Error.h"
 #include "reference/GBufferRenderer.h"
 #include "scenes/Math.h"
-#include "techniques/none/NoneTechnique.h"
+#include "techniques/none/NoneGL.h"
 
 using namespace sb;
 
@@ -79,7 +79,7 @@ TEST_P(GBufferModes, MatchesTheLightingPass) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize, GetParam());
     cfg.sceneOptions.tessellation = kTessellation;
     Harness h(cfg);
-    NoneTechnique none;
+    NoneGL none;
     h.prepare(none);
     h.renderFrame(none);
     const Scene& scene = h.scene();

@@ -20,7 +20,7 @@
 #include "VkTestSupport.h"
 #include "bench/run/Harness.h"
 #include "bench/run/VulkanHarness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

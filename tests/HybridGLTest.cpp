@@ -1,4 +1,4 @@
-// `hybrid` (techniques/hybrid/HybridTechnique.h): two techniques in one frame, each shading the instances
+// `hybrid` (techniques/hybrid/HybridGL.h): two techniques in one frame, each shading the instances
 // of its role. The independent answer is each part rendered alone on the same harness: on the aircraft
 // scene, a hybrid of occluder textures (self) and a shadow map (cast) must show, pixel for pixel, the
 // occluder's visibility and colour on the aircraft and the shadow map's on the ground. Tolerance 0: each
@@ -19,7 +19,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "core/Error.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
@@ -48,7 +48,7 @@ std::vector<bool> interior(const std::vector<glm::vec4>& world, int size) {
     return out;
 }
 
-std::unique_ptr<Technique> make(const std::string& spec) {
+std::unique_ptr<GlTechnique> make(const std::string& spec) {
     return TechniqueRegistry::create(TechniqueSpec::parse(spec));
 }
 

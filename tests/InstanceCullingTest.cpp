@@ -1,8 +1,8 @@
-// Unit tests of techniques/common/InstanceCulling: boxes against an orthographic clip volume written out
+// Unit tests of scenes/InstanceCulling: boxes against an orthographic clip volume written out
 // by hand (x, y in [-2, 2], depth along -z from 1 to 9), so each verdict follows from the planes alone.
 #include <gtest/gtest.h>
 
-#include "techniques/common/InstanceCulling.h"
+#include "scenes/InstanceCulling.h"
 
 using namespace sb;
 

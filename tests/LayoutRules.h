@@ -112,11 +112,11 @@ struct Exception {
 
 inline const std::vector<Exception>& exceptions() {
     static const std::vector<Exception> kExceptions = {
-        {"techniques/TechniqueRegistry.cpp",
+        {"registry/TechniqueRegistry.cpp",
          {"techniques/*", "reference"},
          "the one table of techniques names every technique, the reference included: the layout's one "
          "intended arrow up"},
-        {"techniques/TechniqueRegistry.h",
+        {"registry/TechniqueRegistry.h",
          {"techniques/vulkan"},
          "the table's Vulkan half hands out the Vulkan form of a technique (techniques/vulkan/), which "
          "stands on techniques/ like every technique"},

@@ -16,7 +16,7 @@
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

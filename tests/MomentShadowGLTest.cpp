@@ -22,7 +22,7 @@
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 #include "techniques/shadowmap/SeparableBlur.h"
 
 using namespace sb;
@@ -127,7 +127,7 @@ TEST_P(MomentEllipse, DarkInsideLitOutsideFiniteEverywhere) {
     cfg.sceneOptions.tessellation = 64; // polygonal silhouette within r(1 - cos(pi/64)) = 1.2e-3 r
     cfg.sceneOptions.lightType = LightType::Directional;
     Harness h(cfg);
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(tc.spec));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(tc.spec));
     const test::RenderedFrame f = test::renderOnce(h, *t);
     const Scene& scene = h.scene();
     const Sphere sphere = findSphere(scene);
@@ -218,7 +218,7 @@ TEST_P(EsmInterior, MatchesExponentialOfDepthDifference) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize);
     cfg.sceneOptions.tessellation = 64;
     Harness h(cfg);
-    std::unique_ptr<Technique> t =
+    std::unique_ptr<GlTechnique> t =
         TechniqueRegistry::create(TechniqueSpec::parse("esm:exponent=" + std::to_string(c)));
     const test::RenderedFrame f = test::renderOnce(h, *t);
     const Scene& scene = h.scene();
@@ -268,7 +268,7 @@ TEST_P(MomentSpot, ShadowsTheGroundUnderTheSphere) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 256);
     cfg.sceneOptions.lightType = LightType::Spot;
     Harness h(cfg);
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(GetParam()));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(GetParam()));
     const test::RenderedFrame f = test::renderOnce(h, *t);
     const Scene& scene = h.scene();
     const Light& light = scene.lights[0];
@@ -360,7 +360,7 @@ TEST(MomentShadows, PointLightIsRefusedNamingTheOmniTechniques) {
         RunConfig cfg = test::quickConfig("sphere_plane", "top", 64);
         cfg.sceneOptions.lightType = LightType::Point;
         Harness h(cfg);
-        std::unique_ptr<Technique> t = TechniqueRegistry::create(name);
+        std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(name);
         try {
             h.prepare(*t);
             ADD_FAILURE() << name << ": point light accepted";

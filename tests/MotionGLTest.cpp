@@ -27,7 +27,7 @@
 #include "core/Error.h"
 #include "scenes/Motion.h"
 #include "scenes/SceneLoader.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

@@ -12,7 +12,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/occluder/OccluderTechnique.h"
+#include "techniques/occluder/OccluderGL.h"
 #include "techniques/occluder/OccluderTextures.h"
 
 using namespace sb;
@@ -50,7 +50,7 @@ Judged judge(const std::string& scene, const std::string& spec, Margin margin, d
              std::vector<float>* visibilityOut = nullptr, SubmitMode submit = SubmitMode::Retained) {
     RunConfig cfg = test::quickConfig(scene, "top", kSize, submit);
     Harness h(cfg);
-    OccluderTechnique t;
+    OccluderGL t;
     t.properties().apply(TechniqueSpec::parse(spec).properties);
     h.prepare(t);
     h.renderFrame(t);

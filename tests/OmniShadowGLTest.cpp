@@ -24,7 +24,7 @@
 #include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 #include "techniques/shadowmap/CubeFaces.h"
 
 using namespace sb;
@@ -329,7 +329,7 @@ TEST(ParaboloidKnownLimit, CoarseCasterEdgesBendAndTessellationStraightensThem) 
     EXPECT_LE(cube.wrong, cube.judged / 5000);
 }
 
-TEST(CubeMapTechnique, BothModesGiveTheSameVisibility) {
+TEST(CubeMapGL, BothModesGiveTheSameVisibility) {
     // The layered pass computes the same face transform in the geometry stage as the six-pass one in
     // the vertex stage (viewProj * (model * position), same order), so the maps and hence the images
     // are expected to be identical; allowed: 0.01% of the pixels (rounding, should a driver fuse the
@@ -347,7 +347,7 @@ TEST(CubeMapTechnique, BothModesGiveTheSameVisibility) {
     }
 }
 
-TEST(CubeMapTechnique, SixPassCullsTheFacesTheCasterCannotReach) {
+TEST(CubeMapGL, SixPassCullsTheFacesTheCasterCannotReach) {
     // The seam scene's sphere lies at +x, -y, around z = 0.3 from the light; its bounds relative to the
     // light are x in [1.2, 3.2], y in [-3.2, -1.2], z in [-0.7, 1.3]. By hand: -X (x <= -|y|, -|z|),
     // +Y (y >= |x|) and -Z (-z >= |x|: -z <= 0.7 < 1.2 <= x) cannot see any corner: culled; +X and -Y
@@ -372,7 +372,7 @@ TEST(CubeMapTechnique, SixPassCullsTheFacesTheCasterCannotReach) {
     EXPECT_EQ(test::counter(para.counters, "draw_calls"), lightingDraws + 1.0);
 }
 
-TEST(CubeMapTechnique, ALightWhoseRangeReachesNoCasterDoesNoDepthWork) {
+TEST(CubeMapGL, ALightWhoseRangeReachesNoCasterDoesNoDepthWork) {
     // Range 1.5 from a light 3 above the sphere's top: no caster within reach, so no map at all.
     SphereScene s = aboveScene();
     s.range = 1.5;
@@ -388,7 +388,7 @@ TEST(CubeMapTechnique, ALightWhoseRangeReachesNoCasterDoesNoDepthWork) {
     }
 }
 
-TEST(CubeMapTechnique, EverySubmissionModeRendersTheSameImage) {
+TEST(CubeMapGL, EverySubmissionModeRendersTheSameImage) {
     const std::string scene = writeScene(seamScene(), "submit");
     for (const char* spec : {"cubemap", "cubemap:layered=false", "paraboloid"}) {
         const auto retained = render(scene, spec, SubmitMode::Retained);

@@ -29,8 +29,8 @@
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Harness.h"
 #include "core/Error.h"
-#include "techniques/TechniqueRegistry.h"
-#include "techniques/shadowmap/PcssTechnique.h"
+#include "registry/TechniqueRegistry.h"
+#include "techniques/shadowmap/PcssGL.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 
 using namespace sb;
@@ -132,7 +132,7 @@ std::vector<std::pair<double, double>> closedForm(const std::vector<std::pair<do
 test::RenderedFrame render(const std::string& scene, const std::string& spec,
                            SubmitMode mode = SubmitMode::Retained, const std::string& camera = "under") {
     Harness h(test::quickConfig(scene, camera, kSize, mode));
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
     return test::renderOnce(h, *t);
 }
 
@@ -215,7 +215,7 @@ TEST(PcssPenumbra, LightSizeComesFromTheSceneOrTheDefault) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 64);
     cfg.sceneOptions.lightType = LightType::Spot;
     Harness h(cfg);
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse("pcss"));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse("pcss"));
     test::RenderedFrame point = test::renderOnce(h, *t);
     EXPECT_EQ(test::counter(point.counters, "light_size_defaulted"), 1.0);
     EXPECT_GT(test::counter(point.counters, "light_size"), 0.0);
@@ -227,7 +227,7 @@ TEST(PcssPenumbra, LightSizeComesFromTheSceneOrTheDefault) {
 /// RMSE of a technique's visibility against the Embree area-light reference (64 samples per pixel).
 double referenceRmse(const std::string& scene, const std::string& camera, const std::string& spec) {
     Harness h(test::quickConfig(scene, camera, 192));
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
     h.prepare(*t);
     AccuracyEvaluator evaluator(h);
     AccuracyOptions options;
@@ -262,7 +262,7 @@ TEST(PcssDeterminism, EverySubmissionModeAndRunGivesTheSameImage) {
     const std::string scene = std::string(SB_SOURCE_DIR) + "/results/proxy/scenes/soft_sun_10.json";
     auto once = [&](SubmitMode m) {
         Harness h(test::quickConfig(scene, "mid", 160, m));
-        std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse("pcss"));
+        std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse("pcss"));
         return test::renderOnce(h, *t).visibility;
     };
     const std::vector<float> base = once(SubmitMode::Retained);
@@ -283,7 +283,7 @@ TEST(PcssContact, ShadowAtTheContactIsDarkAndFinite) {
     // well inside the face (within 0.5 of its middle, half-width 1): every ray of the sun is blocked.
     const std::string scene = std::string(SB_SOURCE_DIR) + "/tests/hard/scenes/pcss_contact.json";
     Harness h(test::quickConfig(scene, "top", 384));
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse("pcss"));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse("pcss"));
     test::RenderedFrame f = test::renderOnce(h, *t);
     for (float v : f.visibility) ASSERT_TRUE(std::isfinite(v));
     const Instance& box = h.scene().instances[1];
@@ -313,11 +313,11 @@ TEST(PcssContact, ShadowAtTheContactIsDarkAndFinite) {
     EXPECT_EQ(lit, 0);
 }
 
-TEST(PcssTechnique, PointLightIsRefusedAsUnsupported) {
+TEST(PcssGL, PointLightIsRefusedAsUnsupported) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 64);
     cfg.sceneOptions.lightType = LightType::Point;
     Harness h(cfg);
-    std::unique_ptr<Technique> t = TechniqueRegistry::create("pcss");
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create("pcss");
     try {
         h.prepare(*t);
         FAIL() << "point light accepted";
@@ -328,13 +328,13 @@ TEST(PcssTechnique, PointLightIsRefusedAsUnsupported) {
     }
 }
 
-TEST(PcssTechnique, DepthPassCullsCastersOutsideTheLight) {
+TEST(PcssGL, DepthPassCullsCastersOutsideTheLight) {
     // sphere_plane with a spot light: the ground casts nothing, the sphere is inside the cone: nothing to
     // cull; the counter exists and the shadow is there (the sphere's shadow darkens the ground).
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 128);
     cfg.sceneOptions.lightType = LightType::Spot;
     Harness h(cfg);
-    std::unique_ptr<Technique> t = TechniqueRegistry::create("pcss");
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create("pcss");
     test::RenderedFrame f = test::renderOnce(h, *t);
     EXPECT_EQ(test::counter(f.counters, "casters_culled"), 0.0);
     size_t dark = 0;

@@ -15,8 +15,8 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
-#include "techniques/planar/PlanarTechnique.h"
+#include "registry/TechniqueRegistry.h"
+#include "techniques/planar/PlanarGL.h"
 
 using namespace sb;
 

@@ -72,8 +72,8 @@ TEST_F(ProgramCacheGLTest, DefineInsertionOrderDoesNotMatter) {
     EXPECT_EQ(&p1, &p2);
     EXPECT_EQ(mCache.compileCount(), 1u);
     EXPECT_EQ(p1.key(), "FILL_RED=0.75,VIS_VALUE=0.5");
-    EXPECT_EQ(mCache.preprocess("fill.frag", ab, GL_FRAGMENT_SHADER),
-              mCache.preprocess("fill.frag", ba, GL_FRAGMENT_SHADER));
+    EXPECT_EQ(mCache.preprocess("fill.frag", ab, ShaderStage::Fragment),
+              mCache.preprocess("fill.frag", ba, ShaderStage::Fragment));
 }
 
 TEST_F(ProgramCacheGLTest, UniformLocationsAreCached) {
@@ -87,7 +87,7 @@ TEST_F(ProgramCacheGLTest, UniformLocationsAreCached) {
 
 TEST_F(ProgramCacheGLTest, PreprocessExpandsIncludesWithLineDirectives) {
     std::string source =
-        mCache.preprocess("fill.frag", {{"VIS_VALUE", "0.5"}, {"B_FLAG", ""}}, GL_FRAGMENT_SHADER);
+        mCache.preprocess("fill.frag", {{"VIS_VALUE", "0.5"}, {"B_FLAG", ""}}, ShaderStage::Fragment);
     // Header: version first, sorted defines, stage define.
     EXPECT_EQ(source.rfind("#version 450 compatibility\n#define B_FLAG 1\n#define VIS_VALUE 0.5\n"
                            "#define SB_FRAGMENT_SHADER 1\n#line 1 0\n",

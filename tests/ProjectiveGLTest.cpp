@@ -21,7 +21,7 @@
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/projective/ProjectiveTechnique.h"
+#include "techniques/projective/ProjectiveGL.h"
 
 using namespace sb;
 
@@ -59,7 +59,7 @@ struct Frame {
 
 Frame render(const std::string& scene, const std::string& props) {
     Harness h(test::quickConfig(scene, "top", kSize));
-    ProjectiveTechnique t;
+    ProjectiveGL t;
     t.properties().apply(TechniqueSpec::parse("projective" + (props.empty() ? "" : ":" + props)).properties);
     test::RenderedFrame r = test::renderOnce(h, t);
     Frame f;
@@ -67,7 +67,7 @@ Frame render(const std::string& scene, const std::string& props) {
     f.world = std::move(r.world);
     f.counters = std::move(r.counters);
     for (const Light& l : h.scene().lights)
-        f.projectors.push_back(ProjectiveTechnique::computeProjector(h.scene(), l).viewProj);
+        f.projectors.push_back(ProjectiveGL::computeProjector(h.scene(), l).viewProj);
     f.resolution = int(t.properties().getInt("resolution"));
     f.blur = int(t.properties().getInt("blur"));
     return f;
@@ -294,7 +294,7 @@ TEST_P(ProjectiveInside, ShadowsWhereTheReferenceDoesAndStaysFinite) {
   "cameras": [{"name": "top", "eye": [0, 5, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov": 50,
                "near": 0.5, "far": 50}]})");
     Harness h(test::quickConfig(path, "top", kSize));
-    ProjectiveTechnique t;
+    ProjectiveGL t;
     h.prepare(t);
     AccuracyEvaluator evaluator(h);
     AccuracyOptions options;
@@ -317,8 +317,8 @@ TEST_P(ProjectiveInside, ShadowsWhereTheReferenceDoesAndStaysFinite) {
     EXPECT_GE(double(both) / referenceShadow, 0.97) << both << " of " << referenceShadow;
     EXPECT_LE(falseShadow, judged / 100);
     EXPECT_EQ(test::counter(t.counters(), "projector_clamped"), c.clamped) << c.clampedWhy;
-    const ProjectiveTechnique::Projector p =
-        ProjectiveTechnique::computeProjector(h.scene(), h.scene().lights[0]);
+    const ProjectiveGL::Projector p =
+        ProjectiveGL::computeProjector(h.scene(), h.scene().lights[0]);
     for (int col = 0; col < 4; ++col)
         for (int row = 0; row < 4; ++row) EXPECT_TRUE(std::isfinite(p.viewProj[col][row]));
     const NumericSanity sanity = AccuracyMetrics::sanity(s.techniqueRgba);
@@ -355,7 +355,7 @@ TEST(ProjectiveGLTest, TwoLightsMatchTheirOwnClosedForms) {
 
 // What the technique declares: honest effects (no self-shadowing, no soft shadows), its passes, knobs.
 TEST(ProjectiveGLTest, DeclaresItsEffectsPassesAndKnobs) {
-    ProjectiveTechnique t;
+    ProjectiveGL t;
     const TechniqueInfo& info = t.info();
     EXPECT_EQ(info.name, "projective");
     EXPECT_EQ(info.effects,

@@ -20,7 +20,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/proxy/ProxyTechnique.h"
+#include "techniques/proxy/ProxyGL.h"
 
 using namespace sb;
 
@@ -252,7 +252,7 @@ double closeUp(const char* camera, double x, double z, double height, double* st
                double* span) {
     Harness h(
         test::quickConfig(std::string(SB_SOURCE_DIR) + "/tests/hard/scenes/proxy_ball.json", camera, kSize));
-    ProxyTechnique t;
+    ProxyGL t;
     t.properties().apply(TechniqueSpec::parse("proxy:offset=2").properties);
     h.prepare(t);
     h.renderFrame(t);

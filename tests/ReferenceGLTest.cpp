@@ -14,7 +14,7 @@
 
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
-#include "reference/ReferenceTechnique.h"
+#include "reference/ReferenceGL.h"
 #include "scenes/Math.h"
 
 using namespace sb;
@@ -64,7 +64,7 @@ struct Frame {
     std::vector<float> visibility;
 };
 
-Frame renderReference(Harness& h, ReferenceTechnique& ref) {
+Frame renderReference(Harness& h, ReferenceGL& ref) {
     h.prepare(ref);
     h.renderFrame(ref);
     Frame f;
@@ -82,7 +82,7 @@ TEST_P(HardShadow, MatchesAnalyticEllipse) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize, GetParam());
     cfg.sceneOptions.tessellation = 64;
     Harness h(cfg);
-    ReferenceTechnique ref;
+    ReferenceGL ref;
     Frame f = renderReference(h, ref);
     const Scene& scene = h.scene();
     SphereGeometry sphere = sphereOf(scene);
@@ -147,14 +147,14 @@ std::string softScenePath(double angularRadiusDeg) {
     return path;
 }
 
-TEST(ReferenceTechnique, SoftShadowOfASunDisk) {
+TEST(ReferenceGL, SoftShadowOfASunDisk) {
     constexpr int kSize = 192;
     constexpr double kAngularRadiusDeg = 5.0;
     RunConfig cfg = test::quickConfig(softScenePath(kAngularRadiusDeg), "top", kSize);
     cfg.sceneOptions.tessellation = 64;
     Harness h(cfg);
     ASSERT_TRUE(h.scene().lights[0].isArea());
-    ReferenceTechnique ref;
+    ReferenceGL ref;
     Frame f = renderReference(h, ref);
     SphereGeometry sphere = sphereOf(h.scene());
     glm::dvec3 toLight = -glm::normalize(glm::dvec3(h.scene().lights[0].direction));
@@ -205,10 +205,10 @@ TEST(ReferenceTechnique, SoftShadowOfASunDisk) {
     EXPECT_GT(test::counter(c, "noise_bound"), 0.0);
 }
 
-TEST(ReferenceTechnique, HardPropertyTreatsAreaLightsAsPoints) {
+TEST(ReferenceGL, HardPropertyTreatsAreaLightsAsPoints) {
     constexpr int kSize = 96;
     Harness h(test::quickConfig(softScenePath(5.0), "top", kSize));
-    ReferenceTechnique ref;
+    ReferenceGL ref;
     ref.properties().apply(TechniqueSpec::parse("reference:hard=true:samples=16").properties);
     Frame f = renderReference(h, ref);
     int shadowed = 0, fractional = 0;

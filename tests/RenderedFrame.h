@@ -8,7 +8,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb::test {
 
@@ -21,7 +21,7 @@ struct RenderedFrame {
 };
 
 /// Prepares `technique` on `harness`, renders one frame and reads the targets back.
-inline RenderedFrame renderOnce(Harness& harness, Technique& technique) {
+inline RenderedFrame renderOnce(Harness& harness, GlTechnique& technique) {
     harness.prepare(technique);
     harness.renderFrame(technique);
     RenderedFrame f;
@@ -40,7 +40,7 @@ inline RenderedFrame renderOnce(Harness& harness, Technique& technique) {
 inline RenderedFrame renderSpec(const std::string& scene, const std::string& camera, int size,
                                 const std::string& spec) {
     Harness h(quickConfig(scene, camera, size));
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
     return renderOnce(h, *t);
 }
 

@@ -49,7 +49,7 @@
 #include "bench/run/Harness.h"
 #include "core/Error.h"
 #include "scenes/SceneLoader.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
@@ -145,7 +145,7 @@ public:
         const std::string exception = valueOf(c, axes[4]);
         if (exception == kNonReceiver && !scene.instances.empty()) scene.instances[0].receivesShadow = false;
         if (exception == kUnshadowedLight && !scene.lights.empty()) scene.lights[0].castsShadows = false;
-        std::unique_ptr<Technique> t = TechniqueRegistry::create(technique);
+        std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(technique);
         for (size_t i = kSceneAxes; i < axes.size(); ++i)
             t->properties().set(axes[i].name, valueOf(c, axes[i]));
         if (!t->checkCapabilities(h.context()).empty()) return kUnsupported;
@@ -438,7 +438,7 @@ TEST_P(ShaderPermutationsTest, EveryPermutationCompilesWithGlslang) {
     std::set<std::string> programs; ///< distinct stage paths
     std::vector<Axis> axes = sceneAxes();
     {
-        const std::unique_ptr<Technique> technique = TechniqueRegistry::create(name);
+        const std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(name);
         // The hybrid's properties name its parts, whose programs are explored as techniques of their
         // own; its scene axes at the default parts show that the parts compile side by side.
         if (name != "hybrid")

@@ -20,7 +20,7 @@
 #include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
@@ -111,7 +111,7 @@ TEST(ShadowExceptions, EveryTechniqueLeavesAnUnshadowedLightAndANonReceiverLit) 
         Harness h(test::quickConfig(scene, "view", kSize, mode));
         for (const std::string& name : techniques()) {
             SCOPED_TRACE(name + " " + submitModeName(mode));
-            std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
+            std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
             const Judged j = judge(test::renderOnce(h, *t));
             ASSERT_GT(j.floor, 1000u);
             ASSERT_GT(j.boxTop, 100u);
@@ -135,7 +135,7 @@ TEST(ShadowExceptions, TheBoxTopIsShadowedWhenItReceives) {
     for (const std::string name :
          {"shadowmap", "cascaded", "pcss", "vsm", "esm", "cubemap", "paraboloid", "volume", "reference"}) {
         SCOPED_TRACE(name);
-        std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
+        std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
         const Judged j = judge(test::renderOnce(h, *t));
         EXPECT_LT(j.minBoxTop0, 0.5);
         EXPECT_GT(j.minLight1, 1.0 - 1e-3);
@@ -153,7 +153,7 @@ TEST(ShadowExceptions, ALightThatCastsNoShadowRunsNoShadowPass) {
         {"projective", {"texture", "blur"}}};
     for (const auto& [name, passes] : expected) {
         SCOPED_TRACE(name);
-        std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
+        std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
         h.prepare(*t);
         const FrameLoads loads = h.measureLoads(*t);
         for (const std::string& pass : passes) {
@@ -175,12 +175,12 @@ TEST(ShadowExceptions, PermutationsCarryTheExceptionsOnlyWhereTheSceneHasThem) {
     const std::string excepted = writeScene("excepted", false, kTwoLights);
     for (const std::string name : {"shadowmap", "occluder", "proxy", "projective"}) {
         SCOPED_TRACE(name);
-        std::unique_ptr<Technique> a = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
+        std::unique_ptr<GlTechnique> a = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
         Harness ha(test::quickConfig(plain, "view", 64));
         const std::string plainKey = test::renderOnce(ha, *a).permutation;
         EXPECT_EQ(plainKey.find("SB_NON_RECEIVERS"), std::string::npos) << plainKey;
         EXPECT_EQ(plainKey.find("SB_SHADOWLESS_LIGHTS"), std::string::npos) << plainKey;
-        std::unique_ptr<Technique> b = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
+        std::unique_ptr<GlTechnique> b = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
         Harness hb(test::quickConfig(excepted, "view", 64));
         const std::string key = test::renderOnce(hb, *b).permutation;
         EXPECT_NE(key.find("SB_NON_RECEIVERS"), std::string::npos) << key;

@@ -10,7 +10,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "scenes/SceneLoader.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

@@ -20,7 +20,7 @@
 #include "bench/run/Harness.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
@@ -68,7 +68,7 @@ TEST_P(KernelEllipse, MatchesAnalyticEllipseOffTheEdgeBand) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize, tc.submit);
     cfg.sceneOptions.tessellation = 64;
     Harness h(cfg);
-    std::unique_ptr<Technique> sm =
+    std::unique_ptr<GlTechnique> sm =
         TechniqueRegistry::create(TechniqueSpec::parse(std::string("shadowmap:") + tc.properties));
     test::RenderedFrame f = test::renderOnce(h, *sm);
 
@@ -146,7 +146,7 @@ TEST(ShadowMapFiltering, KernelsChangeThePenumbraWidth) {
 TEST(ShadowMapFiltering, RotatedGridIsTheSameInEveryModeAndRun) {
     auto once = [](SubmitMode m) {
         Harness h(test::quickConfig("sphere_plane", "near", 192, m));
-        std::unique_ptr<Technique> t =
+        std::unique_ptr<GlTechnique> t =
             TechniqueRegistry::create(TechniqueSpec::parse("shadowmap:kernel=rotated_grid:radius=4"));
         return test::renderOnce(h, *t).visibility;
     };
@@ -164,7 +164,7 @@ TEST(ShadowMapFiltering, RotatedGridIsTheSameInEveryModeAndRun) {
 HardMetrics grazing(const std::string& spec) {
     Harness h(
         test::quickConfig(std::string(SB_SOURCE_DIR) + "/tests/hard/scenes/grazing_80.json", "side", 384));
-    std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
+    std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(spec));
     h.prepare(*t);
     AccuracyEvaluator evaluator(h);
     AccuracyOptions options;

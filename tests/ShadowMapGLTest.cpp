@@ -11,8 +11,8 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/none/NoneTechnique.h"
-#include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/none/NoneGL.h"
+#include "techniques/shadowmap/ShadowMapGL.h"
 
 using namespace sb;
 
@@ -44,7 +44,7 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
     cfg.sceneOptions.tessellation = 64; // polygonal silhouette within r(1 - cos(pi/64)) = 1.2e-3 r
     cfg.sceneOptions.lightType = LightType::Directional;
     Harness h(cfg);
-    ShadowMapTechnique sm;
+    ShadowMapGL sm;
     TechniqueSpec spec =
         TechniqueSpec::parse(std::string("shadowmap") + (*tc.techniqueProps ? ":" : "") + tc.techniqueProps);
     sm.properties().apply(spec.properties);
@@ -58,9 +58,9 @@ TEST_P(SphereShadow, MatchesAnalyticEllipse) {
 INSTANTIATE_TEST_SUITE_P(ShadowMap, SphereShadow, ::testing::ValuesIn(kCases),
                          [](const auto& p) { return std::string(p.param.name); });
 
-TEST(NoneTechnique, VisibilityIsOneEverywhere) {
+TEST(NoneGL, VisibilityIsOneEverywhere) {
     Harness h(test::quickConfig("sphere_plane", "top", 128));
-    NoneTechnique none;
+    NoneGL none;
     h.prepare(none);
     h.renderFrame(none);
     auto vis = h.targets().readVisibilityRGBA32F();
@@ -72,11 +72,11 @@ TEST(NoneTechnique, VisibilityIsOneEverywhere) {
     EXPECT_GT(std::count_if(depth.begin(), depth.end(), [](float d) { return d < 1.0f; }), 128 * 128 / 4);
 }
 
-TEST(ShadowMapTechnique, PointLightIsRefusedAsUnsupported) {
+TEST(ShadowMapGL, PointLightIsRefusedAsUnsupported) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 64);
     cfg.sceneOptions.lightType = LightType::Point;
     Harness h(cfg);
-    ShadowMapTechnique sm;
+    ShadowMapGL sm;
     try {
         h.prepare(sm);
         FAIL() << "point light accepted";
@@ -86,13 +86,13 @@ TEST(ShadowMapTechnique, PointLightIsRefusedAsUnsupported) {
     }
 }
 
-TEST(ShadowMapTechnique, SpotLightShadowsTheGroundUnderTheSphere) {
+TEST(ShadowMapGL, SpotLightShadowsTheGroundUnderTheSphere) {
     // Spot straight above the sphere: the point on the ground below the centre is shadowed, a point
     // far outside the sphere's projection but inside the cone is lit.
     RunConfig cfg = test::quickConfig("sphere_plane", "top", 256);
     cfg.sceneOptions.lightType = LightType::Spot;
     Harness h(cfg);
-    ShadowMapTechnique sm;
+    ShadowMapGL sm;
     h.prepare(sm);
     h.renderFrame(sm);
     const Scene& scene = h.scene();

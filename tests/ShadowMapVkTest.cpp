@@ -10,7 +10,7 @@
 #include "TestSupport.h"
 #include "VkTestSupport.h"
 #include "bench/run/VulkanHarness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

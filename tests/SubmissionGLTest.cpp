@@ -9,7 +9,7 @@
 
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

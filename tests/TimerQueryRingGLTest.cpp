@@ -46,7 +46,7 @@ void runFrame(TimerQueryRing& ring, const FrameTargets& targets) {
     ring.endFrame();
 }
 
-void expectWellFormed(const PassGpuTimes& times) {
+void expectWellFormed(const PassTimes& times) {
     ASSERT_EQ(times.passMs.size(), 2u);
     EXPECT_EQ(times.passMs[0].first, kShadowPass);
     EXPECT_EQ(times.passMs[1].first, kLightingPass);
@@ -64,14 +64,14 @@ TEST_F(TimerQueryRingGLTest, EveryFrameReportedInOrderWhenRingIsDeepEnough) {
     constexpr int kFrames = 6;
     FrameTargets targets(64, 64);
     TimerQueryRing ring(kFrames + 2); // no slot is reused, so nothing can be dropped
-    std::vector<PassGpuTimes> records;
+    std::vector<PassTimes> records;
     for (int f = 0; f < kFrames; ++f) {
         runFrame(ring, targets);
-        std::vector<PassGpuTimes> ready = ring.collect(); // right after endFrame: may be fewer than f + 1
+        std::vector<PassTimes> ready = ring.collect(); // right after endFrame: may be fewer than f + 1
         records.insert(records.end(), ready.begin(), ready.end());
         EXPECT_LE(records.size(), static_cast<size_t>(f + 1));
     }
-    std::vector<PassGpuTimes> rest = ring.drain();
+    std::vector<PassTimes> rest = ring.drain();
     records.insert(records.end(), rest.begin(), rest.end());
     ASSERT_EQ(records.size(), static_cast<size_t>(kFrames));
     for (size_t i = 0; i < records.size(); ++i) {
@@ -89,12 +89,12 @@ TEST_F(TimerQueryRingGLTest, ShallowRingNeverLosesCountOfFrames) {
     FrameTargets targets(32, 32);
     TimerQueryRing ring(2);
     for (int f = 0; f < kFrames; ++f) runFrame(ring, targets);
-    std::vector<PassGpuTimes> records = ring.collect();
-    std::vector<PassGpuTimes> rest = ring.drain();
+    std::vector<PassTimes> records = ring.collect();
+    std::vector<PassTimes> rest = ring.drain();
     records.insert(records.end(), rest.begin(), rest.end());
     EXPECT_EQ(records.size() + ring.droppedFrames(), static_cast<size_t>(kFrames));
     for (size_t i = 1; i < records.size(); ++i) EXPECT_LT(records[i - 1].frame, records[i].frame);
-    for (const PassGpuTimes& times : records) expectWellFormed(times);
+    for (const PassTimes& times : records) expectWellFormed(times);
 }
 
 TEST_F(TimerQueryRingGLTest, TooManyPassesIsAnError) {

@@ -23,7 +23,7 @@
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/backends/BackendRegistry.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 namespace {
@@ -222,7 +222,7 @@ TEST(TimerRecheck, TrustedVerdictIsWithdrawnAfterARunThatCannotConfirmIt) {
     if (harness.context().renderer.find("llvmpipe") == std::string::npos)
         GTEST_SKIP() << "needs a timer that fails the calibration; renderer is "
                      << harness.context().renderer;
-    std::unique_ptr<Technique> technique = TechniqueRegistry::create("shadowmap");
+    std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create("shadowmap");
     harness.setTimerVerdict(TimerTrust::judge(threeOf(kProportional)));
     ASSERT_TRUE(harness.timerQueriesEnabled());
 

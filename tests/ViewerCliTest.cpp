@@ -32,7 +32,7 @@
 #include "bench/viewer/Overlay.h"
 #include "bench/viewer/OverlayFont.h"
 #include "bench/viewer/RollingMedian.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 using test::runCommand;

@@ -13,7 +13,7 @@
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
 #include "scenes/Math.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 #include "techniques/volume/VolumeGeometry.h"
 
 using namespace sb;

@@ -59,8 +59,8 @@ public:
         : mContext(context), mCache(context, test::testShaderRoot()) {
         mLayout = createPipelineLayout(context, {}, sizeof(float) * 4);
         GraphicsPipelineDesc desc;
-        desc.vertex = mCache.get("vk/triangle.vert", {}, GL_VERTEX_SHADER);
-        desc.fragment = mCache.get("vk/triangle.frag", {}, GL_FRAGMENT_SHADER);
+        desc.vertex = mCache.get("vk/triangle.vert", {}, ShaderStage::Vertex);
+        desc.fragment = mCache.get("vk/triangle.frag", {}, ShaderStage::Fragment);
         desc.colourAttachments = targets.colourAttachments();
         desc.renderPass = targets.renderPass();
         desc.layout = mLayout;
@@ -138,7 +138,7 @@ TEST_F(VulkanTargetsVkTest, TimestampsPerPass) {
     VulkanTargets targets(context(), kWidth, kHeight);
     TriangleRender triangle(context(), targets);
     TimestampRing ring(context(), 4, 2);
-    std::vector<VulkanPassTimes> frames;
+    std::vector<PassTimes> frames;
     for (uint64_t frame = 0; frame < 3; ++frame) {
         context().submitNow([&](VkCommandBuffer cmd) {
             ring.beginFrame(cmd, frame);
@@ -150,12 +150,12 @@ TEST_F(VulkanTargetsVkTest, TimestampsPerPass) {
             triangle.record(cmd, targets);
             ring.endFrame(cmd);
         });
-        for (VulkanPassTimes& t : ring.collect()) frames.push_back(std::move(t));
+        for (PassTimes& t : ring.collect()) frames.push_back(std::move(t));
     }
-    for (VulkanPassTimes& t : ring.collect()) frames.push_back(std::move(t)); // none left: submitNow waited
+    for (PassTimes& t : ring.collect()) frames.push_back(std::move(t)); // none left: submitNow waited
     ASSERT_EQ(frames.size(), 3u);
     for (uint64_t i = 0; i < frames.size(); ++i) {
-        const VulkanPassTimes& t = frames[i];
+        const PassTimes& t = frames[i];
         EXPECT_EQ(t.frame, i);
         ASSERT_EQ(t.passMs.size(), 2u);
         EXPECT_EQ(t.passMs[0].first, "clear");

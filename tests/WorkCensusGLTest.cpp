@@ -7,7 +7,7 @@
 #include "TestSupport.h"
 #include "bench/run/Harness.h"
 #include "gl/PipelineStatistics.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

@@ -9,7 +9,8 @@
 
 #include "core/Error.h"
 #include "core/Paths.h"
-#include "gl/ShaderPreprocessor.h"
+#include "shading/CompileLog.h"
+#include "shading/ShaderPreprocessor.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
@@ -23,21 +24,23 @@ void initializeGlslang() {
     std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-EShLanguage language(GLenum stage) {
+EShLanguage language(ShaderStage stage) {
     switch (stage) {
-    case GL_VERTEX_SHADER:
+    case ShaderStage::Vertex:
         return EShLangVertex;
-    case GL_FRAGMENT_SHADER:
+    case ShaderStage::Fragment:
         return EShLangFragment;
-    case GL_GEOMETRY_SHADER:
+    case ShaderStage::Geometry:
         return EShLangGeometry;
-    default:
-        throw Error("vulkan: unknown shader stage 0x" + std::to_string(stage), ExitCode::Failure);
+    case ShaderStage::Compute:
+        return EShLangCompute;
     }
+    throw Error("vulkan: unknown shader stage", ExitCode::Failure);
 }
 
 /// Compiles `source` to SPIR-V for Vulkan 1.2; false with glslang's log in `log` on failure.
-bool compileToSpirv(const std::string& source, GLenum stage, std::vector<uint32_t>& spirv, std::string& log) {
+bool compileToSpirv(const std::string& source, ShaderStage stage, std::vector<uint32_t>& spirv,
+                    std::string& log) {
     initializeGlslang();
     const EShLanguage lang = language(stage);
     glslang::TShader shader(lang);
@@ -68,27 +71,6 @@ bool compileToSpirv(const std::string& source, GLenum stage, std::vector<uint32_
     return true;
 }
 
-/// The first line that says "error" leads (the one line a user sees); the whole log follows.
-std::string leadWithFirstError(std::string log) {
-    log.erase(log.find_last_not_of(" \n\r\t") + 1);
-    size_t start = 0;
-    while (start < log.size()) {
-        size_t end = log.find('\n', start);
-        std::string line = log.substr(start, end == std::string::npos ? std::string::npos : end - start);
-        if (line.find("error") != std::string::npos || line.find("ERROR") != std::string::npos)
-            return line + (log == line ? "" : "\nfull log:\n" + log);
-        if (end == std::string::npos) break;
-        start = end + 1;
-    }
-    return log;
-}
-
-std::string fullKey(const Defines& defines) {
-    std::string key;
-    for (const auto& [name, value] : defines) key += name + "=" + (value.empty() ? "1" : value) + ";";
-    return key;
-}
-
 } // namespace
 
 ShaderModuleCache::ShaderModuleCache(VulkanContext& context, std::string shaderRoot)
@@ -99,19 +81,40 @@ ShaderModuleCache::~ShaderModuleCache() {
     for (auto& [key, module] : mModules) vkDestroyShaderModule(mContext.device(), module, nullptr);
 }
 
-std::vector<uint32_t> ShaderModuleCache::compile(const std::string& source, GLenum stage,
+std::vector<uint32_t> ShaderModuleCache::compile(const std::string& source, ShaderStage stage,
                                                  const std::string& name) {
     std::vector<uint32_t> spirv;
     std::string log;
     if (!compileToSpirv(source, stage, spirv, log))
-        throw Error("vulkan: cannot compile " + std::string(ShaderPreprocessor::stageName(stage)) +
-                        " shader '" + name + "': " + leadWithFirstError(log),
+        throw Error("vulkan: cannot compile " + std::string(stageName(stage)) + " shader '" + name +
+                        "': " + leadWithFirstError(log),
                     ExitCode::Failure);
     return spirv;
 }
 
-VkShaderModule ShaderModuleCache::get(const std::string& file, const Defines& defines, GLenum stage) {
-    auto key = std::make_tuple(file, fullKey(defines), stage);
+ShaderModules ShaderModuleCache::get(const ShaderSources& sources, const Defines& defines) {
+    mDump.record(sources, defines, [&](const std::string& file, ShaderStage stage) {
+        return preprocess(file, defines, stage);
+    });
+    ShaderModules modules;
+    for (const auto& [stage, file] : sources.stages()) {
+        const VkShaderModule module = get(*file, defines, stage);
+        (stage == ShaderStage::Vertex     ? modules.vertex
+         : stage == ShaderStage::Geometry ? modules.geometry
+                                          : modules.fragment) = module;
+    }
+    return modules;
+}
+
+std::string ShaderModuleCache::preprocess(const std::string& file, const Defines& defines,
+                                          ShaderStage stage) const {
+    ShaderPreprocessor preprocessor(mRoot);
+    preprocessor.setVersionLine(kVersionLine);
+    return preprocessor.build(file, defines, stage);
+}
+
+VkShaderModule ShaderModuleCache::get(const std::string& file, const Defines& defines, ShaderStage stage) {
+    auto key = std::make_tuple(file, fullDefinesKey(defines), stage);
     if (auto it = mModules.find(key); it != mModules.end()) return it->second;
 
     ShaderPreprocessor preprocessor(mRoot);
@@ -122,8 +125,8 @@ VkShaderModule ShaderModuleCache::get(const std::string& file, const Defines& de
     ++mCompiles;
     if (!compileToSpirv(source, stage, spirv, log)) {
         const std::string permutation = definesKey(defines);
-        throw Error("vulkan: cannot compile " + std::string(ShaderPreprocessor::stageName(stage)) +
-                        " shader '" + file + "'" + (permutation.empty() ? "" : " [" + permutation + "]") +
+        throw Error("vulkan: cannot compile " + std::string(stageName(stage)) + " shader '" + file + "'" +
+                        (permutation.empty() ? "" : " [" + permutation + "]") +
                         ": " + leadWithFirstError(preprocessor.mapLog(log)),
                     ExitCode::Failure);
     }

@@ -67,7 +67,7 @@ void TimestampRing::endFrame(VkCommandBuffer cmd) {
     mWritten = 0;
 }
 
-std::vector<VulkanPassTimes> TimestampRing::collect() {
+std::vector<PassTimes> TimestampRing::collect() {
     std::vector<Slot*> pending;
     for (Slot& slot : mSlots)
         if (slot.pending) pending.push_back(&slot);
@@ -75,7 +75,7 @@ std::vector<VulkanPassTimes> TimestampRing::collect() {
               [](const Slot* a, const Slot* b) { return a->frame < b->frame; });
 
     const double msPerTick = mContext.timestampPeriodNs() * 1e-6;
-    std::vector<VulkanPassTimes> out;
+    std::vector<PassTimes> out;
     std::vector<uint64_t> ticks;
     for (Slot* slot : pending) {
         const uint32_t first = static_cast<uint32_t>(slot - mSlots.data()) * (mPerFrame + 1);
@@ -88,7 +88,7 @@ std::vector<VulkanPassTimes> TimestampRing::collect() {
         auto elapsed = [&](uint32_t a, uint32_t b) {
             return double((ticks[b] - ticks[a]) & mMask) * msPerTick;
         };
-        VulkanPassTimes times;
+        PassTimes times;
         times.frame = slot->frame;
         // With no pass named, the frame is one span (stamps == 2).
         for (size_t k = 0; k < slot->names.size(); ++k)

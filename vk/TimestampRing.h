@@ -12,16 +12,13 @@
 
 #include <vulkan/vulkan.h>
 
+#include "core/PassTimes.h"
+
 namespace sb {
 
 class VulkanContext;
 
 /// One frame's pass times in milliseconds, in the order the passes began (a pass may repeat).
-struct VulkanPassTimes {
-    uint64_t frame = 0;
-    std::vector<std::pair<std::string, double>> passMs;
-    double totalMs = 0.0;
-};
 
 class TimestampRing {
 public:
@@ -41,7 +38,7 @@ public:
     /// Ends the last pass of the frame.
     void endFrame(VkCommandBuffer cmd);
     /// Frames whose timestamps are available, oldest first; never waits.
-    std::vector<VulkanPassTimes> collect();
+    std::vector<PassTimes> collect();
 
 private:
     struct Slot {

@@ -1,5 +1,6 @@
 #include "vk/VulkanContext.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -328,6 +329,15 @@ void VulkanContext::pickDevice(int index) {
     }
     mPhysical = devices[chosen];
     mInfo = describe(mPhysical, chosen, &mProperties);
+    uint32_t extensions = 0;
+    vkEnumerateDeviceExtensionProperties(mPhysical, nullptr, &extensions, nullptr);
+    std::vector<VkExtensionProperties> offered(extensions);
+    vkEnumerateDeviceExtensionProperties(mPhysical, nullptr, &extensions, offered.data());
+    for (const VkExtensionProperties& e : offered) mDeviceExtensions.emplace_back(e.extensionName);
+}
+
+bool VulkanContext::hasDeviceExtension(const std::string& name) const {
+    return std::find(mDeviceExtensions.begin(), mDeviceExtensions.end(), name) != mDeviceExtensions.end();
 }
 
 void VulkanContext::createDevice() {

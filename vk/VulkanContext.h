@@ -67,6 +67,8 @@ public:
     bool pipelineStatistics() const { return mPipelineStatistics; }
     /// Blend state per colour attachment (volume's light pass: colour ADD, visibility MAX).
     bool independentBlend() const { return mIndependentBlend; }
+    /// Whether the physical device offers device extension `name` ("VK_KHR_ray_query").
+    bool hasDeviceExtension(const std::string& name) const;
 
     /// A memory type index with `bits` allowed and `flags` set. Throws sb::Error(Failure) when none.
     uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags flags) const;
@@ -115,6 +117,7 @@ private:
     bool mIndependentBlend = false;
     std::vector<std::string> mMessages;
     size_t mErrors = 0;
+    std::vector<std::string> mDeviceExtensions; ///< what the physical device offers (pickDevice)
 };
 
 } // namespace sb

@@ -18,7 +18,7 @@
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "core/Strings.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 

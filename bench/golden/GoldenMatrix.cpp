@@ -14,7 +14,7 @@
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "scenes/SceneLoader.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -97,7 +97,7 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
     cell.technique = cellName;
     cell.scene = scene;
     cell.mode = harness.config().submit;
-    std::unique_ptr<Technique> technique = TechniqueRegistry::create(spec);
+    std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(spec);
     harness.seekPath(0); // a scene in motion starts each cell at rest
     try {
         harness.prepare(*technique);

@@ -13,7 +13,7 @@
 #include "bench/golden/ImageDiff.h"
 #include "reference/AccuracyMetrics.h"
 #include "scenes/Scene.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
 

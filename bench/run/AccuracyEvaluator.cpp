@@ -69,7 +69,7 @@ bool lightArrives(const Light& light, const glm::vec3& p) {
 }
 } // namespace
 
-AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, const AccuracyOptions& o,
+AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(GlTechnique& technique, const AccuracyOptions& o,
                                                         TraceStats* stats) {
     mHarness.renderFrame(technique);
     return judgeVisibility(mHarness.targets().readVisibilityRGBA32F(), o, stats);
@@ -106,7 +106,7 @@ uint64_t AccuracyEvaluator::techniqueChanges(const Sample& a, const Sample& b) c
     return AccuracyMetrics::changedSamples(a.technique, b.technique, both);
 }
 
-void AccuracyEvaluator::measureStability(Technique& technique, const AccuracyOptions& o, const Sample& base,
+void AccuracyEvaluator::measureStability(GlTechnique& technique, const AccuracyOptions& o, const Sample& base,
                                          AccuracyResult& r) {
     auto referenceChanges = [](const Sample& a, const Sample& b) {
         std::vector<uint8_t> both(a.mask.size());
@@ -148,7 +148,7 @@ void AccuracyEvaluator::measureStability(Technique& technique, const AccuracyOpt
     r.stabilityMeasured = true;
 }
 
-AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyOptions& o) {
+AccuracyResult AccuracyEvaluator::evaluate(GlTechnique& technique, const AccuracyOptions& o) {
     AccuracyResult r = start(o);
     mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
     const Sample base = judgeFrame(technique, o, &r.reference);
@@ -204,7 +204,7 @@ void AccuracyEvaluator::score(const Sample& base, const AccuracyOptions& o, Accu
     r.soft = AccuracyMetrics::soft(base.technique, base.reference, base.mask);
 }
 
-void AccuracyEvaluator::measurePath(Technique& technique, const AccuracyOptions& o, AccuracyResult& r) {
+void AccuracyEvaluator::measurePath(GlTechnique& technique, const AccuracyOptions& o, AccuracyResult& r) {
     const Motion& motion = *mHarness.scene().motion;
     const int w = mHarness.config().width, h = mHarness.config().height;
     AccuracyResult::Path path;

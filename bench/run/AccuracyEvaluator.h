@@ -77,11 +77,13 @@ public:
     ~AccuracyEvaluator();
     /// The technique must have been prepared on this harness (Harness::measure does it). Restores the
     /// harness's camera shift and lights afterwards.
-    AccuracyResult evaluate(Technique& technique, const AccuracyOptions& options);
+    AccuracyResult evaluate(GlTechnique& technique, const AccuracyOptions& options);
     /// The same judgement of one frame's visibility rendered by another API for this harness's
     /// configuration (bench accuracy --api vulkan): hard and soft metrics and the numeric sanity, no
     /// stability (the perturbations would have to be rendered by that API too) and no path.
     AccuracyResult evaluateVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options);
+    /// Whether `harness` is the one this evaluator renders with (evaluate() can re-render its frames).
+    bool rendersWith(const MeasuredHarness& harness) const { return &harness == &mHarness; }
 
     /// One judged image: the technique's and the reference's visibility of the light, and the mask.
     struct Sample {
@@ -89,7 +91,7 @@ public:
         std::vector<uint8_t> mask;
         std::vector<float> techniqueRgba; ///< the whole read-back, for the numeric sanity check
     };
-    Sample judgeFrame(Technique& technique, const AccuracyOptions& options, TraceStats* stats);
+    Sample judgeFrame(GlTechnique& technique, const AccuracyOptions& options, TraceStats* stats);
     /// The same judgement of a visibility read-back rendered elsewhere (RGBA per pixel, rows bottom-up,
     /// the harness's size and camera): another API's frame of the same configuration (bench accuracy
     /// --api vulkan, the matrix's Vulkan cells) against this harness's G-buffer and reference.
@@ -106,11 +108,11 @@ private:
     /// Hard, soft and sanity metrics of `base` into `result`; throws when no pixel can be judged.
     void score(const Sample& base, const AccuracyOptions& options, AccuracyResult& result) const;
     uint64_t techniqueChanges(const Sample& a, const Sample& b) const;
-    void measureStability(Technique& technique, const AccuracyOptions& options, const Sample& base,
+    void measureStability(GlTechnique& technique, const AccuracyOptions& options, const Sample& base,
                           AccuracyResult& result);
     /// A scene in motion: the metrics along the path (AccuracyResult::Path); the harness is left at
     /// the path's start.
-    void measurePath(Technique& technique, const AccuracyOptions& options, AccuracyResult& result);
+    void measurePath(GlTechnique& technique, const AccuracyOptions& options, AccuracyResult& result);
     /// The Embree scene rebuilt where the harness's casters stand now (a scene in motion).
     void followCasters();
     /// Keeps `sample` (without its RGBA read-back) as lastJudged().

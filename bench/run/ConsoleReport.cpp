@@ -9,7 +9,7 @@
 #include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/SceneLoader.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
@@ -35,7 +35,7 @@ std::string effectsText(EffectMask m) {
 }
 } // namespace
 
-void ConsoleReport::printHeader(std::ostream& os, const Harness& h) {
+void ConsoleReport::printHeader(std::ostream& os, const MeasuredHarness& h) {
     printHeader(os, h.rowSource());
 }
 
@@ -61,7 +61,7 @@ void ConsoleReport::printTimerVerdict(std::ostream& os, const TimerVerdict& v) {
     os << "\n";
 }
 
-void ConsoleReport::printTable(std::ostream& os, const Harness& h, const std::vector<RunResult>& results,
+void ConsoleReport::printTable(std::ostream& os, const MeasuredHarness& h, const std::vector<RunResult>& results,
                                int rounds) {
     printTable(os, h.timerVerdict(), results, rounds);
 }
@@ -147,7 +147,7 @@ void ConsoleReport::printAccuracyTable(std::ostream& os,
 
 void ConsoleReport::printTechniqueList(std::ostream& os) {
     for (const auto& entry : TechniqueRegistry::entries()) {
-        auto t = entry.create();
+        auto t = entry.gl();
         const TechniqueInfo& info = t->info();
         os << info.name << "  " << info.description << "\n";
         os << "  effects:  " << effectsText(info.effects) << "\n";

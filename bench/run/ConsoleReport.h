@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
+#include "bench/run/MeasuredHarness.h"
 
 namespace sb {
 
 class ConsoleReport {
 public:
-    static void printHeader(std::ostream& os, const Harness& harness);
+    static void printHeader(std::ostream& os, const MeasuredHarness& harness);
     /// Either API's run (bench/run/RowSource.h).
     static void printHeader(std::ostream& os, const RowSource& run);
     static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
@@ -22,7 +22,7 @@ public:
     /// ratio column ("vs <first technique>") divides each row's wall median by that of the first
     /// technique of the same round, exactly as the CSV's wall_ratio_vs_baseline does (RunCommand,
     /// Measurement::addRound), so the console and the rows never disagree.
-    static void printTable(std::ostream& os, const Harness& harness, const std::vector<RunResult>& results,
+    static void printTable(std::ostream& os, const MeasuredHarness& harness, const std::vector<RunResult>& results,
                            int rounds = 1);
     /// The same with the run's timer verdict given (either API).
     static void printTable(std::ostream& os, const TimerVerdict& verdict,

@@ -6,7 +6,7 @@
 #include <epoxy/gl.h>
 
 #include "gl/ProgramCache.h"
-#include "techniques/PassTimer.h"
+#include "techniques/gl/PassTimer.h"
 
 namespace sb {
 

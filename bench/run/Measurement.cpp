@@ -5,11 +5,17 @@
 
 namespace sb {
 
-Measurement Measurement::take(Harness& harness, Technique& technique, AccuracyEvaluator* evaluator,
+Measurement Measurement::take(MeasuredHarness& harness, Technique& technique, AccuracyEvaluator* evaluator,
                               const AccuracyOptions& options, Environment& env) {
     Measurement m;
     m.run = harness.measure(technique);
-    if (evaluator) m.accuracy = evaluator->evaluate(technique, options);
+    if (evaluator && evaluator->rendersWith(harness)) {
+        m.accuracy = evaluator->evaluate(static_cast<GlTechnique&>(technique), options);
+    } else if (evaluator) {
+        AccuracyOptions visibilityOnly = options;
+        visibilityOnly.stability = false;
+        m.accuracy = evaluator->evaluateVisibility(harness.readVisibility(), visibilityOnly);
+    }
     env.timestamp = Environment::nowIso8601();
     m.row = ResultRow::build(harness, m.run, env);
     if (m.accuracy) m.accuracy->appendColumns(m.row);

@@ -7,7 +7,7 @@
 #include "bench/output/CsvWriter.h"
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Environment.h"
-#include "bench/run/Harness.h"
+#include "bench/run/MeasuredHarness.h"
 
 namespace sb {
 
@@ -16,9 +16,11 @@ struct Measurement {
     std::optional<AccuracyResult> accuracy;
     CsvRow row;
 
-    /// Measures `technique` (Harness::measure), judges it when `evaluator` is not null, and builds the
-    /// row (its timestamp is set to now).
-    static Measurement take(Harness& harness, Technique& technique, AccuracyEvaluator* evaluator,
+    /// Measures `technique` (MeasuredHarness::measure), judges it when `evaluator` is not null, and builds
+    /// the row (its timestamp is set to now). On the evaluator's own harness (GL) the judgement renders
+    /// what it needs (perturbations, the path); on another API's harness it judges the census frame's
+    /// visibility at the same pixels, without the stability perturbations (bench accuracy --api vulkan).
+    static Measurement take(MeasuredHarness& harness, Technique& technique, AccuracyEvaluator* evaluator,
                             const AccuracyOptions& options, Environment& env);
     /// Adds the interleaving columns: `repeat` (the round) and, when `baselineWallMs` is given, the
     /// baseline's spec and this row's wall median over the baseline's of the same round.

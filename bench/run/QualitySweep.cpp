@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 

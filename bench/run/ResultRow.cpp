@@ -74,7 +74,7 @@ CsvRow ResultRow::effectColumns(const EffectCoverage& coverage) {
             {"effects_missing", effectMaskToString(coverage.missing)}};
 }
 
-CsvRow ResultRow::build(const Harness& h, const RunResult& r, const Environment& env) {
+CsvRow ResultRow::build(const MeasuredHarness& h, const RunResult& r, const Environment& env) {
     return build(h.rowSource(), r, env);
 }
 

@@ -5,13 +5,13 @@
 // untrusted numbers as GPU time).
 #include "bench/output/CsvWriter.h"
 #include "bench/run/Environment.h"
-#include "bench/run/Harness.h"
+#include "bench/run/MeasuredHarness.h"
 #include "techniques/EffectCoverage.h"
 
 namespace sb {
 
 struct ResultRow {
-    static CsvRow build(const Harness& harness, const RunResult& result, const Environment& env);
+    static CsvRow build(const MeasuredHarness& harness, const RunResult& result, const Environment& env);
     /// The same row from either API's run (bench/run/RowSource.h).
     static CsvRow build(const RowSource& source, const RunResult& result, const Environment& env);
     /// effects_requested, effects_delivered, effects_missing: in every row, measured or refused.

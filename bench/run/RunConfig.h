@@ -9,7 +9,7 @@
 #include "gl/Context.h"
 #include "scenes/SceneOptions.h"
 #include "techniques/PropertySet.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {

@@ -252,6 +252,10 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     if (c.api == RunConfig::Api::GL && (c.vulkan.device != -1 || c.vulkan.validation))
         throw Error(std::string(c.vulkan.device != -1 ? "--vk-device" : "--vk-validation") +
                     " applies to --api vulkan only");
+    // The GL context's options choose nothing on Vulkan: refused rather than accepted and ignored.
+    if (c.api == RunConfig::Api::Vulkan && (raw.backend != "auto" || c.context.gpu >= 0))
+        throw Error(std::string(c.context.gpu >= 0 ? "--gpu" : "--backend " + raw.backend) +
+                    " chooses the GL context; with --api vulkan the device is chosen with --vk-device");
 }
 
 } // namespace

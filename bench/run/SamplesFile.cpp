@@ -5,7 +5,7 @@
 
 namespace sb {
 
-void SamplesFile::append(const std::string& path, const Harness& harness, const RunResult& r) {
+void SamplesFile::append(const std::string& path, const MeasuredHarness& harness, const RunResult& r) {
     const TimerVerdict& v = harness.timerVerdict();
     std::string prefix = v.checked && v.trusted ? "gpu_" : "timer_query_";
     std::vector<CsvRow> rows;

@@ -4,13 +4,13 @@
 // rather than "gpu" when the verdict is not "trusted".
 #include <string>
 
-#include "bench/run/Harness.h"
+#include "bench/run/MeasuredHarness.h"
 
 namespace sb {
 
 class SamplesFile {
 public:
-    static void append(const std::string& path, const Harness& harness, const RunResult& result);
+    static void append(const std::string& path, const MeasuredHarness& harness, const RunResult& result);
 };
 
 } // namespace sb

@@ -44,7 +44,7 @@ TimedDraw timeDraw(const TextureFramebuffer& target, TimerQueryRing& ring, int i
     ring.endFrame();
     glFinish();
     const double wallMs = msSince(t0);
-    const std::vector<PassGpuTimes> frames = ring.drain();
+    const std::vector<PassTimes> frames = ring.drain();
     return {wallMs, frames.empty() ? 0.0 : frames.back().totalMs};
 }
 

@@ -20,40 +20,17 @@ double msSince(Clock::time_point a, Clock::time_point b) {
 constexpr uint32_t kRingFrames = 4, kPassesPerFrame = 32;
 } // namespace
 
-VulkanHarness::VulkanHarness(const RunConfig& config) : mConfig(config) {
-    auto t0 = Clock::now();
-    mScene = SceneLoader::load(config.scene, config.sceneOptions);
-    mSceneLoadMs = msSince(t0, Clock::now());
-    const CameraPreset* camera = mScene.findCamera(config.camera);
-    if (!camera)
-        throw Error("--camera " + config.camera + ": scene '" + mScene.name +
-                    "' has no such camera (known: " +
-                    join(mScene.cameras, ", ", [](const CameraPreset& c) { return c.name; }) + ")");
-    mCamera = *camera;
-    mContentHash = mScene.computeContentHash();
-    if (mScene.motion)
-        throw Error("scene '" + mScene.name +
-                        "' moves (\"motion\"); scenes in motion run on GL only for now (--api gl)",
-                    ExitCode::Unsupported);
-    if (mScene.lights.size() > size_t(kMaxLights))
-        throw Error("scene '" + mScene.name + "' has " + std::to_string(mScene.lights.size()) +
-                    " lights; at most " + std::to_string(kMaxLights) + " are supported");
-
+VulkanHarness::VulkanHarness(const RunConfig& config) : MeasuredHarness(config, false) {
     mContext = std::make_unique<VulkanContext>(config.vulkan);
     mTargets = std::make_unique<VulkanTargets>(*mContext, config.width, config.height);
     mShaders = std::make_unique<ShaderModuleCache>(*mContext);
     mPipelines = std::make_unique<VulkanPipelineCache>(*mContext);
     mFrameBlock = std::make_unique<VulkanFrameBlock>(*mContext);
     mSubmitter = std::make_unique<VulkanSubmitter>(*mContext, config.submit);
-    mSubmitter->upload(mScene);
-    mView = cameraView(mCamera);
-    mProj = cameraProjection(mCamera, float(config.width) / float(config.height));
-    mFrameData = FrameUniforms::compute(mScene, mView, mProj, mCamera.eye);
+    mSubmitter->upload(scene());
+    mShaders->setDumpDirectory(config.dumpShadersPath);
     if (mContext->timestampPeriodNs() > 0.0)
         mRing = std::make_unique<TimestampRing>(*mContext, kRingFrames, kPassesPerFrame);
-    // As on GL: the timestamps are checked against the frame before any is shown (--no-timer-check
-    // leaves the verdict "unchecked" and shows none).
-    if (config.checkTimer) mCalibration = mVerdict = VulkanTimerTrust::calibrate(*mContext, *mShaders);
 
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = mContext->commandPool();
@@ -83,8 +60,32 @@ VulkanHarness::~VulkanHarness() {
 
 RowSource VulkanHarness::rowSource() const {
     const VulkanDeviceInfo& d = mContext->info();
-    return {mConfig,      mScene, mContentHash, false,    mVerdict, "vulkan",
-            d.apiVersion, d.name, "",           d.driver, "vulkan", std::to_string(d.index) + ": " + d.name};
+    return {config(),     scene(), contentHash(), false,    timerVerdict(), "vulkan",
+            d.apiVersion, d.name,  "",            d.driver, "vulkan",       std::to_string(d.index) + ": " + d.name};
+}
+
+VulkanTechnique& VulkanHarness::vulkanForm(Technique& technique) {
+    if (technique.api() != Api::Vulkan)
+        throw Error(technique.name() + ": a " + apiName(technique.api()) + " form handed to the Vulkan harness",
+                    ExitCode::Failure);
+    return static_cast<VulkanTechnique&>(technique);
+}
+
+const TimerVerdict& VulkanHarness::calibrateTimer() {
+    mShaders->setDumpLabel("timer_trust");
+    if (!calibration().checked) setCalibration(VulkanTimerTrust::calibrate(*mContext, *mShaders));
+    return timerVerdict();
+}
+
+TimerVerdict VulkanHarness::recalibrate() {
+    mShaders->setDumpLabel("timer_trust");
+    return VulkanTimerTrust::calibrate(*mContext, *mShaders);
+}
+
+std::vector<PassTimes> VulkanHarness::collectGpuTimes(bool) {
+    // Every frame is waited for (its fence) before the next: what was written is there to read.
+    if (!mRing || !timing()) return {};
+    return mRing->collect();
 }
 
 std::vector<std::string> VulkanHarness::takeValidationMessages() {
@@ -94,12 +95,17 @@ std::vector<std::string> VulkanHarness::takeValidationMessages() {
     return out;
 }
 
-void VulkanHarness::prepare(VulkanTechnique& technique) {
-    technique.setScene(mScene);
-    technique.compile({*mContext, *mShaders, mScene, *mSubmitter, *mTargets, *mFrameBlock, *mPipelines});
+void VulkanHarness::prepare(Technique& technique) {
+    VulkanTechnique& vk = vulkanForm(technique);
+    const std::string missing = vk.checkCapabilities(*mContext);
+    if (!missing.empty()) throw Error(missing, ExitCode::Unsupported);
+    vk.setScene(scene());
+    mShaders->setDumpLabel(technique.name());
+    vk.compile({*mContext, *mShaders, scene(), *mSubmitter, *mTargets, *mFrameBlock, *mPipelines});
 }
 
-FrameSample VulkanHarness::renderFrame(VulkanTechnique& technique) {
+FrameSample VulkanHarness::renderFrame(Technique& technique) {
+    VulkanTechnique& vk = vulkanForm(technique);
     FrameSample s;
     const auto t0 = Clock::now();
     VulkanContext::check(vkResetCommandBuffer(mCmd, 0), "vkResetCommandBuffer");
@@ -107,17 +113,18 @@ FrameSample VulkanHarness::renderFrame(VulkanTechnique& technique) {
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VulkanContext::check(vkBeginCommandBuffer(mCmd, &begin), "vkBeginCommandBuffer");
     mFrameBlock->beginFrame();
-    const uint32_t frameOffset = mFrameBlock->write(mFrameData);
-    const bool timing = mRing && mCalibration.checked && mCalibration.trusted;
-    mPasses.setRing(timing ? mRing.get() : nullptr);
+    const uint32_t frameOffset = mFrameBlock->write(frameData());
+    const bool stamps = mRing && timing();
+    const uint64_t frame = nextFrameIndex();
+    mPasses.setRing(stamps ? mRing.get() : nullptr);
     mPasses.setCommandBuffer(mCmd);
-    if (timing) mRing->beginFrame(mCmd, mFrameIndex);
+    if (stamps) mRing->beginFrame(mCmd, frame);
     mTargets->recordClear(mCmd, 0.55f, 0.65f, 0.8f);
-    VulkanFrameContext ctx{mScene,  mView,        mProj,       mCamera.eye, *mTargets,    *mSubmitter,
-                           mPasses, *mFrameBlock, frameOffset, mCmd,        mFrameIndex++};
-    technique.execute(ctx);
+    VulkanFrameContext ctx{scene(), view(),       projection(), camera().eye, *mTargets, *mSubmitter,
+                           mPasses, *mFrameBlock, frameOffset,  mCmd,         frame};
+    vk.execute(ctx);
     mPasses.endCensusFrame();
-    if (timing) mRing->endFrame(mCmd);
+    if (stamps) mRing->endFrame(mCmd);
     VulkanContext::check(vkEndCommandBuffer(mCmd), "vkEndCommandBuffer");
     mContext->submit(mCmd, mFence);
     const auto t1 = Clock::now();
@@ -130,59 +137,7 @@ FrameSample VulkanHarness::renderFrame(VulkanTechnique& technique) {
     return s;
 }
 
-RunResult VulkanHarness::measure(VulkanTechnique& technique) {
-    const auto setup0 = Clock::now();
-    prepare(technique);
-    const double setupMs = msSince(setup0, Clock::now());
-    // As on GL: the timed frames write no visibility target (the harness's instrument).
-    mTargets->setVisibilityOutput(false);
-    struct VisibilityBackOn {
-        VulkanTargets& targets;
-        ~VisibilityBackOn() { targets.setVisibilityOutput(true); }
-    } visibilityBackOn{*mTargets};
-    for (int i = 0; i < mConfig.warmup; ++i) renderFrame(technique);
-    if (mRing) mRing->collect(); // warm-up timings are discarded
-    std::vector<FrameSample> samples;
-    std::map<uint64_t, VulkanPassTimes> gpu;
-    const uint64_t firstFrame = mFrameIndex;
-    const auto start = Clock::now();
-    for (;;) {
-        samples.push_back(renderFrame(technique));
-        if (mRing && mCalibration.trusted)
-            for (VulkanPassTimes& t : mRing->collect()) gpu[t.frame] = std::move(t);
-        const int n = int(samples.size());
-        if (mConfig.seconds > 0.0) {
-            if (n >= RunConfig::kMinFrames && msSince(start, Clock::now()) >= mConfig.seconds * 1000.0) break;
-        } else if (n >= mConfig.frames) {
-            break;
-        }
-    }
-    mTargets->setVisibilityOutput(true);
-    if (mRing && mCalibration.trusted)
-        for (VulkanPassTimes& t : mRing->collect()) gpu[t.frame] = std::move(t);
-    // As on GL (Harness::recheckTimer): a trusted verdict is checked again after the run; if it no longer
-    // holds the run's times are withdrawn and no later run shows any.
-    mVerdict = mCalibration;
-    if (mCalibration.checked && mCalibration.trusted) {
-        mVerdict = TimerTrust::afterRun(mCalibration, VulkanTimerTrust::calibrate(*mContext, *mShaders));
-        if (mVerdict.revoked) {
-            mCalibration = mVerdict; // not trusted again in this process
-            gpu.clear();
-        }
-    }
-    for (size_t i = 0; i < samples.size(); ++i) {
-        auto it = gpu.find(firstFrame + i);
-        if (it == gpu.end()) continue;
-        samples[i].gpuPassMs = it->second.passMs;
-        samples[i].gpuTotalMs = it->second.totalMs;
-    }
-    RunResult r = summarize(technique, std::move(samples));
-    r.setupMs = setupMs;
-    r.loads = census(technique);
-    return r;
-}
-
-FrameLoads VulkanHarness::census(VulkanTechnique& technique) {
+FrameLoads VulkanHarness::census(Technique& technique) {
     // One more frame with the visibility target on: what each pass submitted, counted between the
     // passes' begins while the frame is recorded, and where the device counts them, what the pipeline
     // processed (a pipeline-statistics query per pass, as GL's census has one per pass).
@@ -218,37 +173,6 @@ FrameLoads VulkanHarness::census(VulkanTechnique& technique) {
     }
     loads.pipeline = total;
     return loads;
-}
-
-RunResult VulkanHarness::summarize(VulkanTechnique& technique, std::vector<FrameSample> samples) {
-    RunResult r;
-    r.technique = technique.name();
-    r.properties = technique.properties().toString();
-    r.permutation = technique.permutationKey();
-    r.effectsProduced = technique.info().effects;
-    r.counters = technique.counters();
-    std::vector<double> cpu, wall, total;
-    std::map<std::string, std::vector<double>> perPass;
-    for (const FrameSample& s : samples) {
-        cpu.push_back(s.cpuSubmitMs);
-        wall.push_back(s.wallMs);
-        if (s.gpuTotalMs < 0.0) {
-            r.gpuFramesMissing += mCalibration.trusted ? 1 : 0;
-            continue;
-        }
-        total.push_back(s.gpuTotalMs);
-        std::map<std::string, double> frame; // a pass entered once per light is summed per frame
-        for (const auto& [pass, ms] : s.gpuPassMs) frame[pass] += ms;
-        for (const auto& [pass, ms] : frame) perPass[pass].push_back(ms);
-    }
-    r.cpuSubmit = Statistics::compute(cpu);
-    r.wall = Statistics::compute(wall);
-    r.motion = Statistics::compute(std::vector<double>(samples.size(), 0.0));
-    r.gpuTotal = Statistics::compute(total);
-    for (const std::string& pass : technique.info().passes)
-        r.gpuPass.emplace_back(pass, Statistics::compute(perPass[pass]));
-    r.samples = std::move(samples);
-    return r;
 }
 
 } // namespace sb

@@ -1,6 +1,7 @@
 #pragma once
-// The run loop on Vulkan (bench/run/Harness.h on GL; docs/ARCHITECTURE.md, "Vulkan"): one device, one
-// scene, one set of frame targets and one submitter, shared by the run's techniques.
+// The run loop on Vulkan (bench/run/MeasuredHarness.h holds the loop itself; docs/ARCHITECTURE.md,
+// "Vulkan"): one device, its frame targets, submitter, pipelines and shader modules, the timestamp ring
+// and the census's pipeline-statistics queries.
 //
 // Per frame, in this order:
 //   t0  begin the frame's command buffer, write the frame block, the timestamp slot, clear the targets
@@ -17,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/run/Harness.h"
+#include "bench/run/MeasuredHarness.h"
 #include "bench/run/RunConfig.h"
 #include "scenes/Scene.h"
 #include "techniques/vulkan/VulkanTechnique.h"
@@ -25,44 +26,38 @@
 
 namespace sb {
 
-class VulkanHarness {
+class VulkanHarness final : public MeasuredHarness {
 public:
     /// Creates the device (config.vulkan), loads the scene, allocates targets and uploads geometry.
     explicit VulkanHarness(const RunConfig& config);
-    ~VulkanHarness();
+    ~VulkanHarness() override;
 
-    const RunConfig& config() const { return mConfig; }
-    const Scene& scene() const { return mScene; }
-    const std::string& contentHash() const { return mContentHash; }
+    Api api() const override { return Api::Vulkan; }
     VulkanContext& context() { return *mContext; }
     const VulkanContext& context() const { return *mContext; }
     VulkanTargets& targets() { return *mTargets; }
-    const TimerVerdict& timerVerdict() const { return mVerdict; }
-    const glm::mat4& view() const { return mView; }
-    const glm::mat4& projection() const { return mProj; }
-    double sceneLoadMs() const { return mSceneLoadMs; }
-    /// What the rows and the console header take from this run (api "vulkan").
-    RowSource rowSource() const;
+    RowSource rowSource() const override;
+    const TimerVerdict& calibrateTimer() override;
 
-    /// setScene and compile (untimed).
-    void prepare(VulkanTechnique& technique);
+    /// Checks the Vulkan capabilities (exit 3 naming the missing one), then setScene and compile
+    /// (untimed). `technique` must be a Vulkan form (VulkanTechnique).
+    void prepare(Technique& technique) override;
     /// One frame, recorded, submitted and waited for.
-    FrameSample renderFrame(VulkanTechnique& technique);
-    /// Warm-up, measured frames, statistics and one census frame (submitted work per pass).
-    RunResult measure(VulkanTechnique& technique);
+    FrameSample renderFrame(Technique& technique) override;
+    std::vector<unsigned char> readColor() override { return mTargets->readColorRGBA8(); }
+    std::vector<float> readVisibility() override { return mTargets->readVisibilityRGBA32F(); }
     /// Validation messages so far (with --vk-validation), each once: a run prints them.
-    std::vector<std::string> takeValidationMessages();
+    std::vector<std::string> takeValidationMessages() override;
+    size_t validationErrors() const override { return mContext->validationErrors(); }
 
 private:
-    RunResult summarize(VulkanTechnique& technique, std::vector<FrameSample> samples);
-    FrameLoads census(VulkanTechnique& technique);
+    void setVisibilityOutput(bool on) override { mTargets->setVisibilityOutput(on); }
+    std::vector<PassTimes> collectGpuTimes(bool wait) override;
+    TimerVerdict recalibrate() override;
+    FrameLoads census(Technique& technique) override;
+    void instancesMoved() override {} // scenes in motion are refused on Vulkan for now
+    static VulkanTechnique& vulkanForm(Technique& technique);
 
-    RunConfig mConfig;
-    Scene mScene;
-    std::string mContentHash;
-    CameraPreset mCamera;
-    glm::mat4 mView{1.0f}, mProj{1.0f};
-    FrameUniformData mFrameData{};
     std::unique_ptr<VulkanContext> mContext;
     std::unique_ptr<VulkanTargets> mTargets;
     std::unique_ptr<ShaderModuleCache> mShaders;
@@ -74,11 +69,7 @@ private:
     VkCommandBuffer mCmd = VK_NULL_HANDLE;
     VkFence mFence = VK_NULL_HANDLE;
     VkQueryPool mStatistics = VK_NULL_HANDLE; ///< the census's pipeline statistics (where supported)
-    TimerVerdict mCalibration;                ///< what the frames are measured under
-    TimerVerdict mVerdict;                    ///< what the last run ended with
-    uint64_t mFrameIndex = 0;
     size_t mMessagesShown = 0;
-    double mSceneLoadMs = 0.0;
 };
 
 } // namespace sb

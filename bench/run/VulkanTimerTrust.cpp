@@ -34,8 +34,9 @@ public:
         mLarge.setVisibilityOutput(false);
         mLayout = createPipelineLayout(context, {}, sizeof(VulkanPush));
         GraphicsPipelineDesc d;
-        d.vertex = shaders.get("common/fullscreen.vert", {}, GL_VERTEX_SHADER);
-        d.fragment = shaders.get("calibrate/fill.frag", {}, GL_FRAGMENT_SHADER);
+        const ShaderModules modules = shaders.get(ShaderSources{"common/fullscreen.vert", "calibrate/fill.frag", ""}, {});
+        d.vertex = modules.vertex;
+        d.fragment = modules.fragment;
         d.depthTest = d.depthWrite = false;
         d.layout = mLayout;
         d.renderPass = mSmall.renderPass(false); // the same formats: compatible with the large one's
@@ -85,7 +86,7 @@ public:
         vkWaitForFences(mContext.device(), 1, &mFence, VK_TRUE, UINT64_MAX);
         const double wall = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
         vkResetFences(mContext.device(), 1, &mFence);
-        const std::vector<VulkanPassTimes> frames = mRing.collect();
+        const std::vector<PassTimes> frames = mRing.collect();
         return {wall, frames.empty() ? 0.0 : frames.back().totalMs};
     }
 

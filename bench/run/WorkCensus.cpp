@@ -69,15 +69,4 @@ void WorkCensus::closeInterval() {
     if (it->second.pipeline && w.pipeline) *it->second.pipeline += *w.pipeline;
 }
 
-PassWork totalWork(const FrameWork& work) {
-    PassWork total;
-    for (const auto& [pass, w] : work) {
-        total.submitted += w.submitted;
-        if (!w.pipeline) continue;
-        if (!total.pipeline) total.pipeline = PipelineCounts{};
-        *total.pipeline += *w.pipeline;
-    }
-    return total;
-}
-
 } // namespace sb

@@ -15,20 +15,11 @@
 #include <vector>
 
 #include "gl/PipelineStatistics.h"
+#include "techniques/FrameWork.h"
 #include "techniques/PassObserver.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
-
-struct PassWork {
-    SubmitStats submitted;
-    std::optional<PipelineCounts> pipeline; ///< empty without GL_ARB_pipeline_statistics_query
-};
-
-/// Per pass, in the order the passes first ran.
-using FrameWork = std::vector<std::pair<std::string, PassWork>>;
-/// Passes a technique left out of the frame and why (PassTimer::skip), in the order it said so.
-using SkippedPasses = std::vector<std::pair<std::string, std::string>>;
 
 class WorkCensus : public PassObserver {
 public:
@@ -56,8 +47,5 @@ private:
     bool mOpen = false;
     SubmitStats mStart;
 };
-
-/// Sums the passes (the whole frame's work).
-PassWork totalWork(const FrameWork& work);
 
 } // namespace sb

@@ -12,7 +12,7 @@
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Environment.h"
 #include "core/Error.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -40,7 +40,7 @@ double misplacedShadowPct(const AccuracyEvaluator::Sample& s) {
 /// One candidate being measured: its technique, prepared on the harness, and what it measured.
 struct Trial {
     size_t candidate = 0; ///< index into the candidates
-    std::unique_ptr<Technique> technique;
+    std::unique_ptr<GlTechnique> technique;
 };
 
 double median(std::vector<double> v) {
@@ -49,7 +49,7 @@ double median(std::vector<double> v) {
 }
 
 /// The worst light's misplaced share of the shadow.
-double judge(Harness& harness, Technique& technique, AccuracyEvaluator& evaluator) {
+double judge(Harness& harness, GlTechnique& technique, AccuracyEvaluator& evaluator) {
     AccuracyOptions accuracy;
     accuracy.stability = false;
     double worst = 0.0;
@@ -61,7 +61,7 @@ double judge(Harness& harness, Technique& technique, AccuracyEvaluator& evaluato
 }
 
 /// Vertex plus fragment shader invocations of one census frame (-1 where the context cannot count).
-double exactWork(Harness& harness, Technique& technique) {
+double exactWork(Harness& harness, GlTechnique& technique) {
     const FrameLoads loads = harness.measureLoads(technique);
     if (!loads.pipeline) return -1.0;
     return double(loads.pipeline->vertexShaderInvocations + loads.pipeline->fragmentShaderInvocations);
@@ -181,7 +181,7 @@ std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const Calib
     size_t fromFile = 0;
     for (const std::string& name : TechniqueRegistry::names()) {
         if (!isCandidate(name)) continue;
-        std::unique_ptr<Technique> technique = TechniqueRegistry::create(name);
+        std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(name);
         AutoCandidate c;
         // A technique without properties (none) is its bare name: "none:" does not parse back.
         const std::string properties = technique->properties().toString();

@@ -17,7 +17,7 @@
 #include "core/Paths.h"
 #include "core/Strings.h"
 #include "scenes/SceneLoader.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 

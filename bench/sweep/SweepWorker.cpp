@@ -11,7 +11,7 @@
 #include "bench/sweep/SweepJob.h"
 #include "core/Error.h"
 #include "gl/DebugOutput.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -43,7 +43,7 @@ void injectFault(size_t index) {
 /// Runs the rows; reports each on stdout. Throws on the first failure, with `current` naming it.
 void runRows(const SweepJob& job, const RunConfig& config, size_t& current) {
     std::unique_ptr<Harness> harness; // outlives the techniques (they release GL objects)
-    std::map<std::string, std::unique_ptr<Technique>> techniques;
+    std::map<std::string, std::unique_ptr<GlTechnique>> techniques;
     for (const PlannedRow& row : job.rows)
         if (!techniques.count(row.technique))
             techniques[row.technique] = TechniqueRegistry::create(TechniqueSpec::parse(row.technique));

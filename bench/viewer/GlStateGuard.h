@@ -1,7 +1,7 @@
 #pragma once
 // Saves, on construction, the GL state the viewer's own drawing (bench/viewer/Overlay.h,
 // bench/viewer/VisibilityView.h) changes, and puts it back on destruction. The harness resets only
-// part of the state before each frame (techniques/FrameState.h): a program, vertex array or texture
+// part of the state before each frame (techniques/gl/FrameState.h): a program, vertex array or texture
 // left bound by the viewer would be state the next measured frame starts from that a measurement
 // without the viewer never has, so the viewer leaves everything as it found it.
 #include <array>

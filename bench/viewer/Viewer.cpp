@@ -53,7 +53,7 @@ std::string fixed2(double v) {
 }
 } // namespace
 
-int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techniques, int maxFrames) {
+int Viewer::run(Harness& harness, std::vector<std::unique_ptr<GlTechnique>>& techniques, int maxFrames) {
     if (techniques.empty()) return 0;
     auto* window = static_cast<GLFWwindow*>(harness.context().nativeWindow());
     const RunConfig& config = harness.config();
@@ -111,7 +111,7 @@ int Viewer::run(Harness& harness, std::vector<std::unique_ptr<Technique>>& techn
         lastY = y;
         orbit.distance *= float(std::pow(kWheelZoom, input.takeScroll()));
         harness.setCamera(orbit.apply(preset));
-        Technique& technique = *techniques[current];
+        GlTechnique& technique = *techniques[current];
         if (!prepared[current]) { // untimed, as in a measurement
             harness.prepare(technique);
             prepared[current] = true;

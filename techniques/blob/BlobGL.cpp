@@ -1,4 +1,4 @@
-#include "techniques/blob/BlobTechnique.h"
+#include "techniques/blob/BlobGL.h"
 
 #include <algorithm>
 #include <array>
@@ -7,14 +7,11 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "techniques/FrameState.h"
+#include "techniques/gl/FrameState.h"
 
 namespace sb {
 
 namespace {
-constexpr const char* kOpacity = "opacity";
-constexpr const char* kSoftness = "softness";
-constexpr const char* kFade = "fade";
 constexpr GLint kPlaneLocation = 12, kAlbedoLocation = 14; // shaders/blob/blob.frag
 constexpr GLuint kBlobBinding = 4;                         // shaders/blob/blob.vert
 
@@ -62,51 +59,31 @@ glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, cons
     return r > 0.0f ? foot + offset * (limit / r) : foot;
 }
 
-/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        real(kOpacity, "1", 0, 1, "opacity of a blob on the ground"),
-        real(kSoftness, "0.5", 0, 1,
-             "width of the soft edge as a fraction of the ellipse's radius (0: hard)"),
-        real(kFade, "8", 0.01, 1e6,
-             "height (in bounding radii) of the caster's bottom at which its blob vanishes"),
-    };
-}
+
 } // namespace
 
-BlobTechnique::BlobTechnique()
-    : Technique({.name = "blob",
-                 .description =
-                     "fake blob shadows: a soft ellipse on the ground under each caster per light, "
-                     "sized from its bounds (no self-shadowing, ground plane only)",
-                 .effects = Effect::SoftShadows | Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"lighting", "blobs"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kSoftness, {"0", "0.25", "0.5", "1"}},
-                     {kFade, {"2", "8", "32"}},
-                 }}) {}
+BlobGL::BlobGL()
+    : GlTechnique(sb::Blob::declaration()) {}
 
-BlobTechnique::~BlobTechnique() {
+BlobGL::~BlobGL() {
     release();
 }
 
-void BlobTechnique::release() {
+void BlobGL::release() {
     if (mBlobBuffer) glDeleteBuffers(1, &mBlobBuffer);
     if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);
     mBlobBuffer = mEmptyVao = 0;
     mCapacity = 0;
 }
 
-std::optional<ReceiverPlane> BlobTechnique::findGround(const Scene& scene) {
+std::optional<ReceiverPlane> BlobGL::findGround(const Scene& scene) {
     std::optional<ReceiverPlane> best;
     for (const ReceiverPlane& p : ReceiverPlane::find(scene))
         if (p.normal.y >= 0.5f && (!best || p.normal.y > best->normal.y)) best = p;
     return best;
 }
 
-std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const ReceiverPlane& ground,
+std::optional<BlobGL::Blob> BlobGL::fit(const Aabb& bounds, const ReceiverPlane& ground,
                                                       const Light& light, int lightIndex, float opacity,
                                                       float softness, float fade) {
     const glm::vec4 l = ReceiverPlane::homogeneousLight(light);
@@ -174,7 +151,7 @@ std::optional<BlobTechnique::Blob> BlobTechnique::fit(const Aabb& bounds, const 
                 glm::vec4(u * half.x, float(lightIndex)), glm::vec4(v * half.y, softness)};
 }
 
-void BlobTechnique::setScene(const Scene& scene) {
+void BlobGL::setScene(const Scene& scene) {
     release();
     mGround = findGround(scene);
     if (!mGround)
@@ -188,7 +165,7 @@ void BlobTechnique::setScene(const Scene& scene) {
     glCreateBuffers(1, &mBlobBuffer);
 }
 
-void BlobTechnique::compile(const CompileContext& ctx) {
+void BlobGL::compile(const CompileContext& ctx) {
     Defines lit = ctx.submitter.defines();
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);
@@ -197,12 +174,12 @@ void BlobTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(mLitProgram->key() + "|" + mBlobProgram->key());
 }
 
-void BlobTechnique::fitAll(const Scene& scene) {
+void BlobGL::fitAll(const Scene& scene) {
     mBlobs.clear();
     if (!mGround) return;
     const PropertySet& p = properties();
-    const float opacity = float(p.getFloat(kOpacity)), softness = float(p.getFloat(kSoftness)),
-                fade = float(p.getFloat(kFade));
+    const float opacity = float(p.getFloat(sb::Blob::kOpacity)), softness = float(p.getFloat(sb::Blob::kSoftness)),
+                fade = float(p.getFloat(sb::Blob::kFade));
     const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
     for (const Instance& inst : scene.instances) {
         if (!inst.castsShadow) continue;
@@ -217,7 +194,7 @@ void BlobTechnique::fitAll(const Scene& scene) {
     }
 }
 
-void BlobTechnique::execute(FrameContext& ctx) {
+void BlobGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     ctx.passes.begin("lighting");
     mLitProgram->use();

@@ -31,15 +31,16 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ReceiverPlane.h"
-#include "techniques/Technique.h"
-#include "techniques/common/ReceiverStencil.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/blob/Blob.h"
+#include "techniques/gl/ReceiverStencil.h"
 
 namespace sb {
 
-class BlobTechnique final : public Technique {
+class BlobGL final : public GlTechnique {
 public:
-    BlobTechnique();
-    ~BlobTechnique() override;
+    BlobGL();
+    ~BlobGL() override;
     void setScene(const Scene& scene) override;
     /// Blobs are fitted to the casters and lights in every frame; the ground does not move.
     void sceneChanged(const Scene&, uint32_t) override {}

@@ -1,4 +1,4 @@
-#include "techniques/submit/DisplayListSubmitter.h"
+#include "techniques/gl/DisplayListSubmitter.h"
 
 namespace sb {
 
@@ -32,7 +32,7 @@ void DisplayListSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     mStats.glCalls += 1;
     for (size_t i = 0; i < mScene->instances.size(); ++i) {
         const Instance& inst = mScene->instances[i];
-        if (!inSet(inst, set) || !kept(keep, i)) continue;
+        if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         setInstanceUniforms(inst);
         glCallList(mFirstList + inst.mesh);
         mStats.drawCalls += 1;

@@ -3,7 +3,7 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
 

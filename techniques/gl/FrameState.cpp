@@ -1,4 +1,4 @@
-#include "techniques/FrameState.h"
+#include "techniques/gl/FrameState.h"
 
 #include <epoxy/gl.h>
 

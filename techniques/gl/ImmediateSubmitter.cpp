@@ -1,4 +1,4 @@
-#include "techniques/submit/ImmediateSubmitter.h"
+#include "techniques/gl/ImmediateSubmitter.h"
 
 #include <epoxy/gl.h>
 
@@ -13,7 +13,7 @@ void ImmediateSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     mStats.glCalls += 1;
     for (size_t i = 0; i < mScene->instances.size(); ++i) {
         const Instance& inst = mScene->instances[i];
-        if (!inSet(inst, set) || !kept(keep, i)) continue;
+        if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         const Mesh& mesh = mScene->meshes[inst.mesh];
         setInstanceUniforms(inst);
         emitImmediate(mesh);

@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/submit/InstancedSubmitter.h"
+#include "techniques/gl/InstancedSubmitter.h"
 
 #include <algorithm>
 
@@ -34,7 +34,7 @@ void InstancedSubmitter::upload(const Scene& scene) {
             Batch b{m, uint32_t(records.size()), 0};
             for (uint32_t i = 0; i < scene.instances.size(); ++i) {
                 const Instance& inst = scene.instances[i];
-                if (inst.mesh != m || !inSet(inst, kSets[s])) continue;
+                if (inst.mesh != m || !inDrawSet(inst, kSets[s])) continue;
                 records.push_back({inst.model, glm::vec4(inst.color, shadowSignedId(inst))});
                 mRecordInstance.push_back(i);
                 ++b.count;
@@ -88,12 +88,12 @@ void InstancedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
         // a culled instance splits its batch instead of costing an upload.
         bool bound = false;
         for (uint32_t r = b.first, end = b.first + b.count; r < end;) {
-            if (!kept(keep, mRecordInstance[r])) {
+            if (!keptBy(keep, mRecordInstance[r])) {
                 ++r;
                 continue;
             }
             uint32_t runEnd = r + 1;
-            while (runEnd < end && kept(keep, mRecordInstance[runEnd])) ++runEnd;
+            while (runEnd < end && keptBy(keep, mRecordInstance[runEnd])) ++runEnd;
             if (!bound) {
                 glBindVertexArray(mBuffers.vao(b.mesh));
                 mStats.glCalls += 1;

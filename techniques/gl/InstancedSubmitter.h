@@ -3,8 +3,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "techniques/submit/MeshBuffers.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/MeshBuffers.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/submit/MeshBuffers.h"
+#include "techniques/gl/MeshBuffers.h"
 
 #include <glm/glm.hpp>
 

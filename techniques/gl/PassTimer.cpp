@@ -1,4 +1,4 @@
-#include "techniques/PassTimer.h"
+#include "techniques/gl/PassTimer.h"
 
 #include "gl/DebugOutput.h"
 

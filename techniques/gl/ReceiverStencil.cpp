@@ -1,4 +1,4 @@
-#include "techniques/common/ReceiverStencil.h"
+#include "techniques/gl/ReceiverStencil.h"
 
 #include <algorithm>
 

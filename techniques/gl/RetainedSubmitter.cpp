@@ -1,4 +1,4 @@
-#include "techniques/submit/RetainedSubmitter.h"
+#include "techniques/gl/RetainedSubmitter.h"
 
 #include <algorithm>
 #include <numeric>
@@ -19,7 +19,7 @@ void RetainedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     uint32_t boundMesh = UINT32_MAX;
     for (uint32_t i : mOrder) {
         const Instance& inst = mScene->instances[i];
-        if (!inSet(inst, set) || !kept(keep, i)) continue;
+        if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         if (inst.mesh != boundMesh) {
             glBindVertexArray(mBuffers.vao(inst.mesh));
             boundMesh = inst.mesh;

@@ -1,8 +1,8 @@
 #pragma once
 #include <vector>
 
-#include "techniques/submit/MeshBuffers.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/MeshBuffers.h"
+#include "techniques/gl/Submitter.h"
 
 namespace sb {
 

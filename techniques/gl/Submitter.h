@@ -17,62 +17,12 @@
 #include <string>
 #include <vector>
 
-#include "core/NameTable.h"
 #include "gl/ProgramCache.h"
+#include "scenes/DrawSet.h"
 #include "scenes/Scene.h"
+#include "techniques/Submission.h"
 
 namespace sb {
-
-enum class SubmitMode { Immediate, DisplayList, Retained, Instanced };
-constexpr SubmitMode kAllSubmitModes[] = {SubmitMode::Immediate, SubmitMode::DisplayList,
-                                          SubmitMode::Retained, SubmitMode::Instanced};
-
-class Submitter;
-/// One row of the submission table (Submitter.cpp): the mode, its name (--submit, the CSV's `submit`
-/// column) and its factory. Adding a mode is one value above, one submitter class and one row.
-struct SubmitModeEntry {
-    SubmitMode value;
-    const char* name;
-    std::unique_ptr<Submitter> (*create)();
-};
-/// The submission modes in the order --help lists them.
-const NameTable<SubmitModeEntry>& submitModes();
-const char* submitModeName(SubmitMode m); ///< "immediate", "displaylist", "retained", "instanced"
-std::optional<SubmitMode> parseSubmitMode(const std::string& name);
-
-/// Which instances a draw covers: shadow casters, shadow receivers, or all; NonCasters are the
-/// instances that cast no shadow (grounds, walls): what `projective` textures, its casters staying lit.
-enum class DrawSet { All, Casters, Receivers, NonCasters, NonReceivers };
-constexpr size_t kDrawSetCount = 5;
-
-/// The instances a draw keeps, indexed like Scene::instances (non-zero = drawn): what a technique's
-/// per-frustum culling leaves (techniques/common/InstanceCulling.h), applied on top of the DrawSet.
-/// Empty keeps every instance of the set.
-using InstanceMask = std::span<const uint8_t>;
-
-/// What the submitter sent since the last reset (counters of the CSV row, per frame).
-struct SubmitStats {
-    uint64_t drawCalls = 0;
-    uint64_t triangles = 0;
-    uint64_t instances = 0;
-    /// GL calls the application issued to draw (uniforms, binds, draws, and in immediate mode one call
-    /// per vertex attribute): the CPU-side load of the bottleneck study. Counted per draw from the mesh
-    /// sizes, not per call, so counting costs nothing inside the immediate-mode loop.
-    uint64_t glCalls = 0;
-
-    SubmitStats& operator+=(const SubmitStats& o) {
-        drawCalls += o.drawCalls;
-        triangles += o.triangles;
-        instances += o.instances;
-        glCalls += o.glCalls;
-        return *this;
-    }
-    friend SubmitStats operator+(SubmitStats a, const SubmitStats& b) { return a += b; }
-    friend SubmitStats operator-(SubmitStats a, const SubmitStats& b) {
-        return {a.drawCalls - b.drawCalls, a.triangles - b.triangles, a.instances - b.instances,
-                a.glCalls - b.glCalls};
-    }
-};
 
 class Submitter {
 public:
@@ -117,18 +67,10 @@ public:
     /// so a technique that resets between its passes cannot hide a pass's draws.
     SubmitStats lifetimeStats() const { return mLifetime + mStats; }
 
-    /// Whether `inst` belongs to `set` (also what per-pass culling narrows: techniques/common).
-    static bool inSet(const Instance& inst, DrawSet set);
-    /// The w the shaders get with the instance colour: the object id, negated for an instance that
-    /// receives no shadow. The sign costs no attribute, uniform or call of its own, so every submission
-    /// mode carries it at the price it already pays; shaders read the id as abs(w)
-    /// (common/instance.glsl) and the sign only under SB_NON_RECEIVERS (common/lighting.glsl).
-    static float shadowSignedId(const Instance& inst);
 
 protected:
     /// The mode's draw of the instances of `set` that `keep` keeps (empty: all of them).
     virtual void drawKept(DrawSet set, InstanceMask keep) = 0;
-    static bool kept(InstanceMask keep, size_t instance) { return keep.empty() || keep[instance] != 0; }
     /// Sets the per-instance uniforms (locations 0 and 4) of the bound program.
     static void setInstanceUniforms(const Instance& inst);
     /// glBegin/glEnd stream of a mesh, one glVertexAttrib call per attribute and vertex (normal, then

@@ -1,4 +1,4 @@
-#include "techniques/hybrid/HybridTechnique.h"
+#include "techniques/hybrid/HybridGL.h"
 
 #include <algorithm>
 #include <mutex>
@@ -6,23 +6,14 @@
 
 #include "core/Error.h"
 #include "core/Strings.h"
-#include "techniques/FrameState.h"
+#include "techniques/gl/FrameState.h"
 
 namespace sb {
 
 namespace {
 
-constexpr const char* kSelf = "self";
-constexpr const char* kCast = "cast";
-
-std::vector<PropertyDesc> declareProperties(const std::vector<std::string>& choices) {
-    return {
-        choice(kSelf, "occluder", choices,
-               "the technique that shades the instances that cast a shadow (their self-shadowing)"),
-        choice(kCast, "shadowmap", choices,
-               "the technique that shades the instances that cast none (where cast shadows fall)"),
-    };
-}
+constexpr const char* kSelf = Hybrid::kSelf;
+constexpr const char* kCast = Hybrid::kCast;
 
 /// A pass name that lives as long as the process (PassTimer keeps names by pointer).
 const char* intern(const std::string& name) {
@@ -65,27 +56,14 @@ private:
 
 } // namespace
 
-HybridTechnique::HybridTechnique(Factory create, std::vector<std::string> choices)
-    : Technique({.name = "hybrid",
-                 .description = "two techniques in one frame: one shades the casters (self-shadowing), the "
-                                "other the ground (cast shadows)",
-                 .effects = 0,
-                 .capabilities = {},
-                 .passes = {},
-                 .properties = declareProperties(choices),
-                 .quality = {}}),
-      mCreate(std::move(create)) {
+HybridGL::HybridGL(Factory create, std::vector<std::string> choices)
+    : GlTechnique(Hybrid::declaration(choices)), mCreate(std::move(create)) {
     propertiesApplied();
 }
 
-HybridTechnique::~HybridTechnique() = default;
+HybridGL::~HybridGL() = default;
 
-EffectMask HybridTechnique::combinedEffects(EffectMask self, EffectMask cast) {
-    const EffectMask selfShadowing = uint32_t(Effect::SelfShadowing);
-    return (self & cast & ~selfShadowing) | (self & selfShadowing);
-}
-
-HybridTechnique::Part HybridTechnique::makePart(const std::string& role, const std::string& name) const {
+HybridGL::Part HybridGL::makePart(const std::string& role, const std::string& name) const {
     Part part;
     part.role = role;
     part.technique = mCreate(name);
@@ -99,12 +77,12 @@ HybridTechnique::Part HybridTechnique::makePart(const std::string& role, const s
     return part;
 }
 
-void HybridTechnique::propertiesApplied() {
+void HybridGL::propertiesApplied() {
     mParts.clear();
     mParts.push_back(makePart(kSelf, properties().getEnum(kSelf)));
     mParts.push_back(makePart(kCast, properties().getEnum(kCast)));
     TechniqueInfo& info = mutableInfo();
-    info.effects = combinedEffects(mParts[0].technique->info().effects, mParts[1].technique->info().effects);
+    info.effects = Hybrid::combinedEffects(mParts[0].technique->info().effects, mParts[1].technique->info().effects);
     info.capabilities.clear();
     info.passes.clear();
     info.viewPasses.clear();
@@ -118,7 +96,7 @@ void HybridTechnique::propertiesApplied() {
     mScene = nullptr;
 }
 
-void HybridTechnique::setScene(const Scene& scene) {
+void HybridGL::setScene(const Scene& scene) {
     mScene = &scene;
     for (Part& part : mParts) {
         part.scope.assign(scene.instances.size(), 0);
@@ -141,12 +119,12 @@ void HybridTechnique::setScene(const Scene& scene) {
     }
 }
 
-void HybridTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+void HybridGL::sceneChanged(const Scene& scene, uint32_t changes) {
     for (Part& part : mParts)
         if (part.scopeCount != 0) part.technique->sceneChanged(scene, changes);
 }
 
-void HybridTechnique::compile(const CompileContext& ctx) {
+void HybridGL::compile(const CompileContext& ctx) {
     std::vector<std::string> keys;
     for (Part& part : mParts) {
         if (part.scopeCount == 0) continue;
@@ -161,7 +139,7 @@ void HybridTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(join(keys, "|"));
 }
 
-void HybridTechnique::runPart(Part& part, FrameContext& ctx) {
+void HybridGL::runPart(Part& part, FrameContext& ctx) {
     part.submitter = &ctx.submitter;
     RouterScope scope(ctx.passes, ctx.submitter, &part);
     if (part.scopeCount == 0) {
@@ -172,12 +150,12 @@ void HybridTechnique::runPart(Part& part, FrameContext& ctx) {
     part.technique->execute(ctx);
 }
 
-void HybridTechnique::execute(FrameContext& ctx) {
+void HybridGL::execute(FrameContext& ctx) {
     bool first = true;
     for (Part& part : mParts) {
         if (!first && part.scopeCount != 0) {
             // The state the harness sets before a frame, which the next part may assume as well
-            // (techniques/FrameState.h): the first part may have left another framebuffer or frame
+            // (techniques/gl/FrameState.h): the first part may have left another framebuffer or frame
             // block bound.
             resetFrameState();
             ctx.targets.bind();
@@ -199,11 +177,11 @@ void HybridTechnique::execute(FrameContext& ctx) {
     mCounters.insert(mCounters.begin(), {{"draw_calls", drawCalls}, {"triangles", triangles}});
 }
 
-Counters HybridTechnique::counters() const {
+Counters HybridGL::counters() const {
     return mCounters;
 }
 
-size_t HybridTechnique::Part::indexOf(const char* pass) const {
+size_t HybridGL::Part::indexOf(const char* pass) const {
     const std::vector<std::string>& passes = technique->info().passes;
     for (size_t i = 0; i < passes.size(); ++i)
         if (passes[i] == pass) return i;
@@ -212,13 +190,13 @@ size_t HybridTechnique::Part::indexOf(const char* pass) const {
                 ExitCode::Failure);
 }
 
-const char* HybridTechnique::Part::enter(const char* pass) {
+const char* HybridGL::Part::enter(const char* pass) {
     const size_t i = indexOf(pass);
     if (submitter) submitter->setViewScope(viewPass[i] ? InstanceMask(scope) : InstanceMask{});
     return passNames[i];
 }
 
-const char* HybridTechnique::Part::nameOf(const char* pass) const {
+const char* HybridGL::Part::nameOf(const char* pass) const {
     return passNames[indexOf(pass)];
 }
 

@@ -28,17 +28,18 @@
 #include <vector>
 
 #include "techniques/PassRouter.h"
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/hybrid/Hybrid.h"
 
 namespace sb {
 
-class HybridTechnique final : public Technique {
+class HybridGL final : public GlTechnique {
 public:
     /// Makes a part by registry name (throws sb::Error for an unknown one).
-    using Factory = std::function<std::unique_ptr<Technique>(const std::string& name)>;
+    using Factory = std::function<std::unique_ptr<GlTechnique>(const std::string& name)>;
     /// `choices`: the registry names a role may take, in --list order.
-    HybridTechnique(Factory create, std::vector<std::string> choices);
-    ~HybridTechnique() override;
+    HybridGL(Factory create, std::vector<std::string> choices);
+    ~HybridGL() override;
 
     /// Creates the parts the `self` and `cast` properties name, and derives this technique's effects,
     /// capabilities and passes from them.
@@ -50,14 +51,11 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override;
 
-    /// The effects a hybrid of parts with effects `self` and `cast` delivers (see the header comment).
-    static EffectMask combinedEffects(EffectMask self, EffectMask cast);
-
 private:
     /// One role: its technique, the instances it shades and the names its passes are recorded under.
     struct Part final : PassRouter {
         std::string role; ///< "self" or "cast"
-        std::unique_ptr<Technique> technique;
+        std::unique_ptr<GlTechnique> technique;
         std::vector<uint8_t> scope; ///< per instance: shaded by this part
         size_t scopeCount = 0;      ///< instances in scope
         /// "<role>_<pass>", parallel to the part's passes: interned for the life of the process, since the

@@ -1,15 +1,16 @@
 #pragma once
 // `none`, the smallest technique and the template for a new one (docs/ARCHITECTURE.md, "Extending"):
 // one pass through the shared shaders, no properties, the counters every technique reports.
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/none/None.h"
 
 namespace sb {
 
 /// `none`: lit, unshadowed, one pass. The baseline every overhead ratio is taken against; visibility
 /// is 1 everywhere.
-class NoneTechnique final : public Technique {
+class NoneGL final : public GlTechnique {
 public:
-    NoneTechnique();
+    NoneGL();
     void setScene(const Scene& scene) override;
     /// Nothing depends on where the lights and casters are.
     void sceneChanged(const Scene&, uint32_t) override {}

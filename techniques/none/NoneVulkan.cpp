@@ -2,12 +2,13 @@
 
 #include <algorithm>
 
-#include "techniques/none/NoneTechnique.h"
+#include "shading/ShaderLimits.h"
+#include "techniques/none/None.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
 
-NoneVulkan::NoneVulkan() : VulkanTechnique(NoneTechnique().info()) {}
+NoneVulkan::NoneVulkan() : VulkanTechnique(None::declaration()) {}
 
 NoneVulkan::~NoneVulkan() {
     if (mLayout) vkDestroyPipelineLayout(mDevice, mLayout, nullptr);

@@ -1,5 +1,5 @@
 #pragma once
-// `none` on Vulkan (techniques/vulkan/VulkanTechnique.h): the same one lit pass as NoneTechnique, the
+// `none` on Vulkan (techniques/vulkan/VulkanTechnique.h): the same one lit pass as NoneGL, the
 // same shaders (common/scene.vert, common/lit.frag), recorded into the frame's command buffer.
 #include "techniques/vulkan/VulkanTechnique.h"
 

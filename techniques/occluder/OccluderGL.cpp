@@ -1,4 +1,4 @@
-#include "techniques/occluder/OccluderTechnique.h"
+#include "techniques/occluder/OccluderGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,18 +14,13 @@
 #include "scenes/Math.h"
 #include "scenes/Motion.h"
 #include "scenes/ShadowPlaneChooser.h"
-#include "techniques/common/ShadowWork.h"
+#include "scenes/ShadowWork.h"
 #include "techniques/occluder/OccluderTextures.h"
 #include "techniques/occluder/ReceiverSections.h"
 
 namespace sb {
 
 namespace {
-constexpr const char* kLightSpace = "light_space";
-constexpr const char* kPlanes = "planes";
-constexpr const char* kResolution = "resolution";
-constexpr const char* kDilate = "dilate";
-constexpr const char* kReceivers = "receivers";
 constexpr GLuint kWorldPlaneBinding = 5, kCandidateBinding = 6; // shaders/occluder/lit.frag
 // shaders/occluder/scene.vert
 constexpr GLuint kPlaneBinding = 2, kInstanceBinding = 3, kMatrixBinding = 4, kSectionBinding = 7;
@@ -59,45 +54,17 @@ void clearBorder(std::vector<uint8_t>& texels, int size) {
     }
 }
 
-/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        choice(kLightSpace, "per_vertex", {"per_vertex", "per_instance", "texture_matrix"},
-               "light into model space in every vertex (thesis), once per instance on the CPU (its "
-               "proposal), or equations 6 and 8 folded into a matrix per instance and plane (its future "
-               "work; directional lights)"),
-        integer(kPlanes, "16", 0, OccluderTechnique::kMaxPlanes,
-                "use only the first N shadow planes of each mesh (cost per plane)"),
-        integer(kResolution, "512", 8, 8192,
-                "occluder texture size (texels per side; baked and loaded textures alike)"),
-        integer(kDilate, "0", 0, 64,
-                "texels the baked silhouette grows by (section 5; measured: 1 texel adds false shadows along "
-                "edges)"),
-        choice(kReceivers, "self", {"self", "all"},
-               "self: each mesh shadowed by its own planes (the thesis); all: also by other instances' "
-               "planes, per fragment in world space (shadows on the ground and other objects)"),
-    };
-}
+
 } // namespace
 
-OccluderTechnique::OccluderTechnique()
-    : Technique(
-          {.name = "occluder",
-           .description = "occluder textures on shadow planes: single-pass self-shadowing (Coleman 2006)",
-           // Self-shadowing from each mesh's own planes only: no shadows on other objects or the
-           // ground, and the planes approximate the casters (the thesis's missing shadows).
-           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                      Effect::MultipleLights,
-           .capabilities = {{"GL 4.5", 4, 5, ""}},
-           .passes = {"lighting"},
-           .properties = declareProperties(),
-           .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}}) {}
+OccluderGL::OccluderGL()
+    : GlTechnique(Occluder::declaration()) {}
 
-OccluderTechnique::~OccluderTechnique() {
+OccluderGL::~OccluderGL() {
     release();
 }
 
-void OccluderTechnique::release() {
+void OccluderGL::release() {
     if (mTextures) glDeleteTextures(1, &mTextures);
     if (mPlaneBuffer) glDeleteBuffers(1, &mPlaneBuffer);
     if (mInstanceBuffer) glDeleteBuffers(1, &mInstanceBuffer);
@@ -138,7 +105,7 @@ std::vector<glm::vec3> lightsInObjectSpace(const Scene& scene, uint32_t mesh) {
 }
 } // namespace
 
-void OccluderTechnique::choosePlanes(const Scene& scene, const std::vector<bool>& drawn) {
+void OccluderGL::choosePlanes(const Scene& scene, const std::vector<bool>& drawn) {
     // Meshes without given planes (a --model file) get automatically chosen ones, for the scene's lights;
     // one that yields no useful plane is said so on stderr and counted (counter no_useful_planes).
     mMeshPlanes.assign(scene.meshes.size(), {});
@@ -160,8 +127,8 @@ void OccluderTechnique::choosePlanes(const Scene& scene, const std::vector<bool>
     }
 }
 
-void OccluderTechnique::collectPlanes(const Scene& scene) {
-    const int limit = int(properties().getInt(kPlanes));
+void OccluderGL::collectPlanes(const Scene& scene) {
+    const int limit = int(properties().getInt(Occluder::kPlanes));
     mPlanes.clear();
     mPlaneSource.clear();
     mMeshFirst.assign(scene.meshes.size(), 0);
@@ -174,9 +141,9 @@ void OccluderTechnique::collectPlanes(const Scene& scene) {
         const Mesh& mesh = scene.meshes[m];
         const std::vector<ShadowPlane>& planes = mMeshPlanes[m];
         if (!drawn[m]) continue;
-        if (planes.size() > size_t(kMaxPlanes) && limit > kMaxPlanes)
+        if (planes.size() > size_t(Occluder::kMaxPlanes) && limit > Occluder::kMaxPlanes)
             throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(planes.size()) +
-                            " shadow planes; at most " + std::to_string(kMaxPlanes) + " are used per mesh",
+                            " shadow planes; at most " + std::to_string(Occluder::kMaxPlanes) + " are used per mesh",
                         ExitCode::Unsupported);
         const int count = std::min<int>(int(planes.size()), limit);
         mMeshFirst[m] = uint32_t(mPlanes.size());
@@ -196,10 +163,10 @@ void OccluderTechnique::collectPlanes(const Scene& scene) {
     }
 }
 
-void OccluderTechnique::setScene(const Scene& scene) {
+void OccluderGL::setScene(const Scene& scene) {
     mScene = &scene;
     mLights = std::clamp<int>(int(scene.lights.size()), 1, kMaxLights);
-    const std::string& space = properties().getEnum(kLightSpace);
+    const std::string& space = properties().getEnum(Occluder::kLightSpace);
     mPerInstance = space == "per_instance";
     mTextureMatrix = space == "texture_matrix";
     if (mTextureMatrix)
@@ -212,7 +179,7 @@ void OccluderTechnique::setScene(const Scene& scene) {
     collectPlanes(scene);
     mInverseModel.clear();
     for (const Instance& inst : scene.instances) mInverseModel.push_back(glm::inverse(inst.model));
-    mReceiveAll = properties().getEnum(kReceivers) == "all";
+    mReceiveAll = properties().getEnum(Occluder::kReceivers) == "all";
     if (mReceiveAll) collectCandidates(scene);
     buildReceiverSections(scene);
     // Per instance: (first plane, plane count, first section slot, section slots) as raw bits, then one
@@ -226,7 +193,7 @@ void OccluderTechnique::setScene(const Scene& scene) {
     }
 }
 
-void OccluderTechnique::buildReceiverSections(const Scene& scene) {
+void OccluderGL::buildReceiverSections(const Scene& scene) {
     mSectionTable.clear();
     mMeshSections.assign(scene.meshes.size(), glm::uvec2(0));
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -259,7 +226,7 @@ LightSpaceBounds lightSpace(const Aabb& box, const glm::vec3& a, const glm::vec3
 }
 } // namespace
 
-void OccluderTechnique::collectCandidates(const Scene& scene) {
+void OccluderGL::collectCandidates(const Scene& scene) {
     // receivers=all: for every receiver instance, the other instances whose planes may shadow it. For
     // directional lights a caster can only shadow a receiver whose bounds its own bounds overlap seen
     // along the light, and only if some of the caster lies before some of the receiver along it; point
@@ -302,7 +269,7 @@ void OccluderTechnique::collectCandidates(const Scene& scene) {
     }
 }
 
-void OccluderTechnique::uploadWorldPlanes() {
+void OccluderGL::uploadWorldPlanes() {
     // Every instance's planes in world space (instances have uniform scale: M = T R s), in the units
     // of equations 6 and 8: u = (R right).(p - M o) / (s width).
     std::vector<GpuPlane> world;
@@ -337,11 +304,11 @@ void OccluderTechnique::uploadWorldPlanes() {
     mWorldPlanes = world.size();
 }
 
-void OccluderTechnique::buildTextures(const CompileContext& ctx) {
-    const int resolution = int(properties().getInt(kResolution));
+void OccluderGL::buildTextures(const CompileContext& ctx) {
+    const int resolution = int(properties().getInt(Occluder::kResolution));
     OccluderBakeOptions options;
     options.resolution = resolution;
-    options.dilate = int(properties().getInt(kDilate));
+    options.dilate = int(properties().getInt(Occluder::kDilate));
     // One layer per texture owner: a plane with its own texture, or the plane another names in
     // texture_of (the thesis's two tail fins share one), whether or not the owner itself is used.
     std::map<std::pair<int, int>, int> layerOf;
@@ -399,7 +366,7 @@ void OccluderTechnique::buildTextures(const CompileContext& ctx) {
     glTextureParameteri(mTextures, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void OccluderTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+void OccluderGL::sceneChanged(const Scene& scene, uint32_t changes) {
     if (changes & kCastersMoved)
         for (size_t i = 0; i < scene.instances.size(); ++i)
             mInverseModel[i] = glm::inverse(scene.instances[i].model);
@@ -409,7 +376,7 @@ void OccluderTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
     }
 }
 
-void OccluderTechnique::compile(const CompileContext& ctx) {
+void OccluderGL::compile(const CompileContext& ctx) {
     GLint components = 0;
     glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &components);
     const int needed = 4 * (mLights * mPlaneSlots + (mPlaneSlots + 3) / 4 + 3);
@@ -456,7 +423,7 @@ void OccluderTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(mProgram->key());
 }
 
-void OccluderTechnique::uploadInstances(bool lights) {
+void OccluderGL::uploadInstances(bool lights) {
     const size_t stride = 1 + size_t(mLights);
     if (lights) {
         // The thesis's proposed optimisation: the light in each instance's model space, once per
@@ -479,7 +446,7 @@ void OccluderTechnique::uploadInstances(bool lights) {
                              mInstanceData.data());
 }
 
-void OccluderTechnique::uploadMatrices() {
+void OccluderGL::uploadMatrices() {
     // Per instance, light and used plane: equations 6 and 8 as one affine map (ShadowPlane::
     // textureMatrix), from the light in the instance's model space. The CPU work the vertex stage saves.
     const size_t slots = size_t(mPlaneSlots);
@@ -502,7 +469,7 @@ void OccluderTechnique::uploadMatrices() {
                              mMatrices.data());
 }
 
-void OccluderTechnique::execute(FrameContext& ctx) {
+void OccluderGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     ctx.passes.begin("lighting");
     if (mPerInstance) uploadInstances(true);

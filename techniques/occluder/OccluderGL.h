@@ -32,14 +32,15 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/occluder/Occluder.h"
 
 namespace sb {
 
-class OccluderTechnique final : public Technique {
+class OccluderGL final : public GlTechnique {
 public:
-    OccluderTechnique();
-    ~OccluderTechnique() override;
+    OccluderGL();
+    ~OccluderGL() override;
     void setScene(const Scene& scene) override;
     /// The planes and their textures stay (an artist's, made once); the light in each instance's space
     /// is found every frame anyway. Moving casters change their inverse transforms, and with
@@ -49,9 +50,6 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
-
-    /// Most planes per mesh the vertex stage passes on (varying budget: 16 planes x 1 light).
-    static constexpr int kMaxPlanes = 16;
     /// Most planes chosen automatically for a mesh without given ones (the cost is per plane).
     static constexpr int kAutoPlanes = 4;
 

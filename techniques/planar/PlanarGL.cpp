@@ -1,4 +1,4 @@
-#include "techniques/planar/PlanarTechnique.h"
+#include "techniques/planar/PlanarGL.h"
 
 #include <algorithm>
 #include <array>
@@ -11,19 +11,14 @@
 #include "scenes/MeshGenerators.h"
 #include "scenes/Motion.h"
 #include "scenes/ProxyCollection.h"
-#include "techniques/FrameState.h"
-#include "techniques/common/InstanceCulling.h"
-#include "techniques/common/ShadowWork.h"
-#include "techniques/submit/InstancedSubmitter.h"
+#include "techniques/gl/FrameState.h"
+#include "scenes/InstanceCulling.h"
+#include "scenes/ShadowWork.h"
+#include "techniques/gl/InstancedSubmitter.h"
 
 namespace sb {
 
 namespace {
-constexpr const char* kStencil = "stencil";
-constexpr const char* kOccluder = "occluder";
-constexpr const char* kDarkness = "darkness";
-constexpr const char* kGuards = "guards";
-constexpr const char* kCull = "cull";
 constexpr GLint kFlattenLocation = 8, kPlaneLocation = 12, kLightLocation = 13, kAlbedoLightLocation = 14,
                 kDarknessLocation = 15; // shaders/planar/shadow.*
 
@@ -41,52 +36,24 @@ Scene unitShapes() {
     return s;
 }
 
-/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        flag(kStencil, "true",
-             "the slides' stencil algorithm (false: depth-tested with bias: double blending, shadows off the "
-             "receiver)"),
-        choice(kOccluder, "mesh", {"mesh", "proxy"},
-               "what is flattened: the caster's mesh, or its ShadowProxy (sphere/box/cylinder)"),
-        real(kDarkness, "1", 0, 1,
-             "share of the light a shadow removes (1: ambient only, like the other techniques)"),
-        flag(kGuards, "true",
-             "clip occluder parts behind the receiver or beyond the light, skip lights behind the plane "
-             "(false: the slides' wrong shadows and anti-shadows)"),
-        flag(kCull, "true",
-             "leave out of a flattening the casters whose flattened bounds miss the view (mesh occluders; "
-             "a flattening none reaches is skipped, its receiver marking too)"),
-    };
-}
+
 } // namespace
 
-PlanarTechnique::PlanarTechnique()
-    : Technique({.name = "planar",
-                 .description =
-                     "projected planar shadows: casters flattened onto each receiver plane, stencil "
-                     "keeps them on it (no self-shadowing, planar receivers only)",
-                 .effects = Effect::HardShadows | Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"lighting", "shadows"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kOccluder, {"mesh", "proxy"}},
-                     {kStencil, {"true", "false"}},
-                 }}) {}
+PlanarGL::PlanarGL()
+    : GlTechnique(Planar::declaration()) {}
 
-PlanarTechnique::~PlanarTechnique() {
+PlanarGL::~PlanarGL() {
     release();
 }
 
-void PlanarTechnique::release() {
+void PlanarGL::release() {
     if (mProxyInstances) glDeleteBuffers(1, &mProxyInstances);
     mProxyInstances = 0;
     mProxyBatches.clear();
 }
 
-std::vector<PlanarTechnique::Projection>
-PlanarTechnique::projections(const std::vector<ReceiverPlane>& planes, const Scene& scene, bool guards) {
+std::vector<PlanarGL::Projection>
+PlanarGL::projections(const std::vector<ReceiverPlane>& planes, const Scene& scene, bool guards) {
     std::vector<Projection> out;
     const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
     for (size_t p = 0; p < planes.size(); ++p)
@@ -102,7 +69,7 @@ PlanarTechnique::projections(const std::vector<ReceiverPlane>& planes, const Sce
     return out;
 }
 
-void PlanarTechnique::setScene(const Scene& scene) {
+void PlanarGL::setScene(const Scene& scene) {
     release();
     mPlanes = ReceiverPlane::find(scene);
     if (mPlanes.empty())
@@ -114,7 +81,7 @@ void PlanarTechnique::setScene(const Scene& scene) {
     mCulling.setScene(scene);
 }
 
-void PlanarTechnique::uploadProxies(const Scene& scene) {
+void PlanarGL::uploadProxies(const Scene& scene) {
     // The casters' proxies, grouped by shape: one instanced draw per shape and flattening.
     const std::vector<ShadowProxy> proxies = ProxyCollection::collect(scene, false, nullptr);
     const Scene shapes = unitShapes();
@@ -138,7 +105,7 @@ void PlanarTechnique::uploadProxies(const Scene& scene) {
         InstancedSubmitter::attachInstances(mProxyMeshes.vao(s), mProxyInstances);
 }
 
-void PlanarTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+void PlanarGL::sceneChanged(const Scene& scene, uint32_t changes) {
     if (changes & kLightsMoved) mProjections = projections(mPlanes, scene, mGuards);
     if (changes & kCastersMoved) mCulling.instancesMoved(scene);
     if ((changes & kCastersMoved) && mUseProxies) {
@@ -147,13 +114,13 @@ void PlanarTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
     }
 }
 
-void PlanarTechnique::compile(const CompileContext& ctx) {
+void PlanarGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
-    mStencil = p.getBool(kStencil);
-    mUseProxies = p.getEnum(kOccluder) == "proxy";
-    mGuards = p.getBool(kGuards);
-    mCull = p.getBool(kCull) && !mUseProxies;
-    mDarkness = float(p.getFloat(kDarkness));
+    mStencil = p.getBool(Planar::kStencil);
+    mUseProxies = p.getEnum(Planar::kOccluder) == "proxy";
+    mGuards = p.getBool(Planar::kGuards);
+    mCull = p.getBool(Planar::kCull) && !mUseProxies;
+    mDarkness = float(p.getFloat(Planar::kDarkness));
     mProjections = projections(mPlanes, ctx.scene, mGuards);
 
     Defines base = ctx.submitter.defines();
@@ -173,7 +140,7 @@ void PlanarTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(key);
 }
 
-void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p, InstanceMask keep) {
+void PlanarGL::drawOccluders(FrameContext& ctx, const Projection& p, InstanceMask keep) {
     const ReceiverPlane& plane = mPlanes[p.plane];
     const Program& program = mUseProxies ? *mProxyProgram : *mShadowProgram;
     program.use();
@@ -194,7 +161,7 @@ void PlanarTechnique::drawOccluders(FrameContext& ctx, const Projection& p, Inst
     glBindVertexArray(0);
 }
 
-void PlanarTechnique::setShadowState(bool stencil) {
+void PlanarGL::setShadowState(bool stencil) {
     glDepthMask(GL_FALSE);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(ReceiverStencil::kOffsetFactor, ReceiverStencil::kOffsetUnits);
@@ -211,7 +178,7 @@ void PlanarTechnique::setShadowState(bool stencil) {
     }
 }
 
-void PlanarTechnique::execute(FrameContext& ctx) {
+void PlanarGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     ctx.passes.begin("lighting");
     mLitProgram->use();
@@ -228,7 +195,7 @@ void PlanarTechnique::execute(FrameContext& ctx) {
     setCounters(ctx);
 }
 
-void PlanarTechnique::renderShadows(FrameContext& ctx) {
+void PlanarGL::renderShadows(FrameContext& ctx) {
     ctx.passes.begin("shadows");
     setShadowState(mStencil);
     int ref = 0;
@@ -258,7 +225,7 @@ void PlanarTechnique::renderShadows(FrameContext& ctx) {
     resetFrameState();
 }
 
-void PlanarTechnique::setCounters(const FrameContext& ctx) {
+void PlanarGL::setCounters(const FrameContext& ctx) {
     const SubmitStats& s = ctx.submitter.stats();
     const double proxies = mUseProxies ? double(mProjections.size()) : 0.0;
     mCounters = {{"draw_calls", double(s.drawCalls) + proxies * double(mProxyBatches.size())},

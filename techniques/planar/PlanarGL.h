@@ -31,17 +31,18 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ReceiverPlane.h"
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
-#include "techniques/common/ReceiverStencil.h"
-#include "techniques/submit/MeshBuffers.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/planar/Planar.h"
+#include "scenes/InstanceCulling.h"
+#include "techniques/gl/ReceiverStencil.h"
+#include "techniques/gl/MeshBuffers.h"
 
 namespace sb {
 
-class PlanarTechnique final : public Technique {
+class PlanarGL final : public GlTechnique {
 public:
-    PlanarTechnique();
-    ~PlanarTechnique() override;
+    PlanarGL();
+    ~PlanarGL() override;
     void setScene(const Scene& scene) override;
     /// The flattening matrices follow the lights; the proxy occluders (occluder=proxy) the casters.
     void sceneChanged(const Scene& scene, uint32_t changes) override;

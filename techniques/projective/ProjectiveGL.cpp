@@ -1,4 +1,4 @@
-#include "techniques/projective/ProjectiveTechnique.h"
+#include "techniques/projective/ProjectiveGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,44 +9,21 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/common/ShadowWork.h"
+#include "scenes/ShadowWork.h"
 
 namespace sb {
 
 namespace {
-constexpr const char* kResolution = "resolution";
-constexpr const char* kBlur = "blur";
-constexpr const char* kCull = "cull";
 constexpr GLint kMatrixLocation = 8; // projective/texture.vert and common/scene.vert (SHADOW_MAP)
 constexpr GLint kLayerLocation = 0;  // projective/blur.frag (BLUR_FROM_ARRAY)
 
-/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        integer(kResolution, "512", 16, 8192, "projective texture width and height (texels)"),
-        integer(kBlur, "0", 0, 32, "blur radius in texels: the slides' fake softness"),
-        flag(kCull, "true",
-             "leave out of each light's texture the casters whose shadow cannot reach the view (blur 0 only: "
-             "a blurred edge reaches further)"),
-    };
-}
+
 } // namespace
 
-ProjectiveTechnique::ProjectiveTechnique()
-    : Technique({.name = "projective",
-                 .description = "projective texture shadows: casters black on white from each light, "
-                                "projected onto the non-casting receivers (no self-shadowing)",
-                 // Blurred edges are a fixed-width fake, not soft shadows; casters are never shadowed.
-                 .effects = Effect::HardShadows | Effect::NonPlanarReceivers | Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"texture", "blur", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kResolution, {"128", "256", "512", "1024", "2048"}},
-                     {kBlur, {"0", "1", "2", "4", "8"}},
-                 }}) {}
+ProjectiveGL::ProjectiveGL()
+    : GlTechnique(Projective::declaration()) {}
 
-ProjectiveTechnique::~ProjectiveTechnique() {
+ProjectiveGL::~ProjectiveGL() {
     releaseTextures();
     if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);
 }
@@ -83,7 +60,7 @@ float padded(float exact) {
 }
 } // namespace
 
-ProjectiveTechnique::Projector ProjectiveTechnique::aimAtReceivers(const Light& light,
+ProjectiveGL::Projector ProjectiveGL::aimAtReceivers(const Light& light,
                                                                    const Aabb& receivers) {
     const glm::vec3 toCentre = receivers.center() - light.position;
     // The light among the receivers (a room's walls and floor around it) has no one direction
@@ -114,7 +91,7 @@ ProjectiveTechnique::Projector ProjectiveTechnique::aimAtReceivers(const Light& 
     return p;
 }
 
-ProjectiveTechnique::Projector ProjectiveTechnique::computeProjector(const Scene& scene, const Light& light) {
+ProjectiveGL::Projector ProjectiveGL::computeProjector(const Scene& scene, const Light& light) {
     if (light.type == LightType::Directional) return {fitLightViewProjection(scene, light), false};
     // Point and spot: a perspective projector at the light looking at the casters' bounding sphere.
     const Aabb casters = scene.computeBounds(true);
@@ -151,7 +128,7 @@ ProjectiveTechnique::Projector ProjectiveTechnique::computeProjector(const Scene
     return p;
 }
 
-void ProjectiveTechnique::setScene(const Scene& scene) {
+void ProjectiveGL::setScene(const Scene& scene) {
     mCulling.setScene(scene);
     mReceivers = receiverBounds(scene);
     mViewProj.clear();
@@ -180,7 +157,7 @@ void ProjectiveTechnique::setScene(const Scene& scene) {
     }
 }
 
-void ProjectiveTechnique::releaseTextures() {
+void ProjectiveGL::releaseTextures() {
     if (!mFbos.empty()) glDeleteFramebuffers(GLsizei(mFbos.size()), mFbos.data());
     mFbos.clear();
     if (mArray) glDeleteTextures(1, &mArray);
@@ -199,7 +176,7 @@ void checkComplete(GLuint fbo) {
 }
 } // namespace
 
-void ProjectiveTechnique::allocateTextures(int resolution, int layers) {
+void ProjectiveGL::allocateTextures(int resolution, int layers) {
     if (resolution == mResolution && layers == mLayers) return;
     releaseTextures();
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &mArray);
@@ -231,12 +208,12 @@ void ProjectiveTechnique::allocateTextures(int resolution, int layers) {
     mLayers = layers;
 }
 
-void ProjectiveTechnique::compile(const CompileContext& ctx) {
+void ProjectiveGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int layers = std::max<int>(1, int(mViewProj.size()));
-    allocateTextures(int(p.getInt(kResolution)), layers);
-    mBlurRadius = int(p.getInt(kBlur));
-    mCull = p.getBool(kCull) && mBlurRadius == 0;
+    allocateTextures(int(p.getInt(Projective::kResolution)), layers);
+    mBlurRadius = int(p.getInt(Projective::kBlur));
+    mCull = p.getBool(Projective::kCull) && mBlurRadius == 0;
     if (!mEmptyVao) glCreateVertexArrays(1, &mEmptyVao);
 
     const Defines base = ctx.submitter.defines();
@@ -266,7 +243,7 @@ void ProjectiveTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(key);
 }
 
-void ProjectiveTechnique::renderTexture(FrameContext& ctx) {
+void ProjectiveGL::renderTexture(FrameContext& ctx) {
     if (mViewProj.empty()) return;
     glViewport(0, 0, mResolution, mResolution);
     glDisable(GL_DEPTH_TEST); // a silhouette: every caster fragment is black, whatever its depth
@@ -291,7 +268,7 @@ void ProjectiveTechnique::renderTexture(FrameContext& ctx) {
     glEnable(GL_DEPTH_TEST);
 }
 
-int ProjectiveTechnique::renderBlur(FrameContext&) {
+int ProjectiveGL::renderBlur(FrameContext&) {
     if (mViewProj.empty() || mBlurRadius <= 0) return 0;
     glViewport(0, 0, mResolution, mResolution);
     glDisable(GL_DEPTH_TEST);
@@ -319,7 +296,7 @@ int ProjectiveTechnique::renderBlur(FrameContext&) {
     return draws;
 }
 
-void ProjectiveTechnique::renderLighting(FrameContext& ctx) {
+void ProjectiveGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLitProgram->use();
     if (mViewProj.empty()) {
@@ -337,7 +314,7 @@ void ProjectiveTechnique::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(0, 0);
 }
 
-void ProjectiveTechnique::execute(FrameContext& ctx) {
+void ProjectiveGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     int blurPasses = 0;
     if (mNoProjector) {

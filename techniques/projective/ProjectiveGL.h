@@ -42,12 +42,13 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/projective/Projective.h"
+#include "scenes/InstanceCulling.h"
 
 namespace sb {
 
-class ProjectiveTechnique final : public Technique {
+class ProjectiveGL final : public GlTechnique {
 public:
     /// The widest projector half-angle (degrees): a projector that would need a wider frustum (one
     /// reaching 90 degrees or more) gets this one.
@@ -60,8 +61,8 @@ public:
         bool clamped = false;
     };
 
-    ProjectiveTechnique();
-    ~ProjectiveTechnique() override;
+    ProjectiveGL();
+    ~ProjectiveGL() override;
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;

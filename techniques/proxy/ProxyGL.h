@@ -28,15 +28,16 @@
 
 #include "scenes/ProxyCollection.h"
 #include "scenes/ShadowProxy.h"
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/proxy/Proxy.h"
 #include "techniques/proxy/ProxyIndexGrid.h"
 
 namespace sb {
 
-class ProxyTechnique final : public Technique {
+class ProxyGL final : public GlTechnique {
 public:
-    ProxyTechnique();
-    ~ProxyTechnique() override;
+    ProxyGL();
+    ~ProxyGL() override;
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;

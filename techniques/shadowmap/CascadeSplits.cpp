@@ -4,7 +4,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "techniques/common/InstanceCulling.h"
+#include "scenes/InstanceCulling.h"
 
 namespace sb {
 

@@ -1,4 +1,4 @@
-#include "techniques/shadowmap/CascadedTechnique.h"
+#include "techniques/shadowmap/CascadedGL.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -8,7 +8,7 @@
 
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/common/ShadowWork.h"
+#include "scenes/ShadowWork.h"
 #include "techniques/shadowmap/CascadeSplits.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -19,10 +19,6 @@ namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-constexpr const char* kCascades = "cascades";
-constexpr const char* kLambda = "lambda";
-constexpr const char* kStabilize = "stabilize";
-constexpr const char* kBlend = "blend";
 // Uniform locations: shadowmap/depth.vert's light matrix, and shadowmap/cascaded_lighting.frag's.
 constexpr GLint kLightMatrixLocation = 8;
 constexpr GLint kSplitFarLocation = 10;
@@ -32,49 +28,21 @@ constexpr GLint kEmptySlotsLocation = 15;
 constexpr GLint kSlotMatrixLocation = 16; // SLOT_COUNT (at most 16) locations
 constexpr GLint kSlotLayerLocation = 32;  // likewise
 
-/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        P::resolution("2048", "width and height of each cascade's map (texels)"),
-        integer(kCascades, "4", 1, CascadedTechnique::kMaxCascades,
-                "slices of the view frustum, one map each (directional lights)"),
-        real(kLambda, "0.75", 0, 1, "practical split weight: 0 uniform, 1 logarithmic (Zhang et al. 2006)"),
-        flag(kStabilize, "true",
-             "bounding-sphere extent snapped to whole texels (no shimmer) instead of the tight box"),
-        real(kBlend, "0.1", 0, 1, "fraction of each cascade, at its far end, blended into the next"),
-        P::biasConstant(),
-        P::biasSlope(),
-        P::pcf("PCF kernel width: pcf x pcf hardware-compare taps one texel apart"),
-    };
-}
+
 
 } // namespace
 
-CascadedTechnique::CascadedTechnique()
-    : Technique({.name = "cascaded",
-                 .description = "cascaded shadow maps: the view frustum split into slices (practical split), "
-                                "one stable map per slice",
-                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                            Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = declareProperties(),
-                 // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
-                 .quality = {
-                     {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
-                     {kCascades, {"1", "2", "3", "4"}},
-                     {kLambda, {"0", "0.25", "0.5", "0.75", "1"}},
-                     P::pcfSweep(),
-                 }}) {}
+CascadedGL::CascadedGL()
+    : GlTechnique(Cascaded::declaration()) {}
 
-int CascadedTechnique::slotCount() const {
+int CascadedGL::slotCount() const {
     return mLights.empty() ? 1 : mLights.back().firstSlot + mLights.back().slots;
 }
 
-void CascadedTechnique::setScene(const Scene& scene) {
+void CascadedGL::setScene(const Scene& scene) {
     mLights.clear();
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
-    const int cascades = int(properties().getInt(kCascades));
+    const int cascades = int(properties().getInt(Cascaded::kCascades));
     Aabb casters = scene.computeBounds(true), all = scene.computeBounds(false);
     int slot = 0;
     for (size_t i = 0; i < count; ++i) {
@@ -105,7 +73,7 @@ void CascadedTechnique::setScene(const Scene& scene) {
     mCulling.setScene(scene);
 }
 
-void CascadedTechnique::compile(const CompileContext& ctx) {
+void CascadedGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), slotCount(), false);
     Defines base = ctx.submitter.defines();
@@ -113,7 +81,7 @@ void CascadedTechnique::compile(const CompileContext& ctx) {
     Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, mLights.size()));
     lit["SLOT_COUNT"] = std::to_string(slotCount());
-    lit["CASCADE_COUNT"] = std::to_string(p.getInt(kCascades));
+    lit["CASCADE_COUNT"] = std::to_string(p.getInt(Cascaded::kCascades));
     std::string first, slots;
     for (const LightMaps& m : mLights) {
         first += (first.empty() ? "" : ", ") + std::to_string(m.firstSlot);
@@ -121,25 +89,25 @@ void CascadedTechnique::compile(const CompileContext& ctx) {
     }
     lit["FIRST_SLOTS"] = first.empty() ? "0" : first;
     lit["LIGHT_SLOTS"] = slots.empty() ? "0" : slots;
-    if (p.getInt(kCascades) > 1 && p.getFloat(kBlend) > 0.0) lit["BLEND"] = "";
+    if (p.getInt(Cascaded::kCascades) > 1 && p.getFloat(Cascaded::kBlend) > 0.0) lit["BLEND"] = "";
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/cascaded_lighting.frag", ""}, lit);
     setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
 }
 
-void CascadedTechnique::fitCascades(const FrameContext& ctx) {
+void CascadedGL::fitCascades(const FrameContext& ctx) {
     const PropertySet& p = properties();
-    const int n = int(p.getInt(kCascades));
+    const int n = int(p.getInt(Cascaded::kCascades));
     const glm::vec2 range =
         CascadeSplits::clipToReceivers(CascadeSplits::nearFar(ctx.proj), ctx.view, ctx.proj, mReceivers);
-    mSplits = CascadeSplits::practical(range.x, range.y, n, float(p.getFloat(kLambda)));
+    mSplits = CascadeSplits::practical(range.x, range.y, n, float(p.getFloat(Cascaded::kLambda)));
     // Cascade c is looked up from mSplits[c] on, but blends in over the last `blend` of cascade c - 1:
     // its map must cover that band too.
-    const float blend = float(p.getFloat(kBlend));
+    const float blend = float(p.getFloat(Cascaded::kBlend));
     mFitStart.assign(size_t(n), range.x);
     for (int c = 1; c < n; ++c)
         mFitStart[size_t(c)] = mSplits[size_t(c)] - blend * (mSplits[size_t(c)] - mSplits[size_t(c) - 1]);
-    const bool stable = p.getBool(kStabilize);
+    const bool stable = p.getBool(Cascaded::kStabilize);
     for (LightMaps& m : mLights) {
         if (!m.directional) {
             mSlotViewProj[size_t(m.firstSlot)] = m.spotViewProj;
@@ -158,7 +126,7 @@ void CascadedTechnique::fitCascades(const FrameContext& ctx) {
         mSlotShadow[i] = FlatLightFits::textureBias() * mSlotViewProj[i];
 }
 
-void CascadedTechnique::shareIdenticalFits(const LightMaps& m) {
+void CascadedGL::shareIdenticalFits(const LightMaps& m) {
     // A cascade whose fit equals the one before it (both clamped to the whole casters' bounds, as the
     // far cascades of an overview are) reads that map instead of drawing the same one again.
     for (int c = 0; c < m.slots; ++c) {
@@ -169,7 +137,7 @@ void CascadedTechnique::shareIdenticalFits(const LightMaps& m) {
     }
 }
 
-void CascadedTechnique::renderDepth(FrameContext& ctx) {
+void CascadedGL::renderDepth(FrameContext& ctx) {
     const PropertySet& p = properties();
     DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
     // Casters nearer the light than a box's near side are not culled (SidesAndFar); clamping keeps any
@@ -206,17 +174,17 @@ void CascadedTechnique::renderDepth(FrameContext& ctx) {
     glDisable(GL_DEPTH_CLAMP);
 }
 
-void CascadedTechnique::renderLighting(FrameContext& ctx) {
+void CascadedGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLightingProgram->use();
-    const int n = int(properties().getInt(kCascades));
+    const int n = int(properties().getInt(Cascaded::kCascades));
     glm::vec4 splitFar(FLT_MAX), bandStart(FLT_MAX), bandScale(0.0f);
     // No splits when the frame skipped its depth pass (ShadowWork::noneNeeded): nothing is looked up.
     for (int c = 0; c + 1 < int(mSplits.size()) && c < n; ++c) {
         splitFar[c] = mSplits[size_t(c) + 1];
         if (c + 1 == n) break; // the last cascade blends into nothing
         const float band =
-            float(properties().getFloat(kBlend)) * (mSplits[size_t(c) + 1] - mSplits[size_t(c)]);
+            float(properties().getFloat(Cascaded::kBlend)) * (mSplits[size_t(c) + 1] - mSplits[size_t(c)]);
         bandStart[c] = splitFar[c] - band;
         bandScale[c] = band > 0.0f ? 1.0f / band : 0.0f;
     }
@@ -232,7 +200,7 @@ void CascadedTechnique::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(0, 0);
 }
 
-void CascadedTechnique::execute(FrameContext& ctx) {
+void CascadedGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx,
         [&] {

@@ -35,19 +35,19 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/Cascaded.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/DepthLayers.h"
 
 namespace sb {
 
-class CascadedTechnique final : public Technique {
+class CascadedGL final : public GlTechnique {
 public:
-    static constexpr int kMaxCascades = 4;
-    static constexpr int kMaxSlots = kMaxLights * kMaxCascades;
+    static constexpr int kMaxSlots = kMaxLights * Cascaded::kMaxCascades;
 
-    CascadedTechnique();
+    CascadedGL();
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;

@@ -1,4 +1,5 @@
-#include "techniques/shadowmap/CubeMapTechnique.h"
+#include "techniques/shadowmap/OmniLightsGL.h"
+#include "techniques/shadowmap/CubeMapGL.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -10,48 +11,23 @@ namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-constexpr const char* kLayered = "layered";
 constexpr GLint kLightMatrixLocation = 8;      // shadowmap/depth.vert
 constexpr GLint kFaceViewProjLocation = 12;    // shadowmap/cube_depth.geom
 constexpr GLint kLayerBaseLocation = 18;       // shadowmap/cube_depth.geom
 constexpr GLuint kFlatUnit = 0, kCubeUnit = 1; // shadowmap/omni_lighting.glsl, cube_lighting.frag
 
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        P::resolution("1024", "width and height of each cube face and of each spot/directional map (texels)"),
-        P::biasConstant(),
-        P::biasSlope(),
-        P::pcf("PCF kernel width: pcf x pcf taps one texel apart on the face"),
-        flag(kLayered, "true",
-             "one pass per light with a geometry shader routing triangles to faces (true, where the "
-             "context allows it), or six passes per light with per-face caster culling (false)"),
-    };
-}
+
 } // namespace
 
-TechniqueInfo CubeMapTechnique::describe() {
-    return {.name = "cubemap",
-            .description = "omnidirectional shadow mapping: a depth cube map per point light",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{"GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
-            .properties = declareProperties(),
-            .quality = {
-                {P::kResolution, {"256", "512", "1024", "2048"}},
-                P::pcfSweep(),
-                P::biasConstantSweep(),
-                P::biasSlopeSweep(),
-            }};
-}
 
-CubeMapTechnique::CubeMapTechnique() : Technique(describe()) {}
 
-bool CubeMapTechnique::layeredAvailable(const Context& context) {
+CubeMapGL::CubeMapGL() : GlTechnique(CubeMap::declaration()) {}
+
+bool CubeMapGL::layeredAvailable(const Context& context) {
     return context.glMajor > 3 || (context.glMajor == 3 && context.glMinor >= 2);
 }
 
-void CubeMapTechnique::setScene(const Scene& scene) {
+void CubeMapGL::setScene(const Scene& scene) {
     mLights.setScene(scene);
     mCubeLights.clear();
     for (const OmniLight& o : mLights.lights())
@@ -61,10 +37,10 @@ void CubeMapTechnique::setScene(const Scene& scene) {
     mOmniCulling.setScene(scene);
 }
 
-void CubeMapTechnique::compile(const CompileContext& ctx) {
+void CubeMapGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int resolution = int(p.getInt(P::kResolution));
-    mLayered = p.getBool(kLayered) && layeredAvailable(ctx.context);
+    mLayered = p.getBool(CubeMap::kLayered) && layeredAvailable(ctx.context);
     mCubes.allocate(GL_TEXTURE_CUBE_MAP_ARRAY, resolution, CubeFaces::kFaces * mLights.omniCount(), mLayered);
     mFlat.allocate(GL_TEXTURE_2D_ARRAY, resolution, mLights.flatCount(), false);
 
@@ -86,7 +62,7 @@ void CubeMapTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(key);
 }
 
-void CubeMapTechnique::renderCubesLayered(FrameContext& ctx) {
+void CubeMapGL::renderCubesLayered(FrameContext& ctx) {
     mLayeredDepth->use();
     mCubes.beginLayered(); // every cube in the array belongs to a light that casts: clear them all
     for (size_t cube = 0; cube < mCubeLights.size(); ++cube) {
@@ -102,7 +78,7 @@ void CubeMapTechnique::renderCubesLayered(FrameContext& ctx) {
     }
 }
 
-void CubeMapTechnique::renderCubesSixPass(FrameContext& ctx) {
+void CubeMapGL::renderCubesSixPass(FrameContext& ctx) {
     mFaceDepth->use();
     for (size_t cube = 0; cube < mCubeLights.size(); ++cube) {
         const Cube& c = mCubeLights[cube];
@@ -122,7 +98,7 @@ void CubeMapTechnique::renderCubesSixPass(FrameContext& ctx) {
     }
 }
 
-void CubeMapTechnique::renderDepth(FrameContext& ctx) {
+void CubeMapGL::renderDepth(FrameContext& ctx) {
     const PropertySet& p = properties();
     mCulled = 0;
     mFacesRendered = 0;
@@ -130,7 +106,7 @@ void CubeMapTechnique::renderDepth(FrameContext& ctx) {
     DepthPassState state(int(p.getInt(P::kResolution)), float(p.getFloat(P::kBiasSlope)),
                          float(p.getFloat(P::kBiasConstant)));
     if (!mFlat.empty())
-        mCulled += mLights.renderFlatMaps(ctx.submitter, mCulling, *mFaceDepth, mFlat, 0, mKeep);
+        mCulled += renderOmniFlatMaps(mLights, ctx.submitter, mCulling, *mFaceDepth, mFlat, 0, mKeep);
     if (!mCubes.empty()) {
         if (mLayered)
             renderCubesLayered(ctx);
@@ -139,10 +115,10 @@ void CubeMapTechnique::renderDepth(FrameContext& ctx) {
     }
 }
 
-void CubeMapTechnique::renderLighting(FrameContext& ctx) {
+void CubeMapGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLighting->use();
-    mLights.setLightingUniforms(0, 1); // flat maps at their index, cubes by cube index
+    setOmniLightingUniforms(mLights, 0, 1); // flat maps at their index, cubes by cube index
     if (!mFlat.empty()) glBindTextureUnit(kFlatUnit, mFlat.texture());
     if (!mCubes.empty()) glBindTextureUnit(kCubeUnit, mCubes.texture());
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // bilinear footprints and PCF taps cross face edges
@@ -152,18 +128,10 @@ void CubeMapTechnique::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(kCubeUnit, 0);
 }
 
-void CubeMapTechnique::execute(FrameContext& ctx) {
+void CubeMapGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
-    const double res = double(properties().getInt(P::kResolution));
-    const double maps = double(CubeFaces::kFaces * mLights.omniCount() + mLights.flatCount());
-    mCounters = {{"draw_calls", double(s.drawCalls)},
-                 {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", res * res * maps},
-                 {"faces_rendered", double(mFacesRendered)},
-                 {"casters_culled", double(mCulled)},
-                 {"lights_skipped", double(mLights.skippedCount())},
-                 {"lights_unshadowed", double(mLights.unshadowedCount())}};
+    mCounters = CubeMap::counters(s, int(properties().getInt(P::kResolution)), mLights, mFacesRendered, mCulled);
 }
 
 } // namespace sb

@@ -14,7 +14,7 @@
 //    faces, the range sphere (OmniCulling). Each caster's vertices are transformed once, the geometry
 //    stage does the per-face work.
 //  - false: six passes per light, each face's casters culled against that face's frustum
-//    (techniques/common/InstanceCulling, CullPlanes::All) and the range sphere: a caster on one side
+//    (scenes/InstanceCulling, CullPlanes::All) and the range sphere: a caster on one side
 //    of the light is submitted only to the faces that see it.
 // Spot lights keep `shadowmap`'s perspective map and directional lights its orthographic one
 // (scenes/LightFit.h), in a separate 2D depth array, so the technique runs on every scene. A point
@@ -29,8 +29,9 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/CubeMap.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/CubeFaces.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/OmniCulling.h"
@@ -38,12 +39,11 @@
 
 namespace sb {
 
-class CubeMapTechnique final : public Technique {
+class CubeMapGL final : public GlTechnique {
 public:
-    CubeMapTechnique();
+    CubeMapGL();
     /// The declaration (name, effects, passes, properties, quality knobs), shared with the Vulkan form
     /// (CubeMapVulkan.h).
-    static TechniqueInfo describe();
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;

@@ -4,8 +4,9 @@
 #include <cstring>
 
 #include "core/Error.h"
-#include "techniques/common/ShadowWork.h"
-#include "techniques/shadowmap/CubeMapTechnique.h"
+#include "scenes/ShadowWork.h"
+#include "techniques/shadowmap/CubeMap.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
@@ -30,7 +31,7 @@ constexpr uint32_t kCubePassBytes = kFaceMatricesBytes + 16;
 
 } // namespace
 
-CubeMapVulkan::CubeMapVulkan() : VulkanTechnique(CubeMapTechnique::describe()) {}
+CubeMapVulkan::CubeMapVulkan() : VulkanTechnique(CubeMap::declaration()) {}
 
 CubeMapVulkan::~CubeMapVulkan() {
     release();
@@ -137,29 +138,27 @@ void CubeMapVulkan::createDescriptors(VulkanContext& context) {
 }
 
 void CubeMapVulkan::writeBlocks() {
-    // The lighting pass's uniforms as OmniLightSet::setLightingUniforms(0, 1) sets them on GL: flat maps
-    // at their index, cubes by cube index.
+    // The lighting pass's per-light arrays, the GL form's uniforms (OmniLightSet::lightingArrays): flat
+    // maps at their index (flatBase 0), cubes by cube index (one layer-cube each); std140 pads each
+    // ivec2 and vec2 entry to 16 bytes.
     char* base = static_cast<char*>(mLightingBlock.map());
     const int n = mLights.shaderLightCount();
     const BlockLayout block{uint32_t(n)};
-    std::vector<glm::mat4> matrices(size_t(n), glm::mat4(1.0f));
+    const OmniLightSet::LightingArrays a = mLights.lightingArrays(0, 1);
     std::vector<glm::ivec4> maps(size_t(n), glm::ivec4(0));
     std::vector<glm::vec4> ranges(size_t(n), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
-    const auto& lights = mLights.lights();
-    for (size_t i = 0; i < lights.size() && i < size_t(n); ++i) {
-        const OmniLight& o = lights[i];
-        matrices[i] = o.shadowMatrix;
-        maps[i] = {int(o.kind), o.index, 0, 0}; // flat: flatBase 0 + index; omni: 1 layer-cube per index
-        ranges[i] = {o.point.nearZ, o.point.farZ, 0.0f, 0.0f};
+    for (size_t i = 0; i < size_t(n); ++i) {
+        maps[i] = {a.maps[i].x, a.maps[i].y, 0, 0};
+        ranges[i] = {a.depthRanges[i].x, a.depthRanges[i].y, 0.0f, 0.0f};
     }
-    std::memcpy(base, matrices.data(), 64 * size_t(n));
+    std::memcpy(base, a.shadowMatrices.data(), 64 * size_t(n));
     std::memcpy(base + block.maps, maps.data(), 16 * size_t(n));
     std::memcpy(base + block.ranges, ranges.data(), 16 * size_t(n));
 
     // The depth passes' matrices: Vulkan's depth range, no flip (VulkanFrameBlock::depthFromGl).
     char* slots = static_cast<char*>(mPassSlots.map());
     const glm::mat4 z = VulkanFrameBlock::depthFromGl();
-    for (const OmniLight& o : lights) {
+    for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
         const glm::mat4 m = z * o.viewProj;
         std::memcpy(slots + size_t(mSlotStride) * flatSlot(o.index), &m, sizeof m);
@@ -215,9 +214,7 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     if (mLayered) {
         std::string layeredKey = "cubemap-layered-depth" + bias;
         GraphicsPipelineDesc layered = scenePipeline(ctx, "shadowmap/cube_depth.vert", "shadowmap/depth.frag",
-                                                     base, mDepthLayout, layeredKey);
-        layered.geometry = ctx.shaders.get("shadowmap/cube_depth.geom", base, GL_GEOMETRY_SHADER);
-        layeredKey += "+shadowmap/cube_depth.geom";
+                                                     base, mDepthLayout, layeredKey, "shadowmap/cube_depth.geom");
         depthState(layered);
         mLayeredDepthPipeline = ctx.pipelines.get(layeredKey, layered);
     }
@@ -264,13 +261,12 @@ void CubeMapVulkan::bindSlot(VulkanFrameContext& ctx, uint32_t slot) {
 }
 
 void CubeMapVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
-    // OmniLightSet::renderFlatMaps: each flat map cleared, its casters culled against its frustum.
+    // As the GL form's renderOmniFlatMaps: each flat map cleared, its casters culled against its frustum.
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
         beginDepthPass(ctx, mFlatFramebuffers[size_t(o.index)], mFaceDepthPipeline);
         bindSlot(ctx, flatSlot(o.index));
-        const size_t kept = mCulling.cull(o.viewProj, DrawSet::Casters, CullPlanes::All, mKeep);
-        mCulled += mCulling.count(DrawSet::Casters) - kept;
+        mCulled += mLights.cullFlatCasters(o, mCulling, mKeep);
         ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }
@@ -329,25 +325,10 @@ void CubeMapVulkan::execute(VulkanFrameContext& ctx) {
     writeBlocks();
     mCulled = 0;
     mFacesRendered = 0;
-    ctx.submitter.resetStats();
-    if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
-        ctx.passes.skip("depth", reason);
-    } else {
-        ctx.passes.begin("depth");
-        renderDepth(ctx);
-    }
-    ctx.passes.begin("lighting");
-    drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
-    const SubmitStats& s = ctx.submitter.stats();
-    const double res = double(mSize);
-    const double maps = double(CubeFaces::kFaces * mLights.omniCount() + mLights.flatCount());
-    mCounters = {{"draw_calls", double(s.drawCalls)},
-                 {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", res * res * maps},
-                 {"faces_rendered", double(mFacesRendered)},
-                 {"casters_culled", double(mCulled)},
-                 {"lights_skipped", double(mLights.skippedCount())},
-                 {"lights_unshadowed", double(mLights.unshadowedCount())}};
+    const SubmitStats s = DepthLightingFrame::run(
+        ctx, [&] { renderDepth(ctx); },
+        [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
+    mCounters = CubeMap::counters(s, mSize, mLights, mFacesRendered, mCulled);
 }
 
 } // namespace sb

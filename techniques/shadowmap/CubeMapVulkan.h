@@ -1,5 +1,5 @@
 #pragma once
-// `cubemap` on Vulkan: CubeMapTechnique's two passes with the same declaration, properties, light
+// `cubemap` on Vulkan: CubeMapGL's two passes with the same declaration, properties, light
 // classification (OmniLightSet), cube faces (CubeFaces), caster culling (OmniCulling, InstanceCulling)
 // and shaders (shadowmap/depth.vert, cube_depth.vert + cube_depth.geom, common/scene.vert,
 // shadowmap/cube_lighting.frag with omni_lighting.glsl, their `#ifdef VULKAN` blocks), recorded into
@@ -28,7 +28,7 @@
 
 #include <glm/glm.hpp>
 
-#include "techniques/common/InstanceCulling.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/CubeFaces.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"

@@ -30,19 +30,17 @@
 // grows with the texels: `aircraft` 1.12x `shadowmap`'s frame at 1024, 1.67x at 2048, for 0.32% and 0.16%
 // wrong against shadowmap's 0.14%). Point lights need an omni map (`cubemap`, `paraboloid`): refused with
 // ExitCode::Unsupported.
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/Esm.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
 #include "techniques/shadowmap/SeparableBlur.h"
 
 namespace sb {
 
-class EsmTechnique final : public Technique {
+class EsmGL final : public GlTechnique {
 public:
-    /// The largest `exponent`: exp(c) of a depth difference of 1 is far outside float range; the log-space
-    /// filter never forms it.
-    static constexpr double kMaxExponent = 500.0;
 
-    EsmTechnique();
+    EsmGL();
     void setScene(const Scene& scene) override;
     /// The light fits and the maps' fit to the receivers follow the scene (FilterableShadowMaps).
     void sceneChanged(const Scene& scene, uint32_t) override { mMaps.sceneChanged(scene); }

@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "techniques/common/ShadowWork.h"
+#include "scenes/ShadowWork.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {

@@ -46,7 +46,7 @@
 // the outer r + 1 texels answer "lit" without sampling (no caster is there): every texel a lookup reads is
 // one that was rendered and blurred from rendered texels.
 //
-// Each light's pass submits only the casters whose bounds reach its frustum (techniques/common/
+// Each light's pass submits only the casters whose bounds reach its frustum (scenes/
 // InstanceCulling.h, all six planes, as `shadowmap`); a light whose frustum holds no caster gets its layer
 // cleared and nothing else (layerHasCasters() says which, so the blur can skip it too).
 #include <cstdint>
@@ -57,8 +57,8 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/SeparableBlur.h"
 
 namespace sb {

@@ -2,19 +2,14 @@
 
 #include <algorithm>
 
-#include <epoxy/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "core/Error.h"
-#include "gl/FrameTargets.h"
 #include "scenes/LightFit.h"
+#include "shading/ShaderLimits.h"
 
 namespace sb {
 
-namespace {
-constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert; common/scene.vert's shadow matrices
-} // namespace
 
 const glm::mat4& FlatLightFits::textureBias() {
     static const glm::mat4 kBias =
@@ -68,30 +63,11 @@ size_t FlatLightFits::shadowed() const {
     return size_t(std::count(mCastsShadows.begin(), mCastsShadows.end(), uint8_t(1)));
 }
 
-void FlatLightFits::setShadowMatrices() const {
-    if (!mShadowMatrix.empty())
-        glUniformMatrix4fv(kLightMatrixLocation, GLsizei(mShadowMatrix.size()), GL_FALSE,
-                           glm::value_ptr(mShadowMatrix[0]));
-}
-
-size_t FlatLightFits::renderDepth(Submitter& submitter, const InstanceCulling& culling,
-                                  const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll,
+size_t FlatLightFits::cullCasters(size_t light, const InstanceCulling& culling, std::vector<uint8_t>& keep,
                                   const ViewCull* view) const {
-    size_t culled = 0;
-    for (size_t i = 0; i < mViewProj.size(); ++i) {
-        if (!mCastsShadows[i]) continue;
-        maps.beginLayer(int(i));
-        glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
-        if (drawAll) {
-            submitter.draw(DrawSet::All);
-            continue;
-        }
-        size_t kept = culling.cull(mViewProj[i], DrawSet::Casters, CullPlanes::All, keep);
-        if (view) kept = culling.keepReachingView((*view->lights)[i], view->reach, view->margins[i], keep);
-        culled += culling.count(DrawSet::Casters) - kept;
-        submitter.draw(DrawSet::Casters, keep);
-    }
-    return culled;
+    size_t kept = culling.cull(mViewProj[light], DrawSet::Casters, CullPlanes::All, keep);
+    if (view) kept = culling.keepReachingView((*view->lights)[light], view->reach, view->margins[light], keep);
+    return culling.count(DrawSet::Casters) - kept;
 }
 
 } // namespace sb

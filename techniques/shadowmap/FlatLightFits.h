@@ -11,10 +11,9 @@
 
 #include <glm/glm.hpp>
 
+#include "shading/ShaderLimits.h"
+#include "scenes/InstanceCulling.h"
 #include "scenes/Scene.h"
-#include "techniques/common/InstanceCulling.h"
-#include "techniques/shadowmap/DepthLayers.h"
-#include "techniques/submit/Submitter.h"
 
 namespace sb {
 
@@ -58,16 +57,13 @@ public:
     const std::vector<glm::mat4>& viewProj() const { return mViewProj; }           ///< per light
     const std::vector<glm::mat4>& shadowMatrices() const { return mShadowMatrix; } ///< bias * viewProj
 
-    /// Sets the bound lighting program's shadow matrices (location 8, common/scene.vert), one per light.
-    void setShadowMatrices() const;
-    /// The depth pass of every light that casts shadows into layer i of `maps` (the depth program bound,
-    /// DepthPassState set by the caller; an unshadowed light's layer is neither cleared nor read):
-    /// clears the layer, sets the light's matrix (location 8, shadowmap/depth.vert)
-    /// and draws the casters `culling` keeps in its frustum, or everything when `drawAll` (the perf
-    /// gate's injected regression, core/Injection.h). With `view`, of those only the casters whose
-    /// shadow may reach the view. Returns the casters culled over all lights.
-    size_t renderDepth(Submitter& submitter, const InstanceCulling& culling, const DepthLayers& maps,
-                       std::vector<uint8_t>& keep, bool drawAll = false,
+    /// Whether light `light` casts shadows (its map is drawn; an unshadowed light's layer is neither
+    /// cleared nor read).
+    bool castsShadow(size_t light) const { return mCastsShadows[light] != 0; }
+    /// The casters light `light`'s depth pass draws, on either API: those `culling` keeps in its
+    /// frustum and, with `view`, of those only the ones whose shadow may reach the view, marked in
+    /// `keep`. Returns how many were culled.
+    size_t cullCasters(size_t light, const InstanceCulling& culling, std::vector<uint8_t>& keep,
                        const ViewCull* view = nullptr) const;
 
 private:

@@ -4,7 +4,7 @@
 // far around the light, cut down to the range sphere when the light has a range), and a paraboloid
 // half covers a hemisphere of that sphere (Brabec et al. 2002, section 3). A caster whose world bounds
 // lie wholly outside the sphere, or wholly behind the hemisphere's plane, cannot put a texel into the
-// map, so it is not submitted. Per-frustum culling (one cube face) is techniques/common/
+// map, so it is not submitted. Per-frustum culling (one cube face) is scenes/
 // InstanceCulling's; the cube's six-pass mode combines both masks. Conservative (a box is tested, not
 // the mesh), on the CPU, once per pass; what it keeps is the mask Submitter::draw takes.
 #include <cstddef>

@@ -3,19 +3,13 @@
 #include <algorithm>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
-#include "gl/FrameTargets.h"
 #include "scenes/LightFit.h"
+#include "shading/ShaderLimits.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 
-namespace {
-constexpr GLint kShadowMatrixLocation = 8; // common/scene.vert, shadowmap/depth.vert
-constexpr GLint kMapLocation = 16;         // shadowmap/omni_lighting.glsl: ivec2 (kind, layer) per light
-constexpr GLint kDepthRangeLocation = 20;  // vec2 (near, far) per light
-} // namespace
 
 void OmniLightSet::setScene(const Scene& scene) {
     mLights.clear();
@@ -42,39 +36,24 @@ void OmniLightSet::setScene(const Scene& scene) {
     }
 }
 
-void OmniLightSet::setLightingUniforms(int flatBase, int omniLayers) const {
-    const int n = shaderLightCount();
-    std::vector<glm::mat4> matrices(size_t(n), glm::mat4(1.0f));
-    std::vector<glm::ivec2> maps(size_t(n), glm::ivec2(0));
-    std::vector<glm::vec2> ranges(size_t(n), glm::vec2(0.0f, 1.0f));
+OmniLightSet::LightingArrays OmniLightSet::lightingArrays(int flatBase, int omniLayers) const {
+    const size_t n = size_t(shaderLightCount());
+    LightingArrays a{std::vector<glm::mat4>(n, glm::mat4(1.0f)), std::vector<glm::ivec2>(n, glm::ivec2(0)),
+                     std::vector<glm::vec2>(n, glm::vec2(0.0f, 1.0f))};
     for (size_t i = 0; i < mLights.size(); ++i) {
         const OmniLight& o = mLights[i];
-        matrices[i] = o.shadowMatrix;
+        a.shadowMatrices[i] = o.shadowMatrix;
         const int layer = o.kind == OmniMapKind::Flat ? flatBase + o.index : omniLayers * o.index;
-        maps[i] = {int(o.kind), layer};
-        ranges[i] = {o.point.nearZ, o.point.farZ};
+        a.maps[i] = {int(o.kind), layer};
+        a.depthRanges[i] = {o.point.nearZ, o.point.farZ};
     }
-    glUniformMatrix4fv(kShadowMatrixLocation, n, GL_FALSE, glm::value_ptr(matrices[0]));
-    glUniform2iv(kMapLocation, n, glm::value_ptr(maps[0]));
-    glUniform2fv(kDepthRangeLocation, n, glm::value_ptr(ranges[0]));
+    return a;
 }
 
-size_t OmniLightSet::renderFlatMaps(Submitter& submitter, const InstanceCulling& culling,
-                                    const Program& depthProgram, const DepthLayers& layers, int flatBase,
-                                    std::vector<uint8_t>& keep) const {
-    size_t culled = 0;
-    bool bound = false;
-    for (const OmniLight& o : mLights) {
-        if (o.kind != OmniMapKind::Flat) continue;
-        if (!bound) depthProgram.use();
-        bound = true;
-        layers.beginLayer(flatBase + o.index);
-        glUniformMatrix4fv(kShadowMatrixLocation, 1, GL_FALSE, glm::value_ptr(o.viewProj));
-        const size_t kept = culling.cull(o.viewProj, DrawSet::Casters, CullPlanes::All, keep);
-        culled += culling.count(DrawSet::Casters) - kept;
-        submitter.draw(DrawSet::Casters, keep);
-    }
-    return culled;
+size_t OmniLightSet::cullFlatCasters(const OmniLight& light, const InstanceCulling& culling,
+                                     std::vector<uint8_t>& keep) const {
+    const size_t kept = culling.cull(light.viewProj, DrawSet::Casters, CullPlanes::All, keep);
+    return culling.count(DrawSet::Casters) - kept;
 }
 
 } // namespace sb

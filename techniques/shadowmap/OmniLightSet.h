@@ -11,12 +11,10 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/ProgramCache.h"
+#include "shading/ShaderLimits.h"
+#include "scenes/InstanceCulling.h"
 #include "scenes/Scene.h"
-#include "techniques/common/InstanceCulling.h"
-#include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/PointLightFit.h"
-#include "techniques/submit/Submitter.h"
 
 namespace sb {
 
@@ -44,16 +42,20 @@ public:
     /// LIGHT_COUNT of the lighting shader (at least 1: GLSL has no empty arrays).
     int shaderLightCount() const { return std::max<int>(1, int(mLights.size())); }
 
-    /// Sets the lighting program's per-light uniforms (it must be bound): the flat maps' shadow matrices
-    /// (location 8, common/scene.vert), each light's map kind and first layer (location 16: flat maps at
-    /// flatBase + index, omni maps at omniLayers * index) and omni depth range (location 20).
-    void setLightingUniforms(int flatBase, int omniLayers) const;
+    /// What the lighting pass reads per light (shaderLightCount() entries), on either API: the flat
+    /// maps' shadow matrices, each light's map kind and first layer (flat maps at flatBase + index, omni
+    /// maps at omniLayers * index) and the omni maps' depth range.
+    struct LightingArrays {
+        std::vector<glm::mat4> shadowMatrices;
+        std::vector<glm::ivec2> maps; ///< (OmniMapKind, layer)
+        std::vector<glm::vec2> depthRanges;
+    };
+    LightingArrays lightingArrays(int flatBase, int omniLayers) const;
 
-    /// Renders every flat map into `layers` (layer flatBase + index) with `depthProgram`, each light's
-    /// casters culled against its frustum; viewport, bias and colour mask are the caller's. Returns
-    /// the casters culled over all flat maps.
-    size_t renderFlatMaps(Submitter& submitter, const InstanceCulling& culling, const Program& depthProgram,
-                          const DepthLayers& layers, int flatBase, std::vector<uint8_t>& keep) const;
+    /// The casters flat map `light` draws: those `culling` keeps in its frustum, marked in `keep`.
+    /// Returns how many were culled.
+    size_t cullFlatCasters(const OmniLight& light, const InstanceCulling& culling,
+                           std::vector<uint8_t>& keep) const;
 
 private:
     std::vector<OmniLight> mLights;

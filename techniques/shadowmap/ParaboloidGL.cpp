@@ -1,4 +1,5 @@
-#include "techniques/shadowmap/ParaboloidTechnique.h"
+#include "techniques/shadowmap/OmniLightsGL.h"
+#include "techniques/shadowmap/ParaboloidGL.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -14,43 +15,23 @@ constexpr GLint kLightLocation = 8;    // shadowmap/paraboloid_depth.vert: posit
 constexpr GLint kNearFarLocation = 12; // shadowmap/paraboloid_depth.vert
 constexpr GLuint kMapUnit = 0;         // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
 
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        P::resolution("2048",
-                      "width and height of each paraboloid half and of each spot/directional map (texels)"),
-        P::biasConstant(),
-        P::biasSlope(),
-        P::pcf("PCF kernel width: pcf x pcf taps one texel apart in map space"),
-    };
-}
+
 } // namespace
 
-ParaboloidTechnique::ParaboloidTechnique()
-    : Technique({.name = "paraboloid",
-                 .description = "dual-paraboloid shadow maps: two hemispherical depth maps per point light",
-                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                            Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {P::kResolution, {"512", "1024", "2048", "4096"}},
-                     P::pcfSweep(),
-                     P::biasConstantSweep(),
-                     P::biasSlopeSweep(),
-                 }}) {}
+ParaboloidGL::ParaboloidGL()
+    : GlTechnique(Paraboloid::declaration()) {}
 
-glm::vec3 ParaboloidTechnique::hemisphereAxis(int half) {
+glm::vec3 ParaboloidGL::hemisphereAxis(int half) {
     return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-void ParaboloidTechnique::setScene(const Scene& scene) {
+void ParaboloidGL::setScene(const Scene& scene) {
     mLights.setScene(scene);
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);
 }
 
-void ParaboloidTechnique::compile(const CompileContext& ctx) {
+void ParaboloidGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), flatBase() + mLights.flatCount(),
                    false);
@@ -68,7 +49,7 @@ void ParaboloidTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mLighting->key());
 }
 
-void ParaboloidTechnique::renderHemispheres(FrameContext& ctx) {
+void ParaboloidGL::renderHemispheres(FrameContext& ctx) {
     mParaboloidDepth->use();
     glEnable(GL_CLIP_DISTANCE0);
     for (const OmniLight& o : mLights.lights()) {
@@ -89,26 +70,26 @@ void ParaboloidTechnique::renderHemispheres(FrameContext& ctx) {
     glDisable(GL_CLIP_DISTANCE0);
 }
 
-void ParaboloidTechnique::renderDepth(FrameContext& ctx) {
+void ParaboloidGL::renderDepth(FrameContext& ctx) {
     const PropertySet& p = properties();
     mCulled = 0;
     mHemispheresRendered = 0;
     if (mMaps.empty()) return; // no light casts: no depth work at all
     DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
-    mCulled += mLights.renderFlatMaps(ctx.submitter, mCulling, *mFlatDepth, mMaps, flatBase(), mKeep);
+    mCulled += renderOmniFlatMaps(mLights, ctx.submitter, mCulling, *mFlatDepth, mMaps, flatBase(), mKeep);
     renderHemispheres(ctx);
 }
 
-void ParaboloidTechnique::renderLighting(FrameContext& ctx) {
+void ParaboloidGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLighting->use();
-    mLights.setLightingUniforms(flatBase(), 2);
+    setOmniLightingUniforms(mLights, flatBase(), 2);
     if (!mMaps.empty()) glBindTextureUnit(kMapUnit, mMaps.texture());
     ctx.submitter.draw(DrawSet::All);
     glBindTextureUnit(kMapUnit, 0);
 }
 
-void ParaboloidTechnique::execute(FrameContext& ctx) {
+void ParaboloidGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
     const double res = double(mMaps.size());

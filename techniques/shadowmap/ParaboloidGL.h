@@ -33,17 +33,18 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/Paraboloid.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 
 namespace sb {
 
-class ParaboloidTechnique final : public Technique {
+class ParaboloidGL final : public GlTechnique {
 public:
-    ParaboloidTechnique();
+    ParaboloidGL();
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;

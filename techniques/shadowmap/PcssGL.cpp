@@ -1,4 +1,5 @@
-#include "techniques/shadowmap/PcssTechnique.h"
+#include "techniques/shadowmap/FlatLightsGL.h"
+#include "techniques/shadowmap/PcssGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,39 +17,24 @@ namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-constexpr const char* kBlockerTaps = "blocker_taps";
-constexpr const char* kFilterTaps = "filter_taps";
-constexpr const char* kLightSize = "light_size";
-constexpr int kMaxTaps = 64;
 // shaders/shadowmap/pcss.frag: uPcssLight[LIGHT_COUNT], uPcssSearch[LIGHT_COUNT], the two kernels.
 constexpr GLint kLightLocation = 12;
 constexpr GLint kSearchLocation = 16;
-constexpr GLint kBlockerKernelLocation = 20;                               // uBlockerKernel[kMaxTaps]
-constexpr GLint kFilterKernelLocation = kBlockerKernelLocation + kMaxTaps; // uFilterKernel[kMaxTaps]
-constexpr GLint kTapsLocation = kFilterKernelLocation + kMaxTaps;          // uTaps
+constexpr GLint kBlockerKernelLocation = 20;                               // uBlockerKernel[Pcss::kMaxTaps]
+constexpr GLint kFilterKernelLocation = kBlockerKernelLocation + Pcss::kMaxTaps; // uFilterKernel[Pcss::kMaxTaps]
+constexpr GLint kTapsLocation = kFilterKernelLocation + Pcss::kMaxTaps;          // uTaps
 constexpr GLint kSearchUnit = 0, kCompareUnit = 1;
 /// The filter's Poisson disk differs from the search's: two seeds.
 constexpr uint64_t kFilterSeed = PoissonDisk::kSeed ^ 0x46494c544552ull;
 
-std::vector<PropertyDesc> declareProperties() {
-    return {
-        P::resolution("2048", "shadow map width and height (texels)"),
-        integer(kBlockerTaps, "16", 1, kMaxTaps, "Poisson taps of the blocker search (step 1)"),
-        integer(kFilterTaps, "32", 1, kMaxTaps, "Poisson taps of the PCF over the penumbra (step 3)"),
-        real(kLightSize, "0", 0, 1e6,
-             "light size L (0 = the scene's emitter): diameter in world units for spot lights, width per "
-             "unit depth (2 tan of the angular radius) for directional lights"),
-        P::biasConstant("glPolygonOffset units of the depth pass"),
-        P::biasSlope("glPolygonOffset factor of the depth pass"),
-    };
-}
+
 
 /// Row r of a matrix (GLM is column-major).
 glm::vec4 row(const glm::mat4& m, int r) {
     return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
 }
 
-/// The light size the scene gives `light` (0 when it has no extent), see PcssTechnique.h.
+/// The light size the scene gives `light` (0 when it has no extent), see PcssGL.h.
 float sceneLightSize(const Light& light) {
     if (light.shape == LightShape::Point) return 0.0f;
     if (light.type == LightType::Directional)
@@ -58,11 +44,11 @@ float sceneLightSize(const Light& light) {
     return 2.0f * std::max(light.size.x, 0.0f); // disk and sphere: the diameter
 }
 
-/// Linear depth (PcssTechnique::LightParams) of the nearest corner of the casters' bounds, held within the
+/// Linear depth (PcssGL::LightParams) of the nearest corner of the casters' bounds, held within the
 /// map's depth range. Both a perspective map's w and an orthographic map's depth are linear in the world
 /// position, so the nearest point of a box is one of its corners.
 float nearestCasterDepth(const Scene& scene, const glm::mat4& lightViewProj,
-                         const PcssTechnique::LightParams& lp) {
+                         const PcssGL::LightParams& lp) {
     Aabb casters = scene.computeBounds(true);
     if (casters.empty()) return lp.nearZ;
     float nearest = lp.farZ;
@@ -79,29 +65,15 @@ float nearestCasterDepth(const Scene& scene, const glm::mat4& lightViewProj,
 }
 } // namespace
 
-PcssTechnique::PcssTechnique()
-    : Technique({.name = "pcss",
-                 .description = "percentage-closer soft shadows: blocker search, penumbra estimate, PCF over "
-                                "it (a light with no extent gets a 1 degree emitter: counter "
-                                "light_size_defaulted)",
-                 .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
-                            Effect::NonPlanarReceivers | Effect::MultipleLights,
-                 .capabilities = {{"GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {P::kResolution, {"512", "1024", "2048", "4096"}},
-                     {kBlockerTaps, {"4", "8", "16", "32"}},
-                     {kFilterTaps, {"8", "16", "32", "64"}},
-                     {kLightSize, {"0", "0.05", "0.2", "0.5"}},
-                 }}) {}
+PcssGL::PcssGL()
+    : GlTechnique(Pcss::declaration()) {}
 
-PcssTechnique::~PcssTechnique() {
+PcssGL::~PcssGL() {
     if (mSearchSampler) glDeleteSamplers(1, &mSearchSampler);
     if (mCompareSampler) glDeleteSamplers(1, &mCompareSampler);
 }
 
-PcssTechnique::LightParams PcssTechnique::lightParams(const Scene& scene, const Light& light,
+PcssGL::LightParams PcssGL::lightParams(const Scene& scene, const Light& light,
                                                       const glm::mat4& lightViewProj, float sizeOverride) {
     LightParams lp;
     const glm::vec4 r0 = row(lightViewProj, 0), r1 = row(lightViewProj, 1);
@@ -133,12 +105,12 @@ PcssTechnique::LightParams PcssTechnique::lightParams(const Scene& scene, const 
     return lp;
 }
 
-void PcssTechnique::setScene(const Scene& scene) {
+void PcssGL::setScene(const Scene& scene) {
     mLights.setScene(scene, "pcss", " (cubemap or paraboloid): use --light directional or --light spot");
     mCulling.setScene(scene);
 }
 
-void PcssTechnique::createSamplers() {
+void PcssGL::createSamplers() {
     if (mSearchSampler) return;
     // Outside the map lies no caster (the light camera is fitted to them): a border depth of 1 makes
     // taps that leave it find no blocker and compare lit.
@@ -159,26 +131,26 @@ void PcssTechnique::createSamplers() {
     glSamplerParameteri(mCompareSampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
 }
 
-void PcssTechnique::sceneChanged(const Scene& scene, uint32_t) {
+void PcssGL::sceneChanged(const Scene& scene, uint32_t) {
     setScene(scene);
     fitLightSizes(scene);
 }
 
-void PcssTechnique::fitLightSizes(const Scene& scene) {
+void PcssGL::fitLightSizes(const Scene& scene) {
     mParams.clear();
     for (size_t i = 0; i < mLights.size(); ++i)
         mParams.push_back(lightParams(scene, scene.lights[i], mLights.viewProj()[i],
-                                      float(properties().getFloat(kLightSize))));
+                                      float(properties().getFloat(Pcss::kLightSize))));
 }
 
-void PcssTechnique::compile(const CompileContext& ctx) {
+void PcssGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int layers = std::max<int>(1, int(mLights.size()));
     // The texture's own sampling state is unused: both units sample through the sampler objects.
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), layers, false);
     createSamplers();
-    mBlockerKernel = PoissonDisk::generate(int(p.getInt(kBlockerTaps)));
-    mFilterKernel = PoissonDisk::generate(int(p.getInt(kFilterTaps)), kFilterSeed);
+    mBlockerKernel = PoissonDisk::generate(int(p.getInt(Pcss::kBlockerTaps)));
+    mFilterKernel = PoissonDisk::generate(int(p.getInt(Pcss::kFilterTaps)), kFilterSeed);
     fitLightSizes(ctx.scene);
 
     Defines base = ctx.submitter.defines();
@@ -190,14 +162,14 @@ void PcssTechnique::compile(const CompileContext& ctx) {
     setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
 }
 
-void PcssTechnique::renderDepth(FrameContext& ctx) {
+void PcssGL::renderDepth(FrameContext& ctx) {
     const PropertySet& p = properties();
     DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
     mDepthProgram->use();
-    mCulled = mLights.renderDepth(ctx.submitter, mCulling, mMaps, mKeep);
+    mCulled = renderFlatDepth(mLights, ctx.submitter, mCulling, mMaps, mKeep);
 }
 
-void PcssTechnique::uploadLightUniforms() const {
+void PcssGL::uploadLightUniforms() const {
     std::vector<glm::vec4> light;
     std::vector<glm::vec4> search;
     for (const LightParams& lp : mParams) {
@@ -213,10 +185,10 @@ void PcssTechnique::uploadLightUniforms() const {
     glUniform2fv(kFilterKernelLocation, GLsizei(mFilterKernel.size()), glm::value_ptr(mFilterKernel[0]));
 }
 
-void PcssTechnique::renderLighting(FrameContext& ctx) {
+void PcssGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLightingProgram->use();
-    mLights.setShadowMatrices();
+    setFlatShadowMatrices(mLights);
     uploadLightUniforms();
     // One texture, two samplers: raw depths for the blocker search, comparison for the filter.
     glBindTextureUnit(kSearchUnit, mMaps.texture());
@@ -230,7 +202,7 @@ void PcssTechnique::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(kCompareUnit, 0);
 }
 
-void PcssTechnique::execute(FrameContext& ctx) {
+void PcssGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
     double defaulted = 0.0;

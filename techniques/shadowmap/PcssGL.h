@@ -2,7 +2,7 @@
 // `pcss`: Percentage-Closer Soft Shadows (Fernando 2005, Percentage-Closer Soft Shadows, SIGGRAPH 2005
 // sketch; the NVIDIA whitepaper of the same name, its three steps). Pass "depth" renders the casters from
 // each light into a layer of a depth texture array, as `shadowmap` does (glPolygonOffset bias, casters
-// culled against the light's frustum: techniques/common/InstanceCulling.h, counter casters_culled). Pass
+// culled against the light's frustum: scenes/InstanceCulling.h, counter casters_culled). Pass
 // "lighting" shades the scene once; per light and fragment (shaders/shadowmap/pcss.frag):
 //   1. blocker search: `blocker_taps` Poisson-disk taps (techniques/shadowmap/PoissonDisk.h) over the
 //      region of the map where casters between the receiver and the light can lie: the light's extent
@@ -38,20 +38,21 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/Pcss.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 
-class PcssTechnique final : public Technique {
+class PcssGL final : public GlTechnique {
 public:
     /// Angular radius of the emitter a light with no extent is given (degrees): a 1 degree disk.
     static constexpr float kDefaultAngularRadiusDeg = 0.5f;
 
-    PcssTechnique();
-    ~PcssTechnique() override;
+    PcssGL();
+    ~PcssGL() override;
     void setScene(const Scene& scene) override;
     /// The light fits, the culling bounds and each light's size in map texels follow the scene.
     void sceneChanged(const Scene& scene, uint32_t changes) override;

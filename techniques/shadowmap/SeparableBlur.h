@@ -25,7 +25,8 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -33,7 +34,7 @@ class SeparableBlur {
 public:
     enum class Mode { Linear, LogSpace };
     /// The widest kernel the shader is compiled for (the property's maximum).
-    static constexpr int kMaxWidth = 64;
+    static constexpr int kMaxWidth = ShadowMapProperties::kMaxBlurWidth;
 
     SeparableBlur() = default;
     ~SeparableBlur();

@@ -21,7 +21,7 @@
 // Directional lights get an orthographic light camera fitted to the casters; spot lights a perspective
 // one with the spot cone (scenes/LightFit.h). Each light's depth pass submits only the casters whose
 // bounds reach its frustum and, with `cull` (default), whose shadow (swept past the receivers, grown by
-// the filter's footprint in world units) may reach the camera's view (techniques/common/
+// the filter's footprint in world units) may reach the camera's view (scenes/
 // InstanceCulling.h; counter casters_culled). Point lights
 // need an omni map (`cubemap`, `paraboloid`): refused here with ExitCode::Unsupported.
 #include <vector>
@@ -29,26 +29,17 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/Technique.h"
-#include "techniques/common/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/ShadowMap.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 
-class ShadowMapTechnique final : public Technique {
+class ShadowMapGL final : public GlTechnique {
 public:
-    ShadowMapTechnique();
-    /// The declaration (name, effects, passes, properties, quality knobs), shared with the Vulkan form
-    /// (ShadowMapVulkan.h).
-    static TechniqueInfo describe();
-    /// The kernel's tap offsets in texels for `p` (empty: the grid kernel, pcf x pcf, a define).
-    static std::vector<glm::vec2> kernelOffsets(const PropertySet& p);
-    /// Per light, the world size of a map texel at w = 1 (`texelWorld`), and `view`'s receivers and
-    /// margins: how far each light's shadow may reach beyond a caster's bounds through the filter,
-    /// `kernelTexels` + the normal offset + 2 texels at the farthest receiver.
-    static void fitTexels(const Scene& scene, const FlatLightFits& lights, int mapSize, double kernelTexels,
-                          float normalOffset, std::vector<float>& texelWorld, ViewCull& view);
+    ShadowMapGL();
     void setScene(const Scene& scene) override;
     /// The light fits, the culling bounds and what depends on the fits (texel sizes, cull margins).
     void sceneChanged(const Scene& scene, uint32_t changes) override;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "techniques/Property.h"
-#include "techniques/Technique.h"
+#include "techniques/TechniqueInfo.h"
 
 namespace sb {
 
@@ -18,6 +18,8 @@ public:
     static constexpr const char* kBiasConstant = "bias_constant";
     static constexpr const char* kBiasSlope = "bias_slope";
     static constexpr const char* kPcf = "pcf";
+    /// The widest separable blur the filterable maps' shaders are compiled for (their `blur` maximum).
+    static constexpr int kMaxBlurWidth = 64;
 
     /// Width and height of each map (texels), 16 to 8192.
     static PropertyDesc resolution(std::string defaultValue, std::string description);

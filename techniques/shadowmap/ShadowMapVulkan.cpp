@@ -4,9 +4,10 @@
 #include <cstring>
 
 #include "core/Error.h"
-#include "techniques/common/ShadowWork.h"
+#include "scenes/ShadowWork.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/ShadowMapTechnique.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/ShadowMap.h"
 #include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
 
@@ -25,7 +26,7 @@ struct BlockLayout {
 
 } // namespace
 
-ShadowMapVulkan::ShadowMapVulkan() : VulkanTechnique(ShadowMapTechnique::describe()) {}
+ShadowMapVulkan::ShadowMapVulkan() : VulkanTechnique(ShadowMap::declaration()) {}
 
 ShadowMapVulkan::~ShadowMapVulkan() {
     release();
@@ -60,7 +61,7 @@ void ShadowMapVulkan::sceneChanged(const Scene& scene, uint32_t) {
 void ShadowMapVulkan::fitTexels(const Scene& scene) {
     const PropertySet& p = properties();
     const double kernel = mKernel.empty() ? double(p.getInt(P::kPcf)) : p.getFloat("radius");
-    ShadowMapTechnique::fitTexels(scene, mLights, mSize, kernel, mNormalOffset, mTexelWorld, mView);
+    ShadowMap::fitTexels(scene, mLights, mSize, kernel, mNormalOffset, mTexelWorld, mView);
 }
 
 void ShadowMapVulkan::createMaps(VulkanContext& context, int size, int layers) {
@@ -150,7 +151,7 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLayers);
     if (p.getBool("hardware_compare")) lit["HW_COMPARE"] = "";
-    mKernel = ShadowMapTechnique::kernelOffsets(p);
+    mKernel = ShadowMap::kernelOffsets(p);
     if (mKernel.empty())
         lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
     else
@@ -175,11 +176,8 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
     VkClearValue clear{};
     clear.depthStencil = {1.0f, 0};
     for (size_t i = 0; i < mLights.viewProj().size(); ++i) {
-        if (!ctx.scene.lights[i].castsShadows) continue;
-        size_t kept = mCulling.cull(mLights.viewProj()[i], DrawSet::Casters, CullPlanes::All, mKeep);
-        if (mCull)
-            kept = mCulling.keepReachingView(ctx.scene.lights[i], mView.reach, mView.margins[i], mKeep);
-        mCulled += mCulling.count(DrawSet::Casters) - kept;
+        if (!mLights.castsShadow(i)) continue;
+        mCulled += mLights.cullCasters(i, mCulling, mKeep, mCull ? &mView : nullptr);
         VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         begin.renderPass = mDepthPass;
         begin.framebuffer = mFramebuffers[i];
@@ -203,21 +201,10 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
 }
 
 void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {
-    ctx.submitter.resetStats();
-    if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
-        ctx.passes.skip("depth", reason);
-    } else {
-        ctx.passes.begin("depth");
-        renderDepth(ctx);
-    }
-    ctx.passes.begin("lighting");
-    drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
-    const SubmitStats& s = ctx.submitter.stats();
-    mCounters = {{"draw_calls", double(s.drawCalls)},
-                 {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", double(mSize) * mSize * double(mLights.shadowed())},
-                 {"lights_unshadowed", double(mLights.size() - mLights.shadowed())},
-                 {"casters_culled", double(mCulled)}};
+    const SubmitStats s = DepthLightingFrame::run(
+        ctx, [&] { renderDepth(ctx); },
+        [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
+    mCounters = ShadowMap::counters(s, mSize, mLights, mCulled);
 }
 
 } // namespace sb

@@ -1,5 +1,5 @@
 #pragma once
-// `shadowmap` on Vulkan: ShadowMapTechnique's two passes with the same declaration, properties, light
+// `shadowmap` on Vulkan: ShadowMapGL's two passes with the same declaration, properties, light
 // fits (FlatLightFits), caster culling and shaders (shadowmap/depth.vert, common/scene.vert,
 // shadowmap/lighting.frag, their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "techniques/common/InstanceCulling.h"
+#include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"

@@ -28,15 +28,16 @@
 // frame of `aircraft` cost 1.47x `shadowmap`'s at 2048 and 1.10x at 1024, for 0.17% and 0.34% wrong
 // against shadowmap's 0.14% at 2048 (0.26% at 1024); the accuracy sweep walks 256..4096.
 // Point lights need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/shadowmap/Vsm.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
 #include "techniques/shadowmap/SeparableBlur.h"
 
 namespace sb {
 
-class VsmTechnique final : public Technique {
+class VsmGL final : public GlTechnique {
 public:
-    VsmTechnique();
+    VsmGL();
     void setScene(const Scene& scene) override;
     /// The light fits and the maps' fit to the receivers follow the scene (FilterableShadowMaps).
     void sceneChanged(const Scene& scene, uint32_t) override { mMaps.sceneChanged(scene); }

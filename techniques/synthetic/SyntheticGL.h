@@ -1,5 +1,6 @@
 #pragma once
-#include "techniques/Technique.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/synthetic/Synthetic.h"
 
 namespace sb {
 
@@ -10,10 +11,10 @@ namespace sb {
 ///   vertex-bound: the scene's triangles (many, tiny) with a minimal pipeline, vertex_iterations=N;
 ///   CPU-bound:    many small instances in immediate mode (the draw calls dominate).
 /// Visibility is 1 everywhere (no shadows).
-class SyntheticTechnique final : public Technique {
+class SyntheticGL final : public GlTechnique {
 public:
-    SyntheticTechnique();
-    ~SyntheticTechnique() override;
+    SyntheticGL();
+    ~SyntheticGL() override;
     void setScene(const Scene& scene) override;
     /// The workloads do not depend on where the lights and casters are.
     void sceneChanged(const Scene&, uint32_t) override {}

@@ -1,6 +1,6 @@
 #pragma once
 // The mesh preparation of stencil shadow volumes (GPU Gems ch. 9, section 9.2.2), untimed, once per
-// mesh in VolumeTechnique::setScene:
+// mesh in VolumeGL::setScene:
 //  - welding: coincident positions (within a tolerance relative to the mesh's bounds) become one
 //    vertex, so the seams generators and model files leave for normals and texture coordinates do not
 //    count as cracks;
@@ -30,7 +30,7 @@ namespace sb {
 enum class OpenEdgePolicy {
     /// The chapter's closed-mesh rule: faces facing the light form the light cap, the others (sent to
     /// infinity) the dark cap, and sides are extruded from edges between the two. Only valid for
-    /// closed meshes: VolumeTechnique refuses a mesh with open edges under this policy.
+    /// closed meshes: VolumeGL refuses a mesh with open edges under this policy.
     Closed,
     /// Robust for any mesh: every face is an occluder seen from either side, oriented towards the
     /// light; each edge gets a side quad per unit of multiplicity m = (faces traversing v0->v1) -

@@ -1,4 +1,4 @@
-#include "techniques/volume/VolumeTechnique.h"
+#include "techniques/volume/VolumeGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,26 +17,16 @@ constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLig
 constexpr GLint kLitRectLocation = 13, kDepthRangeLocation = 17;
 } // namespace
 
-TechniqueInfo VolumeTechnique::describe() {
-    return {.name = "volume",
-            .description = "stencil shadow volumes (GPU Gems ch. 9), each optimisation a switch",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{"GL 4.5", 4, 5, ""}},
-            .passes = {"ambient", "mark", "lighting"},
-            .viewPasses = {"ambient", "lighting"},
-            .properties = VolumePlanner::declareProperties(),
-            .quality = {}};
-}
 
-VolumeTechnique::VolumeTechnique() : Technique(describe()) {}
 
-VolumeTechnique::~VolumeTechnique() {
+VolumeGL::VolumeGL() : GlTechnique(Volume::declaration()) {}
+
+VolumeGL::~VolumeGL() {
     for (auto& slot : mQueries)
         if (slot[0]) glDeleteQueries(GLsizei(slot.size()), slot.data());
 }
 
-void VolumeTechnique::setScene(const Scene& scene) {
+void VolumeGL::setScene(const Scene& scene) {
     mPlanner.setSettings(VolumePlanner::readSettings(properties()));
     const VolumePlanner::Settings& settings = mPlanner.settings();
     mScene = &scene;
@@ -51,13 +41,13 @@ void VolumeTechnique::setScene(const Scene& scene) {
     mPlanner.setScene(scene);
 }
 
-void VolumeTechnique::sceneChanged(const Scene& scene, uint32_t changes) {
+void VolumeGL::sceneChanged(const Scene& scene, uint32_t changes) {
     // Silhouettes, extrusions and the light regions are found every frame from the lights as they are;
     // what a static scene fixes once is where the casters stand.
     if (changes & kCastersMoved) mPlanner.placeCasters(scene);
 }
 
-void VolumeTechnique::compile(const CompileContext& ctx) {
+void VolumeGL::compile(const CompileContext& ctx) {
     mPlanner.setSettings(VolumePlanner::readSettings(properties()));
     const VolumePlanner::Settings& settings = mPlanner.settings();
     mHasDepthBounds = ctx.context.hasExtension("GL_EXT_depth_bounds_test");
@@ -83,7 +73,7 @@ void VolumeTechnique::compile(const CompileContext& ctx) {
         for (auto& slot : mQueries) glGenQueries(GLsizei(slot.size()), slot.data());
 }
 
-void VolumeTechnique::renderAmbient(FrameContext& ctx, int lights) {
+void VolumeGL::renderAmbient(FrameContext& ctx, int lights) {
     // Listing 9-1's ambient + emissive pass: depth written once; the light passes only add. Where a
     // light pass will not run (outside its scissor rectangle or depth bounds: beyond the light's range)
     // nothing is shadowed, so the visibility target gets 1 there now (the range is a lighting term,
@@ -101,12 +91,12 @@ void VolumeTechnique::renderAmbient(FrameContext& ctx, int lights) {
     ctx.submitter.draw(DrawSet::All);
 }
 
-void VolumeTechnique::collectDraws(const Light& light, const View& view, FrameStats& stats) {
+void VolumeGL::collectDraws(const Light& light, const View& view, FrameStats& stats) {
     mPlanner.collectDraws(light, view, stats);
     if (!mPlanner.settings().vertexExtrusion) mBuffers.streamIndices(mPlanner.stream());
 }
 
-void VolumeTechnique::setStencilCounting(bool zfail) const {
+void VolumeGL::setStencilCounting(bool zfail) const {
     if (zfail) {
         // Listing 9-4: count intersections behind the visible point (depth test fails).
         glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
@@ -118,7 +108,7 @@ void VolumeTechnique::setStencilCounting(bool zfail) const {
     }
 }
 
-void VolumeTechnique::markShadows(int lightIndex) {
+void VolumeGL::markShadows(int lightIndex) {
     const Light& light = mScene->lights[size_t(lightIndex)];
     glStencilMask(0xff);
     glClear(GL_STENCIL_BUFFER_BIT); // inside the scissor rectangle when scissoring
@@ -164,7 +154,7 @@ void VolumeTechnique::markShadows(int lightIndex) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void VolumeTechnique::renderLight(FrameContext& ctx, int lightIndex) {
+void VolumeGL::renderLight(FrameContext& ctx, int lightIndex) {
     // Listing 9-1's light pass: add this light where the stencil count is 0, on the surfaces the
     // ambient pass left in the depth buffer.
     glDepthFunc(GL_EQUAL);
@@ -190,7 +180,7 @@ void VolumeTechnique::renderLight(FrameContext& ctx, int lightIndex) {
     glDisable(GL_STENCIL_TEST);
 }
 
-void VolumeTechnique::readStencilQuery() {
+void VolumeGL::readStencilQuery() {
     // This slot's queries were issued two frames ago; read them if the GPU has them, never wait.
     const size_t slot = mQueryFrame % 2;
     double sum = 0;
@@ -206,13 +196,13 @@ void VolumeTechnique::readStencilQuery() {
     mQueriesIssued[slot] = 0;
 }
 
-void VolumeTechnique::execute(FrameContext& ctx) {
+void VolumeGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     const VolumePlanner::Settings& settings = mPlanner.settings();
     const glm::mat4 proj = mPlanner.projection(ctx.proj);
     const View view = VolumePlanner::viewOf(proj, ctx.view, ctx.targets.width(), ctx.targets.height());
     // The scene passes must use the same projection as the volumes: this technique's own frame block.
-    mFrameUniforms->upload(FrameUniforms::compute(*mScene, ctx.view, proj, ctx.eye));
+    mFrameUniforms->upload(computeFrameUniforms(*mScene, ctx.view, proj, ctx.eye));
     if (settings.far == VolumePlanner::Far::DepthClamp) glEnable(GL_DEPTH_CLAMP);
 
     const int lights = std::min<int>(int(mScene->lights.size()), kMaxLights);

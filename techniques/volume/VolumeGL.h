@@ -39,8 +39,9 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/FrameUniforms.h"
-#include "techniques/Technique.h"
+#include "techniques/gl/FrameUniforms.h"
+#include "techniques/gl/GlTechnique.h"
+#include "techniques/volume/Volume.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
 #include "techniques/volume/VolumeGeometry.h"
 #include "techniques/volume/VolumeMeshBuffers.h"
@@ -48,12 +49,11 @@
 
 namespace sb {
 
-class VolumeTechnique final : public Technique {
+class VolumeGL final : public GlTechnique {
 public:
-    VolumeTechnique();
-    ~VolumeTechnique() override;
+    VolumeGL();
+    ~VolumeGL() override;
     /// The declaration (name, effects, passes, properties), shared with VolumeVulkan.
-    static TechniqueInfo describe();
     void setScene(const Scene& scene) override;
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;

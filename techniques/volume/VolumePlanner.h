@@ -1,5 +1,5 @@
 #pragma once
-// The API-independent half of `volume` (techniques/volume/VolumeTechnique.h), shared by the GL technique
+// The API-independent half of `volume` (techniques/volume/VolumeGL.h), shared by the GL technique
 // and its Vulkan form (VolumeVulkan.h): the properties and what they mean, where the casters stand,
 // where each light's passes run (scissor rectangle, depth bounds), and per light the draw list of the
 // marking pass with the frame's statistics: range culling, z-fail or z-pass per caster (occlusion
@@ -13,8 +13,9 @@
 #include <glm/glm.hpp>
 
 #include "scenes/Scene.h"
-#include "techniques/Technique.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/PropertySet.h"
+#include "techniques/Submission.h"
+#include "techniques/TechniqueInfo.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
 #include "techniques/volume/VolumeGeometry.h"
 
@@ -77,7 +78,7 @@ public:
     /// The knobs (techniques/Property.h): what --list shows and -t volume:k=v sets.
     static std::vector<PropertyDesc> declareProperties();
     static Settings readSettings(const PropertySet& p);
-    /// VolumeTechnique::infiniteFrom.
+    /// VolumeGL::infiniteFrom.
     static glm::mat4 infiniteFrom(const glm::mat4& proj);
     /// The chapter's L: the position for point and spot lights, the vector towards a directional one.
     static glm::vec4 worldLight(const Light& light);

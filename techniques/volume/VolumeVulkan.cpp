@@ -5,7 +5,7 @@
 
 #include "core/Error.h"
 #include "scenes/Motion.h"
-#include "techniques/volume/VolumeTechnique.h"
+#include "techniques/volume/Volume.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -37,7 +37,7 @@ int32_t floatBits(float f) {
 
 } // namespace
 
-VolumeVulkan::VolumeVulkan() : VulkanTechnique(VolumeTechnique::describe()) {}
+VolumeVulkan::VolumeVulkan() : VulkanTechnique(Volume::declaration()) {}
 
 VolumeVulkan::~VolumeVulkan() {
     release();
@@ -166,8 +166,10 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
         if (finite) volume["FINITE"] = "";
         for (int zfail = 0; zfail < 2; ++zfail) {
             GraphicsPipelineDesc d;
-            d.vertex = ctx.shaders.get("volume/extrude.vert", volume, GL_VERTEX_SHADER);
-            d.fragment = ctx.shaders.get("volume/stencil.frag", volume, GL_FRAGMENT_SHADER);
+            const ShaderModules modules =
+                ctx.shaders.get(ShaderSources{"volume/extrude.vert", "volume/stencil.frag", ""}, volume);
+            d.vertex = modules.vertex;
+            d.fragment = modules.fragment;
             if (settings.vertexExtrusion) {
                 d.bindings = {{0, 2 * sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
                 d.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
@@ -352,7 +354,7 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
 void VolumeVulkan::renderLight(VulkanFrameContext& ctx, uint32_t frame, int lightIndex,
                                const VkRect2D& scissor) {
     // Listing 9-1's light pass: add this light where the stencil count is 0, on the surfaces the
-    // ambient pass left in the depth buffer. Visibility by MAX, not ADD (VolumeTechnique::renderLight).
+    // ambient pass left in the depth buffer. Visibility by MAX, not ADD (VolumeGL::renderLight).
     // A light that casts no shadow marked nothing: no stencil test, as on GL.
     const bool marked = ctx.scene.lights[size_t(lightIndex)].castsShadows;
     VkCommandBuffer cmd = ctx.cmd;
@@ -381,7 +383,7 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
     const glm::mat4 proj = mPlanner.projection(ctx.proj);
     const VolumePlanner::View view = VolumePlanner::viewOf(proj, ctx.view, width, height);
     // The scene passes must use the same projection as the volumes: a frame-block slot of its own.
-    const uint32_t frame = ctx.frame.write(FrameUniforms::compute(ctx.scene, ctx.view, proj, ctx.eye));
+    const uint32_t frame = ctx.frame.write(computeFrameUniforms(ctx.scene, ctx.view, proj, ctx.eye));
 
     const int lights = std::min<int>(int(ctx.scene.lights.size()), kMaxLights);
     for (int i = 0; i < lights; ++i)

@@ -1,5 +1,5 @@
 #pragma once
-// `volume` on Vulkan: VolumeTechnique's program (GPU Gems ch. 9, Listing 9-1) with the same declaration,
+// `volume` on Vulkan: VolumeGL's program (GPU Gems ch. 9, Listing 9-1) with the same declaration,
 // properties and CPU logic (VolumePlanner: casters, light regions, per-light draw lists and statistics)
 // and the same shaders (common/scene.vert, volume/ambient.frag, volume/light.frag, volume/extrude.vert,
 // volume/stencil.frag and their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.

@@ -13,14 +13,16 @@ VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
 
 GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::string& vertex,
                                    const std::string& fragment, const Defines& defines,
-                                   VkPipelineLayout layout, std::string& key) {
+                                   VkPipelineLayout layout, std::string& key, const std::string& geometry) {
     GraphicsPipelineDesc d;
-    d.vertex = ctx.shaders.get(vertex, defines, GL_VERTEX_SHADER);
-    if (!fragment.empty()) d.fragment = ctx.shaders.get(fragment, defines, GL_FRAGMENT_SHADER);
+    const ShaderModules modules = ctx.shaders.get(ShaderSources{vertex, fragment, geometry}, defines);
+    d.vertex = modules.vertex;
+    d.geometry = modules.geometry;
+    d.fragment = modules.fragment;
     d.bindings = ctx.submitter.bindings();
     d.attributes = ctx.submitter.attributes();
     d.layout = layout;
-    key += vertex + "+" + fragment + "[" + definesKey(defines) + "]";
+    key += vertex + "+" + fragment + "[" + definesKey(defines) + "]" + (geometry.empty() ? "" : "+" + geometry);
     return d;
 }
 

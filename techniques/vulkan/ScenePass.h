@@ -8,7 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "gl/ProgramCache.h"
+#include "shading/Defines.h"
 #include "techniques/vulkan/VulkanPipelineCache.h"
 #include "vk/GraphicsPipeline.h"
 
@@ -21,12 +21,13 @@ struct VulkanFrameContext;
 VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
                                            const std::vector<VkDescriptorSetLayout>& sets = {});
 
-/// A pipeline drawing the scene with `vertex` and `fragment` (files under shaders/) compiled with
-/// `defines`, the submitter's vertex input and `layout`. `key` gets the shader files and defines
-/// appended: the pipeline cache's key for the shaders part.
+/// A pipeline drawing the scene with `vertex`, `fragment` and an optional `geometry` stage (files under
+/// shaders/) compiled with `defines` (and dumped as one program under --dump-shaders), the submitter's
+/// vertex input and `layout`. `key` gets the shader files and defines appended: the pipeline cache's key
+/// for the shaders part.
 GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::string& vertex,
                                    const std::string& fragment, const Defines& defines,
-                                   VkPipelineLayout layout, std::string& key);
+                                   VkPipelineLayout layout, std::string& key, const std::string& geometry = "");
 
 /// The lit pass over every mesh into the frame targets, as none's, shadowmap's and cubemap's lighting
 /// passes draw it: begins the targets' render pass, binds `pipeline` (the variant for this frame's

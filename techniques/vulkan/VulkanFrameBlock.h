@@ -1,5 +1,5 @@
 #pragma once
-// The per-frame uniform block on Vulkan (techniques/FrameUniforms.h on GL; the same std140 layout,
+// The per-frame uniform block on Vulkan (techniques/gl/FrameUniforms.h on GL; the same std140 layout,
 // shaders/common/frame.glsl): set 0, binding 0, a dynamic uniform buffer with a few slots per frame, so a
 // technique that draws with a projection of its own (volume's infinite far plane) writes one more slot
 // and binds it at another offset within the same command buffer. Host-visible and written in place: the
@@ -14,7 +14,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
-#include "techniques/FrameUniforms.h"
+#include "techniques/FrameBlock.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// What a Vulkan technique calls at each pass (techniques/PassTimer.h on GL): a timestamp into the frame's
+// What a Vulkan technique calls at each pass (techniques/gl/PassTimer.h on GL): a timestamp into the frame's
 // slot of the ring where timestamps are on and, in the census frame, what each pass submitted (the
 // submitter's counts between one pass's begin and the next's) and the passes left out with their
 // reasons.
@@ -9,7 +9,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "techniques/submit/Submitter.h"
+#include "techniques/Submission.h"
 #include "vk/TimestampRing.h"
 
 namespace sb {

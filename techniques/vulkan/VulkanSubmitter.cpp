@@ -12,9 +12,6 @@ namespace sb {
 namespace {
 constexpr DrawSet kSets[kDrawSetCount] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers,
                                           DrawSet::NonCasters, DrawSet::NonReceivers};
-bool kept(InstanceMask keep, size_t i) {
-    return keep.empty() || keep[i] != 0;
-}
 } // namespace
 
 VulkanSubmitter::VulkanSubmitter(VulkanContext& context, SubmitMode mode) : mContext(context), mMode(mode) {
@@ -58,8 +55,8 @@ void VulkanSubmitter::upload(const Scene& scene) {
             Batch b{m, uint32_t(mRecords.size()), 0};
             for (uint32_t i = 0; i < scene.instances.size(); ++i) {
                 const Instance& inst = scene.instances[i];
-                if (inst.mesh != m || !Submitter::inSet(inst, kSets[s])) continue;
-                mRecords.push_back({inst.model, glm::vec4(inst.color, Submitter::shadowSignedId(inst))});
+                if (inst.mesh != m || !inDrawSet(inst, kSets[s])) continue;
+                mRecords.push_back({inst.model, glm::vec4(inst.color, shadowSignedId(inst))});
                 mRecordInstance.push_back(i);
                 ++b.count;
             }
@@ -123,10 +120,10 @@ void VulkanSubmitter::drawRetained(VkCommandBuffer cmd, VkPipelineLayout layout,
     uint32_t bound = UINT32_MAX;
     for (uint32_t i : mOrder) {
         const Instance& inst = mScene->instances[i];
-        if (!Submitter::inSet(inst, set) || !kept(keep, i)) continue;
+        if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         if (inst.mesh != bound) bindMesh(cmd, bound = inst.mesh);
         push.model = inst.model;
-        push.colorId = glm::vec4(inst.color, Submitter::shadowSignedId(inst));
+        push.colorId = glm::vec4(inst.color, shadowSignedId(inst));
         vkCmdPushConstants(cmd, layout, kPushStages, 0, sizeof push, &push);
         const uint32_t count = mMeshes[inst.mesh].indexCount;
         vkCmdDrawIndexed(cmd, count, 1, 0, 0, 0);
@@ -149,12 +146,12 @@ void VulkanSubmitter::drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout
         const uint32_t count = mMeshes[b.mesh].indexCount;
         // Each run of consecutive kept records is one draw (firstInstance selects the run).
         for (uint32_t r = 0; r < b.count;) {
-            if (!kept(keep, mRecordInstance[b.first + r])) {
+            if (!keptBy(keep, mRecordInstance[b.first + r])) {
                 ++r;
                 continue;
             }
             uint32_t end = r;
-            while (end < b.count && kept(keep, mRecordInstance[b.first + end])) ++end;
+            while (end < b.count && keptBy(keep, mRecordInstance[b.first + end])) ++end;
             vkCmdDrawIndexed(cmd, count, end - r, 0, 0, b.first + r);
             mStats.drawCalls += 1;
             mStats.triangles += uint64_t(count / 3) * (end - r);

@@ -1,5 +1,5 @@
 #pragma once
-// Submission on Vulkan (techniques/submit/Submitter.h on GL): the scene's meshes in device-local vertex
+// Submission on Vulkan (techniques/gl/Submitter.h on GL): the scene's meshes in device-local vertex
 // and index buffers, drawn into the frame's command buffer by the technique's bound pipeline. Two of GL's
 // four modes have a Vulkan form:
 //   retained   one vkCmdDrawIndexed per instance, the instance in push constants (common/push.glsl):
@@ -18,9 +18,9 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
-#include "gl/ProgramCache.h"
+#include "shading/Defines.h"
 #include "scenes/Scene.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/Submission.h"
 #include "vk/VulkanBuffer.h"
 
 namespace sb {

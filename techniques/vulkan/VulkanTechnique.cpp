@@ -4,21 +4,22 @@ namespace sb {
 
 Defines VulkanCompileContext::defines() const {
     Defines d = submitter.defines();
-    if (scene.hasNonReceivers()) d["SB_NON_RECEIVERS"] = "";
-    if (const uint32_t mask = scene.shadowlessLightMask())
-        d["SB_SHADOWLESS_LIGHTS"] = std::to_string(mask) + "u";
+    addShadowExceptionDefines(scene, d);
     return d;
 }
 
-VulkanTechnique::VulkanTechnique(TechniqueInfo info)
-    : mInfo(std::move(info)), mProperties(mInfo.name, mInfo.properties) {
-    // GL capabilities say nothing about a Vulkan device; what a Vulkan technique needs it checks in
-    // compile() against the device's features.
-    mInfo.capabilities.clear();
-}
-
-void VulkanTechnique::sceneChanged(const Scene& scene, uint32_t) {
-    setScene(scene);
+std::string VulkanTechnique::checkCapabilities(const VulkanContext& context) const {
+    for (const Capability& cap : info().capabilitiesOf(Api::Vulkan)) {
+        const uint32_t version = context.properties().apiVersion;
+        const bool versionOk = VK_API_VERSION_MAJOR(version) > uint32_t(cap.major) ||
+                               (VK_API_VERSION_MAJOR(version) == uint32_t(cap.major) &&
+                                VK_API_VERSION_MINOR(version) >= uint32_t(cap.minor));
+        const bool extensionOk = cap.extension.empty() || context.hasDeviceExtension(cap.extension);
+        if (!versionOk || !extensionOk)
+            return name() + " needs " + cap.name + " (not available on " + context.info().name + ", Vulkan " +
+                   context.info().apiVersion + ")";
+    }
+    return "";
 }
 
 } // namespace sb

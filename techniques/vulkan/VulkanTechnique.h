@@ -3,7 +3,7 @@
 // same declaration as the GL technique of the same name (TechniqueInfo: name, effects, passes,
 // properties), the same calls in the same order (setScene, compile, execute per measured frame,
 // sceneChanged for scenes in motion), recorded into the frame's command buffer instead of issued to a
-// GL context. The registry (techniques/TechniqueRegistry.h) says which techniques have one.
+// GL context. The registry (registry/TechniqueRegistry.h) says which techniques have one.
 //
 // What a frame may assume: the harness has begun the command buffer, the frame's timestamp slot and
 // cleared the targets (VulkanTargets::recordClear); no render pass is open. Every pass a technique
@@ -35,7 +35,8 @@ struct VulkanCompileContext {
     VulkanTargets& targets;
     VulkanFrameBlock& frame;
     VulkanPipelineCache& pipelines;
-    /// As CompileContext::defines(): the submitter's and the scene's shadow exceptions.
+    /// As the GL CompileContext's: the submitter's defines and the scene's shadow exceptions
+    /// (addShadowExceptionDefines).
     Defines defines() const;
 };
 
@@ -52,37 +53,19 @@ struct VulkanFrameContext {
     uint64_t frameIndex = 0;
 };
 
-class VulkanTechnique {
+class VulkanTechnique : public Technique {
 public:
-    explicit VulkanTechnique(TechniqueInfo info);
-    virtual ~VulkanTechnique() = default;
-    VulkanTechnique(const VulkanTechnique&) = delete;
-    VulkanTechnique& operator=(const VulkanTechnique&) = delete;
+    using Technique::Technique;
+    Api api() const override { return Api::Vulkan; }
 
-    const TechniqueInfo& info() const { return mInfo; }
-    const std::string& name() const { return mInfo.name; }
-    PropertySet& properties() { return mProperties; }
-    const PropertySet& properties() const { return mProperties; }
-
-    /// Untimed precompute (throws sb::Error(Unsupported) for a scene or property it cannot handle).
-    virtual void setScene(const Scene& scene) = 0;
-    /// A scene in motion moved (Technique::sceneChanged); the default runs setScene again.
-    virtual void sceneChanged(const Scene& scene, uint32_t changes);
+    /// "" when the device has every Vulkan capability the declaration lists, else what is missing and
+    /// on which device.
+    std::string checkCapabilities(const VulkanContext& context) const;
     /// Shader modules and pipelines for the current properties, scene and targets (both visibility
     /// variants of the render pass: the harness switches between them).
     virtual void compile(const VulkanCompileContext& ctx) = 0;
     /// Records one frame into ctx.cmd.
     virtual void execute(VulkanFrameContext& ctx) = 0;
-    virtual Counters counters() const { return {}; }
-    const std::string& permutationKey() const { return mPermutationKey; }
-
-protected:
-    void setPermutationKey(std::string key) { mPermutationKey = std::move(key); }
-
-private:
-    TechniqueInfo mInfo;
-    PropertySet mProperties;
-    std::string mPermutationKey;
 };
 
 } // namespace sb

@@ -17,7 +17,7 @@
 #include "bench/run/AccuracyEvaluator.h"
 #include "bench/run/Harness.h"
 #include "bench/run/VulkanHarness.h"
-#include "techniques/TechniqueRegistry.h"
+#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

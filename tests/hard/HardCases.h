@@ -376,7 +376,7 @@ inline const HardCase kHardCases[] = {
      "negative control (3.50% off the edge band): 16^2 faces put a texel of 0.2 rad on the sphere, the "
      "shadow turns into blocks; the harness must see the map's resolution",
      0.05f, 1.0},
-    // Cascaded shadow maps (`cascaded`, techniques/shadowmap/CascadedTechnique.h): cascade transitions,
+    // Cascaded shadow maps (`cascaded`, techniques/shadowmap/CascadedGL.h): cascade transitions,
     // measured 2026-12-02 on llvmpipe (wrong %, off the edge band; camera gain / light gain / flicker).
     // A camera 1.5 above the ground looking along it beside a 120-unit wall, whose shadow's straight
     // edge runs from 4 units ahead across all four cascades (splits at view depths 10.2, 22.8 and

@@ -1,4 +1,4 @@
 #pragma once
 #include "scenes/Scene.h"
 #include "reference/Ref.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"

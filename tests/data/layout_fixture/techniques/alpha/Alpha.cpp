@@ -1,5 +1,5 @@
 #include "techniques/alpha/Alpha.h"
-#include "techniques/submit/Submitter.h"
+#include "techniques/gl/Submitter.h"
 #include "techniques/beta/Beta.h"
 
 const char* kLit = "alpha/lit.frag";

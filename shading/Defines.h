@@ -1,0 +1,17 @@
+#pragma once
+// A shader permutation's defines, the same on both APIs: the key logged in every row (the permutation
+// column), the cache key of compiled programs and modules, and a folder of the shader dump.
+#include <map>
+#include <string>
+
+namespace sb {
+
+/// Sorted NAME -> VALUE list; the key of a permutation. VALUE "" means "#define NAME 1".
+using Defines = std::map<std::string, std::string>;
+/// "PCF_SIZE=3,SB_INSTANCED" style key: sorted, comma separated, VALUE 1 and "" omitted.
+std::string definesKey(const Defines& d);
+/// Every define with its value spelled out ("A=1;B=3;"): a cache key that tells "" from "1" apart
+/// where a source could (it cannot today, but a cache must not rely on it).
+std::string fullDefinesKey(const Defines& d);
+
+} // namespace sb

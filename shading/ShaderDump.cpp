@@ -1,0 +1,63 @@
+#include "shading/ShaderDump.h"
+
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+#include <utility>
+
+#include "core/Error.h"
+
+namespace sb {
+namespace {
+
+constexpr const char* kUntagged = "untagged";
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::error_code error;
+    std::filesystem::create_directories(path.parent_path(), error);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (error || !out)
+        throw Error("--dump-shaders: cannot write '" + path.string() + "'" +
+                        (error ? " (" + error.message() + ")" : ""),
+                    ExitCode::BadInput);
+}
+
+} // namespace
+
+void ShaderDump::setDirectory(const std::string& directory) {
+    mDirectory = directory;
+    mWritten.clear();
+    mLog.clear();
+    if (directory.empty()) return;
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error || !std::filesystem::is_directory(directory))
+        throw Error("--dump-shaders " + directory + ": cannot create the directory" +
+                        (error ? " (" + error.message() + ")" : ""),
+                    ExitCode::BadInput);
+}
+
+void ShaderDump::record(const ShaderSources& sources, const Defines& defines, const Build& build) {
+    if (!active()) return;
+    for (const auto& [stage, file] : sources.stages()) {
+        std::string relative = path(mLabel, sources, defines, stage);
+        mLog.push_back(relative);
+        if (!mWritten.insert(relative).second) continue;
+        writeText(std::filesystem::path(mDirectory) / relative, build(*file, stage));
+    }
+}
+
+std::vector<std::string> ShaderDump::takeLog() {
+    return std::exchange(mLog, {});
+}
+
+std::string ShaderDump::path(const std::string& label, const ShaderSources& sources, const Defines& defines,
+                             ShaderStage stage) {
+    const std::string permutation = definesKey(defines);
+    return (label.empty() ? kUntagged : label) + "/" + sources.programName() + "/" +
+           (permutation.empty() ? "default" : permutation) + "/" + stageFileName(stage);
+}
+
+} // namespace sb

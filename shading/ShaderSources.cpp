@@ -1,0 +1,31 @@
+#include "shading/ShaderSources.h"
+
+#include <algorithm>
+
+namespace sb {
+
+std::vector<std::pair<ShaderStage, const std::string*>> ShaderSources::stages() const {
+    std::vector<std::pair<ShaderStage, const std::string*>> out = {{ShaderStage::Vertex, &vertex}};
+    if (!geometry.empty()) out.emplace_back(ShaderStage::Geometry, &geometry);
+    if (!fragment.empty()) out.emplace_back(ShaderStage::Fragment, &fragment);
+    return out;
+}
+
+std::string ShaderSources::programName() const {
+    std::string name;
+    for (const auto& [stage, file] : stages()) {
+        std::string part = *file;
+        std::replace(part.begin(), part.end(), '/', '-');
+        name += (name.empty() ? "" : "+") + part;
+    }
+    return name;
+}
+
+std::string ShaderSources::describe() const {
+    std::string text = "vertex '" + vertex + "'";
+    if (!fragment.empty()) text += ", fragment '" + fragment + "'";
+    if (!geometry.empty()) text += ", geometry '" + geometry + "'";
+    return text;
+}
+
+} // namespace sb

@@ -1,0 +1,16 @@
+#pragma once
+// The shader stages, named once for both APIs: the preprocessor's stage define, the stage's word in
+// messages, and the file name a dumped stage gets (the extension glslangValidator reads the stage from).
+// gl/ maps a stage to its GLenum, vk/ to glslang's language and VkShaderStageFlagBits.
+namespace sb {
+
+enum class ShaderStage { Vertex, Geometry, Fragment, Compute };
+
+/// "SB_VERTEX_SHADER" etc.: defined to 1 in the stage being built, so one file can serve several stages.
+const char* stageDefine(ShaderStage stage);
+/// "vertex", "geometry", "fragment", "compute".
+const char* stageName(ShaderStage stage);
+/// "vertex.vert", "geometry.geom", "fragment.frag", "compute.comp".
+const char* stageFileName(ShaderStage stage);
+
+} // namespace sb

@@ -1,0 +1,55 @@
+#include "techniques/shadowmap/CubeMap.h"
+
+#include "techniques/Property.h"
+#include "techniques/shadowmap/CubeFaces.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+
+namespace sb {
+
+using P = ShadowMapProperties;
+
+namespace {
+
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        P::resolution("1024", "width and height of each cube face and of each spot/directional map (texels)"),
+        P::biasConstant(),
+        P::biasSlope(),
+        P::pcf("PCF kernel width: pcf x pcf taps one texel apart on the face"),
+        flag(CubeMap::kLayered, "true",
+             "one pass per light with a geometry shader routing triangles to faces (true, where the "
+             "context allows it), or six passes per light with per-face caster culling (false)"),
+    };
+}
+
+} // namespace
+
+TechniqueInfo CubeMap::declaration() {
+    return {.name = "cubemap",
+            .description = "omnidirectional shadow mapping: a depth cube map per point light",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {P::kResolution, {"256", "512", "1024", "2048"}},
+                P::pcfSweep(),
+                P::biasConstantSweep(),
+                P::biasSlopeSweep(),
+            }};
+}
+
+Counters CubeMap::counters(const SubmitStats& s, int resolution, const OmniLightSet& lights,
+                           size_t facesRendered, size_t culled) {
+    const double res = double(resolution);
+    const double maps = double(CubeFaces::kFaces * lights.omniCount() + lights.flatCount());
+    return DepthLightingFrame::counters(s, res * res * maps,
+                                        {{"faces_rendered", double(facesRendered)},
+                                         {"casters_culled", double(culled)},
+                                         {"lights_skipped", double(lights.skippedCount())},
+                                         {"lights_unshadowed", double(lights.unshadowedCount())}});
+}
+
+} // namespace sb

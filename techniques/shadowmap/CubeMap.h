@@ -1,0 +1,21 @@
+#pragma once
+// `cubemap`: omnidirectional shadow mapping with a depth cube map per point light (Gerasimov 2004, Omnidirectional Shadow Mapping, GPU Gems ch. 12).
+// The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name, effects, the
+// capabilities of each API's form, passes, properties and quality knobs.
+#include "techniques/Submission.h"
+#include "techniques/TechniqueInfo.h"
+#include "techniques/shadowmap/OmniLightSet.h"
+
+namespace sb {
+
+struct CubeMap {
+    static constexpr const char* kLayered = "layered";
+
+    static TechniqueInfo declaration();
+    /// The counters of a frame, on both APIs: DepthLightingFrame's over every face and flat map of
+    /// `lights` at `resolution`, then faces rendered, casters culled, lights skipped and unshadowed.
+    static Counters counters(const SubmitStats& s, int resolution, const OmniLightSet& lights,
+                             size_t facesRendered, size_t culled);
+};
+
+} // namespace sb

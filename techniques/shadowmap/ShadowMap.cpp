@@ -1,0 +1,121 @@
+#include "techniques/shadowmap/ShadowMap.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scenes/Math.h"
+#include "techniques/Property.h"
+#include "techniques/shadowmap/PoissonDisk.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+
+namespace sb {
+
+using P = ShadowMapProperties;
+
+namespace {
+
+/// Side of the rotated grid for `taps`: the nearest square, at least 2 x 2.
+int rotatedGridSide(int taps) {
+    return std::max(2, int(std::lround(std::sqrt(double(taps)))));
+}
+
+/// The kernel's tap offsets in texels, `radius` applied: the Poisson disk scaled to the radius, or the
+/// unrotated n x n grid of cell centres covering the square [-radius, radius]^2.
+std::vector<glm::vec2> kernelTaps(const std::string& kernel, int taps, float radius) {
+    std::vector<glm::vec2> out;
+    if (kernel == "poisson") {
+        for (const glm::vec2& p : PoissonDisk::generate(taps)) out.push_back(p * radius);
+        return out;
+    }
+    const int n = rotatedGridSide(taps);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            out.push_back((glm::vec2(float(x), float(y)) + 0.5f - 0.5f * float(n)) *
+                          (2.0f * radius / float(n)));
+    return out;
+}
+
+/// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        P::resolution("2048", "shadow map width and height (texels)"),
+        P::biasConstant(),
+        P::biasSlope(),
+        P::pcf("PCF kernel width: pcf x pcf taps one texel apart"),
+        flag(ShadowMap::kHardwareCompare, "true",
+             "depth-compare sampler with bilinear filtering (true) or nearest fetch + shader compare"),
+        choice(ShadowMap::kKernel, "grid", {"grid", "poisson", "rotated_grid"},
+               "PCF kernel: grid (pcf x pcf), poisson (taps of a fixed Poisson disk), rotated_grid (a grid "
+               "rotated per pixel by interleaved gradient noise)"),
+        integer(ShadowMap::kTaps, "16", 4, 64,
+                "taps of the poisson kernel; rotated_grid uses the nearest square n x n (n >= 2)"),
+        real(ShadowMap::kRadius, "1.5", 0, 64, "radius of the poisson and rotated_grid kernels (map texels)"),
+        real(ShadowMap::kNormalOffset, "0", 0, 64,
+             "normal-offset bias: lookup moved along the normal by this many world texels x (1 - n.l)"),
+        flag(ShadowMap::kReceiverPlane, "false", "receiver-plane depth bias: each tap compared with the receiver plane"),
+        flag(ShadowMap::kCull, "true",
+             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
+             "filter's footprint)"),
+    };
+}
+
+} // namespace
+
+TechniqueInfo ShadowMap::declaration() {
+    return {.name = "shadowmap",
+            .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "lighting"},
+            .properties = declareProperties(),
+            // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
+            .quality = {
+                {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+                P::pcfSweep(),
+                P::biasConstantSweep(),
+                P::biasSlopeSweep(),
+                {kKernel, {"grid", "poisson", "rotated_grid"}},
+                {kTaps, {"8", "16", "32"}},
+                {kRadius, {"1", "1.5", "3"}},
+                {kNormalOffset, {"0", "1", "2", "4"}},
+                {kReceiverPlane, {"false", "true"}},
+            }};
+}
+
+std::vector<glm::vec2> ShadowMap::kernelOffsets(const PropertySet& p) {
+    const std::string& kernel = p.getEnum(kKernel);
+    if (kernel == "grid") return {};
+    return kernelTaps(kernel, int(p.getInt(kTaps)), float(p.getFloat(kRadius)));
+}
+
+void ShadowMap::fitTexels(const Scene& scene, const FlatLightFits& lights, int mapSize,
+                                   double kernelTexels, float normalOffset, std::vector<float>& texelWorld,
+                                   ViewCull& view) {
+    texelWorld.clear();
+    for (const glm::mat4& vp : lights.viewProj())
+        texelWorld.push_back(FlatLightFits::texelWorldSize(vp, mapSize));
+    // What the lighting pass reads around a receiver's texel, in texels: the kernel's half-width (the
+    // grid's pcf x pcf, the other kernels' radius), the normal offset, and two for the bilinear
+    // compare's footprint and rounding. In world units at the farthest receiver (w = 1 for an
+    // orthographic map; a spot's texels grow with the distance).
+    const float texels = float(kernelTexels) + normalOffset + 2.0f;
+    view.lights = &scene.lights;
+    view.reach.receivers = Aabb{};
+    for (const Instance& inst : scene.instances)
+        if (inst.receivesShadow && inst.mesh < scene.meshes.size())
+            view.reach.receivers.extend(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+    view.margins.clear();
+    for (size_t i = 0; i < lights.viewProj().size(); ++i)
+        view.margins.push_back(texels * texelWorld[i] *
+                               FlatLightFits::farthestW(lights.viewProj()[i], view.reach.receivers));
+}
+
+Counters ShadowMap::counters(const SubmitStats& s, int mapSize, const FlatLightFits& lights, size_t culled) {
+    return DepthLightingFrame::counters(s, double(mapSize) * mapSize * double(lights.shadowed()),
+                                        {{"lights_unshadowed", double(lights.size() - lights.shadowed())},
+                                         {"casters_culled", double(culled)}});
+}
+
+} // namespace sb

@@ -1,0 +1,46 @@
+#include "techniques/shadowmap/Vsm.h"
+
+#include "techniques/Property.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+
+namespace sb {
+
+namespace {
+
+std::vector<PropertyDesc> declareProperties() {
+    return {
+        integer(Vsm::kResolution, "1024", 16, 8192, "moment map width and height (texels)"),
+        integer(Vsm::kBlur, "3", 0, ShadowMapProperties::kMaxBlurWidth,
+                "separable Gaussian kernel width in texels (sigma = width / 4; 0 or 1 = no blur)"),
+        flag(Vsm::kReceiverBackground, "true",
+             "non-casters drawn behind the casters as the map's background (the farthest per texel): the "
+             "filter sees the receiver, not the far plane, beside an occluder's edge"),
+        flag(Vsm::kCull, "true",
+             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
+             "blur's reach)"),
+        real(Vsm::kMinVariance, "1e-06", 0, 0.01,
+             "lower bound of the filtered variance (linear depth in [0, 1], squared): against the "
+             "bound's numeric acne"),
+        real(Vsm::kBleedReduction, "0.2", 0, 0.99,
+             "light-bleeding reduction: linstep(amount, 1, p_max) removes the bound's [0, amount] tail"),
+    };
+}
+
+} // namespace
+
+TechniqueInfo Vsm::declaration() {
+    return {.name = "vsm",
+           .description = "variance shadow maps: filtered moments, Chebyshev's bound in the lighting pass",
+           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                      Effect::MultipleLights,
+           .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+           .passes = {"depth", "blur", "lighting"},
+           .properties = declareProperties(),
+           .quality = {
+               {kResolution, {"256", "512", "1024", "2048", "4096"}},
+               {kBlur, {"0", "3", "5", "9"}},
+               {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
+           }};
+}
+
+} // namespace sb
