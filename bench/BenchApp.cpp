@@ -4,21 +4,21 @@
 #include <iostream>
 
 
-#include "bench/run/BuildInfo.h"
-#include "bench/run/MeasuredHarness.h"
-#include "bench/ExplainCommand.h"
-#include "bench/ExportCommand.h"
-#include "bench/MergeCommand.h"
-#include "bench/RunCommand.h"
+#include "bench/lib/rows/BuildInfo.h"
+#include "bench/lib/harness/MeasuredHarness.h"
+#include "bench/explain/ExplainCommand.h"
+#include "bench/export/ExportCommand.h"
+#include "bench/merge/MergeCommand.h"
+#include "bench/run/RunCommand.h"
 #include "bench/bottleneck/BottleneckCommand.h"
 #include "bench/ci/CiCommand.h"
-#include "bench/ci/CompareCommand.h"
+#include "bench/compare/CompareCommand.h"
 #include "bench/figures/FiguresCommand.h"
 #include "bench/golden/GoldenCommand.h"
-#include "bench/output/StandardStreams.h"
+#include "bench/lib/output/StandardStreams.h"
 #include "bench/report/ReportCommand.h"
 #include "bench/sweep/SweepCommand.h"
-#include "bench/sweep/SweepWorker.h"
+#include "bench/lib/sweep/SweepWorker.h"
 #include "core/Error.h"
 #include "core/Injection.h"
 #include "core/Paths.h"
@@ -155,7 +155,7 @@ int BenchApp::dispatch(int argc, char** argv) {
 }
 
 int BenchApp::main(int argc, char** argv) {
-    StandardStreams::protect(); // before any file is opened (see bench/output/StandardStreams.h)
+    StandardStreams::protect(); // before any file is opened (see bench/lib/output/StandardStreams.h)
     MeasuredHarness::pinAllocator();
     try {
         checkInjections(); // a typo in SHADOWBENCH_INJECT must not measure the unmodified code

@@ -1,5 +1,5 @@
 // libFuzzer target: the CSV reader behind `bench merge` and `bench export` (CsvWriter::parse,
-// bench/output/CsvWriter.h) over arbitrary text. Bad input (ragged rows, an unterminated quote) must end
+// bench/lib/output/CsvWriter.h) over arbitrary text. Bad input (ragged rows, an unterminated quote) must end
 // in sb::Error. What parses is written back with CsvWriter::serialize, which must read back to the same
 // table: merge and export rewrite every file they read, and a cell that changed on the way (a quote,
 // a CR, an empty last column) would be a silently altered result. Seeds: fuzz/corpus/csv_parse/.
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "core/Error.h"
 #include "fuzz/FuzzReach.h"
 

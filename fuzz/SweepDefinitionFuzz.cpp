@@ -1,4 +1,4 @@
-// libFuzzer target: a sweep definition file's text (bench/sweep/SweepDefinition.h) as
+// libFuzzer target: a sweep definition file's text (bench/lib/sweep/SweepDefinition.h) as
 // SweepDefinition::fromJsonFile reads it (plain JSON, then fromJson), and the plan it expands to
 // (expand(): every technique spec, scene, camera and combination of run options validated). Bad input
 // must end in sb::Error. Seeds: fuzz/corpus/sweep_definition/ (sweeps/*.json and the tests' sweeps).
@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/sweep/SweepDefinition.h"
+#include "bench/lib/sweep/SweepDefinition.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "fuzz/FuzzReach.h"

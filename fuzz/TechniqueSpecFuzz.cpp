@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <string>
 
-#include "bench/run/RunOptions.h"
-#include "bench/sweep/SweepPlan.h"
+#include "bench/lib/options/RunOptions.h"
+#include "bench/lib/sweep/SweepPlan.h"
 #include "core/Error.h"
 #include "fuzz/FuzzReach.h"
 #include "techniques/PropertySet.h"

@@ -44,7 +44,7 @@ fi
 # Left out: Cli.WindowViewerRendersAndQuits (the GLFW window on Xvfb). Its leaks are allocated inside
 # the GLX driver that Mesa dlcloses before exit, so LeakSanitizer sees "<unknown module>" frames and no
 # suppression can name the library; the same test runs in the normal build.
-# handshadow switches LeakSanitizer off for itself (bench/handshadow/HandShadow.cpp says why); ASan and
+# handshadow switches LeakSanitizer off for itself (bench/handwritten/handshadow/HandShadow.cpp says why); ASan and
 # UBSan still run in it.
 # Also left out, because the code they drive is not ours to sanitize and they cost CI minutes under
 # ASan: PlotCli and ReportCli (Python's matplotlib and headless Chromium; bench report only starts

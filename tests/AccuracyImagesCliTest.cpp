@@ -14,9 +14,9 @@
 #include "TestSupport.h"
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/MatrixCheck.h"
-#include "bench/images/AccuracyImages.h"
-#include "bench/images/ContactSheet.h"
-#include "bench/images/ErrorMap.h"
+#include "bench/lib/images/AccuracyImages.h"
+#include "bench/lib/images/ContactSheet.h"
+#include "bench/lib/images/ErrorMap.h"
 
 using namespace sb;
 using test::runCommand;
@@ -41,7 +41,7 @@ struct MapCounts {
     uint64_t falseShadowOffBand = 0, falseLightOffBand = 0;
 };
 
-/// Counts the error map's colours (bench/images/ErrorMap.h); fails on a colour that is none of them.
+/// Counts the error map's colours (bench/lib/images/ErrorMap.h); fails on a colour that is none of them.
 MapCounts countColours(const Image8& map) {
     MapCounts n;
     for (int y = 0; y < map.height; ++y)
@@ -67,7 +67,7 @@ MapCounts countColours(const Image8& map) {
     return n;
 }
 
-/// A count written as a percentage with 4 decimals (bench/output/CsvNumber.h) of `whole`, recovered: the
+/// A count written as a percentage with 4 decimals (bench/lib/output/CsvNumber.h) of `whole`, recovered: the
 /// percentage is within 5e-5 points of the exact one, i.e. within 5e-7 * whole samples, under 0.01 of a
 /// sample for the 16384 samples of 128x128, so rounding recovers the count exactly.
 uint64_t countFromPercent(const std::string& pct, uint64_t whole) {

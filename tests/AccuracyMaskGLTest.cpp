@@ -1,4 +1,4 @@
-// The accuracy evaluator's mask (bench/run/AccuracyEvaluator.h) under a spot light: samples outside
+// The accuracy evaluator's mask (bench/lib/measure/AccuracyEvaluator.h) under a spot light: samples outside
 // the outer cone receive no light, so they are not judged, exactly as samples beyond a light's range
 // are not. The answer is computed here from each pixel's world position (depth read back and
 // unprojected) and the cone's half-angle, independently of the evaluator; before the cone was left
@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/Harness.h"
 #include "reference/AccuracyMetrics.h"
 #include "scenes/Math.h"
 #include "techniques/shadowmap/ShadowMapGL.h"

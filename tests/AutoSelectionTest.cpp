@@ -1,4 +1,4 @@
-// `-t auto`'s choice (bench/select/AutoSelection.h) over hand-made candidate tables: it never picks a
+// `-t auto`'s choice (bench/lib/select/AutoSelection.h) over hand-made candidate tables: it never picks a
 // candidate that lacks a requested effect, misses the accuracy bound or was refused, and among the rest
 // it picks the lowest measured cost, so changing the costs changes the choice (a fixed ranking fails
 // that test); where the calibration's interleaved rounds cannot separate two candidates, the exact
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/select/AutoSelection.h"
+#include "bench/lib/select/AutoSelection.h"
 
 using namespace sb;
 

@@ -19,7 +19,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/bottleneck/BottleneckClassifier.h"
+#include "bench/lib/bottleneck/BottleneckClassifier.h"
 #include "core/Error.h"
 
 using sb::BottleneckClassifier;

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 
 using namespace sb;
 using test::runCommand;
@@ -121,7 +121,7 @@ TEST(BottleneckCli, FromACsvWithoutStudyRowsIsAClearError) {
 
 // What each stage's load is, as --help says it and as the README says it: the same definitions,
 // compared as words (line breaks and the README's backticks aside), and both the ones the classifier
-// uses (bench/bottleneck/BottleneckStudy.cpp reads load_gl_calls, load_primitives, load_fragments).
+// uses (bench/lib/bottleneck/BottleneckStudy.cpp reads load_gl_calls, load_primitives, load_fragments).
 TEST(BottleneckCli, HelpAndReadmeDefineTheLoadsAlike) {
     auto squash = [](std::string text) {
         std::string out;

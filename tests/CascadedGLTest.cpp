@@ -5,7 +5,7 @@
 //      no ground pixel's visibility changes beyond the shadow's edge band. Without it (the tight box
 //      that follows the camera) the grid slides and edge pixels change: the negative control;
 //  (b) the exact shadow of the sphere on sphere_plane (the ellipse of tests/ShadowMapGLTest.cpp) from
-//      above, and the Embree reference (bench/run/AccuracyEvaluator.h) from an oblique camera whose
+//      above, and the Embree reference (bench/lib/measure/AccuracyEvaluator.h) from an oblique camera whose
 //      view spans every cascade;
 //  (c) a long, low view down a street of `city`: against the reference, cascaded gets fewer pixels
 //      wrong than shadowmap near the camera and over the whole image;
@@ -19,8 +19,8 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/shadowmap/CascadedGL.h"

@@ -14,7 +14,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;

@@ -1,11 +1,11 @@
-// The perf gate's suite file (bench/ci/CiSuite.h): the committed suite covers every technique of the
+// The perf gate's suite file (bench/lib/gate/CiSuite.h): the committed suite covers every technique of the
 // registry, -t auto and a scene in motion, and a wrong suite is refused naming the file and the JSON path.
 #include <set>
 
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/ci/CiSuite.h"
+#include "bench/lib/gate/CiSuite.h"
 #include "core/Error.h"
 #include "registry/TechniqueRegistry.h"
 

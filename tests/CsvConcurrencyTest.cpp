@@ -1,4 +1,4 @@
-// Result files under hostile conditions (bench/output/AtomicFile.h): several processes appending to one
+// Result files under hostile conditions (bench/lib/output/AtomicFile.h): several processes appending to one
 // CSV at once, leftovers of killed writers, and paths that are not regular files. The expected outcome
 // of each test is counted by hand (writers x rows), and every check is exact: a row is there once, or
 // the test fails.
@@ -18,7 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "core/Error.h"
 
 using namespace sb;

@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvMerge.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvMerge.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "core/Error.h"
 
 using namespace sb;

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "core/Error.h"
 
 using namespace sb;

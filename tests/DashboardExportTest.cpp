@@ -1,4 +1,4 @@
-// The dashboard exports (bench/output/DashboardExport.h) on a hand-written table: every expected name,
+// The dashboard exports (bench/lib/output/DashboardExport.h) on a hand-written table: every expected name,
 // number and unit is written out here, so the test does not read the values back through the code it
 // checks. Google Benchmark's own compare.py reading the export is ExportCliTest's business.
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "bench/output/CsvWriter.h"
-#include "bench/output/DashboardExport.h"
-#include "bench/output/RowExport.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/DashboardExport.h"
+#include "bench/lib/output/RowExport.h"
 #include "core/Error.h"
 
 using namespace sb;

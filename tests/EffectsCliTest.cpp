@@ -1,4 +1,4 @@
-// Effect requests through the bench binary (techniques/EffectCoverage.h, bench/ExplainCommand.h): a
+// Effect requests through the bench binary (techniques/EffectCoverage.h, bench/explain/ExplainCommand.h): a
 // technique short of an effect the scene asks for is measured with one warning line and says so in its
 // row; --strict-effects refuses it (exit 3, a row with status unsupported) while the others are measured;
 // baselines never warn; `bench explain` prints the same masks and the passes of one frame. The expected
@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "scenes/SceneLoader.h"
 
 using namespace sb;

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 
 using namespace sb;
 using test::runCommand;

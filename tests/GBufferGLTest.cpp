@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
 #include "reference/GBufferRenderer.h"
 #include "scenes/Math.h"

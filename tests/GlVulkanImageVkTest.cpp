@@ -18,8 +18,8 @@
 
 #include "TestSupport.h"
 #include "VkTestSupport.h"
-#include "bench/run/Harness.h"
-#include "bench/run/VulkanHarness.h"
+#include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/VulkanHarness.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;

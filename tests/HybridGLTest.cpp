@@ -17,7 +17,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
 #include "registry/TechniqueRegistry.h"
 

@@ -14,11 +14,11 @@
 #include <gtest/gtest.h>
 
 #include "TestPaths.h"
-#include "bench/ci/CallgrindDump.h"
-#include "bench/ci/Fingerprint.h"
-#include "bench/ci/InstructionCount.h"
-#include "bench/ci/InstructionDiff.h"
-#include "bench/ci/ValgrindDiagnosis.h"
+#include "bench/lib/callgrind/CallgrindDump.h"
+#include "bench/lib/gate/Fingerprint.h"
+#include "bench/lib/callgrind/InstructionCount.h"
+#include "bench/lib/callgrind/InstructionDiff.h"
+#include "bench/lib/callgrind/ValgrindDiagnosis.h"
 #include "core/Error.h"
 
 using namespace sb;

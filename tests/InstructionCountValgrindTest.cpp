@@ -26,10 +26,10 @@
 #include <gtest/gtest.h>
 
 #include "TestPaths.h"
-#include "bench/ci/Fingerprint.h"
-#include "bench/ci/InstructionCount.h"
-#include "bench/ci/InstructionLayer.h"
-#include "bench/ci/ValgrindDiagnosis.h"
+#include "bench/lib/gate/Fingerprint.h"
+#include "bench/lib/callgrind/InstructionCount.h"
+#include "bench/lib/gate/InstructionLayer.h"
+#include "bench/lib/callgrind/ValgrindDiagnosis.h"
 #include "core/Error.h"
 
 using namespace sb;

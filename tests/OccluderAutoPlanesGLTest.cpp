@@ -19,8 +19,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/Harness.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/occluder/OccluderGL.h"
 #include "techniques/occluder/OccluderTextures.h"

@@ -23,7 +23,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "registry/TechniqueRegistry.h"
 #include "techniques/shadowmap/CubeFaces.h"
 

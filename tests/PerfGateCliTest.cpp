@@ -7,7 +7,7 @@
 
 #include "TestPaths.h"
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 
 using namespace sb;
 

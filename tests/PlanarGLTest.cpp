@@ -13,7 +13,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
 #include "techniques/planar/PlanarGL.h"

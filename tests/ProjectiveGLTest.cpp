@@ -18,8 +18,8 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/projective/ProjectiveGL.h"
 

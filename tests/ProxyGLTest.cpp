@@ -18,7 +18,7 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "scenes/Math.h"
 #include "techniques/proxy/ProxyGL.h"
 

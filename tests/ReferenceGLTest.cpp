@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "reference/ReferenceGL.h"
 #include "scenes/Math.h"
 

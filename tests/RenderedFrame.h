@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
 

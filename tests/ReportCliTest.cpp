@@ -18,7 +18,7 @@
 
 #include "TestSupport.h"
 #include "bench/golden/GoldenImage.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 
 using namespace sb;
 using test::runCommand;

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
-#include "bench/output/RowExport.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/RowExport.h"
 #include "core/Error.h"
 
 using namespace sb;

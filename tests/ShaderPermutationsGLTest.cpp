@@ -46,7 +46,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
 #include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"

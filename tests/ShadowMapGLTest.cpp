@@ -7,7 +7,7 @@
 
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"

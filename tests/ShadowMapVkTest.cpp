@@ -9,7 +9,7 @@
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
 #include "VkTestSupport.h"
-#include "bench/run/VulkanHarness.h"
+#include "bench/lib/harness/VulkanHarness.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
 

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/run/Statistics.h"
+#include "bench/lib/statistics/Statistics.h"
 #include "core/Error.h"
 
 using sb::Statistics;

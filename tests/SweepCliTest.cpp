@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 
 extern char** environ;
 

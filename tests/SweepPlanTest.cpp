@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/bottleneck/BottleneckStudy.h"
-#include "bench/output/ProgressBar.h"
-#include "bench/sweep/SweepDefinition.h"
-#include "bench/sweep/SweepJob.h"
+#include "bench/lib/bottleneck/BottleneckStudy.h"
+#include "bench/lib/output/ProgressBar.h"
+#include "bench/lib/sweep/SweepDefinition.h"
+#include "bench/lib/sweep/SweepJob.h"
 #include "core/Error.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/SceneLoader.h"

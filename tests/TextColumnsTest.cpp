@@ -3,7 +3,7 @@
 // gives the cells back, whatever their widths.
 #include <gtest/gtest.h>
 
-#include "bench/output/TextColumns.h"
+#include "bench/lib/output/TextColumns.h"
 
 using namespace sb;
 

@@ -1,4 +1,4 @@
-// The GPU-timer verdict (bench/run/TimerTrust.h) as a measurement: on Mesa llvmpipe timer queries do not
+// The GPU-timer verdict (bench/lib/harness/TimerTrust.h) as a measurement: on Mesa llvmpipe timer queries do not
 // measure the frame (vertex work runs inside the draw calls on the application thread, rasterisation in
 // LP_NUM_THREADS threads during glFinish), so every calibration must come out untrusted, also when the
 // machine is loaded; the rule itself is checked on hand-made evidence, where the right answer is known.
@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "bench/run/Environment.h"
-#include "bench/run/Harness.h"
-#include "bench/run/ResultRow.h"
-#include "bench/run/TimerTrust.h"
+#include "bench/lib/rows/Environment.h"
+#include "bench/lib/harness/Harness.h"
+#include "bench/lib/rows/ResultRow.h"
+#include "bench/lib/harness/TimerTrust.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/backends/BackendRegistry.h"
@@ -31,7 +31,7 @@ namespace {
 // ---------------------------------------------------------------------------------------------------
 // The rule on hand-made evidence (no context needed). Each round is {wall small, wall large, timer small,
 // timer large} in ms for kPixelRatio = 4x the pixels; the expected verdict follows from the bands in
-// bench/run/TimerTrust.h by hand.
+// bench/lib/harness/TimerTrust.h by hand.
 
 /// A driver whose timer measures the draw: it grows 3.98x for 4x the pixels (wall: 3.83x, the fixed
 /// glFinish round trip weighs more on the small draw) and covers 99% of the large draw's wall time.

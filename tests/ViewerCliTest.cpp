@@ -3,12 +3,12 @@
 // (tests/ViewerCliTest.cpp parses the XWD format itself: no image tool is needed), and keys sent as a
 // user's taps. Checked against answers the viewer does not compute:
 //   - the overlay's text, pixel by pixel, against the glyphs of the bitmap font table
-//     (bench/viewer/OverlayFont.h) at the position the overlay's header documents (bench/viewer/Overlay.h);
+//     (bench/lib/viewer/OverlayFont.h) at the position the overlay's header documents (bench/lib/viewer/Overlay.h);
 //   - the light count against the scene file (scenes/data/sphere_plane.json), the timer line against
 //     what --no-timer-check means (verdict "unchecked");
 //   - one Tab tap, sent once and released at once (a tap between two frames, which polling lost),
 //     switches exactly once: the log line and the overlay's name both change;
-//   - V turns the window into the documented false-colour ramp (bench/viewer/VisibilityView.h): every
+//   - V turns the window into the documented false-colour ramp (bench/lib/viewer/VisibilityView.h): every
 //     pixel below the overlay lies on the ramp, with both lit and shadowed pixels present.
 #include <array>
 #include <chrono>
@@ -29,9 +29,9 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "bench/viewer/Overlay.h"
-#include "bench/viewer/OverlayFont.h"
-#include "bench/viewer/RollingMedian.h"
+#include "bench/lib/viewer/Overlay.h"
+#include "bench/lib/viewer/OverlayFont.h"
+#include "bench/lib/viewer/RollingMedian.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;
@@ -185,7 +185,7 @@ std::optional<Image> screenshot(const std::string& window, const std::string& pa
     return readXwd(path, error);
 }
 
-// Tolerances of the overlay's pixels (bench/viewer/Overlay.h). Ink is opaque white drawn without
+// Tolerances of the overlay's pixels (bench/lib/viewer/Overlay.h). Ink is opaque white drawn without
 // blending: exact 255 on an 8-bit-per-channel window; 5 below is left for a server that stores fewer
 // bits. Blank pixels inside the box are the image under black at kBoxOpacity: at most
 // 255 * (1 - 0.6) = 102, plus 8 for rounding and the same fewer-bits allowance.
@@ -224,7 +224,7 @@ std::string checkOverlayLine(const Image& img, int row, const std::string& text)
                           : "overlay line " + std::to_string(row) + " is not \"" + text + "\":\n" + errors;
 }
 
-/// The false-colour ramp as bench/viewer/VisibilityView.h documents it, in 0..255: dark blue at 0 through
+/// The false-colour ramp as bench/lib/viewer/VisibilityView.h documents it, in 0..255: dark blue at 0 through
 /// purple and orange to pale yellow at 1, linear between the four stops.
 const std::array<std::array<double, 3>, 4> kRampStops = {{{0.05 * 255, 0.03 * 255, 0.30 * 255},
                                                           {0.55 * 255, 0.10 * 255, 0.55 * 255},
@@ -310,7 +310,7 @@ TEST(ViewerCliTest, OverlayShowsTheTechniqueAndATapSwitchesIt) {
     ASSERT_TRUE(first) << error;
     ASSERT_EQ(first->width, kWidth);
     ASSERT_EQ(first->height, kHeight);
-    // Lines 0, 1, 3, 4, 5 in bench/viewer/Viewer.cpp's order: name, properties, times (line 2, which
+    // Lines 0, 1, 3, 4, 5 in bench/lib/viewer/Viewer.cpp's order: name, properties, times (line 2, which
     // vary and are not checked), timer, lights, view. "none" has no properties, so nothing wraps.
     EXPECT_EQ(checkOverlayLine(*first, 0, "none"), "");
     EXPECT_EQ(checkOverlayLine(*first, 1, "properties: none"), "");

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/output/CsvWriter.h"
+#include "bench/lib/output/CsvWriter.h"
 
 using namespace sb;
 using test::runCommand;

@@ -11,12 +11,12 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/ci/Interleave.h"
-#include "bench/ci/MultipleTesting.h"
-#include "bench/ci/Normal.h"
-#include "bench/ci/RankTests.h"
-#include "bench/ci/WallTimeStats.h"
-#include "bench/ci/WallTimeVerdict.h"
+#include "bench/lib/gate/Interleave.h"
+#include "bench/lib/statistics/MultipleTesting.h"
+#include "bench/lib/statistics/Normal.h"
+#include "bench/lib/statistics/RankTests.h"
+#include "bench/lib/statistics/WallTimeStats.h"
+#include "bench/lib/gate/WallTimeVerdict.h"
 #include "core/Error.h"
 #include "core/SplitMix64.h"
 

@@ -1,11 +1,11 @@
-// The exact work per pass (bench/run/WorkCensus.h), layer A of the perf gate. Independent answers: the
+// The exact work per pass (bench/lib/harness/WorkCensus.h), layer A of the perf gate. Independent answers: the
 // passes must sum to one pipeline-statistics query wrapped around the whole frame (the census frame as
 // it was measured before passes were split), every pass's primitives are known from the scene (each
 // pass of `volume` and `shadowmap` draws a known set), and the counts repeat exactly.
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "gl/PipelineStatistics.h"
 #include "registry/TechniqueRegistry.h"
 

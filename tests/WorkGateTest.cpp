@@ -1,8 +1,8 @@
-// Layer A of the perf gate (bench/ci/WorkGate.h) on tables written by hand: which counts it compares,
+// Layer A of the perf gate (bench/lib/gate/WorkGate.h) on tables written by hand: which counts it compares,
 // what it calls an increase, and what it refuses to compare. Every expected number is in the table.
 #include <gtest/gtest.h>
 
-#include "bench/ci/WorkGate.h"
+#include "bench/lib/gate/WorkGate.h"
 
 using namespace sb;
 

@@ -118,7 +118,7 @@ def sanitized(name):
 
 def row_images(header, rows, images, csv_dir):
     """Per row, the images of the CSV's folder named after its technique: `bench --screenshot shot.png`
-    with several techniques writes shot_<technique>.png (bench/RunCommand.cpp); with one, shot.png."""
+    with several techniques writes shot_<technique>.png (bench/run/RunCommand.cpp); with one, shot.png."""
     here = [i for i in images if os.path.dirname(i) == csv_dir]
     col = {name: k for k, name in enumerate(header)}
     found = []

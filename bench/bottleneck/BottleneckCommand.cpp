@@ -3,12 +3,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "bench/bottleneck/BottleneckStudy.h"
-#include "bench/output/RowExport.h"
-#include "bench/run/CliParse.h"
-#include "bench/sweep/SweepOptions.h"
-#include "bench/sweep/SweepReport.h"
-#include "bench/sweep/SweepRunner.h"
+#include "bench/lib/bottleneck/BottleneckStudy.h"
+#include "bench/lib/output/RowExport.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/sweep/SweepOptions.h"
+#include "bench/lib/sweep/SweepReport.h"
+#include "bench/lib/sweep/SweepRunner.h"
 
 namespace sb {
 

@@ -6,17 +6,17 @@
 #include <iostream>
 #include <optional>
 
-#include "bench/ci/CiSuite.h"
-#include "bench/ci/GateReport.h"
-#include "bench/ci/InstructionLayer.h"
-#include "bench/ci/SuiteRunner.h"
-#include "bench/ci/WallLayer.h"
-#include "bench/ci/WorkGate.h"
-#include "bench/output/AtomicFile.h"
-#include "bench/output/CsvWriter.h"
-#include "bench/output/DashboardExport.h"
-#include "bench/run/CliParse.h"
-#include "bench/sweep/ChildProcess.h"
+#include "bench/lib/gate/CiSuite.h"
+#include "bench/lib/gate/GateReport.h"
+#include "bench/lib/gate/InstructionLayer.h"
+#include "bench/lib/gate/SuiteRunner.h"
+#include "bench/lib/gate/WallLayer.h"
+#include "bench/lib/gate/WorkGate.h"
+#include "bench/lib/output/AtomicFile.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/DashboardExport.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/sweep/ChildProcess.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Paths.h"
@@ -316,7 +316,7 @@ int CiCommand::main(int argc, char** argv) {
     CsvWriter::writeText((fs::path(o.outDir) / "report.md").string(), md);
     CsvWriter::writeText((fs::path(o.outDir) / "report.json").string(), report.json().dump(2) + "\n");
     if (!dashboardRows.rows.empty()) {
-        // The gate's numbers in the formats dashboards chart (bench/output/DashboardExport.h).
+        // The gate's numbers in the formats dashboards chart (bench/lib/output/DashboardExport.h).
         CsvWriter::writeText((fs::path(o.outDir) / "gbench.json").string(),
                              DashboardExport::googleBenchmark(dashboardRows));
         CsvWriter::writeText((fs::path(o.outDir) / "gh-benchmark.json").string(),

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "bench/bottleneck/BottleneckStudy.h"
+#include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Paths.h"

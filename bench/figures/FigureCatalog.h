@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/sweep/SweepDefinition.h"
+#include "bench/lib/sweep/SweepDefinition.h"
 
 namespace sb {
 

@@ -5,14 +5,14 @@
 #include <fstream>
 #include <iostream>
 
-#include "bench/bottleneck/BottleneckStudy.h"
+#include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "bench/figures/FigureCatalog.h"
-#include "bench/output/RowExport.h"
-#include "bench/run/CliParse.h"
-#include "bench/sweep/ChildProcess.h"
-#include "bench/sweep/SweepDefinition.h"
-#include "bench/sweep/SweepReport.h"
-#include "bench/sweep/SweepRunner.h"
+#include "bench/lib/output/RowExport.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/sweep/ChildProcess.h"
+#include "bench/lib/sweep/SweepDefinition.h"
+#include "bench/lib/sweep/SweepReport.h"
+#include "bench/lib/sweep/SweepRunner.h"
 #include "core/Paths.h"
 
 namespace sb {

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "bench/images/AccuracyImages.h"
-#include "bench/images/DifferenceMap.h"
-#include "bench/images/ErrorMap.h"
-#include "bench/output/ImageWriter.h"
+#include "bench/lib/images/AccuracyImages.h"
+#include "bench/lib/images/DifferenceMap.h"
+#include "bench/lib/images/ErrorMap.h"
+#include "bench/lib/output/ImageWriter.h"
 
 namespace sb {
 

@@ -4,7 +4,7 @@
 // reference's place. <cell> is the cell's name (technique/scene/mode, "/vulkan" for the Vulkan axis)
 // with '/' made '.'.
 //   visibility, for every light channel with a difference:
-//     DIR/<cell>.visibility.light<i>.error.png   ErrorMap (bench/images/ErrorMap.h): samples whose
+//     DIR/<cell>.visibility.light<i>.error.png   ErrorMap (bench/lib/images/ErrorMap.h): samples whose
 //                                                shadowed/lit call (value < 128 of 255) flipped, the
 //                                                edge band being the golden's; every pixel is judged;
 //     DIR/<cell>.visibility.light<i>.signed.png  DifferenceMap of rendered − golden, at

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "bench/output/ImageWriter.h"
+#include "bench/lib/output/ImageWriter.h"
 #include "core/Error.h"
 #include "core/PngFile.h"
 

@@ -7,10 +7,10 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
-#include "bench/run/VulkanHarness.h"
-#include "bench/select/AutoResolver.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/VulkanHarness.h"
+#include "bench/lib/select/AutoResolver.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "scenes/SceneLoader.h"

@@ -7,8 +7,8 @@
 
 #include <unistd.h>
 
-#include "bench/run/CliParse.h"
-#include "bench/sweep/ChildProcess.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/sweep/ChildProcess.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 

@@ -1,6 +1,6 @@
 #include "bench/run/ConsoleReport.h"
 
-#include "bench/output/TextColumns.h"
+#include "bench/lib/output/TextColumns.h"
 #include "core/Strings.h"
 
 #include <ostream>

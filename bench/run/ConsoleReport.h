@@ -6,15 +6,15 @@
 #include <iosfwd>
 #include <vector>
 
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/MeasuredHarness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/MeasuredHarness.h"
 
 namespace sb {
 
 class ConsoleReport {
 public:
     static void printHeader(std::ostream& os, const MeasuredHarness& harness);
-    /// Either API's run (bench/run/RowSource.h).
+    /// Either API's run (bench/lib/harness/RowSource.h).
     static void printHeader(std::ostream& os, const RowSource& run);
     static void printTimerVerdict(std::ostream& os, const TimerVerdict& verdict);
     /// The table, one row per measurement. `results` holds `rounds` rounds of the same techniques in

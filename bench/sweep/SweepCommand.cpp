@@ -4,14 +4,14 @@
 #include <cstdio>
 #include <iostream>
 
-#include "bench/output/CsvWriter.h"
-#include "bench/output/RowExport.h"
-#include "bench/output/StandardStreams.h"
-#include "bench/run/CliParse.h"
-#include "bench/sweep/SweepDefinition.h"
-#include "bench/sweep/SweepOptions.h"
-#include "bench/sweep/SweepReport.h"
-#include "bench/sweep/SweepRunner.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/RowExport.h"
+#include "bench/lib/output/StandardStreams.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/sweep/SweepDefinition.h"
+#include "bench/lib/sweep/SweepOptions.h"
+#include "bench/lib/sweep/SweepReport.h"
+#include "bench/lib/sweep/SweepRunner.h"
 
 namespace sb {
 

@@ -3,7 +3,7 @@
 // harness of the same configuration (its G-buffer places the reference's samples; same size and camera,
 // so the same pixels). The same bounds hold for error, error off the edge band, false shadow, negative
 // controls and numeric sanity. The stability bounds (camera and light gains, flicker) are GL's alone:
-// their perturbed frames are rendered by the GL harness (bench/run/AccuracyEvaluator.h), so on Vulkan
+// their perturbed frames are rendered by the GL harness (bench/lib/measure/AccuracyEvaluator.h), so on Vulkan
 // they would measure GL again.
 #include <iostream>
 #include <string>
@@ -14,9 +14,9 @@
 #include "HardCases.h"
 #include "TestSupport.h"
 #include "VkTestSupport.h"
-#include "bench/run/AccuracyEvaluator.h"
-#include "bench/run/Harness.h"
-#include "bench/run/VulkanHarness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/VulkanHarness.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;

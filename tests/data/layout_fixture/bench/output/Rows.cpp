@@ -1,2 +1,2 @@
 #include "core/Base.h"
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"

@@ -1,3 +1,3 @@
-#include "bench/run/Harness.h"
+#include "bench/lib/harness/Harness.h"
 #include "bench/output/Rows.h"
 #include "bench/figures/Fig.h"

@@ -1,0 +1,135 @@
+#include "bench/compare/CompareCommand.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include "bench/lib/gate/GateReport.h"
+#include "bench/lib/statistics/MultipleTesting.h"
+#include "bench/lib/statistics/RankTests.h"
+#include "bench/lib/statistics/WallTimeStats.h"
+#include "bench/lib/gate/WorkGate.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/statistics/Statistics.h"
+
+namespace sb {
+
+namespace {
+
+constexpr const char* kFooter = R"(Examples:
+  bench compare base.csv new.csv                        exact work per pass, and time where rounds repeat
+  bench compare ci-out-old/work.csv ci-out/work.csv --json cmp.json
+  bench -t shadowmap --repeat 9 --csv a.csv; ...; bench compare a.csv b.csv
+
+Layer A compares the census columns (work_*, load_*, counter_*) exactly: any increase fails. Layer C
+needs >= 2 rows of a configuration in both files; its rounds were measured apart, so it is a
+Mann-Whitney U test on the wall medians (unpaired), failing only beyond --floor at p < alpha split
+over the configurations. Instructions (layer B) and an interleaved A/A control need bench ci.)";
+
+/// Wall medians of the ok rows, per configuration key.
+std::map<std::string, std::vector<double>> roundsOf(const CsvTable& t) {
+    std::map<std::string, std::vector<double>> out;
+    const bool named = t.hasColumn("ci_config");
+    for (const auto& row : t.rows) {
+        if (t.cell(row, "status") != "ok") continue;
+        const double v = std::strtod(t.cell(row, "wall_ms_median").c_str(), nullptr);
+        if (v > 0 && std::isfinite(v))
+            out[named ? t.cell(row, "ci_config") : WorkGate::configKey(t, row)].push_back(v);
+    }
+    return out;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return Statistics::percentileSorted(v, 0.5);
+}
+
+GateLayer compareWall(const CsvTable& base, const CsvTable& head, double familyAlpha, double floor) {
+    GateLayer layer{"C: wall time (unpaired rounds)", true, false, "PASS", {}};
+    const auto b = roundsOf(base), h = roundsOf(head);
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : b)
+        if (v.size() >= 2 && h.count(k) && h.at(k).size() >= 2) keys.push_back(k);
+    if (keys.empty()) {
+        layer.ran = false;
+        layer.details.push_back("no configuration has >= 2 rounds in both files (measure with --repeat K)");
+        return layer;
+    }
+    const double alpha = ci::bonferroniAlpha(familyAlpha, keys.size());
+    bool inconclusive = false;
+    for (const std::string& k : keys) {
+        const ci::RankTest u = ci::mannWhitneyU(b.at(k), h.at(k));
+        const double ratio = median(h.at(k)) / median(b.at(k));
+        const bool fail = ratio > 1.0 + floor && u.p < alpha;
+        const bool seen = u.p < alpha;
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "%s: median ratio %.3f over %zu and %zu rounds, Mann-Whitney p=%.3g (alpha %.3g): %s",
+                      k.c_str(), ratio, b.at(k).size(), h.at(k).size(), u.p, alpha,
+                      fail   ? "FAIL"
+                      : seen ? "PASS (significant, within the floor)"
+                             : "INCONCLUSIVE");
+        layer.details.push_back(text);
+        if (fail) layer.verdict = "FAIL";
+        inconclusive |= !seen;
+    }
+    if (layer.verdict != "FAIL" && inconclusive) layer.verdict = "INCONCLUSIVE";
+    layer.details.push_back(
+        "rounds measured apart are not interleaved and have no A/A control: a drift of the "
+        "machine between the files reads as a change; bench ci measures side by side");
+    return layer;
+}
+
+} // namespace
+
+int CompareCommand::main(int argc, char** argv) {
+    CLI::App app{"bench compare: the perf gate on two result files", "bench compare"};
+    app.footer(kFooter);
+    std::string basePath, headPath, jsonPath;
+    double alpha = 0.05, floor = 0.05; // as bench ci (WallLayer.h)
+    app.add_option("base", basePath, "the base's rows (CSV)")->required();
+    app.add_option("new", headPath, "the new rows (CSV)")->required();
+    app.add_option("--json", jsonPath, "also write the report as JSON here");
+    app.add_option("--alpha", alpha, "layer C family-wise false-alarm rate")
+        ->check(CLI::Range(1e-9, 0.5))
+        ->capture_default_str();
+    app.add_option("--floor", floor, "layer C: the smallest slowdown that may fail (fraction)")
+        ->check(CLI::Range(0.0, 10.0))
+        ->capture_default_str();
+    if (int code = parseCli(app, argc, argv, "bench compare"); code >= 0) return code;
+    for (const std::string& p : {basePath, headPath})
+        if (!std::filesystem::exists(p)) throw Error("bench compare: " + p + ": no such file");
+    const CsvTable base = CsvWriter::read(basePath), head = CsvWriter::read(headPath);
+    if (!jsonPath.empty()) CsvWriter::checkWritable(jsonPath);
+
+    GateReport report;
+    report.title = "shadowbench compare";
+    report.about = {"base: " + basePath + " (" + std::to_string(base.rows.size()) + " rows)",
+                    "new: " + headPath + " (" + std::to_string(head.rows.size()) + " rows)"};
+    report.reproduce = "bench compare " + basePath + " " + headPath;
+    const WorkComparison w = WorkGate::compare(base, head);
+    GateLayer a{"A: exact work", true, false, w.pass() ? "PASS" : "FAIL", {}};
+    if (w.configs == 0 && w.notComparable.empty()) {
+        a.verdict = "NO VERDICT";
+        a.details.push_back("no configuration is in both files");
+    }
+    for (const WorkChange& c : w.increases) a.details.push_back("increase: " + c.describe());
+    for (const WorkChange& c : w.decreases) a.details.push_back("decrease: " + c.describe());
+    for (const std::string& c : w.onlyInBase) a.details.push_back(c + ": in the base only");
+    for (const std::string& c : w.onlyInHead) a.details.push_back(c + ": in the new file only");
+    for (const std::string& c : w.notComparable) a.details.push_back("not comparable: " + c);
+    a.details.push_back(std::to_string(w.metrics) + " counts of " + std::to_string(w.configs) +
+                        " configurations compared exactly");
+    report.layers.push_back(a);
+    report.layers.push_back({"B: instructions per frame", false, false, "", {"needs bench ci (valgrind)"}});
+    report.layers.push_back(compareWall(base, head, alpha, floor));
+    std::cout << report.markdown();
+    if (!jsonPath.empty()) CsvWriter::writeText(jsonPath, report.json().dump(2) + "\n");
+    return report.failed() ? int(ExitCode::Failure) : 0;
+}
+
+} // namespace sb

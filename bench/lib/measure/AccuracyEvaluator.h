@@ -1,0 +1,128 @@
+#pragma once
+// `bench accuracy`: judges a technique's visibility target against the exact reference at
+// the same sample positions, and measures how stable it is.
+//
+// For light `light` of the scene:
+//  1. render one frame of the technique, read back its visibility target (numeric sanity over every
+//     channel);
+//  2. render the G-buffer with the same camera and submitter, trace the reference there (hard for
+//     point-shaped lights, stratified soft for area lights);
+//  3. evaluation mask: covered samples whose geometric normal faces the light, n.L > 0.05;
+//  4. metrics (reference/AccuracyMetrics.h): false-shadow/false-light rates, with and without the
+//     1-px band around reference edges; RMSE, mean and max error;
+//  5. stability: perturbation gain for a 0.25 px camera shift and for a 0.01 degree light turn
+//     (technique changes / max(1, reference changes)), and flicker over a short camera drift (the
+//     same ratio summed over kDriftSteps steps of 0.5 px).
+// A scene in motion (scenes/Motion.h) is judged along its path instead of perturbed: at kPathSamples
+// points spread over the path, the frame there (the metrics above are the first point's, at t = 0)
+// and the frame after it; the worst and mean error over the points, and the temporal flicker: the
+// samples whose lit/shadowed state changes from a frame to the next in the technique but not in the
+// reference (whose changes are the motion's own), over the reference's changes, summed over the
+// point pairs. Every
+// judged frame is traced against the scene as that frame drew it.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/harness/Harness.h"
+#include "reference/AccuracyMetrics.h"
+#include "reference/EmbreeScene.h"
+#include "reference/GBufferRenderer.h"
+#include "reference/ReferenceTracer.h"
+
+namespace sb {
+
+struct AccuracyOptions {
+    int light = 0;
+    int referenceSamples = 64; ///< per pixel for area lights
+    bool stability = true;     ///< perturbation gain and flicker (costs kDriftSteps + 2 extra frames)
+    float cameraShiftPx = 0.25f;
+    float lightTurnDeg = 0.01f;
+    float nDotLThreshold = 0.05f;
+};
+
+struct AccuracyResult {
+    int light = 0;
+    bool softReference = false;
+    HardMetrics hard;
+    SoftMetrics soft;
+    NumericSanity sanity;
+    uint64_t cameraChangesTechnique = 0, cameraChangesReference = 0;
+    uint64_t lightChangesTechnique = 0, lightChangesReference = 0;
+    double cameraGain = 0.0, lightGain = 0.0, flicker = 0.0;
+    bool stabilityMeasured = false;
+    /// A scene in motion: judged along the path (see above).
+    struct Path {
+        int points = 0;
+        double wrongMeanPct = 0.0, wrongMaxPct = 0.0;
+        uint64_t changesTechnique = 0, changesReference = 0;
+        /// Samples that change in the technique where the reference does not: flicker the motion
+        /// does not explain.
+        uint64_t falseChanges = 0;
+        double flicker = 0.0; ///< falseChanges / max(1, changesReference)
+    };
+    std::optional<Path> path;
+    TraceStats reference;
+    /// The columns of this result (appended to the timing row of the same configuration).
+    void appendColumns(CsvRow& row) const;
+};
+
+class AccuracyEvaluator {
+public:
+    static constexpr int kDriftSteps = 6;
+    static constexpr int kPathSamples = 4;
+    explicit AccuracyEvaluator(Harness& harness);
+    ~AccuracyEvaluator();
+    /// The technique must have been prepared on this harness (Harness::measure does it). Restores the
+    /// harness's camera shift and lights afterwards.
+    AccuracyResult evaluate(GlTechnique& technique, const AccuracyOptions& options);
+    /// The same judgement of one frame's visibility rendered by another API for this harness's
+    /// configuration (bench accuracy --api vulkan): hard and soft metrics and the numeric sanity, no
+    /// stability (the perturbations would have to be rendered by that API too) and no path.
+    AccuracyResult evaluateVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options);
+    /// Whether `harness` is the one this evaluator renders with (evaluate() can re-render its frames).
+    bool rendersWith(const MeasuredHarness& harness) const { return &harness == &mHarness; }
+
+    /// One judged image: the technique's and the reference's visibility of the light, and the mask.
+    struct Sample {
+        std::vector<float> technique, reference;
+        std::vector<uint8_t> mask;
+        std::vector<float> techniqueRgba; ///< the whole read-back, for the numeric sanity check
+    };
+    Sample judgeFrame(GlTechnique& technique, const AccuracyOptions& options, TraceStats* stats);
+    /// The same judgement of a visibility read-back rendered elsewhere (RGBA per pixel, rows bottom-up,
+    /// the harness's size and camera): another API's frame of the same configuration (bench accuracy
+    /// --api vulkan, the matrix's Vulkan cells) against this harness's G-buffer and reference.
+    Sample judgeVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options,
+                           TraceStats* stats);
+    /// The frame the last evaluate() or evaluateVisibility() scored (its hard, soft and sanity metrics
+    /// are this frame's: a moving scene's first path point), without the RGBA read-back; null before
+    /// the first. `bench accuracy --images` draws it (bench/lib/images/AccuracyImages.h).
+    const Sample* lastJudged() const { return mLastJudged ? &*mLastJudged : nullptr; }
+
+private:
+    /// The result's light fields; throws for a light the scene does not have.
+    AccuracyResult start(const AccuracyOptions& options) const;
+    /// Hard, soft and sanity metrics of `base` into `result`; throws when no pixel can be judged.
+    void score(const Sample& base, const AccuracyOptions& options, AccuracyResult& result) const;
+    uint64_t techniqueChanges(const Sample& a, const Sample& b) const;
+    void measureStability(GlTechnique& technique, const AccuracyOptions& options, const Sample& base,
+                          AccuracyResult& result);
+    /// A scene in motion: the metrics along the path (AccuracyResult::Path); the harness is left at
+    /// the path's start.
+    void measurePath(GlTechnique& technique, const AccuracyOptions& options, AccuracyResult& result);
+    /// The Embree scene rebuilt where the harness's casters stand now (a scene in motion).
+    void followCasters();
+    /// Keeps `sample` (without its RGBA read-back) as lastJudged().
+    void keepJudged(const Sample& sample);
+    Harness& mHarness;
+    std::optional<Sample> mLastJudged;
+    float mEmbreeTime = 0.0f; ///< the path time whose casters the Embree scene holds
+    std::unique_ptr<EmbreeScene> mEmbree;
+    std::unique_ptr<ReferenceTracer> mTracer;
+    std::unique_ptr<GBufferRenderer> mGBuffer;
+};
+
+} // namespace sb

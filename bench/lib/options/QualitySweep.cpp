@@ -1,0 +1,23 @@
+#include "bench/lib/options/QualitySweep.h"
+
+#include <set>
+
+#include "registry/TechniqueRegistry.h"
+
+namespace sb {
+
+std::vector<TechniqueSpec> QualitySweep::expand(const TechniqueSpec& spec) {
+    auto base = TechniqueRegistry::create(spec); // validates the spec's own properties
+    std::vector<TechniqueSpec> out{spec};
+    std::set<std::string> seen{base->properties().toString()};
+    for (const QualityKnob& knob : base->info().quality)
+        for (const std::string& value : knob.values) {
+            TechniqueSpec variant = spec;
+            variant.properties.emplace_back(knob.property, value); // later entries win
+            auto t = TechniqueRegistry::create(variant);
+            if (seen.insert(t->properties().toString()).second) out.push_back(variant);
+        }
+    return out;
+}
+
+} // namespace sb

@@ -1,0 +1,335 @@
+#include "bench/lib/output/CsvMerge.h"
+
+#include <algorithm>
+#include <charconv>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <system_error>
+
+#include "bench/lib/output/CsvWriter.h"
+#include "core/Error.h"
+
+namespace sb {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kSweepId = "sweep_id";
+constexpr const char* kSweepConfigs = "sweep_configs";
+constexpr const char* kConfigIndex = "config_index";
+constexpr const char* kShard = "shard";
+constexpr const char* kStatus = "status";
+constexpr const char* kStatusOk = "ok";
+constexpr const char* kTimerVerdict = "timer_verdict";
+constexpr size_t kMaxListedMissing = 10;
+
+// Every refusal is about what the user handed in; the message is the one line printed before exit 2.
+[[noreturn]] void fail(const std::string& message) {
+    throw Error(message, ExitCode::BadInput);
+}
+
+std::string inQuotes(const std::string& s) {
+    return "'" + s + "'";
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Inputs
+
+struct SweepColumns {
+    size_t id, configs, index, shard;
+};
+
+struct Input {
+    std::string path;
+    CsvTable table;
+    SweepColumns columns{};
+    std::vector<size_t> lines; ///< the line each row starts on, for messages
+};
+
+size_t countNewlines(const std::vector<std::string>& cells) {
+    size_t n = 0;
+    for (const std::string& cell : cells) n += size_t(std::count(cell.begin(), cell.end(), '\n'));
+    return n;
+}
+
+// CsvTable forgets where rows were, but CsvWriter writes one line per record plus one per newline
+// inside a quoted cell, so the lines can be recounted. (A hand-edited file with blank lines would
+// shift them; the row is still easy to find from its cells.)
+std::vector<size_t> rowLines(const CsvTable& table) {
+    std::vector<size_t> lines;
+    size_t line = 2 + countNewlines(table.header);
+    for (const auto& row : table.rows) {
+        lines.push_back(line);
+        line += 1 + countNewlines(row);
+    }
+    return lines;
+}
+
+size_t requireColumn(const Input& in, const char* column) {
+    auto it = std::find(in.table.header.begin(), in.table.header.end(), column);
+    if (it == in.table.header.end())
+        fail(inQuotes(in.path) + " is not a sweep CSV: column " + inQuotes(column) + " missing");
+    return size_t(it - in.table.header.begin());
+}
+
+Input readInput(const std::string& path) {
+    Input in{path, CsvWriter::read(path), {}, {}};
+    in.columns = {requireColumn(in, kSweepId), requireColumn(in, kSweepConfigs),
+                  requireColumn(in, kConfigIndex), requireColumn(in, kShard)};
+    in.lines = rowLines(in.table);
+    return in;
+}
+
+// Comparing canonical paths catches "out.csv" vs "./results/../out.csv" and symlinks to the output;
+// weakly_canonical also works for an output that does not exist yet.
+fs::path canonical(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(path, ec);
+    return ec ? fs::absolute(path).lexically_normal() : p;
+}
+
+void checkPaths(const std::vector<std::string>& inputs, const std::string& output,
+                const MergeOptions& options) {
+    if (inputs.empty()) fail("merge: no input files given");
+    fs::path out = canonical(output);
+    std::map<fs::path, std::string> seen;
+    for (const std::string& input : inputs) {
+        fs::path in = canonical(input);
+        if (in == out) fail("input " + inQuotes(input) + " is also the output file " + inQuotes(output));
+        auto [it, inserted] = seen.emplace(in, input);
+        if (!inserted)
+            fail("input " + inQuotes(input) + " is given twice (also as " + inQuotes(it->second) + ")");
+    }
+    std::error_code ec;
+    if (!options.force && fs::symlink_status(output, ec).type() != fs::file_type::not_found)
+        fail("output " + inQuotes(output) + " exists; pass --force to replace it");
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Sweep cells
+
+// Plain digits only: "+3", " 3", "3.0" and "0x3" are not how the bench writes an index.
+std::optional<size_t> parseCount(const std::string& s) {
+    if (s.empty() || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return std::nullopt;
+    size_t v = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+struct ShardSpec {
+    size_t index, count;
+};
+
+std::optional<ShardSpec> parseShard(const std::string& s) {
+    size_t slash = s.find('/');
+    if (slash == std::string::npos) return std::nullopt;
+    std::optional<size_t> i = parseCount(s.substr(0, slash));
+    std::optional<size_t> n = parseCount(s.substr(slash + 1));
+    if (!i || !n || *i < 1 || *i > *n) return std::nullopt;
+    return ShardSpec{*i, *n};
+}
+
+/// A sweep-wide value and where it was first seen, so a conflict can name both places.
+struct FirstSeen {
+    std::string value, where;
+};
+
+// Walks all rows once, checking each against what earlier rows (of any file) established.
+class SweepCheck {
+public:
+    void add(const Input& in, size_t row) {
+        const std::vector<std::string>& cells = in.table.rows[row];
+        std::string where = in.path + ":" + std::to_string(in.lines[row]);
+        const std::string& id = cells[in.columns.id];
+        if (id.empty()) fail(where + ": empty " + kSweepId);
+        agree(mId, id, where, "rows of different sweeps mixed: sweep_id");
+        size_t configs = requireConfigs(cells[in.columns.configs], where);
+        size_t index = requireIndex(cells[in.columns.index], configs, where);
+        ShardSpec shard = requireShard(cells[in.columns.shard], where);
+        agree(mShardCount, std::to_string(shard.count), where,
+              "shards of different splits mixed: shard count");
+        auto [it, inserted] = mWhere.emplace(index, where);
+        if (!inserted)
+            fail("configuration " + std::to_string(index) + " appears twice: in " + inQuotes(it->second) +
+                 " and " + inQuotes(where) + "; keep one of the rows");
+    }
+
+    std::string sweepId() const { return mId ? mId->value : ""; }
+    size_t configs() const { return mConfigs ? *parseCount(mConfigs->value) : 0; }
+    const std::map<size_t, std::string>& seenIndices() const { return mWhere; }
+
+private:
+    static void agree(std::optional<FirstSeen>& first, const std::string& value, const std::string& where,
+                      const std::string& what) {
+        if (!first)
+            first = FirstSeen{value, where};
+        else if (first->value != value)
+            fail(what + " " + inQuotes(first->value) + " in " + inQuotes(first->where) + " but " +
+                 inQuotes(value) + " in " + inQuotes(where));
+    }
+
+    size_t requireConfigs(const std::string& cell, const std::string& where) {
+        std::optional<size_t> configs = parseCount(cell);
+        if (!configs || *configs < 1)
+            fail(where + ": " + kSweepConfigs + " " + inQuotes(cell) + " is not a positive integer");
+        // Compared as numbers: "048" and "48" are the same sweep.
+        agree(mConfigs, std::to_string(*configs), where, "rows of different sweeps mixed: sweep_configs");
+        return *configs;
+    }
+
+    static size_t requireIndex(const std::string& cell, size_t configs, const std::string& where) {
+        std::optional<size_t> index = parseCount(cell);
+        if (!index || *index >= configs)
+            fail(where + ": " + kConfigIndex + " " + inQuotes(cell) + " is not an integer in [0, " +
+                 std::to_string(configs) + ")");
+        return *index;
+    }
+
+    static ShardSpec requireShard(const std::string& cell, const std::string& where) {
+        std::optional<ShardSpec> shard = parseShard(cell);
+        if (!shard) fail(where + ": " + kShard + " " + inQuotes(cell) + " is not \"i/N\" with 1 <= i <= N");
+        return *shard;
+    }
+
+    std::optional<FirstSeen> mId, mConfigs, mShardCount;
+    std::map<size_t, std::string> mWhere; ///< config_index -> where its row is
+};
+
+std::vector<size_t> missingIndices(const SweepCheck& check) {
+    std::vector<size_t> missing;
+    for (size_t i = 0; i < check.configs(); ++i)
+        if (!check.seenIndices().count(i)) missing.push_back(i);
+    return missing;
+}
+
+std::string incompleteMessage(const std::vector<size_t>& missing, size_t configs) {
+    std::string list;
+    for (size_t i = 0; i < missing.size() && i < kMaxListedMissing; ++i)
+        list += (i ? ", " : "") + std::to_string(missing[i]);
+    if (missing.size() > kMaxListedMissing) list += ", ...";
+    return "incomplete: " + std::to_string(missing.size()) + " of " + std::to_string(configs) +
+           " configurations missing (indices " + list +
+           "); rerun the shards that wrote them, or pass --allow-incomplete";
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Output
+
+struct IndexedRow {
+    size_t configIndex;
+    std::vector<std::string> cells; ///< in the merged header's order
+};
+
+std::vector<std::string> unionHeader(const std::vector<Input>& inputs) {
+    std::vector<std::string> header;
+    for (const Input& in : inputs)
+        for (const std::string& column : in.table.header)
+            if (std::find(header.begin(), header.end(), column) == header.end()) header.push_back(column);
+    return header;
+}
+
+CsvTable mergedTable(const std::vector<Input>& inputs) {
+    CsvTable out{unionHeader(inputs), {}};
+    std::vector<IndexedRow> rows;
+    for (const Input& in : inputs) {
+        std::vector<size_t> target; // input column -> merged column
+        for (const std::string& column : in.table.header)
+            target.push_back(
+                size_t(std::find(out.header.begin(), out.header.end(), column) - out.header.begin()));
+        for (const auto& row : in.table.rows) {
+            IndexedRow merged{*parseCount(row[in.columns.index]),
+                              std::vector<std::string>(out.header.size())};
+            for (size_t c = 0; c < row.size(); ++c) merged.cells[target[c]] = row[c];
+            rows.push_back(std::move(merged));
+        }
+    }
+    std::sort(rows.begin(), rows.end(),
+              [](const IndexedRow& a, const IndexedRow& b) { return a.configIndex < b.configIndex; });
+    for (IndexedRow& row : rows) out.rows.push_back(std::move(row.cells));
+    return out;
+}
+
+size_t countFailedRows(const CsvTable& table) {
+    auto status = std::find(table.header.begin(), table.header.end(), kStatus);
+    size_t column = size_t(status - table.header.begin());
+    return size_t(std::count_if(table.rows.begin(), table.rows.end(), [&](const auto& row) {
+        return column == table.header.size() || row[column] != kStatusOk;
+    }));
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Timer verdicts
+
+/// Rows per non-empty timer_verdict, first-seen order, with where each value was first seen.
+struct VerdictTally {
+    std::vector<std::pair<std::string, size_t>> counts;
+    std::vector<std::string> firstWhere;
+};
+
+VerdictTally tallyVerdicts(const std::vector<Input>& inputs) {
+    VerdictTally tally;
+    for (const Input& in : inputs) {
+        auto column = std::find(in.table.header.begin(), in.table.header.end(), kTimerVerdict);
+        if (column == in.table.header.end()) continue;
+        const size_t c = size_t(column - in.table.header.begin());
+        for (size_t r = 0; r < in.table.rows.size(); ++r) {
+            const std::string& verdict = in.table.rows[r][c];
+            if (verdict.empty()) continue; // failed rows were never measured
+            auto it = std::find_if(tally.counts.begin(), tally.counts.end(),
+                                   [&](const auto& entry) { return entry.first == verdict; });
+            if (it != tally.counts.end()) {
+                ++it->second;
+                continue;
+            }
+            tally.counts.emplace_back(verdict, 1);
+            tally.firstWhere.push_back(in.path + ":" + std::to_string(in.lines[r]));
+        }
+    }
+    return tally;
+}
+
+void checkVerdicts(const VerdictTally& tally, const MergeOptions& options) {
+    if (tally.counts.size() < 2 || options.allowMixedTimer) return;
+    fail("rows measured under different GPU-timer verdicts: " + inQuotes(tally.counts[0].first) + " in " +
+         inQuotes(tally.firstWhere[0]) + " but " + inQuotes(tally.counts[1].first) + " in " +
+         inQuotes(tally.firstWhere[1]) +
+         "; rerun the shards on one kind of machine, or pass --allow-mixed-timer to merge them anyway");
+}
+
+} // namespace
+
+// Everything is read and checked before anything is written, so a refused merge leaves no trace.
+MergeReport CsvMerge::merge(const std::vector<std::string>& inputs, const std::string& output,
+                            const MergeOptions& options) {
+    checkPaths(inputs, output, options);
+    std::vector<Input> files;
+    SweepCheck check;
+    for (const std::string& path : inputs) {
+        files.push_back(readInput(path));
+        for (size_t r = 0; r < files.back().table.rows.size(); ++r) check.add(files.back(), r);
+    }
+    if (check.seenIndices().empty()) fail("merge: the inputs hold no rows");
+
+    MergeReport report;
+    report.files = files.size();
+    report.sweepId = check.sweepId();
+    report.configs = check.configs();
+    report.missing = missingIndices(check);
+    if (!report.missing.empty() && !options.allowIncomplete)
+        fail(incompleteMessage(report.missing, report.configs));
+    const VerdictTally verdicts = tallyVerdicts(files);
+    checkVerdicts(verdicts, options);
+    report.timerVerdicts = verdicts.counts;
+
+    CsvTable table = mergedTable(files);
+    report.rows = table.rows.size();
+    report.failedRows = countFailedRows(table);
+    CsvWriter::writeTable(output, table);
+    return report;
+}
+
+} // namespace sb

@@ -1,0 +1,224 @@
+#include "bench/lib/select/Calibration.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <unistd.h>
+
+#include "bench/lib/output/CsvNumber.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/rows/Environment.h"
+#include "core/Error.h"
+#include "registry/TechniqueRegistry.h"
+
+namespace sb {
+
+namespace {
+
+/// Not candidates: the judge itself, and workloads that are not shadow techniques.
+bool isCandidate(const std::string& name) {
+    return name != "reference" && name != "synthetic";
+}
+
+/// Misclassified samples (lit against shadowed, at 0.5) over the evaluated samples the reference
+/// shadows, in %: a technique that draws no shadow scores 100 whatever the image size, where a share of
+/// all samples would call it nearly right whenever the shadow is small.
+double misplacedShadowPct(const AccuracyEvaluator::Sample& s) {
+    uint64_t shadowed = 0, wrong = 0;
+    for (size_t i = 0; i < s.mask.size(); ++i) {
+        if (!s.mask[i]) continue;
+        const bool reference = s.reference[i] < 0.5f, technique = s.technique[i] < 0.5f;
+        shadowed += reference;
+        wrong += reference != technique;
+    }
+    return 100.0 * double(wrong) / double(std::max<uint64_t>(1, shadowed));
+}
+
+/// One candidate being measured: its technique, prepared on the harness, and what it measured.
+struct Trial {
+    size_t candidate = 0; ///< index into the candidates
+    std::unique_ptr<GlTechnique> technique;
+};
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+/// The worst light's misplaced share of the shadow.
+double judge(Harness& harness, GlTechnique& technique, AccuracyEvaluator& evaluator) {
+    AccuracyOptions accuracy;
+    accuracy.stability = false;
+    double worst = 0.0;
+    for (accuracy.light = 0; accuracy.light < int(harness.scene().lights.size()); ++accuracy.light) {
+        harness.seekPath(0); // a scene in motion is judged at the start of its path
+        worst = std::max(worst, misplacedShadowPct(evaluator.judgeFrame(technique, accuracy, nullptr)));
+    }
+    return worst;
+}
+
+/// Vertex plus fragment shader invocations of one census frame (-1 where the context cannot count).
+double exactWork(Harness& harness, GlTechnique& technique) {
+    const FrameLoads loads = harness.measureLoads(technique);
+    if (!loads.pipeline) return -1.0;
+    return double(loads.pipeline->vertexShaderInvocations + loads.pipeline->fragmentShaderInvocations);
+}
+
+/// Times the trials in interleaved rounds (one frame of each per round, after their warm-up), so load
+/// that comes and goes falls on every candidate alike, then takes each one's exact work and error.
+void measureInterleaved(Harness& harness, std::vector<Trial>& trials, std::vector<AutoCandidate>& out,
+                        const CalibrationOptions& options, const std::string& batch) {
+    for (Trial& t : trials)
+        for (int i = 0; i < options.warmup; ++i) harness.renderFrame(*t.technique);
+    for (int r = 0; r < std::max(1, options.frames); ++r)
+        for (Trial& t : trials) out[t.candidate].rounds.push_back(harness.renderFrame(*t.technique).wallMs);
+    std::unique_ptr<AccuracyEvaluator> evaluator;
+    for (Trial& t : trials) {
+        AutoCandidate& c = out[t.candidate];
+        c.measured = true;
+        c.costMs = median(c.rounds);
+        c.batch = batch;
+        c.work = exactWork(harness, *t.technique);
+        if (!evaluator) evaluator = std::make_unique<AccuracyEvaluator>(harness);
+        c.wrongPct = judge(harness, *t.technique, *evaluator);
+    }
+}
+
+std::string joinRounds(const std::vector<double>& rounds) {
+    std::string out;
+    for (double r : rounds) out += (out.empty() ? "" : ";") + csvNumber(r);
+    return out;
+}
+
+std::vector<double> parseRounds(const std::string& text) {
+    std::vector<double> out;
+    for (size_t start = 0; start < text.size();) {
+        const size_t end = std::min(text.find(';', start), text.size());
+        out.push_back(std::strtod(text.substr(start, end - start).c_str(), nullptr));
+        start = end + 1;
+    }
+    return out;
+}
+
+bool sameKey(const CsvTable& table, const std::vector<std::string>& row, const CsvRow& key) {
+    for (const auto& [column, value] : key)
+        if (table.cell(row, column) != value) return false;
+    return true;
+}
+
+/// The last cached row of `key`, if any.
+const std::vector<std::string>* cached(const CsvTable& table, const CsvRow& key) {
+    const std::vector<std::string>* found = nullptr;
+    for (const auto& row : table.rows)
+        if (sameKey(table, row, key)) found = &row;
+    return found;
+}
+
+AutoCandidate fromCache(const CsvTable& table, const std::vector<std::string>& row, AutoCandidate c) {
+    c.measured = table.cell(row, "status") == "ok";
+    c.refusal = table.cell(row, "refusal");
+    if (c.measured) {
+        c.costMs = std::strtod(table.cell(row, "wall_ms").c_str(), nullptr);
+        c.wrongPct = std::strtod(table.cell(row, "wrong_pct").c_str(), nullptr);
+        // Written by calibrations since the interleaved rounds; a hand-written or older row has none.
+        c.rounds = parseRounds(table.cell(row, "wall_rounds"));
+        c.batch = table.cell(row, "batch");
+        const std::string work = table.cell(row, "work");
+        c.work = work.empty() ? -1.0 : std::strtod(work.c_str(), nullptr);
+    }
+    return c;
+}
+
+CsvRow cacheRow(const CsvRow& key, const AutoCandidate& c) {
+    CsvRow row = key;
+    row.emplace_back("status", c.measured ? "ok" : "refused");
+    row.emplace_back("refusal", c.refusal);
+    row.emplace_back("wall_ms", c.measured ? csvNumber(c.costMs) : "");
+    row.emplace_back("wrong_pct", c.measured ? csvNumber(c.wrongPct) : "");
+    row.emplace_back("wall_rounds", c.measured ? joinRounds(c.rounds) : "");
+    row.emplace_back("batch", c.batch);
+    row.emplace_back("work", c.measured && c.work >= 0.0 ? csvNumber(c.work) : "");
+    row.emplace_back("measured_at", Environment::nowIso8601());
+    return row;
+}
+
+} // namespace
+
+std::string Calibration::defaultCachePath() {
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    std::filesystem::path dir = xdg && *xdg     ? std::filesystem::path(xdg) / "shadowbench"
+                                : home && *home ? std::filesystem::path(home) / ".cache" / "shadowbench"
+                                                : std::filesystem::path(".");
+    return (dir / "auto-calibration.csv").string();
+}
+
+CsvRow Calibration::keyColumns(const Harness& harness, const std::string& spec) {
+    const RunConfig& c = harness.config();
+    return {{"renderer", harness.context().renderer},
+            {"gl_version", harness.context().version},
+            {"scene", harness.scene().name},
+            {"scene_hash", harness.contentHash()},
+            {"width", std::to_string(c.width)},
+            {"height", std::to_string(c.height)},
+            {"camera", c.camera},
+            {"submit", submitModeName(c.submit)},
+            {"candidate", spec}};
+}
+
+std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const CalibrationOptions& options,
+                                                   std::ostream& log) {
+    const std::string path = options.cachePath.empty() ? defaultCachePath() : options.cachePath;
+    CsvTable table;
+    if (std::filesystem::exists(path)) table = CsvWriter::read(path);
+    std::vector<AutoCandidate> out;
+    std::vector<CsvRow> keys;  ///< per candidate
+    std::vector<bool> measure; ///< per candidate: not (usefully) in the cache
+    std::vector<Trial> trials;
+    size_t fromFile = 0;
+    for (const std::string& name : TechniqueRegistry::names()) {
+        if (!isCandidate(name)) continue;
+        std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(name);
+        AutoCandidate c;
+        // A technique without properties (none) is its bare name: "none:" does not parse back.
+        const std::string properties = technique->properties().toString();
+        c.spec = properties.empty() ? name : name + ":" + properties;
+        c.effects = technique->info().effects;
+        keys.push_back(keyColumns(harness, c.spec));
+        if (const auto* row = options.refresh ? nullptr : cached(table, keys.back())) {
+            out.push_back(fromCache(table, *row, c));
+            measure.push_back(false);
+            ++fromFile;
+            continue;
+        }
+        measure.push_back(true);
+        try {
+            harness.seekPath(0);
+            harness.prepare(*technique);
+            trials.push_back({out.size(), std::move(technique)});
+        } catch (const Error& e) {
+            if (e.code() == ExitCode::Failure) throw; // a broken run is not a refusal
+            c.refusal = e.what();
+        }
+        out.push_back(c);
+    }
+    const std::string batch = Environment::nowIso8601() + "#" + std::to_string(::getpid());
+    if (!trials.empty()) measureInterleaved(harness, trials, out, options, batch);
+    std::vector<CsvRow> fresh;
+    for (size_t i = 0; i < out.size(); ++i)
+        if (measure[i]) fresh.push_back(cacheRow(keys[i], out[i]));
+    log << "auto: " << out.size() << " candidates, " << fromFile << " from " << path << ", " << fresh.size()
+        << " measured now (" << options.frames
+        << " interleaved rounds of one frame each, exact work, judged against the reference)\n";
+    if (!fresh.empty()) {
+        std::error_code ignored;
+        std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ignored);
+        CsvWriter::appendRows(path, fresh);
+    }
+    return out;
+}
+
+} // namespace sb

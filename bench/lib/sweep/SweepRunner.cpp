@@ -1,0 +1,329 @@
+#include "bench/lib/sweep/SweepRunner.h"
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <unistd.h>
+
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ProgressBar.h"
+#include "bench/lib/rows/Environment.h"
+#include "bench/lib/options/RunOptions.h"
+#include "bench/lib/sweep/ChildProcess.h"
+#include "bench/lib/sweep/SweepJob.h"
+#include "core/Error.h"
+#include "gl/ProgramCache.h"
+#include "gl/backends/BackendRegistry.h"
+#include "techniques/PropertySet.h"
+
+namespace sb {
+
+namespace {
+
+volatile std::sig_atomic_t gInterrupted = 0;
+
+void onInterrupt(int sig) {
+    gInterrupted = 1;
+    ChildProcess::interruptCurrent(sig); // a kill of the runner alone must stop the worker too
+}
+
+/// SIGINT/SIGTERM handlers for the lifetime of a run, restored afterwards.
+class InterruptGuard {
+public:
+    InterruptGuard() {
+        gInterrupted = 0;
+        struct sigaction sa {};
+        sa.sa_handler = onInterrupt;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &mOldInt);
+        sigaction(SIGTERM, &sa, &mOldTerm);
+    }
+    ~InterruptGuard() {
+        sigaction(SIGINT, &mOldInt, nullptr);
+        sigaction(SIGTERM, &mOldTerm, nullptr);
+    }
+
+private:
+    struct sigaction mOldInt {
+    }, mOldTerm{};
+};
+
+/// A private directory for the job files, removed with everything in it.
+class TempDirectory {
+public:
+    TempDirectory() {
+        std::string pattern = (std::filesystem::temp_directory_path() / "shadowbench-sweep-XXXXXX").string();
+        if (!::mkdtemp(pattern.data()))
+            throw Error("cannot create a temporary directory for the sweep's job files", ExitCode::Failure);
+        mPath = pattern;
+    }
+    ~TempDirectory() {
+        std::error_code ec;
+        std::filesystem::remove_all(mPath, ec);
+    }
+    const std::string& path() const { return mPath; }
+
+private:
+    std::string mPath;
+};
+
+std::string cell(const CsvTable& t, const std::vector<std::string>& row, const std::string& column) {
+    const auto it = std::find(t.header.begin(), t.header.end(), column);
+    return it == t.header.end() ? "" : row[size_t(it - t.header.begin())];
+}
+
+/// What the CSV already holds of this sweep: the config indices, and the wall medians of its ok rows.
+struct Done {
+    std::set<size_t> indices;
+    std::map<size_t, double> wallMs;
+};
+
+/// Throws when the file is another sweep's, or this one's without --resume.
+Done readDone(const SweepPlan& plan, const SweepRunOptions& options) {
+    Done done;
+    if (!std::filesystem::exists(options.csvPath)) return done;
+    const CsvTable t = CsvWriter::read(options.csvPath);
+    if (t.rows.empty()) return done;
+    const std::string id = plan.id();
+    for (const auto& row : t.rows) {
+        const std::string other = cell(t, row, "sweep_id");
+        if (other != id)
+            throw Error("--csv " + options.csvPath + " holds rows of " +
+                        (other.empty() ? std::string("a run that is not a sweep")
+                                       : "sweep " + other + " ('" + cell(t, row, "sweep_name") + "')") +
+                        ", not of this sweep " + id + " ('" + plan.name +
+                        "'): the definition differs; write to another --csv");
+        const size_t index = size_t(std::stoull(cell(t, row, "config_index")));
+        done.indices.insert(index);
+        if (cell(t, row, "status") == "ok") done.wallMs[index] = std::stod(cell(t, row, "wall_ms_median"));
+    }
+    if (!options.resume)
+        throw Error("--csv " + options.csvPath + " already holds " + std::to_string(t.rows.size()) +
+                    " rows of this sweep: pass --resume to continue it, or write to another --csv");
+    return done;
+}
+
+/// The verdict every worker gets; nullopt when the sweep's options say --no-timer-check.
+std::optional<TimerVerdict> calibrateOnce(const SweepPlan& plan) {
+    const RunConfig config = RunOptions::parseArgs(plan.commonArgs, plan.mode == SweepPlan::Mode::Accuracy
+                                                                        ? RunConfig::Mode::Accuracy
+                                                                        : RunConfig::Mode::Measure);
+    if (!config.checkTimer) return std::nullopt;
+    std::unique_ptr<Context> context = createContext(config.context);
+    TimerVerdict v;
+    {
+        ProgramCache programs; // released before the context
+        v = TimerTrust::calibrate(programs);
+    }
+    v.reason += " (calibrated once for the sweep)";
+    return v;
+}
+
+/// "shadowmap:pcf=3 round 2 @ scene=aircraft ..." for progress lines.
+std::string label(const SweepGroup& g, const PlannedRow& r, const std::vector<std::string>& varying) {
+    const std::string where = g.describe(&varying);
+    return "#" + std::to_string(r.index) + " " + r.technique +
+           (r.round > 1 ? " round " + std::to_string(r.round) : "") + (where.empty() ? "" : " @ " + where);
+}
+
+std::string lastLine(const std::string& text) {
+    std::string t = text;
+    while (!t.empty() && (t.back() == '\n' || t.back() == ' ')) t.pop_back();
+    const size_t nl = t.rfind('\n');
+    return nl == std::string::npos ? t : t.substr(nl + 1);
+}
+
+/// Runs one group's pending rows, a fresh worker after each failure.
+class GroupRun {
+public:
+    GroupRun(const SweepPlan& plan, const SweepGroup& group, const SweepRunOptions& options,
+             const std::optional<TimerVerdict>& timer, const std::string& jobDir, ProgressBar& bar,
+             SweepSummary& summary)
+        : mPlan(plan), mGroup(group), mOptions(options), mTimer(timer), mJobDir(jobDir), mBar(bar),
+          mSummary(summary), mVarying(plan.varyingColumns()) {}
+
+    /// `earlier`: wall medians of rows measured before (their baselines give later rows their ratios).
+    void run(std::vector<PlannedRow> pending, const std::map<size_t, double>& earlier) {
+        for (const PlannedRow& r : mGroup.rows) {
+            const auto it = earlier.find(r.index);
+            if (it != earlier.end() && r.technique == mGroup.techniques.front())
+                mBaselineWalls[r.round] = it->second;
+        }
+        while (!pending.empty() && !gInterrupted) {
+            Attempt a = attempt(pending);
+            std::erase_if(pending, [&](const PlannedRow& r) { return a.finished.count(r.index) > 0; });
+            if (gInterrupted || pending.empty()) return;
+            std::vector<PlannedRow> failed = culprits(a, pending);
+            recordFailures(failed, a);
+            std::erase_if(pending, [&](const PlannedRow& r) {
+                return std::any_of(failed.begin(), failed.end(),
+                                   [&](const PlannedRow& f) { return f.index == r.index; });
+            });
+        }
+    }
+
+private:
+    struct Attempt {
+        ChildExit exit;
+        std::optional<size_t> begun;
+        std::optional<WorkerMessage> failure;
+        std::set<size_t> finished;
+    };
+
+    Attempt attempt(const std::vector<PlannedRow>& rows) {
+        SweepJob job;
+        job.mode = mPlan.mode;
+        job.args = mPlan.commonArgs;
+        job.args.insert(job.args.end(), mGroup.args.begin(), mGroup.args.end());
+        job.csvPath = mOptions.csvPath;
+        job.tags = SweepRunner::sweepColumns(mPlan, mGroup, mOptions);
+        job.baseline = mGroup.techniques.front();
+        job.timer = mTimer;
+        job.rows = rows;
+        job.baselineWalls = mBaselineWalls;
+        const std::string jobPath = mJobDir + "/group-" + std::to_string(mGroup.index) + ".json";
+        job.save(jobPath);
+        Attempt a;
+        a.exit = ChildProcess::run({ChildProcess::selfExecutable(), "sweep-worker", jobPath}, mGroup.env,
+                                   [&](const std::string& line) { onLine(line, rows, a); });
+        return a;
+    }
+
+    void onLine(const std::string& line, const std::vector<PlannedRow>& rows, Attempt& a) {
+        const std::optional<WorkerMessage> m = WorkerMessage::parse(line);
+        if (!m) return;
+        const auto row =
+            std::find_if(rows.begin(), rows.end(), [&](const PlannedRow& r) { return r.index == m->index; });
+        if (row == rows.end()) return; // not one of this job's rows: ignore rather than trust it
+        switch (m->kind) {
+        case WorkerMessage::Kind::Begin:
+            a.begun = m->index;
+            mBar.setCurrent(label(mGroup, *row, mVarying));
+            break;
+        case WorkerMessage::Kind::Done:
+            a.finished.insert(m->index);
+            if (row->technique == mGroup.techniques.front()) mBaselineWalls[row->round] = m->wallMs;
+            ++mSummary.ok;
+            mBar.finished(label(mGroup, *row, mVarying), true);
+            break;
+        case WorkerMessage::Kind::Failed:
+            a.failure = m;
+            break;
+        }
+    }
+
+    /// The rows a failed attempt is blamed for: the configuration that failed and, when the error is
+    /// deterministic (bad input, unsupported), the same technique's later rounds; when the worker died
+    /// before it began any row, every pending row (it cannot start on this group at all).
+    std::vector<PlannedRow> culprits(const Attempt& a, const std::vector<PlannedRow>& pending) const {
+        if (a.exit.ok()) return pending; // ended without reporting them: a protocol failure
+        std::optional<size_t> index = a.failure ? std::optional<size_t>(a.failure->index) : a.begun;
+        if (!index) return pending;
+        const auto row = std::find_if(pending.begin(), pending.end(),
+                                      [&](const PlannedRow& r) { return r.index == *index; });
+        if (row == pending.end()) return pending;
+        const bool deterministic = a.failure && (a.failure->exitCode == int(ExitCode::BadInput) ||
+                                                 a.failure->exitCode == int(ExitCode::Unsupported));
+        std::vector<PlannedRow> out{*row};
+        if (deterministic)
+            for (const PlannedRow& r : pending)
+                if (r.index != row->index && r.technique == row->technique) out.push_back(r);
+        return out;
+    }
+
+    std::string message(const Attempt& a) const {
+        if (a.failure) return a.failure->message;
+        if (a.exit.ok()) return "the worker ended without measuring this configuration";
+        const std::string last = lastLine(a.exit.stderrTail);
+        return "worker " + a.exit.describe() + (last.empty() ? "" : ": " + last);
+    }
+
+    void recordFailures(const std::vector<PlannedRow>& rows, const Attempt& a) {
+        const Environment env = Environment::capture();
+        const std::string why = message(a);
+        // Unsupported here (a missing extension) is a skip, not a failure: the context said no.
+        const bool unsupported = a.failure && a.failure->exitCode == int(ExitCode::Unsupported);
+        const KeyValues tags = SweepRunner::sweepColumns(mPlan, mGroup, mOptions);
+        std::vector<CsvRow> out;
+        for (const PlannedRow& r : rows) {
+            // What the measured row would have said about itself, as far as it is known without running.
+            const TechniqueSpec spec = TechniqueSpec::parse(r.technique);
+            const std::string props =
+                r.technique.size() > spec.name.size() ? r.technique.substr(spec.name.size() + 1) : "";
+            CsvRow row{{"timestamp", Environment::nowIso8601()},
+                       {"git_commit", env.gitCommit},
+                       {"status", unsupported ? "unsupported" : "failed"},
+                       {"error", why},
+                       {"technique", spec.name},
+                       {"properties", props},
+                       {"technique_spec", r.technique}};
+            row.insert(row.end(), mGroup.columns.begin(), mGroup.columns.end());
+            row.insert(row.end(), {{"repeat", std::to_string(r.round)},
+                                   {"baseline", mGroup.techniques.front()},
+                                   {"config_index", std::to_string(r.index)}});
+            row.insert(row.end(), tags.begin(), tags.end());
+            out.push_back(std::move(row));
+            ++(unsupported ? mSummary.unsupported : mSummary.failed);
+            mBar.finished(label(mGroup, r, mVarying) + ": " + why, false);
+        }
+        CsvWriter::appendRows(mOptions.csvPath, out);
+    }
+
+    const SweepPlan& mPlan;
+    const SweepGroup& mGroup;
+    const SweepRunOptions& mOptions;
+    const std::optional<TimerVerdict>& mTimer;
+    const std::string& mJobDir;
+    ProgressBar& mBar;
+    SweepSummary& mSummary;
+    const std::vector<std::string> mVarying; ///< what tells the groups apart in progress lines
+    std::map<int, double> mBaselineWalls;    ///< per round, as far as measured
+};
+
+} // namespace
+
+KeyValues SweepRunner::sweepColumns(const SweepPlan& plan, const SweepGroup& group,
+                                    const SweepRunOptions& options) {
+    KeyValues kv{{"sweep_id", plan.id()},
+                 {"sweep_name", plan.name},
+                 {"sweep_configs", std::to_string(plan.configCount())},
+                 {"config_group", std::to_string(group.index)},
+                 {"shard", std::to_string(options.shard) + "/" + std::to_string(options.shardCount)}};
+    kv.insert(kv.end(), group.tags.begin(), group.tags.end());
+    return kv;
+}
+
+SweepSummary SweepRunner::run(const SweepPlan& plan, const SweepRunOptions& options) {
+    CsvWriter::checkWritable(options.csvPath);
+    const Done done = readDone(plan, options);
+    SweepSummary summary;
+    std::vector<std::pair<const SweepGroup*, std::vector<PlannedRow>>> work;
+    for (const SweepGroup* g : plan.shard(options.shard, options.shardCount)) {
+        std::vector<PlannedRow> pending;
+        for (const PlannedRow& r : g->rows) {
+            ++summary.planned;
+            if (done.indices.count(r.index))
+                ++summary.alreadyDone;
+            else
+                pending.push_back(r);
+        }
+        if (!pending.empty()) work.emplace_back(g, std::move(pending));
+    }
+    if (options.checkTimer && !work.empty()) summary.timer = calibrateOnce(plan);
+    InterruptGuard interrupts;
+    TempDirectory jobs;
+    ProgressBar bar(stderr, summary.planned, summary.alreadyDone, options.progress);
+    for (auto& [group, pending] : work) {
+        GroupRun(plan, *group, options, summary.timer, jobs.path(), bar, summary)
+            .run(std::move(pending), done.wallMs);
+        if (gInterrupted) break;
+    }
+    bar.close();
+    summary.interrupted = gInterrupted != 0;
+    return summary;
+}
+
+} // namespace sb
