@@ -1,8 +1,10 @@
 #pragma once
 // The layout's dependency rules (docs/ARCHITECTURE.md, "Layout"), checked over a source tree as text:
-//   - includes: a file may include its own folder and the folders its layer lists, nothing else
-//     (gl/ and scenes/ stand side by side on core/; no technique folder includes another; bench/'s
-//     folders form one order: output < images, run < viewer, sweep < bottleneck < figures, report < bench/);
+//   - includes: a file may include its own folder and the folders its layer lists, nothing else; the
+//     table below has no arrow up (the registry is a layer of its own, above every technique);
+//   - vulkan-gl: no Vulkan file (vk/, techniques/vulkan/, a technique's *Vulkan.{h,cpp}) reaches a GL
+//     header, directly or through what it includes (gl/, techniques/gl/, <epoxy/...>, <EGL/...>,
+//     <GL/...>): one declaration per technique serves both APIs without pulling GL into Vulkan code;
 //   - core/ includes only the C++ standard library, GLM, nlohmann/json and libpng (core/PngFile);
 //   - shaders: a technique's C++ names programs from shaders/<its name>/ and shaders/common/ only, and a
 //     shader includes only its own folder and common/;
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -26,8 +29,8 @@ namespace fs = std::filesystem;
 struct Violation {
     std::string file; ///< relative to the checked root, '/' separated
     int line = 0;     ///< 1-based
-    std::string
-        rule; ///< "include", "core-system", "shader", "shader-include", "outside-reference", "no-layer"
+    /// "include", "vulkan-gl", "core-system", "shader", "shader-include", "outside-reference", "no-layer"
+    std::string rule;
     std::string detail;
 
     /// "gl/Bad.cpp:3: include: gl/ may not include scenes/ (scenes/Scene.h)"
@@ -38,7 +41,8 @@ struct Violation {
 
 /// One row of the rules: a folder (a "layer"), the folders below it that it may include, and the shader
 /// folders its C++ may name. "techniques/*" stands for every technique folder (techniques/<name>/
-/// other than submit/ and common/), whose own shader folder shaders/<name>/ is always allowed.
+/// other than the contract folders gl/ and vulkan/), whose own shader folder shaders/<name>/ is always
+/// allowed; "bench/lib/*" for every library folder of bench/.
 struct Layer {
     std::string folder;
     std::vector<std::string> mayInclude;
@@ -46,90 +50,94 @@ struct Layer {
 };
 
 inline const std::vector<Layer>& layers() {
-    const std::vector<std::string> base = {"core", "gl", "scenes"};
-    const std::vector<std::string> techniques = {"core", "gl", "scenes", "techniques", "techniques/submit"};
-    // A technique folder may hold a Vulkan form of its technique (techniques/vulkan/ and vk/ below it).
-    const std::vector<std::string> vulkanTechniques = {"vk", "techniques/vulkan"};
-    const std::vector<std::string> belowBench = {
-        "core",     "gl",         "gl/backends",       "vk",
-        "scenes",   "techniques", "techniques/submit", "techniques/vulkan",
-        "reference"};
     auto plus = [](std::vector<std::string> a, const std::vector<std::string>& b) {
         a.insert(a.end(), b.begin(), b.end());
         return a;
     };
+    // The technique contract, neutral, and each API's contract above it.
+    const std::vector<std::string> contract = {"core", "shading", "scenes", "techniques"};
+    const std::vector<std::string> glContract = plus(contract, {"gl", "techniques/gl"});
+    const std::vector<std::string> vulkanContract = plus(contract, {"vk", "techniques/vulkan"});
+    // What bench's folders stand on below bench/: every layer of the product.
+    const std::vector<std::string> belowBench = plus(plus(glContract, {"gl/backends", "vk", "techniques/vulkan"}),
+                                                     {"reference", "registry"});
+    auto lib = [&](std::initializer_list<const char*> libs) {
+        std::vector<std::string> out = belowBench;
+        for (const char* l : libs) out.push_back(std::string("bench/lib/") + l);
+        return out;
+    };
     static const std::vector<Layer> kLayers = {
         {"core", {}, {}},
-        {"gl", {"core"}, {}},
-        {"gl/backends", {"core", "gl"}, {}},
-        // The Vulkan platform stands on gl/ for the shader preprocessor (one GLSL source, two APIs).
-        {"vk", {"core", "gl"}, {}},
+        // The shader text both APIs compile: preprocessor, defines, stages, the dump, the light limit.
+        {"shading", {"core"}, {}},
+        {"gl", {"core", "shading"}, {}},
+        {"gl/backends", {"core", "shading", "gl"}, {}},
+        // The Vulkan platform stands beside gl/ on shading/: nothing of GL's.
+        {"vk", {"core", "shading"}, {}},
         {"scenes", {"core"}, {}},
-        {"techniques/submit", base, {}},
-        {"techniques", plus(base, {"techniques/submit"}), {}},
-        {"techniques/common", techniques, {"common"}},
-        // The technique contract on Vulkan: the declaration and submission of techniques/, drawn with vk/.
-        {"techniques/vulkan", plus(techniques, {"vk"}), {}},
-        {"techniques/*", plus(plus(techniques, {"techniques/common"}), vulkanTechniques), {"common"}},
-        {"reference", techniques, {"reference", "common"}},
-        {"bench/output", {"core", "gl"}, {}},
-        // Pictures of results (error maps, difference maps, contact sheets): pixels and the accuracy
-        // classes in, pixels out, written through bench/output's ImageWriter.
-        {"bench/images", plus(belowBench, {"bench/output"}), {}},
-        {"bench/run", plus(belowBench, {"bench/output"}), {"calibrate", "common"}},
-        {"bench/viewer", plus(belowBench, {"bench/output", "bench/run"}), {"viewer", "common"}},
-        {"bench/sweep", plus(belowBench, {"bench/output", "bench/run"}), {}},
-        {"bench/bottleneck", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
+        {"techniques", {"core", "shading", "scenes"}, {}},
+        {"techniques/gl", glContract, {"common"}},
+        {"techniques/vulkan", vulkanContract, {"common"}},
+        // A technique's folder: its declaration (neutral), its GL form and its Vulkan form; the
+        // vulkan-gl rule keeps the Vulkan form's includes free of GL.
+        {"techniques/*", plus(glContract, {"vk", "techniques/vulkan"}), {"common"}},
+        {"reference", glContract, {"reference", "common"}},
+        // The one table of techniques, above every technique folder and the reference.
+        {"registry", plus(plus(glContract, {"vk", "techniques/vulkan", "techniques/*"}), {"reference"}), {}},
+        // bench's libraries, in one order: output < options, statistics < harness < rows < measure < ...
+        {"bench/lib/output", {"core", "shading", "gl"}, {}},
+        {"bench/lib/statistics", {"core"}, {}},
+        {"bench/lib/callgrind", {"core"}, {}},
+        {"bench/lib/options", lib({"output"}), {}},
+        {"bench/lib/images", lib({"output"}), {}},
+        {"bench/lib/harness", lib({"output", "options", "statistics"}), {"calibrate", "common"}},
+        {"bench/lib/rows", lib({"output", "options", "statistics", "harness"}), {}},
+        {"bench/lib/measure", lib({"output", "options", "statistics", "harness", "rows"}), {}},
         // `-t auto`: the calibration runs frames through the harness and judges them like accuracy.
-        {"bench/select", plus(belowBench, {"bench/output", "bench/run"}), {}},
-        // The matrix resolves its `auto` cells as a run does.
-        {"bench/golden", plus(belowBench, {"bench/output", "bench/images", "bench/run", "bench/select"}), {}},
-        // The performance gate (work counters, instructions under callgrind, wall-time statistics).
-        {"bench/figures",
-         plus(belowBench, {"bench/output", "bench/run", "bench/sweep", "bench/bottleneck"}),
-         {}},
-        {"bench/ci", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
-        {"bench/report", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
-        {"bench",
-         plus(belowBench,
-              {"bench/output", "bench/images", "bench/report", "bench/run", "bench/viewer", "bench/sweep",
-               "bench/bottleneck", "bench/figures", "bench/golden", "bench/ci", "bench/select"}),
+        {"bench/lib/select", lib({"output", "options", "statistics", "harness", "rows", "measure"}), {}},
+        {"bench/lib/viewer", lib({"output", "options", "statistics", "harness"}), {"viewer", "common"}},
+        {"bench/lib/sweep", lib({"output", "options", "statistics", "harness", "rows", "measure"}), {}},
+        {"bench/lib/bottleneck", lib({"output", "options", "statistics", "sweep"}), {}},
+        // The performance gate: the suite, its runner and layers (work, instructions, wall time).
+        {"bench/lib/gate", lib({"output", "options", "statistics", "sweep", "callgrind"}), {}},
+        // One folder per subcommand, each on the libraries only (never on another subcommand).
+        {"bench/run", lib({"output", "options", "statistics", "harness", "rows", "measure", "select", "viewer",
+                           "images"}),
          {"common"}},
-        // The hand-written shadow map that bench is measured against: the scene model only, no harness.
-        {"bench/handshadow", {"core", "scenes"}, {}},
-        // The libFuzzer targets call parsers from scenes/ up to bench/sweep/; nothing includes them.
-        {"fuzz", plus(belowBench, {"bench/output", "bench/run", "bench/sweep"}), {}},
+        {"bench/explain", lib({"output", "options", "statistics", "harness", "rows", "measure", "select"}), {}},
+        {"bench/merge", lib({"output", "options"}), {}},
+        {"bench/export", lib({"output", "options"}), {}},
+        {"bench/sweep", lib({"output", "options", "sweep"}), {}},
+        {"bench/bottleneck", lib({"output", "options", "sweep", "bottleneck"}), {}},
+        {"bench/figures", lib({"output", "options", "sweep", "bottleneck"}), {}},
+        // The matrix resolves its `auto` cells as a run does and draws its differences as images.
+        {"bench/golden",
+         lib({"output", "options", "statistics", "harness", "rows", "measure", "select", "images"}),
+         {}},
+        {"bench/ci", lib({"output", "options", "statistics", "sweep", "callgrind", "gate"}), {}},
+        {"bench/compare", lib({"output", "options", "statistics", "gate"}), {}},
+        {"bench/report", lib({"output", "options", "sweep"}), {}},
+        // The dispatcher: every subcommand and the libraries.
+        {"bench",
+         plus(lib({"output", "options", "statistics", "harness", "rows", "measure", "sweep"}),
+              {"bench/run", "bench/explain", "bench/merge", "bench/export", "bench/sweep", "bench/bottleneck",
+               "bench/figures", "bench/golden", "bench/ci", "bench/compare", "bench/report"}),
+         {"common"}},
+        // The comparison programs. handloop runs bench's harness beside a hand-written loop;
+        // handshadow is the other end of a comparison and shares no harness code: the scene model only.
+        {"bench/handwritten/handloop", lib({"output", "options", "statistics", "harness"}), {"common"}},
+        {"bench/handwritten/handshadow", {"core", "scenes"}, {}},
+        // The libFuzzer targets call parsers from scenes/ up to bench/lib/sweep; nothing includes them.
+        {"fuzz", lib({"output", "options", "statistics", "harness", "rows", "measure", "sweep"}), {}},
     };
     return kLayers;
 }
 
-/// Single files allowed more than their folder, each with its reason.
-struct Exception {
-    std::string file;
-    std::vector<std::string> mayAlsoInclude;
-    std::string why;
-};
-
-inline const std::vector<Exception>& exceptions() {
-    static const std::vector<Exception> kExceptions = {
-        {"registry/TechniqueRegistry.cpp",
-         {"techniques/*", "reference"},
-         "the one table of techniques names every technique, the reference included: the layout's one "
-         "intended arrow up"},
-        {"registry/TechniqueRegistry.h",
-         {"techniques/vulkan"},
-         "the table's Vulkan half hands out the Vulkan form of a technique (techniques/vulkan/), which "
-         "stands on techniques/ like every technique"},
-    };
-    return kExceptions;
-}
-
-/// The layer a folder belongs to: "techniques/<name>" is "techniques/*" unless it is submit/ or common/.
+/// The layer a folder belongs to: "techniques/<name>" is "techniques/*" unless it is a contract folder.
 inline std::string layerOf(const std::string& folder) {
     static const std::regex technique("techniques/([A-Za-z0-9_]+)");
     std::smatch m;
-    if (std::regex_match(folder, m, technique) && m[1] != "submit" && m[1] != "common" && m[1] != "vulkan")
-        return "techniques/*";
+    if (std::regex_match(folder, m, technique) && m[1] != "gl" && m[1] != "vulkan") return "techniques/*";
     return folder;
 }
 
@@ -214,9 +222,7 @@ inline void checkIncludes(const std::string& file, const std::vector<std::string
                        "folder " + folder + "/ has no layer in tests/LayoutRules.h (place it on purpose)"});
         return;
     }
-    std::vector<std::string> allowed = rules->mayInclude;
-    for (const Exception& e : exceptions())
-        if (e.file == file) allowed.insert(allowed.end(), e.mayAlsoInclude.begin(), e.mayAlsoInclude.end());
+    const std::vector<std::string>& allowed = rules->mayInclude;
     for (size_t i = 0; i < lines.size(); ++i) {
         std::smatch m;
         const int line = int(i) + 1;
@@ -295,11 +301,76 @@ inline void checkOutsideReferences(const std::string& file, const std::vector<st
                 out.push_back({file, int(i) + 1, "outside-reference", p.what});
 }
 
+/// A file of a Vulkan form: vk/, techniques/vulkan/, or a technique folder's *Vulkan.{h,cpp}.
+inline bool isVulkanFile(const std::string& file) {
+    const std::string folder = folderOf(file);
+    const std::string name = fs::path(file).stem().string();
+    return folder == "vk" || folder == "techniques/vulkan" ||
+           (layerOf(folder) == "techniques/*" && name.size() > 6 && name.compare(name.size() - 6, 6, "Vulkan") == 0);
+}
+
+/// What a GL header is: a file of the GL layers, or a system header of GL's (epoxy, EGL, GL, GLFW).
+inline bool isGlFolder(const std::string& folder) {
+    return folder == "gl" || folder == "gl/backends" || folder == "techniques/gl";
+}
+
+/// The includes of the checked C++ files, each with its line: the repository headers that exist under the
+/// root (quoted) and whether the file includes a GL system header itself.
+struct IncludeGraph {
+    std::map<std::string, std::vector<std::pair<int, std::string>>> quoted;
+    std::map<std::string, int> glSystem; ///< file -> line of its first GL system include
+};
+
+inline void addIncludes(const fs::path& root, const std::string& file, const std::vector<std::string>& lines,
+                        IncludeGraph& graph) {
+    static const std::regex quoted(R"(^\s*#\s*include\s+"([^"]+)\")");
+    static const std::regex glSystem(R"(^\s*#\s*include\s+<(epoxy|EGL|GL|GLFW)/)");
+    auto& list = graph.quoted[file];
+    for (size_t i = 0; i < lines.size(); ++i) {
+        std::smatch m;
+        if (std::regex_search(lines[i], m, quoted) && fs::is_regular_file(root / m[1].str()))
+            list.emplace_back(int(i) + 1, m[1].str());
+        else if (std::regex_search(lines[i], glSystem) && !graph.glSystem.count(file))
+            graph.glSystem[file] = int(i) + 1;
+    }
+}
+
+/// The chain from `file` to the first GL header it reaches ("a.h -> gl/Context.h"), "" when none.
+inline std::string glChain(const IncludeGraph& graph, const std::string& file, std::set<std::string>& seen) {
+    if (!seen.insert(file).second) return "";
+    if (isGlFolder(folderOf(file))) return file;
+    if (graph.glSystem.count(file)) return file + " -> a GL system header";
+    auto it = graph.quoted.find(file);
+    if (it == graph.quoted.end()) return "";
+    for (const auto& [line, target] : it->second)
+        if (std::string chain = glChain(graph, target, seen); !chain.empty()) return file + " -> " + chain;
+    return "";
+}
+
+inline void checkVulkanReachesNoGl(const IncludeGraph& graph, const std::string& file,
+                                   std::vector<Violation>& out) {
+    if (auto own = graph.glSystem.find(file); own != graph.glSystem.end()) {
+        out.push_back({file, own->second, "vulkan-gl", "Vulkan code includes a GL system header"});
+        return;
+    }
+    auto it = graph.quoted.find(file);
+    if (it == graph.quoted.end()) return;
+    for (const auto& [line, target] : it->second) {
+        std::set<std::string> seen{file};
+        const std::string chain = glChain(graph, target, seen);
+        if (chain.empty()) continue;
+        out.push_back({file, line, "vulkan-gl", "Vulkan code reaches GL: " + chain});
+        return; // one report per file: the first include that leads there
+    }
+}
+
 } // namespace detail
 
 /// Checks the tree at `root`; `skip` lists relative paths (files or folders) left out, such as a fixture.
 inline std::vector<Violation> check(const fs::path& root, const std::vector<std::string>& skip = {}) {
     std::vector<Violation> out;
+    detail::IncludeGraph graph;
+    std::vector<std::string> vulkanFiles;
     for (const std::string& file : detail::listFiles(root, skip)) {
         const bool test = detail::startsWith(file, "tests/");
         const bool cpp = detail::isCpp(file);
@@ -308,11 +379,17 @@ inline std::vector<Violation> check(const fs::path& root, const std::vector<std:
         if (cpp && !test && file.find('/') != std::string::npos) {
             detail::checkIncludes(file, lines, out);
             detail::checkShaderNames(file, lines, out);
+            detail::addIncludes(root, file, lines, graph);
+            if (detail::isVulkanFile(file)) vulkanFiles.push_back(file);
         }
         if (detail::isShader(file) && detail::startsWith(file, "shaders/"))
             detail::checkShaderIncludes(file, lines, out);
         detail::checkOutsideReferences(file, lines, out);
     }
+    for (const std::string& file : vulkanFiles) detail::checkVulkanReachesNoGl(graph, file, out);
+    std::stable_sort(out.begin(), out.end(), [](const Violation& a, const Violation& b) {
+        return a.file != b.file ? a.file < b.file : a.line < b.line;
+    });
     return out;
 }
 

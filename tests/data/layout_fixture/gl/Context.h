@@ -1,2 +1,3 @@
 #pragma once
 #include "core/Base.h"
+#include "shading/Text.h"

@@ -1,2 +1,3 @@
 #pragma once
-#include "techniques/Technique.h"
+#include "techniques/gl/Submitter.h"
+#include "registry/Registry.h"

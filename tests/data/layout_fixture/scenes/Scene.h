@@ -1,3 +1,2 @@
 #pragma once
-#include "core/Base.h"
-#include "gl/Context.h"
+#include "core/Clean.h"

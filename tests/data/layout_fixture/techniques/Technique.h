@@ -1,4 +1,4 @@
 #pragma once
-#include "scenes/Scene.h"
+#include "techniques/TechniqueInfo.h"
 #include "reference/Ref.h"
 #include "techniques/gl/Submitter.h"

@@ -1,2 +1,2 @@
 #pragma once
-#include "bench/sweep/Sweep.h"
+#include "bench/lib/sweep/Plan.h"

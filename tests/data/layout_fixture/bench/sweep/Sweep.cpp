@@ -1,3 +1,3 @@
-#include "bench/lib/harness/Harness.h"
-#include "bench/output/Rows.h"
+#include "bench/lib/sweep/Plan.h"
+#include "bench/lib/output/Rows.h"
 #include "bench/figures/Fig.h"

@@ -1,2 +1,3 @@
 #include "gl/Context.h"
 #include "core/Base.h"
+#include "shading/Text.h"

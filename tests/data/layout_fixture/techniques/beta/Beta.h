@@ -1,2 +1,2 @@
 #pragma once
-#include "techniques/Technique.h"
+#include "techniques/TechniqueInfo.h"

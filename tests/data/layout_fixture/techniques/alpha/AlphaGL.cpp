@@ -1,6 +1,7 @@
-#include "techniques/alpha/Alpha.h"
+#include "techniques/alpha/AlphaGL.h"
 #include "techniques/gl/Submitter.h"
-#include "techniques/beta/Beta.h"
+#include "scenes/Scene.h"
+#include "techniques/beta/BetaGL.h"
 
 const char* kLit = "alpha/lit.frag";
 const char* kScene = "common/scene.vert";

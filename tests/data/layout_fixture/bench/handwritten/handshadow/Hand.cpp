@@ -1,0 +1,2 @@
+#include "scenes/Scene.h"
+#include "gl/Context.h"

@@ -1,3 +1,0 @@
-#pragma once
-#include "bench/output/Rows.h"
-#include "gl/backends/Egl.h"

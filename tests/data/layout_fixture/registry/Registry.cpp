@@ -1,0 +1,5 @@
+#include "techniques/alpha/AlphaGL.h"
+#include "techniques/beta/BetaGL.h"
+#include "techniques/vulkan/Pipeline.h"
+#include "reference/Ref.h"
+#include "bench/lib/output/Rows.h"

@@ -1,0 +1,3 @@
+#pragma once
+#include "scenes/Scene.h"
+#include "shading/Text.h"

@@ -1,0 +1,3 @@
+#pragma once
+#include "techniques/alpha/Alpha.h"
+#include "techniques/gl/Submitter.h"

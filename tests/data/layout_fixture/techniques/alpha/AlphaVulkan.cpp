@@ -1,0 +1,3 @@
+#include "techniques/alpha/Alpha.h"
+#include "techniques/vulkan/Pipeline.h"
+#include "scenes/Scene.h"

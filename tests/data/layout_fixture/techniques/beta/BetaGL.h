@@ -1,0 +1,3 @@
+#pragma once
+#include "techniques/beta/Beta.h"
+#include "techniques/gl/Submitter.h"

@@ -1,0 +1,2 @@
+#include "techniques/beta/Beta.h"
+#include "techniques/beta/BetaGL.h"

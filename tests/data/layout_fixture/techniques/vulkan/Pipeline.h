@@ -1,0 +1,3 @@
+#pragma once
+#include "techniques/TechniqueInfo.h"
+#include "shading/Text.h"

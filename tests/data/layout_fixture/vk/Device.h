@@ -1,0 +1,3 @@
+#pragma once
+#include "shading/Text.h"
+#include "gl/Context.h"
