@@ -107,7 +107,7 @@ const TechniqueRegistry::Entry& entryOf(const std::string& name) {
     for (const TechniqueRegistry::Entry& e : TechniqueRegistry::entries())
         if (name == e.name) return e;
     const std::string known = join(TechniqueRegistry::names(), ", ");
-    // `-t auto` is resolved to a technique by `bench` runs (bench/select) before anything is created;
+    // `-t auto` is resolved to a technique by `bench` runs (bench/lib/select) before anything is created;
     // a command that reaches here with it (sweep, bottleneck, explain) does not make that choice.
     if (name == "auto")
         throw Error("-t auto is taken by `bench` and `bench accuracy` runs only; this command needs a "

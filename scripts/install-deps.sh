@@ -23,7 +23,7 @@ PACKAGES=(
   # real clients and offline tools the tests drive: glslang compiles every shader permutation, apitrace
   # traces and replays a run
   glslang-tools apitrace
-  # instructions per measured frame (bench/ci/InstructionCount): callgrind and its client-request header
+  # instructions per measured frame (bench/lib/callgrind/InstructionCount): callgrind and its client-request header
   valgrind
   # real model files the tests load (glmark2's models, assimp's test models)
   glmark2-data assimp-testmodels

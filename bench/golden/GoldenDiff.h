@@ -1,6 +1,6 @@
 #pragma once
 // The pictures of a golden that changed (`bench golden --check --diff-dir DIR`): where a cell's image
-// differs from its committed golden, drawn with bench accuracy's maps (bench/images/), the golden in the
+// differs from its committed golden, drawn with bench accuracy's maps (bench/lib/images/), the golden in the
 // reference's place. <cell> is the cell's name (technique/scene/mode, "/vulkan" for the Vulkan axis)
 // with '/' made '.'.
 //   visibility, for every light channel with a difference:
