@@ -41,6 +41,15 @@ TechniqueInfo CubeMap::declaration() {
             }};
 }
 
+Defines CubeMap::lightingDefines(Defines lit, const PropertySet& p, const OmniLightSet& lights) {
+    lit["SHADOW_MAP"] = "";
+    lit["LIGHT_COUNT"] = std::to_string(lights.shaderLightCount());
+    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    if (lights.flatCount() > 0) lit["FLAT_MAPS"] = "";
+    if (lights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    return lit;
+}
+
 Counters CubeMap::counters(const SubmitStats& s, int resolution, const OmniLightSet& lights,
                            size_t facesRendered, size_t culled) {
     const double res = double(resolution);

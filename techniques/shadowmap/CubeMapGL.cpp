@@ -50,12 +50,8 @@ void CubeMapGL::compile(const CompileContext& ctx) {
                                                   "shadowmap/cube_depth.geom"},
                                                  base)
                              : nullptr;
-    Defines lit = ctx.defines(); // the depth passes have no shadow to apply
-    lit["SHADOW_MAP"] = "";
-    lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
-    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
-    if (mLights.flatCount() > 0) lit["FLAT_MAPS"] = "";
-    if (mLights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
+    const Defines lit = CubeMap::lightingDefines(ctx.defines(), p, mLights);
     mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/cube_lighting.frag", ""}, lit);
     std::string key = mFaceDepth->key() + "|" + mLighting->key();
     if (mLayeredDepth) key += "|layered:" + mLayeredDepth->key();

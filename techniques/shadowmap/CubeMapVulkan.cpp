@@ -220,12 +220,8 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     }
 
     // Lighting pass: the GL technique's defines, permutation for permutation.
-    Defines lit = ctx.defines(); // the depth passes have no shadow to apply
-    lit["SHADOW_MAP"] = "";
-    lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
-    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
-    if (mFlatCount > 0) lit["FLAT_MAPS"] = "";
-    if (mCubeCount > 0) lit["OMNI_MAPS"] = "";
+    // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
+    const Defines lit = CubeMap::lightingDefines(ctx.defines(), p, mLights);
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
     std::string litKey = "cubemap-lighting|";
     GraphicsPipelineDesc lighting =

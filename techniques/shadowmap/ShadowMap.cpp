@@ -112,6 +112,20 @@ void ShadowMap::fitTexels(const Scene& scene, const FlatLightFits& lights, int m
                                FlatLightFits::farthestW(lights.viewProj()[i], view.reach.receivers));
 }
 
+Defines ShadowMap::lightingDefines(Defines lit, const PropertySet& p, int layers) {
+    lit["SHADOW_MAP"] = "";
+    lit["LIGHT_COUNT"] = std::to_string(layers);
+    if (p.getBool(kHardwareCompare)) lit["HW_COMPARE"] = "";
+    const std::string& kernel = p.getEnum(kKernel);
+    if (kernel == "grid")
+        lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    else
+        lit[kernel == "poisson" ? "KERNEL_POISSON" : "KERNEL_ROTATED_GRID"] = "";
+    if (float(p.getFloat(kNormalOffset)) > 0.0f) lit["NORMAL_OFFSET"] = ""; // as the forms read it
+    if (p.getBool(kReceiverPlane)) lit["RECEIVER_PLANE"] = "";
+    return lit;
+}
+
 Counters ShadowMap::counters(const SubmitStats& s, int mapSize, const FlatLightFits& lights, size_t culled) {
     return DepthLightingFrame::counters(s, double(mapSize) * mapSize * double(lights.shadowed()),
                                         {{"lights_unshadowed", double(lights.size() - lights.shadowed())},

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "shading/Defines.h"
 #include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
@@ -23,6 +24,11 @@ struct ShadowMap {
     static constexpr const char* kTaps = "taps";
 
     static TechniqueInfo declaration();
+    /// The lighting pass's defines on either API: `scene` (the submitter's and the scene's shadow
+    /// exceptions) plus the map's and the kernel's, for `layers` maps. Defaults add no define: the default
+    /// program is the one before these knobs existed; the non-grid kernels take their taps as uniforms and
+    /// ignore pcf, so neither `taps` nor `pcf` multiplies their programs.
+    static Defines lightingDefines(Defines scene, const PropertySet& p, int layers);
     /// The kernel's tap offsets in texels for `p` (empty: the grid kernel, pcf x pcf, a define).
     static std::vector<glm::vec2> kernelOffsets(const PropertySet& p);
     /// Per light, the world size of a map texel at w = 1 (`texelWorld`), and `view`'s receivers and

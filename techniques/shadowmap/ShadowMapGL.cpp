@@ -54,24 +54,10 @@ void ShadowMapGL::compile(const CompileContext& ctx) {
     mDrawAllIntoMap = injected(Injection::NoCasterCulling);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
-    Defines lit = ctx.defines(); // the depth pass has no shadow to apply
-    lit["SHADOW_MAP"] = "";
-    lit["LIGHT_COUNT"] = std::to_string(layers);
-    if (hw) lit["HW_COMPARE"] = "";
-    // Defaults add no define: the default program is the one before these knobs existed. The other
-    // kernels take their taps as uniforms and ignore pcf, so neither `taps` nor `pcf` multiplies their
-    // programs.
-    const std::string kernel = p.getEnum(ShadowMap::kKernel);
-    mKernel.clear();
-    if (kernel == "grid") {
-        lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
-    } else {
-        mKernel = ShadowMap::kernelOffsets(p);
-        lit[kernel == "poisson" ? "KERNEL_POISSON" : "KERNEL_ROTATED_GRID"] = "";
-    }
+    // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
+    const Defines lit = ShadowMap::lightingDefines(ctx.defines(), p, layers);
+    mKernel = ShadowMap::kernelOffsets(p);
     mNormalOffset = float(p.getFloat(ShadowMap::kNormalOffset));
-    if (mNormalOffset > 0.0f) lit["NORMAL_OFFSET"] = "";
-    if (p.getBool(ShadowMap::kReceiverPlane)) lit["RECEIVER_PLANE"] = "";
     mCull = p.getBool(ShadowMap::kCull);
     fitTexels(ctx.scene);
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/lighting.frag", ""}, lit);

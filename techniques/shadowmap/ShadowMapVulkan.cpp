@@ -146,20 +146,11 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     depth.renderPass = mDepthPass;
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 
-    // Lighting pass: the GL technique's defines, permutation for permutation.
-    Defines lit = ctx.defines();
-    lit["SHADOW_MAP"] = "";
-    lit["LIGHT_COUNT"] = std::to_string(mLayers);
-    if (p.getBool("hardware_compare")) lit["HW_COMPARE"] = "";
+    // Lighting pass: the declaration's defines, the GL form's permutation for permutation.
+    const Defines lit = ShadowMap::lightingDefines(ctx.defines(), p, mLayers);
     mKernel = ShadowMap::kernelOffsets(p);
-    if (mKernel.empty())
-        lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
-    else
-        lit[p.getEnum("kernel") == "poisson" ? "KERNEL_POISSON" : "KERNEL_ROTATED_GRID"] = "";
-    mNormalOffset = float(p.getFloat("normal_offset"));
-    if (mNormalOffset > 0.0f) lit["NORMAL_OFFSET"] = "";
-    if (p.getBool("receiver_plane")) lit["RECEIVER_PLANE"] = "";
-    mCull = p.getBool("cull");
+    mNormalOffset = float(p.getFloat(ShadowMap::kNormalOffset));
+    mCull = p.getBool(ShadowMap::kCull);
     fitTexels(ctx.scene);
     writeLightingBlock(float(ctx.targets.height()));
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
