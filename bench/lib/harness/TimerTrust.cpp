@@ -23,30 +23,37 @@ double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-struct TimedDraw {
-    double wallMs, timerMs;
-};
+/// One draw into a GL target timed as Harness times a frame: a ring frame, the target bound and cleared,
+/// one pass around the draw, read back through the ring (drain waits, which is fine outside measured
+/// frames), and the wall clock from an idle GPU to glFinish. The clear matters on llvmpipe: without an
+/// active scene the first timestamp is taken at submission, with one (as in every frame) it is taken per
+/// tile.
+class GlFill final : public TimedFill {
+public:
+    GlFill(const TextureFramebuffer& small, const TextureFramebuffer& large, TimerQueryRing& ring)
+        : mSmall(small), mLarge(large), mRing(ring) {}
+    Timing draw(bool large, int iterations) override {
+        static constexpr GLfloat kBlack[] = {0.0f, 0.0f, 0.0f, 1.0f};
+        (large ? mLarge : mSmall).bind();
+        glUniform1i(0, iterations);
+        glFinish();
+        const Clock::time_point t0 = Clock::now();
+        mRing.beginFrame();
+        glClearBufferfv(GL_COLOR, 0, kBlack);
+        mRing.beginPass(kPass);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        mRing.endFrame();
+        glFinish();
+        const double wallMs = msSince(t0);
+        const std::vector<PassTimes> frames = mRing.drain();
+        return {wallMs, frames.empty() ? 0.0 : frames.back().totalMs};
+    }
 
-/// One draw timed as Harness times a frame: a ring frame, the target bound and cleared, one pass
-/// around the draw, read back through the ring (drain waits, which is fine outside measured frames),
-/// and the wall clock from an idle GPU to glFinish. The clear matters on llvmpipe: without an active
-/// scene the first timestamp is taken at submission, with one (as in every frame) it is taken per tile.
-TimedDraw timeDraw(const TextureFramebuffer& target, TimerQueryRing& ring, int iterations) {
-    static constexpr GLfloat kBlack[] = {0.0f, 0.0f, 0.0f, 1.0f};
-    target.bind();
-    glUniform1i(0, iterations);
-    glFinish();
-    const Clock::time_point t0 = Clock::now();
-    ring.beginFrame();
-    glClearBufferfv(GL_COLOR, 0, kBlack);
-    ring.beginPass(kPass);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    ring.endFrame();
-    glFinish();
-    const double wallMs = msSince(t0);
-    const std::vector<PassTimes> frames = ring.drain();
-    return {wallMs, frames.empty() ? 0.0 : frames.back().totalMs};
-}
+private:
+    const TextureFramebuffer& mSmall;
+    const TextureFramebuffer& mLarge;
+    TimerQueryRing& mRing;
+};
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -54,29 +61,22 @@ double median(std::vector<double> v) {
 }
 
 /// Medians of kRepeats consecutive draws into one target, as measured frames follow each other.
-TimedDraw medianDraw(const TextureFramebuffer& target, TimerQueryRing& ring, int iterations) {
+TimedFill::Timing medianDraw(TimedFill& fill, bool large, int iterations) {
     std::vector<double> wall, timer;
     for (int i = 0; i < TimerTrust::kRepeats; ++i) {
-        const TimedDraw d = timeDraw(target, ring, iterations);
+        const TimedFill::Timing d = fill.draw(large, iterations);
         wall.push_back(d.wallMs);
         timer.push_back(d.timerMs);
     }
     return {median(wall), median(timer)};
 }
 
-CalibrationRound measureRound(const TextureFramebuffer& small, const TextureFramebuffer& large,
-                              TimerQueryRing& ring, int iterations) {
-    const TimedDraw s = medianDraw(small, ring, iterations);
-    const TimedDraw l = medianDraw(large, ring, iterations);
-    return {s.wallMs, l.wallMs, s.timerMs, l.timerMs};
-}
-
 /// Doubles the loop length (from 1) until one large draw takes kMinLargeWallMs. Single draws: a draw
 /// slowed by the machine's load only ends the search early, and the rounds take medians anyway.
-int findIterations(const TextureFramebuffer& large, TimerQueryRing& ring) {
+int findIterations(TimedFill& fill) {
     int iterations = 1;
-    timeDraw(large, ring, iterations); // JIT the shader outside the measurement
-    while (iterations < kMaxIterations && timeDraw(large, ring, iterations).wallMs < kMinLargeWallMs)
+    fill.draw(true, iterations); // JIT the shader outside the measurement
+    while (iterations < kMaxIterations && fill.draw(true, iterations).wallMs < kMinLargeWallMs)
         iterations *= 2;
     return iterations;
 }
@@ -127,7 +127,7 @@ std::string TimerTrust::checkRound(const CalibrationRound& r) {
     return why;
 }
 
-TimerVerdict TimerTrust::judge(const std::vector<CalibrationRound>& rounds) {
+TimerVerdict TimerTrust::judge(const std::vector<CalibrationRound>& rounds, const std::string& timer) {
     TimerVerdict v;
     v.checked = true;
     v.rounds = rounds;
@@ -152,7 +152,7 @@ TimerVerdict TimerTrust::judge(const std::vector<CalibrationRound>& rounds) {
                                         format("%.2fx", hi) + ")");
     }
     v.trusted = failures.empty();
-    v.reason = "GL_TIMESTAMP pairs, " + std::to_string(kSmall) + "^2 vs " + std::to_string(kLarge) + "^2 (" +
+    v.reason = timer + ", " + std::to_string(kSmall) + "^2 vs " + std::to_string(kLarge) + "^2 (" +
                format("%.0fx", kPixelRatio) + " pixels), " + std::to_string(rounds.size()) + " of " +
                std::to_string(kRounds) + " rounds: " + evidence(rounds);
     if (!v.trusted) v.reason += "; " + failures;
@@ -182,23 +182,31 @@ TimerVerdict TimerTrust::calibrate(ProgramCache& programs) {
     glBindVertexArray(vao);
     glDisable(GL_DEPTH_TEST);
     program.use();
-    const int iterations = findIterations(large, ring);
-    std::vector<CalibrationRound> rounds;
-    // A failed round decides "untrusted" (trust needs all of them), so the rest are not measured:
-    // on llvmpipe the calibration costs one round.
-    for (int i = 0; i < kRounds; ++i) {
-        rounds.push_back(measureRound(small, large, ring, iterations));
-        if (!checkRound(rounds.back()).empty()) break;
-    }
+    GlFill fill(small, large, ring);
+    TimerVerdict v = calibrateWith(fill, "GL_TIMESTAMP pairs");
     glBindVertexArray(0);
     glDeleteVertexArrays(1, &vao);
     if (depthTest) glEnable(GL_DEPTH_TEST);
     glUseProgram(GLuint(previousProgram));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    TimerVerdict v = judge(rounds);
-    v.iterations = iterations;
     v.calibrationMs = msSince(t0);
     v.reason += format(" (%.2f s)", v.calibrationMs * 1e-3);
+    return v;
+}
+
+TimerVerdict TimerTrust::calibrateWith(TimedFill& fill, const std::string& timer) {
+    const int iterations = findIterations(fill);
+    std::vector<CalibrationRound> rounds;
+    // A failed round decides "untrusted" (trust needs all of them), so the rest are not measured:
+    // on llvmpipe the calibration costs one round.
+    for (int i = 0; i < kRounds; ++i) {
+        const TimedFill::Timing s = medianDraw(fill, false, iterations);
+        const TimedFill::Timing l = medianDraw(fill, true, iterations);
+        rounds.push_back({s.wallMs, l.wallMs, s.timerMs, l.timerMs});
+        if (!checkRound(rounds.back()).empty()) break;
+    }
+    TimerVerdict v = judge(rounds, timer);
+    v.iterations = iterations;
     return v;
 }
 

@@ -47,6 +47,20 @@ struct TimerVerdict {
     const char* label() const { return !checked ? "unchecked" : (trusted ? "trusted" : "untrusted"); }
 };
 
+/// One fill-bound draw timed as a frame is, by one API: the part of the calibration that differs between
+/// GL (TimerTrust::calibrate) and Vulkan (VulkanTimerTrust::calibrate). The procedure that uses it, the
+/// rounds and the rules are TimerTrust's, the same on both.
+class TimedFill {
+public:
+    struct Timing {
+        double wallMs = 0.0, timerMs = 0.0;
+    };
+    virtual ~TimedFill() = default;
+    /// The full-screen fill with `iterations` loop steps per fragment into the small (kSmall^2) or large
+    /// (kLarge^2) target: wall clock from an idle device to the frame's end, and the timer's pair.
+    virtual Timing draw(bool large, int iterations) = 0;
+};
+
 class TimerTrust {
 public:
     static constexpr int kSmall = 512, kLarge = 1024; ///< square sizes: 4x the pixels
@@ -70,9 +84,14 @@ public:
     /// llvmpipe pays for one round (measured 0.1-0.2 s with 2 threads, up to 0.9 s on a loaded machine).
     /// Leaves the GL state as it found it, except the bound framebuffer and VAO (0).
     static TimerVerdict calibrate(ProgramCache& programs);
+    /// The calibration's procedure with any API's fill (the search for the loop length, the rounds of
+    /// kRepeats medians, the first failed round ending it, the verdict); `timer` names the API's timer in
+    /// the reason ("GL_TIMESTAMP pairs", "vkCmdWriteTimestamp pairs").
+    static TimerVerdict calibrateWith(TimedFill& fill, const std::string& timer);
     /// The decision rule, separated for unit tests: trusted when every round passes checkRound and the
     /// rounds agree (kMaxRoundSpread). The reason lists the evidence and every failed condition.
-    static TimerVerdict judge(const std::vector<CalibrationRound>& rounds);
+    static TimerVerdict judge(const std::vector<CalibrationRound>& rounds,
+                              const std::string& timer = "GL_TIMESTAMP pairs");
     /// Why one round fails ("" when it passes): each failed condition, semicolon-separated.
     static std::string checkRound(const CalibrationRound& round);
     /// The verdict a run ends with: `before` (the calibration the run was measured under) confirmed by

@@ -16,16 +16,9 @@ namespace sb {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-constexpr double kMinLargeWallMs = 15.0; // as on GL: below this, fixed per-frame costs blur the ratios
-constexpr int kMaxIterations = 1 << 24;
-
-struct TimedDraw {
-    double wallMs, timerMs;
-};
-
 /// What one calibration needs: the fill pipeline against both targets' render passes, a ring, a
 /// command buffer and a fence.
-class Fill {
+class Fill final : public TimedFill {
 public:
     Fill(VulkanContext& context, ShaderModuleCache& shaders)
         : mContext(context), mSmall(context, TimerTrust::kSmall, TimerTrust::kSmall),
@@ -63,7 +56,7 @@ public:
     Fill& operator=(const Fill&) = delete;
 
     /// One frame as the harness times one: clear, the fill pass, submit, fence.
-    TimedDraw draw(bool large, int iterations) {
+    Timing draw(bool large, int iterations) override {
         VulkanTargets& t = large ? mLarge : mSmall;
         const auto t0 = Clock::now();
         vkResetCommandBuffer(mCmd, 0);
@@ -101,20 +94,6 @@ private:
     uint64_t mFrame = 0;
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-TimedDraw medianDraw(Fill& fill, bool large, int iterations) {
-    std::vector<double> wall, timer;
-    for (int i = 0; i < TimerTrust::kRepeats; ++i) {
-        const TimedDraw d = fill.draw(large, iterations);
-        wall.push_back(d.wallMs);
-        timer.push_back(d.timerMs);
-    }
-    return {median(wall), median(timer)};
-}
 } // namespace
 
 TimerVerdict VulkanTimerTrust::calibrate(VulkanContext& context, ShaderModuleCache& shaders) {
@@ -126,21 +105,7 @@ TimerVerdict VulkanTimerTrust::calibrate(VulkanContext& context, ShaderModuleCac
         return v;
     }
     Fill fill(context, shaders);
-    int iterations = 1;
-    fill.draw(true, iterations); // JIT outside the measurement
-    while (iterations < kMaxIterations && fill.draw(true, iterations).wallMs < kMinLargeWallMs)
-        iterations *= 2;
-    std::vector<CalibrationRound> rounds;
-    for (int i = 0; i < TimerTrust::kRounds; ++i) {
-        const TimedDraw s = medianDraw(fill, false, iterations);
-        const TimedDraw l = medianDraw(fill, true, iterations);
-        rounds.push_back({s.wallMs, l.wallMs, s.timerMs, l.timerMs});
-        if (!TimerTrust::checkRound(rounds.back()).empty()) break;
-    }
-    TimerVerdict v = TimerTrust::judge(rounds);
-    const std::string gl = "GL_TIMESTAMP pairs";
-    if (v.reason.rfind(gl, 0) == 0) v.reason = "vkCmdWriteTimestamp pairs" + v.reason.substr(gl.size());
-    v.iterations = iterations;
+    TimerVerdict v = TimerTrust::calibrateWith(fill, "vkCmdWriteTimestamp pairs");
     v.calibrationMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     return v;
 }
