@@ -6,11 +6,6 @@
 
 namespace sb {
 
-namespace {
-constexpr DrawSet kSets[kDrawSetCount] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers,
-                                          DrawSet::NonCasters, DrawSet::NonReceivers};
-} // namespace
-
 InstancedSubmitter::~InstancedSubmitter() {
     release();
 }
@@ -22,26 +17,10 @@ void InstancedSubmitter::release() {
 
 void InstancedSubmitter::upload(const Scene& scene) {
     release();
-    mScene = &scene;
     mBuffers.upload(scene);
     // One buffer holding, per draw set and mesh, that set's instances contiguously.
-    std::vector<InstanceRecord>& records = mRecords;
-    records.clear();
-    mRecordInstance.clear();
-    for (size_t s = 0; s < kDrawSetCount; ++s) {
-        mBatches[s].clear();
-        for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-            Batch b{m, uint32_t(records.size()), 0};
-            for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-                const Instance& inst = scene.instances[i];
-                if (inst.mesh != m || !inDrawSet(inst, kSets[s])) continue;
-                records.push_back({inst.model, glm::vec4(inst.color, shadowSignedId(inst))});
-                mRecordInstance.push_back(i);
-                ++b.count;
-            }
-            if (b.count) mBatches[s].push_back(b);
-        }
-    }
+    mPlan = SubmissionPlan(scene);
+    const std::vector<InstanceRecord>& records = mPlan.records();
     glCreateBuffers(1, &mInstanceBuffer);
     // Dynamic storage: a scene in motion rewrites the records of its moving casters every frame.
     glNamedBufferStorage(mInstanceBuffer,
@@ -54,11 +33,11 @@ void InstancedSubmitter::upload(const Scene& scene) {
 void InstancedSubmitter::instancesMoved(const Scene& scene) {
     // Every record again, in upload order (an instance appears once per draw set it is in): one upload
     // of the whole buffer, what an application streaming its instance transforms does.
-    for (size_t r = 0; r < mRecords.size(); ++r)
-        mRecords[r].model = scene.instances[mRecordInstance[r]].model;
-    if (!mRecords.empty())
-        glNamedBufferSubData(mInstanceBuffer, 0, GLsizeiptr(mRecords.size() * sizeof(InstanceRecord)),
-                             mRecords.data());
+    mPlan.instancesMoved(scene);
+    const std::vector<InstanceRecord>& records = mPlan.records();
+    if (!records.empty())
+        glNamedBufferSubData(mInstanceBuffer, 0, GLsizeiptr(records.size() * sizeof(InstanceRecord)),
+                             records.data());
     mStats.glCalls += 1;
 }
 
@@ -72,7 +51,7 @@ void InstancedSubmitter::attachInstances(GLuint vao, GLuint buffer) {
     }
 }
 
-void InstancedSubmitter::drawRun(const Batch& b, uint32_t first, uint32_t count) {
+void InstancedSubmitter::drawRun(const SubmissionPlan::Batch& b, uint32_t first, uint32_t count) {
     const GLsizei indices = mBuffers.indexCount(b.mesh);
     glDrawElementsInstancedBaseInstance(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr, GLsizei(count),
                                         first);
@@ -83,25 +62,18 @@ void InstancedSubmitter::drawRun(const Batch& b, uint32_t first, uint32_t count)
 }
 
 void InstancedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
-    for (const Batch& b : mBatches[size_t(set)]) {
-        // The kept records of the batch as runs [first, end): the instance buffer stays as uploaded,
-        // a culled instance splits its batch instead of costing an upload.
+    for (const SubmissionPlan::Batch& b : mPlan.batches(set)) {
+        // The kept records of the batch as runs: the instance buffer stays as uploaded, a culled
+        // instance splits its batch instead of costing an upload. The mesh is bound at its first run.
         bool bound = false;
-        for (uint32_t r = b.first, end = b.first + b.count; r < end;) {
-            if (!keptBy(keep, mRecordInstance[r])) {
-                ++r;
-                continue;
-            }
-            uint32_t runEnd = r + 1;
-            while (runEnd < end && keptBy(keep, mRecordInstance[runEnd])) ++runEnd;
+        mPlan.forEachKeptRun(b, keep, [&](uint32_t first, uint32_t count) {
             if (!bound) {
                 glBindVertexArray(mBuffers.vao(b.mesh));
                 mStats.glCalls += 1;
                 bound = true;
             }
-            drawRun(b, r, runEnd - r);
-            r = runEnd;
-        }
+            drawRun(b, first, count);
+        });
     }
     glBindVertexArray(0);
     mStats.glCalls += 1;

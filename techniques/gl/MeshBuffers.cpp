@@ -2,6 +2,8 @@
 
 #include <glm/glm.hpp>
 
+#include "techniques/SubmissionPlan.h"
+
 namespace sb {
 
 MeshBuffers::~MeshBuffers() {
@@ -20,13 +22,7 @@ void MeshBuffers::release() {
 void MeshBuffers::upload(const Scene& scene) {
     release();
     for (const Mesh& mesh : scene.meshes) {
-        // Interleaved (position, normal): one stream, one cache line per vertex fetch.
-        std::vector<glm::vec3> interleaved;
-        interleaved.reserve(mesh.positions.size() * 2);
-        for (size_t i = 0; i < mesh.positions.size(); ++i) {
-            interleaved.push_back(mesh.positions[i]);
-            interleaved.push_back(mesh.normals[i]);
-        }
+        const std::vector<glm::vec3> interleaved = interleavedVertices(mesh);
         Gpu g;
         glCreateVertexArrays(1, &g.vao);
         glCreateBuffers(1, &g.vbo);
@@ -35,12 +31,12 @@ void MeshBuffers::upload(const Scene& scene) {
                              0);
         glNamedBufferStorage(g.ibo, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
                              0);
-        glVertexArrayVertexBuffer(g.vao, 0, g.vbo, 0, GLsizei(2 * sizeof(glm::vec3)));
+        glVertexArrayVertexBuffer(g.vao, 0, g.vbo, 0, GLsizei(kVertexStride));
         glVertexArrayElementBuffer(g.vao, g.ibo);
         glEnableVertexArrayAttrib(g.vao, 0);
         glEnableVertexArrayAttrib(g.vao, 1);
         glVertexArrayAttribFormat(g.vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribFormat(g.vao, 1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3));
+        glVertexArrayAttribFormat(g.vao, 1, 3, GL_FLOAT, GL_FALSE, GLuint(kNormalOffset));
         glVertexArrayAttribBinding(g.vao, 0, 0);
         glVertexArrayAttribBinding(g.vao, 1, 0);
         g.indexCount = GLsizei(mesh.indices.size());

@@ -1,6 +1,7 @@
 #pragma once
 // GPU copies of a scene's meshes: one VAO per mesh with an interleaved position+normal VBO (location 0
-// and 1) and an index buffer. Shared by the retained and instanced submitters.
+// and 1; the stream of techniques/SubmissionPlan.h's interleavedVertices) and an index buffer. Shared by
+// the retained and instanced submitters.
 #include <vector>
 
 #include <epoxy/gl.h>

@@ -1,18 +1,13 @@
 #include "techniques/gl/RetainedSubmitter.h"
 
-#include <algorithm>
-#include <numeric>
+#include "techniques/SubmissionPlan.h"
 
 namespace sb {
 
 void RetainedSubmitter::upload(const Scene& scene) {
     mScene = &scene;
     mBuffers.upload(scene);
-    mOrder.resize(scene.instances.size());
-    std::iota(mOrder.begin(), mOrder.end(), 0u);
-    std::stable_sort(mOrder.begin(), mOrder.end(), [&](uint32_t a, uint32_t b) {
-        return scene.instances[a].mesh < scene.instances[b].mesh;
-    });
+    mOrder = instancesByMesh(scene);
 }
 
 void RetainedSubmitter::drawKept(DrawSet set, InstanceMask keep) {

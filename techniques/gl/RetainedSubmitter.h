@@ -17,7 +17,7 @@ private:
     void drawKept(DrawSet set, InstanceMask keep) override;
     const Scene* mScene = nullptr;
     MeshBuffers mBuffers;
-    std::vector<uint32_t> mOrder; ///< instance indices sorted by mesh
+    std::vector<uint32_t> mOrder; ///< instance indices sorted by mesh (instancesByMesh)
 };
 
 } // namespace sb

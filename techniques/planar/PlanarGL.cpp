@@ -8,12 +8,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scenes/InstanceCulling.h"
 #include "scenes/MeshGenerators.h"
 #include "scenes/Motion.h"
 #include "scenes/ProxyCollection.h"
-#include "techniques/gl/FrameState.h"
-#include "scenes/InstanceCulling.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/SubmissionPlan.h"
+#include "techniques/gl/FrameState.h"
 #include "techniques/gl/InstancedSubmitter.h"
 
 namespace sb {
@@ -86,7 +87,7 @@ void PlanarGL::uploadProxies(const Scene& scene) {
     const std::vector<ShadowProxy> proxies = ProxyCollection::collect(scene, false, nullptr);
     const Scene shapes = unitShapes();
     mProxyMeshes.upload(shapes);
-    std::vector<InstancedSubmitter::InstanceRecord> records;
+    std::vector<InstanceRecord> records;
     mProxyTriangles = 0;
     for (size_t s = 0; s < shapes.meshes.size(); ++s) {
         ProxyBatch b{mProxyMeshes.vao(s), mProxyMeshes.indexCount(s), GLsizei(records.size()), 0};
@@ -97,10 +98,9 @@ void PlanarGL::uploadProxies(const Scene& scene) {
         if (b.count) mProxyBatches.push_back(b);
     }
     glCreateBuffers(1, &mProxyInstances);
-    glNamedBufferStorage(
-        mProxyInstances,
-        GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstancedSubmitter::InstanceRecord)),
-        records.empty() ? nullptr : records.data(), 0);
+    glNamedBufferStorage(mProxyInstances,
+                         GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
+                         records.empty() ? nullptr : records.data(), 0);
     for (size_t s = 0; s < shapes.meshes.size(); ++s)
         InstancedSubmitter::attachInstances(mProxyMeshes.vao(s), mProxyInstances);
 }

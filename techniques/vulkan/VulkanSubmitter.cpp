@@ -2,17 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
-#include <numeric>
 
 #include "core/Error.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
-
-namespace {
-constexpr DrawSet kSets[kDrawSetCount] = {DrawSet::All, DrawSet::Casters, DrawSet::Receivers,
-                                          DrawSet::NonCasters, DrawSet::NonReceivers};
-} // namespace
 
 VulkanSubmitter::VulkanSubmitter(VulkanContext& context, SubmitMode mode) : mContext(context), mMode(mode) {
     if (mode != SubmitMode::Retained && mode != SubmitMode::Instanced)
@@ -26,12 +20,7 @@ void VulkanSubmitter::upload(const Scene& scene) {
     mScene = &scene;
     mMeshes.clear();
     for (const Mesh& mesh : scene.meshes) {
-        std::vector<glm::vec3> interleaved;
-        interleaved.reserve(mesh.positions.size() * 2);
-        for (size_t i = 0; i < mesh.positions.size(); ++i) {
-            interleaved.push_back(mesh.positions[i]);
-            interleaved.push_back(mesh.normals[i]);
-        }
+        const std::vector<glm::vec3> interleaved = interleavedVertices(mesh);
         MeshGpu g;
         g.vertices = VulkanBuffer(mContext, interleaved.size() * sizeof(glm::vec3),
                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, interleaved.data());
@@ -40,41 +29,23 @@ void VulkanSubmitter::upload(const Scene& scene) {
         g.indexCount = uint32_t(mesh.indices.size());
         mMeshes.push_back(std::move(g));
     }
-    mOrder.resize(scene.instances.size());
-    std::iota(mOrder.begin(), mOrder.end(), 0u);
-    std::stable_sort(mOrder.begin(), mOrder.end(), [&](uint32_t a, uint32_t b) {
-        return scene.instances[a].mesh < scene.instances[b].mesh;
-    });
+    mOrder = instancesByMesh(scene);
     if (mMode != SubmitMode::Instanced) return;
     // As InstancedSubmitter: per draw set and mesh, that set's instances contiguously.
-    mRecords.clear();
-    mRecordInstance.clear();
-    for (size_t s = 0; s < kDrawSetCount; ++s) {
-        mBatches[s].clear();
-        for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-            Batch b{m, uint32_t(mRecords.size()), 0};
-            for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-                const Instance& inst = scene.instances[i];
-                if (inst.mesh != m || !inDrawSet(inst, kSets[s])) continue;
-                mRecords.push_back({inst.model, glm::vec4(inst.color, shadowSignedId(inst))});
-                mRecordInstance.push_back(i);
-                ++b.count;
-            }
-            if (b.count) mBatches[s].push_back(b);
-        }
-    }
-    mInstances = VulkanBuffer(mContext, std::max<size_t>(1, mRecords.size()) * sizeof(InstanceRecord),
+    mPlan = SubmissionPlan(scene);
+    const std::vector<InstanceRecord>& records = mPlan.records();
+    mInstances = VulkanBuffer(mContext, std::max<size_t>(1, records.size()) * sizeof(InstanceRecord),
                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    if (!mRecords.empty())
-        std::memcpy(mInstances.map(), mRecords.data(), mRecords.size() * sizeof(InstanceRecord));
+    if (!records.empty())
+        std::memcpy(mInstances.map(), records.data(), records.size() * sizeof(InstanceRecord));
 }
 
 void VulkanSubmitter::instancesMoved(const Scene& scene) {
     if (mMode != SubmitMode::Instanced) return;
-    for (size_t r = 0; r < mRecords.size(); ++r)
-        mRecords[r].model = scene.instances[mRecordInstance[r]].model;
-    if (!mRecords.empty())
-        std::memcpy(mInstances.map(), mRecords.data(), mRecords.size() * sizeof(InstanceRecord));
+    mPlan.instancesMoved(scene);
+    const std::vector<InstanceRecord>& records = mPlan.records();
+    if (!records.empty())
+        std::memcpy(mInstances.map(), records.data(), records.size() * sizeof(InstanceRecord));
 }
 
 Defines VulkanSubmitter::defines() const {
@@ -83,7 +54,7 @@ Defines VulkanSubmitter::defines() const {
 }
 
 std::vector<VkVertexInputBindingDescription> VulkanSubmitter::bindings() const {
-    std::vector<VkVertexInputBindingDescription> b{{0, 2 * sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX}};
+    std::vector<VkVertexInputBindingDescription> b{{0, kVertexStride, VK_VERTEX_INPUT_RATE_VERTEX}};
     if (mMode == SubmitMode::Instanced)
         b.push_back({1, sizeof(InstanceRecord), VK_VERTEX_INPUT_RATE_INSTANCE});
     return b;
@@ -91,7 +62,7 @@ std::vector<VkVertexInputBindingDescription> VulkanSubmitter::bindings() const {
 
 std::vector<VkVertexInputAttributeDescription> VulkanSubmitter::attributes() const {
     std::vector<VkVertexInputAttributeDescription> a{{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                                                     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, sizeof(glm::vec3)}};
+                                                     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, kNormalOffset}};
     if (mMode != SubmitMode::Instanced) return a;
     for (uint32_t c = 0; c < 4; ++c)
         a.push_back({4 + c, 1, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(c * sizeof(glm::vec4))});
@@ -141,24 +112,17 @@ void VulkanSubmitter::drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout
     const VkDeviceSize zero = 0;
     const VkBuffer ib = mInstances.buffer();
     vkCmdBindVertexBuffers(cmd, 1, 1, &ib, &zero);
-    for (const Batch& b : mBatches[size_t(set)]) {
+    for (const SubmissionPlan::Batch& b : mPlan.batches(set)) {
         bindMesh(cmd, b.mesh);
         const uint32_t count = mMeshes[b.mesh].indexCount;
         // Each run of consecutive kept records is one draw (firstInstance selects the run).
-        for (uint32_t r = 0; r < b.count;) {
-            if (!keptBy(keep, mRecordInstance[b.first + r])) {
-                ++r;
-                continue;
-            }
-            uint32_t end = r;
-            while (end < b.count && keptBy(keep, mRecordInstance[b.first + end])) ++end;
-            vkCmdDrawIndexed(cmd, count, end - r, 0, 0, b.first + r);
+        mPlan.forEachKeptRun(b, keep, [&](uint32_t first, uint32_t instances) {
+            vkCmdDrawIndexed(cmd, count, instances, 0, 0, first);
             mStats.drawCalls += 1;
-            mStats.triangles += uint64_t(count / 3) * (end - r);
-            mStats.instances += end - r;
+            mStats.triangles += uint64_t(count / 3) * instances;
+            mStats.instances += instances;
             mStats.glCalls += 1;
-            r = end;
-        }
+        });
     }
 }
 

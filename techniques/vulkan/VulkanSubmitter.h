@@ -10,7 +10,8 @@
 // immediate and displaylist are GL's own (glBegin/glEnd, display lists): create() refuses them with
 // ExitCode::Unsupported and says so.
 // Vertex attributes as on GL: binding 0 interleaved position (location 0) and normal (1); instanced
-// binding 1: model matrix (4..7) and colour with signed id (8).
+// binding 1: model matrix (4..7) and colour with signed id (8). The vertex stream, the instance records,
+// their batches and runs and the retained draw order are GL's too: techniques/SubmissionPlan.h.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -18,9 +19,10 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
-#include "shading/Defines.h"
 #include "scenes/Scene.h"
+#include "shading/Defines.h"
 #include "techniques/Submission.h"
+#include "techniques/SubmissionPlan.h"
 #include "vk/VulkanBuffer.h"
 
 namespace sb {
@@ -68,13 +70,6 @@ private:
         VulkanBuffer vertices, indices;
         uint32_t indexCount = 0;
     };
-    struct InstanceRecord {
-        glm::mat4 model;
-        glm::vec4 colorId;
-    };
-    struct Batch {
-        uint32_t mesh = 0, first = 0, count = 0;
-    };
     void drawRetained(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
                       VulkanPush push);
     void drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
@@ -85,10 +80,8 @@ private:
     SubmitMode mMode;
     const Scene* mScene = nullptr;
     std::vector<MeshGpu> mMeshes;
-    std::vector<uint32_t> mOrder; ///< retained: instances by mesh
-    std::vector<InstanceRecord> mRecords;
-    std::vector<uint32_t> mRecordInstance;
-    std::vector<Batch> mBatches[kDrawSetCount];
+    std::vector<uint32_t> mOrder; ///< retained: instances by mesh (instancesByMesh)
+    SubmissionPlan mPlan;         ///< instanced: the records in mInstances and their batches
     VulkanBuffer mInstances; ///< host-visible
     SubmitStats mStats, mLifetime;
 };
