@@ -1,4 +1,4 @@
-// The accuracy pictures without GL (bench/images/, bench/golden/GoldenDiff.h): on hand-built buffers the
+// The accuracy pictures without GL (bench/lib/images/, bench/golden/GoldenDiff.h): on hand-built buffers the
 // error map's pixels are exactly the colours ErrorMap.h specifies and its counts are the judgement's
 // (reference/AccuracyMetrics.h), the signed difference map maps -1/0/+1 to blue/white/red with its colour
 // bar and scale under it, the contact sheet puts maps and labels where ContactSheet.h says, every glyph
@@ -15,7 +15,7 @@
 #include "bench/golden/GoldenDiff.h"
 #include "bench/golden/GoldenImage.h"
 #include "bench/lib/images/AccuracyImages.h"
-#include "bench/lib/images/BitmapFont.h"
+#include "bench/lib/font/BitmapFont.h"
 #include "bench/lib/images/ContactSheet.h"
 #include "bench/lib/images/DifferenceMap.h"
 #include "bench/lib/images/ErrorMap.h"
@@ -262,8 +262,13 @@ TEST(AccuracyImagesBitmapFont, EveryPrintableCharacterHasAGlyphAndOnlySpaceIsBla
         EXPECT_EQ(set == 0, c == ' ') << "'" << c << "'";
     }
     // Distinct glyphs for characters that must not be confused in figures and names.
-    for (const char* pair : {"0O", "1l", "5S", "8B", "-_", ".,", "%#"})
+    for (const char* pair : {"0O", "1l", "5S", "8B", "-_", ".,", "%#", "gq"})
         EXPECT_NE(BitmapFont::glyph(pair[0]), BitmapFont::glyph(pair[1])) << pair;
+    // One x-height: lowercase letters without an ascender, those with a descender included, leave the
+    // top two rows blank.
+    for (char c : std::string("acegmnopqrsuvwxyz"))
+        for (int x = 0; x < BitmapFont::kGlyphWidth; ++x)
+            EXPECT_FALSE(BitmapFont::pixel(c, x, 0) || BitmapFont::pixel(c, x, 1)) << "'" << c << "' column " << x;
 }
 
 /// A map whose every pixel is distinct, so a copy at a wrong offset cannot pass.

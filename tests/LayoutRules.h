@@ -89,13 +89,15 @@ inline const std::vector<Layer>& layers() {
         {"bench/lib/statistics", {"core"}, {}},
         {"bench/lib/callgrind", {"core"}, {}},
         {"bench/lib/options", lib({"output"}), {}},
-        {"bench/lib/images", lib({"output"}), {}},
+        // The one bitmap font, of the pictures and of the viewer's overlay.
+        {"bench/lib/font", lib({"output"}), {}},
+        {"bench/lib/images", lib({"output", "font"}), {}},
         {"bench/lib/harness", lib({"output", "options", "statistics"}), {"calibrate", "common"}},
         {"bench/lib/rows", lib({"output", "options", "statistics", "harness"}), {}},
         {"bench/lib/measure", lib({"output", "options", "statistics", "harness", "rows"}), {}},
         // `-t auto`: the calibration runs frames through the harness and judges them like accuracy.
         {"bench/lib/select", lib({"output", "options", "statistics", "harness", "rows", "measure"}), {}},
-        {"bench/lib/viewer", lib({"output", "options", "statistics", "harness"}), {"viewer", "common"}},
+        {"bench/lib/viewer", lib({"output", "font", "options", "statistics", "harness"}), {"viewer", "common"}},
         {"bench/lib/sweep", lib({"output", "options", "statistics", "harness", "rows", "measure"}), {}},
         {"bench/lib/bottleneck", lib({"output", "options", "statistics", "sweep"}), {}},
         // The performance gate: the suite, its runner and layers (work, instructions, wall time).

@@ -23,7 +23,8 @@
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
-#include "techniques/shadowmap/SeparableBlur.h"
+#include "techniques/gl/SeparableBlur.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
 
 using namespace sb;
 
@@ -407,7 +408,7 @@ TEST(MomentShadows, BlurWeightsAreTheTruncatedGaussiansIntegralPerTexel) {
     ASSERT_EQ(w2.size(), 2u);
     EXPECT_NEAR(w2[0], 0.68269 / 0.95450, 2e-5);
     EXPECT_NEAR(w2[1], (0.95450 - 0.68269) / 2 / 0.95450, 2e-5);
-    for (int width : {2, 3, 9, 16, SeparableBlur::kMaxWidth}) {
+    for (int width : {2, 3, 9, 16, ShadowMapProperties::kMaxBlurWidth}) {
         const std::vector<float> w = SeparableBlur::weights(width);
         EXPECT_EQ(int(w.size()), width / 2 + 1);
         double sum = w[0];

@@ -3,7 +3,7 @@
 // (tests/ViewerCliTest.cpp parses the XWD format itself: no image tool is needed), and keys sent as a
 // user's taps. Checked against answers the viewer does not compute:
 //   - the overlay's text, pixel by pixel, against the glyphs of the bitmap font table
-//     (bench/lib/viewer/OverlayFont.h) at the position the overlay's header documents (bench/lib/viewer/Overlay.h);
+//     (bench/lib/font/BitmapFont.h) at the position the overlay's header documents (bench/lib/viewer/Overlay.h);
 //   - the light count against the scene file (scenes/data/sphere_plane.json), the timer line against
 //     what --no-timer-check means (verdict "unchecked");
 //   - one Tab tap, sent once and released at once (a tap between two frames, which polling lost),
@@ -30,7 +30,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/viewer/Overlay.h"
-#include "bench/lib/viewer/OverlayFont.h"
+#include "bench/lib/font/BitmapFont.h"
 #include "bench/lib/viewer/RollingMedian.h"
 #include "registry/TechniqueRegistry.h"
 
@@ -197,17 +197,17 @@ const int kDimMax = int(255.0f * (1.0f - Overlay::kBoxOpacity) + 0.5f) + 8;
 /// match, else the first mismatches.
 std::string checkOverlayLine(const Image& img, int row, const std::string& text) {
     const int inset = Overlay::kMargin + Overlay::kPadding * kScale;
-    const int top = inset + row * OverlayFont::kLineHeight * kScale;
+    const int top = inset + row * Overlay::kLineHeight * kScale;
     std::string errors;
     int count = 0;
     for (size_t i = 0; i < text.size(); ++i)
-        for (int gy = 0; gy < OverlayFont::kGlyphHeight; ++gy)
-            for (int gx = 0; gx < (i + 1 < text.size() ? OverlayFont::kAdvance : OverlayFont::kGlyphWidth);
+        for (int gy = 0; gy < BitmapFont::kGlyphHeight; ++gy)
+            for (int gx = 0; gx < (i + 1 < text.size() ? BitmapFont::kCellWidth : BitmapFont::kGlyphWidth);
                  ++gx) {
-                const bool ink = OverlayFont::ink(text[i], gx, gy);
+                const bool ink = BitmapFont::pixel(text[i], gx, gy);
                 for (int sy = 0; sy < kScale; ++sy)
                     for (int sx = 0; sx < kScale; ++sx) {
-                        const int x = inset + (int(i) * OverlayFont::kAdvance + gx) * kScale + sx;
+                        const int x = inset + (int(i) * BitmapFont::kCellWidth + gx) * kScale + sx;
                         const int y = top + gy * kScale + sy;
                         const Rgb& p = img.at(x, y);
                         const int lo = std::min({p.r, p.g, p.b}), hi = std::max({p.r, p.g, p.b});
@@ -343,7 +343,7 @@ TEST(ViewerCliTest, OverlayShowsTheTechniqueAndATapSwitchesIt) {
     // about 190..210 pixels down). 3 of 255 per channel: the ramp is computed in float and stored in
     // 8 bits (half a step), and the texel's half-float visibility moves the point along the ramp, not
     // off it.
-    const int below = Overlay::kMargin + 2 * Overlay::kPadding + 16 * OverlayFont::kLineHeight;
+    const int below = Overlay::kMargin + 2 * Overlay::kPadding + 16 * Overlay::kLineHeight;
     int off = 0, lit = 0, shadowed = 0;
     std::string offText;
     for (int y = below; y < kHeight; ++y)

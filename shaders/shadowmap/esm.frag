@@ -3,7 +3,7 @@
 //     visibility = clamp(exp(-c t) * filter(exp(c d_occ)), 0, 1),
 // exact for a receiver behind its occluders and a smooth step of steepness c at the contact. The map holds
 // depth d (Salvi 2008, Rendering Filtered Shadows with Exponential Shadow Maps, ShaderX6: filtering in log
-// space), blurred into log(sum w exp(c d)) / c by shadowmap/blur.frag, so the bilinear lookup is done here
+// space), blurred into log(sum w exp(c d)) / c by common/blur.frag, so the bilinear lookup is done here
 // in log space too: the four texels' weighted exp(c (d_k - m)), m the largest depth among the taps that
 // count, so no term exceeds 1 and the sum is at least that tap's weight; then
 //     visibility = exp(min(c (m - t) + log(sum), 0)),

@@ -1,13 +1,13 @@
 #include "techniques/occluder/OccluderTextures.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
 
 #include "core/Error.h"
 #include "core/PngFile.h"
+#include "gl/GlStateGuard.h"
 #include "gl/TextureFramebuffer.h"
 
 namespace sb {
@@ -50,71 +50,6 @@ void validate(const Mesh& mesh, const ShadowPlane& plane, const OccluderBakeOpti
     if (mesh.indices.size() % 3 != 0)
         throw Error(planeLabel(plane) + ": mesh '" + mesh.name + "' index count is not a multiple of 3");
 }
-
-/// The GL state bake() changes, restored on destruction (also when an exception leaves bake()).
-class GlStateGuard {
-public:
-    GlStateGuard() {
-        glGetIntegerv(GL_VIEWPORT, mViewport.data());
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &mDrawFbo);
-        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &mReadFbo);
-        glGetIntegerv(GL_CURRENT_PROGRAM, &mProgram);
-        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &mVao);
-        for (size_t i = 0; i < kEnables.size(); ++i) mEnabled[i] = glIsEnabled(kEnables[i]);
-        glGetBooleanv(GL_COLOR_WRITEMASK, mColorMask.data());
-        glGetBooleanv(GL_DEPTH_WRITEMASK, &mDepthMask);
-        glGetIntegerv(GL_PACK_ALIGNMENT, &mPackAlignment);
-        glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &mPackBuffer);
-        for (size_t f = 0; f < 2; ++f) {
-            const bool back = f == 1;
-            glGetIntegerv(back ? GL_STENCIL_BACK_WRITEMASK : GL_STENCIL_WRITEMASK, &mStencil[f].writeMask);
-            glGetIntegerv(back ? GL_STENCIL_BACK_FUNC : GL_STENCIL_FUNC, &mStencil[f].func);
-            glGetIntegerv(back ? GL_STENCIL_BACK_REF : GL_STENCIL_REF, &mStencil[f].ref);
-            glGetIntegerv(back ? GL_STENCIL_BACK_VALUE_MASK : GL_STENCIL_VALUE_MASK, &mStencil[f].valueMask);
-            glGetIntegerv(back ? GL_STENCIL_BACK_FAIL : GL_STENCIL_FAIL, &mStencil[f].fail);
-            glGetIntegerv(back ? GL_STENCIL_BACK_PASS_DEPTH_FAIL : GL_STENCIL_PASS_DEPTH_FAIL,
-                          &mStencil[f].depthFail);
-            glGetIntegerv(back ? GL_STENCIL_BACK_PASS_DEPTH_PASS : GL_STENCIL_PASS_DEPTH_PASS,
-                          &mStencil[f].pass);
-        }
-    }
-    ~GlStateGuard() {
-        glViewport(mViewport[0], mViewport[1], mViewport[2], mViewport[3]);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(mDrawFbo));
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(mReadFbo));
-        glUseProgram(GLuint(mProgram));
-        glBindVertexArray(GLuint(mVao));
-        for (size_t i = 0; i < kEnables.size(); ++i)
-            mEnabled[i] ? glEnable(kEnables[i]) : glDisable(kEnables[i]);
-        glColorMask(mColorMask[0], mColorMask[1], mColorMask[2], mColorMask[3]);
-        glDepthMask(mDepthMask);
-        glPixelStorei(GL_PACK_ALIGNMENT, mPackAlignment);
-        glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(mPackBuffer));
-        for (size_t f = 0; f < 2; ++f) {
-            const GLenum face = f == 1 ? GL_BACK : GL_FRONT;
-            glStencilMaskSeparate(face, GLuint(mStencil[f].writeMask));
-            glStencilFuncSeparate(face, GLenum(mStencil[f].func), mStencil[f].ref,
-                                  GLuint(mStencil[f].valueMask));
-            glStencilOpSeparate(face, GLenum(mStencil[f].fail), GLenum(mStencil[f].depthFail),
-                                GLenum(mStencil[f].pass));
-        }
-    }
-    GlStateGuard(const GlStateGuard&) = delete;
-    GlStateGuard& operator=(const GlStateGuard&) = delete;
-
-private:
-    static constexpr std::array<GLenum, 6> kEnables = {GL_DEPTH_TEST, GL_CULL_FACE,    GL_STENCIL_TEST,
-                                                       GL_BLEND,      GL_SCISSOR_TEST, GL_CLIP_DISTANCE0};
-    struct Stencil {
-        GLint writeMask, func, ref, valueMask, fail, depthFail, pass;
-    };
-    std::array<GLint, 4> mViewport{};
-    GLint mDrawFbo = 0, mReadFbo = 0, mProgram = 0, mVao = 0, mPackAlignment = 4, mPackBuffer = 0;
-    std::array<GLboolean, kEnables.size()> mEnabled{};
-    std::array<GLboolean, 4> mColorMask{};
-    GLboolean mDepthMask = GL_TRUE;
-    std::array<Stencil, 2> mStencil{};
-};
 
 /// Positions and indices of a mesh on the GPU for the bake (attribute 0 only).
 class BakeGeometry {
@@ -194,7 +129,7 @@ GLuint OccluderTextures::bake(ProgramCache& programs, const Mesh& mesh, const Sh
     const Program& clipped = programs.get(sources, {{"BAKE_CLIP", ""}});
     const Program& fill = programs.get(sources, {{"BAKE_FULLSCREEN", ""}});
 
-    GlStateGuard guard;
+    GlStateGuard guard; // everything below, restored also when an exception leaves bake()
     const int n = options.resolution;
     TextureFramebuffer target(planeLabel(plane) + " occluder bake", n, n, {GL_R8});
     BakeGeometry geometry(mesh);

@@ -47,7 +47,7 @@ struct OccluderTextures {
     /// of `options`. Returns a new GL_R8 texture (the caller deletes it), resolution^2, 0 = occluder,
     /// 255 = clear, GL_LINEAR filtering, GL_CLAMP_TO_EDGE. Throws sb::Error naming the plane for an
     /// invalid plane or options, or a part name the mesh does not have. Leaves the GL state as found
-    /// (viewport, framebuffer bindings, program, vertex array, enables, masks, stencil state).
+    /// (gl/GlStateGuard.h: viewport, bindings, enables, masks, stencil state).
     static GLuint bake(ProgramCache& programs, const Mesh& mesh, const ShadowPlane& plane,
                        const OccluderBakeOptions& options);
     /// Loads a PNG file into the same format: the first channel of grey or grey+alpha images; for three

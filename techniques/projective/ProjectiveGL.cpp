@@ -15,9 +15,6 @@ namespace sb {
 
 namespace {
 constexpr GLint kMatrixLocation = 8; // projective/texture.vert and common/scene.vert (SHADOW_MAP)
-constexpr GLint kLayerLocation = 0;  // projective/blur.frag (BLUR_FROM_ARRAY)
-
-
 } // namespace
 
 ProjectiveGL::ProjectiveGL()
@@ -25,7 +22,6 @@ ProjectiveGL::ProjectiveGL()
 
 ProjectiveGL::~ProjectiveGL() {
     releaseTextures();
-    if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);
 }
 
 namespace {
@@ -161,9 +157,7 @@ void ProjectiveGL::releaseTextures() {
     if (!mFbos.empty()) glDeleteFramebuffers(GLsizei(mFbos.size()), mFbos.data());
     mFbos.clear();
     if (mArray) glDeleteTextures(1, &mArray);
-    if (mBlurFbo) glDeleteFramebuffers(1, &mBlurFbo);
-    if (mBlurTexture) glDeleteTextures(1, &mBlurTexture);
-    mArray = mBlurFbo = mBlurTexture = 0;
+    mArray = 0;
     mResolution = mLayers = 0;
 }
 
@@ -195,15 +189,6 @@ void ProjectiveGL::allocateTextures(int resolution, int layers) {
         glNamedFramebufferDrawBuffer(mFbos[size_t(i)], GL_COLOR_ATTACHMENT0);
         checkComplete(mFbos[size_t(i)]);
     }
-    // The blur's intermediate (read with texelFetch only).
-    glCreateTextures(GL_TEXTURE_2D, 1, &mBlurTexture);
-    glTextureStorage2D(mBlurTexture, 1, GL_R8, resolution, resolution);
-    glTextureParameteri(mBlurTexture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(mBlurTexture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glCreateFramebuffers(1, &mBlurFbo);
-    glNamedFramebufferTexture(mBlurFbo, GL_COLOR_ATTACHMENT0, mBlurTexture, 0);
-    glNamedFramebufferDrawBuffer(mBlurFbo, GL_COLOR_ATTACHMENT0);
-    checkComplete(mBlurFbo);
     mResolution = resolution;
     mLayers = layers;
 }
@@ -214,7 +199,6 @@ void ProjectiveGL::compile(const CompileContext& ctx) {
     allocateTextures(int(p.getInt(Projective::kResolution)), layers);
     mBlurRadius = int(p.getInt(Projective::kBlur));
     mCull = p.getBool(Projective::kCull) && mBlurRadius == 0;
-    if (!mEmptyVao) glCreateVertexArrays(1, &mEmptyVao);
 
     const Defines base = ctx.submitter.defines();
     std::string key;
@@ -223,7 +207,7 @@ void ProjectiveGL::compile(const CompileContext& ctx) {
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);
     key = mLitProgram->key();
-    mTextureProgram = mProjectiveProgram = mBlurHorizontal = mBlurVertical = nullptr;
+    mTextureProgram = mProjectiveProgram = nullptr;
     if (!mViewProj.empty()) {
         mTextureProgram = &ctx.programs.get({"projective/texture.vert", "projective/texture.frag", ""}, base);
         Defines projective = ctx.defines(); // its lookups follow the scene's exceptions
@@ -232,14 +216,15 @@ void ProjectiveGL::compile(const CompileContext& ctx) {
         mProjectiveProgram =
             &ctx.programs.get({"common/scene.vert", "projective/lighting.frag", ""}, projective);
         key += "|" + mTextureProgram->key() + "|" + mProjectiveProgram->key();
-        if (mBlurRadius > 0) {
-            Defines blur = {{"BLUR_RADIUS", std::to_string(mBlurRadius)}};
-            mBlurVertical = &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
-            blur["BLUR_FROM_ARRAY"] = "";
-            mBlurHorizontal = &ctx.programs.get({"common/fullscreen.vert", "projective/blur.frag", ""}, blur);
-            key += "|" + mBlurHorizontal->key() + "|" + mBlurVertical->key();
-        }
     }
+    // Point-sampled weights and a lit outside (the texture's white border), one channel: R8.
+    const SeparableBlur::Settings blur = {.kernel = SeparableBlur::Kernel::PointSampled,
+                                          .size = mViewProj.empty() ? 0 : mBlurRadius,
+                                          .border = SeparableBlur::Border::One,
+                                          .resolution = mResolution,
+                                          .format = GL_R8};
+    const std::string blurKey = mBlur.compile(ctx.programs, blur);
+    if (!blurKey.empty()) key += "|" + blurKey;
     setPermutationKey(key);
 }
 
@@ -270,30 +255,7 @@ void ProjectiveGL::renderTexture(FrameContext& ctx) {
 
 int ProjectiveGL::renderBlur(FrameContext&) {
     if (mViewProj.empty() || mBlurRadius <= 0) return 0;
-    glViewport(0, 0, mResolution, mResolution);
-    glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(mEmptyVao);
-    int draws = 0;
-    for (size_t i = 0; i < mViewProj.size(); ++i) {
-        if (!mCastsShadows[i]) continue;
-        // Horizontal: layer i -> the intermediate.
-        glBindFramebuffer(GL_FRAMEBUFFER, mBlurFbo);
-        mBlurHorizontal->use();
-        glUniform1i(kLayerLocation, GLint(i));
-        glBindTextureUnit(0, mArray);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        // Vertical: the intermediate -> layer i (the array is unbound first: it is being rendered to).
-        glBindTextureUnit(0, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
-        mBlurVertical->use();
-        glBindTextureUnit(0, mBlurTexture);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindTextureUnit(0, 0);
-        draws += 2;
-    }
-    glBindVertexArray(0);
-    glEnable(GL_DEPTH_TEST);
-    return draws;
+    return mBlur.apply(mArray, mFbos, mCastsShadows).passes;
 }
 
 void ProjectiveGL::renderLighting(FrameContext& ctx) {

@@ -43,6 +43,7 @@
 #include <glm/glm.hpp>
 
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/SeparableBlur.h"
 #include "techniques/projective/Projective.h"
 #include "scenes/InstanceCulling.h"
 
@@ -89,8 +90,7 @@ private:
     const char* mNoProjector = nullptr;    ///< why the scene needs none (ShadowWork), or nullptr
     GLuint mArray = 0;                     ///< R8 2D array, one layer per light
     std::vector<GLuint> mFbos;             ///< per layer
-    GLuint mBlurTexture = 0, mBlurFbo = 0; ///< R8 2D: the horizontal pass's result
-    GLuint mEmptyVao = 0;                  ///< attribute-less full-screen triangle
+    SeparableBlur mBlur;                   ///< the texture's blur (its intermediate: R8 2D)
     int mResolution = 0, mLayers = 0, mBlurRadius = 0;
     bool mCull = true;          ///< cull casters whose shadow misses the view (blur 0)
     InstanceCulling mCulling;   ///< the casters' bounds
@@ -98,8 +98,6 @@ private:
     std::vector<uint8_t> mKeep; ///< the casters a light's texture keeps
     size_t mCulled = 0;         ///< casters left out over the frame's textures
     const Program* mTextureProgram = nullptr;
-    const Program* mBlurHorizontal = nullptr; ///< layer -> mBlurTexture
-    const Program* mBlurVertical = nullptr;   ///< mBlurTexture -> layer
     const Program* mLitProgram = nullptr;     ///< casters (and everything without projectors)
     const Program* mProjectiveProgram = nullptr;
     Counters mCounters;

@@ -32,8 +32,12 @@ void EsmGL::compile(const CompileContext& ctx) {
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/esm.frag", ""}, lit);
     std::string key = mDepthProgram->key() + "|" + mLightingProgram->key();
-    const std::string blur =
-        mBlur.compile(ctx.programs, SeparableBlur::Mode::LogSpace, int(p.getInt(Esm::kBlur)), resolution, GL_R32F);
+    const std::string blur = mBlur.compile(ctx.programs, {.kernel = SeparableBlur::Kernel::TexelIntegral,
+                                                          .size = int(p.getInt(Esm::kBlur)),
+                                                          .mode = SeparableBlur::Mode::LogSpace,
+                                                          .border = SeparableBlur::Border::ClampToEdge,
+                                                          .resolution = resolution,
+                                                          .format = GL_R32F});
     mBlur.setExponent(float(p.getFloat(Esm::kExponent)));
     if (!blur.empty()) key += "|" + blur;
     setPermutationKey(key);

@@ -33,7 +33,7 @@
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/Esm.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
-#include "techniques/shadowmap/SeparableBlur.h"
+#include "techniques/gl/SeparableBlur.h"
 
 namespace sb {
 

@@ -297,7 +297,7 @@ Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& dep
         render(ctx, depth, clear);
         if (blur.radius() > 0) {
             ctx.passes.begin("blur");
-            blurTexels = blur.apply(texture(), framebuffers(), layerHasCasters());
+            blurTexels = blur.apply(texture(), framebuffers(), layerHasCasters()).texels;
         } else {
             ctx.passes.skip("blur", "blur below 2 texels: a one-tap kernel");
         }

@@ -59,7 +59,7 @@
 
 #include "techniques/gl/GlTechnique.h"
 #include "scenes/InstanceCulling.h"
-#include "techniques/shadowmap/SeparableBlur.h"
+#include "techniques/gl/SeparableBlur.h"
 
 namespace sb {
 

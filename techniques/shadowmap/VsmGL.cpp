@@ -34,8 +34,12 @@ void VsmGL::compile(const CompileContext& ctx) {
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
     mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/vsm.frag", ""}, lit);
     std::string key = mDepthProgram->key() + "|" + mLightingProgram->key();
-    const std::string blur =
-        mBlur.compile(ctx.programs, SeparableBlur::Mode::Linear, int(p.getInt(Vsm::kBlur)), resolution, GL_RG32F);
+    const std::string blur = mBlur.compile(ctx.programs, {.kernel = SeparableBlur::Kernel::TexelIntegral,
+                                                          .size = int(p.getInt(Vsm::kBlur)),
+                                                          .mode = SeparableBlur::Mode::Linear,
+                                                          .border = SeparableBlur::Border::ClampToEdge,
+                                                          .resolution = resolution,
+                                                          .format = GL_RG32F});
     if (!blur.empty()) key += "|" + blur;
     setPermutationKey(key);
 }

@@ -31,7 +31,7 @@
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/Vsm.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
-#include "techniques/shadowmap/SeparableBlur.h"
+#include "techniques/gl/SeparableBlur.h"
 
 namespace sb {
 

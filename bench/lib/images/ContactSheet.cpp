@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "bench/lib/images/BitmapFont.h"
+#include "bench/lib/font/BitmapFont.h"
 
 namespace sb {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "bench/lib/images/BitmapFont.h"
+#include "bench/lib/font/BitmapFont.h"
 
 namespace sb {
 

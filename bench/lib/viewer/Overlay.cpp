@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "bench/lib/viewer/GlStateGuard.h"
-#include "bench/lib/viewer/OverlayFont.h"
+#include "bench/lib/font/BitmapFont.h"
+#include "gl/GlStateGuard.h"
 
 namespace sb {
 
@@ -25,12 +25,12 @@ void text(std::vector<Vertex>& out, const std::string& line, int x, int y, int s
     for (size_t i = 0; i < line.size(); ++i) {
         const char c = line[i];
         if (c == ' ') continue;
-        const char shown = (c < OverlayFont::kFirst || c > OverlayFont::kLast) ? '?' : c;
-        const float u0 = float((shown - OverlayFont::kFirst) * OverlayFont::kGlyphWidth);
-        const float px = float(x + int(i) * OverlayFont::kAdvance * s);
-        quad(out, px, float(y), px + float(OverlayFont::kGlyphWidth * s),
-             float(y + OverlayFont::kGlyphHeight * s), u0, 0.0f, u0 + float(OverlayFont::kGlyphWidth),
-             float(OverlayFont::kGlyphHeight), 1.0f);
+        const char shown = (c < BitmapFont::kFirst || c > BitmapFont::kLast) ? '?' : c;
+        const float u0 = float((shown - BitmapFont::kFirst) * BitmapFont::kGlyphWidth);
+        const float px = float(x + int(i) * BitmapFont::kCellWidth * s);
+        quad(out, px, float(y), px + float(BitmapFont::kGlyphWidth * s),
+             float(y + BitmapFont::kGlyphHeight * s), u0, 0.0f, u0 + float(BitmapFont::kGlyphWidth),
+             float(BitmapFont::kGlyphHeight), 1.0f);
     }
 }
 } // namespace
@@ -60,15 +60,15 @@ const Program& Overlay::program() {
 Overlay::Overlay(ProgramCache& programs) : mPrograms(programs) {
     program(); // compile now: a shader error shows when the viewer opens
 
-    const std::vector<uint8_t> atlas = OverlayFont::atlas();
+    const std::vector<uint8_t> atlas = BitmapFont::atlas();
     GLint unpackAlignment = 4;
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1); // rows of 95 * 5 bytes
     glCreateTextures(GL_TEXTURE_2D, 1, &mAtlas);
-    glTextureStorage2D(mAtlas, 1, GL_R8, OverlayFont::kGlyphCount * OverlayFont::kGlyphWidth,
-                       OverlayFont::kGlyphHeight);
-    glTextureSubImage2D(mAtlas, 0, 0, 0, OverlayFont::kGlyphCount * OverlayFont::kGlyphWidth,
-                        OverlayFont::kGlyphHeight, GL_RED, GL_UNSIGNED_BYTE, atlas.data());
+    glTextureStorage2D(mAtlas, 1, GL_R8, BitmapFont::kGlyphCount * BitmapFont::kGlyphWidth,
+                       BitmapFont::kGlyphHeight);
+    glTextureSubImage2D(mAtlas, 0, 0, 0, BitmapFont::kGlyphCount * BitmapFont::kGlyphWidth,
+                        BitmapFont::kGlyphHeight, GL_RED, GL_UNSIGNED_BYTE, atlas.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment);
 
     glCreateBuffers(1, &mBuffer);
@@ -93,7 +93,7 @@ void Overlay::draw(int width, int height, const std::vector<std::string>& lines,
     if (width <= 0 || height <= 0) return;
     const int s = scaleFor(width, height);
     const int inset = kMargin + kPadding * s;
-    const int cell = OverlayFont::kAdvance * s, lineHeight = OverlayFont::kLineHeight * s;
+    const int cell = BitmapFont::kCellWidth * s, lineHeight = kLineHeight * s;
     // Characters that fit between the insets: n cells less the last one's blank column.
     const int available = width - 2 * inset;
     const size_t maxChars = size_t(std::max(1, (available + s) / cell));
@@ -119,18 +119,18 @@ void Overlay::draw(int width, int height, const std::vector<std::string>& lines,
     if (rows.empty()) return;
 
     int textWidth = 0;
-    for (const std::string& r : rows) textWidth = std::max(textWidth, OverlayFont::textWidth(r, s));
+    for (const std::string& r : rows) textWidth = std::max(textWidth, BitmapFont::textWidth(r, s));
     std::vector<Vertex> vertices;
     const int boxRight = inset + textWidth + kPadding * s;
     const int boxBottom =
-        inset + int(rows.size()) * lineHeight - (lineHeight - OverlayFont::kGlyphHeight * s) + kPadding * s;
+        inset + int(rows.size()) * lineHeight - (lineHeight - BitmapFont::kGlyphHeight * s) + kPadding * s;
     quad(vertices, float(kMargin), float(kMargin), float(boxRight), float(boxBottom), 0, 0, 0, 0, 0.0f);
     for (size_t i = 0; i < rows.size(); ++i) {
         const int y = inset + int(i) * lineHeight;
         if (int(i) == legendRow) {
-            const int barWidth = OverlayFont::textWidth(rows[i], s);
+            const int barWidth = BitmapFont::textWidth(rows[i], s);
             quad(vertices, float(inset), float(y), float(inset + barWidth),
-                 float(y + OverlayFont::kGlyphHeight * s), 0.0f, 0.0f, 1.0f, 0.0f, 2.0f);
+                 float(y + BitmapFont::kGlyphHeight * s), 0.0f, 0.0f, 1.0f, 0.0f, 2.0f);
         } else {
             text(vertices, rows[i], inset, y, s);
         }

@@ -1,17 +1,17 @@
 #pragma once
 // The viewer's on-screen text (bench --window): lines of white text in the 5x7 bitmap font
-// (bench/lib/viewer/OverlayFont.h) on a dimmed box in the window's top-left corner, and optionally the
+// (bench/lib/font/BitmapFont.h) on a dimmed box in the window's top-left corner, and optionally the
 // visibility view's colour bar (bench/lib/viewer/VisibilityView.h) as a legend below them.
 //
 // It draws into the default framebuffer after the frame has been blitted there, never into the frame
-// targets the technique rendered, and restores the GL state it changes (bench/lib/viewer/GlStateGuard.h):
+// targets the technique rendered, and restores the GL state it changes (gl/GlStateGuard.h):
 // what the harness measures is the same frame with or without the overlay.
 //
 // Layout, in window pixels from the top-left, with s = scaleFor(width, height):
 //   box:     from (kMargin, kMargin), kPadding * s inside on every side, black at kBoxOpacity over the
 //            image (an image value v under the box shows as v * (1 - kBoxOpacity));
-//   line i:  glyph cells kAdvance * s wide, the glyphs' top row at y = kMargin + kPadding * s +
-//            i * OverlayFont::kLineHeight * s, the first column at x = kMargin + kPadding * s; each
+//   line i:  glyph cells BitmapFont::kCellWidth * s wide, the glyphs' top row at y = kMargin +
+//            kPadding * s + i * kLineHeight * s, the first column at x = kMargin + kPadding * s; each
 //            font pixel is an s x s square of pure white (255, 255, 255), drawn opaque.
 // A line wider than the window is wrapped (after a ':' or ' ' where there is one); lines that do not
 // fit the window's height are left out.
@@ -30,6 +30,7 @@ public:
     static constexpr int kPadding = 4;         ///< box edge to text, in font pixels
     static constexpr float kBoxOpacity = 0.6f; ///< the box: black at this opacity
     static constexpr int kLegendCells = 30;    ///< colour bar width, in character cells
+    static constexpr int kLineHeight = 9;      ///< top to top of two lines, in font pixels: two blank rows
     /// Size of one font pixel in window pixels: 1 below 700 pixels on the window's shorter side, 2
     /// below 1400, then 3.
     static int scaleFor(int width, int height);

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "bench/lib/viewer/GlStateGuard.h"
+#include "gl/GlStateGuard.h"
 
 namespace sb {
 

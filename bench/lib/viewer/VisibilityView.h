@@ -22,7 +22,7 @@ public:
 
     /// Fills the default framebuffer (`width` x `height` pixels) with channel `light` (0..kMaxLights-1)
     /// of `targets`' visibility texture, scaled to the window, nearest texel. Leaves the GL state as it
-    /// found it (bench/lib/viewer/GlStateGuard.h).
+    /// found it (gl/GlStateGuard.h).
     void draw(const FrameTargets& targets, int light, int width, int height);
 
 private:

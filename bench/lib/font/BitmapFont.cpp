@@ -1,28 +1,15 @@
-#include "bench/lib/images/BitmapFont.h"
-
-#include <algorithm>
+#include "bench/lib/font/BitmapFont.h"
 
 namespace sb {
 
-int BitmapFont::textWidth(const std::string& text, int scale) {
+int BitmapFont::textWidth(std::string_view text, int scale) {
     if (text.empty()) return 0;
     return (int(text.size()) * kCellWidth - (kCellWidth - kGlyphWidth)) * scale;
 }
 
-int BitmapFont::draw(RgbImage& image, int x, int y, const std::string& text, Rgb colour, int scale) {
-    scale = std::max(1, scale);
-    for (char c : text) {
-        for (int gy = 0; gy < kGlyphHeight; ++gy)
-            for (int gx = 0; gx < kGlyphWidth; ++gx)
-                if (pixel(c, gx, gy)) image.fillRect(x + gx * scale, y + gy * scale, scale, scale, colour);
-        x += kCellWidth * scale;
-    }
-    return x;
-}
-
 std::string BitmapFont::fit(const std::string& text, int maxWidth, int scale) {
     size_t n = text.size();
-    while (n > 0 && textWidth(text.substr(0, n), scale) > maxWidth) --n;
+    while (n > 0 && textWidth(std::string_view(text).substr(0, n), scale) > maxWidth) --n;
     return text.substr(0, n);
 }
 
@@ -35,6 +22,17 @@ std::vector<std::string> BitmapFont::wrap(const std::string& text, int maxWidth,
         from += n;
     }
     return lines;
+}
+
+std::vector<uint8_t> BitmapFont::atlas() {
+    const int width = kGlyphCount * kGlyphWidth;
+    std::vector<uint8_t> texels(size_t(width) * kGlyphHeight, 0);
+    for (int g = 0; g < kGlyphCount; ++g)
+        for (int y = 0; y < kGlyphHeight; ++y)
+            for (int x = 0; x < kGlyphWidth; ++x)
+                if (pixel(char(kFirst + g), x, y))
+                    texels[size_t(y) * width + size_t(g * kGlyphWidth + x)] = 255;
+    return texels;
 }
 
 } // namespace sb

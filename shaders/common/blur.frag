@@ -1,8 +1,12 @@
-// Filterable shadow maps' separable Gaussian (techniques/shadowmap/SeparableBlur.h): one direction,
-// 2 BLUR_RADIUS + 1 taps one texel apart with the weights uWeights[|k|] the CPU computed (the integral of
-// the truncated Gaussian over each texel; they sum to 1). Texels outside the map read as the edge texel.
-// BLUR_FROM_ARRAY: the horizontal pass, layer uLayer of the map into the intermediate 2D texture;
-// otherwise the vertical pass, the intermediate back into the layer (the bound framebuffer's).
+// The separable Gaussian of techniques/gl/SeparableBlur.h: one direction, 2 BLUR_RADIUS + 1 taps one
+// texel apart.
+// BLUR_FROM_ARRAY: the horizontal pass, layer uLayer of the texture array into the intermediate 2D
+// texture; otherwise the vertical pass, the intermediate back into the layer (the bound framebuffer's).
+// Weights: uWeights[|k|], computed on the CPU (the integral of the truncated Gaussian over each texel;
+// they sum to 1). BLUR_POINT_SAMPLED (`projective`): the Gaussian's values at the taps, sigma =
+// BLUR_RADIUS / 2, computed here, the sum divided by the sum of the weights; the first channel only.
+// Taps outside the texture read the edge texel; BLUR_OUTSIDE_ONE (`projective`): they read 1 (lit), like
+// the white border colour of the lighting pass's sampler.
 // LOG_SPACE (`esm`): the channel holds depth d; the pass writes log(sum w_k exp(c d_k)) / c (Salvi 2008,
 // Rendering Filtered Shadows with Exponential Shadow Maps, ShaderX6), as
 // m + log(sum w_k exp(c (d_k - m))) / c with m the largest d_k: every exp() is at most 1 and the sum at
@@ -22,12 +26,20 @@ layout(location = 1) uniform float uExponent;
 layout(location = 2) uniform float uWeights[BLUR_RADIUS + 1];
 layout(location = 0) out vec4 oValue;
 
+#ifdef BLUR_OUTSIDE_ONE
+vec4 tap(ivec2 p, int k, ivec2 size) {
+    ivec2 q = p + k * kStep;
+    bool inside = all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size));
+    return inside ? texel(q) : vec4(1.0);
+}
+#else
 vec4 tap(ivec2 p, int k, ivec2 size) { return texel(clamp(p + k * kStep, ivec2(0), size - 1)); }
+#endif
 
 void main() {
     ivec2 size = textureSize(uSource, 0).xy;
     ivec2 p = ivec2(gl_FragCoord.xy);
-#ifdef LOG_SPACE
+#if defined(LOG_SPACE)
     float d[2 * BLUR_RADIUS + 1];
     float m = -3.0e38;
     for (int k = -BLUR_RADIUS; k <= BLUR_RADIUS; ++k) {
@@ -38,6 +50,15 @@ void main() {
     for (int k = -BLUR_RADIUS; k <= BLUR_RADIUS; ++k)
         sum += uWeights[abs(k)] * exp(uExponent * (d[k + BLUR_RADIUS] - m));
     oValue = vec4(m + log(sum) / uExponent);
+#elif defined(BLUR_POINT_SAMPLED)
+    const float sigma = 0.5 * float(BLUR_RADIUS);
+    float sum = 0.0, weights = 0.0;
+    for (int k = -BLUR_RADIUS; k <= BLUR_RADIUS; ++k) {
+        float w = exp(-float(k * k) / (2.0 * sigma * sigma));
+        sum += w * tap(p, k, size).r;
+        weights += w;
+    }
+    oValue = vec4(sum / weights);
 #else
     vec4 sum = uWeights[0] * tap(p, 0, size);
     for (int k = 1; k <= BLUR_RADIUS; ++k) sum += uWeights[k] * (tap(p, k, size) + tap(p, -k, size));

@@ -1,14 +1,15 @@
-#include "techniques/shadowmap/SeparableBlur.h"
+#include "techniques/gl/SeparableBlur.h"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/Error.h"
 
 namespace sb {
 
 namespace {
-constexpr GLint kLayerLocation = 0;    // shaders/shadowmap/blur.frag
+constexpr GLint kLayerLocation = 0;    // shaders/common/blur.frag
 constexpr GLint kExponentLocation = 1; // ...
 constexpr GLint kWeightsLocation = 2;  // uWeights[BLUR_RADIUS + 1]
 
@@ -66,22 +67,28 @@ void SeparableBlur::allocate(int resolution, GLenum format) {
     mFormat = format;
 }
 
-std::string SeparableBlur::compile(ProgramCache& programs, Mode mode, int width, int resolution,
-                                   GLenum format) {
-    mWeights = weights(width);
-    mMode = mode;
+std::string SeparableBlur::compile(ProgramCache& programs, const Settings& settings) {
+    const bool pointSampled = settings.kernel == Kernel::PointSampled;
+    if (pointSampled && settings.mode == Mode::LogSpace)
+        throw std::invalid_argument("SeparableBlur: the log-space mode takes the texel-integral kernel");
+    mSettings = settings;
+    mWeights = pointSampled ? std::vector<float>{1.0f} : weights(settings.size);
+    mRadius = pointSampled ? std::max(0, settings.size) : int(mWeights.size()) - 1;
     mHorizontal = mVertical = nullptr;
-    if (radius() == 0) {
+    if (mRadius == 0) {
         release(); // no intermediate needed without a kernel
         return "";
     }
-    allocate(resolution, format);
+    allocate(settings.resolution, settings.format);
     if (!mEmptyVao) glCreateVertexArrays(1, &mEmptyVao);
-    Defines defines = {{"BLUR_RADIUS", std::to_string(radius())}};
-    if (mode == Mode::LogSpace) defines["LOG_SPACE"] = "";
-    mVertical = &programs.get({"common/fullscreen.vert", "shadowmap/blur.frag", ""}, defines);
+    // TexelIntegral, ClampToEdge and Linear are the shader's defaults: no define.
+    Defines defines = {{"BLUR_RADIUS", std::to_string(mRadius)}};
+    if (pointSampled) defines["BLUR_POINT_SAMPLED"] = "";
+    if (settings.border == Border::One) defines["BLUR_OUTSIDE_ONE"] = "";
+    if (settings.mode == Mode::LogSpace) defines["LOG_SPACE"] = "";
+    mVertical = &programs.get({"common/fullscreen.vert", "common/blur.frag", ""}, defines);
     defines["BLUR_FROM_ARRAY"] = "";
-    mHorizontal = &programs.get({"common/fullscreen.vert", "shadowmap/blur.frag", ""}, defines);
+    mHorizontal = &programs.get({"common/fullscreen.vert", "common/blur.frag", ""}, defines);
     return mHorizontal->key() + "|" + mVertical->key();
 }
 
@@ -89,31 +96,33 @@ void SeparableBlur::pass(const Program& program, GLuint source, int layer) const
     program.use();
     // Only the uniforms the program has: setting an inactive location is a GL error.
     if (layer >= 0) glUniform1i(kLayerLocation, layer);
-    if (mMode == Mode::LogSpace) glUniform1f(kExponentLocation, mExponent);
-    glUniform1fv(kWeightsLocation, GLsizei(mWeights.size()), mWeights.data());
+    if (mSettings.mode == Mode::LogSpace) glUniform1f(kExponentLocation, mExponent);
+    if (mSettings.kernel == Kernel::TexelIntegral)
+        glUniform1fv(kWeightsLocation, GLsizei(mWeights.size()), mWeights.data());
     glBindTextureUnit(0, source);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindTextureUnit(0, 0); // the source may be the next pass's target
 }
 
-double SeparableBlur::apply(GLuint array, const std::vector<GLuint>& layerFbos,
-                            const std::vector<uint8_t>& layers) {
-    if (!mHorizontal) return 0.0;
+SeparableBlur::Work SeparableBlur::apply(GLuint array, const std::vector<GLuint>& layerFbos,
+                                         const std::vector<uint8_t>& layers) {
+    Work work;
+    if (!mHorizontal) return work;
     glViewport(0, 0, mResolution, mResolution);
     glDisable(GL_DEPTH_TEST); // full-screen passes: the layer's depth buffer is not touched
     glBindVertexArray(mEmptyVao);
-    double texels = 0.0;
     for (size_t i = 0; i < layerFbos.size() && i < layers.size(); ++i) {
         if (!layers[i]) continue; // a constant layer (no caster) is its own blur
         glBindFramebuffer(GL_FRAMEBUFFER, mFbo);
         pass(*mHorizontal, array, int(i));
         glBindFramebuffer(GL_FRAMEBUFFER, layerFbos[i]);
         pass(*mVertical, mTexture, -1);
-        texels += 2.0 * double(mResolution) * mResolution;
+        work.passes += 2;
+        work.texels += 2.0 * double(mResolution) * mResolution;
     }
     glBindVertexArray(0);
     glEnable(GL_DEPTH_TEST);
-    return texels;
+    return work;
 }
 
 } // namespace sb
