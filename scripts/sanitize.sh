@@ -16,15 +16,6 @@ bash "$root/scripts/install-deps.sh"
 # shellcheck source=tools/sanitizers/options.sh
 source "$root/tools/sanitizers/options.sh"
 
-# The test binaries a label needs, by the naming rule of tests/CMakeLists.txt.
-targets=(bench handloop)
-for src in "$root"/tests/*Test.cpp; do
-  name="$(basename "$src" .cpp)"
-  case "$name" in *GLTest) label=gl ;; *VkTest) label=vulkan ;; *CliTest) label=cli ;; *) label=unit ;; esac
-  for want in "${labels[@]}"; do [ "$want" = "$label" ] && targets+=("$name"); done
-done
-for want in "${labels[@]}"; do [ "$want" = hard ] && targets+=(HardCaseTest); done
-
 launcher=()
 if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -32,6 +23,12 @@ fi
 cd "$root"
 start=$SECONDS
 cmake --preset asan "${launcher[@]}" >/dev/null
+# The test binaries a label needs: tests/CMakeLists.txt labels every test target and writes the list,
+# one "<target> <label>" a line, to build-asan/tests/TestLabels.txt when it configures.
+targets=(bench handloop)
+while read -r name label; do
+  for want in "${labels[@]}"; do [ "$want" = "$label" ] && targets+=("$name"); done
+done <build-asan/tests/TestLabels.txt
 cmake --build build-asan --parallel "$(nproc)" --target "${targets[@]}"
 echo "sanitize: build ${#targets[@]} targets: $((SECONDS - start)) s"
 

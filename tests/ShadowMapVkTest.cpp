@@ -8,9 +8,8 @@
 
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
-#include "VkTestSupport.h"
+#include "VulkanFrame.h"
 #include "bench/lib/harness/VulkanHarness.h"
-#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 
@@ -41,16 +40,11 @@ void judgeOnSphere(const Case& tc, Band band) {
     RunConfig cfg = test::quickConfig("sphere_plane", "top", kSize, tc.submit);
     cfg.sceneOptions.tessellation = 64;
     cfg.sceneOptions.lightType = LightType::Directional;
-    cfg.api = RunConfig::Api::Vulkan;
-    cfg.vulkan.validation = true;
-    VulkanHarness h(cfg);
-    auto technique = TechniqueRegistry::createVulkan(TechniqueSpec::parse(tc.spec));
-    h.prepare(*technique);
-    h.renderFrame(*technique);
-    test::judgeSphereShadow(h.scene(), band(h.scene(), technique->properties()), h.targets().readDepth(),
-                            h.targets().readVisibilityRGBA32F(), h.projection() * h.view(), kSize);
-    EXPECT_EQ(test::validationErrorLog(h.context()), "");
-    technique.reset(); // before the device goes
+    test::VulkanFrame frame(cfg, tc.spec);
+    VulkanHarness& h = frame.harness();
+    test::judgeSphereShadow(h.scene(), band(h.scene(), frame.technique().properties()),
+                            h.targets().readDepth(), h.targets().readVisibilityRGBA32F(),
+                            h.projection() * h.view(), kSize);
 }
 
 class SphereShadowVulkan : public ::testing::TestWithParam<Case> {};
