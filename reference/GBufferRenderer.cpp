@@ -9,7 +9,7 @@
 namespace sb {
 
 namespace {
-constexpr GLint kViewProjLocation = 8; // reference/gbuffer.vert (0..3 and 4 are the instance uniforms)
+constexpr GLint kViewProjLocation = 8; // shaders/reference/gbuffer.vert (0..3 and 4 are the instance uniforms)
 
 /// The state render() changes, captured so it can be put back: a technique calls the renderer in the
 /// middle of its frame and must find its own state unchanged afterwards.
@@ -70,7 +70,7 @@ struct SavedState {
     }
 };
 
-/// The rasterisation of the harness's frame state (bench/Harness.cpp setFrameState) that every
+/// The rasterisation of the harness's frame state (bench/lib/harness/Harness.cpp setFrameState) that every
 /// lighting pass draws with: a sample here must be the very pixel the technique shades.
 void setLightingPassState() {
     glEnable(GL_DEPTH_TEST);

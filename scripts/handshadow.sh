@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench's shadow map against the hand-written one (bench/handshadow/), side by side in one run:
+# bench's shadow map against the hand-written one (bench/handwritten/handshadow/), side by side in one run:
 # alternating processes A B B A A B ... (ROUNDS of each), `bench -t shadowmap:resolution=MAP` and
 # `handshadow --map-size MAP` on the same scene, camera and size. Prints every round, both medians of the
 # per-run medians (wall = submit + glFinish, and CPU submit) and the median ratio bench/hand with its

@@ -1,4 +1,4 @@
-// `-t auto` through the bench binary (bench/select/): the first run measures every candidate on this
+// `-t auto` through the bench binary (bench/lib/select/): the first run measures every candidate on this
 // machine and caches them; a second run reads the cache and measures nothing; costs written into the
 // cache (an injected calibration) move the choice, and a candidate whose cached error misses the bound
 // is passed over however cheap. The chosen technique's row records the choice and the candidates.

@@ -1,4 +1,4 @@
-// `bench merge` (bench/CsvMerge.h): shard CSVs of one sweep joined into one file, sorted by
+// `bench merge` (bench/lib/output/CsvMerge.h): shard CSVs of one sweep joined into one file, sorted by
 // config_index with the union of the headers, and every way inputs can fail to fit together refused
 // with a message naming the file. Expected files are written out by hand and compared exactly; every
 // refusal also checks that nothing was written (no output, no temporary file).

@@ -1,4 +1,4 @@
-// Instructions per measured frame, measured for real: the bench under callgrind (bench/ci/InstructionCount).
+// Instructions per measured frame, measured for real: the bench under callgrind (bench/lib/callgrind/InstructionCount).
 //  - TheMeasuredBinaryRunsUnderValgrind: one frame of the bench under callgrind, on whatever CPU runs the
 //    suite, failing with the one-line reason when valgrind cannot run it (a library executing an
 //    instruction valgrind's CPU does not know, as OpenImageIO's libhwy did on CPUs whose CPUID hides

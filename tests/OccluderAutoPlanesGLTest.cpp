@@ -1,6 +1,6 @@
 // `occluder` on model files without given planes (--model): the planes ShadowPlaneChooser picks must
 // shadow better than no shadow at all, judged against the exact Embree reference at the same pixels (the
-// hard-case table's measure, bench/run/AccuracyEvaluator), on glmark2's horse and cat; a convex model,
+// hard-case table's measure, bench/lib/measure/AccuracyEvaluator), on glmark2's horse and cat; a convex model,
 // which casts no shadow on itself, yields no useful plane and must say so on stderr and in the row
 // (counter no_useful_planes).
 //

@@ -1,4 +1,4 @@
-// Unit tests of techniques/ProxyIndexGrid (the IndexMap, OpenGL Insights ShadowProxies section 1.3):
+// Unit tests of techniques/proxy/ProxyIndexGrid (the IndexMap, OpenGL Insights ShadowProxies section 1.3):
 // cell rectangles against hand-computed projections, numbering of the proxies in view, clipping,
 // proxies reaching behind the eye, indices above 255, and counted overflow.
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,4 +1,4 @@
-// Result rows as CSV, JSON and Markdown (bench/RowExport.h). Every expected text is written out by
+// Result rows as CSV, JSON and Markdown (bench/lib/output/RowExport.h). Every expected text is written out by
 // hand and compared exactly: JSON typing per column, escaping, the Markdown common-value list, padding
 // and alignment.
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Unit tests of techniques/ShadowPlane: equations 6 and 8 of the occluder-texture thesis against
+// Unit tests of scenes/ShadowPlane: equations 6 and 8 of the occluder-texture thesis against
 // hand-computed hits, against the appendix's own z = 0 shortcut (equation 7) and tail-fin code with
 // its constants, the false-shadow sign, the parallel-light guard, and the affinity that lets the
 // vertex shader compute coordinates per vertex and the rasteriser interpolate them exactly.

@@ -1,4 +1,4 @@
-// Unit tests of techniques/ShadowVolumeMesh (GPU Gems ch. 9, sections 9.2.2-9.3.6 and 9.5.1): welding
+// Unit tests of techniques/volume/ShadowVolumeMesh (GPU Gems ch. 9, sections 9.2.2-9.3.6 and 9.5.1): welding
 // and adjacency against the counts of the generators' closed forms (Euler characteristic), the volumes
 // against the topological rule that makes stencil counting work (a closed, consistently oriented
 // surface: every directed edge matched by its reverse) and against closed-form volumes, and the

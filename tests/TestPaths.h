@@ -5,7 +5,7 @@
 namespace sb::test {
 const char* sourceDir();   ///< the source tree's root
 const char* benchBinary(); ///< the bench executable of this build
-const char* handshadowBinary(); ///< the hand-written shadow map (bench/handshadow/) of this build
+const char* handshadowBinary(); ///< the hand-written shadow map (bench/handwritten/handshadow/) of this build
 } // namespace sb::test
 
 #define SB_SOURCE_DIR ::sb::test::sourceDir()

@@ -1,4 +1,4 @@
-// bench/output/TextColumns: the console tables' layout. The answers are the cells put in: a column
+// bench/lib/output/TextColumns: the console tables' layout. The answers are the cells put in: a column
 // starts where the widest cell before it ends plus the gap, so splitting a line at the column starts
 // gives the cells back, whatever their widths.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Unit tests of techniques/VolumeGeometry (GPU Gems ch. 9, sections 9.2.3, 9.5.2-9.5.4, 9.6.2-9.6.3):
+// Unit tests of techniques/volume/VolumeGeometry (GPU Gems ch. 9, sections 9.2.3, 9.5.2-9.5.4, 9.6.2-9.6.3):
 // every expectation is a value worked out by hand for a camera at the origin looking down -z with a
 // 90 degree field of view (so x_ndc = x / -z and y_ndc = y / -z), or a closed form.
 #include <cmath>

@@ -1,5 +1,5 @@
 // Per-frame data shared by every technique (std140 UBO, binding 0), written once per frame by the
-// harness (bench/FrameUniforms). Mirrors struct FrameUniformData in techniques/FrameUniforms.h.
+// harness (techniques/gl/FrameUniforms, techniques/vulkan/VulkanFrameBlock). Mirrors struct FrameUniformData in techniques/FrameBlock.h.
 layout(std140, binding = 0) uniform Frame {
     mat4 uView;
     mat4 uProj;

@@ -1,10 +1,10 @@
-// Per-instance data as the Submitter provides it (techniques/Submitter.h):
+// Per-instance data as the Submitter provides it (techniques/gl/ and techniques/vulkan/):
 //  - immediate, displaylist, retained: uniforms at fixed locations, set before each draw;
 //  - instanced (SB_INSTANCED): per-instance vertex attributes (divisor 1);
 //  - Vulkan per-instance draws (VULKAN): the push constants of common/push.glsl.
 // Instances have uniform scale only, so mat3(model) transforms normals up to length.
 // The colour's w is the 1-based object id, negative for an instance that receives no shadow
-// (Submitter::shadowSignedId): read the id as abs(w).
+// (shadowSignedId in scenes/DrawSet.h): read the id as abs(w).
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 #ifdef SB_INSTANCED

@@ -1,3 +1,3 @@
-// Receiver marking (techniques/common/ReceiverStencil, for `planar` and `blob`): no colour (the colour
+// Receiver marking (techniques/gl/ReceiverStencil, for `planar` and `blob`): no colour (the colour
 // masks are off); the stencil op does the work.
 void main() {}

@@ -1,4 +1,4 @@
-// Receiver marking (techniques/common/ReceiverStencil, for `planar` and `blob`): a receiver plane's
+// Receiver marking (techniques/gl/ReceiverStencil, for `planar` and `blob`): a receiver plane's
 // rectangle (world space), pulled towards the eye by glPolygonOffset so it wins the depth test against
 // the receiver it lies on.
 #include "common/frame.glsl"

@@ -1,4 +1,4 @@
-// Occluder-texture bake (techniques/OccluderTextures.cpp): an orthographic view along the shadow
+// Occluder-texture bake (techniques/occluder/OccluderTextures.cpp): an orthographic view along the shadow
 // plane's normal onto its [0, 1]^2 texture square (equation 8 of the thesis), one texel per pixel.
 // BAKE_CLIP: the cross-section's marking pass, clipped to the normal's side of the plane (only this
 // permutation writes gl_ClipDistance: llvmpipe clips on a written distance even with

@@ -20,7 +20,7 @@ in vec4 vColorId;
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
-// One proxy in view, in the order the CPU numbered them (techniques/ProxyTechnique.h, GpuProxy).
+// One proxy in view, in the order the CPU numbered them (techniques/proxy/ProxyGL.h, GpuProxy).
 // The chapter packs each proxy into one mat4 and builds its transform per fragment; here the inverse
 // is computed once per proxy on the CPU (Listing 1.1's inverse(proxy) per fragment and proxy would be
 // the most expensive line of the loop).

@@ -2,7 +2,7 @@
 // ch. 12, renders one pass per face; a geometry shader with gl_Layer does the six in one). Each
 // triangle goes only to the faces whose frustum it may touch: it is dropped from a face when all
 // three vertices lie outside one plane of that face's clip volume (the conservative outcode test of
-// techniques/common/InstanceCulling, per triangle). Layer = uLayerBase + face, uLayerBase = 6 * the
+// scenes/InstanceCulling, per triangle). Layer = uLayerBase + face, uLayerBase = 6 * the
 // light's cube in the GL_TEXTURE_CUBE_MAP_ARRAY; face order +X, -X, +Y, -Y, +Z, -Z.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 18) out;

@@ -2,7 +2,7 @@
 // (Williams 1978; the thesis section 2.4). HW_COMPARE uses a depth-compare sampler with bilinear
 // filtering of the comparison results (the "hardware PCF" of every GPU since the GeForce 3); without
 // it, nearest depth fetches are compared in the shader.
-// Kernels (techniques/shadowmap/ShadowMapTechnique.h): by default PCF_SIZE x PCF_SIZE taps, one texel
+// Kernels (techniques/shadowmap/ShadowMapGL.h): by default PCF_SIZE x PCF_SIZE taps, one texel
 // apart. KERNEL_POISSON: uKernelTaps taps of a fixed Poisson disk (Fernando 2005, Percentage-Closer Soft
 // Shadows, section 3), uKernel in texels. KERNEL_ROTATED_GRID: a uKernelTaps = n x n grid rotated per pixel
 // by 2 pi times interleaved gradient noise of the pixel (Jimenez 2014, Next Generation Post Processing in

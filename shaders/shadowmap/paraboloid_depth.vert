@@ -6,7 +6,7 @@
 // edges and interpolates depth linearly between them: a long straight edge, which should map to an
 // arc, is a chord, and the middle of a large face, nearer to the light than its vertices, gets a
 // depth too far (light leaks through it). The known limit of the method: tessellation matters
-// (techniques/shadowmap/ParaboloidTechnique.h).
+// (techniques/shadowmap/ParaboloidGL.h).
 #include "common/instance.glsl"
 #include "shadowmap/paraboloid_frame.glsl"
 

@@ -3,7 +3,7 @@
 // per point light, the front one around -Y (the scene below the light), the back one around +Y. In a
 // hemisphere's frame (z along its axis) a unit direction d maps to (d.x, d.y) / (1 + d.z), the whole
 // hemisphere (d.z >= 0) to the unit disc; depth is the distance to the light, linear between near
-// and far. techniques/shadowmap/ParaboloidTechnique.cpp uses the same axes for its culling.
+// and far. techniques/shadowmap/ParaboloidGL.cpp uses the same axes for its culling.
 
 // Light-to-point vector `v` (world) in hemisphere `half_`'s frame (0 front, 1 back). Front: x = X,
 // y = Z, z = -Y (right-handed); back: the front frame turned 180 degrees about x.

@@ -1,5 +1,5 @@
 // `pcss` lighting pass: Percentage-Closer Soft Shadows (Fernando 2005, SIGGRAPH sketch; the NVIDIA
-// whitepaper's three steps), per light (techniques/shadowmap/PcssTechnique.h has the derivation):
+// whitepaper's three steps), per light (techniques/shadowmap/Pcss.h has the derivation):
 //   1. blocker search over the region the light covers seen from the receiver through the map's near
 //      plane, in raw depths (uDepthMap: a sampler without comparison);
 //   2. penumbra width by similar triangles, w = L (d_r - d_b) / d_b, from the average blocker depth;

@@ -1,4 +1,4 @@
-// The viewer's overlay (bench/viewer/Overlay.h): quads given in window pixels, y down; mode 0 the
+// The viewer's overlay (bench/lib/viewer/Overlay.h): quads given in window pixels, y down; mode 0 the
 // dimmed box, 1 text, 2 the colour bar.
 layout(location = 0) in vec2 aPixel;
 layout(location = 1) in vec2 aUv;

@@ -1,4 +1,4 @@
-// The viewer's false-colour ramp for visibility (bench/viewer/VisibilityView.h): dark blue (0, shadowed)
+// The viewer's false-colour ramp for visibility (bench/lib/viewer/VisibilityView.h): dark blue (0, shadowed)
 // through purple and orange to pale yellow (1, lit); NaN magenta, anything outside [0, 1] green.
 vec3 sbVisibilityRamp(float v) {
     if (isnan(v)) return vec3(1.0, 0.0, 1.0);

@@ -1,4 +1,4 @@
-// One light's visibility through the ramp (bench/viewer/VisibilityView.h). texelFetch, not texture():
+// One light's visibility through the ramp (bench/lib/viewer/VisibilityView.h). texelFetch, not texture():
 // the target's sampler state stays untouched. Window and target are both bottom-up, as the colour
 // view's blit maps them.
 #include "viewer/ramp.glsl"

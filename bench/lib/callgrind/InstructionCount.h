@@ -73,7 +73,7 @@ public:
     /// Runs the child and reads its dumps. Throws Error: BadInput for --format in benchArgs,
     /// Unsupported when valgrind does not run or cannot run the bench on this CPU (an instruction its
     /// VEX does not know: the one-line reason names it, the function and library, and the log file;
-    /// bench/ci/ValgrindDiagnosis), Failure when the bench fails, times out, or its dumps do not match
+    /// bench/lib/callgrind/ValgrindDiagnosis), Failure when the bench fails, times out, or its dumps do not match
     /// its rows (a technique measured without a dump: a bench built without SB_HAVE_VALGRIND).
     InstructionRun run() const;
 

@@ -1,6 +1,6 @@
 #pragma once
 // An 8-bit RGB picture in memory, top row first: what the error maps, difference maps and contact sheets
-// (this folder) draw into before bench/output/ImageWriter writes them as PNG. Pure CPU, no GL, so every
+// (this folder) draw into before bench/lib/output/ImageWriter writes them as PNG. Pure CPU, no GL, so every
 // picture is unit-testable pixel by pixel (tests/ErrorMapTest.cpp).
 #include <cstdint>
 #include <vector>

@@ -21,7 +21,7 @@ struct RowFormatEntry {
     bool text;        ///< a text export of the rows (`bench export` writes only these)
 };
 const NameTable<RowFormatEntry>& rowFormats();
-/// "console", "csv", "json", "md" (also "markdown"), "gbench", "gh-benchmark" (bench/output/
+/// "console", "csv", "json", "md" (also "markdown"), "gbench", "gh-benchmark" (bench/lib/output/
 /// DashboardExport.h); exact, lower case. Throws sb::Error(BadInput)
 /// naming the bad value and listing the valid names.
 RowFormat parseRowFormat(const std::string& name);
