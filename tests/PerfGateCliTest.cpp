@@ -159,6 +159,8 @@ TEST_F(PerfGateCliTest, BadInputIsExitTwo) {
     EXPECT_EQ(test::runCommand(bench + " ci --layers D").exitCode, 2);
     EXPECT_EQ(test::runCommand(bench + " ci --configs no_such_config --quick --out " + mDir).exitCode, 2);
     EXPECT_EQ(test::runCommand(bench + " ci --quick --baseline " + mDir + "/none --out " + mDir).exitCode, 2);
+    // A missing baseline is found before the suite runs: no configuration was measured.
+    EXPECT_FALSE(std::filesystem::exists(mDir + "/work.csv"));
     EXPECT_EQ(test::runCommand(bench + " compare " + mDir + "/missing.csv " + mDir + "/missing.csv").exitCode,
               2);
 }

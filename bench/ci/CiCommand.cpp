@@ -225,6 +225,12 @@ int CiCommand::main(int argc, char** argv) {
             CiSide{"base", o.baseBench.empty() ? head.bench : o.baseBench, parseEnv(o.baseEnv, "--base-env")};
     if (o.update && base)
         throw Error("--update writes the head's baseline; it takes no --base-bench/--base-env");
+    // A missing committed baseline is bad input, said before the suite runs rather than after it.
+    if (!o.update && !base && hasLayer(o.layers, 'A')) {
+        const std::string basePath = (fs::path(baselineDir) / "work.csv").string();
+        if (!fs::exists(basePath))
+            throw Error("no committed baseline " + basePath + " (write one with bench ci --update)");
+    }
     fs::create_directories(o.outDir);
     AtomicFile::checkWritable((fs::path(o.outDir) / "report.md").string(), "the report");
 
@@ -262,8 +268,6 @@ int CiCommand::main(int argc, char** argv) {
                                     std::to_string(headRows.rows.size()) + " configurations)");
         } else {
             const std::string basePath = (fs::path(baselineDir) / "work.csv").string();
-            if (!base && !fs::exists(basePath))
-                throw Error("no committed baseline " + basePath + " (write one with bench ci --update)");
             const CsvTable baseRows =
                 base ? workRows(suite, configs, *base) : onlyConfigs(CsvWriter::read(basePath), configs);
             if (base) writeRows((fs::path(o.outDir) / "work_base.csv").string(), baseRows);

@@ -36,12 +36,13 @@ std::string defaultDiffDir() {
     return (std::filesystem::temp_directory_path() / "shadowbench-golden-diff").string();
 }
 
-/// results/goldens of the source tree: the first search root that has a results/ folder.
+/// results/goldens of the source tree (or of an install): the first search root that has one. A results/
+/// folder without goldens (a run's output beside the binary) is not it.
 std::string defaultGoldenDir() {
     for (const std::string& root : Paths::searchRoots())
-        if (std::filesystem::is_directory(std::filesystem::path(root) / "results"))
+        if (std::filesystem::is_directory(std::filesystem::path(root) / "results" / "goldens"))
             return (std::filesystem::path(root) / "results" / "goldens").string();
-    throw Error("cannot find the source tree's results/ folder: pass --dir", ExitCode::Failure);
+    throw Error("cannot find the source tree's results/goldens folder: pass --dir", ExitCode::Failure);
 }
 
 std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
