@@ -5,8 +5,8 @@
 set -euo pipefail
 
 PACKAGES=(
-  # toolchain
-  build-essential cmake ninja-build pkg-config git
+  # toolchain (lld: the linker of every build, CMakeLists.txt says why)
+  build-essential cmake ninja-build pkg-config git lld
   # GL platform: EGL + Mesa llvmpipe, OSMesa fallback, GLFW window, libepoxy loader
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libglfw3-dev libepoxy-dev
   # Vulkan: the loader and headers, lavapipe (Mesa's CPU device), the Khronos validation layer the

@@ -127,6 +127,6 @@ TEST(ApitraceHandoff, RewritesOnlyTheGlxTracerEntry) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryTechnique, Apitrace, ::testing::ValuesIn(TechniqueRegistry::names()),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& param) { return param.param; });
 
 } // namespace

@@ -72,8 +72,9 @@ TEST(CasterCulling, TheFrameIsTheSameAndTheWorkDrops) {
             EXPECT_LT(test::counter(a.counters, "triangles"), test::counter(b.counters, "triangles"));
             // Instanced mode draws each run of kept instances with one call (no upload), so culling
             // trades one call per mesh for a call per run: fewer triangles, not fewer draws.
-            if (mode != SubmitMode::Instanced)
+            if (mode != SubmitMode::Instanced) {
                 EXPECT_LT(test::counter(a.counters, "draw_calls"), test::counter(b.counters, "draw_calls"));
+            }
         }
     }
 }

@@ -30,7 +30,9 @@ TEST(ProxyIndexGridTest, CellsCoverTheProjectedInfluenceBounds) {
         for (int x = 0; x < 4; ++x) {
             const bool expected = x <= 1 && y == 2;
             EXPECT_EQ(g.count(x, y), expected ? 1u : 0u) << x << "," << y;
-            if (expected) EXPECT_EQ(g.cell(x, y)[0], 1u); // visible index 0, stored + 1
+            if (expected) {
+                EXPECT_EQ(g.cell(x, y)[0], 1u); // visible index 0, stored + 1
+            }
         }
     EXPECT_EQ(g.overflow(), 0u);
 }

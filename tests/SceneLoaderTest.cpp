@@ -623,8 +623,9 @@ TEST(SceneLoaderTest, ProxyFitsOneProxyPerObjectOfAModel) {
             const glm::vec3 q(toUnit * inst.model * glm::vec4(p, 1.0f));
             ASSERT_TRUE(insideUnitShape(proxies[k].shape, q, 1e-4f)) << s.meshes[inst.mesh].name;
         }
-        if (s.meshes[inst.mesh].name.find("Box05") != std::string::npos)
+        if (s.meshes[inst.mesh].name.find("Box05") != std::string::npos) {
             EXPECT_LT(std::abs(glm::determinant(proxies[k].frame)) * 8.0f, 0.05f * roomVolume);
+        }
     }
 }
 
