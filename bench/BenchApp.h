@@ -15,8 +15,8 @@ public:
     static int dispatch(int argc, char** argv);
     /// Fixes glibc's heap trim and mmap thresholds (BenchApp.cpp says why: heap trimming churn made
     /// frame times depend on heap layout). Called by main() and by handloop.
-    /// `bench --version`: version, the commit the binary was built from (bench/lib/rows/BuildInfo.h), build type
-    /// and compiler, and the folder its shaders and scenes are read from.
+    /// `bench --version`: version, the commit the binary was built from (bench/lib/rows/BuildInfo.h), build
+    /// type and compiler, and the folder its shaders and scenes are read from.
     static std::string versionText();
     /// The end of `bench --help`: the modes, examples and exit codes.
     static std::string helpFooter();

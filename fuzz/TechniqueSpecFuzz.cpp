@@ -15,8 +15,8 @@
 #include "bench/lib/sweep/SweepPlan.h"
 #include "core/Error.h"
 #include "fuzz/FuzzReach.h"
-#include "techniques/PropertySet.h"
 #include "registry/TechniqueRegistry.h"
+#include "techniques/PropertySet.h"
 
 namespace {
 

@@ -49,8 +49,8 @@ GLuint compileStage(const std::string& root, const std::string& file, const Defi
     std::string log = preprocessor.mapLog(infoLog(shader, false));
     glDeleteShader(shader);
     std::string key = definesKey(defines);
-    throw Error("cannot compile " + std::string(stageName(stage)) + " shader '" + file +
-                    "'" + (key.empty() ? "" : " [" + key + "]") + ": " + leadWithFirstError(log),
+    throw Error("cannot compile " + std::string(stageName(stage)) + " shader '" + file + "'" +
+                    (key.empty() ? "" : " [" + key + "]") + ": " + leadWithFirstError(log),
                 ExitCode::Failure);
 }
 
@@ -114,7 +114,8 @@ void ProgramCache::clear() {
     mPrograms.clear();
 }
 
-std::string ProgramCache::preprocess(const std::string& file, const Defines& defines, ShaderStage stage) const {
+std::string ProgramCache::preprocess(const std::string& file, const Defines& defines,
+                                     ShaderStage stage) const {
     return ShaderPreprocessor(mRoot).build(file, defines, stage);
 }
 

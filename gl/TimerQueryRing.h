@@ -14,7 +14,6 @@
 
 namespace sb {
 
-
 class TimerQueryRing {
 public:
     explicit TimerQueryRing(int depth = 4, int maxPassesPerFrame = 16);

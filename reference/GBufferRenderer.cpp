@@ -9,7 +9,8 @@
 namespace sb {
 
 namespace {
-constexpr GLint kViewProjLocation = 8; // shaders/reference/gbuffer.vert (0..3 and 4 are the instance uniforms)
+constexpr GLint kViewProjLocation =
+    8; // shaders/reference/gbuffer.vert (0..3 and 4 are the instance uniforms)
 
 /// The state render() changes, captured so it can be put back: a technique calls the renderer in the
 /// middle of its frame and must find its own state unchanged afterwards.

@@ -19,12 +19,12 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Reference::declaration() {
     return {.name = "reference",
-                 .description = "exact visibility by ray tracing (Intel Embree): the ground truth",
-                 .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
-                            Effect::NonPlanarReceivers | Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"gbuffer", "trace", "shade"},
-                 .properties = declareProperties()};
+            .description = "exact visibility by ray tracing (Intel Embree): the ground truth",
+            .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
+                       Effect::NonPlanarReceivers | Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"gbuffer", "trace", "shade"},
+            .properties = declareProperties()};
 }
 
 } // namespace sb

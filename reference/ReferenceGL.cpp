@@ -9,11 +9,9 @@ namespace sb {
 namespace {
 constexpr uint32_t kSeed = 1; // fixed: the same frame traces to the same image, frame after frame
 
-
 } // namespace
 
-ReferenceGL::ReferenceGL()
-    : GlTechnique(Reference::declaration()) {}
+ReferenceGL::ReferenceGL() : GlTechnique(Reference::declaration()) {}
 
 ReferenceGL::~ReferenceGL() {
     releaseTexture();

@@ -14,9 +14,9 @@
 #include "reference/EmbreeScene.h"
 #include "reference/GBuffer.h"
 #include "reference/GBufferRenderer.h"
+#include "reference/Reference.h"
 #include "reference/ReferenceTracer.h"
 #include "techniques/gl/GlTechnique.h"
-#include "reference/Reference.h"
 
 namespace sb {
 

@@ -14,9 +14,9 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/DrawSet.h"
 #include "scenes/Mesh.h"
 #include "scenes/Scene.h"
-#include "scenes/DrawSet.h"
 
 namespace sb {
 

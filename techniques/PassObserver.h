@@ -1,7 +1,7 @@
 #pragma once
-// A hook on the pass boundaries of one frame (PassTimer): the exact-work census (bench/lib/harness/WorkCensus.h)
-// wraps each pass of an UNTIMED frame in its own counters. Timed frames run with no observer, so the
-// measured path pays one null-pointer test per pass and nothing else.
+// A hook on the pass boundaries of one frame (PassTimer): the exact-work census
+// (bench/lib/harness/WorkCensus.h) wraps each pass of an UNTIMED frame in its own counters. Timed frames run
+// with no observer, so the measured path pays one null-pointer test per pass and nothing else.
 namespace sb {
 
 class PassObserver {

@@ -36,9 +36,9 @@ struct QualityKnob {
 };
 
 struct TechniqueInfo {
-    std::string name;        ///< registry name, lower case: "shadowmap"
-    std::string description; ///< one line for --list
-    EffectMask effects = 0;  ///< what it can produce
+    std::string name;                     ///< registry name, lower case: "shadowmap"
+    std::string description;              ///< one line for --list
+    EffectMask effects = 0;               ///< what it can produce
     std::vector<Capability> capabilities; ///< of every API's form (Capability::api says which)
     std::vector<std::string> passes;      ///< stable names: GPU timer scopes and CSV columns
     /// The passes that draw the scene as the camera sees it (shading the visible instances), a subset

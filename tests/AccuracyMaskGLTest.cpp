@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "reference/AccuracyMetrics.h"
 #include "scenes/Math.h"
 #include "techniques/shadowmap/ShadowMapGL.h"

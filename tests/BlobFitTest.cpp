@@ -36,8 +36,7 @@ float axisLength(const glm::vec4& a) {
 TEST(BlobFitTest, OverheadSunGivesTheFootprint) {
     // A 2x2x2 box from y = 2 to 4 under a sun straight down: the footprint [-1, 1]^2 (variance 1 on
     // every axis), the circle through its corners: radius sqrt(2) at the origin.
-    const auto b =
-        BlobGL::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({0, -1, 0}), 0, 1.0f, 0.5f, 8.0f);
+    const auto b = BlobGL::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({0, -1, 0}), 0, 1.0f, 0.5f, 8.0f);
     ASSERT_TRUE(b);
     EXPECT_NEAR(glm::length(glm::vec3(b->centre)), 0.0f, 1e-5f);
     EXPECT_NEAR(axisLength(b->axisU), std::sqrt(2.0f), 1e-5f);
@@ -52,8 +51,7 @@ TEST(BlobFitTest, OverheadSunGivesTheFootprint) {
 TEST(BlobFitTest, ObliqueSunStretchesAlongTheLight) {
     // Sun along (1, -1, 0): a corner at height h moves +h in x: x = 1, 3, 3, 5 (mean 3, variance 2),
     // z = +-1 (variance 1): centre (3, 0, 0), semi-axes 2 along x and sqrt(2) along z.
-    const auto b =
-        BlobGL::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({1, -1, 0}), 2, 1.0f, 0.0f, 8.0f);
+    const auto b = BlobGL::fit(box({-1, 2, -1}, {1, 4, 1}), ground(), sun({1, -1, 0}), 2, 1.0f, 0.0f, 8.0f);
     ASSERT_TRUE(b);
     EXPECT_NEAR(glm::distance(glm::vec3(b->centre), glm::vec3(3, 0, 0)), 0.0f, 1e-4f);
     const glm::vec3 u(b->axisU), v(b->axisV);
@@ -107,7 +105,7 @@ TEST(BlobFitTest, NoBlobWhereNoShadowCanBe) {
     EXPECT_FALSE(BlobGL::fit(b, ground(), below, 0, 1, 0.5f, 8));          // light under the ground
     EXPECT_FALSE(BlobGL::fit(b, ground(), sun({1, 0, 0}), 0, 1, 0.5f, 8)); // light in its plane
     EXPECT_FALSE(BlobGL::fit(box({-1, -4, -1}, {1, -2, 1}), ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8));
-    EXPECT_FALSE(BlobGL::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 0.5f)); // faded out (2 > 0.87)
+    EXPECT_FALSE(BlobGL::fit(b, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 0.5f));   // faded out (2 > 0.87)
     EXPECT_FALSE(BlobGL::fit(Aabb{}, ground(), sun({0, -1, 0}), 0, 1, 0.5f, 8)); // empty bounds
     Light under;
     under.type = LightType::Point;

@@ -19,8 +19,8 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
 #include "techniques/shadowmap/CascadedGL.h"

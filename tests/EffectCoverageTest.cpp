@@ -2,8 +2,8 @@
 // and sentences written out by hand for the built-in scenes' requests and the registry's declared effects.
 #include <gtest/gtest.h>
 
-#include "techniques/EffectCoverage.h"
 #include "registry/TechniqueRegistry.h"
+#include "techniques/EffectCoverage.h"
 
 using namespace sb;
 

@@ -14,8 +14,8 @@
 #include "TestSupport.h"
 #include "bench/golden/GoldenDiff.h"
 #include "bench/golden/GoldenImage.h"
-#include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/font/BitmapFont.h"
+#include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/images/ContactSheet.h"
 #include "bench/lib/images/DifferenceMap.h"
 #include "bench/lib/images/ErrorMap.h"
@@ -268,7 +268,8 @@ TEST(AccuracyImagesBitmapFont, EveryPrintableCharacterHasAGlyphAndOnlySpaceIsBla
     // top two rows blank.
     for (char c : std::string("acegmnopqrsuvwxyz"))
         for (int x = 0; x < BitmapFont::kGlyphWidth; ++x)
-            EXPECT_FALSE(BitmapFont::pixel(c, x, 0) || BitmapFont::pixel(c, x, 1)) << "'" << c << "' column " << x;
+            EXPECT_FALSE(BitmapFont::pixel(c, x, 0) || BitmapFont::pixel(c, x, 1))
+                << "'" << c << "' column " << x;
 }
 
 /// A map whose every pixel is distinct, so a copy at a wrong offset cannot pass.

@@ -1,7 +1,7 @@
-// The `handshadow` binary (bench/handwritten/handshadow/) end to end: it runs two frames at a small size, prints its
-// medians, and its image shows the shadow where the scene's closed form puts it and where bench's own
-// `shadowmap` draws it. The comparison with bench is what makes handshadow's timings worth anything:
-// a hand program that drew less (no shadow, a wrong light camera) would look faster for the wrong reason.
+// The `handshadow` binary (bench/handwritten/handshadow/) end to end: it runs two frames at a small size,
+// prints its medians, and its image shows the shadow where the scene's closed form puts it and where bench's
+// own `shadowmap` draws it. The comparison with bench is what makes handshadow's timings worth anything: a
+// hand program that drew less (no shadow, a wrong light camera) would look faster for the wrong reason.
 #include <cmath>
 #include <filesystem>
 

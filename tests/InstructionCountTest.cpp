@@ -15,10 +15,10 @@
 
 #include "TestPaths.h"
 #include "bench/lib/callgrind/CallgrindDump.h"
-#include "bench/lib/gate/Fingerprint.h"
 #include "bench/lib/callgrind/InstructionCount.h"
 #include "bench/lib/callgrind/InstructionDiff.h"
 #include "bench/lib/callgrind/ValgrindDiagnosis.h"
+#include "bench/lib/gate/Fingerprint.h"
 #include "core/Error.h"
 
 using namespace sb;

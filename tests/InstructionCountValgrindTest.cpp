@@ -1,4 +1,5 @@
-// Instructions per measured frame, measured for real: the bench under callgrind (bench/lib/callgrind/InstructionCount).
+// Instructions per measured frame, measured for real: the bench under callgrind
+// (bench/lib/callgrind/InstructionCount).
 //  - TheMeasuredBinaryRunsUnderValgrind: one frame of the bench under callgrind, on whatever CPU runs the
 //    suite, failing with the one-line reason when valgrind cannot run it (a library executing an
 //    instruction valgrind's CPU does not know, as OpenImageIO's libhwy did on CPUs whose CPUID hides
@@ -26,10 +27,10 @@
 #include <gtest/gtest.h>
 
 #include "TestPaths.h"
-#include "bench/lib/gate/Fingerprint.h"
 #include "bench/lib/callgrind/InstructionCount.h"
-#include "bench/lib/gate/InstructionLayer.h"
 #include "bench/lib/callgrind/ValgrindDiagnosis.h"
+#include "bench/lib/gate/Fingerprint.h"
+#include "bench/lib/gate/InstructionLayer.h"
 #include "core/Error.h"
 
 using namespace sb;

@@ -59,8 +59,8 @@ inline const std::vector<Layer>& layers() {
     const std::vector<std::string> glContract = plus(contract, {"gl", "techniques/gl"});
     const std::vector<std::string> vulkanContract = plus(contract, {"vk", "techniques/vulkan"});
     // What bench's folders stand on below bench/: every layer of the product.
-    const std::vector<std::string> belowBench = plus(plus(glContract, {"gl/backends", "vk", "techniques/vulkan"}),
-                                                     {"reference", "registry"});
+    const std::vector<std::string> belowBench =
+        plus(plus(glContract, {"gl/backends", "vk", "techniques/vulkan"}), {"reference", "registry"});
     auto lib = [&](std::initializer_list<const char*> libs) {
         std::vector<std::string> out = belowBench;
         for (const char* l : libs) out.push_back(std::string("bench/lib/") + l);
@@ -97,16 +97,20 @@ inline const std::vector<Layer>& layers() {
         {"bench/lib/measure", lib({"output", "options", "statistics", "harness", "rows"}), {}},
         // `-t auto`: the calibration runs frames through the harness and judges them like accuracy.
         {"bench/lib/select", lib({"output", "options", "statistics", "harness", "rows", "measure"}), {}},
-        {"bench/lib/viewer", lib({"output", "font", "options", "statistics", "harness"}), {"viewer", "common"}},
+        {"bench/lib/viewer",
+         lib({"output", "font", "options", "statistics", "harness"}),
+         {"viewer", "common"}},
         {"bench/lib/sweep", lib({"output", "options", "statistics", "harness", "rows", "measure"}), {}},
         {"bench/lib/bottleneck", lib({"output", "options", "statistics", "sweep"}), {}},
         // The performance gate: the suite, its runner and layers (work, instructions, wall time).
         {"bench/lib/gate", lib({"output", "options", "statistics", "sweep", "callgrind"}), {}},
         // One folder per subcommand, each on the libraries only (never on another subcommand).
-        {"bench/run", lib({"output", "options", "statistics", "harness", "rows", "measure", "select", "viewer",
-                           "images"}),
+        {"bench/run",
+         lib({"output", "options", "statistics", "harness", "rows", "measure", "select", "viewer", "images"}),
          {"common"}},
-        {"bench/explain", lib({"output", "options", "statistics", "harness", "rows", "measure", "select"}), {}},
+        {"bench/explain",
+         lib({"output", "options", "statistics", "harness", "rows", "measure", "select"}),
+         {}},
         {"bench/merge", lib({"output", "options"}), {}},
         {"bench/export", lib({"output", "options"}), {}},
         {"bench/sweep", lib({"output", "options", "sweep"}), {}},
@@ -308,7 +312,8 @@ inline bool isVulkanFile(const std::string& file) {
     const std::string folder = folderOf(file);
     const std::string name = fs::path(file).stem().string();
     return folder == "vk" || folder == "techniques/vulkan" ||
-           (layerOf(folder) == "techniques/*" && name.size() > 6 && name.compare(name.size() - 6, 6, "Vulkan") == 0);
+           (layerOf(folder) == "techniques/*" && name.size() > 6 &&
+            name.compare(name.size() - 6, 6, "Vulkan") == 0);
 }
 
 /// What a GL header is: a file of the GL layers, or a system header of GL's (epoxy, EGL, GL, GLFW).

@@ -20,9 +20,9 @@
 #include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
+#include "registry/TechniqueRegistry.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "registry/TechniqueRegistry.h"
 #include "techniques/gl/SeparableBlur.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
 

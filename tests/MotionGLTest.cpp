@@ -25,9 +25,9 @@
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
+#include "registry/TechniqueRegistry.h"
 #include "scenes/Motion.h"
 #include "scenes/SceneLoader.h"
-#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

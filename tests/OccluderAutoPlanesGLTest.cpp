@@ -1,7 +1,7 @@
 // `occluder` on model files without given planes (--model): the planes ShadowPlaneChooser picks must
 // shadow better than no shadow at all, judged against the exact Embree reference at the same pixels (the
-// hard-case table's measure, bench/lib/measure/AccuracyEvaluator), on glmark2's horse and cat; a convex model,
-// which casts no shadow on itself, yields no useful plane and must say so on stderr and in the row
+// hard-case table's measure, bench/lib/measure/AccuracyEvaluator), on glmark2's horse and cat; a convex
+// model, which casts no shadow on itself, yields no useful plane and must say so on stderr and in the row
 // (counter no_useful_planes).
 //
 // The models' orientation is whatever the model loader makes of the files (3DS files are Z-up, and the
@@ -19,8 +19,8 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;

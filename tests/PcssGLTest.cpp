@@ -26,8 +26,8 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "core/Error.h"
 #include "registry/TechniqueRegistry.h"
 #include "techniques/shadowmap/PcssGL.h"

@@ -14,8 +14,8 @@
 #include "RenderedFrame.h"
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
-#include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/Math.h"
 #include "techniques/planar/PlanarGL.h"
 
 using namespace sb;

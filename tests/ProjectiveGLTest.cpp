@@ -18,8 +18,8 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "scenes/Math.h"
 #include "techniques/projective/ProjectiveGL.h"
 
@@ -317,8 +317,7 @@ TEST_P(ProjectiveInside, ShadowsWhereTheReferenceDoesAndStaysFinite) {
     EXPECT_GE(double(both) / referenceShadow, 0.97) << both << " of " << referenceShadow;
     EXPECT_LE(falseShadow, judged / 100);
     EXPECT_EQ(test::counter(t.counters(), "projector_clamped"), c.clamped) << c.clampedWhy;
-    const ProjectiveGL::Projector p =
-        ProjectiveGL::computeProjector(h.scene(), h.scene().lights[0]);
+    const ProjectiveGL::Projector p = ProjectiveGL::computeProjector(h.scene(), h.scene().lights[0]);
     for (int col = 0; col < 4; ++col)
         for (int row = 0; row < 4; ++row) EXPECT_TRUE(std::isfinite(p.viewProj[col][row]));
     const NumericSanity sanity = AccuracyMetrics::sanity(s.techniqueRgba);

@@ -7,8 +7,8 @@
 
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
-#include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/Math.h"
 
 namespace sb::test {
 

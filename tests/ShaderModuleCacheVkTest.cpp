@@ -75,7 +75,8 @@ TEST_F(ShaderModuleCacheVkTest, CompileProducesSpirv) {
 
 TEST_F(ShaderModuleCacheVkTest, InlineErrorNamesTheSource) {
     try {
-        ShaderModuleCache::compile("#version 450\nvoid main() { x = 1; }\n", ShaderStage::Vertex, "inline.vert");
+        ShaderModuleCache::compile("#version 450\nvoid main() { x = 1; }\n", ShaderStage::Vertex,
+                                   "inline.vert");
         FAIL() << "compiled";
     } catch (const Error& e) {
         EXPECT_EQ(e.code(), ExitCode::Failure);

@@ -48,8 +48,8 @@
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
 #include "core/Error.h"
-#include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/SceneLoader.h"
 
 using namespace sb;
 

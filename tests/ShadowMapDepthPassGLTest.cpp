@@ -3,14 +3,14 @@
 // Both draw the same lit pass (every instance once, same targets), so the difference is the depth pass
 // alone: its primitives must be the casters' triangles, once per light, and nothing else (no receiver,
 // no ground plane, no full-screen quad for a clear or a copy). The hand-written program of
-// bench/handwritten/handshadow/ draws exactly this. Fragment counts are not pinned: llvmpipe counts fragment shader
-// invocations per shaded 4x4 block, not per covered pixel, so they depend on triangle size.
+// bench/handwritten/handshadow/ draws exactly this. Fragment counts are not pinned: llvmpipe counts fragment
+// shader invocations per shaded 4x4 block, not per covered pixel, so they depend on triangle size.
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
-#include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/SceneLoader.h"
 
 using namespace sb;
 

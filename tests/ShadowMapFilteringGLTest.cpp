@@ -16,11 +16,11 @@
 
 #include "RenderedFrame.h"
 #include "TestSupport.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "registry/TechniqueRegistry.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
-#include "registry/TechniqueRegistry.h"
 
 using namespace sb;
 

@@ -7,8 +7,8 @@
 
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
-#include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/SceneLoader.h"
 
 using namespace sb;
 

@@ -21,8 +21,8 @@
 #include <gtest/gtest.h>
 
 #include "TestPaths.h"
-#include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/options/RunConfig.h"
+#include "bench/lib/output/CsvWriter.h"
 
 namespace sb::test {
 

@@ -1,5 +1,5 @@
-// The GPU-timer verdict (bench/lib/harness/TimerTrust.h) as a measurement: on Mesa llvmpipe timer queries do not
-// measure the frame (vertex work runs inside the draw calls on the application thread, rasterisation in
+// The GPU-timer verdict (bench/lib/harness/TimerTrust.h) as a measurement: on Mesa llvmpipe timer queries do
+// not measure the frame (vertex work runs inside the draw calls on the application thread, rasterisation in
 // LP_NUM_THREADS threads during glFinish), so every calibration must come out untrusted, also when the
 // machine is loaded; the rule itself is checked on hand-made evidence, where the right answer is known.
 #include <gtest/gtest.h>
@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "bench/lib/rows/Environment.h"
 #include "bench/lib/harness/Harness.h"
-#include "bench/lib/rows/ResultRow.h"
 #include "bench/lib/harness/TimerTrust.h"
+#include "bench/lib/rows/Environment.h"
+#include "bench/lib/rows/ResultRow.h"
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/backends/BackendRegistry.h"

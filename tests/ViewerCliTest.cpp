@@ -3,7 +3,8 @@
 // (tests/ViewerCliTest.cpp parses the XWD format itself: no image tool is needed), and keys sent as a
 // user's taps. Checked against answers the viewer does not compute:
 //   - the overlay's text, pixel by pixel, against the glyphs of the bitmap font table
-//     (bench/lib/font/BitmapFont.h) at the position the overlay's header documents (bench/lib/viewer/Overlay.h);
+//     (bench/lib/font/BitmapFont.h) at the position the overlay's header documents
+//     (bench/lib/viewer/Overlay.h);
 //   - the light count against the scene file (scenes/data/sphere_plane.json), the timer line against
 //     what --no-timer-check means (verdict "unchecked");
 //   - one Tab tap, sent once and released at once (a tap between two frames, which polling lost),
@@ -29,8 +30,8 @@
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
-#include "bench/lib/viewer/Overlay.h"
 #include "bench/lib/font/BitmapFont.h"
+#include "bench/lib/viewer/Overlay.h"
 #include "bench/lib/viewer/RollingMedian.h"
 #include "registry/TechniqueRegistry.h"
 

@@ -12,8 +12,8 @@
 #include "RenderedFrame.h"
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
-#include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/Math.h"
 #include "techniques/volume/VolumeGeometry.h"
 
 using namespace sb;

@@ -176,8 +176,8 @@ TEST(VulkanCli, ListSaysWhichTechniquesHaveAVulkanFormAndTheDevices) {
     EXPECT_NE(r.output.find("vulkan devices"), std::string::npos) << r.output;
 }
 
-// One run loop serves both APIs (bench/lib/harness/MeasuredHarness.h): each option below was accepted and ignored,
-// or the loop answered differently, under --api vulkan while the two APIs had loops of their own.
+// One run loop serves both APIs (bench/lib/harness/MeasuredHarness.h): each option below was accepted and
+// ignored, or the loop answered differently, under --api vulkan while the two APIs had loops of their own.
 
 TEST(VulkanCli, SamplesAreWrittenOnVulkanAsOnGl) {
     const std::string dir = test::freshDir("vulkan-cli-samples");

@@ -12,11 +12,11 @@
 #include <gtest/gtest.h>
 
 #include "bench/lib/gate/Interleave.h"
+#include "bench/lib/gate/WallTimeVerdict.h"
 #include "bench/lib/statistics/MultipleTesting.h"
 #include "bench/lib/statistics/Normal.h"
 #include "bench/lib/statistics/RankTests.h"
 #include "bench/lib/statistics/WallTimeStats.h"
-#include "bench/lib/gate/WallTimeVerdict.h"
 #include "core/Error.h"
 #include "core/SplitMix64.h"
 

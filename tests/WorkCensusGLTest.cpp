@@ -1,7 +1,7 @@
-// The exact work per pass (bench/lib/harness/WorkCensus.h), layer A of the perf gate. Independent answers: the
-// passes must sum to one pipeline-statistics query wrapped around the whole frame (the census frame as
-// it was measured before passes were split), every pass's primitives are known from the scene (each
-// pass of `volume` and `shadowmap` draws a known set), and the counts repeat exactly.
+// The exact work per pass (bench/lib/harness/WorkCensus.h), layer A of the perf gate. Independent answers:
+// the passes must sum to one pipeline-statistics query wrapped around the whole frame (the census frame as it
+// was measured before passes were split), every pass's primitives are known from the scene (each pass of
+// `volume` and `shadowmap` draws a known set), and the counts repeat exactly.
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"

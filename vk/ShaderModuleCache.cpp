@@ -126,8 +126,8 @@ VkShaderModule ShaderModuleCache::get(const std::string& file, const Defines& de
     if (!compileToSpirv(source, stage, spirv, log)) {
         const std::string permutation = definesKey(defines);
         throw Error("vulkan: cannot compile " + std::string(stageName(stage)) + " shader '" + file + "'" +
-                        (permutation.empty() ? "" : " [" + permutation + "]") +
-                        ": " + leadWithFirstError(preprocessor.mapLog(log)),
+                        (permutation.empty() ? "" : " [" + permutation + "]") + ": " +
+                        leadWithFirstError(preprocessor.mapLog(log)),
                     ExitCode::Failure);
     }
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};

@@ -45,7 +45,8 @@ public:
     /// The source of one stage as it is compiled (for tests and the dump).
     std::string preprocess(const std::string& file, const Defines& defines, ShaderStage stage) const;
     /// SPIR-V of a GLSL source already assembled (tests); throws sb::Error(Failure) with glslang's log.
-    static std::vector<uint32_t> compile(const std::string& source, ShaderStage stage, const std::string& name);
+    static std::vector<uint32_t> compile(const std::string& source, ShaderStage stage,
+                                         const std::string& name);
     size_t compileCount() const { return mCompiles; }
 
     /// As ProgramCache's: `--dump-shaders DIR` (created; "" stops), the technique label, and the paths

@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "bench/lib/bottleneck/BottleneckStudy.h"
-#include "bench/lib/output/RowExport.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/output/RowExport.h"
 #include "bench/lib/sweep/SweepOptions.h"
 #include "bench/lib/sweep/SweepReport.h"
 #include "bench/lib/sweep/SweepRunner.h"

@@ -8,13 +8,13 @@
 #include <map>
 
 #include "bench/lib/gate/GateReport.h"
+#include "bench/lib/gate/WorkGate.h"
+#include "bench/lib/options/CliParse.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/statistics/MultipleTesting.h"
 #include "bench/lib/statistics/RankTests.h"
-#include "bench/lib/statistics/WallTimeStats.h"
-#include "bench/lib/gate/WorkGate.h"
-#include "bench/lib/output/CsvWriter.h"
-#include "bench/lib/options/CliParse.h"
 #include "bench/lib/statistics/Statistics.h"
+#include "bench/lib/statistics/WallTimeStats.h"
 
 namespace sb {
 

@@ -4,13 +4,13 @@
 #include <memory>
 #include <sstream>
 
-#include "bench/lib/output/TextColumns.h"
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/options/RunOptions.h"
+#include "bench/lib/output/TextColumns.h"
 #include "bench/lib/select/AutoResolver.h"
 #include "core/Error.h"
-#include "techniques/EffectCoverage.h"
 #include "registry/TechniqueRegistry.h"
+#include "techniques/EffectCoverage.h"
 
 namespace sb {
 

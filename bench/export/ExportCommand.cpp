@@ -2,10 +2,10 @@
 
 #include <iostream>
 
+#include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/output/StandardStreams.h"
-#include "bench/lib/options/CliParse.h"
 
 namespace sb {
 

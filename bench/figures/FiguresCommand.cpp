@@ -5,10 +5,10 @@
 #include <fstream>
 #include <iostream>
 
-#include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "bench/figures/FigureCatalog.h"
-#include "bench/lib/output/RowExport.h"
+#include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/output/RowExport.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/SweepDefinition.h"
 #include "bench/lib/sweep/SweepReport.h"

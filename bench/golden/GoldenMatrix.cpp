@@ -7,14 +7,14 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/harness/VulkanHarness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/select/AutoResolver.h"
 #include "core/Error.h"
 #include "core/Paths.h"
-#include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/SceneLoader.h"
 
 namespace sb {
 

@@ -2,8 +2,8 @@
 
 #include <iostream>
 
-#include "bench/lib/output/CsvMerge.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/output/CsvMerge.h"
 
 namespace sb {
 

@@ -8,8 +8,8 @@
 
 #include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
-#include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/SceneLoader.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
@@ -61,8 +61,8 @@ void ConsoleReport::printTimerVerdict(std::ostream& os, const TimerVerdict& v) {
     os << "\n";
 }
 
-void ConsoleReport::printTable(std::ostream& os, const MeasuredHarness& h, const std::vector<RunResult>& results,
-                               int rounds) {
+void ConsoleReport::printTable(std::ostream& os, const MeasuredHarness& h,
+                               const std::vector<RunResult>& results, int rounds) {
     printTable(os, h.timerVerdict(), results, rounds);
 }
 

@@ -6,8 +6,8 @@
 #include <iosfwd>
 #include <vector>
 
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/harness/MeasuredHarness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
 
 namespace sb {
 
@@ -22,8 +22,8 @@ public:
     /// ratio column ("vs <first technique>") divides each row's wall median by that of the first
     /// technique of the same round, exactly as the CSV's wall_ratio_vs_baseline does (RunCommand,
     /// Measurement::addRound), so the console and the rows never disagree.
-    static void printTable(std::ostream& os, const MeasuredHarness& harness, const std::vector<RunResult>& results,
-                           int rounds = 1);
+    static void printTable(std::ostream& os, const MeasuredHarness& harness,
+                           const std::vector<RunResult>& results, int rounds = 1);
     /// The same with the run's timer verdict given (either API).
     static void printTable(std::ostream& os, const TimerVerdict& verdict,
                            const std::vector<RunResult>& results, int rounds = 1);

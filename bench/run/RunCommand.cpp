@@ -5,27 +5,27 @@
 #include <memory>
 #include <optional>
 
+#include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/images/AccuracyImages.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/measure/Measurement.h"
+#include "bench/lib/options/QualitySweep.h"
+#include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ImageWriter.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/output/StandardStreams.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
-#include "bench/run/ConsoleReport.h"
 #include "bench/lib/rows/Environment.h"
-#include "bench/lib/harness/Harness.h"
-#include "bench/lib/measure/Measurement.h"
-#include "bench/lib/options/QualitySweep.h"
 #include "bench/lib/rows/ResultRow.h"
-#include "bench/lib/options/RunOptions.h"
 #include "bench/lib/rows/SamplesFile.h"
-#include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/select/AutoResolver.h"
 #include "bench/lib/viewer/Viewer.h"
+#include "bench/run/ConsoleReport.h"
 #include "core/Error.h"
+#include "registry/TechniqueRegistry.h"
 #include "shading/ShaderLimits.h"
 #include "techniques/EffectCoverage.h"
-#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -41,11 +41,14 @@ std::string withSuffix(const std::string& path, const std::string& suffix) {
 void writeImages(const RunConfig& config, MeasuredHarness& harness, const std::string& label) {
     if (!config.screenshotPath.empty())
         ImageWriter::writeColor(harness.width(), harness.height(), harness.readColor(),
-                                label.empty() ? config.screenshotPath : withSuffix(config.screenshotPath, label));
+                                label.empty() ? config.screenshotPath
+                                              : withSuffix(config.screenshotPath, label));
     if (!config.visibilityPath.empty()) {
-        const std::string base = label.empty() ? config.visibilityPath : withSuffix(config.visibilityPath, label);
+        const std::string base =
+            label.empty() ? config.visibilityPath : withSuffix(config.visibilityPath, label);
         const std::vector<float> vis = harness.readVisibility();
-        const size_t lights = std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
+        const size_t lights =
+            std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
         for (size_t i = 0; i < lights; ++i)
             ImageWriter::writeVisibility(harness.width(), harness.height(), vis, int(i),
                                          i == 0 ? base : withSuffix(base, "light" + std::to_string(i)));
@@ -106,15 +109,20 @@ const char* statusOf(ExitCode code) {
 /// The row of a technique that threw `e`: what it is and why it has no numbers, in the columns a sweep
 /// uses for the same (`status`, `error`).
 Refusal refusal(const std::string& technique, const std::string& properties, const Error& e,
-                const Environment& env, int round, const std::string& baseline, const EffectCoverage& coverage) {
+                const Environment& env, int round, const std::string& baseline,
+                const EffectCoverage& coverage) {
     Refusal r;
     r.code = e.code();
     r.what = e.what();
     r.message = r.what.rfind(technique + ":", 0) == 0 ? r.what : technique + ": " + r.what;
-    r.row = {{"timestamp", Environment::nowIso8601()}, {"git_commit", env.gitCommit},
-             {"status", statusOf(e.code())},           {"error", r.what},
-             {"technique", technique},                 {"properties", properties},
-             {"repeat", std::to_string(round)},        {"baseline", baseline}};
+    r.row = {{"timestamp", Environment::nowIso8601()},
+             {"git_commit", env.gitCommit},
+             {"status", statusOf(e.code())},
+             {"error", r.what},
+             {"technique", technique},
+             {"properties", properties},
+             {"repeat", std::to_string(round)},
+             {"baseline", baseline}};
     for (auto& column : ResultRow::effectColumns(coverage)) r.row.push_back(std::move(column));
     return r;
 }
@@ -314,7 +322,8 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     if (config.checkTimer) harness.calibrateTimer();
     if (!config.quiet) ConsoleReport::printTimerVerdict(log, harness.timerVerdict());
     std::unique_ptr<AccuracyEvaluator> evaluator;
-    if (accuracy) evaluator = std::make_unique<AccuracyEvaluator>(judge ? *judge : static_cast<Harness&>(harness));
+    if (accuracy)
+        evaluator = std::make_unique<AccuracyEvaluator>(judge ? *judge : static_cast<Harness&>(harness));
     AccuracyOptions options;
     options.light = config.accuracyLight;
     options.referenceSamples = config.referenceSamples;
@@ -356,7 +365,8 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
             // A refusal repeats every round (the same scene, properties and context): reported once.
             if (refused[i]) continue;
             if (!configured[i].technique) {
-                if (!config.quiet) log << "[" << done << "/" << total << "] " << specs[i].toString() << " ...";
+                if (!config.quiet)
+                    log << "[" << done << "/" << total << "] " << specs[i].toString() << " ...";
                 refuse(i, specs[i].name, TechniqueRegistry::create(specs[i])->properties().toString(),
                        *configured[i].refused, EffectCoverage::of(harness.scene().effects, 0), round);
                 continue;

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <iostream>
 
+#include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/output/StandardStreams.h"
-#include "bench/lib/options/CliParse.h"
 #include "bench/lib/sweep/SweepDefinition.h"
 #include "bench/lib/sweep/SweepOptions.h"
 #include "bench/lib/sweep/SweepReport.h"

@@ -21,17 +21,16 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Blob::declaration() {
     return {.name = "blob",
-                 .description =
-                     "fake blob shadows: a soft ellipse on the ground under each caster per light, "
-                     "sized from its bounds (no self-shadowing, ground plane only)",
-                 .effects = Effect::SoftShadows | Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"lighting", "blobs"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kSoftness, {"0", "0.25", "0.5", "1"}},
-                     {kFade, {"2", "8", "32"}},
-                 }};
+            .description = "fake blob shadows: a soft ellipse on the ground under each caster per light, "
+                           "sized from its bounds (no self-shadowing, ground plane only)",
+            .effects = Effect::SoftShadows | Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"lighting", "blobs"},
+            .properties = declareProperties(),
+            .quality = {
+                {kSoftness, {"0", "0.25", "0.5", "1"}},
+                {kFade, {"2", "8", "32"}},
+            }};
 }
 
 } // namespace sb

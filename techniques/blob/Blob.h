@@ -1,7 +1,7 @@
 #pragma once
-// `blob`: fake blob shadows, a soft ellipse on the ground under each caster, after Crawfis, Ad-hoc shadows (CSE 781 slides).
-// The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name, effects, the
-// capabilities of each API's form, passes, properties and quality knobs.
+// `blob`: fake blob shadows, a soft ellipse on the ground under each caster, after Crawfis, Ad-hoc shadows
+// (CSE 781 slides). The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name,
+// effects, the capabilities of each API's form, passes, properties and quality knobs.
 #include "techniques/TechniqueInfo.h"
 
 namespace sb {

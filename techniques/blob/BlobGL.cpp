@@ -59,11 +59,9 @@ glm::vec3 projectAlongLight(const glm::vec3& p, const ReceiverPlane& plane, cons
     return r > 0.0f ? foot + offset * (limit / r) : foot;
 }
 
-
 } // namespace
 
-BlobGL::BlobGL()
-    : GlTechnique(sb::Blob::declaration()) {}
+BlobGL::BlobGL() : GlTechnique(sb::Blob::declaration()) {}
 
 BlobGL::~BlobGL() {
     release();
@@ -83,9 +81,8 @@ std::optional<ReceiverPlane> BlobGL::findGround(const Scene& scene) {
     return best;
 }
 
-std::optional<BlobGL::Blob> BlobGL::fit(const Aabb& bounds, const ReceiverPlane& ground,
-                                                      const Light& light, int lightIndex, float opacity,
-                                                      float softness, float fade) {
+std::optional<BlobGL::Blob> BlobGL::fit(const Aabb& bounds, const ReceiverPlane& ground, const Light& light,
+                                        int lightIndex, float opacity, float softness, float fade) {
     const glm::vec4 l = ReceiverPlane::homogeneousLight(light);
     if (bounds.empty() || !(ground.lightSide(l) > 1e-6f * std::max(1.0f, glm::length(glm::vec3(l)))))
         return std::nullopt;
@@ -178,8 +175,8 @@ void BlobGL::fitAll(const Scene& scene) {
     mBlobs.clear();
     if (!mGround) return;
     const PropertySet& p = properties();
-    const float opacity = float(p.getFloat(sb::Blob::kOpacity)), softness = float(p.getFloat(sb::Blob::kSoftness)),
-                fade = float(p.getFloat(sb::Blob::kFade));
+    const float opacity = float(p.getFloat(sb::Blob::kOpacity)),
+                softness = float(p.getFloat(sb::Blob::kSoftness)), fade = float(p.getFloat(sb::Blob::kFade));
     const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
     for (const Instance& inst : scene.instances) {
         if (!inst.castsShadow) continue;

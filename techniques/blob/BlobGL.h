@@ -31,8 +31,8 @@
 #include <glm/glm.hpp>
 
 #include "scenes/ReceiverPlane.h"
-#include "techniques/gl/GlTechnique.h"
 #include "techniques/blob/Blob.h"
+#include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/ReceiverStencil.h"
 
 namespace sb {

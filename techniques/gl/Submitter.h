@@ -67,7 +67,6 @@ public:
     /// so a technique that resets between its passes cannot hide a pass's draws.
     SubmitStats lifetimeStats() const { return mLifetime + mStats; }
 
-
 protected:
     /// The mode's draw of the instances of `set` that `keep` keeps (empty: all of them).
     virtual void drawKept(DrawSet set, InstanceMask keep) = 0;

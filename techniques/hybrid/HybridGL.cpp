@@ -82,7 +82,8 @@ void HybridGL::propertiesApplied() {
     mParts.push_back(makePart(kSelf, properties().getEnum(kSelf)));
     mParts.push_back(makePart(kCast, properties().getEnum(kCast)));
     TechniqueInfo& info = mutableInfo();
-    info.effects = Hybrid::combinedEffects(mParts[0].technique->info().effects, mParts[1].technique->info().effects);
+    info.effects =
+        Hybrid::combinedEffects(mParts[0].technique->info().effects, mParts[1].technique->info().effects);
     info.capabilities.clear();
     info.passes.clear();
     info.viewPasses.clear();

@@ -4,8 +4,7 @@
 
 namespace sb {
 
-NoneGL::NoneGL()
-    : GlTechnique(None::declaration()) {}
+NoneGL::NoneGL() : GlTechnique(None::declaration()) {}
 
 void NoneGL::setScene(const Scene&) {}
 

@@ -30,15 +30,15 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Occluder::declaration() {
     return {.name = "occluder",
-           .description = "occluder textures on shadow planes: single-pass self-shadowing (Coleman 2006)",
-           // Self-shadowing from each mesh's own planes only: no shadows on other objects or the
-           // ground, and the planes approximate the casters (the thesis's missing shadows).
-           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                      Effect::MultipleLights,
-           .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-           .passes = {"lighting"},
-           .properties = declareProperties(),
-           .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}};
+            .description = "occluder textures on shadow planes: single-pass self-shadowing (Coleman 2006)",
+            // Self-shadowing from each mesh's own planes only: no shadows on other objects or the
+            // ground, and the planes approximate the casters (the thesis's missing shadows).
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"lighting"},
+            .properties = declareProperties(),
+            .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}};
 }
 
 } // namespace sb

@@ -1,7 +1,8 @@
 #pragma once
-// `occluder`: single-pass self-shadowing from shadow planes with occluder textures, after Coleman, Fast Self-Shadowing Using Occluder Textures (MSc thesis).
-// The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name, effects, the
-// capabilities of each API's form, passes, properties and quality knobs.
+// `occluder`: single-pass self-shadowing from shadow planes with occluder textures, after Coleman, Fast
+// Self-Shadowing Using Occluder Textures (MSc thesis). The declaration (techniques/TechniqueInfo.h) its GL
+// and Vulkan forms both take: name, effects, the capabilities of each API's form, passes, properties and
+// quality knobs.
 #include "techniques/TechniqueInfo.h"
 
 namespace sb {

@@ -54,11 +54,9 @@ void clearBorder(std::vector<uint8_t>& texels, int size) {
     }
 }
 
-
 } // namespace
 
-OccluderGL::OccluderGL()
-    : GlTechnique(Occluder::declaration()) {}
+OccluderGL::OccluderGL() : GlTechnique(Occluder::declaration()) {}
 
 OccluderGL::~OccluderGL() {
     release();
@@ -143,7 +141,8 @@ void OccluderGL::collectPlanes(const Scene& scene) {
         if (!drawn[m]) continue;
         if (planes.size() > size_t(Occluder::kMaxPlanes) && limit > Occluder::kMaxPlanes)
             throw Error("occluder: mesh '" + mesh.name + "' has " + std::to_string(planes.size()) +
-                            " shadow planes; at most " + std::to_string(Occluder::kMaxPlanes) + " are used per mesh",
+                            " shadow planes; at most " + std::to_string(Occluder::kMaxPlanes) +
+                            " are used per mesh",
                         ExitCode::Unsupported);
         const int count = std::min<int>(int(planes.size()), limit);
         mMeshFirst[m] = uint32_t(mPlanes.size());

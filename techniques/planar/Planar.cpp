@@ -29,17 +29,16 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Planar::declaration() {
     return {.name = "planar",
-                 .description =
-                     "projected planar shadows: casters flattened onto each receiver plane, stencil "
-                     "keeps them on it (no self-shadowing, planar receivers only)",
-                 .effects = Effect::HardShadows | Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"lighting", "shadows"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kOccluder, {"mesh", "proxy"}},
-                     {kStencil, {"true", "false"}},
-                 }};
+            .description = "projected planar shadows: casters flattened onto each receiver plane, stencil "
+                           "keeps them on it (no self-shadowing, planar receivers only)",
+            .effects = Effect::HardShadows | Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"lighting", "shadows"},
+            .properties = declareProperties(),
+            .quality = {
+                {kOccluder, {"mesh", "proxy"}},
+                {kStencil, {"true", "false"}},
+            }};
 }
 
 } // namespace sb

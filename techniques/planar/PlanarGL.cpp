@@ -37,11 +37,9 @@ Scene unitShapes() {
     return s;
 }
 
-
 } // namespace
 
-PlanarGL::PlanarGL()
-    : GlTechnique(Planar::declaration()) {}
+PlanarGL::PlanarGL() : GlTechnique(Planar::declaration()) {}
 
 PlanarGL::~PlanarGL() {
     release();
@@ -53,8 +51,8 @@ void PlanarGL::release() {
     mProxyBatches.clear();
 }
 
-std::vector<PlanarGL::Projection>
-PlanarGL::projections(const std::vector<ReceiverPlane>& planes, const Scene& scene, bool guards) {
+std::vector<PlanarGL::Projection> PlanarGL::projections(const std::vector<ReceiverPlane>& planes,
+                                                        const Scene& scene, bool guards) {
     std::vector<Projection> out;
     const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
     for (size_t p = 0; p < planes.size(); ++p)

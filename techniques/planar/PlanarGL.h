@@ -30,12 +30,12 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "scenes/InstanceCulling.h"
 #include "scenes/ReceiverPlane.h"
 #include "techniques/gl/GlTechnique.h"
-#include "techniques/planar/Planar.h"
-#include "scenes/InstanceCulling.h"
-#include "techniques/gl/ReceiverStencil.h"
 #include "techniques/gl/MeshBuffers.h"
+#include "techniques/gl/ReceiverStencil.h"
+#include "techniques/planar/Planar.h"
 
 namespace sb {
 

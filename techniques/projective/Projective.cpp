@@ -21,17 +21,17 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Projective::declaration() {
     return {.name = "projective",
-                 .description = "projective texture shadows: casters black on white from each light, "
-                                "projected onto the non-casting receivers (no self-shadowing)",
-                 // Blurred edges are a fixed-width fake, not soft shadows; casters are never shadowed.
-                 .effects = Effect::HardShadows | Effect::NonPlanarReceivers | Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"texture", "blur", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kResolution, {"128", "256", "512", "1024", "2048"}},
-                     {kBlur, {"0", "1", "2", "4", "8"}},
-                 }};
+            .description = "projective texture shadows: casters black on white from each light, "
+                           "projected onto the non-casting receivers (no self-shadowing)",
+            // Blurred edges are a fixed-width fake, not soft shadows; casters are never shadowed.
+            .effects = Effect::HardShadows | Effect::NonPlanarReceivers | Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"texture", "blur", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {kResolution, {"128", "256", "512", "1024", "2048"}},
+                {kBlur, {"0", "1", "2", "4", "8"}},
+            }};
 }
 
 } // namespace sb

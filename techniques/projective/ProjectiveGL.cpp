@@ -17,8 +17,7 @@ namespace {
 constexpr GLint kMatrixLocation = 8; // projective/texture.vert and common/scene.vert (SHADOW_MAP)
 } // namespace
 
-ProjectiveGL::ProjectiveGL()
-    : GlTechnique(Projective::declaration()) {}
+ProjectiveGL::ProjectiveGL() : GlTechnique(Projective::declaration()) {}
 
 ProjectiveGL::~ProjectiveGL() {
     releaseTextures();
@@ -56,8 +55,7 @@ float padded(float exact) {
 }
 } // namespace
 
-ProjectiveGL::Projector ProjectiveGL::aimAtReceivers(const Light& light,
-                                                                   const Aabb& receivers) {
+ProjectiveGL::Projector ProjectiveGL::aimAtReceivers(const Light& light, const Aabb& receivers) {
     const glm::vec3 toCentre = receivers.center() - light.position;
     // The light among the receivers (a room's walls and floor around it) has no one direction
     // towards them: the spot's axis, or straight down.

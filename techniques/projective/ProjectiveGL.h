@@ -42,10 +42,10 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/SeparableBlur.h"
 #include "techniques/projective/Projective.h"
-#include "scenes/InstanceCulling.h"
 
 namespace sb {
 
@@ -98,7 +98,7 @@ private:
     std::vector<uint8_t> mKeep; ///< the casters a light's texture keeps
     size_t mCulled = 0;         ///< casters left out over the frame's textures
     const Program* mTextureProgram = nullptr;
-    const Program* mLitProgram = nullptr;     ///< casters (and everything without projectors)
+    const Program* mLitProgram = nullptr; ///< casters (and everything without projectors)
     const Program* mProjectiveProgram = nullptr;
     Counters mCounters;
 };

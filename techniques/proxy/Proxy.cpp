@@ -27,7 +27,8 @@ std::vector<PropertyDesc> declareProperties() {
         choice(Proxy::kModulate, "auto", {"auto", "on", "off"},
                "egg-shaped volumes towards/away from each light (Listing 1.4): auto = when the scene has "
                "lights"),
-        flag(Proxy::kGrid, "true", "screen-space IndexMap (true) or every proxy in view tested by every fragment"),
+        flag(Proxy::kGrid, "true",
+             "screen-space IndexMap (true) or every proxy in view tested by every fragment"),
         integer(Proxy::kCells, "64", 1, 1024, "IndexMap grid cells along x and along y"),
         integer(Proxy::kCapacity, "16", 1, 4096,
                 "proxy indices per cell; more are counted as grid_overflow, never silently dropped"),
@@ -41,17 +42,17 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Proxy::declaration() {
     return {.name = "proxy",
-           .description =
-               "ShadowProxies: analytic sphere/box/cylinder volumes, screen-space index grid, soft "
-               "shadows and colour bleeding (van der Spek, OpenGL Insights)",
-           // Soft halos around proxies: not exact hard shadows, no self-shadowing (the proxy of the
-           // fragment's own object is skipped), any receiver shape.
-           .effects = Effect::SoftShadows | Effect::ColourBleeding | Effect::NonPlanarReceivers |
-                      Effect::MultipleLights,
-           .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-           .passes = {"index_map", "lighting"},
-           .properties = declareProperties(),
-           .quality = {{kOffset, {"0.25", "0.5", "1", "2", "4"}}, {kFalloff, {"0.5", "1", "2", "4"}}}};
+            .description =
+                "ShadowProxies: analytic sphere/box/cylinder volumes, screen-space index grid, soft "
+                "shadows and colour bleeding (van der Spek, OpenGL Insights)",
+            // Soft halos around proxies: not exact hard shadows, no self-shadowing (the proxy of the
+            // fragment's own object is skipped), any receiver shape.
+            .effects = Effect::SoftShadows | Effect::ColourBleeding | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"index_map", "lighting"},
+            .properties = declareProperties(),
+            .quality = {{kOffset, {"0.25", "0.5", "1", "2", "4"}}, {kFalloff, {"0.5", "1", "2", "4"}}}};
 }
 
 } // namespace sb

@@ -1,7 +1,7 @@
 #pragma once
-// `proxy`: analytic sphere, box and cylinder stand-ins for soft shadows and colour bleeding, after van der Spek, ShadowProxies (OpenGL Insights).
-// The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name, effects, the
-// capabilities of each API's form, passes, properties and quality knobs.
+// `proxy`: analytic sphere, box and cylinder stand-ins for soft shadows and colour bleeding, after van der
+// Spek, ShadowProxies (OpenGL Insights). The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms
+// both take: name, effects, the capabilities of each API's form, passes, properties and quality knobs.
 #include "techniques/TechniqueInfo.h"
 
 namespace sb {

@@ -18,11 +18,9 @@ bool resolve(const std::string& value, bool automatic) {
     return value == "auto" ? automatic : value == "on";
 }
 
-
 } // namespace
 
-ProxyGL::ProxyGL()
-    : GlTechnique(Proxy::declaration()) {}
+ProxyGL::ProxyGL() : GlTechnique(Proxy::declaration()) {}
 
 ProxyGL::~ProxyGL() {
     release();
@@ -53,7 +51,8 @@ void ProxyGL::setScene(const Scene& scene) {
     mCells = int(properties().getInt(Proxy::kCells));
     mCapacity = int(properties().getInt(Proxy::kCapacity));
     mModulate = resolve(properties().getEnum(Proxy::kModulate), !scene.lights.empty());
-    mBleed = resolve(properties().getEnum(Proxy::kBleeding), hasEffect(scene.effects, Effect::ColourBleeding));
+    mBleed =
+        resolve(properties().getEnum(Proxy::kBleeding), hasEffect(scene.effects, Effect::ColourBleeding));
     mWarnedOverflow = false;
 }
 

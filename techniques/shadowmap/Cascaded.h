@@ -1,7 +1,7 @@
 #pragma once
-// `cascaded`: cascaded shadow maps for directional lights (Engel 2006, Cascaded Shadow Maps, ShaderX5; Zhang et al. 2006, Parallel-Split Shadow Maps).
-// The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name, effects, the
-// capabilities of each API's form, passes, properties and quality knobs.
+// `cascaded`: cascaded shadow maps for directional lights (Engel 2006, Cascaded Shadow Maps, ShaderX5; Zhang
+// et al. 2006, Parallel-Split Shadow Maps). The declaration (techniques/TechniqueInfo.h) its GL and Vulkan
+// forms both take: name, effects, the capabilities of each API's form, passes, properties and quality knobs.
 #include "techniques/TechniqueInfo.h"
 
 namespace sb {

@@ -28,12 +28,9 @@ constexpr GLint kEmptySlotsLocation = 15;
 constexpr GLint kSlotMatrixLocation = 16; // SLOT_COUNT (at most 16) locations
 constexpr GLint kSlotLayerLocation = 32;  // likewise
 
-
-
 } // namespace
 
-CascadedGL::CascadedGL()
-    : GlTechnique(Cascaded::declaration()) {}
+CascadedGL::CascadedGL() : GlTechnique(Cascaded::declaration()) {}
 
 int CascadedGL::slotCount() const {
     return mLights.empty() ? 1 : mLights.back().firstSlot + mLights.back().slots;

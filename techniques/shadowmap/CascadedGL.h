@@ -35,10 +35,10 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/gl/GlTechnique.h"
-#include "techniques/shadowmap/Cascaded.h"
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/CascadeFit.h"
+#include "techniques/shadowmap/Cascaded.h"
 #include "techniques/shadowmap/DepthLayers.h"
 
 namespace sb {

@@ -1,7 +1,8 @@
 #pragma once
-// `cubemap`: omnidirectional shadow mapping with a depth cube map per point light (Gerasimov 2004, Omnidirectional Shadow Mapping, GPU Gems ch. 12).
-// The declaration (techniques/TechniqueInfo.h) its GL and Vulkan forms both take: name, effects, the
-// capabilities of each API's form, passes, properties and quality knobs.
+// `cubemap`: omnidirectional shadow mapping with a depth cube map per point light (Gerasimov 2004,
+// Omnidirectional Shadow Mapping, GPU Gems ch. 12). The declaration (techniques/TechniqueInfo.h) its GL and
+// Vulkan forms both take: name, effects, the capabilities of each API's form, passes, properties and quality
+// knobs.
 #include "shading/Defines.h"
 #include "techniques/PropertySet.h"
 #include "techniques/Submission.h"

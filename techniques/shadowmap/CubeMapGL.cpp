@@ -1,5 +1,5 @@
-#include "techniques/shadowmap/OmniLightsGL.h"
 #include "techniques/shadowmap/CubeMapGL.h"
+#include "techniques/shadowmap/OmniLightsGL.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -16,10 +16,7 @@ constexpr GLint kFaceViewProjLocation = 12;    // shadowmap/cube_depth.geom
 constexpr GLint kLayerBaseLocation = 18;       // shadowmap/cube_depth.geom
 constexpr GLuint kFlatUnit = 0, kCubeUnit = 1; // shadowmap/omni_lighting.glsl, cube_lighting.frag
 
-
 } // namespace
-
-
 
 CubeMapGL::CubeMapGL() : GlTechnique(CubeMap::declaration()) {}
 
@@ -127,7 +124,8 @@ void CubeMapGL::renderLighting(FrameContext& ctx) {
 void CubeMapGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
-    mCounters = CubeMap::counters(s, int(properties().getInt(P::kResolution)), mLights, mFacesRendered, mCulled);
+    mCounters =
+        CubeMap::counters(s, int(properties().getInt(P::kResolution)), mLights, mFacesRendered, mCulled);
 }
 
 } // namespace sb

@@ -29,10 +29,10 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/gl/GlTechnique.h"
-#include "techniques/shadowmap/CubeMap.h"
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/CubeFaces.h"
+#include "techniques/shadowmap/CubeMap.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"

@@ -213,8 +213,9 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     mFaceDepthPipeline = ctx.pipelines.get(faceKey, face);
     if (mLayered) {
         std::string layeredKey = "cubemap-layered-depth" + bias;
-        GraphicsPipelineDesc layered = scenePipeline(ctx, "shadowmap/cube_depth.vert", "shadowmap/depth.frag",
-                                                     base, mDepthLayout, layeredKey, "shadowmap/cube_depth.geom");
+        GraphicsPipelineDesc layered =
+            scenePipeline(ctx, "shadowmap/cube_depth.vert", "shadowmap/depth.frag", base, mDepthLayout,
+                          layeredKey, "shadowmap/cube_depth.geom");
         depthState(layered);
         mLayeredDepthPipeline = ctx.pipelines.get(layeredKey, layered);
     }

@@ -28,17 +28,17 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Esm::declaration() {
     return {.name = "esm",
-                 .description = "exponential shadow maps: filtered exp(c d), filtered in log space",
-                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                            Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "blur", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                     {kBlur, {"0", "3", "5", "9"}},
-                     {kExponent, {"10", "40", "80", "160", "500"}},
-                 }};
+            .description = "exponential shadow maps: filtered exp(c d), filtered in log space",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "blur", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                {kBlur, {"0", "3", "5", "9"}},
+                {kExponent, {"10", "40", "80", "160", "500"}},
+            }};
 }
 
 } // namespace sb

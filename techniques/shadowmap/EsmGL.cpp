@@ -7,11 +7,9 @@ constexpr GLint kExponentLocation = 40; // shadowmap/esm.frag
 /// Nothing in front of the far end of the light's depth range: d = 1.
 constexpr glm::vec4 kNoOccluder{1.0f, 0.0f, 0.0f, 0.0f};
 
-
 } // namespace
 
-EsmGL::EsmGL()
-    : GlTechnique(Esm::declaration()) {}
+EsmGL::EsmGL() : GlTechnique(Esm::declaration()) {}
 
 void EsmGL::setScene(const Scene& scene) {
     mMaps.setScene(scene);

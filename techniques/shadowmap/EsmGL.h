@@ -31,15 +31,14 @@
 // wrong against shadowmap's 0.14%). Point lights need an omni map (`cubemap`, `paraboloid`): refused with
 // ExitCode::Unsupported.
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/SeparableBlur.h"
 #include "techniques/shadowmap/Esm.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
-#include "techniques/gl/SeparableBlur.h"
 
 namespace sb {
 
 class EsmGL final : public GlTechnique {
 public:
-
     EsmGL();
     void setScene(const Scene& scene) override;
     /// The light fits and the maps' fit to the receivers follow the scene (FilterableShadowMaps).

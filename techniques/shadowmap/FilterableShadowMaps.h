@@ -57,8 +57,8 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/gl/GlTechnique.h"
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/SeparableBlur.h"
 
 namespace sb {

@@ -10,7 +10,6 @@
 
 namespace sb {
 
-
 const glm::mat4& FlatLightFits::textureBias() {
     static const glm::mat4 kBias =
         glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
@@ -66,7 +65,8 @@ size_t FlatLightFits::shadowed() const {
 size_t FlatLightFits::cullCasters(size_t light, const InstanceCulling& culling, std::vector<uint8_t>& keep,
                                   const ViewCull* view) const {
     size_t kept = culling.cull(mViewProj[light], DrawSet::Casters, CullPlanes::All, keep);
-    if (view) kept = culling.keepReachingView((*view->lights)[light], view->reach, view->margins[light], keep);
+    if (view)
+        kept = culling.keepReachingView((*view->lights)[light], view->reach, view->margins[light], keep);
     return culling.count(DrawSet::Casters) - kept;
 }
 

@@ -11,11 +11,13 @@ constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert; common/scene.
 void setFlatShadowMatrices(const FlatLightFits& lights) {
     const std::vector<glm::mat4>& matrices = lights.shadowMatrices();
     if (!matrices.empty())
-        glUniformMatrix4fv(kLightMatrixLocation, GLsizei(matrices.size()), GL_FALSE, glm::value_ptr(matrices[0]));
+        glUniformMatrix4fv(kLightMatrixLocation, GLsizei(matrices.size()), GL_FALSE,
+                           glm::value_ptr(matrices[0]));
 }
 
 size_t renderFlatDepth(const FlatLightFits& lights, Submitter& submitter, const InstanceCulling& culling,
-                       const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll, const ViewCull* view) {
+                       const DepthLayers& maps, std::vector<uint8_t>& keep, bool drawAll,
+                       const ViewCull* view) {
     size_t culled = 0;
     for (size_t i = 0; i < lights.size(); ++i) {
         if (!lights.castsShadow(i)) continue;

@@ -10,7 +10,6 @@
 
 namespace sb {
 
-
 void OmniLightSet::setScene(const Scene& scene) {
     mLights.clear();
     mOmni = mFlat = mSkipped = mUnshadowed = 0;

@@ -11,9 +11,9 @@
 
 #include <glm/glm.hpp>
 
-#include "shading/ShaderLimits.h"
 #include "scenes/InstanceCulling.h"
 #include "scenes/Scene.h"
+#include "shading/ShaderLimits.h"
 #include "techniques/shadowmap/PointLightFit.h"
 
 namespace sb {

@@ -23,18 +23,18 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Paraboloid::declaration() {
     return {.name = "paraboloid",
-                 .description = "dual-paraboloid shadow maps: two hemispherical depth maps per point light",
-                 .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                            Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {P::kResolution, {"512", "1024", "2048", "4096"}},
-                     P::pcfSweep(),
-                     P::biasConstantSweep(),
-                     P::biasSlopeSweep(),
-                 }};
+            .description = "dual-paraboloid shadow maps: two hemispherical depth maps per point light",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {P::kResolution, {"512", "1024", "2048", "4096"}},
+                P::pcfSweep(),
+                P::biasConstantSweep(),
+                P::biasSlopeSweep(),
+            }};
 }
 
 } // namespace sb

@@ -1,5 +1,5 @@
-#include "techniques/shadowmap/OmniLightsGL.h"
 #include "techniques/shadowmap/ParaboloidGL.h"
+#include "techniques/shadowmap/OmniLightsGL.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -15,11 +15,9 @@ constexpr GLint kLightLocation = 8;    // shadowmap/paraboloid_depth.vert: posit
 constexpr GLint kNearFarLocation = 12; // shadowmap/paraboloid_depth.vert
 constexpr GLuint kMapUnit = 0;         // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
 
-
 } // namespace
 
-ParaboloidGL::ParaboloidGL()
-    : GlTechnique(Paraboloid::declaration()) {}
+ParaboloidGL::ParaboloidGL() : GlTechnique(Paraboloid::declaration()) {}
 
 glm::vec3 ParaboloidGL::hemisphereAxis(int half) {
     return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);

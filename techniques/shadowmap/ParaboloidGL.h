@@ -33,12 +33,12 @@
 
 #include <epoxy/gl.h>
 
-#include "techniques/gl/GlTechnique.h"
-#include "techniques/shadowmap/Paraboloid.h"
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
+#include "techniques/shadowmap/Paraboloid.h"
 
 namespace sb {
 

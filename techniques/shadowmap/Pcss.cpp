@@ -13,7 +13,8 @@ std::vector<PropertyDesc> declareProperties() {
     return {
         P::resolution("2048", "shadow map width and height (texels)"),
         integer(Pcss::kBlockerTaps, "16", 1, Pcss::kMaxTaps, "Poisson taps of the blocker search (step 1)"),
-        integer(Pcss::kFilterTaps, "32", 1, Pcss::kMaxTaps, "Poisson taps of the PCF over the penumbra (step 3)"),
+        integer(Pcss::kFilterTaps, "32", 1, Pcss::kMaxTaps,
+                "Poisson taps of the PCF over the penumbra (step 3)"),
         real(Pcss::kLightSize, "0", 0, 1e6,
              "light size L (0 = the scene's emitter): diameter in world units for spot lights, width per "
              "unit depth (2 tan of the angular radius) for directional lights"),
@@ -26,20 +27,20 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Pcss::declaration() {
     return {.name = "pcss",
-                 .description = "percentage-closer soft shadows: blocker search, penumbra estimate, PCF over "
-                                "it (a light with no extent gets a 1 degree emitter: counter "
-                                "light_size_defaulted)",
-                 .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
-                            Effect::NonPlanarReceivers | Effect::MultipleLights,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"depth", "lighting"},
-                 .properties = declareProperties(),
-                 .quality = {
-                     {P::kResolution, {"512", "1024", "2048", "4096"}},
-                     {kBlockerTaps, {"4", "8", "16", "32"}},
-                     {kFilterTaps, {"8", "16", "32", "64"}},
-                     {kLightSize, {"0", "0.05", "0.2", "0.5"}},
-                 }};
+            .description = "percentage-closer soft shadows: blocker search, penumbra estimate, PCF over "
+                           "it (a light with no extent gets a 1 degree emitter: counter "
+                           "light_size_defaulted)",
+            .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
+                       Effect::NonPlanarReceivers | Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {P::kResolution, {"512", "1024", "2048", "4096"}},
+                {kBlockerTaps, {"4", "8", "16", "32"}},
+                {kFilterTaps, {"8", "16", "32", "64"}},
+                {kLightSize, {"0", "0.05", "0.2", "0.5"}},
+            }};
 }
 
 } // namespace sb

@@ -1,5 +1,5 @@
-#include "techniques/shadowmap/FlatLightsGL.h"
 #include "techniques/shadowmap/PcssGL.h"
+#include "techniques/shadowmap/FlatLightsGL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,14 +20,13 @@ using P = ShadowMapProperties;
 // shaders/shadowmap/pcss.frag: uPcssLight[LIGHT_COUNT], uPcssSearch[LIGHT_COUNT], the two kernels.
 constexpr GLint kLightLocation = 12;
 constexpr GLint kSearchLocation = 16;
-constexpr GLint kBlockerKernelLocation = 20;                               // uBlockerKernel[Pcss::kMaxTaps]
-constexpr GLint kFilterKernelLocation = kBlockerKernelLocation + Pcss::kMaxTaps; // uFilterKernel[Pcss::kMaxTaps]
-constexpr GLint kTapsLocation = kFilterKernelLocation + Pcss::kMaxTaps;          // uTaps
+constexpr GLint kBlockerKernelLocation = 20; // uBlockerKernel[Pcss::kMaxTaps]
+constexpr GLint kFilterKernelLocation =
+    kBlockerKernelLocation + Pcss::kMaxTaps;                            // uFilterKernel[Pcss::kMaxTaps]
+constexpr GLint kTapsLocation = kFilterKernelLocation + Pcss::kMaxTaps; // uTaps
 constexpr GLint kSearchUnit = 0, kCompareUnit = 1;
 /// The filter's Poisson disk differs from the search's: two seeds.
 constexpr uint64_t kFilterSeed = PoissonDisk::kSeed ^ 0x46494c544552ull;
-
-
 
 /// Row r of a matrix (GLM is column-major).
 glm::vec4 row(const glm::mat4& m, int r) {
@@ -47,8 +46,7 @@ float sceneLightSize(const Light& light) {
 /// Linear depth (PcssGL::LightParams) of the nearest corner of the casters' bounds, held within the
 /// map's depth range. Both a perspective map's w and an orthographic map's depth are linear in the world
 /// position, so the nearest point of a box is one of its corners.
-float nearestCasterDepth(const Scene& scene, const glm::mat4& lightViewProj,
-                         const PcssGL::LightParams& lp) {
+float nearestCasterDepth(const Scene& scene, const glm::mat4& lightViewProj, const PcssGL::LightParams& lp) {
     Aabb casters = scene.computeBounds(true);
     if (casters.empty()) return lp.nearZ;
     float nearest = lp.farZ;
@@ -65,8 +63,7 @@ float nearestCasterDepth(const Scene& scene, const glm::mat4& lightViewProj,
 }
 } // namespace
 
-PcssGL::PcssGL()
-    : GlTechnique(Pcss::declaration()) {}
+PcssGL::PcssGL() : GlTechnique(Pcss::declaration()) {}
 
 PcssGL::~PcssGL() {
     if (mSearchSampler) glDeleteSamplers(1, &mSearchSampler);
@@ -74,7 +71,7 @@ PcssGL::~PcssGL() {
 }
 
 PcssGL::LightParams PcssGL::lightParams(const Scene& scene, const Light& light,
-                                                      const glm::mat4& lightViewProj, float sizeOverride) {
+                                        const glm::mat4& lightViewProj, float sizeOverride) {
     LightParams lp;
     const glm::vec4 r0 = row(lightViewProj, 0), r1 = row(lightViewProj, 1);
     const glm::vec4 r2 = row(lightViewProj, 2), r3 = row(lightViewProj, 3);

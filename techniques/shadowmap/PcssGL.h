@@ -38,11 +38,11 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "techniques/gl/GlTechnique.h"
-#include "techniques/shadowmap/Pcss.h"
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/shadowmap/Pcss.h"
 
 namespace sb {
 

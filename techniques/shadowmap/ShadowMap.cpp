@@ -5,8 +5,8 @@
 
 #include "scenes/Math.h"
 #include "techniques/Property.h"
-#include "techniques/shadowmap/PoissonDisk.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
+#include "techniques/shadowmap/PoissonDisk.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
@@ -53,7 +53,8 @@ std::vector<PropertyDesc> declareProperties() {
         real(ShadowMap::kRadius, "1.5", 0, 64, "radius of the poisson and rotated_grid kernels (map texels)"),
         real(ShadowMap::kNormalOffset, "0", 0, 64,
              "normal-offset bias: lookup moved along the normal by this many world texels x (1 - n.l)"),
-        flag(ShadowMap::kReceiverPlane, "false", "receiver-plane depth bias: each tap compared with the receiver plane"),
+        flag(ShadowMap::kReceiverPlane, "false",
+             "receiver-plane depth bias: each tap compared with the receiver plane"),
         flag(ShadowMap::kCull, "true",
              "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
              "filter's footprint)"),
@@ -90,9 +91,8 @@ std::vector<glm::vec2> ShadowMap::kernelOffsets(const PropertySet& p) {
     return kernelTaps(kernel, int(p.getInt(kTaps)), float(p.getFloat(kRadius)));
 }
 
-void ShadowMap::fitTexels(const Scene& scene, const FlatLightFits& lights, int mapSize,
-                                   double kernelTexels, float normalOffset, std::vector<float>& texelWorld,
-                                   ViewCull& view) {
+void ShadowMap::fitTexels(const Scene& scene, const FlatLightFits& lights, int mapSize, double kernelTexels,
+                          float normalOffset, std::vector<float>& texelWorld, ViewCull& view) {
     texelWorld.clear();
     for (const glm::mat4& vp : lights.viewProj())
         texelWorld.push_back(FlatLightFits::texelWorldSize(vp, mapSize));

@@ -1,5 +1,5 @@
-#include "techniques/shadowmap/FlatLightsGL.h"
 #include "techniques/shadowmap/ShadowMapGL.h"
+#include "techniques/shadowmap/FlatLightsGL.h"
 
 #include <algorithm>
 #include <array>
@@ -83,7 +83,7 @@ void ShadowMapGL::renderDepth(FrameContext& ctx) {
     // (core/Injection.h).
     mView.reach.camera = ctx.proj * ctx.view;
     mCulled = renderFlatDepth(mLights, ctx.submitter, mCulling, mMaps, mKeep, mDrawAllIntoMap,
-                                  mCull && !mDrawAllIntoMap ? &mView : nullptr);
+                              mCull && !mDrawAllIntoMap ? &mView : nullptr);
 }
 
 void ShadowMapGL::renderLighting(FrameContext& ctx) {

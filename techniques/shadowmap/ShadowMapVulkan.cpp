@@ -5,9 +5,9 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMap.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
 

@@ -30,17 +30,17 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Vsm::declaration() {
     return {.name = "vsm",
-           .description = "variance shadow maps: filtered moments, Chebyshev's bound in the lighting pass",
-           .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                      Effect::MultipleLights,
-           .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-           .passes = {"depth", "blur", "lighting"},
-           .properties = declareProperties(),
-           .quality = {
-               {kResolution, {"256", "512", "1024", "2048", "4096"}},
-               {kBlur, {"0", "3", "5", "9"}},
-               {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
-           }};
+            .description = "variance shadow maps: filtered moments, Chebyshev's bound in the lighting pass",
+            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                       Effect::MultipleLights,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"depth", "blur", "lighting"},
+            .properties = declareProperties(),
+            .quality = {
+                {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                {kBlur, {"0", "3", "5", "9"}},
+                {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
+            }};
 }
 
 } // namespace sb

@@ -8,11 +8,9 @@ constexpr GLint kBleedReductionLocation = 41; // ...
 /// Nothing in front of the far end of the light's depth range: the moments of d = 1.
 constexpr glm::vec4 kNoOccluder{1.0f, 1.0f, 0.0f, 0.0f};
 
-
 } // namespace
 
-VsmGL::VsmGL()
-    : GlTechnique(Vsm::declaration()) {}
+VsmGL::VsmGL() : GlTechnique(Vsm::declaration()) {}
 
 void VsmGL::setScene(const Scene& scene) {
     mMaps.setScene(scene);

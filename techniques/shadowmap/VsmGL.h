@@ -29,9 +29,9 @@
 // against shadowmap's 0.14% at 2048 (0.26% at 1024); the accuracy sweep walks 256..4096.
 // Point lights need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
 #include "techniques/gl/GlTechnique.h"
-#include "techniques/shadowmap/Vsm.h"
-#include "techniques/shadowmap/FilterableShadowMaps.h"
 #include "techniques/gl/SeparableBlur.h"
+#include "techniques/shadowmap/FilterableShadowMaps.h"
+#include "techniques/shadowmap/Vsm.h"
 
 namespace sb {
 

@@ -11,7 +11,8 @@ std::vector<PropertyDesc> declareProperties() {
     return {
         integer(Synthetic::kFragmentIterations, "0", 0, 100000,
                 "arithmetic steps per pixel of a full-screen pass (0: no pass)"),
-        integer(Synthetic::kVertexIterations, "0", 0, 100000, "extra arithmetic steps per vertex of the scene pass"),
+        integer(Synthetic::kVertexIterations, "0", 0, 100000,
+                "extra arithmetic steps per vertex of the scene pass"),
         flag(Synthetic::kDrawScene, "true", "draw the scene's triangles"),
     };
 }
@@ -20,13 +21,12 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Synthetic::declaration() {
     return {.name = "synthetic",
-                 .description =
-                     "calibration workload of known bottleneck (no shadows): full-screen fill loop, "
-                     "vertex loop, or the scene's draws",
-                 .effects = 0,
-                 .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-                 .passes = {"scene", "fill"},
-                 .properties = declareProperties()};
+            .description = "calibration workload of known bottleneck (no shadows): full-screen fill loop, "
+                           "vertex loop, or the scene's draws",
+            .effects = 0,
+            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+            .passes = {"scene", "fill"},
+            .properties = declareProperties()};
 }
 
 } // namespace sb

@@ -6,11 +6,9 @@ namespace {
 constexpr GLint kVertexIterationsLocation = 9;   // synthetic/scene.vert
 constexpr GLint kFragmentIterationsLocation = 0; // synthetic/fill.frag
 
-
 } // namespace
 
-SyntheticGL::SyntheticGL()
-    : GlTechnique(Synthetic::declaration()) {}
+SyntheticGL::SyntheticGL() : GlTechnique(Synthetic::declaration()) {}
 
 SyntheticGL::~SyntheticGL() {
     if (mEmptyVao) glDeleteVertexArrays(1, &mEmptyVao);

@@ -17,8 +17,6 @@ constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLig
 constexpr GLint kLitRectLocation = 13, kDepthRangeLocation = 17;
 } // namespace
 
-
-
 VolumeGL::VolumeGL() : GlTechnique(Volume::declaration()) {}
 
 VolumeGL::~VolumeGL() {

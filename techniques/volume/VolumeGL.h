@@ -41,8 +41,8 @@
 
 #include "techniques/gl/FrameUniforms.h"
 #include "techniques/gl/GlTechnique.h"
-#include "techniques/volume/Volume.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
+#include "techniques/volume/Volume.h"
 #include "techniques/volume/VolumeGeometry.h"
 #include "techniques/volume/VolumeMeshBuffers.h"
 #include "techniques/volume/VolumePlanner.h"

@@ -22,7 +22,8 @@ GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::s
     d.bindings = ctx.submitter.bindings();
     d.attributes = ctx.submitter.attributes();
     d.layout = layout;
-    key += vertex + "+" + fragment + "[" + definesKey(defines) + "]" + (geometry.empty() ? "" : "+" + geometry);
+    key +=
+        vertex + "+" + fragment + "[" + definesKey(defines) + "]" + (geometry.empty() ? "" : "+" + geometry);
     return d;
 }
 

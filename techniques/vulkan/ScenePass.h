@@ -27,7 +27,8 @@ VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
 /// for the shaders part.
 GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::string& vertex,
                                    const std::string& fragment, const Defines& defines,
-                                   VkPipelineLayout layout, std::string& key, const std::string& geometry = "");
+                                   VkPipelineLayout layout, std::string& key,
+                                   const std::string& geometry = "");
 
 /// The lit pass over every mesh into the frame targets, as none's, shadowmap's and cubemap's lighting
 /// passes draw it: begins the targets' render pass, binds `pipeline` (the variant for this frame's

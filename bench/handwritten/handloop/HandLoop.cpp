@@ -20,15 +20,16 @@
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/statistics/Statistics.h"
 #include "core/Error.h"
-#include "scenes/Math.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/Math.h"
 
 using namespace sb;
 
 namespace {
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kFooter = R"(handloop alternates a hand-written GL loop and bench's `none` frame on one context,
+constexpr const char* kFooter =
+    R"(handloop alternates a hand-written GL loop and bench's `none` frame on one context,
 frame by frame, and prints both medians and the median of the paired ratios: the harness's overhead.
 --frames is the number of pairs; the scene, size, camera, instances and backend options are bench's.
 
@@ -95,7 +96,8 @@ double handFrame(Harness& h, GLuint program, GLuint ubo, const FrameUniformData&
 } // namespace
 
 int main(int argc, char** argv) {
-    MeasuredHarness::pinAllocator(); // the harness's frames and the hand loop's share one allocator, as bench's
+    MeasuredHarness::pinAllocator(); // the harness's frames and the hand loop's share one allocator, as
+                                     // bench's
     try {
         RunConfig config;
         config.techniques = {{"none", {}}};

@@ -10,8 +10,8 @@
 #include <map>
 #include <ostream>
 
-#include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/options/RunOptions.h"
+#include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/statistics/Statistics.h"
 #include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"

@@ -2,8 +2,8 @@
 // Layer B of the performance gate: a bench command line run once under callgrind, read back as the
 // instructions each technique's measured frames retired (TechniqueInstructions).
 //
-// bench/lib/harness/Harness.cpp brackets the measured frames with callgrind client requests (instrumentation on
-// for them only, one dump per technique named after it), and the child runs with
+// bench/lib/harness/Harness.cpp brackets the measured frames with callgrind client requests (instrumentation
+// on for them only, one dump per technique named after it), and the child runs with
 // `--instr-atstart=no`: set-up, shader compilation, warm-up and the census frame run uninstrumented
 // (fast) and uncounted. The child's environment is pinned (pinnedEnvironment()) because llvmpipe's
 // thread count and shader cache decide what code runs; everything else in the caller's environment is
@@ -73,8 +73,8 @@ public:
     /// Runs the child and reads its dumps. Throws Error: BadInput for --format in benchArgs,
     /// Unsupported when valgrind does not run or cannot run the bench on this CPU (an instruction its
     /// VEX does not know: the one-line reason names it, the function and library, and the log file;
-    /// bench/lib/callgrind/ValgrindDiagnosis), Failure when the bench fails, times out, or its dumps do not match
-    /// its rows (a technique measured without a dump: a bench built without SB_HAVE_VALGRIND).
+    /// bench/lib/callgrind/ValgrindDiagnosis), Failure when the bench fails, times out, or its dumps do not
+    /// match its rows (a technique measured without a dump: a bench built without SB_HAVE_VALGRIND).
     InstructionRun run() const;
 
     /// Pairs dumps (by part) with rows (in order, by technique name); the program-end dump is skipped.

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "bench/lib/gate/Fingerprint.h"
 #include "bench/lib/callgrind/InstructionCount.h"
 #include "bench/lib/callgrind/InstructionDiff.h"
+#include "bench/lib/gate/Fingerprint.h"
 #include "core/Error.h"
 
 namespace sb {

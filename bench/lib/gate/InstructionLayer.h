@@ -15,10 +15,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/lib/callgrind/TechniqueInstructions.h"
 #include "bench/lib/gate/CiSuite.h"
 #include "bench/lib/gate/GateReport.h"
 #include "bench/lib/gate/SuiteRunner.h"
-#include "bench/lib/callgrind/TechniqueInstructions.h"
 
 namespace sb {
 

@@ -5,9 +5,9 @@
 #include <iostream>
 #include <map>
 
+#include "bench/lib/gate/WallTimeVerdict.h"
 #include "bench/lib/statistics/MultipleTesting.h"
 #include "bench/lib/statistics/WallTimeStats.h"
-#include "bench/lib/gate/WallTimeVerdict.h"
 #include "core/Error.h"
 
 namespace sb {

@@ -1,11 +1,11 @@
 #pragma once
 // Layer A of the perf gate (README "Gate a change"): the exact work of each configuration, compared
-// exactly. The columns are the census frame's counts (bench/lib/harness/WorkCensus.h): `work_<pass>_<counter>`
-// per pass, the frame totals `load_*` and the techniques' own counters `counter_*` (draws, triangles,
-// texels of their maps, shadow planes ...). They were bit-identical across runs, LP_NUM_THREADS and
-// load on llvmpipe, so any increase is a change of the work the configuration asks for: it fails unless
-// the same change updates the baseline (`bench ci --update`). A decrease passes and is reported, so the
-// baseline can follow it.
+// exactly. The columns are the census frame's counts (bench/lib/harness/WorkCensus.h):
+// `work_<pass>_<counter>` per pass, the frame totals `load_*` and the techniques' own counters `counter_*`
+// (draws, triangles, texels of their maps, shadow planes ...). They were bit-identical across runs,
+// LP_NUM_THREADS and load on llvmpipe, so any increase is a change of the work the configuration asks for: it
+// fails unless the same change updates the baseline (`bench ci --update`). A decrease passes and is reported,
+// so the baseline can follow it.
 //
 // Rows are matched by `ci_config` where both tables have it (the suite's names), else by the columns
 // that define a configuration (technique, properties, scene, instances, scale, tessellation, seed,

@@ -34,8 +34,8 @@ Harness::~Harness() = default;
 
 RowSource Harness::rowSource() const {
     const Context& c = *mContext;
-    return {config(),  scene(),   contentHash(), moving(), timerVerdict(),           "gl",
-            c.version, c.renderer, c.version,    c.vendor, backendName(c.backend()), c.deviceName};
+    return {config(),  scene(),    contentHash(), moving(), timerVerdict(),           "gl",
+            c.version, c.renderer, c.version,     c.vendor, backendName(c.backend()), c.deviceName};
 }
 
 GlTechnique& Harness::glForm(Technique& technique) {
@@ -91,7 +91,7 @@ FrameSample Harness::renderFrame(Technique& technique) {
     resetFrameState();
     mTargets->bind();
     mTargets->clear(0.55f, 0.65f, 0.8f);
-    FrameContext ctx{scene(),      view(),       projection(),     camera().eye,         *mTargets,
+    FrameContext ctx{scene(),     view(),      projection(),     camera().eye,        *mTargets,
                      *mSubmitter, *mPassTimer, nextFrameIndex(), mFrameUniforms.get()};
     gl.execute(ctx);
     mInjectedPass.execute(mPrograms, *mPassTimer,

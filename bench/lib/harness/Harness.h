@@ -1,7 +1,7 @@
 #pragma once
-// The run loop on GL (bench/lib/harness/MeasuredHarness.h holds the loop itself; docs/ARCHITECTURE.md, "The timing
-// contract"): one GL context, its frame targets and submitter, the GPU timer-query ring and the census's
-// pipeline-statistics queries.
+// The run loop on GL (bench/lib/harness/MeasuredHarness.h holds the loop itself; docs/ARCHITECTURE.md, "The
+// timing contract"): one GL context, its frame targets and submitter, the GPU timer-query ring and the
+// census's pipeline-statistics queries.
 //
 // Per frame, in this order:
 //   t0  a scene in motion moves; upload the frame uniforms, begin the timer-query frame, bind and clear
@@ -19,10 +19,10 @@
 #include "bench/lib/harness/InjectedPass.h"
 #include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/harness/RowSource.h"
-#include "bench/lib/options/RunConfig.h"
 #include "bench/lib/harness/RunResult.h"
 #include "bench/lib/harness/TimerTrust.h"
 #include "bench/lib/harness/WorkCensus.h"
+#include "bench/lib/options/RunConfig.h"
 #include "gl/Context.h"
 #include "gl/FrameTargets.h"
 #include "gl/PipelineStatistics.h"

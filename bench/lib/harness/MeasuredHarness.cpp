@@ -11,9 +11,9 @@
 #include "scenes/SceneLoader.h"
 #include "shading/ShaderLimits.h"
 
-// Callgrind client requests around the measured frames (bench/lib/callgrind/InstructionCount.h): instrumentation on
-// for them only, one dump per technique. Compiled in where valgrind's header exists (SB_HAVE_VALGRIND, set
-// for this file only); natively a request is a handful of no-op instructions.
+// Callgrind client requests around the measured frames (bench/lib/callgrind/InstructionCount.h):
+// instrumentation on for them only, one dump per technique. Compiled in where valgrind's header exists
+// (SB_HAVE_VALGRIND, set for this file only); natively a request is a handful of no-op instructions.
 #ifdef SB_HAVE_VALGRIND
 #include <valgrind/callgrind.h>
 #else
@@ -51,8 +51,8 @@ MeasuredHarness::MeasuredHarness(const RunConfig& config, bool motion) : mConfig
         throw Error(std::string(config.pathTime >= 0.0 ? "--time" : "--path-frames") + ": scene '" +
                     mScene.name + "' does not move (it has no \"motion\")");
     if (mScene.motion && !motion)
-        throw Error("scene '" + mScene.name + "' moves (\"motion\"); scenes in motion run on GL only for now " +
-                        "(--api gl)",
+        throw Error("scene '" + mScene.name +
+                        "' moves (\"motion\"); scenes in motion run on GL only for now " + "(--api gl)",
                     ExitCode::Unsupported);
     if (mScene.motion) {
         mRest = std::make_unique<Scene>(mScene);

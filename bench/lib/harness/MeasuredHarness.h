@@ -3,9 +3,9 @@
 // scene, one camera, one submitter and one set of frame targets shared by every technique of a run, so that
 // they are measured on identical state. This class holds what does not depend on the API (the scene and its
 // motion, the camera and the frame block's contents, the timer verdict) and the run loop itself
-// (measure()); bench/lib/harness/Harness.h (GL) and bench/lib/harness/VulkanHarness.h (Vulkan) implement the frame and what
-// the API counts. The run command, the accuracy evaluator and the sweep workers hold harnesses by this
-// class, so a run option, a column or a rule of the loop is written once and holds on every API.
+// (measure()); bench/lib/harness/Harness.h (GL) and bench/lib/harness/VulkanHarness.h (Vulkan) implement the
+// frame and what the API counts. The run command, the accuracy evaluator and the sweep workers hold harnesses
+// by this class, so a run option, a column or a rule of the loop is written once and holds on every API.
 //
 // Per measured run: prepare (capabilities, setScene, compile; untimed), warm-up frames (discarded), the
 // measured frames (config frames or seconds; callgrind counts only these), the timer re-check where the
@@ -19,9 +19,9 @@
 
 #include "bench/lib/harness/FrameSample.h"
 #include "bench/lib/harness/RowSource.h"
-#include "bench/lib/options/RunConfig.h"
 #include "bench/lib/harness/RunResult.h"
 #include "bench/lib/harness/TimerTrust.h"
+#include "bench/lib/options/RunConfig.h"
 #include "core/PassTimes.h"
 #include "scenes/Scene.h"
 #include "techniques/FrameBlock.h"

@@ -1,11 +1,11 @@
 #pragma once
 // What a result row and the console header take from the run that measured it, whichever API ran it
-// (bench/lib/harness/Harness.h on GL, bench/lib/harness/VulkanHarness.h on Vulkan): the configuration, the scene, the
-// timer verdict and how the API names its device.
+// (bench/lib/harness/Harness.h on GL, bench/lib/harness/VulkanHarness.h on Vulkan): the configuration, the
+// scene, the timer verdict and how the API names its device.
 #include <string>
 
-#include "bench/lib/options/RunConfig.h"
 #include "bench/lib/harness/TimerTrust.h"
+#include "bench/lib/options/RunConfig.h"
 #include "scenes/Scene.h"
 
 namespace sb {

@@ -60,13 +60,16 @@ VulkanHarness::~VulkanHarness() {
 
 RowSource VulkanHarness::rowSource() const {
     const VulkanDeviceInfo& d = mContext->info();
-    return {config(),     scene(), contentHash(), false,    timerVerdict(), "vulkan",
-            d.apiVersion, d.name,  "",            d.driver, "vulkan",       std::to_string(d.index) + ": " + d.name};
+    return {config(),     scene(),        contentHash(),
+            false,        timerVerdict(), "vulkan",
+            d.apiVersion, d.name,         "",
+            d.driver,     "vulkan",       std::to_string(d.index) + ": " + d.name};
 }
 
 VulkanTechnique& VulkanHarness::vulkanForm(Technique& technique) {
     if (technique.api() != Api::Vulkan)
-        throw Error(technique.name() + ": a " + apiName(technique.api()) + " form handed to the Vulkan harness",
+        throw Error(technique.name() + ": a " + apiName(technique.api()) +
+                        " form handed to the Vulkan harness",
                     ExitCode::Failure);
     return static_cast<VulkanTechnique&>(technique);
 }

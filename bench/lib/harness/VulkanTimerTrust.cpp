@@ -27,7 +27,8 @@ public:
         mLarge.setVisibilityOutput(false);
         mLayout = createPipelineLayout(context, {}, sizeof(VulkanPush));
         GraphicsPipelineDesc d;
-        const ShaderModules modules = shaders.get(ShaderSources{"common/fullscreen.vert", "calibrate/fill.frag", ""}, {});
+        const ShaderModules modules =
+            shaders.get(ShaderSources{"common/fullscreen.vert", "calibrate/fill.frag", ""}, {});
         d.vertex = modules.vertex;
         d.fragment = modules.fragment;
         d.depthTest = d.depthWrite = false;

@@ -4,8 +4,9 @@
 // (the technique in kTitle, wrapped over up to kTitleLines lines of the tile's width, then its figures
 // in kText) above its map. The grid has at most `columns`
 // tiles per row; every cell of it is as wide as the widest map and its label block as tall as the tallest
-// label, so the maps line up. Text is BitmapFont (bench/lib/font/BitmapFont.h) at textScale() (1 for maps narrower than 512 px, 2
-// below 1024, else 3), lines kLineGap pixels apart; every text is cut to the width it has.
+// label, so the maps line up. Text is BitmapFont (bench/lib/font/BitmapFont.h) at textScale() (1 for maps
+// narrower than 512 px, 2 below 1024, else 3), lines kLineGap pixels apart; every text is cut to the width it
+// has.
 //
 // Geometry (m = kMargin, L = lineHeight(), in pixels): header lines from y = m, one per L; the legend
 // below them, one entry per line (a swatch of the glyph height, then its text); the grid from gridTop()

@@ -25,8 +25,8 @@
 #include <optional>
 #include <string>
 
-#include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "reference/AccuracyMetrics.h"
 #include "reference/EmbreeScene.h"
 #include "reference/GBufferRenderer.h"

@@ -4,10 +4,10 @@
 // workers all measure through here, so a row means the same whichever command wrote it.
 #include <optional>
 
-#include "bench/lib/output/CsvWriter.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
-#include "bench/lib/rows/Environment.h"
 #include "bench/lib/harness/MeasuredHarness.h"
+#include "bench/lib/measure/AccuracyEvaluator.h"
+#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/rows/Environment.h"
 
 namespace sb {
 

@@ -6,8 +6,9 @@ namespace sb {
 
 struct Environment {
     std::string timestamp; ///< ISO 8601 UTC, when the row was measured
-    std::string gitCommit; ///< the commit the binary was built from (bench/lib/rows/BuildInfo.h), or "unknown"
-    std::string cpuModel;  ///< /proc/cpuinfo "model name"
+    std::string
+        gitCommit;        ///< the commit the binary was built from (bench/lib/rows/BuildInfo.h), or "unknown"
+    std::string cpuModel; ///< /proc/cpuinfo "model name"
     int hardwareThreads = 0;
     std::string lpNumThreads; ///< LP_NUM_THREADS if set (llvmpipe rasteriser threads), else ""
     static Environment capture();

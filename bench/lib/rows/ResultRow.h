@@ -3,9 +3,9 @@
 // lists every column). GPU times appear only when the timer verdict is "trusted"; otherwise those cells stay
 // empty and timer_verdict/timer_reason say why (docs/ARCHITECTURE.md, "The timing contract": never present
 // untrusted numbers as GPU time).
+#include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/rows/Environment.h"
-#include "bench/lib/harness/MeasuredHarness.h"
 #include "techniques/EffectCoverage.h"
 
 namespace sb {

@@ -5,8 +5,8 @@
 #include <iosfwd>
 #include <string>
 
-#include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/select/AutoSelection.h"
 #include "techniques/PropertySet.h"
 

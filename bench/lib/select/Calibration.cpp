@@ -7,9 +7,9 @@
 #include <ostream>
 #include <unistd.h>
 
+#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/output/CsvWriter.h"
-#include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/rows/Environment.h"
 #include "core/Error.h"
 #include "registry/TechniqueRegistry.h"

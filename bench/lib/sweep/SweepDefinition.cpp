@@ -9,15 +9,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/options/QualitySweep.h"
 #include "bench/lib/options/RunOptions.h"
+#include "bench/lib/output/CsvNumber.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Paths.h"
 #include "core/Strings.h"
-#include "scenes/SceneLoader.h"
 #include "registry/TechniqueRegistry.h"
+#include "scenes/SceneLoader.h"
 
 namespace sb {
 

@@ -8,10 +8,10 @@
 #include <set>
 #include <unistd.h>
 
+#include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/rows/Environment.h"
-#include "bench/lib/options/RunOptions.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/SweepJob.h"
 #include "core/Error.h"

@@ -34,7 +34,8 @@ public:
     static constexpr size_t kMedianFrames = 30; ///< frames the overlay's median times are taken over
 
     /// Runs until the window closes or Esc, or after `maxFrames` frames when it is positive.
-    static int run(Harness& harness, std::vector<std::unique_ptr<GlTechnique>>& techniques, int maxFrames = 0);
+    static int run(Harness& harness, std::vector<std::unique_ptr<GlTechnique>>& techniques,
+                   int maxFrames = 0);
 };
 
 } // namespace sb
