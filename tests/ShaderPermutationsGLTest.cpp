@@ -498,6 +498,6 @@ TEST_P(ShaderPermutationsTest, EveryPermutationCompilesWithGlslang) {
 
 INSTANTIATE_TEST_SUITE_P(EveryTechnique, ShaderPermutationsTest,
                          ::testing::ValuesIn(TechniqueRegistry::names()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
 } // namespace

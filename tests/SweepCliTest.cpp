@@ -385,7 +385,9 @@ TEST_P(SweepOverride, CommandLineValueIsTheOneEveryRunGets) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const std::string line = everyRunLine(r.output);
     EXPECT_EQ(occurrences(line, c.cli), 1u) << line;
-    if (*c.gone) EXPECT_EQ(line.find(c.gone), std::string::npos) << line;
+    if (*c.gone) {
+        EXPECT_EQ(line.find(c.gone), std::string::npos) << line;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(PassThrough, SweepOverride, ::testing::ValuesIn(kOverrides),
