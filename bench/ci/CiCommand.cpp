@@ -217,6 +217,7 @@ int CiCommand::main(int argc, char** argv) {
     const std::string baselineDir = o.baselineDir.empty()
                                         ? fs::path(suite.path).parent_path().append("baseline").string()
                                         : o.baselineDir;
+    const std::string baselineWork = (fs::path(baselineDir) / "work.csv").string(); ///< layer A's
     const CiSide head{"head", o.headBench.empty() ? ChildProcess::selfExecutable() : o.headBench,
                       parseEnv(o.headEnv, "--head-env")};
     std::optional<CiSide> base;
@@ -226,11 +227,8 @@ int CiCommand::main(int argc, char** argv) {
     if (o.update && base)
         throw Error("--update writes the head's baseline; it takes no --base-bench/--base-env");
     // A missing committed baseline is bad input, said before the suite runs rather than after it.
-    if (!o.update && !base && hasLayer(o.layers, 'A')) {
-        const std::string basePath = (fs::path(baselineDir) / "work.csv").string();
-        if (!fs::exists(basePath))
-            throw Error("no committed baseline " + basePath + " (write one with bench ci --update)");
-    }
+    if (!o.update && !base && hasLayer(o.layers, 'A') && !fs::exists(baselineWork))
+        throw Error("no committed baseline " + baselineWork + " (write one with bench ci --update)");
     fs::create_directories(o.outDir);
     AtomicFile::checkWritable((fs::path(o.outDir) / "report.md").string(), "the report");
 
@@ -262,14 +260,12 @@ int CiCommand::main(int argc, char** argv) {
         dashboardRows = headRows;
         writeRows((fs::path(o.outDir) / "work.csv").string(), headRows);
         if (o.update) {
-            baselineFiles.emplace_back((fs::path(baselineDir) / "work.csv").string(),
-                                       CsvWriter::serialize(baselineColumns(headRows)));
-            baselineNotes.push_back("ci: layer A baseline rewritten: " + baselineDir + "/work.csv (" +
+            baselineFiles.emplace_back(baselineWork, CsvWriter::serialize(baselineColumns(headRows)));
+            baselineNotes.push_back("ci: layer A baseline rewritten: " + baselineWork + " (" +
                                     std::to_string(headRows.rows.size()) + " configurations)");
         } else {
-            const std::string basePath = (fs::path(baselineDir) / "work.csv").string();
             const CsvTable baseRows =
-                base ? workRows(suite, configs, *base) : onlyConfigs(CsvWriter::read(basePath), configs);
+                base ? workRows(suite, configs, *base) : onlyConfigs(CsvWriter::read(baselineWork), configs);
             if (base) writeRows((fs::path(o.outDir) / "work_base.csv").string(), baseRows);
             GateLayer layer =
                 judgeWork(WorkGate::compare(baseRows, headRows), report, base ? "base" : "baseline");
