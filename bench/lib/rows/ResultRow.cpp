@@ -1,6 +1,9 @@
 #include "bench/lib/rows/ResultRow.h"
 
+#include <array>
+
 #include "bench/lib/output/CsvNumber.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "core/Injection.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/Motion.h"
@@ -10,14 +13,17 @@ namespace sb {
 
 namespace {
 
-void addStats(CsvRow& row, const std::string& prefix, const Statistics& s) {
-    row.emplace_back(prefix + "_median", csvNumber(s.median));
-    row.emplace_back(prefix + "_p5", csvNumber(s.p5));
-    row.emplace_back(prefix + "_p95", csvNumber(s.p95));
-    row.emplace_back(prefix + "_p99", csvNumber(s.p99));
-    row.emplace_back(prefix + "_mean", csvNumber(s.mean));
-    row.emplace_back(prefix + "_stddev", csvNumber(s.stddev));
-    row.emplace_back(prefix + "_mad", csvNumber(s.mad));
+/// The seven statistics columns of one series, in the order addStats writes them.
+using StatsColumns = std::array<const char*, 7>;
+constexpr StatsColumns kWallStats = {col::kWallMsMedian, col::kWallMsP5,     col::kWallMsP95, col::kWallMsP99,
+                                     col::kWallMsMean,   col::kWallMsStddev, col::kWallMsMad};
+constexpr StatsColumns kCpuSubmitStats = {
+    col::kCpuSubmitMsMedian, col::kCpuSubmitMsP5,     col::kCpuSubmitMsP95, col::kCpuSubmitMsP99,
+    col::kCpuSubmitMsMean,   col::kCpuSubmitMsStddev, col::kCpuSubmitMsMad};
+
+void addStats(CsvRow& row, const StatsColumns& names, const Statistics& s) {
+    const double values[] = {s.median, s.p5, s.p95, s.p99, s.mean, s.stddev, s.mad};
+    for (size_t i = 0; i < names.size(); ++i) row.emplace_back(names[i], csvNumber(values[i]));
 }
 
 /// "directional+point": a light that casts no shadow is marked ("point:unshadowed").
@@ -42,36 +48,39 @@ std::string skippedText(const SkippedPasses& skipped) {
 void addLoads(CsvRow& row, const FrameLoads& loads) {
     const std::optional<PipelineCounts>& p = loads.pipeline;
     auto count = [&](uint64_t PipelineCounts::*field) { return p ? std::to_string((*p).*field) : ""; };
-    row.emplace_back("load_gl_calls", std::to_string(loads.submitted.glCalls));
-    row.emplace_back("load_vertices", count(&PipelineCounts::vertexShaderInvocations));
-    row.emplace_back("load_primitives", count(&PipelineCounts::primitivesSubmitted));
-    row.emplace_back("load_clipped_primitives", count(&PipelineCounts::clippingOutputPrimitives));
-    row.emplace_back("load_fragments", count(&PipelineCounts::fragmentShaderInvocations));
+    row.emplace_back(col::kLoadGlCalls, std::to_string(loads.submitted.glCalls));
+    row.emplace_back(col::kLoadVertices, count(&PipelineCounts::vertexShaderInvocations));
+    row.emplace_back(col::kLoadPrimitives, count(&PipelineCounts::primitivesSubmitted));
+    row.emplace_back(col::kLoadClippedPrimitives, count(&PipelineCounts::clippingOutputPrimitives));
+    row.emplace_back(col::kLoadFragments, count(&PipelineCounts::fragmentShaderInvocations));
 }
 
 /// The census frame's work pass by pass (bench/lib/harness/WorkCensus.h), the exact layer of the perf gate:
 /// `work_<pass>_<counter>`. Pipeline cells stay empty where the context cannot count them.
 void addPassWork(CsvRow& row, const FrameWork& passes) {
     for (const auto& [pass, w] : passes) {
-        const std::string prefix = "work_" + pass + "_";
         const std::optional<PipelineCounts>& p = w.pipeline;
         auto count = [&](uint64_t PipelineCounts::*field) { return p ? std::to_string((*p).*field) : ""; };
-        row.emplace_back(prefix + "gl_calls", std::to_string(w.submitted.glCalls));
-        row.emplace_back(prefix + "draws", std::to_string(w.submitted.drawCalls));
-        row.emplace_back(prefix + "triangles", std::to_string(w.submitted.triangles));
-        row.emplace_back(prefix + "vertices", count(&PipelineCounts::vertexShaderInvocations));
-        row.emplace_back(prefix + "primitives", count(&PipelineCounts::primitivesSubmitted));
-        row.emplace_back(prefix + "clipped_primitives", count(&PipelineCounts::clippingOutputPrimitives));
-        row.emplace_back(prefix + "fragments", count(&PipelineCounts::fragmentShaderInvocations));
+        row.emplace_back(col::member(col::kWorkGlCalls, pass), std::to_string(w.submitted.glCalls));
+        row.emplace_back(col::member(col::kWorkDraws, pass), std::to_string(w.submitted.drawCalls));
+        row.emplace_back(col::member(col::kWorkTriangles, pass), std::to_string(w.submitted.triangles));
+        row.emplace_back(col::member(col::kWorkVertices, pass),
+                         count(&PipelineCounts::vertexShaderInvocations));
+        row.emplace_back(col::member(col::kWorkPrimitives, pass),
+                         count(&PipelineCounts::primitivesSubmitted));
+        row.emplace_back(col::member(col::kWorkClippedPrimitives, pass),
+                         count(&PipelineCounts::clippingOutputPrimitives));
+        row.emplace_back(col::member(col::kWorkFragments, pass),
+                         count(&PipelineCounts::fragmentShaderInvocations));
     }
 }
 
 } // namespace
 
 CsvRow ResultRow::effectColumns(const EffectCoverage& coverage) {
-    return {{"effects_requested", effectMaskToString(coverage.requested)},
-            {"effects_delivered", effectMaskToString(coverage.delivered)},
-            {"effects_missing", effectMaskToString(coverage.missing)}};
+    return {{col::kEffectsRequested, effectMaskToString(coverage.requested)},
+            {col::kEffectsDelivered, effectMaskToString(coverage.delivered)},
+            {col::kEffectsMissing, effectMaskToString(coverage.missing)}};
 }
 
 CsvRow ResultRow::build(const MeasuredHarness& h, const RunResult& r, const Environment& env) {
@@ -84,67 +93,69 @@ CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environmen
     const TimerVerdict& v = h.verdict;
     const EffectCoverage coverage = EffectCoverage::of(scene.effects, r.effectsProduced);
     CsvRow row{
-        {"timestamp", env.timestamp},
-        {"git_commit", env.gitCommit},
-        {"status", "ok"},
-        {"api", h.api},
-        {"api_version", h.apiVersion},
-        {"renderer", h.renderer},
-        {"gl_version", h.glVersion},
-        {"gl_vendor", h.vendor},
-        {"backend", h.backend},
-        {"device", h.device},
-        {"cpu_model", env.cpuModel},
-        {"hw_threads", std::to_string(env.hardwareThreads)},
-        {"lp_num_threads", env.lpNumThreads},
-        {"scene", scene.name},
-        {"scene_hash", h.contentHash},
-        {"scene_triangles", std::to_string(scene.totalTriangles())},
-        {"technique", r.technique},
-        {"properties", r.properties},
-        {"permutation", r.permutation},
+        {col::kTimestamp, env.timestamp},
+        {col::kGitCommit, env.gitCommit},
+        {col::kStatus, col::kStatusOk},
+        {col::kApi, h.api},
+        {col::kApiVersion, h.apiVersion},
+        {col::kRenderer, h.renderer},
+        {col::kGlVersion, h.glVersion},
+        {col::kGlVendor, h.vendor},
+        {col::kBackend, h.backend},
+        {col::kDevice, h.device},
+        {col::kCpuModel, env.cpuModel},
+        {col::kHwThreads, std::to_string(env.hardwareThreads)},
+        {col::kLpNumThreads, env.lpNumThreads},
+        {col::kScene, scene.name},
+        {col::kSceneHash, h.contentHash},
+        {col::kSceneTriangles, std::to_string(scene.totalTriangles())},
+        {col::kTechnique, r.technique},
+        {col::kProperties, r.properties},
+        {col::kPermutation, r.permutation},
     };
     for (auto& column : effectColumns(coverage)) row.push_back(std::move(column));
-    row.emplace_back("passes_skipped", skippedText(r.loads.skipped));
+    row.emplace_back(col::kPassesSkipped, skippedText(r.loads.skipped));
     CsvRow rest{
-        {"instances", std::to_string(scene.countLayoutInstances())},
-        {"scale", csvNumber(c.sceneOptions.scale)},
-        {"tessellation",
+        {col::kInstances, std::to_string(scene.countLayoutInstances())},
+        {col::kScale, csvNumber(c.sceneOptions.scale)},
+        {col::kTessellation,
          c.sceneOptions.tessellation ? std::to_string(*c.sceneOptions.tessellation) : "default"},
-        {"tess_factor", csvNumber(c.sceneOptions.tessellationFactor)},
-        {"seed", c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
-        {"model", c.sceneOptions.modelPath},
-        {"submit", submitModeName(c.submit)},
-        {"camera", c.camera},
-        {"width", std::to_string(c.width)},
-        {"height", std::to_string(c.height)},
-        {"lights", lightsText(scene)},
-        {"motion", scene.motion ? scene.motion->describe() : ""},
-        {"path_frames", scene.motion ? std::to_string(scene.motion->frames) : ""},
-        {"path_time", !scene.motion ? ""
-                      : h.moving    ? "moving"
-                                    : csvNumber(c.pathTime)},
-        {"frames", std::to_string(r.wall.n)},
-        {"warmup", std::to_string(c.warmup)},
-        {"setup_ms", csvNumber(r.setupMs)},
+        {col::kTessFactor, csvNumber(c.sceneOptions.tessellationFactor)},
+        {col::kSeed, c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
+        {col::kModel, c.sceneOptions.modelPath},
+        {col::kSubmit, submitModeName(c.submit)},
+        {col::kCamera, c.camera},
+        {col::kWidth, std::to_string(c.width)},
+        {col::kHeight, std::to_string(c.height)},
+        {col::kLights, lightsText(scene)},
+        {col::kMotion, scene.motion ? scene.motion->describe() : ""},
+        {col::kPathFrames, scene.motion ? std::to_string(scene.motion->frames) : ""},
+        {col::kPathTime, !scene.motion ? ""
+                         : h.moving    ? "moving"
+                                       : csvNumber(c.pathTime)},
+        {col::kFrames, std::to_string(r.wall.n)},
+        {col::kWarmup, std::to_string(c.warmup)},
+        {col::kSetupMs, csvNumber(r.setupMs)},
     };
     for (auto& column : rest) row.push_back(std::move(column));
-    addStats(row, "wall_ms", r.wall);
-    addStats(row, "cpu_submit_ms", r.cpuSubmit);
-    row.emplace_back("motion_ms_median", h.moving ? csvNumber(r.motion.median) : "");
-    row.emplace_back("motion_ms_p95", h.moving ? csvNumber(r.motion.p95) : "");
-    row.emplace_back("fps_median", csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
-    row.emplace_back("timer_verdict", v.label());
-    row.emplace_back("timer_reason", v.reason);
+    addStats(row, kWallStats, r.wall);
+    addStats(row, kCpuSubmitStats, r.cpuSubmit);
+    row.emplace_back(col::kMotionMsMedian, h.moving ? csvNumber(r.motion.median) : "");
+    row.emplace_back(col::kMotionMsP95, h.moving ? csvNumber(r.motion.p95) : "");
+    row.emplace_back(col::kFpsMedian, csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
+    row.emplace_back(col::kTimerVerdict, v.label());
+    row.emplace_back(col::kTimerReason, v.reason);
     bool trusted = v.checked && v.trusted;
-    row.emplace_back("gpu_ms_median", trusted && r.gpuTotal.n ? csvNumber(r.gpuTotal.median) : "");
+    row.emplace_back(col::kGpuMsMedian, trusted && r.gpuTotal.n ? csvNumber(r.gpuTotal.median) : "");
     for (const auto& [pass, stats] : r.gpuPass)
-        row.emplace_back("gpu_" + pass + "_ms_median", trusted && stats.n ? csvNumber(stats.median) : "");
-    for (const auto& [name, value] : r.counters) row.emplace_back("counter_" + name, csvNumber(value));
+        row.emplace_back(col::member(col::kGpuPassMsMedian, pass),
+                         trusted && stats.n ? csvNumber(stats.median) : "");
+    for (const auto& [name, value] : r.counters)
+        row.emplace_back(col::member(col::kCounter, name), csvNumber(value));
     addLoads(row, r.loads);
     addPassWork(row, r.loads.passes);
     // A row measured with a deliberate regression switched on says so (core/Injection.h).
-    if (!injectionsText().empty()) row.emplace_back("injected", injectionsText());
+    if (!injectionsText().empty()) row.emplace_back(col::kInjected, injectionsText());
     return row;
 }
 

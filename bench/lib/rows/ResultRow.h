@@ -1,8 +1,8 @@
 #pragma once
-// Builds the CSV row of one measured configuration (docs/ARCHITECTURE.md, "Results"; README "CSV columns"
-// lists every column). GPU times appear only when the timer verdict is "trusted"; otherwise those cells stay
-// empty and timer_verdict/timer_reason say why (docs/ARCHITECTURE.md, "The timing contract": never present
-// untrusted numbers as GPU time).
+// Builds the CSV row of one measured configuration (docs/ARCHITECTURE.md, "Results"), its columns named and
+// ordered as bench/lib/output/ResultColumns.h's table (docs/CSV.md describes every one). GPU times appear
+// only when the timer verdict is "trusted"; otherwise those cells stay empty and timer_verdict/timer_reason
+// say why (docs/ARCHITECTURE.md, "The timing contract": never present untrusted numbers as GPU time).
 #include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/rows/Environment.h"
