@@ -11,6 +11,7 @@
 #include "bench/lib/gate/WorkGate.h"
 #include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/statistics/MultipleTesting.h"
 #include "bench/lib/statistics/RankTests.h"
 #include "bench/lib/statistics/Statistics.h"
@@ -33,12 +34,12 @@ over the configurations. Instructions (layer B) and an interleaved A/A control n
 /// Wall medians of the ok rows, per configuration key.
 std::map<std::string, std::vector<double>> roundsOf(const CsvTable& t) {
     std::map<std::string, std::vector<double>> out;
-    const bool named = t.hasColumn("ci_config");
+    const bool named = t.hasColumn(col::kCiConfig);
     for (const auto& row : t.rows) {
-        if (t.cell(row, "status") != "ok") continue;
-        const double v = std::strtod(t.cell(row, "wall_ms_median").c_str(), nullptr);
+        if (t.cell(row, col::kStatus) != col::kStatusOk) continue;
+        const double v = std::strtod(t.cell(row, col::kWallMsMedian).c_str(), nullptr);
         if (v > 0 && std::isfinite(v))
-            out[named ? t.cell(row, "ci_config") : WorkGate::configKey(t, row)].push_back(v);
+            out[named ? t.cell(row, col::kCiConfig) : WorkGate::configKey(t, row)].push_back(v);
     }
     return out;
 }

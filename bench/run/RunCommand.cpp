@@ -14,6 +14,7 @@
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ImageWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/output/StandardStreams.h"
 #include "bench/lib/rows/Environment.h"
@@ -103,7 +104,7 @@ struct Refusal {
 
 /// A sweep's words for the same: the context could not (exit code 3), or the technique failed.
 const char* statusOf(ExitCode code) {
-    return code == ExitCode::Unsupported ? "unsupported" : "failed";
+    return code == ExitCode::Unsupported ? col::kStatusUnsupported : col::kStatusFailed;
 }
 
 /// The row of a technique that threw `e`: what it is and why it has no numbers, in the columns a sweep
@@ -115,14 +116,14 @@ Refusal refusal(const std::string& technique, const std::string& properties, con
     r.code = e.code();
     r.what = e.what();
     r.message = r.what.rfind(technique + ":", 0) == 0 ? r.what : technique + ": " + r.what;
-    r.row = {{"timestamp", Environment::nowIso8601()},
-             {"git_commit", env.gitCommit},
-             {"status", statusOf(e.code())},
-             {"error", r.what},
-             {"technique", technique},
-             {"properties", properties},
-             {"repeat", std::to_string(round)},
-             {"baseline", baseline}};
+    r.row = {{col::kTimestamp, Environment::nowIso8601()},
+             {col::kGitCommit, env.gitCommit},
+             {col::kStatus, statusOf(e.code())},
+             {col::kError, r.what},
+             {col::kTechnique, technique},
+             {col::kProperties, properties},
+             {col::kRepeat, std::to_string(round)},
+             {col::kBaseline, baseline}};
     for (auto& column : ResultRow::effectColumns(coverage)) r.row.push_back(std::move(column));
     return r;
 }

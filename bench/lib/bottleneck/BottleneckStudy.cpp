@@ -1,5 +1,6 @@
 #include "bench/lib/bottleneck/BottleneckStudy.h"
 
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/output/TextColumns.h"
 
 #include <algorithm>
@@ -45,10 +46,10 @@ struct Setting {
             if (k == column) v = value;
     }
     void setSize(int w, int h) {
-        set("--size", "width", std::to_string(w) + "x" + std::to_string(h));
+        set("--size", col::kWidth, std::to_string(w) + "x" + std::to_string(h));
         for (auto& [k, v] : columns) {
-            if (k == "width") v = std::to_string(w);
-            if (k == "height") v = std::to_string(h);
+            if (k == col::kWidth) v = std::to_string(w);
+            if (k == col::kHeight) v = std::to_string(h);
         }
     }
     double number(const std::string& column) const { return std::stod(get(column)); }
@@ -60,25 +61,26 @@ struct Perturbation {
 };
 
 std::vector<Perturbation> perturbationsFor(const Setting& base, bool llvmpipe, bool hasNear) {
-    const double scale = base.number("scale"), factor = base.number("tess_factor");
-    const int w = int(base.number("width")), h = int(base.number("height"));
-    const bool immediate = base.get("submit") == "immediate";
+    const double scale = base.number(col::kScale), factor = base.number(col::kTessFactor);
+    const int w = int(base.number(col::kWidth)), h = int(base.number(col::kHeight));
+    const bool immediate = base.get(col::kSubmit) == "immediate";
     std::vector<Perturbation> out{{p::kBaseline, [](Setting&) {}},
                                   {immediate ? p::kSubmitRetained : p::kSubmitImmediate, [=](Setting& s) {
-                                       s.set("--submit", "submit", immediate ? "retained" : "immediate");
+                                       s.set("--submit", col::kSubmit, immediate ? "retained" : "immediate");
                                    }}};
     if (hasNear)
         out.push_back({p::kScaleNear, [=](Setting& s) {
-                           s.set("--scale", "scale", csvNumber(scale * 10.0));
-                           s.set("--camera", "camera", "near");
+                           s.set("--scale", col::kScale, csvNumber(scale * 10.0));
+                           s.set("--camera", col::kCamera, "near");
                        }});
-    out.push_back({p::kScaleSmall, [=](Setting& s) { s.set("--scale", "scale", csvNumber(scale * 0.01)); }});
+    out.push_back(
+        {p::kScaleSmall, [=](Setting& s) { s.set("--scale", col::kScale, csvNumber(scale * 0.01)); }});
     out.push_back({p::kSizeHalf, [=](Setting& s) { s.setSize(std::max(16, w / 2), std::max(16, h / 2)); }});
     out.push_back({p::kSizeDouble, [=](Setting& s) { s.setSize(w * 2, h * 2); }});
-    out.push_back(
-        {p::kTessHalf, [=](Setting& s) { s.set("--tess-factor", "tess_factor", csvNumber(factor * 0.5)); }});
+    out.push_back({p::kTessHalf,
+                   [=](Setting& s) { s.set("--tess-factor", col::kTessFactor, csvNumber(factor * 0.5)); }});
     out.push_back({p::kTessDouble,
-                   [=](Setting& s) { s.set("--tess-factor", "tess_factor", csvNumber(factor * 2.0)); }});
+                   [=](Setting& s) { s.set("--tess-factor", col::kTessFactor, csvNumber(factor * 2.0)); }});
     if (llvmpipe)
         out.push_back({p::kNoRasterizer, [](Setting& s) { s.env.emplace_back("LP_NO_RAST", "1"); }});
     return out;
@@ -123,16 +125,16 @@ private:
 /// and the frame).
 StageLoads loadsOf(const Rows& rows, const std::vector<std::string>& row) {
     StageLoads l;
-    l.cpu = rows.number(row, "load_gl_calls");
-    l.vertex = rows.number(row, "load_primitives");
-    if (!std::isfinite(l.vertex)) l.vertex = rows.number(row, "counter_triangles");
-    l.fill = rows.number(row, "load_fragments");
+    l.cpu = rows.number(row, col::kLoadGlCalls);
+    l.vertex = rows.number(row, col::kLoadPrimitives);
+    if (!std::isfinite(l.vertex)) l.vertex = rows.number(row, col::member(col::kCounter, "triangles"));
+    l.fill = rows.number(row, col::kLoadFragments);
     if (!std::isfinite(l.fill)) {
-        const std::string what = rows.get(row, "perturbation");
+        const std::string what = rows.get(row, col::kPerturbation);
         if (what == p::kNoRasterizer)
             l.fill = 0.0;
         else if (what != p::kScaleNear && what != p::kScaleSmall)
-            l.fill = rows.number(row, "width") * rows.number(row, "height");
+            l.fill = rows.number(row, col::kWidth) * rows.number(row, col::kHeight);
     }
     return l;
 }
@@ -144,8 +146,9 @@ struct Collected {
     std::vector<std::string> order;
 };
 
-const char* kIdentity[] = {"scene",  "instances", "scale",  "tessellation", "tess_factor", "submit",
-                           "camera", "width",     "height", "lights",       "renderer"};
+const char* kIdentity[] = {col::kScene,      col::kInstances, col::kScale,   col::kTessellation,
+                           col::kTessFactor, col::kSubmit,    col::kCamera,  col::kWidth,
+                           col::kHeight,     col::kLights,    col::kRenderer};
 
 /// Missing evidence (a failed run) prints as "-".
 std::string fmt(const char* f, double v) {
@@ -200,12 +203,12 @@ SweepPlan BottleneckStudy::plan(const SweepDefinition& base, bool llvmpipe,
     for (const SweepGroup& b : bases.groups) {
         const Setting setting{b.args, b.columns, {}};
         const bool hasNear =
-            std::count(scenesWithNear.begin(), scenesWithNear.end(), setting.get("scene")) > 0;
+            std::count(scenesWithNear.begin(), scenesWithNear.end(), setting.get(col::kScene)) > 0;
         for (const Perturbation& pert : perturbationsFor(setting, llvmpipe, hasNear)) {
             Setting s = setting;
             pert.apply(s);
             out.addGroup(s.args, s.columns, b.techniques, base.repeat, s.env,
-                         {{"perturbation", pert.name}, {"study_base", b.describe()}});
+                         {{col::kPerturbation, pert.name}, {col::kStudyBase, b.describe()}});
         }
     }
     return out;
@@ -213,29 +216,29 @@ SweepPlan BottleneckStudy::plan(const SweepDefinition& base, bool llvmpipe,
 
 std::vector<BottleneckEntry> BottleneckStudy::analyse(const CsvTable& table) {
     const Rows rows(table);
-    if (!rows.has("perturbation") || !rows.has("study_base"))
+    if (!rows.has(col::kPerturbation) || !rows.has(col::kStudyBase))
         throw Error("no bottleneck rows (columns 'perturbation' and 'study_base' missing)");
     std::vector<std::string> order;
     std::map<std::string, Collected> groups;
     for (const auto& row : table.rows) {
-        const std::string what = rows.get(row, "perturbation");
+        const std::string what = rows.get(row, col::kPerturbation);
         if (what.empty()) continue;
-        const std::string key = rows.get(row, "sweep_id") + "/" + rows.get(row, "study_base") + "/" +
-                                rows.get(row, "technique_spec");
+        const std::string key = rows.get(row, col::kSweepId) + "/" + rows.get(row, col::kStudyBase) + "/" +
+                                rows.get(row, col::kTechniqueSpec);
         auto [it, fresh] = groups.try_emplace(key);
         Collected& c = it->second;
         if (fresh) {
             order.push_back(key);
-            c.entry.sweepId = rows.get(row, "sweep_id");
-            c.entry.studyBase = rows.get(row, "study_base");
-            c.entry.techniqueSpec = rows.get(row, "technique_spec");
+            c.entry.sweepId = rows.get(row, col::kSweepId);
+            c.entry.studyBase = rows.get(row, col::kStudyBase);
+            c.entry.techniqueSpec = rows.get(row, col::kTechniqueSpec);
         }
         if (!std::count(c.order.begin(), c.order.end(), what)) c.order.push_back(what);
-        if (rows.get(row, "status") != "ok") continue;
-        c.walls[what].push_back(rows.number(row, "wall_ms_median"));
+        if (rows.get(row, col::kStatus) != col::kStatusOk) continue;
+        c.walls[what].push_back(rows.number(row, col::kWallMsMedian));
         if (!c.loads.count(what)) c.loads[what] = loadsOf(rows, row);
         if (what == p::kBaseline && c.entry.identity.empty())
-            for (const char* col : kIdentity) c.entry.identity.emplace_back(col, rows.get(row, col));
+            for (const char* name : kIdentity) c.entry.identity.emplace_back(name, rows.get(row, name));
     }
     if (order.empty()) throw Error("no bottleneck rows (no row has a 'perturbation')");
     std::vector<BottleneckEntry> out;
@@ -296,19 +299,19 @@ CsvTable BottleneckStudy::summary(const CsvTable& classes) {
     // What printTable shows, in its order: who and where, the class, the shares, the fit's quality, and
     // the measured time ratio of every perturbation; the renderer last (it is long and the same in
     // every row, so the Markdown export lists it above the table).
-    std::vector<std::string> columns{"technique_spec"};
-    for (const char* col : kIdentity)
-        if (std::string(col) != "renderer") columns.push_back(col);
+    std::vector<std::string> columns{col::kTechniqueSpec};
+    for (const char* name : kIdentity)
+        if (std::string(name) != col::kRenderer) columns.push_back(name);
     columns.insert(columns.end(), {"wall_ms_baseline", "class", "share_cpu", "share_vertex", "share_fill",
                                    "rms_rel_residual", "poor_fit", "held_out_rel_error"});
     for (const std::string& what : perturbations()) columns.push_back("time_ratio_" + what);
-    columns.push_back("renderer");
+    columns.push_back(col::kRenderer);
     CsvTable out;
     std::vector<size_t> from;
-    for (const std::string& col : columns) {
-        const auto it = std::find(classes.header.begin(), classes.header.end(), col);
+    for (const std::string& name : columns) {
+        const auto it = std::find(classes.header.begin(), classes.header.end(), name);
         if (it == classes.header.end()) continue; // a perturbation this study did not run
-        out.header.push_back(col);
+        out.header.push_back(name);
         from.push_back(size_t(it - classes.header.begin()));
     }
     for (const auto& row : classes.rows) {
@@ -323,7 +326,9 @@ CsvTable BottleneckStudy::table(const std::vector<BottleneckEntry>& entries) {
     std::vector<CsvRow> rows;
     for (const BottleneckEntry& e : entries) {
         const BottleneckResult& r = e.result;
-        CsvRow row{{"sweep_id", e.sweepId}, {"study_base", e.studyBase}, {"technique_spec", e.techniqueSpec}};
+        CsvRow row{{col::kSweepId, e.sweepId},
+                   {col::kStudyBase, e.studyBase},
+                   {col::kTechniqueSpec, e.techniqueSpec}};
         row.insert(row.end(), e.identity.begin(), e.identity.end());
         row.insert(row.end(), {{"wall_ms_baseline", csvNumber(e.baselineWallMs)},
                                {"class", r.label},

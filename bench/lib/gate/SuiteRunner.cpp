@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "core/Error.h"
 
@@ -69,7 +70,7 @@ CsvRow SuiteRunner::run(const CiSuite& suite, const CiConfig& config, const CiSi
     if (table.rows.size() != 1)
         throw Error(where + ": expected one row, got " + std::to_string(table.rows.size()),
                     ExitCode::Failure);
-    CsvRow row{{"ci_config", config.name}, {"ci_side", side.label}};
+    CsvRow row{{col::kCiConfig, config.name}, {col::kCiSide, side.label}};
     for (size_t c = 0; c < table.header.size(); ++c) row.emplace_back(table.header[c], table.rows[0][c]);
     return row;
 }

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "bench/lib/gate/WallTimeVerdict.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/statistics/MultipleTesting.h"
 #include "bench/lib/statistics/WallTimeStats.h"
 #include "core/Error.h"
@@ -16,7 +17,7 @@ namespace {
 
 double wallOf(const CsvRow& row) {
     for (const auto& [k, v] : row)
-        if (k == "wall_ms_median") return std::strtod(v.c_str(), nullptr);
+        if (k == col::kWallMsMedian) return std::strtod(v.c_str(), nullptr);
     throw Error("a run's row has no wall_ms_median", ExitCode::Failure);
 }
 
@@ -55,8 +56,8 @@ WallLayerResult WallLayer::run(const CiSuite& suite, const std::vector<const CiC
     Series controlSeries;
     auto measure = [&](const CiConfig& c, const CiSide& side, int round, const char* role) {
         CsvRow row = SuiteRunner::run(suite, c, side, request);
-        row.insert(row.begin() + 2, {"ci_round", std::to_string(round)});
-        row.insert(row.begin() + 3, {"ci_role", role});
+        row.insert(row.begin() + 2, {col::kCiRound, std::to_string(round)});
+        row.insert(row.begin() + 3, {col::kCiRole, role});
         const double wall = wallOf(row);
         out.runs.push_back(std::move(row));
         return wall;

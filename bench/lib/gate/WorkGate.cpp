@@ -5,14 +5,17 @@
 #include <cstdio>
 #include <set>
 
+#include "bench/lib/output/ResultColumns.h"
+
 namespace sb {
 
 namespace {
 
 /// The columns that define a configuration when there is no ci_config (ResultRow's names).
-const std::vector<std::string> kKeyColumns = {"technique",    "properties",  "scene",  "instances", "scale",
-                                              "tessellation", "tess_factor", "seed",   "model",     "submit",
-                                              "camera",       "width",       "height", "lights"};
+const std::vector<std::string> kKeyColumns = {
+    col::kTechnique,    col::kProperties, col::kScene,  col::kInstances, col::kScale,
+    col::kTessellation, col::kTessFactor, col::kSeed,   col::kModel,     col::kSubmit,
+    col::kCamera,       col::kWidth,      col::kHeight, col::kLights};
 
 /// The counts of one configuration, with the row that carried them.
 struct ConfigWork {
@@ -35,15 +38,15 @@ std::map<std::string, double> countsOf(const CsvTable& t, const std::vector<std:
 std::map<std::string, ConfigWork> collect(const CsvTable& t, bool useCiConfig) {
     std::map<std::string, ConfigWork> out;
     for (const auto& row : t.rows) {
-        if (t.cell(row, "status") != "ok") continue;
-        const std::string key = useCiConfig ? t.cell(row, "ci_config") : WorkGate::configKey(t, row);
+        if (t.cell(row, col::kStatus) != col::kStatusOk) continue;
+        const std::string key = useCiConfig ? t.cell(row, col::kCiConfig) : WorkGate::configKey(t, row);
         auto counts = countsOf(t, row);
         auto [it, fresh] = out.try_emplace(key);
         ConfigWork& w = it->second;
         if (fresh) {
             w.counts = std::move(counts);
-            w.renderer = t.cell(row, "renderer");
-            w.glVersion = t.cell(row, "gl_version");
+            w.renderer = t.cell(row, col::kRenderer);
+            w.glVersion = t.cell(row, col::kGlVersion);
         } else if (w.disagreement.empty() && counts != w.counts) {
             w.disagreement = "two rows of it count different work (the counts are not exact here)";
         }
@@ -83,7 +86,7 @@ std::string WorkGate::configKey(const CsvTable& table, const std::vector<std::st
 }
 
 WorkComparison WorkGate::compare(const CsvTable& base, const CsvTable& head) {
-    const bool byName = base.hasColumn("ci_config") && head.hasColumn("ci_config");
+    const bool byName = base.hasColumn(col::kCiConfig) && head.hasColumn(col::kCiConfig);
     const auto b = collect(base, byName), h = collect(head, byName);
     WorkComparison out;
     for (const auto& [key, bw] : b) {

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/lib/output/CsvNumber.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
 #include "scenes/Motion.h"
@@ -234,36 +235,36 @@ void AccuracyEvaluator::measurePath(GlTechnique& technique, const AccuracyOption
 
 void AccuracyResult::appendColumns(CsvRow& row) const {
     auto add = [&](const char* name, double v) { row.emplace_back(name, csvNumber(v)); };
-    row.emplace_back("acc_light", std::to_string(light));
-    row.emplace_back("acc_reference", softReference ? "soft" : "hard");
-    add("acc_evaluated", double(hard.evaluated));
-    add("acc_false_shadow_pct", hard.falseShadowPct);
-    add("acc_false_light_pct", hard.falseLightPct);
-    add("acc_wrong_pct", hard.wrongPct);
-    add("acc_false_shadow_no_edge_pct", hard.falseShadowNoEdgePct);
-    add("acc_false_light_no_edge_pct", hard.falseLightNoEdgePct);
-    add("acc_wrong_no_edge_pct", hard.wrongNoEdgePct);
-    add("acc_rmse", soft.rmse);
-    add("acc_mean_abs", soft.meanAbs);
-    add("acc_max_abs", soft.maxAbs);
-    add("acc_nan", double(sanity.nan));
-    add("acc_inf", double(sanity.inf));
-    add("acc_out_of_range", double(sanity.outOfRange));
-    row.emplace_back("acc_gain_camera", stabilityMeasured ? csvNumber(cameraGain) : "");
-    row.emplace_back("acc_gain_light", stabilityMeasured ? csvNumber(lightGain) : "");
-    row.emplace_back("acc_flicker", stabilityMeasured ? csvNumber(flicker) : "");
-    row.emplace_back("acc_path_points", path ? std::to_string(path->points) : "");
-    row.emplace_back("acc_path_wrong_mean_pct", path ? csvNumber(path->wrongMeanPct) : "");
-    row.emplace_back("acc_path_wrong_max_pct", path ? csvNumber(path->wrongMaxPct) : "");
-    row.emplace_back("acc_path_changes_technique", path ? std::to_string(path->changesTechnique) : "");
-    row.emplace_back("acc_path_changes_reference", path ? std::to_string(path->changesReference) : "");
-    row.emplace_back("acc_path_false_changes", path ? std::to_string(path->falseChanges) : "");
-    row.emplace_back("acc_path_flicker", path ? csvNumber(path->flicker) : "");
-    add("ref_samples", reference.samplesPerPixel);
-    add("ref_noise_bound", reference.noiseBound);
-    add("ref_rays", double(reference.rays));
-    add("ref_rays_per_s_per_thread", reference.raysPerSecondPerThread);
-    add("ref_threads", reference.threads);
+    row.emplace_back(col::kAccLight, std::to_string(light));
+    row.emplace_back(col::kAccReference, softReference ? "soft" : "hard");
+    add(col::kAccEvaluated, double(hard.evaluated));
+    add(col::kAccFalseShadowPct, hard.falseShadowPct);
+    add(col::kAccFalseLightPct, hard.falseLightPct);
+    add(col::kAccWrongPct, hard.wrongPct);
+    add(col::kAccFalseShadowNoEdgePct, hard.falseShadowNoEdgePct);
+    add(col::kAccFalseLightNoEdgePct, hard.falseLightNoEdgePct);
+    add(col::kAccWrongNoEdgePct, hard.wrongNoEdgePct);
+    add(col::kAccRmse, soft.rmse);
+    add(col::kAccMeanAbs, soft.meanAbs);
+    add(col::kAccMaxAbs, soft.maxAbs);
+    add(col::kAccNan, double(sanity.nan));
+    add(col::kAccInf, double(sanity.inf));
+    add(col::kAccOutOfRange, double(sanity.outOfRange));
+    row.emplace_back(col::kAccGainCamera, stabilityMeasured ? csvNumber(cameraGain) : "");
+    row.emplace_back(col::kAccGainLight, stabilityMeasured ? csvNumber(lightGain) : "");
+    row.emplace_back(col::kAccFlicker, stabilityMeasured ? csvNumber(flicker) : "");
+    row.emplace_back(col::kAccPathPoints, path ? std::to_string(path->points) : "");
+    row.emplace_back(col::kAccPathWrongMeanPct, path ? csvNumber(path->wrongMeanPct) : "");
+    row.emplace_back(col::kAccPathWrongMaxPct, path ? csvNumber(path->wrongMaxPct) : "");
+    row.emplace_back(col::kAccPathChangesTechnique, path ? std::to_string(path->changesTechnique) : "");
+    row.emplace_back(col::kAccPathChangesReference, path ? std::to_string(path->changesReference) : "");
+    row.emplace_back(col::kAccPathFalseChanges, path ? std::to_string(path->falseChanges) : "");
+    row.emplace_back(col::kAccPathFlicker, path ? csvNumber(path->flicker) : "");
+    add(col::kRefSamples, reference.samplesPerPixel);
+    add(col::kRefNoiseBound, reference.noiseBound);
+    add(col::kRefRays, double(reference.rays));
+    add(col::kRefRaysPerSPerThread, reference.raysPerSecondPerThread);
+    add(col::kRefThreads, reference.threads);
 }
 
 } // namespace sb

@@ -1,6 +1,7 @@
 #include "bench/lib/measure/Measurement.h"
 
 #include "bench/lib/output/CsvNumber.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/rows/ResultRow.h"
 
 namespace sb {
@@ -23,10 +24,10 @@ Measurement Measurement::take(MeasuredHarness& harness, Technique& technique, Ac
 }
 
 void Measurement::addRound(int round, const std::string& baseline, std::optional<double> baselineWallMs) {
-    row.emplace_back("repeat", std::to_string(round));
-    row.emplace_back("baseline", baseline);
+    row.emplace_back(col::kRepeat, std::to_string(round));
+    row.emplace_back(col::kBaseline, baseline);
     const bool ratio = baselineWallMs && *baselineWallMs > 0.0;
-    row.emplace_back("wall_ratio_vs_baseline", ratio ? csvNumber(run.wall.median / *baselineWallMs) : "");
+    row.emplace_back(col::kWallRatioVsBaseline, ratio ? csvNumber(run.wall.median / *baselineWallMs) : "");
 }
 
 } // namespace sb

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -16,13 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kSweepId = "sweep_id";
-constexpr const char* kSweepConfigs = "sweep_configs";
-constexpr const char* kConfigIndex = "config_index";
-constexpr const char* kShard = "shard";
-constexpr const char* kStatus = "status";
-constexpr const char* kStatusOk = "ok";
-constexpr const char* kTimerVerdict = "timer_verdict";
 constexpr size_t kMaxListedMissing = 10;
 
 // Every refusal is about what the user handed in; the message is the one line printed before exit 2.
@@ -76,8 +70,8 @@ size_t requireColumn(const Input& in, const char* column) {
 
 Input readInput(const std::string& path) {
     Input in{path, CsvWriter::read(path), {}, {}};
-    in.columns = {requireColumn(in, kSweepId), requireColumn(in, kSweepConfigs),
-                  requireColumn(in, kConfigIndex), requireColumn(in, kShard)};
+    in.columns = {requireColumn(in, col::kSweepId), requireColumn(in, col::kSweepConfigs),
+                  requireColumn(in, col::kConfigIndex), requireColumn(in, col::kShard)};
     in.lines = rowLines(in.table);
     return in;
 }
@@ -145,7 +139,7 @@ public:
         const std::vector<std::string>& cells = in.table.rows[row];
         std::string where = in.path + ":" + std::to_string(in.lines[row]);
         const std::string& id = cells[in.columns.id];
-        if (id.empty()) fail(where + ": empty " + kSweepId);
+        if (id.empty()) fail(where + ": empty " + col::kSweepId);
         agree(mId, id, where, "rows of different sweeps mixed: sweep_id");
         size_t configs = requireConfigs(cells[in.columns.configs], where);
         size_t index = requireIndex(cells[in.columns.index], configs, where);
@@ -175,7 +169,7 @@ private:
     size_t requireConfigs(const std::string& cell, const std::string& where) {
         std::optional<size_t> configs = parseCount(cell);
         if (!configs || *configs < 1)
-            fail(where + ": " + kSweepConfigs + " " + inQuotes(cell) + " is not a positive integer");
+            fail(where + ": " + col::kSweepConfigs + " " + inQuotes(cell) + " is not a positive integer");
         // Compared as numbers: "048" and "48" are the same sweep.
         agree(mConfigs, std::to_string(*configs), where, "rows of different sweeps mixed: sweep_configs");
         return *configs;
@@ -184,14 +178,15 @@ private:
     static size_t requireIndex(const std::string& cell, size_t configs, const std::string& where) {
         std::optional<size_t> index = parseCount(cell);
         if (!index || *index >= configs)
-            fail(where + ": " + kConfigIndex + " " + inQuotes(cell) + " is not an integer in [0, " +
+            fail(where + ": " + col::kConfigIndex + " " + inQuotes(cell) + " is not an integer in [0, " +
                  std::to_string(configs) + ")");
         return *index;
     }
 
     static ShardSpec requireShard(const std::string& cell, const std::string& where) {
         std::optional<ShardSpec> shard = parseShard(cell);
-        if (!shard) fail(where + ": " + kShard + " " + inQuotes(cell) + " is not \"i/N\" with 1 <= i <= N");
+        if (!shard)
+            fail(where + ": " + col::kShard + " " + inQuotes(cell) + " is not \"i/N\" with 1 <= i <= N");
         return *shard;
     }
 
@@ -254,10 +249,10 @@ CsvTable mergedTable(const std::vector<Input>& inputs) {
 }
 
 size_t countFailedRows(const CsvTable& table) {
-    auto status = std::find(table.header.begin(), table.header.end(), kStatus);
+    auto status = std::find(table.header.begin(), table.header.end(), col::kStatus);
     size_t column = size_t(status - table.header.begin());
     return size_t(std::count_if(table.rows.begin(), table.rows.end(), [&](const auto& row) {
-        return column == table.header.size() || row[column] != kStatusOk;
+        return column == table.header.size() || row[column] != col::kStatusOk;
     }));
 }
 
@@ -273,7 +268,7 @@ struct VerdictTally {
 VerdictTally tallyVerdicts(const std::vector<Input>& inputs) {
     VerdictTally tally;
     for (const Input& in : inputs) {
-        auto column = std::find(in.table.header.begin(), in.table.header.end(), kTimerVerdict);
+        auto column = std::find(in.table.header.begin(), in.table.header.end(), col::kTimerVerdict);
         if (column == in.table.header.end()) continue;
         const size_t c = size_t(column - in.table.header.begin());
         for (size_t r = 0; r < in.table.rows.size(); ++r) {

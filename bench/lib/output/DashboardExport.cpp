@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/output/RowExport.h"
 #include "core/Error.h"
 
@@ -17,9 +18,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The exact work of a frame: identical between runs of the same build and driver (README, "the perf
 // gate"), so a dashboard's chart of them moves only when the work does.
-const std::vector<std::string> kCounterColumns = {"load_gl_calls",   "load_vertices",
-                                                  "load_primitives", "load_clipped_primitives",
-                                                  "load_fragments",  "ir_per_frame"};
+const std::vector<std::string> kCounterColumns = {col::kLoadGlCalls,    col::kLoadVertices,
+                                                  col::kLoadPrimitives, col::kLoadClippedPrimitives,
+                                                  col::kLoadFragments,  "ir_per_frame"};
 
 // The unit github-action-benchmark prints beside a counter's value.
 std::string counterUnit(const std::string& column) {
@@ -52,39 +53,39 @@ std::string fixed(double v) {
 } // namespace
 
 std::string DashboardExport::benchmarkName(const CsvTable& table, const std::vector<std::string>& row) {
-    const std::string config = table.cell(row, "ci_config");
+    const std::string config = table.cell(row, col::kCiConfig);
     if (!config.empty()) return config;
-    std::string name = table.cell(row, "technique");
-    const std::string properties = table.cell(row, "properties");
+    std::string name = table.cell(row, col::kTechnique);
+    const std::string properties = table.cell(row, col::kProperties);
     if (!properties.empty()) name += ":" + properties;
-    appendPart(name, table.cell(row, "scene"));
-    appendPart(name, table.cell(row, "instances"), "n");
-    appendPart(name, table.cell(row, "submit"));
-    appendPart(name, table.cell(row, "camera"));
-    const std::string w = table.cell(row, "width"), h = table.cell(row, "height");
+    appendPart(name, table.cell(row, col::kScene));
+    appendPart(name, table.cell(row, col::kInstances), "n");
+    appendPart(name, table.cell(row, col::kSubmit));
+    appendPart(name, table.cell(row, col::kCamera));
+    const std::string w = table.cell(row, col::kWidth), h = table.cell(row, col::kHeight);
     if (!w.empty() && !h.empty()) appendPart(name, w + "x" + h);
-    appendPart(name, table.cell(row, "api"));
+    appendPart(name, table.cell(row, col::kApi));
     return name;
 }
 
 std::vector<DashboardEntry> DashboardExport::entries(const CsvTable& table) {
-    if (!table.hasColumn("wall_ms_median"))
+    if (!table.hasColumn(col::kWallMsMedian))
         throw Error("the CSV has no wall_ms_median column: not rows measured by bench (a run, a sweep, or "
                     "the perf gate's work.csv / wall.csv)",
                     ExitCode::BadInput);
     std::vector<DashboardEntry> out;
     for (const auto& row : table.rows) {
-        const std::string status = table.cell(row, "status");
-        if (!status.empty() && status != "ok") continue;
+        const std::string status = table.cell(row, col::kStatus);
+        if (!status.empty() && status != col::kStatusOk) continue;
         DashboardEntry e;
         e.name = benchmarkName(table, row);
-        e.status = status.empty() ? "ok" : status;
-        e.properties = table.cell(row, "properties");
-        e.wallMs = number(table, row, "wall_ms_median");
-        e.wallP5 = number(table, row, "wall_ms_p5");
-        e.wallP95 = number(table, row, "wall_ms_p95");
-        e.cpuMs = number(table, row, "cpu_submit_ms_median");
-        const double frames = number(table, row, "frames");
+        e.status = status.empty() ? col::kStatusOk : status;
+        e.properties = table.cell(row, col::kProperties);
+        e.wallMs = number(table, row, col::kWallMsMedian);
+        e.wallP5 = number(table, row, col::kWallMsP5);
+        e.wallP95 = number(table, row, col::kWallMsP95);
+        e.cpuMs = number(table, row, col::kCpuSubmitMsMedian);
+        const double frames = number(table, row, col::kFrames);
         e.frames = std::isfinite(frames) ? static_cast<long long>(frames) : 0;
         for (const std::string& column : kCounterColumns) {
             const double v = number(table, row, column);
@@ -100,20 +101,21 @@ std::string DashboardExport::googleBenchmark(const CsvTable& table) {
     OrderedJson context = OrderedJson::object();
     if (!table.rows.empty()) {
         const auto& first = table.rows.front();
-        context["date"] = table.cell(first, "timestamp");
-        context["host_name"] = table.cell(first, "cpu_model");
+        context["date"] = table.cell(first, col::kTimestamp);
+        context["host_name"] = table.cell(first, col::kCpuModel);
         context["executable"] = "bench";
-        const double threads = number(table, first, "hw_threads");
+        const double threads = number(table, first, col::kHwThreads);
         context["num_cpus"] =
             std::isfinite(threads) ? OrderedJson(static_cast<long long>(threads)) : OrderedJson(0);
         context["mhz_per_cpu"] = 0;
         context["cpu_scaling_enabled"] = false;
         context["caches"] = OrderedJson::array();
         context["library_build_type"] = "release";
-        context["renderer"] = table.cell(first, "renderer");
-        context["api_version"] = table.cell(first, "api_version").empty() ? table.cell(first, "gl_version")
-                                                                          : table.cell(first, "api_version");
-        context["git_commit"] = table.cell(first, "git_commit");
+        context[col::kRenderer] = table.cell(first, col::kRenderer);
+        context[col::kApiVersion] = table.cell(first, col::kApiVersion).empty()
+                                        ? table.cell(first, col::kGlVersion)
+                                        : table.cell(first, col::kApiVersion);
+        context[col::kGitCommit] = table.cell(first, col::kGitCommit);
     }
     context["rows_not_ok"] = static_cast<long long>(table.rows.size() - list.size());
     OrderedJson benchmarks = OrderedJson::array();

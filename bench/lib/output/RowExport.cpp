@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/lib/output/DashboardExport.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -34,8 +35,8 @@ constexpr RowFormatEntry kFormatEntries[] = {
 };
 constexpr NameTable kFormats{kFormatEntries};
 
-const std::vector<std::string> kIdentifierColumns = {"git_commit", "scene_hash", "sweep_id",
-                                                     "seed",       "shard",      "config_key"};
+const std::vector<std::string> kIdentifierColumns = {col::kGitCommit, col::kSceneHash, col::kSweepId,
+                                                     col::kSeed,      col::kShard,     "config_key"};
 const std::vector<std::string> kIdentifierSuffixes = {"_hash", "_id"};
 
 bool isDigit(char c) {
@@ -295,15 +296,15 @@ std::string RowExport::toMarkdown(const CsvTable& table, bool allColumns) {
 const std::vector<std::string>& RowExport::markdownColumns() {
     // clang-format off
     static const std::vector<std::string> kColumns = {
-        "status", "error",
-        "technique", "properties", "scene", "instances", "scale", "tessellation", "submit", "camera",
-        "width", "height", "lights", "perturbation", "repeat", "frames",
-        "wall_ms_median", "wall_ms_p5", "wall_ms_p95", "wall_ms_mad", "cpu_submit_ms_median", "fps_median",
-        "gpu_ms_median", "wall_ratio_vs_baseline", "timer_verdict",
-        "acc_wrong_pct", "acc_wrong_no_edge_pct", "acc_rmse", "acc_nan", "acc_inf", "acc_out_of_range",
-        "acc_gain_camera", "acc_gain_light", "acc_flicker",
-        "load_gl_calls", "load_vertices", "load_fragments",
-        "renderer",
+        col::kStatus, col::kError,
+        col::kTechnique, col::kProperties, col::kScene, col::kInstances, col::kScale, col::kTessellation, col::kSubmit, col::kCamera,
+        col::kWidth, col::kHeight, col::kLights, col::kPerturbation, col::kRepeat, col::kFrames,
+        col::kWallMsMedian, col::kWallMsP5, col::kWallMsP95, col::kWallMsMad, col::kCpuSubmitMsMedian, col::kFpsMedian,
+        col::kGpuMsMedian, col::kWallRatioVsBaseline, col::kTimerVerdict,
+        col::kAccWrongPct, col::kAccWrongNoEdgePct, col::kAccRmse, col::kAccNan, col::kAccInf, col::kAccOutOfRange,
+        col::kAccGainCamera, col::kAccGainLight, col::kAccFlicker,
+        col::kLoadGlCalls, col::kLoadVertices, col::kLoadFragments,
+        col::kRenderer,
     };
     // clang-format on
     return kColumns;

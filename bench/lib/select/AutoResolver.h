@@ -7,6 +7,7 @@
 
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/select/AutoSelection.h"
 #include "techniques/PropertySet.h"
 
@@ -18,7 +19,7 @@ struct AutoResolution {
     std::string candidates; ///< "shadowmap 3.1 ms 0.2% qualifies; planar lacks self_shadowing; ..."
     AutoCandidate chosen;   ///< the chosen candidate as calibrated (effects, cost, error)
     /// auto_choice, auto_candidates: appended to every row of the chosen technique.
-    CsvRow columns() const { return {{"auto_choice", reason}, {"auto_candidates", candidates}}; }
+    CsvRow columns() const { return {{col::kAutoChoice, reason}, {col::kAutoCandidates, candidates}}; }
 };
 
 class AutoResolver {

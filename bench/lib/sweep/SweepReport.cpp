@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "bench/lib/output/ProgressBar.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "core/Strings.h"
 
 namespace sb {
@@ -45,11 +46,11 @@ void SweepReport::printSummary(std::ostream& os, const SweepPlan& plan, const Sw
     if (s.timer) os << "GPU timer " << s.timer->label() << ": " << s.timer->reason << "\n";
     if (s.failed || s.unsupported) {
         const CsvTable t = shardRows(plan, options);
-        const size_t status = column(t, "status"), error = column(t, "error"),
-                     index = column(t, "config_index");
+        const size_t status = column(t, col::kStatus), error = column(t, col::kError),
+                     index = column(t, col::kConfigIndex);
         size_t shown = 0;
         for (const auto& row : t.rows) {
-            if (status >= row.size() || row[status] == "ok" || shown == kFailuresShown) continue;
+            if (status >= row.size() || row[status] == col::kStatusOk || shown == kFailuresShown) continue;
             os << "  " << row[status] << " #" << (index < row.size() ? row[index] : "?") << ": "
                << (error < row.size() ? row[error] : "") << "\n";
             ++shown;
@@ -62,7 +63,7 @@ void SweepReport::printSummary(std::ostream& os, const SweepPlan& plan, const Sw
 
 CsvTable SweepReport::shardRows(const SweepPlan& plan, const SweepRunOptions& options) {
     CsvTable t = CsvWriter::read(options.csvPath);
-    const size_t id = column(t, "sweep_id"), shard = column(t, "shard");
+    const size_t id = column(t, col::kSweepId), shard = column(t, col::kShard);
     const std::string wantId = plan.id();
     const std::string wantShard = std::to_string(options.shard) + "/" + std::to_string(options.shardCount);
     std::erase_if(t.rows, [&](const std::vector<std::string>& row) {

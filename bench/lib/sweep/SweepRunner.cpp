@@ -11,6 +11,7 @@
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ProgressBar.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/rows/Environment.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/SweepJob.h"
@@ -89,16 +90,17 @@ Done readDone(const SweepPlan& plan, const SweepRunOptions& options) {
     if (t.rows.empty()) return done;
     const std::string id = plan.id();
     for (const auto& row : t.rows) {
-        const std::string other = cell(t, row, "sweep_id");
+        const std::string other = cell(t, row, col::kSweepId);
         if (other != id)
             throw Error("--csv " + options.csvPath + " holds rows of " +
                         (other.empty() ? std::string("a run that is not a sweep")
-                                       : "sweep " + other + " ('" + cell(t, row, "sweep_name") + "')") +
+                                       : "sweep " + other + " ('" + cell(t, row, col::kSweepName) + "')") +
                         ", not of this sweep " + id + " ('" + plan.name +
                         "'): the definition differs; write to another --csv");
-        const size_t index = size_t(std::stoull(cell(t, row, "config_index")));
+        const size_t index = size_t(std::stoull(cell(t, row, col::kConfigIndex)));
         done.indices.insert(index);
-        if (cell(t, row, "status") == "ok") done.wallMs[index] = std::stod(cell(t, row, "wall_ms_median"));
+        if (cell(t, row, col::kStatus) == col::kStatusOk)
+            done.wallMs[index] = std::stod(cell(t, row, col::kWallMsMedian));
     }
     if (!options.resume)
         throw Error("--csv " + options.csvPath + " already holds " + std::to_string(t.rows.size()) +
@@ -253,17 +255,17 @@ private:
             const TechniqueSpec spec = TechniqueSpec::parse(r.technique);
             const std::string props =
                 r.technique.size() > spec.name.size() ? r.technique.substr(spec.name.size() + 1) : "";
-            CsvRow row{{"timestamp", Environment::nowIso8601()},
-                       {"git_commit", env.gitCommit},
-                       {"status", unsupported ? "unsupported" : "failed"},
-                       {"error", why},
-                       {"technique", spec.name},
-                       {"properties", props},
-                       {"technique_spec", r.technique}};
+            CsvRow row{{col::kTimestamp, Environment::nowIso8601()},
+                       {col::kGitCommit, env.gitCommit},
+                       {col::kStatus, unsupported ? col::kStatusUnsupported : col::kStatusFailed},
+                       {col::kError, why},
+                       {col::kTechnique, spec.name},
+                       {col::kProperties, props},
+                       {col::kTechniqueSpec, r.technique}};
             row.insert(row.end(), mGroup.columns.begin(), mGroup.columns.end());
-            row.insert(row.end(), {{"repeat", std::to_string(r.round)},
-                                   {"baseline", mGroup.techniques.front()},
-                                   {"config_index", std::to_string(r.index)}});
+            row.insert(row.end(), {{col::kRepeat, std::to_string(r.round)},
+                                   {col::kBaseline, mGroup.techniques.front()},
+                                   {col::kConfigIndex, std::to_string(r.index)}});
             row.insert(row.end(), tags.begin(), tags.end());
             out.push_back(std::move(row));
             ++(unsupported ? mSummary.unsupported : mSummary.failed);
@@ -287,11 +289,11 @@ private:
 
 KeyValues SweepRunner::sweepColumns(const SweepPlan& plan, const SweepGroup& group,
                                     const SweepRunOptions& options) {
-    KeyValues kv{{"sweep_id", plan.id()},
-                 {"sweep_name", plan.name},
-                 {"sweep_configs", std::to_string(plan.configCount())},
-                 {"config_group", std::to_string(group.index)},
-                 {"shard", std::to_string(options.shard) + "/" + std::to_string(options.shardCount)}};
+    KeyValues kv{{col::kSweepId, plan.id()},
+                 {col::kSweepName, plan.name},
+                 {col::kSweepConfigs, std::to_string(plan.configCount())},
+                 {col::kConfigGroup, std::to_string(group.index)},
+                 {col::kShard, std::to_string(options.shard) + "/" + std::to_string(options.shardCount)}};
     kv.insert(kv.end(), group.tags.begin(), group.tags.end());
     return kv;
 }

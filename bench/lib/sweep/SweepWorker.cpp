@@ -8,6 +8,7 @@
 
 #include "bench/lib/measure/Measurement.h"
 #include "bench/lib/options/RunOptions.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/sweep/SweepJob.h"
 #include "core/Error.h"
 #include "gl/DebugOutput.h"
@@ -71,8 +72,8 @@ void runRows(const SweepJob& job, const RunConfig& config, size_t& current) {
         const auto base = baselineWall.find(row.round);
         m.addRound(row.round, job.baseline,
                    base == baselineWall.end() ? std::nullopt : std::optional<double>(base->second));
-        m.row.emplace_back("technique_spec", row.technique);
-        m.row.emplace_back("config_index", std::to_string(row.index));
+        m.row.emplace_back(col::kTechniqueSpec, row.technique);
+        m.row.emplace_back(col::kConfigIndex, std::to_string(row.index));
         m.row.insert(m.row.end(), job.tags.begin(), job.tags.end());
         CsvWriter::appendRows(job.csvPath, {m.row});
         std::cout << WorkerMessage::done(row.index, m.run.wall.median) << std::endl;
