@@ -44,7 +44,8 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kEffectsDelivered, "", ColumnType::Text, kEveryRun,
      "the requested effects the technique can produce"},
     {col::kEffectsMissing, "", ColumnType::Text, kEveryRun,
-     "the requested effects it cannot produce (`none` when it covers the request; see *Effects a scene asks "
+     "the requested effects it cannot produce (`none` when it covers the request; README, *Effects a scene "
+     "asks "
      "for*)"},
     {col::kPassesSkipped, "", ColumnType::Text, kEveryRun,
      "declared passes the technique left out of the frame, with its reason (`depth: no light casts shadows; "
