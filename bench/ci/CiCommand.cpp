@@ -16,6 +16,7 @@
 #include "bench/lib/output/AtomicFile.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/DashboardExport.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
@@ -70,7 +71,7 @@ bool hasLayer(const std::string& layers, char layer) {
 /// matching on ci_config; configurations layer B did not count keep an empty cell.
 void joinInstructions(CsvTable& rows, const nlohmann::json& record) {
     if (rows.rows.empty() || !record.contains("configs")) return;
-    const auto config = std::find(rows.header.begin(), rows.header.end(), "ci_config");
+    const auto config = std::find(rows.header.begin(), rows.header.end(), col::kCiConfig);
     if (config == rows.header.end()) return;
     const size_t at = size_t(config - rows.header.begin());
     rows.header.push_back("ir_per_frame");
@@ -136,9 +137,9 @@ GateLayer judgeWork(const WorkComparison& w, GateReport& report, const std::stri
 /// What the committed baseline keeps of layer A's rows: the configuration's identity and its exact
 /// counts, no times or timestamps, so that its diff in review shows only work that changed.
 CsvTable baselineColumns(const CsvTable& rows) {
-    static const std::vector<std::string> kKeep = {"ci_config", "status",     "renderer", "gl_version",
-                                                   "technique", "properties", "scene",    "instances",
-                                                   "submit",    "width",      "height",   "lights"};
+    static const std::vector<std::string> kKeep = {
+        col::kCiConfig, col::kStatus,    col::kRenderer, col::kGlVersion, col::kTechnique, col::kProperties,
+        col::kScene,    col::kInstances, col::kSubmit,   col::kWidth,     col::kHeight,    col::kLights};
     std::vector<size_t> keep;
     for (size_t c = 0; c < rows.header.size(); ++c)
         if (std::find(kKeep.begin(), kKeep.end(), rows.header[c]) != kKeep.end() ||
@@ -155,7 +156,7 @@ CsvTable baselineColumns(const CsvTable& rows) {
 
 /// The baseline's rows of the configurations run now (--configs runs a subset).
 CsvTable onlyConfigs(CsvTable table, const std::vector<const CiConfig*>& configs) {
-    auto column = std::find(table.header.begin(), table.header.end(), "ci_config");
+    auto column = std::find(table.header.begin(), table.header.end(), col::kCiConfig);
     if (column == table.header.end()) return table;
     const size_t c = size_t(column - table.header.begin());
     std::erase_if(table.rows, [&](const std::vector<std::string>& row) {
