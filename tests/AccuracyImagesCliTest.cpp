@@ -17,6 +17,7 @@
 #include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/images/ContactSheet.h"
 #include "bench/lib/images/ErrorMap.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using test::runCommand;
@@ -114,15 +115,15 @@ TEST(AccuracyImagesCli, ErrorMapsCountWhatTheRowsReportAndTheSheetShowsThem) {
         ASSERT_EQ(map.width, 128);
         ASSERT_EQ(map.height, 128);
         const MapCounts n = countColours(map);
-        const uint64_t evaluated = uint64_t(std::llround(std::stod(row.at("acc_evaluated"))));
+        const uint64_t evaluated = uint64_t(std::llround(std::stod(row.at(col::kAccEvaluated))));
         EXPECT_EQ(n.evaluated, evaluated);
-        EXPECT_EQ(n.falseShadow, countFromPercent(row.at("acc_false_shadow_pct"), evaluated));
-        EXPECT_EQ(n.falseLight, countFromPercent(row.at("acc_false_light_pct"), evaluated));
-        EXPECT_EQ(n.falseShadow + n.falseLight, countFromPercent(row.at("acc_wrong_pct"), evaluated));
+        EXPECT_EQ(n.falseShadow, countFromPercent(row.at(col::kAccFalseShadowPct), evaluated));
+        EXPECT_EQ(n.falseLight, countFromPercent(row.at(col::kAccFalseLightPct), evaluated));
+        EXPECT_EQ(n.falseShadow + n.falseLight, countFromPercent(row.at(col::kAccWrongPct), evaluated));
         // Off the edge band, over the samples off it (the picture's band is the judgement's).
         const uint64_t offBand = n.evaluated - n.band;
-        EXPECT_EQ(n.falseShadowOffBand, countFromPercent(row.at("acc_false_shadow_no_edge_pct"), offBand));
-        EXPECT_EQ(n.falseLightOffBand, countFromPercent(row.at("acc_false_light_no_edge_pct"), offBand));
+        EXPECT_EQ(n.falseShadowOffBand, countFromPercent(row.at(col::kAccFalseShadowNoEdgePct), offBand));
+        EXPECT_EQ(n.falseLightOffBand, countFromPercent(row.at(col::kAccFalseLightNoEdgePct), offBand));
         marked += n.falseShadow + n.falseLight;
 
         // The signed map exists exactly where visibility is not binary: a soft technique (pcss) or a

@@ -11,6 +11,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using test::runCommand;
@@ -48,7 +49,7 @@ void injectCosts(const std::string& cache, const std::string& cheap, double othe
 
 std::string chosenIn(const std::string& csv) {
     const auto rows = test::csvRowMaps(csv);
-    return rows.empty() ? "" : rows.back().at("technique");
+    return rows.empty() ? "" : rows.back().at(col::kTechnique);
 }
 
 } // namespace
@@ -64,8 +65,8 @@ TEST(AutoCli, MeasuresOnceThenFollowsTheCachedCosts) {
     EXPECT_EQ(first.output.find("  reference "), std::string::npos) << first.output;
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 1u);
-    EXPECT_NE(rows[0].at("auto_choice").find("the cheapest of"), std::string::npos);
-    EXPECT_NE(rows[0].at("auto_candidates").find("planar"), std::string::npos);
+    EXPECT_NE(rows[0].at(col::kAutoChoice).find("the cheapest of"), std::string::npos);
+    EXPECT_NE(rows[0].at(col::kAutoCandidates).find("planar"), std::string::npos);
 
     injectCosts(cache, "volume", 100.0);
     const auto second = runCommand(kBench + kRun + " --calibration " + cache + " --csv " + csv);

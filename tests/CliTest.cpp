@@ -12,6 +12,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using test::runCommand;
@@ -92,12 +93,12 @@ TEST(Cli, ShortRunWritesEveryDocumentedColumn) {
     auto col = [&](const std::string& name) {
         return size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
     };
-    EXPECT_EQ(t.rows[0][col("technique")], "none");
-    EXPECT_EQ(t.rows[1][col("technique")], "shadowmap");
-    EXPECT_NE(t.rows[1][col("properties")].find("pcf=3"), std::string::npos);
-    EXPECT_EQ(t.rows[1][col("frames")], "2");
-    EXPECT_EQ(t.rows[1][col("instances")], "4");
-    EXPECT_EQ(t.rows[1][col("timer_verdict")], "unchecked");
+    EXPECT_EQ(t.rows[0][col(col::kTechnique)], "none");
+    EXPECT_EQ(t.rows[1][col(col::kTechnique)], "shadowmap");
+    EXPECT_NE(t.rows[1][col(col::kProperties)].find("pcf=3"), std::string::npos);
+    EXPECT_EQ(t.rows[1][col(col::kFrames)], "2");
+    EXPECT_EQ(t.rows[1][col(col::kInstances)], "4");
+    EXPECT_EQ(t.rows[1][col(col::kTimerVerdict)], "unchecked");
     CsvTable s = CsvWriter::read(samples);
     EXPECT_EQ(s.rows.size(), 4u); // 2 techniques x 2 frames
     EXPECT_TRUE(std::filesystem::exists(dir + "/c_none.png"));
@@ -114,23 +115,24 @@ TEST(Cli, TimerVerdictIsMeasuredAndUntrustedNumbersAreHidden) {
     auto cell = [&](const std::string& name) {
         return t.rows[0][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
     };
-    std::string verdict = cell("timer_verdict");
+    std::string verdict = cell(col::kTimerVerdict);
     ASSERT_TRUE(verdict == "trusted" || verdict == "untrusted") << verdict;
     // The evidence is the frames' own query type, with the numbers the rule judged.
-    EXPECT_NE(cell("timer_reason").find("GL_TIMESTAMP pairs"), std::string::npos) << cell("timer_reason");
-    EXPECT_NE(cell("timer_reason").find("timer growth"), std::string::npos) << cell("timer_reason");
-    if (cell("renderer").find("llvmpipe") != std::string::npos) {
+    EXPECT_NE(cell(col::kTimerReason).find("GL_TIMESTAMP pairs"), std::string::npos)
+        << cell(col::kTimerReason);
+    EXPECT_NE(cell(col::kTimerReason).find("timer growth"), std::string::npos) << cell(col::kTimerReason);
+    if (cell(col::kRenderer).find("llvmpipe") != std::string::npos) {
         // docs/ARCHITECTURE.md, "The timing contract": on Mesa llvmpipe a GL_TIMESTAMP pair spans about one
         // tile's work, and jumps with the scheduler under load; TimerVerdictGLTest runs 20 calibrations
         // under load. One run here must come out untrusted every time, loaded or not.
-        EXPECT_EQ(verdict, "untrusted") << cell("timer_reason");
+        EXPECT_EQ(verdict, "untrusted") << cell(col::kTimerReason);
     }
     if (verdict == "untrusted") {
-        EXPECT_EQ(cell("gpu_ms_median"), "");
+        EXPECT_EQ(cell(col::kGpuMsMedian), "");
         EXPECT_EQ(cell("gpu_depth_ms_median"), "");
         EXPECT_NE(r.output.find("GPU times are not reported"), std::string::npos) << r.output;
     } else {
-        EXPECT_NE(cell("gpu_ms_median"), "");
+        EXPECT_NE(cell(col::kGpuMsMedian), "");
     }
 }
 
@@ -249,10 +251,10 @@ TEST(Cli, AccuracyRowHasTimingAndEveryDocumentedAccuracyColumn) {
         return t.rows[row][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
     };
     // The reference judged against itself is exact; `none` misses the whole shadow (false light only).
-    EXPECT_EQ(std::stod(cell(2, "acc_wrong_pct")), 0.0);
-    EXPECT_GT(std::stod(cell(0, "acc_false_light_pct")), 1.0);
-    EXPECT_EQ(std::stod(cell(0, "acc_false_shadow_pct")), 0.0);
-    for (size_t i = 0; i < 3; ++i) EXPECT_EQ(cell(i, "acc_nan"), "0.0000");
+    EXPECT_EQ(std::stod(cell(2, col::kAccWrongPct)), 0.0);
+    EXPECT_GT(std::stod(cell(0, col::kAccFalseLightPct)), 1.0);
+    EXPECT_EQ(std::stod(cell(0, col::kAccFalseShadowPct)), 0.0);
+    for (size_t i = 0; i < 3; ++i) EXPECT_EQ(cell(i, col::kAccNan), "0.0000");
 }
 
 TEST(Cli, GpuIndexOutOfRangeIsBadInput) {
@@ -280,11 +282,11 @@ TEST(Cli, RowsOfTechniquesThatFinishedSurviveALaterFailure) {
     auto cell = [&](size_t row, const std::string& name) {
         return t.rows[row][size_t(std::find(t.header.begin(), t.header.end(), name) - t.header.begin())];
     };
-    EXPECT_EQ(cell(0, "technique"), "none");
-    EXPECT_EQ(cell(0, "status"), "ok");
-    EXPECT_EQ(cell(1, "technique"), "shadowmap");
-    EXPECT_EQ(cell(1, "status"), "unsupported");
-    EXPECT_NE(cell(1, "error").find("point light"), std::string::npos) << cell(1, "error");
+    EXPECT_EQ(cell(0, col::kTechnique), "none");
+    EXPECT_EQ(cell(0, col::kStatus), "ok");
+    EXPECT_EQ(cell(1, col::kTechnique), "shadowmap");
+    EXPECT_EQ(cell(1, col::kStatus), "unsupported");
+    EXPECT_NE(cell(1, col::kError).find("point light"), std::string::npos) << cell(1, col::kError);
 }
 
 } // namespace
@@ -301,9 +303,9 @@ TEST(Cli, RepeatInterleavesRoundsAndPairsRatios) {
     };
     // Written in measurement order: none, shadowmap per round, rounds 1..3.
     for (size_t i = 0; i < 6; ++i) {
-        EXPECT_EQ(t.rows[i][col("technique")], i % 2 ? "shadowmap" : "none") << i;
-        EXPECT_EQ(t.rows[i][col("repeat")], std::to_string(i / 2 + 1)) << i;
-        EXPECT_EQ(t.rows[i][col("baseline")], "none");
+        EXPECT_EQ(t.rows[i][col(col::kTechnique)], i % 2 ? "shadowmap" : "none") << i;
+        EXPECT_EQ(t.rows[i][col(col::kRepeat)], std::to_string(i / 2 + 1)) << i;
+        EXPECT_EQ(t.rows[i][col(col::kBaseline)], "none");
     }
     EXPECT_NE(r.output.find("paired over 3 rounds"), std::string::npos) << r.output;
 }

@@ -10,6 +10,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 namespace fs = std::filesystem;
@@ -44,7 +45,8 @@ TEST(ConcurrentCsvCli, PlainRunsSideBySideKeepEveryRow) {
     const CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 24u);
     std::map<std::string, int> perSeed;
-    for (const auto& row : t.rows) ++perSeed[row[column(t, "seed")] + "/" + row[column(t, "technique")]];
+    for (const auto& row : t.rows)
+        ++perSeed[row[column(t, col::kSeed)] + "/" + row[column(t, col::kTechnique)]];
     EXPECT_EQ(perSeed.size(), 24u); // every (seed, technique) once
     for (const auto& e : fs::directory_iterator(dir))
         EXPECT_EQ(e.path().filename(), "all.csv") << "left behind: " << e.path();
@@ -63,7 +65,7 @@ TEST(ConcurrentCsvCli, TwoShardsOfOneSweepShareAFile) {
     const CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 12u);
     std::map<std::string, int> perConfig;
-    for (const auto& row : t.rows) ++perConfig[row[column(t, "config_index")]];
+    for (const auto& row : t.rows) ++perConfig[row[column(t, col::kConfigIndex)]];
     EXPECT_EQ(perConfig.size(), 12u); // config_index 0..11, each once
 }
 

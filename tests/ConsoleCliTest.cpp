@@ -11,6 +11,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "registry/TechniqueRegistry.h"
 
 using namespace sb;
@@ -103,7 +104,7 @@ TEST_P(RepeatRatios, ConsoleAgreesWithTheCsvRoundByRound) {
         EXPECT_NE(it, t.header.end()) << name;
         return size_t(it - t.header.begin());
     };
-    const size_t wall = col("wall_ms_median"), round = col("repeat");
+    const size_t wall = col(col::kWallMsMedian), round = col(col::kRepeat);
     // The independent answer: per row, its wall median over the first row's of its round.
     std::vector<double> expected;
     std::map<size_t, std::vector<double>> perTechnique; // position in the round -> ratios over rounds

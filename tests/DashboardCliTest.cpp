@@ -12,6 +12,7 @@
 
 #include "TestPaths.h"
 #include "TestSupport.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 namespace fs = std::filesystem;
@@ -61,12 +62,13 @@ TEST_F(DashboardCliTest, GoogleBenchmarksComparePyReadsTheExportAndAgreesWithThe
     // One entry per benchmark, then compare.py's own OVERALL_GEOMEAN aggregate.
     ASSERT_EQ(diff.size(), 3u) << diff.dump(1);
     for (size_t i = 0; i < 2; ++i) {
-        SCOPED_TRACE(a[i].at("technique"));
+        SCOPED_TRACE(a[i].at(col::kTechnique));
         // compare.py names the benchmark as we did and computes (new - old) / old of real_time: here
         // from the CSVs' medians, which the export carried (4 decimals in the CSV, so 1e-9 relative).
-        EXPECT_EQ(diff[i]["name"].get<std::string>().rfind(a[i].at("technique"), 0), 0u) << diff[i]["name"];
-        const double oldMs = std::stod(a[i].at("wall_ms_median")),
-                     newMs = std::stod(b[i].at("wall_ms_median"));
+        EXPECT_EQ(diff[i]["name"].get<std::string>().rfind(a[i].at(col::kTechnique), 0), 0u)
+            << diff[i]["name"];
+        const double oldMs = std::stod(a[i].at(col::kWallMsMedian)),
+                     newMs = std::stod(b[i].at(col::kWallMsMedian));
         ASSERT_FALSE(diff[i]["measurements"].empty());
         const json& m = diff[i]["measurements"][0];
         EXPECT_NEAR(m["real_time"].get<double>(), oldMs, 1e-9 * oldMs);
@@ -78,7 +80,7 @@ TEST_F(DashboardCliTest, GoogleBenchmarksComparePyReadsTheExportAndAgreesWithThe
     const json& geomean = diff[2]["measurements"][0];
     EXPECT_EQ(diff[2]["name"], "OVERALL_GEOMEAN");
     const double oldMean =
-        std::sqrt(std::stod(a[0].at("wall_ms_median")) * std::stod(a[1].at("wall_ms_median")));
+        std::sqrt(std::stod(a[0].at(col::kWallMsMedian)) * std::stod(a[1].at(col::kWallMsMedian)));
     EXPECT_NEAR(geomean["real_time"].get<double>(), oldMean / 1000.0, 1e-9 * oldMean);
 }
 
@@ -91,22 +93,22 @@ TEST_F(DashboardCliTest, GithubActionBenchmarkFileCarriesMediansAndExactWork) {
     const auto rows = test::csvRowMaps(path("a.csv"));
     ASSERT_EQ(rows.size(), 2u);
     for (const auto& row : rows) {
-        SCOPED_TRACE(row.at("technique"));
+        SCOPED_TRACE(row.at(col::kTechnique));
         bool time = false, fragments = false;
         for (const json& item : items) {
             const std::string name = item["name"];
             // The name starts with the technique, then its properties (":...") or the scene ("/...").
-            const std::string& technique = row.at("technique");
+            const std::string& technique = row.at(col::kTechnique);
             if (name.rfind(technique, 0) != 0 || name.size() == technique.size() ||
                 (name[technique.size()] != '/' && name[technique.size()] != ':'))
                 continue;
             if (item["unit"] == "ms") {
                 time = true;
-                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(row.at("wall_ms_median")));
+                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(row.at(col::kWallMsMedian)));
             }
             if (name.size() > 15 && name.substr(name.size() - 15) == " load_fragments") {
                 fragments = true;
-                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(row.at("load_fragments")));
+                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(row.at(col::kLoadFragments)));
             }
         }
         EXPECT_TRUE(time && fragments) << items.dump(1);

@@ -12,6 +12,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 #include "scenes/SceneLoader.h"
 
 using namespace sb;
@@ -42,17 +43,17 @@ TEST(EffectsCli, ShortTechniqueIsMeasuredWithOneWarningAndItsRowSaysWhatIsMissin
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 6u);
     for (const auto& row : rows) {
-        EXPECT_EQ(row.at("status"), "ok");
-        EXPECT_EQ(row.at("effects_requested"), "hard_shadows+self_shadowing");
-        const std::string& t = row.at("technique");
+        EXPECT_EQ(row.at(col::kStatus), "ok");
+        EXPECT_EQ(row.at(col::kEffectsRequested), "hard_shadows+self_shadowing");
+        const std::string& t = row.at(col::kTechnique);
         const std::string delivered = t == "none"     ? "none"
                                       : t == "planar" ? "hard_shadows"
                                                       : "hard_shadows+self_shadowing";
         const std::string missing = t == "none"     ? "hard_shadows+self_shadowing"
                                     : t == "planar" ? "self_shadowing"
                                                     : "none";
-        EXPECT_EQ(row.at("effects_delivered"), delivered) << t;
-        EXPECT_EQ(row.at("effects_missing"), missing) << t;
+        EXPECT_EQ(row.at(col::kEffectsDelivered), delivered) << t;
+        EXPECT_EQ(row.at(col::kEffectsMissing), missing) << t;
     }
 }
 
@@ -68,10 +69,10 @@ TEST(EffectsCli, StrictEffectsRefusesTheShortTechniqueAndMeasuresTheRest) {
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 2u) << r.output;
     std::map<std::string, std::map<std::string, std::string>> by;
-    for (const auto& row : rows) by[row.at("technique")] = row;
-    EXPECT_EQ(by.at("planar").at("status"), "unsupported");
-    EXPECT_EQ(by.at("planar").at("effects_missing"), "self_shadowing");
-    EXPECT_EQ(by.at("shadowmap").at("status"), "ok");
+    for (const auto& row : rows) by[row.at(col::kTechnique)] = row;
+    EXPECT_EQ(by.at("planar").at(col::kStatus), "unsupported");
+    EXPECT_EQ(by.at("planar").at(col::kEffectsMissing), "self_shadowing");
+    EXPECT_EQ(by.at("shadowmap").at(col::kStatus), "ok");
 
     // Alone, the refused technique leaves nothing measured: exit 3 and no row (an existing CSV keeps
     // its rows byte for byte).

@@ -8,6 +8,7 @@
 #include "TestPaths.h"
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 
@@ -54,14 +55,14 @@ TEST_F(PerfGateCliTest, SameBuildPassesAndAnInjectedPassFailsNamingIt) {
     const auto gbench = nlohmann::json::parse(test::readFile(mDir + "/out/gbench.json"));
     ASSERT_EQ(gbench["benchmarks"].size(), rows.size());
     for (size_t i = 0; i < rows.size(); ++i) {
-        EXPECT_EQ(gbench["benchmarks"][i]["name"], rows[i].at("ci_config"));
-        EXPECT_DOUBLE_EQ(gbench["benchmarks"][i]["load_fragments"].get<double>(),
-                         std::stod(rows[i].at("load_fragments")));
+        EXPECT_EQ(gbench["benchmarks"][i]["name"], rows[i].at(col::kCiConfig));
+        EXPECT_DOUBLE_EQ(gbench["benchmarks"][i][col::kLoadFragments].get<double>(),
+                         std::stod(rows[i].at(col::kLoadFragments)));
         bool found = false;
         for (const auto& item : gh)
-            if (item["name"] == rows[i].at("ci_config") + " load_fragments") {
+            if (item["name"] == rows[i].at(col::kCiConfig) + " load_fragments") {
                 found = true;
-                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(rows[i].at("load_fragments")));
+                EXPECT_DOUBLE_EQ(item["value"].get<double>(), std::stod(rows[i].at(col::kLoadFragments)));
             }
         EXPECT_TRUE(found) << gh.dump(1);
     }

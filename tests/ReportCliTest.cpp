@@ -19,6 +19,7 @@
 #include "TestSupport.h"
 #include "bench/golden/GoldenImage.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using test::runCommand;
@@ -194,7 +195,7 @@ TEST_F(ReportCli, TablesCarryTheCsvCellsAndImagesSitInTheirRows) {
             EXPECT_EQ(all[i].at(column), value) << column;
         }
         // bench --screenshot shot.png with several techniques writes shot_<technique>.png.
-        const std::string technique = rows[i].at("technique");
+        const std::string technique = rows[i].at(col::kTechnique);
         EXPECT_NE(rows[i].at("<html>").find("shot_" + technique + ".png"), std::string::npos) << technique;
         for (const std::string other : {"none", "shadowmap", "blob"}) {
             if (other != technique) {

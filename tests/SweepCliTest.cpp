@@ -18,6 +18,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 extern char** environ;
 
@@ -50,7 +51,7 @@ struct Table {
     }
     std::vector<size_t> indices() const {
         std::vector<size_t> out;
-        for (size_t r = 0; r < size(); ++r) out.push_back(std::stoul(at(r, "config_index")));
+        for (size_t r = 0; r < size(); ++r) out.push_back(std::stoul(at(r, col::kConfigIndex)));
         std::sort(out.begin(), out.end());
         return out;
     }
@@ -78,26 +79,26 @@ TEST(SweepCli, ProductOfTheAxesWithRatiosWithinEachRound) {
     EXPECT_EQ(t.indices(), iota(16)) << "every configuration exactly once";
     std::map<std::string, std::vector<size_t>> byGroup;
     for (size_t i = 0; i < t.size(); ++i) {
-        EXPECT_EQ(t.at(i, "status"), "ok");
-        EXPECT_EQ(t.at(i, "sweep_configs"), "16");
-        EXPECT_EQ(t.at(i, "shard"), "1/1");
-        EXPECT_EQ(t.at(i, "baseline"), "none");
-        byGroup[t.at(i, "config_group")].push_back(i);
+        EXPECT_EQ(t.at(i, col::kStatus), "ok");
+        EXPECT_EQ(t.at(i, col::kSweepConfigs), "16");
+        EXPECT_EQ(t.at(i, col::kShard), "1/1");
+        EXPECT_EQ(t.at(i, col::kBaseline), "none");
+        byGroup[t.at(i, col::kConfigGroup)].push_back(i);
     }
     ASSERT_EQ(byGroup.size(), 4u);
     std::set<std::string> combos;
     for (const auto& [group, rows] : byGroup) {
         ASSERT_EQ(rows.size(), 4u);
-        combos.insert(t.at(rows[0], "instances") + "/" + t.at(rows[0], "submit"));
+        combos.insert(t.at(rows[0], col::kInstances) + "/" + t.at(rows[0], col::kSubmit));
         // Ratio within the round, recomputed from the two rows' own medians (4-decimal CSV rounding).
         for (size_t a : rows)
             for (size_t b : rows)
-                if (t.at(a, "repeat") == t.at(b, "repeat") && t.at(a, "technique") == "none" &&
-                    t.at(b, "technique") == "shadowmap") {
+                if (t.at(a, col::kRepeat) == t.at(b, col::kRepeat) && t.at(a, col::kTechnique) == "none" &&
+                    t.at(b, col::kTechnique) == "shadowmap") {
                     const double ratio =
-                        std::stod(t.at(b, "wall_ms_median")) / std::stod(t.at(a, "wall_ms_median"));
-                    EXPECT_NEAR(std::stod(t.at(b, "wall_ratio_vs_baseline")), ratio, 1e-3 * ratio + 1e-4);
-                    EXPECT_EQ(t.at(a, "wall_ratio_vs_baseline"), "1.0000");
+                        std::stod(t.at(b, col::kWallMsMedian)) / std::stod(t.at(a, col::kWallMsMedian));
+                    EXPECT_NEAR(std::stod(t.at(b, col::kWallRatioVsBaseline)), ratio, 1e-3 * ratio + 1e-4);
+                    EXPECT_EQ(t.at(a, col::kWallRatioVsBaseline), "1.0000");
                 }
     }
     EXPECT_EQ(combos, (std::set<std::string>{"2/retained", "2/immediate", "5/retained", "5/immediate"}));
@@ -121,11 +122,12 @@ TEST(SweepCli, FailuresAreRecordedAndTheSweepGoesOn) {
     ASSERT_EQ(t.size(), 4u);
     int skipped = 0;
     for (size_t i = 0; i < t.size(); ++i) {
-        const bool shouldSkip = t.at(i, "technique") == "shadowmap" && t.at(i, "lights") == "point";
-        EXPECT_EQ(t.at(i, "status"), shouldSkip ? "unsupported" : "ok") << i;
+        const bool shouldSkip = t.at(i, col::kTechnique) == "shadowmap" && t.at(i, col::kLights) == "point";
+        EXPECT_EQ(t.at(i, col::kStatus), shouldSkip ? "unsupported" : "ok") << i;
         if (shouldSkip) {
             ++skipped;
-            EXPECT_NE(t.at(i, "error").find("omni shadow map"), std::string::npos) << t.at(i, "error");
+            EXPECT_NE(t.at(i, col::kError).find("omni shadow map"), std::string::npos)
+                << t.at(i, col::kError);
         }
     }
     EXPECT_EQ(skipped, 1);
@@ -148,11 +150,11 @@ TEST(SweepCli, CrashedWorkerAndGlErrorCostOneRowEach) {
         ASSERT_EQ(t.size(), 4u) << fault;
         EXPECT_EQ(t.indices(), iota(4));
         for (size_t i = 0; i < t.size(); ++i) {
-            const bool sabotaged = t.at(i, "config_index") == "1";
-            EXPECT_EQ(t.at(i, "status"), sabotaged ? "failed" : "ok") << fault << " row " << i;
+            const bool sabotaged = t.at(i, col::kConfigIndex) == "1";
+            EXPECT_EQ(t.at(i, col::kStatus), sabotaged ? "failed" : "ok") << fault << " row " << i;
             if (sabotaged) {
                 const std::string expected = std::string(fault) == "crash" ? "signal 11" : "GL_INVALID_ENUM";
-                EXPECT_NE(t.at(i, "error").find(expected), std::string::npos) << t.at(i, "error");
+                EXPECT_NE(t.at(i, col::kError).find(expected), std::string::npos) << t.at(i, col::kError);
             }
         }
     }
@@ -225,17 +227,17 @@ TEST(SweepCli, ShardsWithGnuParallelMergeIntoTheWholeSweep) {
     Table a(dir + "/part1.csv"), b(dir + "/part2.csv");
     EXPECT_EQ(a.size() + b.size(), 12u);
     for (const Table* t : {&a, &b})
-        for (size_t i = 0; i < t->size(); ++i) EXPECT_EQ(t->at(i, "sweep_id"), id);
+        for (size_t i = 0; i < t->size(); ++i) EXPECT_EQ(t->at(i, col::kSweepId), id);
     // Round-robin: groups 0, 2, 4 in shard 1, groups 1, 3, 5 in shard 2.
-    for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(std::stoul(a.at(i, "config_group")) % 2, 0u);
-    for (size_t i = 0; i < b.size(); ++i) EXPECT_EQ(std::stoul(b.at(i, "config_group")) % 2, 1u);
+    for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(std::stoul(a.at(i, col::kConfigGroup)) % 2, 0u);
+    for (size_t i = 0; i < b.size(); ++i) EXPECT_EQ(std::stoul(b.at(i, col::kConfigGroup)) % 2, 1u);
 
     auto m = runCommand(bench("merge -o " + dir + "/all.csv " + dir + "/part1.csv " + dir + "/part2.csv"));
     ASSERT_EQ(m.exitCode, 0) << m.output;
     Table all(dir + "/all.csv");
     EXPECT_EQ(all.size(), 12u);
     for (size_t i = 0; i < all.size(); ++i)
-        EXPECT_EQ(all.at(i, "config_index"), std::to_string(i)) << "sorted";
+        EXPECT_EQ(all.at(i, col::kConfigIndex), std::to_string(i)) << "sorted";
 
     // One shard alone is incomplete, and says which configurations are missing.
     auto half = runCommand(bench("merge -o " + dir + "/half.csv " + dir + "/part1.csv"));
@@ -254,12 +256,13 @@ TEST(SweepCli, RowsInJsonAndMarkdown) {
     ASSERT_EQ(j.exitCode, 0) << j.output;
     const nlohmann::json doc = nlohmann::json::parse(j.output);
     ASSERT_EQ(doc["rows"].size(), 2u);
-    EXPECT_EQ(doc["rows"][0]["technique"], "none");
-    EXPECT_TRUE(doc["rows"][1]["wall_ms_median"].is_number());
-    EXPECT_TRUE(doc["rows"][0]["git_commit"].is_string());
+    EXPECT_EQ(doc["rows"][0][col::kTechnique], "none");
+    EXPECT_TRUE(doc["rows"][1][col::kWallMsMedian].is_number());
+    EXPECT_TRUE(doc["rows"][0][col::kGitCommit].is_string());
     // The same rows as the CSV, value for value.
     Table t(csv);
-    EXPECT_NEAR(doc["rows"][1]["wall_ms_median"].get<double>(), std::stod(t.at(1, "wall_ms_median")), 1e-9);
+    EXPECT_NEAR(doc["rows"][1][col::kWallMsMedian].get<double>(), std::stod(t.at(1, col::kWallMsMedian)),
+                1e-9);
 
     auto md = runCommand(bench("export " + csv + " --format md"));
     ASSERT_EQ(md.exitCode, 0) << md.output;
@@ -327,10 +330,10 @@ TEST(SweepCli, CommandLineRunOptionsReplaceTheFiles) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     Table t(csv);
     ASSERT_EQ(t.size(), 1u);
-    EXPECT_EQ(t.at(0, "status"), "ok") << t.at(0, "error");
-    EXPECT_EQ(t.at(0, "frames"), "2");
-    EXPECT_EQ(t.at(0, "warmup"), "1");
-    EXPECT_EQ(t.at(0, "seed"), "7");
+    EXPECT_EQ(t.at(0, col::kStatus), "ok") << t.at(0, col::kError);
+    EXPECT_EQ(t.at(0, col::kFrames), "2");
+    EXPECT_EQ(t.at(0, col::kWarmup), "1");
+    EXPECT_EQ(t.at(0, col::kSeed), "7");
 
     // The README's own example definition with a shorter run.
     const std::string example = std::string(SB_SOURCE_DIR) + "/sweeps/submission.json";
@@ -410,7 +413,7 @@ TEST(SweepCli, ExampleDefinitionsInSweepsFolderExpandAsCounted) {
         for (const auto& t : j["techniques"]) {
             size_t variants = 1;
             if (t.is_object() && t.contains("properties"))
-                for (const auto& [key, values] : t["properties"].items())
+                for (const auto& [key, values] : t[col::kProperties].items())
                     variants *= values.is_array() ? values.size() : 1;
             if (t.is_string()) {
                 const std::string spec = t.get<std::string>();

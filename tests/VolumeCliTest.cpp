@@ -12,6 +12,7 @@
 
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using test::runCommand;
@@ -30,8 +31,8 @@ TEST(VolumeCli, DefaultShadowsAnOpenMesh) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 1u);
-    EXPECT_EQ(rows[0].at("status"), "ok");
-    EXPECT_NE(rows[0].at("properties").find("open_edges=multiplicity"), std::string::npos);
+    EXPECT_EQ(rows[0].at(col::kStatus), "ok");
+    EXPECT_NE(rows[0].at(col::kProperties).find("open_edges=multiplicity"), std::string::npos);
     EXPECT_GT(std::stod(rows[0].at("counter_volume_triangles")), 0.0) << "the open teapot must cast";
 }
 
@@ -45,13 +46,13 @@ TEST(VolumeCli, RefusalIsReportedAndTheNextTechniqueStillRuns) {
     EXPECT_NE(r.output.find("'teapot' has 128 open edges"), std::string::npos) << r.output;
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 2u) << r.output;
-    EXPECT_EQ(rows[0].at("technique"), "volume");
-    EXPECT_EQ(rows[0].at("status"), "failed");
-    EXPECT_NE(rows[0].at("error").find("open_edges=refuse"), std::string::npos);
-    EXPECT_EQ(rows[0].at("wall_ms_median"), "");
-    EXPECT_EQ(rows[1].at("technique"), "none");
-    EXPECT_EQ(rows[1].at("status"), "ok");
-    EXPECT_EQ(rows[1].at("frames"), "2");
+    EXPECT_EQ(rows[0].at(col::kTechnique), "volume");
+    EXPECT_EQ(rows[0].at(col::kStatus), "failed");
+    EXPECT_NE(rows[0].at(col::kError).find("open_edges=refuse"), std::string::npos);
+    EXPECT_EQ(rows[0].at(col::kWallMsMedian), "");
+    EXPECT_EQ(rows[1].at(col::kTechnique), "none");
+    EXPECT_EQ(rows[1].at(col::kStatus), "ok");
+    EXPECT_EQ(rows[1].at(col::kFrames), "2");
     // The console table still has the measured technique.
     EXPECT_NE(r.output.find("\nnone "), std::string::npos) << r.output;
 }
@@ -66,9 +67,9 @@ TEST(VolumeCli, ExitCodeIsTheWorstRefusal) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 3u) << r.output;
-    EXPECT_EQ(rows[0].at("status"), "unsupported");
-    EXPECT_EQ(rows[1].at("status"), "failed");
-    EXPECT_EQ(rows[2].at("status"), "ok");
+    EXPECT_EQ(rows[0].at(col::kStatus), "unsupported");
+    EXPECT_EQ(rows[1].at(col::kStatus), "failed");
+    EXPECT_EQ(rows[2].at(col::kStatus), "ok");
     // Only the unsupported one: exit 3, as a single technique run always said.
     const auto alone =
         runCommand(kBench + " -t shadowmap -t none --scene teapot --instances 2 --light point" + kQuick);
@@ -96,9 +97,9 @@ TEST(VolumeCli, RealOpenModelsMatchTheReference) {
         ASSERT_EQ(r.exitCode, 0) << model << "\n" << r.output;
         const auto rows = test::csvRowMaps(csv);
         ASSERT_EQ(rows.size(), 2u);
-        EXPECT_GT(std::stod(rows[0].at("acc_evaluated")), 1000.0) << model;
-        EXPECT_LT(std::stod(rows[0].at("acc_wrong_pct")), 0.3) << model;
-        EXPECT_GT(std::stod(rows[1].at("acc_wrong_pct")), 0.4) << model << ": no shadow in view";
+        EXPECT_GT(std::stod(rows[0].at(col::kAccEvaluated)), 1000.0) << model;
+        EXPECT_LT(std::stod(rows[0].at(col::kAccWrongPct)), 0.3) << model;
+        EXPECT_GT(std::stod(rows[1].at(col::kAccWrongPct)), 0.4) << model << ": no shadow in view";
     }
     if (tried == 0) GTEST_SKIP() << "glmark2-data is not installed (scripts/install-deps.sh installs it)";
 }

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "TestSupport.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using test::runCommand;
@@ -51,20 +52,20 @@ TEST(VulkanCli, MeasuresWithTheValidationLayerOnAndRecordsTheApi) {
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 2u);
     for (const auto& row : rows) {
-        EXPECT_EQ(row.at("api"), "vulkan");
-        EXPECT_EQ(row.at("backend"), "vulkan");
-        EXPECT_EQ(row.at("status"), "ok");
-        EXPECT_NE(row.at("api_version").find("1."), std::string::npos) << row.at("api_version");
+        EXPECT_EQ(row.at(col::kApi), "vulkan");
+        EXPECT_EQ(row.at(col::kBackend), "vulkan");
+        EXPECT_EQ(row.at(col::kStatus), "ok");
+        EXPECT_NE(row.at(col::kApiVersion).find("1."), std::string::npos) << row.at(col::kApiVersion);
         // The timestamps are checked against the frame as on GL; GPU times appear only when trusted.
-        ASSERT_TRUE(row.at("timer_verdict") == "trusted" || row.at("timer_verdict") == "untrusted")
-            << row.at("timer_verdict");
-        EXPECT_NE(row.at("timer_reason").find("vkCmdWriteTimestamp"), std::string::npos)
-            << row.at("timer_reason");
-        EXPECT_EQ(row.at("gpu_ms_median").empty(), row.at("timer_verdict") != "trusted")
-            << row.at("gpu_ms_median");
+        ASSERT_TRUE(row.at(col::kTimerVerdict) == "trusted" || row.at(col::kTimerVerdict) == "untrusted")
+            << row.at(col::kTimerVerdict);
+        EXPECT_NE(row.at(col::kTimerReason).find("vkCmdWriteTimestamp"), std::string::npos)
+            << row.at(col::kTimerReason);
+        EXPECT_EQ(row.at(col::kGpuMsMedian).empty(), row.at(col::kTimerVerdict) != "trusted")
+            << row.at(col::kGpuMsMedian);
         EXPECT_NE(row.at("counter_draw_calls"), "");
     }
-    EXPECT_EQ(rows[1].at("technique"), "shadowmap");
+    EXPECT_EQ(rows[1].at(col::kTechnique), "shadowmap");
     // The census frame's work per pass: the depth pass drew the casters, the lighting pass everything.
     EXPECT_GT(std::stoi(rows[1].at("work_depth_draws")), 0) << "per-pass submitted work";
     EXPECT_GT(std::stoi(rows[1].at("work_lighting_draws")), std::stoi(rows[1].at("work_depth_draws")))
@@ -78,7 +79,7 @@ TEST(VulkanCli, GlRowsSayGl) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 1u);
-    EXPECT_EQ(rows[0].at("api"), "gl");
+    EXPECT_EQ(rows[0].at(col::kApi), "gl");
 }
 
 TEST(VulkanCli, ATechniqueWithoutAVulkanFormIsUnsupported) {
@@ -140,10 +141,10 @@ TEST(VulkanCli, AccuracyJudgesTheVulkanFrameAgainstTheSameReference) {
     }
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 2u);
-    EXPECT_EQ(rows[1].at("api"), "vulkan");
-    const double gl = std::stod(rows[0].at("acc_wrong_pct")), vk = std::stod(rows[1].at("acc_wrong_pct"));
+    EXPECT_EQ(rows[1].at(col::kApi), "vulkan");
+    const double gl = std::stod(rows[0].at(col::kAccWrongPct)), vk = std::stod(rows[1].at(col::kAccWrongPct));
     EXPECT_NEAR(gl, vk, 0.02) << "GL " << gl << "% wrong, Vulkan " << vk << "%";
-    EXPECT_GT(std::stod(rows[1].at("acc_evaluated")), 0.0);
+    EXPECT_GT(std::stod(rows[1].at(col::kAccEvaluated)), 0.0);
 }
 
 TEST(VulkanCli, GlOnlyCommandsSaySo) {
@@ -236,7 +237,7 @@ TEST(VulkanCli, ARefusingTechniqueIsARowWhileTheOthersAreMeasured) {
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 3u) << r.output;
     std::map<std::string, std::string> status;
-    for (const auto& row : rows) status[row.at("technique")] = row.at("status");
+    for (const auto& row : rows) status[row.at(col::kTechnique)] = row.at(col::kStatus);
     EXPECT_EQ(status["none"], "ok");
     EXPECT_EQ(status["shadowmap"], "ok");
     EXPECT_EQ(status["pcss"], "unsupported");
