@@ -8,14 +8,14 @@ namespace {
 
 // The measured row's columns in ResultRow's order (tests/CsvColumnsCliTest.cpp holds a real run to it),
 // then what accuracy, sweeps, bottleneck studies, bench ci, -t auto and failed rows add. Meanings are
-// docs/CSV.md's, shortened where the document says more.
+// docs/CSV.md's.
 const std::vector<ColumnInfo> kColumns = {
     {col::kTimestamp, "", ColumnType::Text, kEveryRun, "ISO 8601 UTC time the row was measured"},
     {col::kGitCommit, "", ColumnType::Text, kEveryRun, "`git describe --always --dirty` of the source tree"},
     {col::kStatus, "", ColumnType::Text, kEveryRun,
-     "`ok`; in sweeps also `failed` (see `error`) or `unsupported` (the GL context lacks what the "
-     "configuration needs, e.g. `volume:depth_bounds=true` on llvmpipe: skipped, not a failure of the "
-     "sweep)"},
+     "`ok`; a configuration without numbers (a run's refused technique, a sweep's failed worker) "
+     "`failed` (see `error`) or `unsupported` (the context lacks what it needs, e.g. "
+     "`volume:depth_bounds=true` on llvmpipe: skipped, not a failure)"},
     {col::kApi, "", ColumnType::Text, kEveryRun, "`gl` or `vulkan` (`--api`)"},
     {col::kApiVersion, "", ColumnType::Text, kEveryRun,
      "`GL_VERSION`, or the Vulkan device's API version (`1.3.230`)"},
