@@ -50,11 +50,7 @@ const std::vector<NotRun> kNotRun = {
     {"bash scripts/sanitize.sh", "a second build with ASan and UBSan (about 12 minutes)"},
     {"bash scripts/fuzz.sh", "fuzzes for minutes"},
     {"SB_FUZZ_TARGETS=", "fuzzes for minutes"},
-    {"bash scripts/install-deps.sh", "installs Debian packages (root)"},
-    {"bash scripts/effects.sh", "measures results/effects/ (about 30 minutes)"},
     {"bash scripts/vulkan.sh", "measures results/vulkan/ (about 12 minutes)"},
-    {"bash scripts/gate-proof.sh", "runs the gate about 25 times"},
-    {"bash scripts/handshadow.sh", "alternating measurements of minutes"},
     {"cmake ", "configures or builds the project: what this build already did"},
     {"ctest ", "runs tests of the suite this test belongs to"},
     {"(cd build && cpack", "packages the build (InstallCliTest builds the package)"},
@@ -69,11 +65,6 @@ const std::vector<NotRun> kNotRun = {
     {"parallel ", "a sharded sweep under GNU parallel (SweepCliTest)"},
     {"sbatch ", "a Slurm cluster"},
     {"build/handloop", "alternates a hundred frame pairs (HandShadowCliTest runs it short)"},
-    {"/usr/bin/python3 tools/effects_summary.py", "reads the measurements of scripts/effects.sh"},
-    {"/usr/bin/python3 tools/vulkan_summary.py", "reads the measurements of scripts/vulkan.sh"},
-    {"git ", "reads or changes the checkout"},
-    {"sudo ", "needs root"},
-    {"apt-get ", "installs packages (root)"},
 };
 
 constexpr int kCommandLimitS = 60;
