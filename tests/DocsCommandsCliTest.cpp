@@ -17,7 +17,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -169,6 +172,61 @@ std::vector<DocCommand> allCommands(const fs::path& root) {
         all.insert(all.end(), c.begin(), c.end());
     }
     return all;
+}
+
+/// Each technique's properties as `bench --list` prints them: name -> "type default", in order.
+std::map<std::string, std::vector<std::string>> listedProperties() {
+    const auto r = runCommand(std::string(SB_BENCH_BINARY) + " --list");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    std::map<std::string, std::vector<std::string>> out;
+    std::istringstream in(r.output);
+    const std::regex property(R"(^\s+(\w+)\s+(int|float|bool|enum)\s+default (\S+))");
+    std::string line, technique;
+    std::smatch m;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line[0] != ' ') technique = line.substr(0, line.find(' '));
+        if (std::regex_search(line, m, property))
+            out[technique].push_back(m[1].str() + " " + m[2].str() + " " + m[3].str());
+    }
+    return out;
+}
+
+/// The rows of a README's knob table: "name type default", in order.
+std::vector<std::string> documentedProperties(const fs::path& readme) {
+    std::ifstream in(readme);
+    const std::regex row(R"(^\| `(\w+)` \| (int|float|bool|enum) \| (\S+) \|)");
+    std::vector<std::string> out;
+    std::string line;
+    std::smatch m;
+    while (std::getline(in, line))
+        if (std::regex_search(line, m, row)) out.push_back(m[1].str() + " " + m[2].str() + " " + m[3].str());
+    return out;
+}
+
+// A technique folder named after its technique documents that technique's knobs as `bench --list` gives
+// them (name, type, default, in order; a family folder at least names each), so the table cannot drift
+// from the code.
+TEST(DocsCommandsCli, TechniqueReadmesListTheKnobsOfBenchList) {
+    const fs::path root = SB_SOURCE_DIR;
+    const auto listed = listedProperties();
+    int checked = 0;
+    for (const auto& e : fs::directory_iterator(root / "techniques")) {
+        const std::string name = e.path().filename().string();
+        if (!fs::exists(e.path() / "README.md") || !listed.count(name) || listed.at(name).empty()) continue;
+        const auto documented = documentedProperties(e.path() / "README.md");
+        if (documented.empty()) {
+            // A family folder (techniques/shadowmap) names its members' knobs in a table of its own.
+            const std::string text = sb::test::readFile((e.path() / "README.md").string());
+            for (const auto& p : listed.at(name)) {
+                const std::string knob = "`" + p.substr(0, p.find(' ')) + "`";
+                EXPECT_NE(text.find(knob), std::string::npos) << "techniques/" << name << " lacks " << knob;
+            }
+        } else {
+            EXPECT_EQ(documented, listed.at(name)) << "techniques/" << name;
+        }
+        ++checked;
+    }
+    EXPECT_GE(checked, 8) << "technique READMEs with knob tables";
 }
 
 // The extraction itself, on a block written here: continuation, comments, text blocks left alone.
