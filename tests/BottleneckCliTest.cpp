@@ -119,8 +119,8 @@ TEST(BottleneckCli, FromACsvWithoutStudyRowsIsAClearError) {
     EXPECT_FALSE(std::filesystem::exists(dir + "/never.csv"));
 }
 
-// What each stage's load is, as --help says it and as the README says it: the same definitions,
-// compared as words (line breaks and the README's backticks aside), and both the ones the classifier
+// What each stage's load is, as --help says it and as docs/USAGE.md says it: the same definitions,
+// compared as words (line breaks and its backticks aside), and both the ones the classifier
 // uses (bench/lib/bottleneck/BottleneckStudy.cpp reads load_gl_calls, load_primitives, load_fragments).
 TEST(BottleneckCli, HelpAndReadmeDefineTheLoadsAlike) {
     auto squash = [](std::string text) {
@@ -135,13 +135,13 @@ TEST(BottleneckCli, HelpAndReadmeDefineTheLoadsAlike) {
     };
     const auto help = runCommand(kBench + " bottleneck --help");
     ASSERT_EQ(help.exitCode, 0) << help.output;
-    const std::string readme = squash(test::readFile(std::string(SB_SOURCE_DIR) + "/README.md"));
+    const std::string readme = squash(test::readFile(std::string(SB_SOURCE_DIR) + "/docs/USAGE.md"));
     for (const char* definition :
          {"CPU load = GL calls issued", "vertex load = primitives submitted (not vertex shader invocations",
           "fill load = fragment shader invocations"}) {
         EXPECT_NE(squash(help.output).find(definition), std::string::npos) << definition << "\n"
                                                                            << help.output;
-        EXPECT_NE(readme.find(definition), std::string::npos) << definition << " is not in the README";
+        EXPECT_NE(readme.find(definition), std::string::npos) << definition << " is not in docs/USAGE.md";
     }
 }
 

@@ -78,7 +78,7 @@ TEST(Cli, ShortRunWritesEveryDocumentedColumn) {
     CsvTable t = CsvWriter::read(csv);
     ASSERT_EQ(t.rows.size(), 2u);
     auto cols = test::documentedColumns();
-    ASSERT_GT(cols.size(), 30u) << "README CSV section not found or too short";
+    ASSERT_GT(cols.size(), 30u) << "docs/CSV.md column table not found or too short";
     // Every documented column except those only `bench accuracy` writes (acc_*, ref_*) and those only
     // sweeps, bottleneck studies and failed configurations have (SweepCliTest checks those).
     for (const std::string& c : cols) {

@@ -121,12 +121,14 @@ inline std::string freshDir(const std::string& name) {
     return dir.string();
 }
 
-// The column names the README documents (backticked names in the table of its "CSV columns" section).
+// The column names docs/CSV.md documents (backticked names in the first column of the first table of its
+// "The columns" section, or of the file).
 inline std::vector<std::string> documentedColumns() {
-    std::string readme = test::readFile(std::string(SB_SOURCE_DIR) + "/README.md");
-    size_t start = readme.find("## CSV columns");
-    size_t end = readme.find("\n## ", start + 5);
-    std::string section = readme.substr(start, end - start);
+    std::string doc = test::readFile(std::string(SB_SOURCE_DIR) + "/docs/CSV.md");
+    size_t start =
+        doc.find("\n|", doc.find("## The columns") == std::string::npos ? 0 : doc.find("## The columns"));
+    size_t end = doc.find("\n\n", start == std::string::npos ? 0 : start);
+    std::string section = start == std::string::npos ? std::string() : doc.substr(start, end - start);
     std::vector<std::string> cols;
     std::regex row(R"(\n\| `([a-z0-9_<>]+)`)");
     for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator();
