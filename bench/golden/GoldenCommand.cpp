@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -12,11 +11,10 @@
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
-#include "bench/golden/WarningTally.h"
+#include "bench/golden/MatrixProgress.h"
 #include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
-#include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/select/AutoResolver.h"
 #include "core/Error.h"
 #include "core/Paths.h"
@@ -54,36 +52,6 @@ std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
                                          : std::map<std::string, AccuracyBound>{};
 }
 
-/// The matrix's progress on stderr, a line per cell (or one line redrawn on a terminal), and the cells'
-/// warnings gathered for one summary line per cause at the end. `judge` says whether a cell passed,
-/// given the scene's cells so far (the new one last).
-class MatrixRun {
-public:
-    using Judge = std::function<bool(const std::vector<MatrixCell>&)>;
-    MatrixRun(const GoldenCli& cli, size_t scenes, Judge judge)
-        : mBar(stderr, scenes * GoldenMatrix::cellsPerScene(cli.matrix), 0), mJudge(std::move(judge)) {}
-
-    MatrixObserver observer() {
-        return {[this](const std::string& cell) { mBar.setCurrent(cell); },
-                [this](const std::vector<MatrixCell>& cells) {
-                    mBar.finished(cells.back().name(), mJudge(cells));
-                    mWarnings.add(cells.back().name(), cells.back().warnings);
-                }};
-    }
-    /// Ends the in-place line before other output (on a terminal).
-    void pause() { mBar.close(); }
-    /// The warnings, each cause once with its count of cells.
-    void finish() {
-        mBar.close();
-        for (const std::string& line : mWarnings.summary()) std::cerr << line << "\n";
-    }
-
-private:
-    ProgressBar mBar;
-    Judge mJudge;
-    WarningTally mWarnings;
-};
-
 /// What --check prints of one cell: failures always, passes and details with --verbose.
 std::string describeVerdict(const GoldenCli& cli, const CellVerdict& v) {
     std::ostringstream out;
@@ -111,10 +79,11 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     size_t checked = 0, unsupported = 0, failed = 0;
     std::vector<CellVerdict> verdicts; // of the scene rendering now, judged as each cell finishes
     std::map<std::string, Image8> goldens;
-    MatrixRun run(cli, scenes.size(), [&](const std::vector<MatrixCell>& cells) {
-        verdicts.push_back(MatrixCheck::checkCell(cells, cells.size() - 1, cli.dir, bounds, goldens));
-        return verdicts.back().passed();
-    });
+    MatrixProgress run(
+        scenes.size() * GoldenMatrix::cellsPerScene(cli.matrix), [&](const std::vector<MatrixCell>& cells) {
+            verdicts.push_back(MatrixCheck::checkCell(cells, cells.size() - 1, cli.dir, bounds, goldens));
+            return verdicts.back().passed();
+        });
     for (const std::string& scene : scenes) {
         verdicts.clear();
         goldens.clear();
@@ -275,8 +244,8 @@ int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool
     std::map<std::string, std::pair<AccuracyBound, double>> fresh;
     std::vector<std::vector<MatrixCell>> rendered;
     // The cells are judged after the goldens are written; while rendering, a cell that threw is a failure.
-    MatrixRun run(cli, scenes.size(),
-                  [](const std::vector<MatrixCell>& cells) { return cells.back().failure.empty(); });
+    MatrixProgress run(scenes.size() * GoldenMatrix::cellsPerScene(cli.matrix),
+                       [](const std::vector<MatrixCell>& cells) { return cells.back().failure.empty(); });
     for (const std::string& scene : scenes) {
         rendered.push_back(GoldenMatrix::renderScene(scene, cli.matrix, run.observer()));
         run.pause();
