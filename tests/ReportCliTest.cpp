@@ -4,8 +4,11 @@
 // (the negative controls prove a syntax error and a run-time error are both caught), the table cells
 // after the script ran are the CSV's cells (read here with CsvWriter), sorting through the heading's
 // click handler puts the rows in the order this test computes from the CSV, the screenshots sit in the
-// rows of their techniques, and a screenshot of the page is a real rendering. Skipped without
-// Debian's chromium package.
+// rows of their techniques, and a screenshot of the page is a real rendering. The page opens with
+// pictures: a bar per row as long as its median time (checked against the CSV's medians), accuracy
+// against time only where the rows hold accuracy (a hand-made column, the points checked against it),
+// the screenshots side by side, and the table behind a closed toggle. Skipped without Debian's
+// chromium package.
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -243,6 +246,123 @@ TEST_F(ReportCli, SortingByClickOrdersTheRows) {
     EXPECT_EQ(m[2].str(), "pass") << self.dom.substr(0, 3000);
     // Two clicks per sortable column: the key table's and the all-columns table's, plus their "row".
     EXPECT_GE(std::stoi(m[1].str()), 2 * int(csv.header.size() + 1));
+}
+
+/// Every `<tag ...>` of `svg` (a chart's text) whose class is `cls`: its attributes, name -> value.
+std::vector<std::map<std::string, std::string>> svgElements(const std::string& svg, const std::string& tag,
+                                                            const std::string& cls) {
+    std::vector<std::map<std::string, std::string>> out;
+    const std::regex element("<" + tag + R"re((\s[^>]*)>)re"), attribute(R"re(([\w-]+)="([^"]*)")re");
+    for (auto e = std::sregex_iterator(svg.begin(), svg.end(), element); e != std::sregex_iterator(); ++e) {
+        std::map<std::string, std::string> attributes;
+        const std::string text = (*e)[1];
+        for (auto a = std::sregex_iterator(text.begin(), text.end(), attribute); a != std::sregex_iterator();
+             ++a)
+            attributes[(*a)[1]] = (*a)[2];
+        if (attributes["class"] == cls) out.push_back(attributes);
+    }
+    return out;
+}
+
+/// The element `<svg id="id" ...>...</svg>` of a page, "" when it has none.
+std::string svgById(const std::string& dom, const std::string& id) {
+    const size_t start = dom.find("<svg id=\"" + id + "\"");
+    return start == std::string::npos ? "" : dom.substr(start, dom.find("</svg>", start) - start);
+}
+
+/// Column `name` of every CSV row, as numbers.
+std::vector<double> csvNumbers(const CsvTable& csv, const std::string& name) {
+    const size_t k = size_t(std::find(csv.header.begin(), csv.header.end(), name) - csv.header.begin());
+    std::vector<double> out;
+    for (const auto& row : csv.rows) out.push_back(k < row.size() ? std::stod(row[k]) : 0.0);
+    return out;
+}
+
+TEST_F(ReportCli, PicturesLeadThePageAndTheTableWaitsBehindAToggle) {
+    const Browser b = load(dir, url());
+    ASSERT_EQ(scriptProblems(b), "");
+    const CsvTable csv = CsvWriter::read(dir + "/run.csv");
+    // The first picture of the page is the time chart, above the environment and every table.
+    const size_t chart = b.dom.find("<svg id=\"t1-time\"");
+    ASSERT_NE(chart, std::string::npos) << b.dom.substr(0, 3000);
+    EXPECT_EQ(chart, b.dom.find("<svg")) << "another picture comes first";
+    EXPECT_LT(chart, b.dom.find("<table"));
+    EXPECT_LT(chart, b.dom.find(">Environment<"));
+    // One bar per row, fastest first, each as long as its median (the axis starts at 0): width over
+    // median is the same for every bar, within 1%.
+    const std::vector<double> medians = csvNumbers(csv, "wall_ms_median");
+    const auto bars = svgElements(svgById(b.dom, "t1-time"), "rect", "bar");
+    ASSERT_EQ(bars.size(), csv.rows.size());
+    std::set<size_t> seen;
+    double scale = 0.0, previous = 0.0;
+    for (const auto& bar : bars) {
+        const size_t row = std::stoul(bar.at("data-row"));
+        ASSERT_GE(row, 1u);
+        ASSERT_LE(row, csv.rows.size());
+        seen.insert(row);
+        const double median = medians[row - 1], width = std::stod(bar.at("width"));
+        EXPECT_GE(median, previous) << "bars sorted by time";
+        previous = median;
+        if (scale == 0.0) scale = width / median;
+        EXPECT_NEAR(width / median, scale, 0.01 * scale) << "row " << row;
+    }
+    EXPECT_EQ(seen.size(), csv.rows.size()) << "each row once";
+    // Without accuracy columns there is no accuracy plot.
+    EXPECT_TRUE(std::none_of(csv.header.begin(), csv.header.end(),
+                             [](const std::string& c) { return c.rfind("acc_", 0) == 0; }));
+    EXPECT_EQ(b.dom.find("t1-accuracy"), std::string::npos);
+    // The screenshots side by side, before the table.
+    const size_t gallery = b.dom.find("<div class=\"gallery\">");
+    ASSERT_NE(gallery, std::string::npos);
+    for (const std::string technique : {"none", "shadowmap", "blob"})
+        EXPECT_LT(b.dom.find("shot_" + technique + ".png", gallery), b.dom.find("<table class=\"rows\""));
+    // The table sits inside a closed <details>.
+    const size_t table = b.dom.find("<table class=\"rows\" id=\"t1\"");
+    ASSERT_NE(table, std::string::npos);
+    const size_t details = b.dom.rfind("<details", table);
+    ASSERT_NE(details, std::string::npos);
+    EXPECT_EQ(b.dom.find("</details>", details), b.dom.find("</details>", table))
+        << "closed before the table";
+    const std::string tag = b.dom.substr(details, b.dom.find('>', details) - details);
+    EXPECT_EQ(tag.find("open"), std::string::npos) << tag;
+}
+
+TEST_F(ReportCli, AccuracyIsPlottedAgainstTimeWhereMeasured) {
+    // The run's rows with an accuracy column added by hand: the plot must place each row at its median
+    // time (x) and its accuracy (y, up is worse).
+    const std::string acc = dir + "/accuracy";
+    std::filesystem::create_directories(acc);
+    CsvTable csv = CsvWriter::read(dir + "/run.csv");
+    const std::vector<std::string> wrong = {"12.5", "3.25", "0.5", "12", "3", "0.75"};
+    ASSERT_EQ(csv.rows.size(), wrong.size());
+    csv.header.push_back("acc_wrong_pct");
+    for (size_t i = 0; i < csv.rows.size(); ++i) csv.rows[i].push_back(wrong[i]);
+    CsvWriter::writeTable(acc + "/acc.csv", csv);
+    const auto report = runCommand(kBench + " report " + acc + " -o " + acc + "/index.html");
+    ASSERT_EQ(report.exitCode, 0) << report.output;
+    const Browser b = load(dir, "file://" + acc + "/index.html");
+    ASSERT_EQ(scriptProblems(b), "");
+    const std::string plot = svgById(b.dom, "t1-accuracy");
+    ASSERT_NE(plot, "") << b.dom.substr(0, 3000);
+    EXPECT_LT(b.dom.find("<svg id=\"t1-time\""), b.dom.find("<svg id=\"t1-accuracy\""));
+    const auto points = svgElements(plot, "circle", "point");
+    ASSERT_EQ(points.size(), csv.rows.size());
+    const std::vector<double> medians = csvNumbers(csv, "wall_ms_median");
+    // Positions are linear in the values from a common origin: x - x0 proportional to the median and
+    // y0 - y to the accuracy. Two points fix each line; every other point must lie on it within 1%.
+    std::map<size_t, std::pair<double, double>> at;
+    for (const auto& p : points)
+        at[std::stoul(p.at("data-row"))] = {std::stod(p.at("cx")), std::stod(p.at("cy"))};
+    ASSERT_EQ(at.size(), csv.rows.size());
+    const double kx = (at[2].first - at[1].first) / (medians[1] - medians[0]);
+    const double ky = (at[2].second - at[1].second) / (12.5 - 3.25);
+    for (size_t row = 1; row <= csv.rows.size(); ++row) {
+        SCOPED_TRACE("row " + std::to_string(row));
+        const double span = (at[2].first - at[1].first);
+        EXPECT_NEAR(at[row].first - at[1].first, kx * (medians[row - 1] - medians[0]), 0.01 * std::abs(span));
+        EXPECT_NEAR(at[row].second - at[1].second, ky * (12.5 - std::stod(wrong[row - 1])), 0.01 * ky * 12.5);
+    }
+    EXPECT_GT(ky, 0.0) << "more wrong pixels are drawn higher";
 }
 
 TEST_F(ReportCli, ScreenshotIsARealRendering) {

@@ -4,11 +4,14 @@
   /usr/bin/python3 tools/report.py DIR_OR_FILE... [--out PAGE.html] [--title T] [--embed]
 
 Each argument is a result CSV, an image (PNG, SVG, JPEG), a README.md, or a folder searched for them
-(recursively, in name order). The page holds, per CSV, a table of its rows (the key columns; every
-column under "all columns"), sortable by a click on a heading with the page's own script (no server,
-nothing fetched: the page works from file://), the figures of the CSV's folder beside it, and each
-row's screenshot where `bench --screenshot` named one after its technique (shot_<technique>.png).
-Above the tables: the environment the rows record (renderer, GL version, CPU, commit ...) and the
+(recursively, in name order). The page opens with pictures, per CSV: a bar chart of each row's median
+wall time (wall_ms_median) with its p5-p95 interval, fastest first; where the rows hold accuracy
+(acc_wrong_pct, ...), that accuracy against the time as a scatter; then the rows' screenshots side by
+side (inline SVG drawn here, no script library). Below, per CSV and behind a toggle (<details>), a table
+of its rows (the key columns; every column under "all columns"), sortable by a click on a heading with
+the page's own script (no server, nothing fetched: the page works from file://), the figures of the
+CSV's folder beside it, and each row's screenshot where `bench --screenshot` named one after its
+technique (shot_<technique>.png). Between them: the environment the rows record (renderer, GL version, CPU, commit ...) and the
 commands that rerun them, rebuilt from the rows' columns, with the commands a README beside them gives.
 
 The page is the same bytes for the same inputs (no generation time), so a committed example stays put.
@@ -25,6 +28,7 @@ import argparse
 import base64
 import csv
 import html
+import math
 import os
 import re
 import sys
@@ -163,6 +167,197 @@ def table_html(table_id, header, rows, columns, pictures, out_dir, embed, captio
         out.append(f'<tr data-row="{n}">' + "".join(cells) + "</tr>")
     out.append("</tbody></table>")
     return "\n".join(out)
+
+
+# The charts that open the page (inline SVG written here: no script library, nothing fetched).
+TIME_COLUMN = "wall_ms_median"
+# The interval drawn around each median: the first pair of columns the CSV has.
+INTERVAL_COLUMNS = [("wall_ms_p5", "wall_ms_p95", "p5-p95 of the frames")]
+# The accuracy plotted against time: the first of these the rows hold numbers in (README.md, "CSV columns").
+ACCURACY_COLUMNS = [("acc_wrong_pct", "wrong pixels (%)"), ("acc_wrong_no_edge_pct", "wrong pixels off edges (%)"),
+                    ("acc_rmse", "visibility RMSE")]
+# What tells the rows apart in a label, where it differs between rows.
+LABEL_COLUMNS = ["technique", "properties", "api", "scene", "submit", "instances", "camera", "width", "height", "repeat"]
+LABEL_CHARS = 36  # a longer label is cut (the whole one is the bar's tooltip)
+MAX_BARS = 200  # more rows than this: the fastest are drawn, the rest counted under the chart
+NAMED_POINTS = 30  # a scatter with more points than this names them in tooltips only
+
+
+def number(text):
+    try:
+        v = float(text)
+    except ValueError:
+        return None
+    return v if v == v and abs(v) != float("inf") else None
+
+
+def row_labels(header, rows):
+    """Per row, the values of the identity columns that differ between the rows ("shadowmap, round 2")."""
+    col = {name: k for k, name in enumerate(header)}
+    varying = [c for c in LABEL_COLUMNS if c in col and len({r[col[c]] for r in rows}) > 1]
+    if "properties" in varying and "technique" in col:
+        # A technique's properties name a row only where one technique ran with several sets of them.
+        sets = {}
+        for r in rows:
+            sets.setdefault(r[col["technique"]], set()).add(r[col["properties"]])
+        if all(len(v) == 1 for v in sets.values()):
+            varying.remove("properties")
+    if "technique" in col and "technique" not in varying:
+        varying.insert(0, "technique")  # always say what was measured
+    labels = []
+    for r in rows:
+        parts = []
+        for c in varying:
+            v = r[col[c]]
+            if not v:
+                continue
+            parts.append({"repeat": f"round {v}", "instances": f"x{v}", "width": f"{v}w", "height": f"{v}h"}.get(c, v))
+        labels.append(", ".join(parts) or "row")
+    return labels
+
+
+def short(label):
+    return label if len(label) <= LABEL_CHARS else label[:LABEL_CHARS - 1] + "\u2026"
+
+
+def nice_max(v):
+    """The axis end: 1, 2, 2.5, 5 or 10 times a power of ten, at least v."""
+    if v <= 0:
+        return 1.0
+    scale = 10.0 ** math.floor(math.log10(v))
+    return next(m * scale for m in (1, 2, 2.5, 5, 10) if m * scale >= v * (1 - 1e-12))
+
+
+def fmt(v):
+    return f"{v:.4g}"
+
+
+def timed_rows(header, rows):
+    """(row number, median, low, high) of each row with a median time; low/high None without an interval."""
+    col = {name: k for k, name in enumerate(header)}
+    interval = next(((lo, hi, what) for lo, hi, what in INTERVAL_COLUMNS if lo in col and hi in col), None)
+    out = []
+    for n, r in enumerate(rows, start=1):
+        median = number(r[col[TIME_COLUMN]])
+        if median is None:
+            continue
+        low = high = None
+        if interval:
+            low, high = number(r[col[interval[0]]]), number(r[col[interval[1]]])
+        out.append((n, median, low, high))
+    return out, (interval[2] if interval else None)
+
+
+def time_chart(chart_id, header, rows, labels):
+    """Horizontal bars of the median wall time per row, fastest first, each with its interval as a
+    whisker; a bar's width is proportional to its median (the axis starts at 0)."""
+    timed, interval = timed_rows(header, rows)
+    if not timed:
+        return ""
+    timed.sort(key=lambda t: (t[1], t[0]))
+    drawn, hidden = timed[:MAX_BARS], len(timed) - MAX_BARS
+    top = max(max(m, h or 0) for _, m, _, h in drawn)
+    axis = nice_max(top)
+    left, plot, bar_h, gap, head = 260, 440, 14, 6, 24
+    width = left + plot + 90
+    height = head + len(drawn) * (bar_h + gap) + 30
+    x = lambda v: left + plot * v / axis  # noqa: E731
+    out = [f'<svg id="{chart_id}" class="chart time" xmlns="http://www.w3.org/2000/svg" width="{width}" '
+           f'height="{height}" viewBox="0 0 {width} {height}" role="img" aria-label="median wall time per row">',
+           f'<text x="{left}" y="14" class="axis-title">median wall time per frame (ms)'
+           + (f", whiskers {html.escape(interval)}" if interval else "") + "</text>"]
+    for k in range(5):
+        v = axis * k / 4
+        out.append(f'<line class="grid" x1="{x(v):.1f}" y1="{head - 4}" x2="{x(v):.1f}" y2="{height - 24}"/>'
+                   f'<text class="tick" x="{x(v):.1f}" y="{height - 10}" text-anchor="middle">{fmt(v)}</text>')
+    for i, (n, median, low, high) in enumerate(drawn):
+        y = head + i * (bar_h + gap)
+        label = labels[n - 1]
+        out.append(f'<g class="bar-row" data-row="{n}"><title>{html.escape(label)}: {fmt(median)} ms'
+                   + (f" ({fmt(low)}-{fmt(high)})" if low is not None and high is not None else "") + "</title>")
+        out.append(f'<text class="label" x="{left - 6}" y="{y + bar_h - 3}" text-anchor="end">'
+                   f"{html.escape(short(label))}</text>")
+        out.append(f'<rect class="bar" data-row="{n}" data-value="{median!r}" x="{left}" y="{y}" '
+                   f'width="{plot * median / axis:.3f}" height="{bar_h}"/>')
+        if low is not None and high is not None:
+            mid = y + bar_h / 2
+            out.append(f'<path class="whisker" d="M{x(low):.1f},{mid - 4}v8M{x(low):.1f},{mid}H{x(high):.1f}'
+                       f'M{x(high):.1f},{mid - 4}v8"/>')
+        end = x(max(median, high or 0))
+        out.append(f'<text class="value" x="{end + 4:.1f}" y="{y + bar_h - 3}">{fmt(median)}</text></g>')
+    out.append("</svg>")
+    if hidden > 0:
+        out.append(f"<p>The {MAX_BARS} fastest of {len(timed)} rows; the other {hidden} are in the table.</p>")
+    return "\n".join(out)
+
+
+def accuracy_chart(chart_id, header, rows, labels):
+    """Accuracy against median wall time, a point per row that has both: the cheap and right corner is
+    the bottom left. "" when the rows hold no accuracy."""
+    col = {name: k for k, name in enumerate(header)}
+    metric = next(((c, what) for c, what in ACCURACY_COLUMNS
+                   if c in col and any(number(r[col[c]]) is not None for r in rows)), None)
+    if not metric or TIME_COLUMN not in col:
+        return ""
+    points = [(n, number(r[col[TIME_COLUMN]]), number(r[col[metric[0]]])) for n, r in enumerate(rows, start=1)]
+    points = [p for p in points if p[1] is not None and p[2] is not None]
+    if not points:
+        return ""
+    xmax, ymax = nice_max(max(p[1] for p in points)), nice_max(max(p[2] for p in points))
+    left, top, plot_w, plot_h = 60, 24, 520, 300
+    width, height = left + plot_w + 170, top + plot_h + 46
+    sx = lambda v: left + plot_w * v / xmax  # noqa: E731
+    sy = lambda v: top + plot_h - plot_h * v / ymax  # noqa: E731
+    out = [f'<svg id="{chart_id}" class="chart accuracy" xmlns="http://www.w3.org/2000/svg" width="{width}" '
+           f'height="{height}" viewBox="0 0 {width} {height}" role="img" aria-label="accuracy against time">',
+           f'<text x="{left}" y="14" class="axis-title">{html.escape(metric[1])} ({metric[0]}) against median '
+           "wall time (ms); lower left is cheap and right</text>",
+           f'<rect class="frame" x="{left}" y="{top}" width="{plot_w}" height="{plot_h}"/>']
+    for k in range(5):
+        vx, vy = xmax * k / 4, ymax * k / 4
+        out.append(f'<text class="tick" x="{sx(vx):.1f}" y="{top + plot_h + 16}" text-anchor="middle">{fmt(vx)}</text>'
+                   f'<text class="tick" x="{left - 6}" y="{sy(vy) + 4:.1f}" text-anchor="end">{fmt(vy)}</text>')
+    for n, t, a in points:
+        label = labels[n - 1]
+        out.append(f'<g class="point-row" data-row="{n}"><title>{html.escape(label)}: {fmt(t)} ms, '
+                   f"{metric[0]} {fmt(a)}</title>"
+                   f'<circle class="point" data-row="{n}" cx="{sx(t):.2f}" cy="{sy(a):.2f}" r="4"/>')
+        if len(points) <= NAMED_POINTS:
+            out.append(f'<text class="label" x="{sx(t) + 6:.1f}" y="{sy(a) + 4:.1f}">{html.escape(short(label))}</text>')
+        out.append("</g>")
+    out.append(f'<text class="tick" x="{left + plot_w / 2}" y="{height - 6}" text-anchor="middle">median wall '
+               "time per frame (ms)</text></svg>")
+    return "\n".join(out)
+
+
+def gallery(pictures, labels, out_dir, embed):
+    """Each distinct screenshot of the rows once, side by side, captioned with its first row's label."""
+    seen, out = set(), []
+    for n, ps in enumerate(pictures, start=1):
+        for p in ps:
+            if p in seen:
+                continue
+            seen.add(p)
+            src = html.escape(link(p, out_dir, embed))
+            out.append(f'<figure><a href="{src}"><img alt="{html.escape(os.path.basename(p))}" src="{src}"></a>'
+                       f"<figcaption>{html.escape(short(labels[n - 1]))}</figcaption></figure>")
+    return f'<div class="gallery">{"".join(out)}</div>' if out else ""
+
+
+def glance(table_id, name, header, rows, pictures, out_dir, embed):
+    """The pictures that open the page for one CSV: time per row, accuracy against time where measured,
+    then the screenshots."""
+    if TIME_COLUMN not in header and not any(pictures):
+        return ""
+    labels = row_labels(header, rows)
+    parts = [time_chart(f"{table_id}-time", header, rows, labels) if TIME_COLUMN in header else "",
+             accuracy_chart(f"{table_id}-accuracy", header, rows, labels),
+             gallery(pictures, labels, out_dir, embed)]
+    parts = [p for p in parts if p]
+    if not parts:
+        return ""
+    return (f'<section class="glance" id="{table_id}-glance"><h2>{html.escape(name)}</h2>' + "\n".join(parts) +
+            f'<p><a href="#{table_id}-section">the table of its {len(rows)} row(s)</a></p></section>')
 
 
 def environment_html(tables):
@@ -387,6 +582,15 @@ caption { text-align: left; font-weight: bold; padding: .3em 0; }
 .figures img { max-width: 560px; border: 1px solid #ddd; display: block; margin-bottom: .5em; }
 img.thumb { width: 96px; image-rendering: pixelated; border: 1px solid #ccc; }
 #js-errors { color: #a00; background: #fee; }
+svg.chart { display: block; max-width: 100%; height: auto; margin: .5em 0 1em; font: 11px ui-monospace, monospace; }
+svg.chart .bar { fill: #4a7ab5; } svg.chart .whisker { stroke: #222; stroke-width: 1.2; fill: none; }
+svg.chart .grid { stroke: #ddd; } svg.chart .frame { fill: none; stroke: #bbb; }
+svg.chart .point { fill: #c0504d; stroke: #fff; } svg.chart .axis-title { font-weight: bold; }
+svg.chart .tick { fill: #555; } svg.chart .label, svg.chart .value { fill: #222; }
+.gallery { display: flex; flex-wrap: wrap; gap: 1em; } .gallery figure { margin: 0; }
+.gallery img { width: 256px; image-rendering: pixelated; border: 1px solid #ccc; display: block; }
+.gallery figcaption { font-size: 12px; max-width: 256px; }
+details.table > summary { cursor: pointer; font-weight: bold; }
 output#selftest { display: block; color: #555; }
 """
 
@@ -396,7 +600,7 @@ def build(args):
     csvs, images, readmes = collect(args.inputs, args.out)
     if not csvs and not images:
         bad_input(f"no CSV or image in {' '.join(args.inputs)}")
-    tables, sections, used_images = [], [], set()
+    tables, sections, glances, used_images = [], [], [], set()
     for t, path in enumerate(csvs, start=1):
         if os.path.getsize(path) > CSV_LIMIT:
             sections.append(f"<h2>{html.escape(shown_path(path, out_dir))}</h2><p>Larger than "
@@ -415,16 +619,19 @@ def build(args):
             key = header[:WIDE]
         table_id = f"t{t}"
         name = shown_path(path, out_dir)
+        glances.append(glance(table_id, name, header, rows, pictures, out_dir, args.embed))
+        # The table behind a toggle: the pictures above say what it holds, the table is for looking up.
         part = [f'<h2 id="{table_id}-section">{html.escape(name)}</h2>',
-                f"<p>{len(rows)} row(s), {len(header)} column(s). Click a heading to sort.</p>",
                 '<div class="pair"><div class="tablewrap">',
+                f'<details class="table" id="{table_id}-details"><summary>the table: {len(rows)} row(s), '
+                f"{len(header)} column(s); click a heading to sort</summary>",
                 table_html(table_id, header, rows, key, pictures if has_pictures else None, out_dir, args.embed,
                            f"{name}: key columns" if key != header else name)]
         if key != header:
             part.append(f"<details><summary>all {len(header)} columns</summary>")
             part.append(table_html(f"{table_id}-all", header, rows, header, None, out_dir, args.embed, name))
             part.append("</details>")
-        part.append("</div>")
+        part.append("</details></div>")
         # The figures of the CSV's folder (bench figures: figure.svg beside data.csv) go beside it.
         figures = [i for i in images if os.path.dirname(i) == csv_dir and i not in used_images]
         svgs = {os.path.splitext(i)[0] for i in figures if i.lower().endswith(".svg")}
@@ -471,6 +678,9 @@ def build(args):
         f"<p>Written by <code>bench report</code> (tools/report.py) from {inputs}: {len(tables)} table(s), "
         f"{len(images)} image(s). Static: sorting runs in this page, nothing is fetched.</p>",
         '<pre id="js-errors" hidden></pre>', '<output id="selftest"></output>',
+    ]
+    page.extend(g for g in glances if g)
+    page += [
         "<h2>Environment</h2><p>What the rows record about the machine, driver and build that measured them.</p>",
         environment_html(tables),
     ]

@@ -16,6 +16,7 @@
 #include "bench/lib/output/AtomicFile.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/DashboardExport.h"
+#include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "core/Error.h"
@@ -95,10 +96,14 @@ std::string defaultPath(const std::string& given, const char* relative) {
 /// Layer A's rows of one side: every selected configuration's census.
 CsvTable workRows(const CiSuite& suite, const std::vector<const CiConfig*>& configs, const CiSide& side) {
     std::vector<CsvRow> rows;
-    for (const CiConfig* c : configs) {
-        std::cerr << "ci: work " << c->name << " (" << side.describe() << ")\n";
-        rows.push_back(SuiteRunner::run(suite, *c, side, {suite.work.frames, suite.work.warmup, {}, {}}));
-    }
+    std::cerr << "ci: layer A, exact work of " << configs.size() << " configurations (" << side.describe()
+              << ")\n";
+    ProgressBar bar(stderr, configs.size(), 0);
+    for (const CiConfig* c : configs)
+        rows.push_back(bar.step("work " + c->name + " (" + side.describe() + ")", [&] {
+            return SuiteRunner::run(suite, *c, side, {suite.work.frames, suite.work.warmup, {}, {}});
+        }));
+    bar.close();
     return CsvWriter::toTable(rows);
 }
 

@@ -11,6 +11,7 @@
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
+#include "bench/golden/MatrixProgress.h"
 #include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
@@ -51,34 +52,56 @@ std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
                                          : std::map<std::string, AccuracyBound>{};
 }
 
+/// What --check prints of one cell: failures always, passes and details with --verbose.
+std::string describeVerdict(const GoldenCli& cli, const CellVerdict& v) {
+    std::ostringstream out;
+    if (!v.unsupported.empty() && v.passed()) {
+        if (cli.verbose) out << v.cell << ": unsupported: " << v.unsupported << "\n";
+        return out.str();
+    }
+    if (!v.passed() || cli.verbose) out << v.cell << (v.passed() ? ": ok\n" : ": FAILED\n");
+    for (const std::string& f : v.failures) out << "  " << f << "\n";
+    for (const GoldenChange& change : v.changed) {
+        out << "  " << change.kind << " difference against " << change.goldenPath << ":";
+        for (const std::string& path : GoldenDiff::write(cli.diffDir, v.cell, change)) out << " " << path;
+        out << "\n";
+    }
+    if (cli.verbose)
+        for (const std::string& d : v.details) out << "  " << d << "\n";
+    return out.str();
+}
+
 int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     const std::map<std::string, AccuracyBound> bounds = readBounds(cli.dir);
     // Checked before the first scene renders: a folder that cannot take the pictures fails in
     // milliseconds, not after the matrix.
     AccuracyImages::prepareDirectory(cli.diffDir, "--diff-dir");
     size_t checked = 0, unsupported = 0, failed = 0;
+    std::vector<CellVerdict> verdicts; // of the scene rendering now, judged as each cell finishes
+    std::map<std::string, Image8> goldens;
+    MatrixProgress run(
+        scenes.size() * GoldenMatrix::cellsPerScene(cli.matrix), [&](const std::vector<MatrixCell>& cells) {
+            verdicts.push_back(MatrixCheck::checkCell(cells, cells.size() - 1, cli.dir, bounds, goldens));
+            return verdicts.back().passed();
+        });
     for (const std::string& scene : scenes) {
-        for (const CellVerdict& v :
-             MatrixCheck::check(GoldenMatrix::renderScene(scene, cli.matrix), cli.dir, bounds)) {
-            if (!v.unsupported.empty() && v.passed()) {
-                ++unsupported;
-                if (cli.verbose) std::cout << v.cell << ": unsupported: " << v.unsupported << "\n";
-                continue;
-            }
-            ++checked;
+        verdicts.clear();
+        goldens.clear();
+        GoldenMatrix::renderScene(scene, cli.matrix, run.observer());
+        std::string text;
+        for (const CellVerdict& v : verdicts) {
+            const bool skipped = !v.unsupported.empty() && v.passed();
+            unsupported += skipped;
+            checked += !skipped;
             failed += !v.passed();
-            if (!v.passed() || cli.verbose) std::cout << v.cell << (v.passed() ? ": ok\n" : ": FAILED\n");
-            for (const std::string& f : v.failures) std::cout << "  " << f << "\n";
-            for (const GoldenChange& change : v.changed) {
-                std::cout << "  " << change.kind << " difference against " << change.goldenPath << ":";
-                for (const std::string& path : GoldenDiff::write(cli.diffDir, v.cell, change))
-                    std::cout << " " << path;
-                std::cout << "\n";
-            }
-            if (cli.verbose)
-                for (const std::string& d : v.details) std::cout << "  " << d << "\n";
+            text += describeVerdict(cli, v);
+        }
+        if (!text.empty()) {
+            run.pause();
+            std::cout << text << std::flush;
         }
     }
+    run.finish();
     std::cout << "golden check: " << checked << " cells checked, " << failed << " failed, " << unsupported
               << " unsupported (--verbose lists them) against " << cli.dir << "\n";
     return failed ? int(ExitCode::Failure) : 0;
@@ -220,10 +243,15 @@ std::string exceptionList(const std::vector<std::vector<MatrixCell>>& rendered) 
 int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool wholeMatrix) {
     std::map<std::string, std::pair<AccuracyBound, double>> fresh;
     std::vector<std::vector<MatrixCell>> rendered;
+    // The cells are judged after the goldens are written; while rendering, a cell that threw is a failure.
+    MatrixProgress run(scenes.size() * GoldenMatrix::cellsPerScene(cli.matrix),
+                       [](const std::vector<MatrixCell>& cells) { return cells.back().failure.empty(); });
     for (const std::string& scene : scenes) {
-        rendered.push_back(GoldenMatrix::renderScene(scene, cli.matrix));
+        rendered.push_back(GoldenMatrix::renderScene(scene, cli.matrix, run.observer()));
+        run.pause();
         writeGoldens(cli, rendered.back(), fresh);
     }
+    run.finish();
     writeBounds(cli.dir, fresh);
     // The update is checked like any other run: a cell that fails (a mode that differs from retained,
     // an accuracy outside its rule) is printed and makes the exit code 1, goldens written or not.

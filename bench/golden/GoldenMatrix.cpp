@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <unistd.h>
 
+#include "bench/golden/StderrCapture.h"
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/measure/AccuracyEvaluator.h"
@@ -24,6 +26,36 @@ namespace {
 /// runs its technique's per-frame update (Technique::sceneChanged) before the image is taken.
 constexpr int kPathFrames = 8;
 constexpr uint64_t kPathStep = 5;
+/// The Vulkan axis: the two submission modes Vulkan has (immediate and display lists are GL's own).
+constexpr SubmitMode kVulkanModes[] = {SubmitMode::Retained, SubmitMode::Instanced};
+
+std::string cellName(const std::string& technique, const std::string& scene, SubmitMode mode, bool vulkan) {
+    return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan ? "/vulkan" : "");
+}
+
+/// Renders one cell with its stderr captured, telling the observer before and after.
+template <class Render>
+void addCell(std::vector<MatrixCell>& cells, const std::string& name, const MatrixObserver& observer,
+             Render render) {
+    if (observer.starting) observer.starting(name);
+    MatrixCell cell;
+    {
+        StderrCapture capture;
+        cell = render();
+        cell.warnings = capture.take();
+    }
+    cells.push_back(std::move(cell));
+    if (observer.finished) observer.finished(cells);
+}
+
+std::vector<std::string> techniquesOf(const MatrixOptions& options) {
+    std::vector<std::string> techniques = options.techniques;
+    if (techniques.empty()) {
+        techniques = TechniqueRegistry::names();
+        techniques.push_back(AutoResolver::kName);
+    }
+    return techniques;
+}
 
 std::vector<SubmitMode> modesRetainedFirst() {
     std::vector<SubmitMode> modes{SubmitMode::Retained};
@@ -220,14 +252,33 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     return cell;
 }
 
+/// One Vulkan cell of the axis: unsupported with the reason where it cannot run, else rendered.
+MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const std::string& refusal,
+                      const std::string& technique, const std::string& scene, SubmitMode mode,
+                      const MatrixOptions& options) {
+    if (!vulkan) return unsupportedCell(technique, scene, mode, "vulkan", refusal);
+    if (technique == AutoResolver::kName)
+        return unsupportedCell(technique, scene, mode, "vulkan",
+                               "-t auto chooses among GL techniques (name one with --api vulkan)");
+    if (!TechniqueRegistry::hasVulkan(technique))
+        return unsupportedCell(technique, scene, mode, "vulkan", technique + " has no Vulkan form yet");
+    try {
+        return renderVulkanCell(*vulkan, *evaluator, technique, scene, options);
+    } catch (const std::exception& e) {
+        MatrixCell failed = unsupportedCell(technique, scene, mode, "vulkan", "");
+        failed.failure = e.what();
+        return failed;
+    }
+}
+
 /// The Vulkan axis of one scene (GoldenMatrix::renderScene).
 void renderVulkanCells(const std::string& scene, const std::string& camera,
                        const std::vector<std::string>& techniques, const MatrixOptions& options,
-                       std::vector<MatrixCell>& cells) {
+                       const MatrixObserver& observer, std::vector<MatrixCell>& cells) {
     RunConfig gl = RunConfig::oneFrame(scene, camera, options.size, SubmitMode::Retained);
     std::unique_ptr<Harness> judge;
     std::unique_ptr<AccuracyEvaluator> evaluator;
-    for (SubmitMode mode : {SubmitMode::Retained, SubmitMode::Instanced}) {
+    for (SubmitMode mode : kVulkanModes) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         config.api = RunConfig::Api::Vulkan;
         config.vulkan.validation = true;
@@ -243,26 +294,10 @@ void renderVulkanCells(const std::string& scene, const std::string& camera,
             judge = std::make_unique<Harness>(gl);
             evaluator = std::make_unique<AccuracyEvaluator>(*judge);
         }
-        for (const std::string& technique : techniques) {
-            if (!vulkan) {
-                cells.push_back(unsupportedCell(technique, scene, mode, "vulkan", refusal));
-            } else if (technique == AutoResolver::kName) {
-                cells.push_back(
-                    unsupportedCell(technique, scene, mode, "vulkan",
-                                    "-t auto chooses among GL techniques (name one with --api vulkan)"));
-            } else if (!TechniqueRegistry::hasVulkan(technique)) {
-                cells.push_back(
-                    unsupportedCell(technique, scene, mode, "vulkan", technique + " has no Vulkan form yet"));
-            } else {
-                try {
-                    cells.push_back(renderVulkanCell(*vulkan, *evaluator, technique, scene, options));
-                } catch (const std::exception& e) {
-                    MatrixCell failed = unsupportedCell(technique, scene, mode, "vulkan", "");
-                    failed.failure = e.what();
-                    cells.push_back(std::move(failed));
-                }
-            }
-        }
+        for (const std::string& technique : techniques)
+            addCell(cells, cellName(technique, scene, mode, true), observer, [&] {
+                return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode, options);
+            });
     }
 }
 
@@ -273,7 +308,7 @@ std::string MatrixCell::judgedAs() const {
 }
 
 std::string MatrixCell::name() const {
-    return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan() ? "/vulkan" : "");
+    return cellName(technique, scene, mode, vulkan());
 }
 
 std::vector<std::string> GoldenMatrix::builtinScenes() {
@@ -298,12 +333,13 @@ std::string GoldenMatrix::cameraFor(const Scene& s) {
     return s.cameras.front().name;
 }
 
-std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, const MatrixOptions& options) {
-    std::vector<std::string> techniques = options.techniques;
-    if (techniques.empty()) {
-        techniques = TechniqueRegistry::names();
-        techniques.push_back(AutoResolver::kName);
-    }
+size_t GoldenMatrix::cellsPerScene(const MatrixOptions& options) {
+    return techniquesOf(options).size() * (std::size(kAllSubmitModes) + std::size(kVulkanModes));
+}
+
+std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, const MatrixOptions& options,
+                                                  const MatrixObserver& observer) {
+    const std::vector<std::string> techniques = techniquesOf(options);
     const Scene loaded = SceneLoader::load(scene); // once, not once per mode
     const std::string camera = cameraFor(loaded);
     std::vector<MatrixCell> cells;
@@ -314,24 +350,24 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
         if (loaded.motion) config.pathFrames = kPathFrames;
         Harness harness(config);
         AccuracyEvaluator evaluator(harness);
-        for (const std::string& technique : techniques) {
-            try {
-                if (technique == AutoResolver::kName)
-                    cells.push_back(renderAutoCell(harness, evaluator, pick, refusal, scene, options));
-                else
-                    cells.push_back(renderCell(harness, evaluator, technique, TechniqueSpec{technique, {}},
-                                               scene, options));
-            } catch (const std::exception& e) {
-                MatrixCell failed;
-                failed.technique = technique;
-                failed.scene = scene;
-                failed.mode = mode;
-                failed.failure = e.what();
-                cells.push_back(std::move(failed));
-            }
-        }
+        for (const std::string& technique : techniques)
+            addCell(cells, cellName(technique, scene, mode, false), observer, [&] {
+                try {
+                    if (technique == AutoResolver::kName)
+                        return renderAutoCell(harness, evaluator, pick, refusal, scene, options);
+                    return renderCell(harness, evaluator, technique, TechniqueSpec{technique, {}}, scene,
+                                      options);
+                } catch (const std::exception& e) {
+                    MatrixCell failed;
+                    failed.technique = technique;
+                    failed.scene = scene;
+                    failed.mode = mode;
+                    failed.failure = e.what();
+                    return failed;
+                }
+            });
     }
-    renderVulkanCells(scene, camera, techniques, options, cells);
+    renderVulkanCells(scene, camera, techniques, options, observer, cells);
     return cells;
 }
 

@@ -6,6 +6,7 @@
 // against the Embree reference per light. A cell a technique cannot handle is kept with the reason the
 // technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,9 +53,20 @@ struct MatrixCell {
     std::vector<float> visibilityFloat; ///< the raw read-back of the lights' channels, for the mode check
     std::vector<CellAccuracy> lights;
     NumericSanity sanity; ///< over the whole visibility read-back
+    /// What the cell wrote on stderr while it rendered (a technique saying what it cannot shadow), one
+    /// entry per line: `bench golden` prints each distinct line once, with how many cells wrote it.
+    std::vector<std::string> warnings;
     /// "technique/scene/mode", with "/vulkan" appended for a Vulkan cell
     std::string name() const;
     bool ran() const { return unsupported.empty() && failure.empty(); }
+};
+
+/// Told of each cell as a scene of the matrix renders (the progress of `bench golden`): `starting` with
+/// the cell's name before it renders, `finished` after, with the scene's cells so far (the new one last;
+/// a cell's check needs only the cells before it). Either may be empty.
+struct MatrixObserver {
+    std::function<void(const std::string& cell)> starting;
+    std::function<void(const std::vector<MatrixCell>& cells)> finished;
 };
 
 struct MatrixOptions {
@@ -80,7 +92,12 @@ public:
     /// rendered with the validation layer on (a validation error fails the cell) and judged against the
     /// GL retained harness's reference; a technique without a Vulkan form, `auto` and a scene in motion
     /// are unsupported cells with their reason.
-    static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options);
+    /// Each cell's stderr is captured into MatrixCell::warnings.
+    static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options,
+                                               const MatrixObserver& observer = {});
+    /// How many cells renderScene returns for one scene: every technique (options.techniques, or the
+    /// registry's and `auto`) in every GL submission mode and Vulkan's two.
+    static size_t cellsPerScene(const MatrixOptions& options);
 };
 
 } // namespace sb

@@ -131,34 +131,40 @@ std::string MatrixCheck::goldenPath(const std::string& dir, const std::string& s
     return dir + "/" + scene + "/" + technique + "." + kind + ".png";
 }
 
+CellVerdict MatrixCheck::checkCell(const std::vector<MatrixCell>& cells, size_t index,
+                                   const std::string& goldenDir,
+                                   const std::map<std::string, AccuracyBound>& bounds, GoldenCache& goldens) {
+    const MatrixCell& cell = cells[index];
+    CellVerdict v;
+    v.cell = cell.name();
+    if (!cell.failure.empty()) {
+        v.failures.push_back("threw: " + cell.failure);
+    } else if (!cell.unsupported.empty()) {
+        v.unsupported = cell.unsupported;
+        if (cell.mode == SubmitMode::Retained && !cell.autoPick && !cell.vulkan() &&
+            std::filesystem::exists(goldenPath(goldenDir, cell.scene, cell.technique, "visibility")))
+            v.failures.push_back("refuses the scene but has a golden: " + cell.unsupported);
+    } else {
+        if (cell.sanity.total())
+            v.failures.push_back("visibility has " + std::to_string(cell.sanity.nan) + " NaN, " +
+                                 std::to_string(cell.sanity.inf) + " Inf, " +
+                                 std::to_string(cell.sanity.outOfRange) + " out of [0, 1]");
+        checkModes(cells, cell, v);
+        checkGolden(cell, goldenDir, "visibility", cell.visibility, goldens, v);
+        checkGolden(cell, goldenDir, "colour", cell.colour, goldens, v);
+        checkAccuracy(cell, bounds, v);
+        checkAutoPick(cell, v);
+    }
+    return v;
+}
+
 std::vector<CellVerdict> MatrixCheck::check(const std::vector<MatrixCell>& cells,
                                             const std::string& goldenDir,
                                             const std::map<std::string, AccuracyBound>& bounds) {
     std::vector<CellVerdict> verdicts;
     GoldenCache goldens;
-    for (const MatrixCell& cell : cells) {
-        CellVerdict v;
-        v.cell = cell.name();
-        if (!cell.failure.empty()) {
-            v.failures.push_back("threw: " + cell.failure);
-        } else if (!cell.unsupported.empty()) {
-            v.unsupported = cell.unsupported;
-            if (cell.mode == SubmitMode::Retained && !cell.autoPick && !cell.vulkan() &&
-                std::filesystem::exists(goldenPath(goldenDir, cell.scene, cell.technique, "visibility")))
-                v.failures.push_back("refuses the scene but has a golden: " + cell.unsupported);
-        } else {
-            if (cell.sanity.total())
-                v.failures.push_back("visibility has " + std::to_string(cell.sanity.nan) + " NaN, " +
-                                     std::to_string(cell.sanity.inf) + " Inf, " +
-                                     std::to_string(cell.sanity.outOfRange) + " out of [0, 1]");
-            checkModes(cells, cell, v);
-            checkGolden(cell, goldenDir, "visibility", cell.visibility, goldens, v);
-            checkGolden(cell, goldenDir, "colour", cell.colour, goldens, v);
-            checkAccuracy(cell, bounds, v);
-            checkAutoPick(cell, v);
-        }
-        verdicts.push_back(std::move(v));
-    }
+    for (size_t i = 0; i < cells.size(); ++i)
+        verdicts.push_back(checkCell(cells, i, goldenDir, bounds, goldens));
     return verdicts;
 }
 

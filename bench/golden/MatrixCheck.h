@@ -55,6 +55,13 @@ public:
                                   const std::string& technique, const std::string& kind);
     /// Verdicts for the cells of one scene (as GoldenMatrix::renderScene returns them). `bounds` maps
     /// "technique/scene/light<i>" to the committed bound.
+    /// The verdict of cells[index] alone (`bench golden --check` judges each cell as it finishes): it
+    /// needs only the cells before it, since a technique's retained cell renders first. `goldens` keeps
+    /// the goldens read so far by path (the modes of a cell share one); an empty image: no file.
+    static CellVerdict checkCell(const std::vector<MatrixCell>& cells, size_t index,
+                                 const std::string& goldenDir,
+                                 const std::map<std::string, AccuracyBound>& bounds,
+                                 std::map<std::string, Image8>& goldens);
     static std::vector<CellVerdict> check(const std::vector<MatrixCell>& cells, const std::string& goldenDir,
                                           const std::map<std::string, AccuracyBound>& bounds);
 };

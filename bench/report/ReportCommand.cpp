@@ -53,7 +53,8 @@ int ReportCommand::main(int argc, char** argv) {
     CLI::App app{"bench report: one static HTML page from result CSVs, figures and images", "bench report"};
     app.footer(R"(Examples:
   bench -t none -t shadowmap --frames 10 --csv out/run.csv --screenshot out/shot.png
-  bench report out                           out/report.html: the table, the screenshots beside their rows
+  bench report out                           out/report.html: time per row (and accuracy against time
+                                             where measured), the screenshots, the table behind a toggle
   bench report results/figures -o /tmp/figures.html   every figure with its rows
   bench report run.csv shot_none.png --embed -o page.html   images inside the page (one file to send)
   xdg-open out/report.html                   sort by clicking a heading; works from file://, no server

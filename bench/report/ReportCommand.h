@@ -1,7 +1,9 @@
 #pragma once
 // `bench report DIR... [-o PAGE.html] [--title T] [--embed]`: one static HTML page from the result
-// CSVs, figures and screenshots found in DIR (or given as files): sortable tables (the page's own
-// script, nothing fetched), images beside the rows they belong to, the environment the rows record
+// CSVs, figures and screenshots found in DIR (or given as files): first pictures (a chart of each row's
+// median wall time with its interval, accuracy against time where the rows hold accuracy, the
+// screenshots side by side, all inline SVG and images), then sortable tables behind a toggle (the page's
+// own script, nothing fetched), images beside the rows they belong to, the environment the rows record
 // and the commands that measure them again. The page is written by tools/report.py under Debian's
 // /usr/bin/python3 (SHADOWBENCH_PYTHON overrides it); this command finds the script, checks the
 // inputs and maps the outcome to bench's exit codes (core/Error.h): 2 for an input that does not

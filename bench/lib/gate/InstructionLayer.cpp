@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 
 #include "bench/lib/callgrind/InstructionCount.h"
 #include "bench/lib/callgrind/InstructionDiff.h"
 #include "bench/lib/gate/Fingerprint.h"
+#include "bench/lib/output/ProgressBar.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -22,8 +22,7 @@ struct Measured {
     Fingerprint fingerprint;
 };
 
-Measured measure(const CiSuite& suite, const CiConfig& c, const CiSide& side, const std::string& dir) {
-    std::cerr << "ci: instructions " << c.name << " (" << side.describe() << ", under valgrind)\n";
+Measured measureOne(const CiSuite& suite, const CiConfig& c, const CiSide& side, const std::string& dir) {
     InstructionCount::Options o;
     o.bench = side.bench;
     o.benchArgs = SuiteRunner::benchArgs(suite, c, suite.instructions.frames, suite.instructions.warmup);
@@ -34,6 +33,12 @@ Measured measure(const CiSuite& suite, const CiConfig& c, const CiSide& side, co
         throw Error("ci config '" + c.name + "': expected one technique under valgrind", ExitCode::Failure);
     return {run.techniques[0],
             Fingerprint::capture(run.rows[0], InstructionCount::valgrindVersion(), o.environment)};
+}
+
+Measured measure(const CiSuite& suite, const CiConfig& c, const CiSide& side, const std::string& dir,
+                 ProgressBar& bar) {
+    return bar.step("instructions " + c.name + " (" + side.describe() + ", under valgrind)",
+                    [&] { return measureOne(suite, c, side, dir); });
 }
 
 std::string pct(double fraction) {
@@ -103,10 +108,12 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
             "layer B needs valgrind (scripts/install-deps.sh installs it); run --layers A,C without it",
             ExitCode::Unsupported);
     std::vector<Measured> heads;
-    for (const CiConfig* c : configs) heads.push_back(measure(suite, *c, head, workDir + "/" + c->name));
+    // Every configuration on the head, the A/A pair's second run, and with a base each on the base.
+    ProgressBar bar(stderr, configs.size() * (base ? 2 : 1) + 1, 0);
+    for (const CiConfig* c : configs) heads.push_back(measure(suite, *c, head, workDir + "/" + c->name, bar));
     // The A/A pair: the first configuration again, in the same job.
     const Measured again =
-        measure(suite, *configs.front(), head, workDir + "/" + configs.front()->name + "_again");
+        measure(suite, *configs.front(), head, workDir + "/" + configs.front()->name + "_again", bar);
     const double aa = std::abs(again.counts.irPerFrame / heads.front().counts.irPerFrame - 1.0);
     const bool unstable = aa > kUnstableAbove;
     const double threshold = std::max(kFloor, aa);
@@ -123,7 +130,8 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
     std::vector<std::optional<TechniqueInstructions>> bases(configs.size());
     if (base) {
         for (size_t i = 0; i < configs.size(); ++i) {
-            const Measured m = measure(suite, *configs[i], *base, workDir + "/" + configs[i]->name + "_base");
+            const Measured m =
+                measure(suite, *configs[i], *base, workDir + "/" + configs[i]->name + "_base", bar);
             bases[i] = m.counts;
             baseFingerprint = m.fingerprint;
         }
@@ -134,6 +142,7 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
                 bases[i] = TechniqueInstructions::fromJson(baseline["configs"][configs[i]->name],
                                                            "the instruction baseline, " + configs[i]->name);
     }
+    bar.close();
     std::string noVerdict;
     if (unstable)
         noVerdict = "instrument unstable: the A/A pair disagrees by more than " + pct(kUnstableAbove);

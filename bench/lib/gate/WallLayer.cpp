@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <map>
 
 #include "bench/lib/gate/WallTimeVerdict.h"
+#include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/statistics/MultipleTesting.h"
 #include "bench/lib/statistics/WallTimeStats.h"
@@ -54,8 +54,12 @@ WallLayerResult WallLayer::run(const CiSuite& suite, const std::vector<const CiC
     const std::vector<ci::Order> order = ci::interleave(options.rounds, options.seed, options.scheme);
     std::map<std::string, Series> series;
     Series controlSeries;
+    // Each round: every configuration twice (a pair), and the control's pair when there is a base.
+    ProgressBar bar(stderr, size_t(options.rounds) * (configs.size() + (base ? 1 : 0)) * 2, 0);
     auto measure = [&](const CiConfig& c, const CiSide& side, int round, const char* role) {
-        CsvRow row = SuiteRunner::run(suite, c, side, request);
+        CsvRow row = bar.step("wall time round " + std::to_string(round + 1) + "/" +
+                                  std::to_string(options.rounds) + " " + c.name + " (" + role + ")",
+                              [&] { return SuiteRunner::run(suite, c, side, request); });
         row.insert(row.begin() + 2, {col::kCiRound, std::to_string(round)});
         row.insert(row.begin() + 3, {col::kCiRole, role});
         const double wall = wallOf(row);
@@ -63,7 +67,6 @@ WallLayerResult WallLayer::run(const CiSuite& suite, const std::vector<const CiC
         return wall;
     };
     for (int r = 0; r < options.rounds; ++r) {
-        std::cerr << "ci: wall time round " << r + 1 << "/" << options.rounds << "\n";
         const bool baseFirst = order[size_t(r)] == ci::Order::BaseFirst;
         for (const CiConfig* c : configs) {
             Series& s = series[c->name];
@@ -80,6 +83,7 @@ WallLayerResult WallLayer::run(const CiSuite& suite, const std::vector<const CiC
             controlSeries.head.push_back(measure(control, reference, r, "control_b"));
         }
     }
+    bar.close();
     if (!base) controlSeries = series[control.name];
     const ci::WallTimeStats controlStats = ci::WallTimeStats::compute(controlSeries.base, controlSeries.head);
     const double alpha = ci::bonferroniAlpha(options.familyAlpha, configs.size());

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 
 namespace sb {
 
@@ -17,6 +18,26 @@ public:
     void setCurrent(const std::string& what);
     /// One configuration finished; `label` says which, `ok` whether it succeeded.
     void finished(const std::string& label, bool ok);
+    /// Runs `work` as one configuration named `label`: shown as what runs now, then finished, ok unless
+    /// `work` throws (counted as failed, and the exception goes on). Returns what `work` returns.
+    template <class Work>
+    auto step(const std::string& label, Work&& work) {
+        setCurrent(label);
+        try {
+            if constexpr (std::is_void_v<decltype(work())>) {
+                work();
+                finished(label, true);
+            } else {
+                auto result = work();
+                finished(label, true);
+                return result;
+            }
+        } catch (...) {
+            finished(label, false);
+            close();
+            throw;
+        }
+    }
     /// Ends the in-place line (call before printing anything else).
     void close();
 
