@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/Strings.h"
+#include "core/Suggestion.h"
 #include "reference/ReferenceGL.h"
 #include "techniques/blob/BlobGL.h"
 #include "techniques/hybrid/HybridGL.h"
@@ -113,7 +114,8 @@ const TechniqueRegistry::Entry& entryOf(const std::string& name) {
         throw Error("-t auto is taken by `bench` and `bench accuracy` runs only; this command needs a "
                     "named technique (known: " +
                     known + ")");
-    throw Error("unknown technique '" + name + "' (known: " + known + ")");
+    throw Error("unknown technique '" + name + "'" +
+                Suggestion::didYouMean(name, TechniqueRegistry::names()) + " (known: " + known + ")");
 }
 
 void apply(Technique& t, const TechniqueSpec& spec) {

@@ -17,6 +17,7 @@
 #include "core/JsonReader.h"
 #include "core/Paths.h"
 #include "core/SplitMix64.h"
+#include "core/Suggestion.h"
 #include "scenes/BuiltinShadowPlanes.h"
 #include "scenes/Math.h"
 #include "scenes/MeshGeneratorTable.h"
@@ -976,9 +977,9 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
         if (!inTree.empty()) return parse(Paths::readTextFile(inTree), inTree, options);
         path = Paths::findResource("scenes/data/" + nameOrPath + ".json");
         if (path.empty()) {
-            std::string known = join(listBuiltinScenes(), ", ");
-            throw Error("unknown scene '" + nameOrPath + "': not a file, and not a built-in scene (" + known +
-                        ")");
+            const std::vector<std::string> builtin = listBuiltinScenes();
+            throw Error("unknown scene '" + nameOrPath + "'" + Suggestion::didYouMean(nameOrPath, builtin) +
+                        ": not a file, and not a built-in scene (" + join(builtin, ", ") + ")");
         }
     }
     return parse(Paths::readTextFile(path), path, options);

@@ -8,6 +8,8 @@
 #include <system_error>
 
 #include "core/Error.h"
+#include "core/Strings.h"
+#include "core/Suggestion.h"
 
 namespace sb {
 
@@ -199,10 +201,11 @@ std::string PropertySet::toString() const {
 size_t PropertySet::indexOf(const std::string& name) const {
     for (size_t i = 0; i < mDescs.size(); ++i)
         if (mDescs[i].name == name) return i;
-    std::string known;
-    for (const PropertyDesc& d : mDescs) known += (known.empty() ? "" : ", ") + d.name;
-    throw Error(mOwner + ": unknown property '" + name + "' (known: " + (known.empty() ? "none" : known) +
-                ")");
+    std::vector<std::string> names;
+    for (const PropertyDesc& d : mDescs) names.push_back(d.name);
+    const std::string known = names.empty() ? "none" : join(names, ", ");
+    throw Error(mOwner + ": unknown property '" + name + "'" + Suggestion::didYouMean(name, names) +
+                " (known: " + known + ")");
 }
 
 namespace {

@@ -180,7 +180,8 @@ TEST(PropertySetTest, FailedSetKeepsTheOldValue) {
 TEST(PropertySetTest, UnknownPropertyListsKnownOnes) {
     PropertySet p = makeSet();
     std::string e = errorOf(p, "resolutoin", "2048");
-    EXPECT_EQ(e, "demo: unknown property 'resolutoin' (known: resolution, bias, hw, mode, offset)");
+    EXPECT_EQ(e, "demo: unknown property 'resolutoin' (did you mean resolution?) (known: resolution, bias, "
+                 "hw, mode, offset)");
     EXPECT_THROW(p.getInt("nope"), Error);
     PropertySet none("none", {});
     EXPECT_EQ(errorOf(none, "x", "1"), "none: unknown property 'x' (known: none)");
