@@ -11,6 +11,8 @@
 #include "bench/figures/FiguresCommand.h"
 #include "bench/golden/GoldenCommand.h"
 #include "bench/lib/harness/MeasuredHarness.h"
+#include "bench/lib/options/BashCompletion.h"
+#include "bench/lib/options/CliCatalog.h"
 #include "bench/lib/output/StandardStreams.h"
 #include "bench/lib/rows/BuildInfo.h"
 #include "bench/lib/sweep/SweepWorker.h"
@@ -21,6 +23,7 @@
 #include "core/Error.h"
 #include "core/Injection.h"
 #include "core/Paths.h"
+#include "core/Suggestion.h"
 
 namespace sb {
 
@@ -108,9 +111,10 @@ constexpr const char* kExamples = R"(Examples:
   bench explain -t planar --scene aircraft         effects asked for and delivered, passes run
   bench report out/                                the CSVs, figures and images of out/ as one HTML page
   bench export r.csv --format gbench -o r.json     Google Benchmark JSON for dashboards
-  bench --version                                  version, the commit it was built from, build type
+  bench --version                                  version, the commit it was built from, build type)";
 
-Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 the input is wrong (option, value, file, index),
+constexpr const char* kExitCodes =
+    R"(Exit codes: 0 ok, 1 run failed (GL error, I/O), 2 the input is wrong (option, value, file, index),
 3 this machine or context lacks what is needed (an extension, a device, a loader).
 With several techniques, one that fails or refuses gets a row (status, error) and the rest still run;
 the exit code is then the worst: 1 over 2 over 3 (nothing measured: the worst error, no row).)";
@@ -127,7 +131,7 @@ std::string BenchApp::helpFooter() {
             line += *c == '\n' ? "\n" + std::string(kSummaryColumn, ' ') : std::string(1, *c);
         out += line + "\n";
     }
-    return out + "\n" + kExamples;
+    return out + "\n" + kExamples + "\n\n" + kExitCodes;
 }
 
 std::string BenchApp::versionText() {
@@ -141,6 +145,51 @@ std::string BenchApp::versionText() {
            "\nbuild " + BuildInfo::buildType() + ", " + BuildInfo::compiler() + "\ndata " + data + "\n";
 }
 
+std::vector<CliCommand> BenchApp::catalog() {
+    std::vector<CliCommand> out;
+    for (const Mode& m : kModes) {
+        if (!m.summary) continue;
+        // The entry point sees a bare argv; under the capture it returns once its CLI::App is built.
+        std::string program = *m.name ? m.name : "bench";
+        char* argv[] = {program.data(), nullptr};
+        out.push_back(CliCatalog::describe([&] { return m.main(1, argv); }, m.name, m.usage, m.summary));
+    }
+    return out;
+}
+
+ManPage::Text BenchApp::manPageText() {
+    return {std::string("shadowbench ") + BuildInfo::version(), kExamples, kExitCodes};
+}
+
+namespace {
+
+/// The hidden generators (cmake/ManAndCompletion.cmake runs them at build time): `bench --man` and
+/// `bench --completion bash`. Returns -1 when `argv` asks for neither.
+int generate(int argc, char** argv) {
+    const std::string what = argv[1];
+    if (what == "--man") {
+        if (argc > 2) throw Error("--man takes no other arguments");
+        std::cout << ManPage::render(BenchApp::catalog(), BenchApp::manPageText());
+        return 0;
+    }
+    if (what == "--completion") {
+        if (argc != 3 || std::string(argv[2]) != "bash") throw Error("usage: bench --completion bash");
+        std::cout << BashCompletion::render(BenchApp::catalog());
+        return 0;
+    }
+    return -1;
+}
+
+/// A bare first word is always meant as a subcommand: the plain run takes no positional argument.
+[[noreturn]] void unknownSubcommand(const std::string& word) {
+    std::vector<std::string> names;
+    for (const Mode& m : kModes)
+        if (*m.name && m.summary) names.emplace_back(m.name);
+    throw Error("unknown subcommand " + word + Suggestion::didYouMean(word, names) + " (see bench --help)");
+}
+
+} // namespace
+
 int BenchApp::dispatch(int argc, char** argv) {
     const std::string sub = argc > 1 ? argv[1] : "";
     if (sub == "--version" || sub == "-V") {
@@ -148,8 +197,11 @@ int BenchApp::dispatch(int argc, char** argv) {
         std::cout << versionText();
         return 0;
     }
+    if (argc > 1)
+        if (int code = generate(argc, argv); code >= 0) return code;
     for (const Mode& m : kModes)
         if (*m.name && sub == m.name) return m.main(argc - 1, argv + 1);
+    if (!sub.empty() && sub[0] != '-') unknownSubcommand(sub);
     return measureMain(argc, argv);
 }
 

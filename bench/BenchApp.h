@@ -3,6 +3,10 @@
 // point), the dispatch to them and the convention that turns errors into exit codes. `bench --help`
 // lists the modes from the same table.
 #include <string>
+#include <vector>
+
+#include "bench/lib/options/CliCatalog.h"
+#include "bench/lib/options/ManPage.h"
 
 namespace sb {
 
@@ -20,6 +24,11 @@ public:
     static std::string versionText();
     /// The end of `bench --help`: the modes, examples and exit codes.
     static std::string helpFooter();
+    /// Every listed mode with the options of its CLI::App, built without parsing (CliCatalog.h): what
+    /// the man page and the bash completion are written from.
+    static std::vector<CliCommand> catalog();
+    /// The man page's parts that only the dispatcher knows: version line, examples, exit codes.
+    static ManPage::Text manPageText();
 };
 
 } // namespace sb
