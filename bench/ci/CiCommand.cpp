@@ -211,6 +211,13 @@ int CiCommand::main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 10.0))
         ->capture_default_str();
     if (int code = parseCli(app, argc, argv, "bench ci"); code >= 0) return code;
+    // Before any configuration runs: a mistyped binary would otherwise fail minutes later, as exit 1.
+    for (const auto& [option, path] :
+         {std::pair{"--base-bench", o.baseBench}, {"--head-bench", o.headBench}}) {
+        std::error_code ec;
+        if (!path.empty() && !fs::is_regular_file(path, ec))
+            throw Error(std::string(option) + " " + path + ": no such file");
+    }
     if (o.quick) o.layers = "A";
     for (char c : o.layers + o.advisory)
         if (c != ',' && c != 'A' && c != 'B' && c != 'C')

@@ -19,6 +19,7 @@
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "core/Strings.h"
+#include "core/Suggestion.h"
 #include "registry/TechniqueRegistry.h"
 
 namespace sb {
@@ -316,11 +317,15 @@ under the cell (bench/golden/GoldenDiff.h).)");
     const std::vector<std::string> chosen = scenes.empty() ? known : scenes;
     for (const std::string& s : chosen)
         if (std::find(known.begin(), known.end(), s) == known.end())
-            throw Error("--scene " + s + ": not a built-in scene (known: " + join(known, ", ") + ")");
+            throw Error("--scene " + s + ": not a built-in scene" + Suggestion::didYouMean(s, known) +
+                        " (known: " + join(known, ", ") + ")");
     cli.matrix.techniques = techniques;
     for (const std::string& t : cli.matrix.techniques)
         if (t != AutoResolver::kName) TechniqueRegistry::create(t); // names it if unknown
     if (cli.dir.empty()) cli.dir = defaultGoldenDir();
+    std::error_code ec; // --check reads the goldens; --update may write a new folder
+    if (!cli.update && !std::filesystem::is_directory(cli.dir, ec))
+        throw Error("--dir " + cli.dir + ": no such folder of goldens");
     if (cli.update && !cli.diffDir.empty())
         throw Error("--diff-dir belongs to --check (see bench golden --help)");
     if (cli.diffDir.empty()) cli.diffDir = defaultDiffDir();

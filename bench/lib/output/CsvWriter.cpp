@@ -26,8 +26,12 @@ constexpr const char* kUtf8Bom = "\xEF\xBB\xBF";
                 ExitCode::Failure);
 }
 
+/// A path that names no file (or a folder) is wrong input (exit 2) like any other; a file that exists
+/// and still cannot be read is a failure of the run (exit 1).
 [[noreturn]] void failRead(const std::string& path, int err) {
-    throw Error("cannot read CSV '" + path + "': " + std::strerror(err), ExitCode::Failure);
+    const bool wrongPath = err == ENOENT || err == ENOTDIR || err == EISDIR;
+    throw Error("cannot read CSV '" + path + "': " + std::strerror(err),
+                wrongPath ? ExitCode::BadInput : ExitCode::Failure);
 }
 
 // Reads the whole file for merge and export. A device is refused before it is opened (/dev/zero would
