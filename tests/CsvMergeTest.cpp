@@ -182,8 +182,9 @@ TEST_F(CsvMergeTest, MissingStatusColumnCountsEveryRowAsFailed) {
 // ---------------------------------------------------------------------------------------------------
 // I/O failures: exit code 1, path and OS reason in the message, nothing left behind
 
-TEST_F(CsvMergeTest, UnreadableInputIsAFailureNamingIt) {
-    std::string e = errorOf({path("nope.csv")}, path("out.csv"), {}, ExitCode::Failure);
+// A missing input is wrong input (exit 2) like any other path that names nothing (CsvWriter.cpp).
+TEST_F(CsvMergeTest, MissingInputIsBadInputNamingIt) {
+    std::string e = errorOf({path("nope.csv")}, path("out.csv"), {}, ExitCode::BadInput);
     EXPECT_NE(e.find(path("nope.csv")), std::string::npos) << e;
     EXPECT_NE(e.find("No such file or directory"), std::string::npos) << e;
     EXPECT_TRUE(listDir().empty());
