@@ -7,7 +7,8 @@
 #   pointing at CHANGELOG.md;
 # - a maintainer with an address that is not on localhost; the project has no mailing list, so it is
 #   the address its commits are made with;
-# - Depends from dpkg-shlibdeps plus python3 (tools/*.py have a python3 #! line); the plot and report
+# - Depends from dpkg-shlibdeps plus python3 (tools/*.py have a python3 #! line) and the GL dispatch
+#   libraries libepoxy loads; the plot and report
 #   libraries and the Mesa drivers as Recommends (a real GPU's driver replaces Mesa; `bench figures`
 #   and `bench report` say what to install when matplotlib or pandas is missing);
 # - manual pages compressed with gzip -9n, whoever installs them (cmake/debian/GzipManPages.cmake).
@@ -28,6 +29,8 @@ file(WRITE ${SB_PACKAGING_DIR}/changelog
      " -- ${SB_MAINTAINER}  ${SB_RELEASED_RFC2822}\n")
 # -n: no name or time stamp in the gzip header, so the compressed bytes depend on the text alone.
 execute_process(COMMAND gzip -9nf ${SB_PACKAGING_DIR}/changelog COMMAND_ERROR_IS_FATAL ANY)
+# The manual pages of the two comparison programs (bench's own is generated with its help text).
+install(FILES cmake/debian/handloop.1 cmake/debian/handshadow.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${SB_PACKAGING_DIR}/changelog.gz cmake/debian/copyright DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 set(CPACK_PACKAGE_NAME shadowbench)
@@ -50,7 +53,8 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3")
+# libepoxy opens the GL and EGL dispatch libraries at run time, so dpkg-shlibdeps does not see them.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3, libegl1, libgl1")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
     "python3-matplotlib, python3-pandas, libegl-mesa0, libgl1-mesa-dri, mesa-vulkan-drivers")
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)

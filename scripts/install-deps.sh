@@ -12,13 +12,15 @@
 set -euo pipefail
 
 BENCH=(
-  # toolchain (lld: the linker of every build, CMakeLists.txt says why; git: the build stamp's commit)
-  build-essential cmake ninja-build pkg-config git lld
+  # toolchain (git: the build stamp's commit; lld, the faster linker, is in the test group: bench alone
+  # links once, and CMakeLists.txt falls back to GNU ld without it)
+  build-essential cmake ninja-build pkg-config git
   # GL platform: EGL + Mesa llvmpipe, OSMesa fallback, GLFW window, libepoxy loader
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev libglfw3-dev libepoxy-dev
   # Vulkan: the loader and headers, lavapipe (Mesa's CPU device), glslang's library (run-time GLSL to
-  # SPIR-V) and the SPIR-V tools it links
-  libvulkan-dev mesa-vulkan-drivers glslang-dev spirv-tools
+  # SPIR-V) and the SPIR-V tools it links; glslang-tools because Debian's glslang CMake package refuses
+  # to load without its glslangValidator
+  libvulkan-dev mesa-vulkan-drivers glslang-dev spirv-tools glslang-tools
   # maths, JSON, CLI, images, model files, ray tracing reference
   libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev libassimp-dev libembree-dev
 )
@@ -27,6 +29,8 @@ PLOT=(
   python3 python3-matplotlib python3-pandas
 )
 TEST=(
+  # lld: the linker of every build once present (CMakeLists.txt says why)
+  lld
   # the Khronos validation layer the Vulkan tests run under, vulkaninfo
   vulkan-validationlayers vulkan-tools
   # tests (GNU parallel: the sharded-sweep test runs shards the way the README documents)
@@ -35,9 +39,9 @@ TEST=(
   chromium
   # the viewer's test under Xvfb: synthetic key taps (xdotool) and window screenshots (xwd)
   xdotool x11-apps
-  # real clients and offline tools the tests drive: glslang compiles every shader permutation, apitrace
-  # traces and replays a run
-  glslang-tools apitrace
+  # apitrace traces and replays a run (glslang-tools, which compiles every shader permutation, is in
+  # the bench group)
+  apitrace
   # instructions per measured frame (bench/lib/callgrind/InstructionCount): callgrind and its client-request header
   valgrind
   # real model files the tests load (glmark2's models, assimp's test models)
