@@ -127,6 +127,24 @@ TEST_F(InstallCliTest, FiguresAndReportRunFromThePrefix) {
         << report.output;
 }
 
+TEST_F(InstallCliTest, FiguresWithoutThePlotLibrariesSaysWhatToInstallBeforeMeasuring) {
+    // The plots are optional at run time (scripts/install-deps.sh's plot group): without an interpreter,
+    // or with one that cannot import matplotlib (python3 -S: no site packages), bench figures stops
+    // with exit 3 and the packages to install, before any figure is measured.
+    const fs::path wrapper = fs::path(mDir) / "python3-no-site";
+    test::writeFile(wrapper.string(), "#!/bin/sh\nexec /usr/bin/python3 -S \"$@\"\n");
+    fs::permissions(wrapper, fs::perms::owner_all);
+    for (const fs::path& interpreter : {fs::path(mDir) / "no-such-python3", wrapper}) {
+        const auto run = test::runCommand(
+            "cd " + shellQuoted(mDir) + " && SHADOWBENCH_PYTHON=" + shellQuoted(interpreter) + " " +
+            shellQuoted(SB_BENCH_BINARY) + " figures --reduced --no-progress --out figs");
+        EXPECT_EQ(run.exitCode, 3) << run.output;
+        EXPECT_NE(run.output.find("apt-get install python3-matplotlib python3-pandas"), std::string::npos)
+            << run.output;
+        EXPECT_FALSE(fs::exists(fs::path(mDir) / "figs")) << "measured before checking:\n" << run.output;
+    }
+}
+
 TEST_F(InstallCliTest, ReportsTheCommitItWasBuiltFromAfterTheTreeChanges) {
     const fs::path source = SB_SOURCE_DIR;
     if (!fs::exists(source / ".git"))
