@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Quick start 2: install, build, run the whole test suite through ctest (unit, GL on Mesa llvmpipe,
-# CLI, valgrind), then the perf gate against the committed baseline (scripts/gate.sh), the sanitizer
-# build's unit and CLI tests (scripts/sanitize.sh) and every fuzz target for 60 s (scripts/fuzz.sh).
+# Quick start 2: install every package group, build everything with the test suite configured
+# (scripts/build.sh), run the whole test suite through ctest (unit, GL on Mesa llvmpipe, CLI,
+# valgrind), then the perf gate against the committed baseline (scripts/gate.sh), the sanitizer build's
+# unit and CLI tests (scripts/sanitize.sh) and every fuzz target for 60 s (scripts/fuzz.sh).
 # --quick stops after ctest. Other arguments go to ctest, e.g.
 # `bash scripts/test.sh --quick -L unit`.
 # Usage: bash scripts/test.sh [--quick] [ctest arguments]

@@ -1,8 +1,9 @@
-// Installing and packaging, as a user of a C++/CMake tool would: `cmake --install` into a temporary
-// prefix gives a bench that finds its own shaders, scenes and tools there (its --version names the
-// folder, so a silent fall-back to the source tree would show), CPack builds a .deb of the same files,
-// and the commit a binary reports is the one it was built from, whatever happens to the tree after the
-// build. About 20 s in all (the install copies ~3 MB; cpack runs dpkg-shlibdeps over three binaries).
+// Installing, as a user of a C++/CMake tool would: `cmake --install` into a temporary prefix gives a
+// bench that finds its own shaders, scenes, tools and figure catalogue there (its --version names the
+// folder, so a silent fall-back to the source tree would show) and whose subcommands that read them
+// run from the prefix alone; the commit a binary reports is the one it was built from, whatever
+// happens to the tree after the build. The .deb is tests/PackageCliTest.cpp's. About 20 s in all (the
+// install copies ~3 MB; the smallest reduced figure measures 12 rows at 128x128 and plots them).
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -64,8 +65,9 @@ TEST_F(InstallCliTest, InstalledBenchFindsItsShadersScenesAndTools) {
          {prefix / "bin" / "bench", prefix / "bin" / "handloop", prefix / "bin" / "handshadow",
           share / "shaders" / "common" / "lighting.glsl", share / "scenes" / "data" / "aircraft.json",
           share / "tools" / "plot.py", share / "results" / "ci" / "suite.json",
-          share / "results" / "goldens" / "bounds.json", share / "sweeps",
-          prefix / "share" / "doc" / "shadowbench" / "LICENSE"})
+          share / "results" / "goldens" / "bounds.json", share / "results" / "figures" / "figures.json",
+          share / "sweeps", share / "tools" / "report.py",
+          prefix / "share" / "doc" / "shadowbench" / "copyright"})
         EXPECT_TRUE(fs::exists(f)) << f << " not installed";
 
     const fs::path bench = prefix / "bin" / "bench";
@@ -85,27 +87,62 @@ TEST_F(InstallCliTest, InstalledBenchFindsItsShadersScenesAndTools) {
     EXPECT_EQ(rows["rows"][0]["scene"], "sphere_plane");
 }
 
-TEST_F(InstallCliTest, CPackBuildsADebOfTheSameFilesWithDependencies) {
-    const auto pack =
-        test::runCommand("cd " + shellQuoted(mDir) + " && cpack -G DEB --config " +
-                         shellQuoted(kBuildDir / "CPackConfig.cmake") + " -B " + shellQuoted(mDir));
-    ASSERT_EQ(pack.exitCode, 0) << pack.output;
-    fs::path deb;
-    for (const auto& e : fs::directory_iterator(mDir))
-        if (e.path().extension() == ".deb") deb = e.path();
-    ASSERT_FALSE(deb.empty()) << pack.output;
-    const auto contents = test::runCommand("dpkg-deb -c " + shellQuoted(deb));
-    ASSERT_EQ(contents.exitCode, 0) << contents.output;
-    for (const char* f :
-         {"./usr/bin/bench", "./usr/share/shadowbench/shaders/common/lighting.glsl",
-          "./usr/share/shadowbench/scenes/data/aircraft.json", "./usr/share/shadowbench/tools/plot.py"})
-        EXPECT_NE(contents.output.find(f), std::string::npos) << f << " not in the package:\n"
-                                                              << contents.output;
-    // dpkg-shlibdeps found the shared libraries the binaries link: Embree's among them.
-    const auto depends = test::runCommand("dpkg-deb -f " + shellQuoted(deb) + " Depends");
-    EXPECT_NE(depends.output.find("libembree"), std::string::npos) << depends.output;
-    const auto name = test::runCommand("dpkg-deb -f " + shellQuoted(deb) + " Package Version");
-    EXPECT_NE(name.output.find("Package: shadowbench"), std::string::npos) << name.output;
+TEST_F(InstallCliTest, FiguresAndReportRunFromThePrefix) {
+    const fs::path prefix = fs::path(mDir) / "prefix";
+    const auto install =
+        test::runCommand("cmake --install " + shellQuoted(kBuildDir) + " --prefix " + shellQuoted(prefix));
+    ASSERT_EQ(install.exitCode, 0) << install.output;
+    const std::string bench = shellQuoted(prefix / "bin" / "bench");
+    const std::string inDir = "cd " + shellQuoted(mDir) + " && ";
+
+    // The installed catalogue is the source tree's: --list names every figure it declares.
+    const auto catalog = nlohmann::json::parse(
+        test::readFile((fs::path(SB_SOURCE_DIR) / "results" / "figures" / "figures.json").string()), nullptr,
+        true, /*ignore_comments=*/true);
+    ASSERT_FALSE(catalog.empty());
+    const auto list = test::runCommand(inDir + bench + " figures --list");
+    ASSERT_EQ(list.exitCode, 0) << list.output;
+    for (const auto& f : catalog)
+        EXPECT_NE(list.output.find(f["name"].get<std::string>() + "  "), std::string::npos)
+            << f["name"] << " not listed:\n"
+            << list.output;
+    EXPECT_EQ(test::runCommand(inDir + bench + " figures --help").exitCode, 0);
+
+    // The smallest real run: the first figure's reduced sweep measured and plotted by the installed
+    // tools/plot.py.
+    const std::string first = catalog[0]["name"];
+    const auto figure =
+        test::runCommand(inDir + bench + " figures --reduced --no-progress --out figs --only " + first);
+    ASSERT_EQ(figure.exitCode, 0) << figure.output;
+    const fs::path dir = fs::path(mDir) / "figs" / first;
+    for (const char* f : {"data.csv", "figure.png", "figure.svg", "summary.md"})
+        EXPECT_TRUE(fs::exists(dir / f)) << f << " not written:\n" << figure.output;
+
+    // The report page of that folder, written by the installed tools/report.py.
+    const auto report = test::runCommand(inDir + bench + " report figs -o page.html");
+    ASSERT_EQ(report.exitCode, 0) << report.output;
+    // The figure's rows are a table of the page, captioned with their file.
+    const std::string caption = "<caption>figs/" + first + "/data.csv</caption>";
+    EXPECT_NE(test::readFile((fs::path(mDir) / "page.html").string()).find(caption), std::string::npos)
+        << report.output;
+}
+
+TEST_F(InstallCliTest, FiguresWithoutThePlotLibrariesSaysWhatToInstallBeforeMeasuring) {
+    // The plots are optional at run time (scripts/install-deps.sh's plot group): without an interpreter,
+    // or with one that cannot import matplotlib (python3 -S: no site packages), bench figures stops
+    // with exit 3 and the packages to install, before any figure is measured.
+    const fs::path wrapper = fs::path(mDir) / "python3-no-site";
+    test::writeFile(wrapper.string(), "#!/bin/sh\nexec /usr/bin/python3 -S \"$@\"\n");
+    fs::permissions(wrapper, fs::perms::owner_all);
+    for (const fs::path& interpreter : {fs::path(mDir) / "no-such-python3", wrapper}) {
+        const auto run = test::runCommand(
+            "cd " + shellQuoted(mDir) + " && SHADOWBENCH_PYTHON=" + shellQuoted(interpreter) + " " +
+            shellQuoted(SB_BENCH_BINARY) + " figures --reduced --no-progress --out figs");
+        EXPECT_EQ(run.exitCode, 3) << run.output;
+        EXPECT_NE(run.output.find("apt-get install python3-matplotlib python3-pandas"), std::string::npos)
+            << run.output;
+        EXPECT_FALSE(fs::exists(fs::path(mDir) / "figs")) << "measured before checking:\n" << run.output;
+    }
 }
 
 TEST_F(InstallCliTest, ReportsTheCommitItWasBuiltFromAfterTheTreeChanges) {

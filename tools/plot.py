@@ -31,12 +31,19 @@ import re
 import sys
 import textwrap
 
-import matplotlib
+try:
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+    import numpy as np  # noqa: E402
+    import pandas as pd  # noqa: E402
+except ImportError as missing:
+    # The plots are optional at run time (scripts/install-deps.sh's plot group): say what to install.
+    sys.exit(
+        f"tools/plot.py: {missing}: the plots need matplotlib and pandas "
+        "(apt-get install python3-matplotlib python3-pandas, or bash scripts/install-deps.sh plot)"
+    )
 
 # Reproducible output: matplotlib names SVG clip paths and glyphs by hashes salted with a random value
 # unless this is set, and stamps the date into the SVG metadata unless save() clears it.

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iostream>
 
+#include <unistd.h>
+
 #include "bench/figures/FigureCatalog.h"
 #include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "bench/lib/options/CliParse.h"
@@ -31,6 +33,28 @@ struct FiguresCli {
 std::string python() {
     const char* p = std::getenv("SHADOWBENCH_PYTHON");
     return p && *p ? p : "/usr/bin/python3";
+}
+
+/// Stops before minutes of measuring when the plots cannot be drawn: no interpreter, or one without
+/// matplotlib and pandas (optional at run time: scripts/install-deps.sh's plot group installs them).
+void requirePlotting() {
+    const std::string interpreter = python();
+    const std::string install =
+        "apt-get install python3-matplotlib python3-pandas, or set SHADOWBENCH_PYTHON";
+    if (access(interpreter.c_str(), X_OK) != 0)
+        throw Error("bench figures: " + interpreter +
+                        " is missing: tools/plot.py draws the figures with python3, "
+                        "matplotlib and pandas (" +
+                        install + ")",
+                    ExitCode::Unsupported);
+    const ChildExit probe =
+        ChildProcess::run({interpreter, "-c", "import matplotlib, pandas"}, {}, [](const std::string&) {});
+    if (!probe.ok())
+        throw Error("bench figures: " + interpreter +
+                        " cannot import matplotlib and pandas, which tools/plot.py "
+                        "draws the figures with (" +
+                        install + "): " + probe.stderrTail,
+                    ExitCode::Unsupported);
 }
 
 bool selected(const FiguresCli& cli, const std::string& name) {
@@ -125,6 +149,7 @@ int FiguresCommand::main(int argc, char** argv) {
     const fs::path out = !cli.out.empty() ? fs::path(cli.out)
                          : cli.reduced    ? fs::path("figures-reduced")
                                           : fs::path(catalog).parent_path();
+    requirePlotting();
     bool failed = false;
     size_t done = 0;
     for (const FigureDeclaration& f : figures) {
