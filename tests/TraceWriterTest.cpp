@@ -129,12 +129,31 @@ TEST(TraceWriter, EachRunIsAProcessWithItsNamesBeforeItsFrames) {
             framesSeen = true;
     }
     EXPECT_EQ(lastPid, 2);
+    for (const json& e : t["traceEvents"])
+        if (e["ph"] == "M" && e["name"] == "process_name") {
+            EXPECT_EQ(e["args"]["name"], e["pid"] == 1 ? "none pcf=3" : "shadowmap pcf=3")
+                << "one round: no round";
+        }
     EXPECT_EQ(t["metadata"]["runs"][1]["technique"], "shadowmap");
     // The origin is the earliest frame of the whole trace: the second process starts 2000 us later.
     for (const json& e : events(t, "X", 1))
         if (e["pid"] == 2 && e["name"] == "frame 0") {
             EXPECT_NEAR(e["ts"].get<double>(), 2000.0, kUs);
         }
+}
+
+TEST(TraceWriter, RoundsOfOneTechniqueAreNamedApart) {
+    TraceWriter w;
+    for (const char* round : {"1", "2"}) {
+        CsvRow r = row("none", "untrusted", "r");
+        r.emplace_back("repeat", round);
+        w.addRun(run("none", {frame(1.0, 1.0, {})}), r);
+    }
+    std::vector<std::string> names;
+    const json t = w.toJson();
+    for (const json& e : t["traceEvents"])
+        if (e["ph"] == "M" && e["name"] == "process_name") names.push_back(e["args"]["name"]);
+    EXPECT_EQ(names, (std::vector<std::string>{"none pcf=3 (round 1)", "none pcf=3 (round 2)"}));
 }
 
 TEST(TraceWriter, GpuSpansOnlyUnderATrustedTimer) {

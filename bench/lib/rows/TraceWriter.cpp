@@ -53,8 +53,11 @@ json counterEvent(int pid, const char* name, int64_t tsNs, json args) {
     return {{"ph", "C"}, {"pid", pid}, {"name", name}, {"ts", toUs(tsNs)}, {"args", std::move(args)}};
 }
 
-void addNames(json& events, int pid, const RunResult& r) {
-    const std::string name = r.properties.empty() ? r.technique : r.technique + " " + r.properties;
+/// `rounds`: the run measured its techniques in several rounds (--repeat), so the round tells apart the
+/// processes of one technique.
+void addNames(json& events, int pid, const RunResult& r, const CsvRow& row, bool rounds) {
+    std::string name = r.properties.empty() ? r.technique : r.technique + " " + r.properties;
+    if (rounds) name += " (round " + column(row, "repeat") + ")";
     events.push_back(metadataEvent(pid, 0, "process_name", {{"name", name}}));
     events.push_back(metadataEvent(pid, 0, "process_sort_index", {{"sort_index", pid}}));
     events.push_back(metadataEvent(pid, kCpuTrack, "thread_name", {{"name", "CPU submit"}}));
@@ -162,11 +165,15 @@ json TraceWriter::toJson() const {
     for (const Run& run : mRuns)
         for (const FrameSample& s : run.result.samples) originMs = std::min(originMs, s.startMs);
     if (!std::isfinite(originMs)) originMs = 0.0;
+    const bool rounds = std::any_of(mRuns.begin(), mRuns.end(), [](const Run& run) {
+        const std::string round = column(run.row, "repeat");
+        return !round.empty() && round != "1";
+    });
     json events = json::array();
     json runs = json::array();
     for (size_t i = 0; i < mRuns.size(); ++i) {
         const int pid = int(i) + 1;
-        addNames(events, pid, mRuns[i].result);
+        addNames(events, pid, mRuns[i].result, mRuns[i].row, rounds);
         addRunEvents(events, pid, mRuns[i].result, mRuns[i].row, originMs);
         runs.push_back(runMetadata(pid, mRuns[i].row));
     }

@@ -7,7 +7,8 @@
 // tracing adds nothing to the measured frames. Layout:
 //   - one process per measured run (pid 1, 2, ... in the order the runs were added; a technique measured
 //     in several rounds is one process per round), named "<technique> <properties>" (the technique alone
-//     where it has no properties) by "M" events;
+//     where it has no properties; " (round N)" added where the row's `repeat` shows several rounds) by
+//     "M" events;
 //   - thread 1, "CPU submit": a complete event ("X") per measured frame, its duration the frame's CPU
 //     submit time, and inside it one "X" per pass the frame began (CpuPassSpan: begin to the next pass's
 //     begin, the last to the end of submission), at its measured offset from the frame's start;
