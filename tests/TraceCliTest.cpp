@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "bench/lib/output/ResultColumns.h"
 
 using namespace sb;
 using json = nlohmann::json;
@@ -79,16 +81,15 @@ std::map<std::string, std::vector<double>> passesPerFrame(const std::vector<json
     return perPass;
 }
 
-/// The row's per-pass columns `<prefix><pass>_ms_median` with a value (cpu_submit is the frame's).
-std::map<std::string, double> passColumns(const Row& row, const std::string& prefix) {
+/// The row's columns of `family` (col::kCpuPassMsMedian, col::kGpuPassMsMedian) that have a value, by
+/// pass. ResultColumns::find takes fixed names first, so cpu_submit_ms_median is not a pass.
+std::map<std::string, double> passColumns(const Row& row, std::string_view family) {
+    const size_t lt = family.find('<'), tail = family.size() - family.find('>') - 1;
     std::map<std::string, double> out;
-    const std::string suffix = "_ms_median";
     for (const auto& [name, value] : row) {
-        if (name.rfind(prefix, 0) != 0 || name.size() <= prefix.size() + suffix.size() || value.empty())
-            continue;
-        if (name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-        const std::string pass = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
-        if (pass != "submit") out[pass] = std::stod(value);
+        const ColumnInfo* info = ResultColumns::find(name);
+        if (!info || info->name != family || value.empty()) continue;
+        out[name.substr(lt, name.size() - lt - tail)] = std::stod(value);
     }
     return out;
 }
@@ -108,14 +109,14 @@ void expectPassMediansMatch(const std::map<std::string, std::vector<double>>& pe
 void checkGpuTrack(const json& trace, int pid, const Row& row) {
     const std::vector<json> spans = eventsOf(trace, pid, kGpuTrack, "X");
     const json& meta = trace["metadata"]["runs"][size_t(pid - 1)];
-    EXPECT_EQ(meta["timer_verdict"], row.at("timer_verdict"));
-    if (row.at("timer_verdict") != "trusted") {
-        EXPECT_TRUE(spans.empty()) << "GPU spans under a " << row.at("timer_verdict") << " timer";
+    EXPECT_EQ(meta[col::kTimerVerdict], row.at(col::kTimerVerdict));
+    if (row.at(col::kTimerVerdict) != "trusted") {
+        EXPECT_TRUE(spans.empty()) << "GPU spans under a " << row.at(col::kTimerVerdict) << " timer";
         const std::vector<json> notes = eventsOf(trace, pid, kGpuTrack, "i");
         ASSERT_EQ(notes.size(), 1u);
-        EXPECT_NE(notes[0]["name"].get<std::string>().find(row.at("timer_verdict")), std::string::npos);
-        EXPECT_EQ(notes[0]["args"]["timer_reason"], row.at("timer_reason"));
-        EXPECT_EQ(meta["timer_reason"], row.at("timer_reason"));
+        EXPECT_NE(notes[0]["name"].get<std::string>().find(row.at(col::kTimerVerdict)), std::string::npos);
+        EXPECT_EQ(notes[0]["args"][col::kTimerReason], row.at(col::kTimerReason));
+        EXPECT_EQ(meta[col::kTimerReason], row.at(col::kTimerReason));
         return;
     }
     std::vector<json> frames, passes;
@@ -123,19 +124,22 @@ void checkGpuTrack(const json& trace, int pid, const Row& row) {
     // Frames whose queries never came back have no GPU span; the row's medians are of the others.
     ASSERT_GE(frames.size(), 1u);
     EXPECT_LE(frames.size(), size_t(kFrames));
-    expectPassMediansMatch(passesPerFrame(frames, passes), passColumns(row, "gpu_"), frames.size(), "GPU");
+    expectPassMediansMatch(passesPerFrame(frames, passes), passColumns(row, col::kGpuPassMsMedian),
+                           frames.size(), "GPU");
 }
 
 /// Everything one process of the trace must show, against the row of the same run.
 void checkRun(const json& trace, int pid, const Row& row) {
-    const std::string what = row.at("technique") + " (pid " + std::to_string(pid) + ")";
+    const std::string what = row.at(col::kTechnique) + " (pid " + std::to_string(pid) + ")";
     const std::string process = metadataName(trace, pid, 0, "process_name");
-    EXPECT_TRUE(process == row.at("technique") || process == row.at("technique") + " " + row.at("properties"))
+    EXPECT_TRUE(process == row.at(col::kTechnique) ||
+                process == row.at(col::kTechnique) + " " + row.at(col::kProperties))
         << what << ": " << process;
     EXPECT_EQ(metadataName(trace, pid, kCpuTrack, "thread_name"), "CPU submit") << what;
     EXPECT_EQ(metadataName(trace, pid, kGpuTrack, "thread_name"), "GPU") << what;
     const json& meta = trace["metadata"]["runs"][size_t(pid - 1)];
-    for (const char* c : {"technique", "properties", "scene", "api", "renderer", "device", "git_commit"})
+    for (const char* c : {col::kTechnique, col::kProperties, col::kScene, col::kApi, col::kRenderer,
+                          col::kDevice, col::kGitCommit})
         EXPECT_EQ(meta[c], row.at(c)) << what << " " << c;
 
     std::vector<json> frames, passes;
@@ -144,9 +148,9 @@ void checkRun(const json& trace, int pid, const Row& row) {
     ASSERT_EQ(frames.size(), size_t(kFrames)) << what;
     std::vector<double> frameMs;
     for (const json& f : frames) frameMs.push_back(f["dur"].get<double>() / 1000.0);
-    EXPECT_NEAR(median(frameMs), std::stod(row.at("cpu_submit_ms_median")), kMedianToleranceMs) << what;
-    expectPassMediansMatch(passesPerFrame(frames, passes), passColumns(row, "cpu_"), frames.size(),
-                           what + " CPU");
+    EXPECT_NEAR(median(frameMs), std::stod(row.at(col::kCpuSubmitMsMedian)), kMedianToleranceMs) << what;
+    expectPassMediansMatch(passesPerFrame(frames, passes), passColumns(row, col::kCpuPassMsMedian),
+                           frames.size(), what + " CPU");
 
     // One "frame ms" counter per frame, its cpu_submit the frame span's duration.
     std::vector<json> counters;
@@ -177,8 +181,8 @@ TEST(TraceCli, GlTwoTechniquesAreTwoProcessesMatchingTheirRows) {
     std::vector<Row> rows;
     const json trace = runAndRead(" -t none -t shadowmap", test::freshTestDir("trace"), rows);
     ASSERT_EQ(rows.size(), 2u);
-    EXPECT_EQ(rows[0].at("technique"), "none");
-    EXPECT_EQ(rows[1].at("technique"), "shadowmap");
+    EXPECT_EQ(rows[0].at(col::kTechnique), "none");
+    EXPECT_EQ(rows[1].at(col::kTechnique), "shadowmap");
     for (size_t i = 0; i < rows.size(); ++i) checkRun(trace, int(i) + 1, rows[i]);
 }
 
@@ -186,7 +190,7 @@ TEST(TraceCli, VulkanRunMatchesItsRow) {
     std::vector<Row> rows;
     const json trace = runAndRead(" --api vulkan -t shadowmap", test::freshTestDir("trace"), rows);
     ASSERT_EQ(rows.size(), 1u);
-    EXPECT_EQ(rows[0].at("api"), "vulkan");
+    EXPECT_EQ(rows[0].at(col::kApi), "vulkan");
     checkRun(trace, 1, rows[0]);
 }
 

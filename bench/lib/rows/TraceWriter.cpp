@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "bench/lib/output/AtomicFile.h"
+#include "bench/lib/output/ResultColumns.h"
 
 namespace sb {
 
@@ -17,8 +18,9 @@ constexpr int kCpuTrack = 1, kGpuTrack = 2;
 constexpr const char* kTrusted = "trusted";
 /// The row's columns copied into each process's metadata, under the row's own names.
 constexpr const char* kIdentityColumns[] = {
-    "technique", "properties", "scene",  "api",        "api_version",   "renderer",    "gl_vendor",
-    "backend",   "device",     "submit", "git_commit", "timer_verdict", "timer_reason"};
+    col::kTechnique, col::kProperties,   col::kScene,      col::kApi,    col::kApiVersion,
+    col::kRenderer,  col::kGlVendor,     col::kBackend,    col::kDevice, col::kSubmit,
+    col::kGitCommit, col::kTimerVerdict, col::kTimerReason};
 
 std::string column(const CsvRow& row, const std::string& name) {
     for (const auto& [key, value] : row)
@@ -57,7 +59,7 @@ json counterEvent(int pid, const char* name, int64_t tsNs, json args) {
 /// processes of one technique.
 void addNames(json& events, int pid, const RunResult& r, const CsvRow& row, bool rounds) {
     std::string name = r.properties.empty() ? r.technique : r.technique + " " + r.properties;
-    if (rounds) name += " (round " + column(row, "repeat") + ")";
+    if (rounds) name += " (round " + column(row, col::kRepeat) + ")";
     events.push_back(metadataEvent(pid, 0, "process_name", {{"name", name}}));
     events.push_back(metadataEvent(pid, 0, "process_sort_index", {{"sort_index", pid}}));
     events.push_back(metadataEvent(pid, kCpuTrack, "thread_name", {{"name", "CPU submit"}}));
@@ -115,8 +117,8 @@ json censusCounters(const FrameLoads& loads) {
 
 /// The whole run's events after its names: frames (CPU, then GPU where trusted) and counters.
 void addRunEvents(json& events, int pid, const RunResult& r, const CsvRow& row, double originMs) {
-    const bool trusted = column(row, "timer_verdict") == kTrusted;
-    const bool moving = column(row, "path_time") == "moving";
+    const bool trusted = column(row, col::kTimerVerdict) == kTrusted;
+    const bool moving = column(row, col::kPathTime) == "moving";
     int64_t lastNs = 0;
     for (size_t i = 0; i < r.samples.size(); ++i) {
         const FrameSample& s = r.samples[i];
@@ -133,9 +135,9 @@ void addRunEvents(json& events, int pid, const RunResult& r, const CsvRow& row, 
                           {"s", "t"},
                           {"pid", pid},
                           {"tid", kGpuTrack},
-                          {"name", "no GPU spans: timer " + column(row, "timer_verdict")},
+                          {"name", "no GPU spans: timer " + column(row, col::kTimerVerdict)},
                           {"ts", toUs(firstNs)},
-                          {"args", {{"timer_reason", column(row, "timer_reason")}}}});
+                          {"args", {{col::kTimerReason, column(row, col::kTimerReason)}}}});
     json counters = json::object();
     for (const auto& [name, value] : r.counters) counters[name] = value;
     if (!counters.empty())
@@ -146,10 +148,10 @@ void addRunEvents(json& events, int pid, const RunResult& r, const CsvRow& row, 
 json runMetadata(int pid, const CsvRow& row) {
     json m{{"pid", pid}};
     for (const char* name : kIdentityColumns) m[name] = column(row, name);
-    const bool trusted = column(row, "timer_verdict") == kTrusted;
+    const bool trusted = column(row, col::kTimerVerdict) == kTrusted;
     m["gpu_spans"] =
         trusted ? "written"
-                : "omitted: the GPU timer is " + column(row, "timer_verdict") + " (timer_reason says why)";
+                : "omitted: the GPU timer is " + column(row, col::kTimerVerdict) + " (timer_reason says why)";
     return m;
 }
 
@@ -166,7 +168,7 @@ json TraceWriter::toJson() const {
         for (const FrameSample& s : run.result.samples) originMs = std::min(originMs, s.startMs);
     if (!std::isfinite(originMs)) originMs = 0.0;
     const bool rounds = std::any_of(mRuns.begin(), mRuns.end(), [](const Run& run) {
-        const std::string round = column(run.row, "repeat");
+        const std::string round = column(run.row, col::kRepeat);
         return !round.empty() && round != "1";
     });
     json events = json::array();
@@ -178,7 +180,7 @@ json TraceWriter::toJson() const {
         runs.push_back(runMetadata(pid, mRuns[i].row));
     }
     json metadata{{"tool", "shadowbench"}, {"runs", std::move(runs)}};
-    if (!mRuns.empty()) metadata["git_commit"] = column(mRuns.front().row, "git_commit");
+    if (!mRuns.empty()) metadata[col::kGitCommit] = column(mRuns.front().row, col::kGitCommit);
     return {{"traceEvents", std::move(events)}, {"displayTimeUnit", "ms"}, {"metadata", std::move(metadata)}};
 }
 
