@@ -20,6 +20,7 @@
 #include "bench/lib/rows/Environment.h"
 #include "bench/lib/rows/ResultRow.h"
 #include "bench/lib/rows/SamplesFile.h"
+#include "bench/lib/rows/TraceWriter.h"
 #include "bench/lib/select/AutoResolver.h"
 #include "bench/lib/viewer/Viewer.h"
 #include "bench/run/ConsoleReport.h"
@@ -60,9 +61,18 @@ void writeImages(const RunConfig& config, MeasuredHarness& harness, const std::s
 void checkOutputs(const RunConfig& config) {
     if (!config.csvPath.empty()) CsvWriter::checkWritable(config.csvPath);
     if (!config.samplesPath.empty()) CsvWriter::checkWritable(config.samplesPath);
+    if (!config.tracePath.empty()) TraceWriter::checkWritable(config.tracePath);
     if (!config.screenshotPath.empty()) ImageWriter::checkWritable(config.screenshotPath, "--screenshot");
     if (!config.visibilityPath.empty()) ImageWriter::checkWritable(config.visibilityPath, "--visibility");
     if (config.format != RowFormat::Console) StandardStreams::requireStdout("--format");
+}
+
+/// --trace: every measured run's frames, written once after the last (nothing during the frames).
+void writeTrace(const RunConfig& config, const std::vector<Measurement>& results) {
+    if (config.tracePath.empty()) return;
+    TraceWriter trace;
+    for (const Measurement& m : results) trace.addRun(m.run, m.row);
+    trace.write(config.tracePath);
 }
 
 /// bench accuracy --images: the pictures of the frame `evaluator` has just scored, as configuration
@@ -411,6 +421,7 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     // single technique always did (and an existing CSV is left as it was).
     if (results.empty() && !refusals.empty()) throw Error(worst(refusals).what, worst(refusals).code);
     finishImages(images.get(), config, log);
+    writeTrace(config, results);
     report(config, harness, results, refusals);
     // With validation (--vk-validation) a run the layer found fault with did not render what the API
     // promises: it failed, whatever its numbers.

@@ -6,7 +6,8 @@ namespace sb {
 
 void PassTimer::begin(const char* pass) {
     if (mRouter) pass = mRouter->enter(pass);
-    if (mOpen) DebugOutput::check(); // errors of the pass that just ended are reported with its name
+    if (mClock) mClock->passBegins(pass); // first: the pass's CPU span includes the bookkeeping below
+    if (mOpen) DebugOutput::check();      // errors of the pass that just ended are reported with its name
     DebugOutput::setCurrentPass(mTechnique.empty() ? std::string(pass) : mTechnique + "/" + pass);
     if (mRing) mRing->beginPass(pass);
     if (mObserver) mObserver->passBegins(pass);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gl/TimerQueryRing.h"
+#include "techniques/PassClock.h"
 #include "techniques/PassObserver.h"
 #include "techniques/PassRouter.h"
 
@@ -23,6 +24,8 @@ public:
     /// part runs (techniques/PassRouter.h).
     void setRouter(PassRouter* router) { mRouter = router; }
     PassRouter* router() const { return mRouter; }
+    /// nullptr: none. The harness sets one to take each pass's CPU begin (techniques/PassClock.h).
+    void setClock(PassClock* clock) { mClock = clock; }
     /// Ends the previous pass (error check) and starts `pass`. `pass` must be a string literal or
     /// otherwise live for the process: the query ring keeps it by pointer and reads it back frames
     /// later, possibly after the technique that named it is gone.
@@ -40,6 +43,7 @@ private:
     TimerQueryRing* mRing;
     PassObserver* mObserver = nullptr;
     PassRouter* mRouter = nullptr;
+    PassClock* mClock = nullptr;
     std::string mTechnique;
     bool mOpen = false;
 };

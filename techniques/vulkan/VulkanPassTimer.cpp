@@ -5,6 +5,7 @@
 namespace sb {
 
 void VulkanPassTimer::begin(const char* pass) {
+    if (mClock) mClock->passBegins(pass); // first: the pass's CPU span includes the timestamp below
     if (mRing) mRing->pass(mCmd, pass);
     if (!mCensus) return;
     closeInterval();

@@ -9,6 +9,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "techniques/PassClock.h"
 #include "techniques/Submission.h"
 #include "vk/TimestampRing.h"
 
@@ -21,6 +22,8 @@ public:
     /// nullptr: no timestamps (the verdict is untrusted, or the device writes none).
     void setRing(TimestampRing* ring) { mRing = ring; }
     void setCommandBuffer(VkCommandBuffer cmd) { mCmd = cmd; }
+    /// nullptr: none. The harness sets one to take each pass's CPU begin (techniques/PassClock.h).
+    void setClock(PassClock* clock) { mClock = clock; }
     /// Starts `pass` (outside a render pass). `pass` must outlive the frame (a literal).
     void begin(const char* pass);
     /// The technique leaves out declared pass `pass` this frame because of `reason` (literals).
@@ -50,6 +53,7 @@ public:
 private:
     void closeInterval();
     TimestampRing* mRing = nullptr;
+    PassClock* mClock = nullptr;
     VkCommandBuffer mCmd = VK_NULL_HANDLE;
     const VulkanSubmitter* mCensus = nullptr;
     VkQueryPool mStatistics = VK_NULL_HANDLE;

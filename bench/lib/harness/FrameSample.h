@@ -3,6 +3,8 @@
 #include <utility>
 #include <vector>
 
+#include "bench/lib/harness/CpuPassSpan.h"
+
 namespace sb {
 
 /// One measured frame (docs/ARCHITECTURE.md, "The timing contract"). CPU submit: first to last GL call of the
@@ -16,6 +18,11 @@ struct FrameSample {
     double motionMs = 0.0;
     std::vector<std::pair<std::string, double>> gpuPassMs; ///< raw timer-query values, pass order
     double gpuTotalMs = -1.0;                              ///< -1: not (yet) available
+    /// When the frame started: the steady clock in ms since its epoch (places frames on a timeline:
+    /// bench/lib/rows/TraceWriter.h).
+    double startMs = 0.0;
+    /// CPU submit per pass, in pass order (a pass entered twice, twice).
+    std::vector<CpuPassSpan> cpuPasses;
 };
 
 } // namespace sb

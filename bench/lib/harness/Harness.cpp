@@ -11,9 +11,6 @@ namespace sb {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
 } // namespace
 
 Harness::Harness(const RunConfig& config) : MeasuredHarness(config, true) {
@@ -27,6 +24,7 @@ Harness::Harness(const RunConfig& config) : MeasuredHarness(config, true) {
     mRing = std::make_unique<TimerQueryRing>(4, 16);
     // No timer queries until a calibration trusts the timer (timerQueriesChanged).
     mPassTimer = std::make_unique<PassTimer>(nullptr);
+    mPassTimer->setClock(&passClock());
     DebugOutput::check();
 }
 
@@ -81,6 +79,7 @@ FrameSample Harness::renderFrame(Technique& technique) {
     GlTechnique& gl = glForm(technique);
     FrameSample s;
     auto t0 = Clock::now();
+    passClock().frameBegins(t0);
     // A scene in motion moves first, as an application animates before it draws: part of the frame.
     s.motionMs = advancePath(technique);
     mFrameUniforms->upload(frameData());
@@ -101,8 +100,7 @@ FrameSample Harness::renderFrame(Technique& technique) {
     auto t1 = Clock::now();
     glFinish();
     auto t2 = Clock::now();
-    s.cpuSubmitMs = msSince(t0, t1);
-    s.wallMs = msSince(t0, t2);
+    recordFrameTimes(s, t0, t1, t2);
     return s;
 }
 

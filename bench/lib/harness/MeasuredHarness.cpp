@@ -181,6 +181,21 @@ RunResult MeasuredHarness::measure(Technique& technique) {
     return r;
 }
 
+void MeasuredHarness::recordFrameTimes(FrameSample& s, Clock::time_point t0, Clock::time_point t1,
+                                       Clock::time_point t2) const {
+    s.cpuSubmitMs = msSince(t0, t1);
+    s.wallMs = msSince(t0, t2);
+    s.startMs = std::chrono::duration<double, std::milli>(t0.time_since_epoch()).count();
+    const auto& begins = mPassClock.begins();
+    s.cpuPasses.clear();
+    s.cpuPasses.reserve(begins.size());
+    for (size_t i = 0; i < begins.size(); ++i) {
+        const Clock::time_point end = i + 1 < begins.size() ? begins[i + 1].second : t1;
+        s.cpuPasses.push_back(
+            {begins[i].first, msSince(t0, begins[i].second), msSince(begins[i].second, end)});
+    }
+}
+
 void MeasuredHarness::recheckTimer(std::vector<FrameSample>& samples, const std::vector<PassTimes>& gpu,
                                    uint64_t first) {
     mVerdict = mCalibration;
@@ -208,8 +223,11 @@ RunResult summarizeRun(const Technique& technique, std::vector<FrameSample> samp
     r.effectsProduced = technique.info().effects;
     r.counters = technique.counters();
     std::vector<double> cpu, wall, total, motion;
-    std::map<std::string, std::vector<double>> perPass;
+    std::map<std::string, std::vector<double>> perPass, cpuPerPass;
     for (const FrameSample& s : samples) {
+        std::map<std::string, double> cpuFrame; // a pass entered several times is summed per frame
+        for (const CpuPassSpan& p : s.cpuPasses) cpuFrame[p.pass] += p.durationMs;
+        for (const auto& [pass, ms] : cpuFrame) cpuPerPass[pass].push_back(ms);
         cpu.push_back(s.cpuSubmitMs);
         wall.push_back(s.wallMs);
         motion.push_back(s.motionMs);
@@ -227,8 +245,10 @@ RunResult summarizeRun(const Technique& technique, std::vector<FrameSample> samp
     r.wall = Statistics::compute(wall);
     r.motion = Statistics::compute(motion);
     r.gpuTotal = Statistics::compute(total);
-    for (const std::string& pass : technique.info().passes)
+    for (const std::string& pass : technique.info().passes) {
         r.gpuPass.emplace_back(pass, Statistics::compute(perPass[pass]));
+        r.cpuPass.emplace_back(pass, Statistics::compute(cpuPerPass[pass]));
+    }
     r.samples = std::move(samples);
     return r;
 }

@@ -25,6 +25,7 @@
 #include "core/PassTimes.h"
 #include "scenes/Scene.h"
 #include "techniques/FrameBlock.h"
+#include "techniques/PassClock.h"
 #include "techniques/Technique.h"
 
 namespace sb {
@@ -122,6 +123,13 @@ protected:
     /// The calibration the frames are measured under (set by calibrateTimer or setTimerVerdict).
     void setCalibration(const TimerVerdict& verdict);
     const TimerVerdict& calibration() const { return mCalibration; }
+    /// Where the API's pass timer records each pass's CPU begin; renderFrame starts it with the frame.
+    PassClock& passClock() { return mPassClock; }
+    /// Fills `s` from the frame's clock readings: start `t0`, end of submission `t1`, end of the wait `t2`
+    /// (cpuSubmitMs, wallMs, startMs) and the per-pass spans passClock() recorded since t0. Called after
+    /// t2, so building the spans is outside both measured intervals.
+    void recordFrameTimes(FrameSample& s, PassClock::Clock::time_point t0, PassClock::Clock::time_point t1,
+                          PassClock::Clock::time_point t2) const;
 
     // What each API implements for the loop.
     /// Timed frames render what an application would: no visibility target (the harness's instrument).
@@ -158,6 +166,7 @@ private:
     TimerVerdict mCalibration; ///< what the frames are measured under
     TimerVerdict mVerdict;     ///< what the last run ended with
     uint64_t mFrameIndex = 0;
+    PassClock mPassClock;
 };
 
 /// The statistics of a measured run: median, percentiles and the rest per series (CPU submit, wall, the

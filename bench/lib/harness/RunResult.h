@@ -25,6 +25,8 @@ struct RunResult {
     Statistics motion; ///< a scene in motion: FrameSample::motionMs (inside cpuSubmit)
     std::vector<std::pair<std::string, Statistics>> gpuPass; ///< per declared pass (raw timer values)
     Statistics gpuTotal;
+    /// CPU submit per declared pass (FrameSample::cpuPasses, a pass entered several times summed per frame).
+    std::vector<std::pair<std::string, Statistics>> cpuPass;
     uint64_t gpuFramesMissing = 0; ///< measured frames whose queries never came back
     double setupMs = 0.0;          ///< setScene + compile (untimed for the frames)
     FrameLoads loads;              ///< census frame after the measured ones

@@ -14,9 +14,6 @@ namespace sb {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-}
 constexpr uint32_t kRingFrames = 4, kPassesPerFrame = 32;
 } // namespace
 
@@ -31,6 +28,7 @@ VulkanHarness::VulkanHarness(const RunConfig& config) : MeasuredHarness(config, 
     mShaders->setDumpDirectory(config.dumpShadersPath);
     if (mContext->timestampPeriodNs() > 0.0)
         mRing = std::make_unique<TimestampRing>(*mContext, kRingFrames, kPassesPerFrame);
+    mPasses.setClock(&passClock());
 
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = mContext->commandPool();
@@ -111,6 +109,7 @@ FrameSample VulkanHarness::renderFrame(Technique& technique) {
     VulkanTechnique& vk = vulkanForm(technique);
     FrameSample s;
     const auto t0 = Clock::now();
+    passClock().frameBegins(t0);
     VulkanContext::check(vkResetCommandBuffer(mCmd, 0), "vkResetCommandBuffer");
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -135,8 +134,7 @@ FrameSample VulkanHarness::renderFrame(Technique& technique) {
                          "vkWaitForFences");
     const auto t2 = Clock::now();
     VulkanContext::check(vkResetFences(mContext->device(), 1, &mFence), "vkResetFences");
-    s.cpuSubmitMs = msSince(t0, t1);
-    s.wallMs = msSince(t0, t2);
+    recordFrameTimes(s, t0, t1, t2);
     return s;
 }
 

@@ -34,6 +34,7 @@ struct RunConfig {
     VulkanOptions vulkan;
     std::string csvPath;         ///< --csv: append one row per technique
     std::string samplesPath;     ///< --samples: per-frame samples
+    std::string tracePath;       ///< --trace: timelines (bench/lib/rows/TraceWriter.h)
     std::string screenshotPath;  ///< --screenshot: colour PNG (technique name inserted when several)
     std::string visibilityPath;  ///< --visibility: visibility PNG
     std::string dumpShadersPath; ///< --dump-shaders: every assembled stage (gl/ProgramCache.h)

@@ -137,6 +137,7 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "--window: quit after N frames (scripted checks; 0 = never)");
     app.add_option("--csv", c.csvPath, "append one row per technique to this CSV file (atomic)");
     app.add_option("--samples", c.samplesPath, "write per-frame samples to this CSV file");
+    app.add_option("--trace", c.tracePath, "write per-pass timelines (Chrome trace JSON, for Perfetto)");
     app.add_option("--screenshot", c.screenshotPath, "write the last frame's colour image (PNG)");
     app.add_option("--visibility", c.visibilityPath, "write the last frame's visibility target (PNG)");
     app.add_option("--dump-shaders", c.dumpShadersPath,

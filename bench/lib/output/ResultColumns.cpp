@@ -89,6 +89,9 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kCpuSubmitMsMean, "ms", ColumnType::Number, kEveryRun, "mean"},
     {col::kCpuSubmitMsStddev, "ms", ColumnType::Number, kEveryRun, "sample standard deviation"},
     {col::kCpuSubmitMsMad, "ms", ColumnType::Number, kEveryRun, "median absolute deviation"},
+    {col::kCpuPassMsMedian, "ms", ColumnType::Number, kEveryRun,
+     "CPU submit time of each declared pass, median: from the pass's begin to the next pass's begin (the "
+     "last pass: to the end of submission)"},
     {col::kMotionMsMedian, "ms", ColumnType::Number, kEveryRun,
      "a moving scene: CPU time per frame spent moving the scene and updating the technique for it (light "
      "fits, projectors, silhouettes, bounds; part of the CPU submit time), median; empty for a static or "

@@ -112,6 +112,7 @@ inline constexpr const char* kCpuSubmitMsP99 = "cpu_submit_ms_p99";
 inline constexpr const char* kCpuSubmitMsMean = "cpu_submit_ms_mean";
 inline constexpr const char* kCpuSubmitMsStddev = "cpu_submit_ms_stddev";
 inline constexpr const char* kCpuSubmitMsMad = "cpu_submit_ms_mad";
+inline constexpr const char* kCpuPassMsMedian = "cpu_<pass>_ms_median";
 inline constexpr const char* kMotionMsMedian = "motion_ms_median";
 inline constexpr const char* kMotionMsP95 = "motion_ms_p95";
 inline constexpr const char* kFpsMedian = "fps_median";

@@ -140,6 +140,8 @@ CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environmen
     for (auto& column : rest) row.push_back(std::move(column));
     addStats(row, kWallStats, r.wall);
     addStats(row, kCpuSubmitStats, r.cpuSubmit);
+    for (const auto& [pass, stats] : r.cpuPass)
+        row.emplace_back(col::member(col::kCpuPassMsMedian, pass), stats.n ? csvNumber(stats.median) : "");
     row.emplace_back(col::kMotionMsMedian, h.moving ? csvNumber(r.motion.median) : "");
     row.emplace_back(col::kMotionMsP95, h.moving ? csvNumber(r.motion.p95) : "");
     row.emplace_back(col::kFpsMedian, csvNumber(r.wall.median > 0 ? 1000.0 / r.wall.median : 0.0));
