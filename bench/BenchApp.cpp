@@ -106,6 +106,7 @@ constexpr const char* kExamples = R"(Examples:
   bench -t none -t shadowmap --repeat 5            interleaved rounds: ratios from runs side by side
   bench -t none -t shadowmap --format json         the rows as JSON on stdout (also csv, md)
   bench --api vulkan -t shadowmap -t volume        the same on Vulkan (lavapipe; --list: techniques, devices)
+  bench -t none -t shadowmap --trace run.json     frames and passes as a timeline (ui.perfetto.dev)
   bench sweep -t none -t shadowmap -n 1,50,100,200 --csv inst.csv
   bench bottleneck -t none -t shadowmap -n 100 --csv bn.csv
   bench explain -t planar --scene aircraft         effects asked for and delivered, passes run

@@ -338,8 +338,8 @@ TEST_F(ReportCli, AccuracyIsPlottedAgainstTimeWhereMeasured) {
     csv.header.push_back("acc_wrong_pct");
     for (size_t i = 0; i < csv.rows.size(); ++i) csv.rows[i].push_back(wrong[i]);
     CsvWriter::writeTable(acc + "/acc.csv", csv);
-    const auto report = runCommand(kBench + " report " + acc + " -o " + acc + "/index.html");
-    ASSERT_EQ(report.exitCode, 0) << report.output;
+    const auto made = runCommand(kBench + " report " + acc + " -o " + acc + "/index.html");
+    ASSERT_EQ(made.exitCode, 0) << made.output;
     const Browser b = load(dir, "file://" + acc + "/index.html");
     ASSERT_EQ(scriptProblems(b), "");
     const std::string plot = svgById(b.dom, "t1-accuracy");
