@@ -16,6 +16,7 @@
 #include "bench/lib/statistics/RankTests.h"
 #include "bench/lib/statistics/Statistics.h"
 #include "bench/lib/statistics/WallTimeStats.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -6,6 +6,7 @@
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/output/StandardStreams.h"
+#include "core/Error.h"
 
 namespace sb {
 

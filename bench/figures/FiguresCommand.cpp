@@ -15,6 +15,7 @@
 #include "bench/lib/sweep/SweepDefinition.h"
 #include "bench/lib/sweep/SweepReport.h"
 #include "bench/lib/sweep/SweepRunner.h"
+#include "core/Error.h"
 #include "core/Paths.h"
 
 namespace sb {

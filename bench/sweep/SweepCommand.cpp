@@ -12,6 +12,7 @@
 #include "bench/lib/sweep/SweepOptions.h"
 #include "bench/lib/sweep/SweepReport.h"
 #include "bench/lib/sweep/SweepRunner.h"
+#include "core/Error.h"
 
 namespace sb {
 

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <CLI/CLI.hpp>
+
 #include "core/Suggestion.h"
 
 namespace sb {

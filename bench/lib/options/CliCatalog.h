@@ -11,7 +11,12 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+// CLI11 2.1 defines its validators as objects in its header, which costs every file that includes it
+// about 6 s of compiling at -O3: this header only names the class, so the man page, the completion and
+// the dispatcher (which include it) do not pay for it.
+namespace CLI {
+class App;
+}
 
 namespace sb {
 

@@ -6,26 +6,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bench/lib/options/CliCatalog.h"
-#include "core/Error.h"
-
 namespace sb {
 
 /// Returns -1 to go on, or the exit code when the command is finished (--help, a catalog's capture).
-inline int parseCli(CLI::App& app, int argc, char** argv, const std::string& helpCommand) {
-    if (CliCatalog::capture(app)) return 0;
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ExtrasError&) {
-        throw Error(CliCatalog::unexpected(app) + " (see " + helpCommand + " --help)");
-    } catch (const CLI::ParseError& e) {
-        throw Error(std::string(e.what()) + " (see " + helpCommand + " --help)");
-    }
-    return -1;
-}
+/// Defined out of line (CliParse.cpp): CLI::App's parser is instantiated in one object, not in each
+/// subcommand's, which took a third of the bench program's compile time.
+int parseCli(CLI::App& app, int argc, char** argv, const std::string& helpCommand);
 
 } // namespace sb
