@@ -54,6 +54,8 @@ TEST=(
   libbenchmark-tools python3-scipy
   # the package's test: lintian checks the .deb that CPack builds (tests/PackageCliTest.cpp)
   lintian
+  # the manual page's tests render it with groff and man (ManPageCliTest, InstallCliTest)
+  groff-base man-db
 )
 
 [ $# -eq 0 ] && set -- test

@@ -85,6 +85,21 @@ TEST_F(InstallCliTest, InstalledBenchFindsItsShadersScenesAndTools) {
     ASSERT_EQ(rows["rows"].size(), 1u) << run.output;
     EXPECT_EQ(rows["rows"][0]["status"], "ok");
     EXPECT_EQ(rows["rows"][0]["scene"], "sphere_plane");
+
+    // `man bench` and the completion after the install: the page renders from the prefix without a
+    // warning and names the plain run's options, and the installed completion is the one the binary
+    // writes (ManPageCliTest and CompletionCliTest check their content).
+    const fs::path page = prefix / "share" / "man" / "man1" / "bench.1.gz";
+    const auto man = test::runCommand("MANWIDTH=80 man --warnings -l " + shellQuoted(page) + " 2>&1");
+    ASSERT_EQ(man.exitCode, 0) << man.output;
+    EXPECT_NE(man.output.find("--technique"), std::string::npos) << man.output.substr(0, 2000);
+    // groff's and man's complaints start with their names; the page itself may say "warning".
+    EXPECT_EQ(man.output.find("troff:"), std::string::npos) << man.output.substr(0, 2000);
+    EXPECT_EQ(man.output.find("man:"), std::string::npos) << man.output.substr(0, 2000);
+    const auto completion = test::runCommand(shellQuoted(bench) + " --completion bash");
+    ASSERT_EQ(completion.exitCode, 0) << completion.output;
+    EXPECT_EQ(test::readFile((prefix / "share" / "bash-completion" / "completions" / "bench").string()),
+              completion.output);
 }
 
 TEST_F(InstallCliTest, FiguresAndReportRunFromThePrefix) {

@@ -68,7 +68,8 @@ void PackageCliTest::expectWhatTheInstalledBenchReadsAndItsDependencies() const 
           share / "shadowbench" / "scenes" / "data" / "aircraft.json",
           share / "shadowbench" / "tools" / "plot.py", share / "shadowbench" / "tools" / "report.py",
           share / "shadowbench" / "results" / "figures" / "figures.json",
-          share / "shadowbench" / "results" / "ci" / "suite.json", share / "man" / "man1" / "handloop.1.gz",
+          share / "shadowbench" / "results" / "ci" / "suite.json", share / "man" / "man1" / "bench.1.gz",
+          share / "bash-completion" / "completions" / "bench", share / "man" / "man1" / "handloop.1.gz",
           share / "man" / "man1" / "handshadow.1.gz"})
         EXPECT_TRUE(fs::exists(f)) << f << " not in the package";
     // Every manual page is compressed, whoever installed it (cmake/debian/GzipManPages.cmake).
