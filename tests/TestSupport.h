@@ -23,6 +23,7 @@
 #include "TestPaths.h"
 #include "bench/lib/options/RunConfig.h"
 #include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/ResultColumns.h"
 
 namespace sb::test {
 
@@ -121,31 +122,23 @@ inline std::string freshDir(const std::string& name) {
     return dir.string();
 }
 
-// The column names docs/CSV.md documents (backticked names in the first column of the first table of its
-// "The columns" section, or of the file).
+/// Every column of the table in bench/lib/output/ResultColumns.h, families with their `<placeholder>`.
+/// tests/CsvDocTest.cpp holds docs/CSV.md equal to that table, so this is the documented list too,
+/// read from its one home rather than parsed from the document a second time.
 inline std::vector<std::string> documentedColumns() {
-    std::string doc = test::readFile(std::string(SB_SOURCE_DIR) + "/docs/CSV.md");
-    size_t start =
-        doc.find("\n|", doc.find("## The columns") == std::string::npos ? 0 : doc.find("## The columns"));
-    size_t end = doc.find("\n\n", start == std::string::npos ? 0 : start);
-    std::string section = start == std::string::npos ? std::string() : doc.substr(start, end - start);
     std::vector<std::string> cols;
-    std::regex row(R"(\n\| `([a-z0-9_<>]+)`)");
-    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator();
-         ++it)
-        cols.push_back((*it)[1]);
+    for (const ColumnInfo& c : ResultColumns::all()) cols.emplace_back(c.name);
     return cols;
 }
 
+/// Whether `header` has the column `documented` or, for a family, some member of it.
 inline bool headerHas(const std::vector<std::string>& header, const std::string& documented) {
-    size_t lt = documented.find('<');
-    if (lt == std::string::npos) return std::find(header.begin(), header.end(), documented) != header.end();
-    // A pattern such as gpu_<pass>_ms_median: some column with that prefix and suffix.
-    std::string prefix = documented.substr(0, lt), suffix = documented.substr(documented.find('>') + 1);
-    return std::any_of(header.begin(), header.end(), [&](const std::string& h) {
-        return h.size() > prefix.size() + suffix.size() && h.rfind(prefix, 0) == 0 &&
-               h.compare(h.size() - suffix.size(), suffix.size(), suffix) == 0;
-    });
+    const ColumnInfo* info = nullptr;
+    for (const ColumnInfo& c : ResultColumns::all())
+        if (c.name == documented) info = &c;
+    if (!info) return false; // not a documented column at all
+    return std::any_of(header.begin(), header.end(),
+                       [&](const std::string& h) { return ResultColumns::matches(*info, h); });
 }
 
 /// Documented columns a plain run does not write: only sweeps, bottleneck studies, failed
