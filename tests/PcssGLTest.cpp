@@ -1,15 +1,16 @@
 // `pcss` against closed forms and the Embree area-light reference.
 //
-// The penumbra of a straight edge. A thin plate covers x < 0 (x in [-4, 0]) at height h over the ground
-// y = 0 (bottom h_lo = 1.995, top h_hi = 2.005; tests/data/pcss_plate_*.json). A ray from the ground point
-// (x, 0, 0) towards a light point passes the plate's edge line x = 0 at height h(x) = h_lo for x < 0 (it
-// must pass under the plate) and h_hi for x > 0 (over it), so by similar triangles it is unblocked iff its
-// horizontal run over that height carries it past the edge:
-//   - spot light at height H = 8 above x = 0 with a disk emitter of radius R facing down: the emitter
+// The penumbra of a straight edge. A plate (0.01 thick; one case a box 1 thick) covers x < 0 (x in [-4, 0])
+// at middle height h over the ground y = 0 (bottom h_lo, top h_hi; the scenes are written per case as
+// tests/data/pcss_plate_*.json are). A ray from the ground point (x, 0, 0) towards a light point passes
+// the plate's edge line x = 0 at height h(x) = h_lo for x < 0 (it must pass under the plate) and h_hi for
+// x > 0 (over it), so by similar triangles it is unblocked iff its horizontal run over that height
+// carries it past the edge:
+//   - spot light at height H above x = 0 with a disk emitter of radius R facing down: the emitter
 //     point at x_l is seen iff x_l > -x (H - h) / h, so the visible fraction is the part of the disk
 //     beyond a chord at t = x (H - h) / (h R): F(t) = (acos(-t) + t sqrt(1 - t^2)) / pi, and the whole
 //     penumbra (t from -1 to 1) is w = 2 R h / (H - h) = L (d_r - d_b) / d_b with d_r = H, d_b = H - h:
-//     Fernando's equation, exact here because the blocker is parallel to the receiver;
+//     Fernando's equation, exact for a thin plate because the blocker is parallel to the receiver;
 //   - directional light straight down with angular radius theta: a direction with horizontal slope s
 //     (dx/dy) is seen iff s > -x / h; the visible fraction is the share of the cone's solid angle with
 //     s > -x / h (integrated below on a fine stratified grid over the cap, the reference's definition of
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -37,17 +39,55 @@ using namespace sb;
 
 namespace {
 
-constexpr double kPlateBottom = 1.995, kPlateTop = 2.005; // tests/data/pcss_plate_*.json
-constexpr double kSpotHeight = 8.0;
 constexpr int kSize = 512;
 
 std::string plateScene(const char* light) {
     return std::string(SB_SOURCE_DIR) + "/tests/data/pcss_plate_" + light + ".json";
 }
 
-/// Plate height a ray from ground point x passes the edge at (see the header).
-double edgeHeight(double x) {
-    return x < 0.0 ? kPlateBottom : kPlateTop;
+/// One straight edge: a plate (or a box) covering x in [-4, 0], |z| < 3, centred at height `height`
+/// with `thickness`, over the ground y = 0, under a spot light at (0, lightHeight, 0) with a disk emitter
+/// of radius `size` facing down, or under a sun straight overhead of angular radius `size` degrees.
+struct EdgeCase {
+    const char* name;
+    bool spot;
+    double size;        ///< spot: disk radius R (world units); sun: angular radius (degrees)
+    double height;      ///< the occluder's middle height h
+    double lightHeight; ///< spot: H; unused for the sun
+    double thickness;   ///< 0.01 for a plate, 1 for the box
+    double bottom() const { return height - 0.5 * thickness; }
+    double top() const { return height + 0.5 * thickness; }
+    /// Plate height a ray from ground point x passes the edge at (see the header): under the occluder
+    /// the ray must leave below its bottom edge, beside it it must pass over its top edge.
+    double edgeHeight(double x) const { return x < 0.0 ? bottom() : top(); }
+    /// Fernando's w at the middle height: 2 R h / (H - h) for the spot, 2 h tan(theta) for the sun.
+    double fernandoWidth() const {
+        return spot ? 2.0 * size * height / (lightHeight - height)
+                    : 2.0 * height * std::tan(size * M_PI / 180.0);
+    }
+};
+
+/// The scene of one edge case, as tests/data/pcss_plate_*.json writes it (camera 'under' from +x below
+/// the occluder at the penumbra's middle line z = 0).
+std::string edgeSceneJson(const EdgeCase& c) {
+    std::ostringstream os;
+    os << R"({"name": "pcss_edge", "meshes": [{"name": "plate", "generator": "box", "half_extent": [2, )"
+       << 0.5 * c.thickness
+       << R"(, 3], "tessellation": 1}, {"name": "ground", "generator": "plane", "size": )"
+       << (c.spot ? 12 : 40)
+       << R"(, "tessellation": 16}], "instances": [{"mesh": "ground", "position": [0, 0, 0],)"
+       << R"( "casts_shadow": false}, {"mesh": "plate", "position": [-2, )" << c.height
+       << R"(, 0]}], "lights": [)";
+    if (c.spot)
+        os << R"({"type": "spot", "position": [0, )" << c.lightHeight
+           << R"(, 0], "direction": [0, -1, 0], "spot_outer_deg": 50, "spot_inner_deg": 45, "shape": "disk", )"
+           << R"("size": )" << c.size << "}";
+    else
+        os << R"({"type": "directional", "direction": [0, -1, 0], "shape": "disk", "angular_radius_deg": )"
+           << c.size << "}";
+    os << R"(], "cameras": [{"name": "under", "eye": [3, 1.5, 0], "target": [-0.3, 0, 0], "fov": 40, "near": 0.1,)"
+       << R"( "far": 100}], "effects": ["soft_shadows"], "ambient": [0.15, 0.15, 0.15]})";
+    return os.str();
 }
 
 /// Share of the unit disk on one side of the chord at t (t = -1: none, 1: all).
@@ -56,19 +96,20 @@ double diskChordFraction(double t) {
     return (std::acos(-t) + t * std::sqrt(1.0 - t * t)) / M_PI;
 }
 
-/// Visibility of ground point x under the spot's disk of radius R (closed form, header).
-double spotVisibility(double x, double radius) {
-    const double h = edgeHeight(x);
-    return diskChordFraction(x * (kSpotHeight - h) / (h * radius));
+/// Visibility of ground point x under the spot's disk (closed form, header).
+double spotVisibility(const EdgeCase& c, double x) {
+    const double h = c.edgeHeight(x);
+    return diskChordFraction(x * (c.lightHeight - h) / (h * c.size));
 }
 
 /// The horizontal slopes s = tan(alpha) cos(phi) of a cone of half-angle theta around the vertical,
 /// weighted by solid angle (sin(alpha) d alpha d phi), sorted: the sun's visibility at x is the weight
-/// of the slopes above -x / h. 1024 x 1024 midpoint strata: the CDF's error is below 1e-3.
+/// of the slopes above -x / h. 512 x 512 midpoint strata: every width agrees with 1024 x 1024 strata to
+/// six digits, at half the test's time.
 struct SunSlopes {
     std::vector<std::pair<double, double>> slopeWeight;
     explicit SunSlopes(double thetaRad) {
-        constexpr int kN = 1024;
+        constexpr int kN = 512;
         double total = 0.0;
         for (int i = 0; i < kN; ++i) {
             const double alpha = (i + 0.5) / kN * thetaRad;
@@ -87,9 +128,8 @@ struct SunSlopes {
             acc += w;
         }
     }
-    double visibility(double x) const {
-        const double s = -x / edgeHeight(x);
-        auto it = std::lower_bound(slopeWeight.begin(), slopeWeight.end(), std::make_pair(s, -1.0));
+    double visibility(double slope) const {
+        auto it = std::lower_bound(slopeWeight.begin(), slopeWeight.end(), std::make_pair(slope, -1.0));
         return it == slopeWeight.end() ? 0.0 : 1.0 - it->second;
     }
 };
@@ -139,71 +179,87 @@ test::RenderedFrame render(const std::string& scene, const std::string& spec,
 struct Widths {
     double measured, exact;
     size_t samples;
+    double error() const { return measured / exact - 1.0; }
 };
 
-// Tolerance of one width against the closed form: 12%. PCSS is exact in its estimate here (the blocker
-// is parallel to the receiver, so the average blocker depth is the edge's depth and Fernando's w is the
-// exact penumbra width), so what remains is its filter: the visibility is the share of `filter_taps` = 32
-// Poisson taps past the hard edge, whose distribution across the disk is only approximately uniform
-// (a step of 1/32 in visibility moves a crossing by up to ~3% of the width), each tap's bilinear compare
-// smears the edge by a texel (~0.01 of the 0.67 width), and the map's edge sits within a texel of x = 0.
-// Measured on llvmpipe: see the test's output (within 6% for every case).
-constexpr double kWidthTolerance = 0.12;
-
-Widths spotWidths(const std::string& spec, double radius) {
-    const double w = 2.0 * radius * 2.0 / (kSpotHeight - 2.0);
-    test::RenderedFrame f = render(plateScene("spot"), spec);
+/// The 10%-90% widths of `pcss` and of the closed form on one edge case, at the same pixels.
+Widths edgeWidths(const EdgeCase& c, const std::string& dir) {
+    const std::string scene = dir + "/" + c.name + ".json";
+    test::writeFile(scene, edgeSceneJson(c));
+    test::RenderedFrame f = render(scene, "pcss");
+    const double w = c.fernandoWidth() * std::max(1.0, c.top() / c.height);
     auto xv = lineSamples(f, -1.5 * w, 1.5 * w);
-    return {width1090(xv), width1090(closedForm(xv, [&](double x) { return spotVisibility(x, radius); })),
+    if (xv.size() < 2) return {0.0, 1.0, xv.size()};
+    if (c.spot)
+        return {width1090(xv), width1090(closedForm(xv, [&](double x) { return spotVisibility(c, x); })),
+                xv.size()};
+    const SunSlopes slopes(c.size * M_PI / 180.0);
+    return {width1090(xv),
+            width1090(closedForm(xv, [&](double x) { return slopes.visibility(-x / c.edgeHeight(x)); })),
             xv.size()};
 }
 
-TEST(PcssPenumbra, SpotDiskLightWidthMatchesSimilarTriangles) {
-    // The scene's disk has radius 1 (light_size 0: from the scene); light_size 4 doubles it.
-    const Widths small = spotWidths("pcss", 1.0);
-    const Widths large = spotWidths("pcss:light_size=4", 2.0);
-    std::cout << "spot R=1: measured " << small.measured << " exact " << small.exact << " (" << small.samples
-              << " samples); R=2: measured " << large.measured << " exact " << large.exact << " ("
-              << large.samples << ")\n";
-    ASSERT_GT(small.samples, 100u) << "the line z = 0 hardly crosses the penumbra in view";
-    ASSERT_GT(large.samples, 100u);
-    EXPECT_NEAR(small.measured, small.exact, kWidthTolerance * small.exact);
-    EXPECT_NEAR(large.measured, large.exact, kWidthTolerance * large.exact);
-    // Growth with light size: the closed form's ratio is exactly 2 (t scales with x / R). Both widths
-    // carry the same kind of filter error, partly in common, so the ratio is held to 10%.
-    const double ratio = large.measured / small.measured, exactRatio = large.exact / small.exact;
-    std::cout << "ratio measured " << ratio << " closed form " << exactRatio << "\n";
-    EXPECT_NEAR(exactRatio, 2.0, 0.02);
-    EXPECT_NEAR(ratio, exactRatio, 0.10 * exactRatio);
+// The nine thin edges (plates 0.01 thick, so the blocker is parallel to the receiver and Fernando's w is
+// the exact penumbra width) and the box edge. Spot: R, h, H vary the emitter, the blocker's height and the
+// light's distance; sun: the angular radius and h.
+const EdgeCase kThinEdges[] = {
+    {"spot_r1_h2_H8", true, 1.0, 2.0, 8.0, 0.01},  {"spot_r2_h2_H8", true, 2.0, 2.0, 8.0, 0.01},
+    {"spot_r1_h1_H8", true, 1.0, 1.0, 8.0, 0.01},  {"spot_r1_h4_H8", true, 1.0, 4.0, 8.0, 0.01},
+    {"spot_r05_h2_H6", true, 0.5, 2.0, 6.0, 0.01}, {"sun_5deg_h2", false, 5.0, 2.0, 0.0, 0.01},
+    {"sun_10deg_h2", false, 10.0, 2.0, 0.0, 0.01}, {"sun_5deg_h1", false, 5.0, 1.0, 0.0, 0.01},
+    {"sun_3deg_h4", false, 3.0, 4.0, 0.0, 0.01},
+};
+const EdgeCase kBoxEdge = {"sun_5deg_box_1_to_2", false, 5.0, 1.5, 0.0, 1.0};
+
+// The band a thin edge's width error must lie in, and the box edge's figure: what
+// techniques/shadowmap/README.md states. Measured on llvmpipe at 512 x 512 (2026-12-05): spot +5.3, +5.1,
+// +5.6, +4.0, -5.2%; sun +0.6, +5.1, +9.4, +4.0% (the narrowest penumbra, 0.12 wide, is the worst: a
+// texel of the map and a pixel of the line are a larger share of it). PCSS's estimate is exact on a thin
+// plate, so what remains is its filter: 32 Poisson taps (a step of 1/32 moves a crossing by up to ~3% of
+// the width), each tap's bilinear compare smearing the edge by a texel, the map's edge within a texel of
+// x = 0. The band is the measured range widened by 1.6 points either side for rasterisation (a texel or
+// a pixel moving a crossing); it is tight enough that a 10% wrong light size leaves it (the widths scale
+// with R: +5.3% becomes +15.8%).
+constexpr double kThinErrorMin = -0.068, kThinErrorMax = 0.11;
+// The box 1 thick (bottom 1, top 2) under the 5 degree sun: the blocker search finds the box's top
+// (depth 2 below it), so the estimate is the penumbra of a plate at height 2 on both sides, where the truth
+// has the bottom edge (height 1) under the box: 38.5% too wide measured, held to +-5 points.
+constexpr double kBoxError = 0.385, kBoxTolerance = 0.05;
+
+TEST(PcssPenumbra, ThinEdgeWidthsMatchTheClosedForm) {
+    const std::string dir = test::freshTestDir("pcss-edges");
+    std::vector<Widths> widths;
+    for (const EdgeCase& c : kThinEdges) {
+        const Widths w = edgeWidths(c, dir);
+        std::cout << c.name << ": measured " << w.measured << " exact " << w.exact << " error "
+                  << 100.0 * w.error() << "% (" << w.samples << " samples)\n";
+        ASSERT_GT(w.samples, 50u) << c.name << ": the line z = 0 hardly crosses the penumbra in view";
+        EXPECT_GE(w.error(), kThinErrorMin) << c.name;
+        EXPECT_LE(w.error(), kThinErrorMax) << c.name;
+        widths.push_back(w);
+    }
+    // Growth with light size: the closed forms' ratio is exactly 2 for the spot (t scales with x / R)
+    // and a little below tan(10) / tan(5) = 2.0154 for the sun (uniform in solid angle, the cap's rim
+    // weighs less at 10 degrees). Both widths of a pair carry the same kind of filter error, partly in
+    // common, so the ratio is held to the band's half-width (measured: +4.5% for the sun, -0.2% for the
+    // spot).
+    for (auto [a, b] : {std::pair{0, 1}, std::pair{5, 6}}) {
+        const double ratio = widths[b].measured / widths[a].measured;
+        const double exactRatio = widths[b].exact / widths[a].exact;
+        std::cout << kThinEdges[b].name << " / " << kThinEdges[a].name << ": ratio measured " << ratio
+                  << " closed form " << exactRatio << "\n";
+        EXPECT_NEAR(exactRatio, 2.0, 0.1);
+        EXPECT_NEAR(ratio, exactRatio, 0.5 * (kThinErrorMax - kThinErrorMin) * exactRatio);
+    }
 }
 
-TEST(PcssPenumbra, SunWidthMatchesSimilarTriangles) {
-    // Sun of angular radius 5 degrees (the scene) and 10 (light_size = 2 tan 10 deg).
-    auto sun = [](const std::string& spec, double thetaDeg) {
-        const double theta = thetaDeg * M_PI / 180.0;
-        const double w = 2.0 * 2.0 * std::tan(theta);
-        const SunSlopes slopes(theta);
-        test::RenderedFrame f = render(plateScene("sun"), spec);
-        auto xv = lineSamples(f, -1.5 * w, 1.5 * w);
-        return Widths{width1090(xv),
-                      width1090(closedForm(xv, [&](double x) { return slopes.visibility(x); })), xv.size()};
-    };
-    const Widths small = sun("pcss", 5.0);
-    const Widths large = sun("pcss:light_size=" + std::to_string(2.0 * std::tan(10.0 * M_PI / 180.0)), 10.0);
-    std::cout << "sun 5 deg: measured " << small.measured << " exact " << small.exact << " (" << small.samples
-              << " samples); 10 deg: measured " << large.measured << " exact " << large.exact << " ("
-              << large.samples << ")\n";
-    ASSERT_GT(small.samples, 50u);
-    ASSERT_GT(large.samples, 100u);
-    EXPECT_NEAR(small.measured, small.exact, kWidthTolerance * small.exact);
-    EXPECT_NEAR(large.measured, large.exact, kWidthTolerance * large.exact);
-    // tan(10) / tan(5) = 2.0154: the ratio of the closed forms, held to 10% as above.
-    const double ratio = large.measured / small.measured, exactRatio = large.exact / small.exact;
-    std::cout << "ratio measured " << ratio << " closed form " << exactRatio << "\n";
-    // Uniform in solid angle, the cap's rim weighs less than a disk uniform in the tangent plane, more so
-    // at 10 degrees: the closed forms' ratio lies a little below tan(10) / tan(5) = 2.0154.
-    EXPECT_NEAR(exactRatio, std::tan(10.0 * M_PI / 180.0) / std::tan(5.0 * M_PI / 180.0), 0.1);
-    EXPECT_NEAR(ratio, exactRatio, 0.10 * exactRatio);
+TEST(PcssPenumbra, BoxEdgeWidthIsOverestimatedAsDocumented) {
+    const std::string dir = test::freshTestDir("pcss-box");
+    const Widths w = edgeWidths(kBoxEdge, dir);
+    std::cout << kBoxEdge.name << ": measured " << w.measured << " exact " << w.exact << " error "
+              << 100.0 * w.error() << "% (" << w.samples << " samples)\n";
+    ASSERT_GT(w.samples, 50u);
+    EXPECT_NEAR(w.error(), kBoxError, kBoxTolerance);
 }
 
 TEST(PcssPenumbra, LightSizeComesFromTheSceneOrTheDefault) {

@@ -29,7 +29,8 @@ TechniqueInfo Pcss::declaration() {
     return {.name = "pcss",
             .description = "percentage-closer soft shadows: blocker search, penumbra estimate, PCF over "
                            "it (a light with no extent gets a 1 degree emitter: counter "
-                           "light_size_defaulted)",
+                           "light_size_defaulted); penumbra width -5% to +9% of the closed form on thin "
+                           "edges, +39% on a 1-thick box edge (techniques/shadowmap/README.md)",
             .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
                        Effect::NonPlanarReceivers | Effect::MultipleLights,
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},

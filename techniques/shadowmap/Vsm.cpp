@@ -22,7 +22,11 @@ std::vector<PropertyDesc> declareProperties() {
              "lower bound of the filtered variance (linear depth in [0, 1], squared): against the "
              "bound's numeric acne"),
         real(Vsm::kBleedReduction, "0.2", 0, 0.99,
-             "light-bleeding reduction: linstep(amount, 1, p_max) removes the bound's [0, amount] tail"),
+             "light-bleeding reduction: linstep(amount, 1, p_max) removes the bound's [0, amount] tail; "
+             "it trades light leaks for darkened soft edges: two plates overlapping in the map leak "
+             "0.78% of pixels at 0 and 0.2, 0 at 0.5; a plate 0.3 above the ground 4.7% at 0, 4.2% at "
+             "0.2, 2.9% at 0.5, 0 only at 0.9; aircraft's false shadow 0.25% at 0.2, 0.58% at 0.5 "
+             "(techniques/shadowmap/README.md)"),
     };
 }
 
