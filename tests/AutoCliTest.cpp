@@ -1,9 +1,12 @@
 // `-t auto` through the bench binary (bench/lib/select/): the first run measures every candidate on this
 // machine and caches them; a second run reads the cache and measures nothing; costs written into the
 // cache (an injected calibration) move the choice, and a candidate whose cached error misses the bound
-// is passed over however cheap. The chosen technique's row records the choice and the candidates.
+// is passed over however cheap. The chosen technique's row records the choice and the candidates. On a
+// point-lit scene the refusal of every flat shadow map names the configurations that shade a point
+// light, and auto tries each of them (hybrid with an omni cast part instead of its default).
 #include <algorithm>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -114,4 +117,55 @@ TEST(AutoCli, NoQualifyingCandidateIsExitThreeAndPropertiesAreBadInput) {
     EXPECT_NE(sweep.output.find("-t auto is taken by `bench` and `bench accuracy` runs only"),
               std::string::npos)
         << sweep.output;
+}
+
+// point_light's one light is a point light. The techniques with a flat map refuse it (exit 3) naming
+// hybrid:cast=cubemap among what to use instead, and every configuration the words name is measured by
+// the calibration in the same run and judged against the Embree reference within auto's own bound (10%
+// of the shadow misplaced: a configuration that shades the light at all is near 0 here, one that does
+// not is near 100).
+TEST(AutoCli, APointLightIsRefusedWithEveryWorkingOmniConfigurationAndAutoTriesThem) {
+    const std::string dir = test::freshTestDir("auto_point");
+    const std::string csv = dir + "/r.csv";
+    const auto r = runCommand(kBench +
+                              " -t auto -t hybrid -t pcss --scene point_light --size 64x64 --frames 1 "
+                              "--warmup 0 --no-timer-check -q --calibration " +
+                              dir + "/calibration.csv --csv " + csv);
+    EXPECT_EQ(r.exitCode, 3) << r.output; // the refusals keep the code of what the context lacks
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 3u) << r.output;
+    const std::string candidates = rows[0].at(col::kAutoCandidates);
+    // The refusals: hybrid's and pcss's own rows, and shadowmap's, cascaded's, vsm's and esm's in the
+    // calibration. Each names the same configurations.
+    std::vector<std::string> refusals = {rows[1].at(col::kError), rows[2].at(col::kError)};
+    for (const char* name : {"shadowmap", "cascaded", "vsm", "esm"}) {
+        const std::regex refused(std::string("(^|; )") + name + " - - refused: ([^;]*)");
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(candidates, m, refused)) << name << " not refused in: " << candidates;
+        refusals.push_back(m[2].str());
+    }
+    const auto advice = [](const std::string& why) {
+        return why.substr(std::min(why.find(": use "), why.size()));
+    };
+    for (const std::string& why : refusals) {
+        EXPECT_NE(why.find("is a point light"), std::string::npos) << why;
+        EXPECT_NE(why.find("-t hybrid:cast=cubemap"), std::string::npos) << why;
+        EXPECT_EQ(advice(why), advice(refusals.front())) << "the refusals' words differ";
+    }
+    EXPECT_EQ(rows[1].at(col::kStatus), col::kStatusUnsupported);
+    EXPECT_EQ(rows[2].at(col::kStatus), col::kStatusUnsupported);
+    // Every configuration named runs and qualifies: "<name> <cost> ms <wrong>% qualifies|chosen".
+    const std::string& words = refusals.front();
+    std::vector<std::string> named;
+    const std::regex option("-t ([a-z:=]+)");
+    for (auto it = std::sregex_iterator(words.begin(), words.end(), option); it != std::sregex_iterator();
+         ++it)
+        named.push_back((*it)[1].str());
+    EXPECT_EQ(named, (std::vector<std::string>{"cubemap", "paraboloid", "hybrid:cast=cubemap",
+                                               "hybrid:cast=paraboloid"}));
+    for (const std::string& spec : named) {
+        const std::regex measured("(^|; )" + spec + " [0-9.e+]+ ms ([0-9.e+-]+)% (qualifies|chosen)");
+        EXPECT_TRUE(std::regex_search(candidates, measured))
+            << spec << " not measured within the bound: " << candidates;
+    }
 }

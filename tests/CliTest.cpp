@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "PngDecoder.h"
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ResultColumns.h"
@@ -104,6 +105,43 @@ TEST(Cli, ShortRunWritesEveryDocumentedColumn) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/c_none.png"));
     EXPECT_TRUE(std::filesystem::exists(dir + "/c_shadowmap.png"));
     EXPECT_TRUE(std::filesystem::exists(dir + "/v_shadowmap.png"));
+}
+
+// Two configurations of one technique each keep their --screenshot and --visibility files, and each row
+// names its own. The independent answer is the same configuration run alone: its visibility must equal,
+// value for value, the file its row names in the run of two (the same binary, driver and frame render
+// the same pixels: no tolerance), and differ from the other configuration's (a 256 map against 2048
+// moves the shadow's edge on aircraft at 96x96).
+TEST(Cli, EveryConfigurationKeepsItsOwnImagesAndItsRowNamesThem) {
+    const std::string dir = test::freshDir("cli-images");
+    const std::string csv = dir + "/r.csv";
+    const auto r = runCommand(bench("-t shadowmap -t shadowmap:resolution=256" + kQuick + " -q --csv " + csv +
+                                    " --screenshot " + dir + "/c.png --visibility " + dir + "/v.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto alone =
+        runCommand(bench("-t shadowmap:resolution=256" + kQuick + " -q --visibility " + dir + "/alone.png"));
+    ASSERT_EQ(alone.exitCode, 0) << alone.output;
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 2u);
+    for (const auto& row : rows)
+        ASSERT_TRUE(row.count(col::kVisibilityFile) && row.count(col::kScreenshotFile))
+            << "the row does not record its files";
+    // The default configuration keeps the name a run of distinct techniques gives it; the other adds the
+    // property it changes.
+    EXPECT_EQ(rows[0].at(col::kVisibilityFile), "v_shadowmap.png");
+    EXPECT_EQ(rows[0].at(col::kScreenshotFile), "c_shadowmap.png");
+    EXPECT_EQ(rows[1].at(col::kVisibilityFile), "v_shadowmap_resolution=256.png");
+    EXPECT_EQ(rows[1].at(col::kScreenshotFile), "c_shadowmap_resolution=256.png");
+    const test::DecodedPng first = test::decodePng(dir + "/" + rows[0].at(col::kVisibilityFile));
+    const test::DecodedPng second = test::decodePng(dir + "/" + rows[1].at(col::kVisibilityFile));
+    const test::DecodedPng reference = test::decodePng(dir + "/alone.png");
+    ASSERT_TRUE(first.ok && second.ok && reference.ok) << first.why << second.why << reference.why;
+    EXPECT_EQ(second.pixels, reference.pixels) << "the 256 row's file is not the 256 configuration's picture";
+    size_t differing = 0;
+    for (size_t i = 0; i < first.pixels.size() && i < second.pixels.size(); ++i)
+        differing += first.pixels[i] != second.pixels[i];
+    EXPECT_GT(differing, 0u) << "the two configurations' visibility files hold the same picture";
+    for (const auto& row : rows) EXPECT_TRUE(test::decodePng(dir + "/" + row.at(col::kScreenshotFile)).ok);
 }
 
 TEST(Cli, TimerVerdictIsMeasuredAndUntrustedNumbersAreHidden) {

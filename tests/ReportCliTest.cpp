@@ -220,6 +220,30 @@ TEST_F(ReportCli, TablesCarryTheCsvCellsAndImagesSitInTheirRows) {
     EXPECT_NE(text.find("build/bench -t none -t shadowmap -t blob --repeat 2"), std::string::npos);
 }
 
+// Two configurations of one technique: each row shows the picture its row records (screenshot_file),
+// never the other's, whatever the names have in common. Its own small run, not the fixture's; the rows
+// are read from the page as written (they are static HTML: no browser needed).
+TEST(ReportCliRows, EachRowShowsThePictureItRecords) {
+    const std::string own = test::freshDir("report-cli-rows");
+    const auto r = runCommand(kBench +
+                              " -t shadowmap -t shadowmap:resolution=256 --frames 1 --warmup 0 "
+                              "--size 64x64 --no-timer-check -q --csv " +
+                              own + "/run.csv --screenshot " + own + "/shot.png");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto page = runCommand(kBench + " report " + own + " -o " + own + "/index.html");
+    ASSERT_EQ(page.exitCode, 0) << page.output;
+    const auto csv = test::csvRowMaps(own + "/run.csv");
+    const auto rows = tableRows(test::readFile(own + "/index.html"), "t1");
+    ASSERT_EQ(rows.size(), 2u);
+    ASSERT_EQ(csv.size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        ASSERT_TRUE(csv[i].count(col::kScreenshotFile)) << "row " << i + 1 << " records no screenshot";
+        const std::string mine = csv[i].at(col::kScreenshotFile), other = csv[1 - i].at(col::kScreenshotFile);
+        EXPECT_NE(rows[i].at("<html>").find("alt=\"" + mine + "\""), std::string::npos) << mine;
+        EXPECT_EQ(rows[i].at("<html>").find("alt=\"" + other + "\""), std::string::npos) << other;
+    }
+}
+
 TEST_F(ReportCli, SortingByClickOrdersTheRows) {
     const CsvTable csv = CsvWriter::read(dir + "/run.csv");
     bool moved = false;

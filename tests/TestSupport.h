@@ -142,13 +142,15 @@ inline bool headerHas(const std::vector<std::string>& header, const std::string&
 }
 
 /// Documented columns a plain run does not write: only sweeps, bottleneck studies, failed
-/// configurations, bench ci (ci_*), runs with a deliberate regression switched on (injected) and rows
-/// of `-t auto` (auto_*: AutoCliTest checks those).
+/// configurations, bench ci (ci_*), runs with a deliberate regression switched on (injected), rows
+/// of `-t auto` (auto_*: AutoCliTest checks those) and runs without --screenshot or --visibility (*_file:
+/// CliTest's short run writes them).
 inline const std::set<std::string>& sweepOnlyColumns() {
     static const std::set<std::string> kColumns = {
-        "error",         "technique_spec", "config_index", "config_group", "sweep_id",       "sweep_name",
-        "sweep_configs", "shard",          "perturbation", "study_base",   "injected",       "ci_config",
-        "ci_side",       "ci_round",       "ci_role",      "auto_choice",  "auto_candidates"};
+        "error",       "technique_spec",  "config_index",    "config_group",   "sweep_id",
+        "sweep_name",  "sweep_configs",   "shard",           "perturbation",   "study_base",
+        "injected",    "ci_config",       "ci_side",         "ci_round",       "ci_role",
+        "auto_choice", "auto_candidates", "screenshot_file", "visibility_file"};
     return kColumns;
 }
 

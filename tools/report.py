@@ -120,13 +120,37 @@ def sanitized(name):
     return re.sub(r"[^A-Za-z0-9_.=-]", "_", name)
 
 
+# The columns in which a row records its own pictures (docs/CSV.md; bench/lib/images/RunImageNames.h),
+# relative to the CSV's folder.
+IMAGE_COLUMNS = ("screenshot_file", "visibility_file")
+
+
+def recorded_images(header, row, csv_dir, images):
+    """The pictures `row` records that exist (as `images` spells them where it holds them), or None where
+    it records none (a CSV written before the columns, or a run without --screenshot and --visibility)."""
+    col = {name: k for k, name in enumerate(header)}
+    cells = [row[col[c]] for c in IMAGE_COLUMNS if c in col and col[c] < len(row) and row[col[c]]]
+    if not cells:
+        return None
+    known = {os.path.realpath(i): i for i in images}
+    paths = [os.path.join(csv_dir, c) for c in cells]
+    return [known.get(os.path.realpath(p), p) for p in paths if os.path.isfile(p)]
+
+
 def row_images(header, rows, images, csv_dir):
-    """Per row, the images of the CSV's folder named after its technique: `bench --screenshot shot.png`
-    with several techniques writes shot_<technique>.png (bench/run/RunCommand.cpp); with one, shot.png."""
+    """Per row, its pictures: the files the row records where it does; for rows written before it did, the
+    images of the CSV's folder named after its technique (`bench --screenshot shot.png` with several
+    techniques wrote shot_<technique>.png; with one, shot.png)."""
+    recorded = [recorded_images(header, r, csv_dir, images) for r in rows]
+    if all(r is not None for r in recorded):
+        return recorded
     here = [i for i in images if os.path.dirname(i) == csv_dir]
     col = {name: k for k, name in enumerate(header)}
     found = []
-    for r in rows:
+    for r, mine_recorded in zip(rows, recorded):
+        if mine_recorded is not None:
+            found.append(mine_recorded)
+            continue
         names = {r[col[c]] for c in ("technique", "technique_spec") if c in col and r[col[c]]}
         mine = []
         for image in here:
@@ -134,7 +158,7 @@ def row_images(header, rows, images, csv_dir):
             if any(stem.endswith("_" + n) or stem.endswith("_" + sanitized(n)) for n in names):
                 mine.append(image)
         found.append(mine)
-    if len(rows) == 1 and not found[0]:  # one technique: the screenshot keeps its name
+    if len(rows) == 1 and not found[0] and recorded[0] is None:  # one technique: the screenshot keeps its name
         found[0] = [i for i in here if not os.path.basename(i).startswith("figure")]
     return found
 

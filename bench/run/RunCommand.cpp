@@ -8,6 +8,7 @@
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/images/AccuracyImages.h"
+#include "bench/lib/images/RunImageNames.h"
 #include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/measure/Measurement.h"
 #include "bench/lib/options/QualitySweep.h"
@@ -32,29 +33,27 @@
 namespace sb {
 
 namespace {
-std::string withSuffix(const std::string& path, const std::string& suffix) {
-    std::filesystem::path p(path);
-    return (p.parent_path() / (p.stem().string() + "_" + suffix + p.extension().string())).string();
-}
-
 /// --screenshot and --visibility of the frame just measured (the census frame, which writes the visibility
-/// target), on either API. With several configurations each keeps its own file: the technique's name and,
-/// where two configurations share a technique, its index in the run are inserted.
-void writeImages(const RunConfig& config, MeasuredHarness& harness, const std::string& label) {
-    if (!config.screenshotPath.empty())
-        ImageWriter::writeColor(harness.width(), harness.height(), harness.readColor(),
-                                label.empty() ? config.screenshotPath
-                                              : withSuffix(config.screenshotPath, label));
+/// target), on either API, under the configuration's `label` (RunImageNames.h: every configuration keeps
+/// its own files). Returns the columns that record them in the row.
+CsvRow writeImages(const RunConfig& config, MeasuredHarness& harness, const std::string& label) {
+    CsvRow recorded;
+    if (!config.screenshotPath.empty()) {
+        const std::string path = RunImageNames::withLabel(config.screenshotPath, label);
+        ImageWriter::writeColor(harness.width(), harness.height(), harness.readColor(), path);
+        recorded.emplace_back(col::kScreenshotFile, RunImageNames::recorded(path, config.csvPath));
+    }
     if (!config.visibilityPath.empty()) {
-        const std::string base =
-            label.empty() ? config.visibilityPath : withSuffix(config.visibilityPath, label);
+        const std::string base = RunImageNames::withLabel(config.visibilityPath, label);
         const std::vector<float> vis = harness.readVisibility();
         const size_t lights =
             std::max<size_t>(1, std::min<size_t>(harness.scene().lights.size(), kMaxLights));
         for (size_t i = 0; i < lights; ++i)
             ImageWriter::writeVisibility(harness.width(), harness.height(), vis, int(i),
-                                         i == 0 ? base : withSuffix(base, "light" + std::to_string(i)));
+                                         RunImageNames::lightFile(base, i));
+        recorded.emplace_back(col::kVisibilityFile, RunImageNames::recorded(base, config.csvPath));
     }
+    return recorded;
 }
 /// Every output is checked before the first frame, so a path that cannot be written fails in
 /// milliseconds instead of after minutes of measuring with the CSV row already appended.
@@ -282,13 +281,14 @@ std::unique_ptr<MeasuredHarness> createHarness(const RunConfig& config, std::uni
     return harness;
 }
 
-/// The label an image file gets when a run has several configurations: the technique's name, and its
-/// position in the run when two configurations share a technique (so every configuration keeps its own).
-std::string imageLabel(const std::vector<Configured>& configured, size_t i) {
-    if (configured.size() < 2) return "";
-    size_t sameName = 0;
-    for (const Configured& c : configured) sameName += c.spec.name == configured[i].spec.name ? 1 : 0;
-    return configured[i].spec.name + (sameName > 1 ? std::to_string(i + 1) : "");
+/// The label each configuration's --screenshot and --visibility files get (RunImageNames.h), from the
+/// techniques as they run (`-t auto` already resolved); a refused one is named by its spec.
+std::vector<std::string> imageLabels(const std::vector<Configured>& configured) {
+    std::vector<RunImageNames::Configuration> run;
+    for (const Configured& c : configured)
+        run.push_back({c.spec.name, c.technique ? c.technique->properties()
+                                                : TechniqueRegistry::create(c.spec)->properties()});
+    return RunImageNames::labels(run);
 }
 
 /// RunCommand::run, with bench accuracy's pictures written into `imagesDir` when it is not empty: the one
@@ -317,6 +317,7 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
         configured[i].technique = TechniqueRegistry::create(chosen.spec, Api::GL);
         autoColumns[i] = chosen.columns();
     }
+    const std::vector<std::string> labels = imageLabels(configured);
     if (!accuracy && harness.api() == Api::GL && config.context.backend == Backend::Glfw &&
         config.context.visibleWindow) {
         std::vector<std::unique_ptr<GlTechnique>> techniques;
@@ -409,9 +410,10 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
                 if (m.accuracy) log << ", " << m.accuracy->hard.wrongPct << "% wrong";
                 log << "\n";
             }
+            // The pictures before the row, so that a row never names a file that was not written.
+            for (auto& column : writeImages(config, harness, labels[i])) m.row.push_back(std::move(column));
             if (!config.csvPath.empty()) CsvWriter::appendRows(config.csvPath, {m.row});
             if (!config.samplesPath.empty()) SamplesFile::append(config.samplesPath, harness, m.run);
-            writeImages(config, harness, imageLabel(configured, i));
             drawImages(images.get(), evaluator.get(), m, specs[i].toString(), technique.info().effects, round,
                        config, log);
             results.push_back(std::move(m));

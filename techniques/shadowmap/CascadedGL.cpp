@@ -9,6 +9,7 @@
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/PointLightRefusal.h"
 #include "techniques/shadowmap/CascadeSplits.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -46,7 +47,7 @@ void CascadedGL::setScene(const Scene& scene) {
         const Light& l = scene.lights[i];
         LightMaps m;
         m.castsShadows = l.castsShadows;
-        if (m.castsShadows) FlatLightFits::refusePointLight(l, i, "cascaded", FlatLightFits::kOmniAdvice);
+        if (m.castsShadows) PointLightRefusal::refuse(l, i, "cascaded");
         m.directional = l.type == LightType::Directional && m.castsShadows;
         m.firstSlot = slot;
         m.slots = m.directional ? cascades : 1;

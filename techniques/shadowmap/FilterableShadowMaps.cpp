@@ -9,6 +9,7 @@
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/PointLightRefusal.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
@@ -131,11 +132,7 @@ void FilterableShadowMaps::setScene(const Scene& scene) {
             mLightPosition.push_back(l.position);
             continue;
         }
-        if (l.type == LightType::Point)
-            throw Error(mOwner + ": light " + std::to_string(i) +
-                            " is a point light, which needs an omni shadow map: use -t cubemap or -t "
-                            "paraboloid, or --light directional or --light spot",
-                        ExitCode::Unsupported);
+        PointLightRefusal::refuse(l, i, mOwner);
         mFitted.push_back(fitLightViewProjection(scene, l));
         mDirectional.push_back(l.type == LightType::Directional);
         mLightPosition.push_back(l.position);

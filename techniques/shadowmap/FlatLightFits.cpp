@@ -4,9 +4,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/PointLightRefusal.h"
 
 namespace sb {
 
@@ -16,15 +16,7 @@ const glm::mat4& FlatLightFits::textureBias() {
     return kBias;
 }
 
-void FlatLightFits::refusePointLight(const Light& light, size_t index, const std::string& technique,
-                                     const std::string& advice) {
-    if (light.type == LightType::Point)
-        throw Error(technique + ": light " + std::to_string(index) +
-                        " is a point light, which needs an omni shadow map" + advice,
-                    ExitCode::Unsupported);
-}
-
-void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const std::string& advice) {
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique) {
     mViewProj.clear();
     mShadowMatrix.clear();
     mCastsShadows.clear();
@@ -37,7 +29,7 @@ void FlatLightFits::setScene(const Scene& scene, const std::string& technique, c
             mShadowMatrix.push_back(textureBias());
             continue;
         }
-        refusePointLight(l, i, technique, advice);
+        PointLightRefusal::refuse(l, i, technique);
         mViewProj.push_back(fitLightViewProjection(scene, l));
         mShadowMatrix.push_back(textureBias() * mViewProj.back());
     }

@@ -3,7 +3,7 @@
 // orthographic (directional) or perspective (spot) camera fitted to the scene (scenes/LightFit.h,
 // Williams 1978), the shadow matrix that takes world positions to the map's [0, 1] texture space, and
 // their depth pass, one layer of a DepthLayers per light. Point lights need an omni map and are refused
-// here (`cascaded` refuses them with the same words through refusePointLight). Both members fit, render
+// here with the words every flat map uses (techniques/PointLightRefusal.h). Both members fit, render
 // and refuse alike; keeping it in one place keeps their maps, counters and messages identical.
 #include <cstdint>
 #include <string>
@@ -28,10 +28,6 @@ struct ViewCull {
 
 class FlatLightFits {
 public:
-    /// The advice `shadowmap` and `cascaded` give after "... needs an omni shadow map".
-    static constexpr const char* kOmniAdvice =
-        ": use -t cubemap or -t paraboloid, or --light directional or --light spot";
-
     /// World size of one texel of a map of `resolution` texels rendered with `lightViewProj`, at
     /// light-space w = 1: row r of an orthographic proj * view is (2 / extent_r) times a unit axis, and
     /// of a perspective one (2 / (2 tan(fov / 2))) times it with extent growing with w. The larger of
@@ -42,14 +38,10 @@ public:
     static float farthestW(const glm::mat4& lightViewProj, const Aabb& bounds);
     /// Clip space to [0, 1] texture space: scale by one half, translate by one half.
     static const glm::mat4& textureBias();
-    /// Throws Error(Unsupported) "<technique>: light <index> is a point light, which needs an omni shadow
-    /// map<advice>" when `light` is a point light.
-    static void refusePointLight(const Light& light, size_t index, const std::string& technique,
-                                 const std::string& advice);
-
-    /// Fits every light's camera (untimed: setScene), refusing point lights that cast shadows as above
-    /// (a point light with "casts_shadows": false only illuminates: its matrix is unused).
-    void setScene(const Scene& scene, const std::string& technique, const std::string& advice);
+    /// Fits every light's camera (untimed: setScene), refusing point lights that cast shadows in
+    /// `technique`'s name (PointLightRefusal::refuse; a point light with "casts_shadows": false only
+    /// illuminates: its matrix is unused).
+    void setScene(const Scene& scene, const std::string& technique);
 
     size_t size() const { return mViewProj.size(); }
     /// The lights that cast shadows (their layers are rendered): the texel counters count these.

@@ -103,7 +103,7 @@ PcssGL::LightParams PcssGL::lightParams(const Scene& scene, const Light& light,
 }
 
 void PcssGL::setScene(const Scene& scene) {
-    mLights.setScene(scene, "pcss", " (cubemap or paraboloid): use --light directional or --light spot");
+    mLights.setScene(scene, "pcss");
     mCulling.setScene(scene);
 }
 

@@ -48,7 +48,7 @@ void ShadowMapVulkan::release() {
 }
 
 void ShadowMapVulkan::setScene(const Scene& scene) {
-    mLights.setScene(scene, "shadowmap", FlatLightFits::kOmniAdvice);
+    mLights.setScene(scene, "shadowmap");
     mCulling.setScene(scene);
 }
 

@@ -35,8 +35,8 @@ struct RunConfig {
     std::string csvPath;         ///< --csv: append one row per technique
     std::string samplesPath;     ///< --samples: per-frame samples
     std::string tracePath;       ///< --trace: timelines (bench/lib/rows/TraceWriter.h)
-    std::string screenshotPath;  ///< --screenshot: colour PNG (technique name inserted when several)
-    std::string visibilityPath;  ///< --visibility: visibility PNG
+    std::string screenshotPath;  ///< --screenshot: colour PNG (one per configuration: RunImageNames.h)
+    std::string visibilityPath;  ///< --visibility: visibility PNG (named as --screenshot)
     std::string dumpShadersPath; ///< --dump-shaders: every assembled stage (gl/ProgramCache.h)
     bool checkTimer = true;      ///< run the GPU-timer trust calibration
     bool sweep = false;          ///< accuracy: walk each technique's quality knobs

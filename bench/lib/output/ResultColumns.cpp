@@ -197,6 +197,12 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kAutoCandidates, "", ColumnType::Text, kAuto,
      "rows of `-t auto` only: every candidate with its calibrated cost, error and verdict (`lacks "
      "self_shadowing`, `13.8% wrong > bound 10%`, `refused: ...`)"},
+    {col::kScreenshotFile, "", ColumnType::Text, kImages,
+     "the `--screenshot` PNG of this row's configuration, relative to the CSV's folder (bench/lib/images/"
+     "RunImageNames.h: how each configuration of a run gets its own)"},
+    {col::kVisibilityFile, "", ColumnType::Text, kImages,
+     "the `--visibility` PNG of this row's configuration (light 0; light L's adds `_lightL` before `.png`), "
+     "relative to the CSV's folder"},
     {col::kError, "", ColumnType::Text, kFailed,
      "why a configuration failed or was skipped (`status` = `failed` or `unsupported`): the worker's "
      "one-line error, or how it died (\"killed by signal 11\")"},
@@ -228,11 +234,15 @@ const std::vector<ColumnInfo> kColumns = {
 };
 
 /// The writers' names in docs/CSV.md, in flag order.
-constexpr std::pair<unsigned, const char*> kWriterNames[] = {
-    {kEveryRun, "every run"}, {kAccuracy, "bench accuracy"},
-    {kSweep, "sweeps"},       {kBottleneck, "bench bottleneck"},
-    {kCi, "bench ci"},        {kAuto, "-t auto"},
-    {kFailed, "failed rows"}, {kInjected, "SHADOWBENCH_INJECT"}};
+constexpr std::pair<unsigned, const char*> kWriterNames[] = {{kEveryRun, "every run"},
+                                                             {kAccuracy, "bench accuracy"},
+                                                             {kSweep, "sweeps"},
+                                                             {kBottleneck, "bench bottleneck"},
+                                                             {kCi, "bench ci"},
+                                                             {kAuto, "-t auto"},
+                                                             {kFailed, "failed rows"},
+                                                             {kInjected, "SHADOWBENCH_INJECT"},
+                                                             {kImages, "--screenshot or --visibility"}};
 
 } // namespace
 

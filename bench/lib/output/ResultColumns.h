@@ -25,6 +25,7 @@ enum ColumnWriter : unsigned {
     kAuto = 1u << 5,       ///< rows of `-t auto`
     kFailed = 1u << 6,     ///< rows of a configuration that failed or was unsupported
     kInjected = 1u << 7,   ///< rows measured with SHADOWBENCH_INJECT set
+    kImages = 1u << 8,     ///< rows of a run with --screenshot or --visibility
 };
 
 /// How a cell is written: free text, a whole number, or a csvNumber (fixed 4 decimals).
@@ -169,6 +170,8 @@ inline constexpr const char* kBaseline = "baseline";
 inline constexpr const char* kWallRatioVsBaseline = "wall_ratio_vs_baseline";
 inline constexpr const char* kAutoChoice = "auto_choice";
 inline constexpr const char* kAutoCandidates = "auto_candidates";
+inline constexpr const char* kScreenshotFile = "screenshot_file";
+inline constexpr const char* kVisibilityFile = "visibility_file";
 inline constexpr const char* kError = "error";
 inline constexpr const char* kTechniqueSpec = "technique_spec";
 inline constexpr const char* kConfigIndex = "config_index";

@@ -9,14 +9,6 @@
 
 namespace sb {
 
-namespace {
-
-std::string nameOf(const std::string& spec) {
-    return spec.substr(0, spec.find(':'));
-}
-
-} // namespace
-
 AutoResolution AutoResolver::resolve(Harness& harness, const RunConfig& config, std::ostream& log) {
     CalibrationOptions options;
     options.cachePath = config.calibrationPath;
@@ -29,9 +21,9 @@ AutoResolution AutoResolver::resolve(Harness& harness, const RunConfig& config, 
     for (const AutoCandidate& c : candidates) {
         const std::string cost = c.measured ? formatNumber("%.3g ms", c.costMs) : "-";
         const std::string wrong = c.measured ? formatNumber("%.3g%%", c.wrongPct) : "-";
-        table.addRow({nameOf(c.spec), cost, wrong, c.verdict});
+        table.addRow({c.shownName(), cost, wrong, c.verdict});
         r.candidates +=
-            (r.candidates.empty() ? "" : "; ") + nameOf(c.spec) + " " + cost + " " + wrong + " " + c.verdict;
+            (r.candidates.empty() ? "" : "; ") + c.shownName() + " " + cost + " " + wrong + " " + c.verdict;
     }
     log << "auto: scene " << harness.scene().name << " asks for " << effectMaskToString(request) << "; bound "
         << formatNumber("%.3g", config.autoMaxWrongPct) << "% wrong (--auto-max-wrong)\n";

@@ -58,10 +58,6 @@ size_t breakTimeTie(const std::vector<AutoCandidate>& candidates, const std::vec
     return best;
 }
 
-std::string nameOf(const AutoCandidate& c) {
-    return c.spec.substr(0, c.spec.find(':'));
-}
-
 std::string workText(double work) {
     return formatNumber("%.4g", work) + " shader invocations";
 }
@@ -71,14 +67,14 @@ std::string tieText(const std::vector<AutoCandidate>& candidates, const std::vec
                     size_t chosen, bool judged) {
     std::string names;
     for (size_t k = 0; k < tied.size(); ++k)
-        names += (k == 0 ? "" : k + 1 == tied.size() ? " and " : ", ") + nameOf(candidates[tied[k]]);
+        names += (k == 0 ? "" : k + 1 == tied.size() ? " and " : ", ") + candidates[tied[k]].shownName();
     bool accuracyDecided = judged;
     for (size_t i : tied)
         accuracyDecided =
             accuracyDecided && (i == chosen || candidates[i].wrongPct > candidates[chosen].wrongPct);
     const AutoCandidate& c = candidates[chosen];
     return "; time could not separate " + names + " (none was faster than the others in every round of the " +
-           "calibration), and " + nameOf(c) +
+           "calibration), and " + c.shownName() +
            (accuracyDecided ? " is the most accurate of them"
             : judged        ? " does the least exact work of the most accurate (" + workText(c.work) + ")"
                             : " does the least exact work of them (" + workText(c.work) + ")");
@@ -107,7 +103,8 @@ AutoChoice AutoSelection::choose(EffectMask request, std::vector<AutoCandidate>&
         if (tied.size() > 1) {
             for (size_t i : tied)
                 if (i != *choice.chosen)
-                    candidates[i].verdict = "qualifies; as fast as " + nameOf(candidates[*choice.chosen]) +
+                    candidates[i].verdict = "qualifies; as fast as " +
+                                            candidates[*choice.chosen].shownName() +
                                             " within the rounds, ranked after it (" +
                                             formatNumber("%.3g", candidates[i].wrongPct) + "% wrong, " +
                                             workText(candidates[i].work) + ")";
@@ -125,8 +122,7 @@ AutoChoice AutoSelection::choose(EffectMask request, std::vector<AutoCandidate>&
     const std::string bound =
         request ? " delivering " + wanted + " within " + formatNumber("%.3g", maxWrongPct) + "% wrong"
                 : " (the scene asks for no shadow: no accuracy bound)";
-    choice.reason = best.spec.substr(0, best.spec.find(':')) +
-                    (tie.empty() ? ": the cheapest of " : ": one of the cheapest of ") +
+    choice.reason = best.shownName() + (tie.empty() ? ": the cheapest of " : ": one of the cheapest of ") +
                     std::to_string(qualified) + " candidate(s)" + bound + " (" +
                     formatNumber("%.3g", best.costMs) + " ms per frame, " +
                     formatNumber("%.3g", best.wrongPct) + "% wrong)" + tie;

@@ -32,6 +32,12 @@ struct AutoCandidate {
     std::string batch;          ///< the calibration the rounds belong to: rounds compare within one
     double work = -1.0;         ///< vertex + fragment shader invocations of one frame; < 0: unknown
     std::string verdict;        ///< filled by choose(): "chosen", or why not
+    /// How `-t` names it where it is not the technique's defaults ("hybrid:cast=cubemap"); "" for the
+    /// defaults, which are named by the technique alone.
+    std::string variant;
+
+    /// The name the candidate table, auto_choice and auto_candidates give it: `variant`, else the technique.
+    std::string shownName() const { return variant.empty() ? spec.substr(0, spec.find(':')) : variant; }
 };
 
 struct AutoChoice {

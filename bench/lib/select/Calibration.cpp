@@ -13,6 +13,7 @@
 #include "bench/lib/rows/Environment.h"
 #include "core/Error.h"
 #include "registry/TechniqueRegistry.h"
+#include "techniques/PointLightRefusal.h"
 
 namespace sb {
 
@@ -35,6 +36,18 @@ double misplacedShadowPct(const AccuracyEvaluator::Sample& s) {
         wrong += reference != technique;
     }
     return 100.0 * double(wrong) / double(std::max<uint64_t>(1, shadowed));
+}
+
+/// The configurations of technique `name` that are candidates on `scene`: its defaults, except where
+/// the scene has a point light that casts shadows and PointLightRefusal names configurations of `name`
+/// that shade it (hybrid with an omni map as its cast part: its default cast part, shadowmap, refuses
+/// such a light). Those are tried instead, under the names a user gives them.
+std::vector<std::string> configurationsOf(const std::string& name, const Scene& scene) {
+    std::vector<std::string> variants;
+    if (PointLightRefusal::sceneHasOne(scene))
+        for (const std::string& spec : PointLightRefusal::omniHybrids())
+            if (TechniqueSpec::parse(spec).name == name) variants.push_back(spec);
+    return variants.empty() ? std::vector<std::string>{name} : variants;
 }
 
 /// One candidate being measured: its technique, prepared on the harness, and what it measured.
@@ -179,13 +192,19 @@ std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const Calib
     std::vector<bool> measure; ///< per candidate: not (usefully) in the cache
     std::vector<Trial> trials;
     size_t fromFile = 0;
-    for (const std::string& name : TechniqueRegistry::names()) {
-        if (!isCandidate(name)) continue;
-        std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(name);
+    std::vector<std::string> configurations;
+    for (const std::string& name : TechniqueRegistry::names())
+        if (isCandidate(name))
+            for (const std::string& spec : configurationsOf(name, harness.scene()))
+                configurations.push_back(spec);
+    for (const std::string& given : configurations) {
+        const TechniqueSpec parsed = TechniqueSpec::parse(given);
+        std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(parsed);
         AutoCandidate c;
         // A technique without properties (none) is its bare name: "none:" does not parse back.
         const std::string properties = technique->properties().toString();
-        c.spec = properties.empty() ? name : name + ":" + properties;
+        c.spec = properties.empty() ? parsed.name : parsed.name + ":" + properties;
+        c.variant = parsed.properties.empty() ? "" : given;
         c.effects = technique->info().effects;
         keys.push_back(keyColumns(harness, c.spec));
         if (const auto* row = options.refresh ? nullptr : cached(table, keys.back())) {
