@@ -21,3 +21,17 @@ vec2 paraboloidProject(vec3 d) {
 float paraboloidDepth(float dist, vec2 nearFar) {
     return (dist - nearFar.x) / (nearFar.y - nearFar.x);
 }
+
+// Light-to-point vector `v` (world) to hemisphere `half_`'s clip space, written homogeneously,
+// (d.x, d.y, z (1 + d.z), 1 + d.z), so that the GL's clipping interpolates in clip space and a triangle
+// crossing the hemisphere's plane is cut where `clipDistance` (d.z) is 0; the part behind belongs to
+// the other half. The depth passes' vertex and geometry stages share it.
+vec4 paraboloidClip(vec3 v, int half_, vec2 nearFar, out float clipDistance) {
+    vec3 p = paraboloidFrame(v, half_);
+    float dist = length(p);
+    vec3 d = dist > 0.0 ? p / dist : vec3(0.0, 0.0, 1.0);
+    float w = 1.0 + d.z;
+    float z = 2.0 * paraboloidDepth(dist, nearFar) - 1.0;
+    clipDistance = d.z;
+    return vec4(d.xy, z * w, w);
+}
