@@ -10,10 +10,11 @@
 
 layout(location = 8) uniform vec4 uLight; // xyz: position; w: hemisphere (0 front, 1 back)
 layout(location = 12) uniform vec2 uNearFar;
+layout(location = 14) uniform float uBeyondRim; // the clip plane's offset behind the hemisphere's
 
 out float gl_ClipDistance[1];
 
 void main() {
     vec3 world = (instanceModel() * vec4(aPosition, 1.0)).xyz;
-    gl_Position = paraboloidClip(world - uLight.xyz, int(uLight.w), uNearFar, gl_ClipDistance[0]);
+    gl_Position = paraboloidClip(world - uLight.xyz, int(uLight.w), uNearFar, uBeyondRim, gl_ClipDistance[0]);
 }

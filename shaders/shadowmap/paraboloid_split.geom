@@ -6,7 +6,7 @@
 // (techniques/shadowmap/ParaboloidSplitting.h). The same bound keeps the depth between grid vertices,
 // linear where the true distance is not, within 1 - cos(a / 2) of the distance, and the clipping at
 // the hemisphere's plane, which joins the cut points by a chord of the rim, within the same half
-// texel. A triangle wholly behind the hemisphere's plane emits nothing.
+// texel. A triangle wholly behind the cut (paraboloidClip) emits nothing.
 //
 // Watertight: each edge is cut into its own count of segments, ceil(its angle / uMaxAngle) clamped
 // to kMaxSegments, computed from its endpoints in a fixed order, so the two triangles that share an
@@ -32,6 +32,7 @@ in vec4 vWorld[];
 layout(location = 8) uniform vec4 uLight; // xyz: position; w: hemisphere (0 front, 1 back)
 layout(location = 12) uniform vec2 uNearFar;
 layout(location = 13) uniform float uMaxAngle; // radians a segment may span
+layout(location = 14) uniform float uBeyondRim; // the clip plane's offset behind the hemisphere's
 
 out float gl_ClipDistance[1];
 
@@ -52,8 +53,14 @@ bool precedes(vec3 p, vec3 q) {
     return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
 }
 
+// Wholly behind the cut (the cone of directions more than the rim's ring behind the plane, convex,
+// so a triangle with its three corners there lies there whole).
+bool behind(vec3 v) {
+    return paraboloidFrame(v, int(uLight.w)).z < -uBeyondRim * length(v);
+}
+
 vec4 project(vec3 v, out float clipDistance) {
-    return paraboloidClip(v, int(uLight.w), uNearFar, clipDistance);
+    return paraboloidClip(v, int(uLight.w), uNearFar, uBeyondRim, clipDistance);
 }
 
 // Point k of an edge cut into `segments`, its ends exact.
@@ -102,9 +109,7 @@ void main() {
     gA = vWorld[0].xyz - uLight.xyz;
     gB = vWorld[1].xyz - uLight.xyz;
     gC = vWorld[2].xyz - uLight.xyz;
-    int half_ = int(uLight.w);
-    if (max(paraboloidFrame(gA, half_).z, max(paraboloidFrame(gB, half_).z, paraboloidFrame(gC, half_).z)) < 0.0)
-        return;
+    if (behind(gA) && behind(gB) && behind(gC)) return;
     gN = max(segmentsOf(precedes(gA, gB) ? gA : gB, precedes(gA, gB) ? gB : gA),
              max(segmentsOf(precedes(gB, gC) ? gB : gC, precedes(gB, gC) ? gC : gB),
                  segmentsOf(precedes(gA, gC) ? gA : gC, precedes(gA, gC) ? gC : gA)));

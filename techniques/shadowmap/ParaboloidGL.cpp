@@ -2,6 +2,7 @@
 #include "techniques/shadowmap/OmniLightsGL.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -13,14 +14,23 @@ namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-constexpr GLint kLightLocation = 8;     // shadowmap/paraboloid_depth.vert: position, hemisphere
-constexpr GLint kNearFarLocation = 12;  // shadowmap/paraboloid_depth.vert
-constexpr GLint kMaxAngleLocation = 13; // shadowmap/paraboloid_split.geom
-constexpr GLuint kMapUnit = 0;          // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
+constexpr GLint kLightLocation = 8;      // shadowmap/paraboloid_depth.vert: position, hemisphere
+constexpr GLint kNearFarLocation = 12;   // shadowmap/paraboloid_depth.vert
+constexpr GLint kMaxAngleLocation = 13;  // shadowmap/paraboloid_split.geom
+constexpr GLint kBeyondRimLocation = 14; // both depth stages
+constexpr GLuint kMapUnit = 0;           // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
 
 } // namespace
 
 ParaboloidGL::ParaboloidGL() : GlTechnique(Paraboloid::declaration()) {}
+
+float ParaboloidGL::beyondRim(int resolution, int pcf) {
+    // The lookup's footprint reaches pcf / 2 texels plus the bilinear one past its centre; one more
+    // for the half-texel chords of the cut. At the rim a map unit spans one radian, a texel 2 /
+    // resolution of both.
+    const float texels = 0.5f * float(pcf) + 2.0f;
+    return std::sin(texels * 2.0f / float(std::max(resolution, 1)));
+}
 
 glm::vec3 ParaboloidGL::hemisphereAxis(int half) {
     return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -47,6 +57,7 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
                                           base)
                       : nullptr;
     mMaxSegmentAngle = ParaboloidSplitting::maxSegmentAngle(int(p.getInt(P::kResolution)));
+    mBeyondRim = beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));
     Defines lit = ctx.defines(); // the depth passes have no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
@@ -85,6 +96,7 @@ void ParaboloidGL::renderHemispheres(FrameContext& ctx) {
             if (program) {
                 program->use();
                 glUniform2f(kNearFarLocation, o.point.nearZ, o.point.farZ);
+                glUniform1f(kBeyondRimLocation, mBeyondRim);
             }
         for (int half = 0; half < 2; ++half) {
             mMaps.beginLayer(2 * o.index + half);

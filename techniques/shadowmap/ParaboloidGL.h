@@ -63,6 +63,10 @@ public:
     /// The axis of hemisphere `half` (0 front: -Y, 1 back: +Y), as shaders/shadowmap/paraboloid_frame.glsl
     /// sets it up.
     static glm::vec3 hemisphereAxis(int half);
+    /// How far behind its plane each half's depth pass cuts the casters (the sine of the angle): the
+    /// map keeps a ring of pcf / 2 + 2 texels outside the unit disc, filled with the other half's
+    /// nearest edge, so that lookups at the light's height never filter in the cleared far depth.
+    static float beyondRim(int resolution, int pcf);
 
 private:
     void renderDepth(FrameContext& ctx);
@@ -82,6 +86,7 @@ private:
     size_t mCulled = 0;
     size_t mSplitDrawn = 0;
     float mMaxSegmentAngle = 0.0f;
+    float mBeyondRim = 0.0f;
     int mHemispheresRendered = 0;
     const Program* mFlatDepth = nullptr;       ///< shadowmap/depth.vert
     const Program* mParaboloidDepth = nullptr; ///< paraboloid_depth.vert
