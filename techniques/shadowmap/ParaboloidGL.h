@@ -27,8 +27,8 @@
 // (ParaboloidSplitting): those whose every edge spans at most sqrt(8 / resolution) rad seen from the
 // light (a chord within half a texel of its arc) go through the per-vertex stage as the paper draws
 // them; the others through a geometry stage (shaders/shadowmap/paraboloid_split.geom) that cuts each
-// triangle into n x n (n <= 24) and projects every grid vertex. Edges wider than 24 segments' worth
-// (86 degrees at 2048^2) are cut into 24 and keep a sagitta of (angle / 24)^2 * resolution / 16 texels.
+// triangle into n x n (n <= 13) and projects every grid vertex. Edges wider than 13 segments' worth
+// (46 degrees at 2048^2) are cut into 13 and keep a sagitta of (angle / 13)^2 * resolution / 16 texels.
 // The cube map's faces are perspective projections, under which lines stay lines and depth
 // interpolates exactly, so `cubemap` has none of this.
 //
