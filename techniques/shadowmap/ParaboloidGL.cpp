@@ -51,11 +51,11 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
     mFlatDepth = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
     mParaboloidDepth =
         &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "shadowmap/depth.frag", ""}, base);
-    mSplitDepth = p.getBool(Paraboloid::kSplit)
-                      ? &ctx.programs.get({"shadowmap/cube_depth.vert", "shadowmap/depth.frag",
-                                           "shadowmap/paraboloid_split.geom"},
-                                          base)
-                      : nullptr;
+    // Compiled whether or not `split` uses it: the sources compile() selects stay the same for both
+    // values, so the knob adds no shader permutation to build or test.
+    mSplitDepth = &ctx.programs.get(
+        {"shadowmap/cube_depth.vert", "shadowmap/depth.frag", "shadowmap/paraboloid_split.geom"}, base);
+    mSplit = p.getBool(Paraboloid::kSplit);
     mMaxSegmentAngle = ParaboloidSplitting::maxSegmentAngle(int(p.getInt(P::kResolution)));
     mBeyondRim = beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));
     Defines lit = ctx.defines(); // the depth passes have no shadow to apply
@@ -65,12 +65,12 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
     if (mLights.flatCount() > 0) lit["FLAT_MAPS"] = "";
     if (mLights.omniCount() > 0) lit["OMNI_MAPS"] = "";
     mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/paraboloid_lighting.frag", ""}, lit);
-    setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" +
-                      (mSplitDepth ? mSplitDepth->key() + "|" : std::string()) + mLighting->key());
+    setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mSplitDepth->key() + "|" +
+                      mLighting->key());
 }
 
 void ParaboloidGL::drawHemisphere(FrameContext& ctx, const glm::vec4& light) {
-    if (mSplitDepth &&
+    if (mSplit &&
         mSplitting.partition(glm::vec3(light), mMaxSegmentAngle, mKeep, mKeepPlain, mKeepSplit) > 0) {
         mSplitDepth->use();
         glUniform4fv(kLightLocation, 1, glm::value_ptr(light));
@@ -92,12 +92,11 @@ void ParaboloidGL::renderHemispheres(FrameContext& ctx) {
     glEnable(GL_CLIP_DISTANCE0);
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Omni) continue;
-        for (const Program* program : {mParaboloidDepth, mSplitDepth})
-            if (program) {
-                program->use();
-                glUniform2f(kNearFarLocation, o.point.nearZ, o.point.farZ);
-                glUniform1f(kBeyondRimLocation, mBeyondRim);
-            }
+        for (const Program* program : {mParaboloidDepth, mSplitDepth}) {
+            program->use();
+            glUniform2f(kNearFarLocation, o.point.nearZ, o.point.farZ);
+            glUniform1f(kBeyondRimLocation, mBeyondRim);
+        }
         for (int half = 0; half < 2; ++half) {
             mMaps.beginLayer(2 * o.index + half);
             const size_t kept =

@@ -90,7 +90,8 @@ private:
     int mHemispheresRendered = 0;
     const Program* mFlatDepth = nullptr;       ///< shadowmap/depth.vert
     const Program* mParaboloidDepth = nullptr; ///< paraboloid_depth.vert
-    const Program* mSplitDepth = nullptr;      ///< cube_depth.vert + paraboloid_split.geom; null: split=false
+    const Program* mSplitDepth = nullptr;      ///< cube_depth.vert + paraboloid_split.geom
+    bool mSplit = true;                        ///< property split: route wide casters through mSplitDepth
     const Program* mLighting = nullptr;
     Counters mCounters;
 };
