@@ -1,5 +1,6 @@
 // `cubemap` layered depth pass, vertex stage: world position only; the geometry stage projects it
-// into each face it may touch (cube_depth.geom).
+// into each face it may touch (cube_depth.geom). `paraboloid`'s splitting stage takes the same input
+// (paraboloid_split.geom).
 #include "common/instance.glsl"
 
 out vec4 vWorld;

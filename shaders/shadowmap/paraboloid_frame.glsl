@@ -21,3 +21,20 @@ vec2 paraboloidProject(vec3 d) {
 float paraboloidDepth(float dist, vec2 nearFar) {
     return (dist - nearFar.x) / (nearFar.y - nearFar.x);
 }
+
+// Light-to-point vector `v` (world) to hemisphere `half_`'s clip space, written homogeneously,
+// (d.x, d.y, z (1 + d.z), 1 + d.z), so that the GL's clipping interpolates in clip space and a triangle
+// crossing the hemisphere's plane is cut where `clipDistance` is 0. The cut lies `beyondRim` (the sine
+// of an angle) behind the plane: the map keeps a ring of texels just outside its unit disc, whose
+// directions belong to the other half, so that a fragment at the light's height, looked up at the
+// rim, finds casters in every texel of its filter footprint instead of the cleared far depth (the
+// light would leak along the seam). The depth passes' vertex and geometry stages share it.
+vec4 paraboloidClip(vec3 v, int half_, vec2 nearFar, float beyondRim, out float clipDistance) {
+    vec3 p = paraboloidFrame(v, half_);
+    float dist = length(p);
+    vec3 d = dist > 0.0 ? p / dist : vec3(0.0, 0.0, 1.0);
+    float w = 1.0 + d.z;
+    float z = 2.0 * paraboloidDepth(dist, nearFar) - 1.0;
+    clipDistance = d.z + beyondRim;
+    return vec4(d.xy, z * w, w);
+}

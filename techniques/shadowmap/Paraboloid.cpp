@@ -16,6 +16,10 @@ std::vector<PropertyDesc> declareProperties() {
         P::biasConstant(),
         P::biasSlope(),
         P::pcf("PCF kernel width: pcf x pcf taps one texel apart in map space"),
+        flag(Paraboloid::kSplit, "true",
+             "split the triangles of casters whose edges span more than the angle whose chord stays within "
+             "half a texel of its arc, in a geometry stage of the depth pass (true), or project per vertex "
+             "only, as the paper does (false: long edges bend, and shadow is lost at the halves' seam)"),
     };
 }
 

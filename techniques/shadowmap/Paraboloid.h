@@ -8,6 +8,8 @@
 namespace sb {
 
 struct Paraboloid {
+    /// Property: split wide caster triangles in the depth pass (techniques/shadowmap/ParaboloidSplitting.h).
+    static constexpr const char* kSplit = "split";
     static TechniqueInfo declaration();
 };
 

@@ -1,6 +1,9 @@
 #include "techniques/shadowmap/ParaboloidGL.h"
 #include "techniques/shadowmap/OmniLightsGL.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "techniques/shadowmap/DepthLightingFrame.h"
@@ -11,13 +14,23 @@ namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-constexpr GLint kLightLocation = 8;    // shadowmap/paraboloid_depth.vert: position, hemisphere
-constexpr GLint kNearFarLocation = 12; // shadowmap/paraboloid_depth.vert
-constexpr GLuint kMapUnit = 0;         // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
+constexpr GLint kLightLocation = 8;      // shadowmap/paraboloid_depth.vert: position, hemisphere
+constexpr GLint kNearFarLocation = 12;   // shadowmap/paraboloid_depth.vert
+constexpr GLint kMaxAngleLocation = 13;  // shadowmap/paraboloid_split.geom
+constexpr GLint kBeyondRimLocation = 14; // both depth stages
+constexpr GLuint kMapUnit = 0;           // shadowmap/omni_lighting.glsl, paraboloid_lighting.frag
 
 } // namespace
 
 ParaboloidGL::ParaboloidGL() : GlTechnique(Paraboloid::declaration()) {}
+
+float ParaboloidGL::beyondRim(int resolution, int pcf) {
+    // The lookup's footprint reaches pcf / 2 texels plus the bilinear one past its centre; one more
+    // for the half-texel chords of the cut. At the rim a map unit spans one radian, a texel 2 /
+    // resolution of both.
+    const float texels = 0.5f * float(pcf) + 2.0f;
+    return std::sin(texels * 2.0f / float(std::max(resolution, 1)));
+}
 
 glm::vec3 ParaboloidGL::hemisphereAxis(int half) {
     return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -27,6 +40,7 @@ void ParaboloidGL::setScene(const Scene& scene) {
     mLights.setScene(scene);
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);
+    mSplitting.setScene(scene);
 }
 
 void ParaboloidGL::compile(const CompileContext& ctx) {
@@ -37,6 +51,13 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
     mFlatDepth = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
     mParaboloidDepth =
         &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "shadowmap/depth.frag", ""}, base);
+    // Compiled whether or not `split` uses it: the sources compile() selects stay the same for both
+    // values, so the knob adds no shader permutation to build or test.
+    mSplitDepth = &ctx.programs.get(
+        {"shadowmap/cube_depth.vert", "shadowmap/depth.frag", "shadowmap/paraboloid_split.geom"}, base);
+    mSplit = p.getBool(Paraboloid::kSplit);
+    mMaxSegmentAngle = ParaboloidSplitting::maxSegmentAngle(int(p.getInt(P::kResolution)));
+    mBeyondRim = beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));
     Defines lit = ctx.defines(); // the depth passes have no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
@@ -44,24 +65,45 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
     if (mLights.flatCount() > 0) lit["FLAT_MAPS"] = "";
     if (mLights.omniCount() > 0) lit["OMNI_MAPS"] = "";
     mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/paraboloid_lighting.frag", ""}, lit);
-    setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mLighting->key());
+    setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mSplitDepth->key() + "|" +
+                      mLighting->key());
+}
+
+void ParaboloidGL::drawHemisphere(FrameContext& ctx, const glm::vec4& light) {
+    if (mSplit &&
+        mSplitting.partition(glm::vec3(light), mMaxSegmentAngle, mKeep, mKeepPlain, mKeepSplit) > 0) {
+        mSplitDepth->use();
+        glUniform4fv(kLightLocation, 1, glm::value_ptr(light));
+        glUniform1f(kMaxAngleLocation, mMaxSegmentAngle);
+        ctx.submitter.draw(DrawSet::Casters, mKeepSplit);
+        mSplitDrawn += size_t(std::count(mKeepSplit.begin(), mKeepSplit.end(), uint8_t(1)));
+        if (std::find(mKeepPlain.begin(), mKeepPlain.end(), uint8_t(1)) == mKeepPlain.end()) return;
+        mParaboloidDepth->use();
+        glUniform4fv(kLightLocation, 1, glm::value_ptr(light));
+        ctx.submitter.draw(DrawSet::Casters, mKeepPlain);
+        return;
+    }
+    mParaboloidDepth->use();
+    glUniform4fv(kLightLocation, 1, glm::value_ptr(light));
+    ctx.submitter.draw(DrawSet::Casters, mKeep);
 }
 
 void ParaboloidGL::renderHemispheres(FrameContext& ctx) {
-    mParaboloidDepth->use();
     glEnable(GL_CLIP_DISTANCE0);
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Omni) continue;
-        glUniform2f(kNearFarLocation, o.point.nearZ, o.point.farZ);
+        for (const Program* program : {mParaboloidDepth, mSplitDepth}) {
+            program->use();
+            glUniform2f(kNearFarLocation, o.point.nearZ, o.point.farZ);
+            glUniform1f(kBeyondRimLocation, mBeyondRim);
+        }
         for (int half = 0; half < 2; ++half) {
             mMaps.beginLayer(2 * o.index + half);
             const size_t kept =
                 mOmniCulling.cullHemisphere(o.point.position, o.point.farZ, hemisphereAxis(half), mKeep);
             mCulled += mOmniCulling.casters() - kept;
             if (kept == 0) continue; // the cleared half is the answer: nothing casts into it
-            glUniform4f(kLightLocation, o.point.position.x, o.point.position.y, o.point.position.z,
-                        float(half));
-            ctx.submitter.draw(DrawSet::Casters, mKeep);
+            drawHemisphere(ctx, glm::vec4(o.point.position, float(half)));
             ++mHemispheresRendered;
         }
     }
@@ -71,6 +113,7 @@ void ParaboloidGL::renderHemispheres(FrameContext& ctx) {
 void ParaboloidGL::renderDepth(FrameContext& ctx) {
     const PropertySet& p = properties();
     mCulled = 0;
+    mSplitDrawn = 0;
     mHemispheresRendered = 0;
     if (mMaps.empty()) return; // no light casts: no depth work at all
     DepthPassState state(mMaps.size(), float(p.getFloat(P::kBiasSlope)), float(p.getFloat(P::kBiasConstant)));
@@ -96,6 +139,7 @@ void ParaboloidGL::execute(FrameContext& ctx) {
                  {"shadow_map_texels", res * res * double(mMaps.layers())},
                  {"hemispheres_rendered", double(mHemispheresRendered)},
                  {"casters_culled", double(mCulled)},
+                 {"casters_split", double(mSplitDrawn)},
                  {"lights_skipped", double(mLights.skippedCount())},
                  {"lights_unshadowed", double(mLights.unshadowedCount())}};
 }

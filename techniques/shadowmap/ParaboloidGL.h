@@ -11,24 +11,33 @@
 // PCF n x n in map space). Two passes per light instead of the cube's six; casters are culled per
 // hemisphere: one wholly behind its plane, or wholly outside the range sphere, is not drawn into it.
 //
-// Known limit (the paper's own): the projection is non-linear, but it is applied per vertex and the
-// rasteriser joins the projected vertices by straight lines and interpolates their depths linearly.
-// Two errors follow, both growing with a triangle's angular size seen from the light:
-//  - a straight caster edge should map to a curve; drawn as its chord, the edge and its shadow move
-//    by the curve's sagitta (worst near the rim, d.z near 0): the shadow of a coarse square bows in;
+// The paper's limit, and what is done about it: the projection is non-linear, but applied per vertex
+// the rasteriser joins the projected vertices by straight lines and interpolates their depths
+// linearly. Three errors follow, all growing with a triangle's angular size seen from the light:
+//  - a straight caster edge should map to a circular arc; drawn as its chord, the edge and its shadow
+//    move by the arc's sagitta (worst near the rim, d.z near 0): the shadow of a coarse square bows in;
+//  - a triangle crossing the halves' plane is clipped there along a chord of the rim instead of the
+//    rim itself, so a band about the light's height is in neither half: the wall shadow of a pillar
+//    that spans the plane loses a band across its whole width (scenes/data/room.json: 7.79% of the
+//    'wall' view wrong, the cube 0.005%);
 //  - the distance to the light is not linear across a triangle: a flat face's middle is nearer
 //    than its vertices, the interpolated depth is too far, and light leaks through the middle of a
-//    large face (the shadow of a 5 x 5 slab made of one quad a face, 1.5 below the light, has a lit
-//    hole under the light: tests/OmniShadowGLTest, ParaboloidKnownLimit).
-// Finely tessellated casters are right (the same slab cut into 32 x 32 quads a face has no error off
-// the edge band), coarse ones are not: tessellation matters. The cube map's faces are perspective
-// projections, under which lines stay lines and depth interpolates exactly, so `cubemap` has neither.
+//    large face (tests/OmniShadowGLTest, ParaboloidKnownLimit, with split=false).
+// So with `split` (the default) each hemisphere's casters are sorted on the CPU
+// (ParaboloidSplitting): those whose every edge spans at most sqrt(8 / resolution) rad seen from the
+// light (a chord within half a texel of its arc) go through the per-vertex stage as the paper draws
+// them; the others through a geometry stage (shaders/shadowmap/paraboloid_split.geom) that cuts each
+// triangle into n x n (n <= 13) and projects every grid vertex. Edges wider than 13 segments' worth
+// (46 degrees at 2048^2) are cut into 13 and keep a sagitta of (angle / 13)^2 * resolution / 16 texels.
+// The cube map's faces are perspective projections, under which lines stay lines and depth
+// interpolates exactly, so `cubemap` has none of this.
 //
 // Spot and directional lights keep `shadowmap`'s perspective and orthographic maps (scenes/LightFit.h),
 // in further layers of the same array. A point light whose range reaches no caster gets no map and no
 // depth work (counter lights_skipped). Counters: draw_calls, triangles, shadow_map_texels (allocated),
 // hemispheres_rendered (halves drawn into: at least one caster kept), casters_culled (per pass:
-// casters not submitted, summed over hemispheres and flat maps), lights_skipped.
+// casters not submitted, summed over hemispheres and flat maps), casters_split (casters drawn through
+// the splitting stage, summed over hemispheres), lights_skipped.
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -39,6 +48,7 @@
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/shadowmap/Paraboloid.h"
+#include "techniques/shadowmap/ParaboloidSplitting.h"
 
 namespace sb {
 
@@ -53,22 +63,35 @@ public:
     /// The axis of hemisphere `half` (0 front: -Y, 1 back: +Y), as shaders/shadowmap/paraboloid_frame.glsl
     /// sets it up.
     static glm::vec3 hemisphereAxis(int half);
+    /// How far behind its plane each half's depth pass cuts the casters (the sine of the angle): the
+    /// map keeps a ring of pcf / 2 + 2 texels outside the unit disc, filled with the other half's
+    /// nearest edge, so that lookups at the light's height never filter in the cleared far depth.
+    static float beyondRim(int resolution, int pcf);
 
 private:
     void renderDepth(FrameContext& ctx);
     void renderHemispheres(FrameContext& ctx);
+    /// Draws mKeep's casters into the bound half: through the splitting geometry stage those whose
+    /// edges are too wide for the per-vertex projection, the rest per vertex.
+    void drawHemisphere(FrameContext& ctx, const glm::vec4& light);
     void renderLighting(FrameContext& ctx);
     int flatBase() const { return 2 * mLights.omniCount(); } ///< first layer of the flat maps
 
     OmniLightSet mLights;
     InstanceCulling mCulling;
     OmniCulling mOmniCulling;
+    ParaboloidSplitting mSplitting;
     DepthLayers mMaps; ///< GL_TEXTURE_2D_ARRAY: 2 * light + half, then the flat maps
-    std::vector<uint8_t> mKeep;
+    std::vector<uint8_t> mKeep, mKeepPlain, mKeepSplit;
     size_t mCulled = 0;
+    size_t mSplitDrawn = 0;
+    float mMaxSegmentAngle = 0.0f;
+    float mBeyondRim = 0.0f;
     int mHemispheresRendered = 0;
     const Program* mFlatDepth = nullptr;       ///< shadowmap/depth.vert
     const Program* mParaboloidDepth = nullptr; ///< paraboloid_depth.vert
+    const Program* mSplitDepth = nullptr;      ///< cube_depth.vert + paraboloid_split.geom
+    bool mSplit = true;                        ///< property split: route wide casters through mSplitDepth
     const Program* mLighting = nullptr;
     Counters mCounters;
 };

@@ -359,19 +359,48 @@ inline const HardCase kHardCases[] = {
      "cubemap:layered=false", 384, 0.47, 0.01, 4.2, 15, 3.8, "(the same numbers as layered)"},
     {"omni_paraboloid_jack_o_lantern", "scenes/data/jack_o_lantern.json", "mid", "paraboloid", 384, 0.45,
      0.01, 5.6, 24, 3.7,
-     "(0.151%, 0%; 1.87/8 = 8 px against 1/1.24): the shell crosses the halves' plane all round; the mouth "
+     "(0.111%, 0%; 1.94/5 = 5 px against 1/1.26, 2026-12-05; 0.151% projected per vertex only): the shell "
+     "crosses the halves' plane all round; the mouth "
      "(12..40 degrees below it) lies near the front half's rim, where its texels are smallest, so the fan "
      "on the ground is as sharp as the cube's; the hole rims are what a light turn moves"},
     {"omni_cubemap_point_light", "scenes/data/point_light.json", "far", "cubemap", 384, 0.24, 0.025, 3.2, 3,
      3,
      "(0.079%, 0.008% = 1 px off the edge; 1.07/0 (0/0)/1.01): the torch among the pillars, its range "
      "culling the far ones from the layered pass"},
-    {"omni_paraboloid_point_light", "scenes/data/point_light.json", "far", "paraboloid", 384, 0.85, 0.01, 3,
+    {"omni_paraboloid_point_light", "scenes/data/point_light.json", "far", "paraboloid", 384, 0.24, 0.01, 3,
      3, 3,
-     "(0.28%, 0% off the edge, false shadow 0.007%; 0.93/0/1.01): 3.5x the cube's error, all missing "
-     "shadow on the edge band: the crates (one quad a face) and pillars (24 segments) are coarse for the "
-     "paraboloid's per-vertex projection, their edges drawn as chords (its known limit: tessellation "
-     "matters; at --tess-factor 4, 0.072% against the cube's 0.065%)"},
+     "(0.065%, 0% off the edge, false shadow 0.007%; 1.00/0/1.01, 2026-12-05) [cubemap 0.079%; 0.28% "
+     "projected per vertex only]: the crates (one quad a face) and pillars (24 segments) are coarse for "
+     "the paraboloid's per-vertex projection; the depth pass splits their triangles until each segment's "
+     "chord stays within half a texel of its arc, so the cube's bound holds"},
+    // A point light inside a room (scenes/data/room.json, camera 'wall' facing the back wall): the
+    // pillar's faces (one quad each, from the floor to 2.5 above the light, 1.9 from it) cross the
+    // paraboloid halves' plane, and its shadow runs up the wall across the light's height.
+    {"omni_cubemap_room", "scenes/data/room.json", "wall", "cubemap", 384, 0.05, 0.01, 4, 3, 3,
+     "(0.0048%, 0% off the edge; 1.92 = 579/302 px / 0 (0/0: a point light has no direction to turn) / 1.00, "
+     "2026-12-05): the cube's faces are perspective projections, exact for straight edges: the answer "
+     "the paraboloid row is held to"},
+    {"omni_paraboloid_room", "scenes/data/room.json", "wall", "paraboloid", 384, 0.05, 0.01, 3, 3, 3,
+     "(0.0068%, 0% off the edge; 0.84/0/1.00, 2026-12-05) [cubemap 0.0048%, unsplit 7.73%]: the wide "
+     "casters' triangles are split in the depth pass, each edge into segments of at most 3.6 degrees "
+     "seen from the light (a chord within half a texel of its arc) up to 13 segments (the pillar's "
+     "97-degree edges in 7.4-degree ones, about 2 texels of sagitta), so nothing is lost at the halves' "
+     "seam; the cube's bound, 0.05% (10x its error, 1/150 of the unsplit error) and the off-edge floor "
+     "0.01%"},
+    {"omni_paraboloid_room_rim", "scenes/data/room.json", "near", "paraboloid", 384, 0.12, 0.01, 200, 30, 3,
+     "(0.038%, 0% off the edge; 68 / 5 px / 1.00 raw counts, the reference changing none, 2026-12-05) "
+     "[cubemap 0%]: close up on the pillar's wall shadow at the light's height, which the lookups take "
+     "from the halves' rims; without the ring of texels drawn past the rim (0.395%, 0.361% off the edge) "
+     "a dotted line of light crosses the shadow there, where the filter reaches the cleared texels "
+     "outside the disc. What is left is the staircase of the shadow's vertical edge, which a quarter "
+     "pixel camera shift moves (68 of 147k pixels)"},
+    {"omni_paraboloid_room_unsplit", "scenes/data/room.json", "wall", "paraboloid:split=false", 384, 100, 100,
+     1e9, 1e9, 1e9,
+     "negative control (7.73%, 7.60% off the edge band, 2026-12-05): projected per vertex only (the paper's "
+     "method), the pillar's faces are clipped at the halves' plane along a chord of the rim and drawn as "
+     "chords: a band of the pillar's wall shadow about the light's height is lost across its whole width; "
+     "the harness must see it",
+     0.05f, 1.0},
     {"omni_cubemap_seam_16", "omni_cube_seam", "seam", "cubemap:resolution=16", 384, 100, 100, 1e9, 1e9, 1e9,
      "negative control (3.50% off the edge band): 16^2 faces put a texel of 0.2 rad on the sphere, the "
      "shadow turns into blocks; the harness must see the map's resolution",
