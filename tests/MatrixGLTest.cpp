@@ -11,8 +11,10 @@
 #include <algorithm>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "TestSupport.h"
+#include "bench/golden/GoldenCommand.h"
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
@@ -107,6 +109,38 @@ TEST(MatrixCheck, ChangedGoldenLooseBoundAndMissingGoldenAreCaught) {
         for (std::string line; std::getline(lines, line);)
             EXPECT_NE(line.find(injected.at(technique)), std::string::npos) << cell << ": " << line;
     }
+}
+
+} // namespace
+
+namespace {
+
+// An update of one technique on one scene rewrites that technique's cells only: every other cell of
+// bounds.json keeps its rule, bound and measured value exactly (it once came back with measured 0).
+TEST(MatrixUpdate, APartialUpdateKeepsEveryOtherCellAsItWas) {
+    namespace fs = std::filesystem;
+    const std::string dir = test::freshTestDir("matrix-update");
+    fs::copy(std::string(SB_SOURCE_DIR) + "/results/goldens", dir, fs::copy_options::recursive);
+    const nlohmann::json before = nlohmann::json::parse(test::readFile(dir + "/bounds.json"));
+    std::vector<std::string> args = {"golden",  "--update",     "--dir",       dir,
+                                     "--scene", "sphere_plane", "--technique", "none"};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    testing::internal::CaptureStdout();
+    const int code = GoldenCommand::main(int(argv.size()), argv.data());
+    const std::string out = testing::internal::GetCapturedStdout();
+    ASSERT_EQ(code, 0) << out;
+    const nlohmann::json after = nlohmann::json::parse(test::readFile(dir + "/bounds.json"));
+    ASSERT_EQ(after["cells"].size(), before["cells"].size());
+    size_t kept = 0;
+    for (const auto& [cell, entry] : before["cells"].items()) {
+        if (cell.rfind("none/sphere_plane/", 0) == 0) continue;
+        EXPECT_EQ(after["cells"][cell], entry) << cell;
+        ++kept;
+    }
+    EXPECT_GT(kept, 100u); // the matrix's other cells, not an empty file
+    // none's own cell: no shadow is judged exactly, so its rewritten value is the committed one.
+    EXPECT_EQ(after["cells"]["none/sphere_plane/light0"], before["cells"]["none/sphere_plane/light0"]);
 }
 
 } // namespace

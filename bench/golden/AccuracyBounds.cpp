@@ -242,6 +242,7 @@ std::map<std::string, AccuracyBound> AccuracyBounds::read(const std::string& pat
         b.max = j.value("max", 0.0);
         b.min = j.value("min", 0.0);
         b.why = j.value("why", "");
+        b.recorded = j.value("measured", 0.0);
         out[name] = std::move(b);
     }
     return out;

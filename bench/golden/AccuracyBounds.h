@@ -32,6 +32,9 @@ struct AccuracyBound {
     double min = 0.0; ///< the no_shadow rule pins both ends
     std::string rule; ///< the rule's name, or "exception"
     std::string why;
+    /// The 'measured' value bounds.json holds for the cell (AccuracyBounds::read), so that an update of
+    /// some scenes or techniques writes the other cells back as they were, not as 0.
+    double recorded = 0.0;
     bool judged() const { return !metric.empty(); }
     /// The value of `metric` in `accuracy`.
     double measured(const CellAccuracy& accuracy) const;

@@ -200,7 +200,7 @@ void writeBounds(const std::string& dir,
     for (const auto& [name, entry] : fresh) kept.erase(name);
     for (const auto& [name, b] : kept) {
         bounds.push_back(b);
-        measured.push_back(0.0);
+        measured.push_back(b.recorded); // as measured when it was last written
     }
     for (const auto& [name, entry] : fresh) {
         bounds.push_back(entry.first);
