@@ -3,7 +3,10 @@
 // fit), so at a floor point p the distance to the proxy is |p - c| - R, the direction the shadow is
 // cast along is (p - c) / |p - c|, and Listings 1.3 and 1.4 give the visibility in closed form:
 //   v = 1 - clamp(pow(1 - min(d / offset, 1), falloff) * shadow * clamp(dot(L, n), cutoff, 1), 0, 1).
-// Every floor pixel is judged at the world position unprojected from the depth buffer.
+// Every floor pixel is judged at the world position unprojected from the depth buffer. The closed form
+// is Listing 1.4 as printed (modulate=on); the default (modulate=rays) keeps that value only where the
+// ray towards the light passes the proxy, which the hard case proxy_grazing_poles (tests/hard/HardCases.h)
+// holds against the reference.
 // Tolerance 2e-3: the position the test unprojects and the one the rasteriser interpolates agree to
 // ~1e-5 units (float matrices, 24-bit depth at 8 units), which moves v by ~1e-5 / offset; the rest is
 // headroom for the shader's float arithmetic. A wrong sign of the modulation, a missing exponent or a
@@ -98,7 +101,7 @@ TEST(ProxyGLTest, ModulatedShadowMatchesTheClosedForm) {
     Shading s;
     s.offset = 2.0;
     int shadowed = 0;
-    const Frame grid = render(scene, "proxy:offset=2");
+    const Frame grid = render(scene, "proxy:offset=2:modulate=on");
     EXPECT_LT(worstError(grid, 0, kTravel, s, &shadowed), 2e-3);
     // The halo reaches the floor (d = 0.7 under the ball against offset 2): thousands of pixels.
     EXPECT_GT(shadowed, 1000);
@@ -108,10 +111,54 @@ TEST(ProxyGLTest, ModulatedShadowMatchesTheClosedForm) {
             EXPECT_EQ(grid.visibility[i * 4], 1.0f);
         }
     // grid=off tests the same proxy in every fragment: the same image, bit for bit.
-    const Frame brute = render(scene, "proxy:offset=2:grid=false");
+    const Frame brute = render(scene, "proxy:offset=2:modulate=on:grid=false");
     EXPECT_EQ(grid.visibility, brute.visibility);
     EXPECT_NE(grid.permutation.find("PROXY_GRID"), std::string::npos);
     EXPECT_EQ(brute.permutation.find("PROXY_GRID"), std::string::npos);
+}
+
+/// modulate=rays (the default) at floor point p: Listing 1.4's shadow times how much the ball hides the
+/// light along the ray towards it, u = -travel. The ray's closest approach to the centre is at
+/// t = max(0, (c - p).u), missing the ball by m = |p + t u - c| - R: hidden (1) for m <= 0, else
+/// 1 - clamp(m / (tan(penumbra) t)), the shader's miss ratio at that point (for a sphere its nearest).
+double expectedRays(const glm::dvec3& p, const glm::dvec3& travel, const Shading& s, double penumbraDeg) {
+    const glm::dvec3 c(0.0, kHeight, 0.0), u = -glm::normalize(travel);
+    const double t = std::max(0.0, glm::dot(c - p, u));
+    const double m = glm::length(p + t * u - c) - kRadius;
+    const double hidden =
+        m <= 0.0
+            ? 1.0
+            : (t > 0.0 ? 1.0 - std::clamp(m / (std::tan(glm::radians(penumbraDeg)) * t), 0.0, 1.0) : 0.0);
+    return 1.0 - std::clamp((1.0 - expected(p, travel, s)) * hidden, 0.0, 1.0);
+}
+
+TEST(ProxyGLTest, RaysKeepTheHaloWhereTheBallHidesTheLight) {
+    // Every floor pixel against the closed form above (tolerance 2e-3, as the listing's test: the
+    // unprojected position's error moves v by ~1e-5). The default penumbra (10 degrees) and a narrow
+    // one; the halo Listing 1.4 alone puts where the ray passes the ball by more than the penumbra is
+    // gone (hundreds of pixels lit that the listing darkens).
+    const std::string scene = writeScene(test::freshTestDir("proxy"), kOneLight, "[]");
+    Shading s;
+    s.offset = 2.0;
+    const Frame listing = render(scene, "proxy:offset=2:modulate=on");
+    for (const double penumbra : {10.0, 2.0}) {
+        const Frame f = render(scene, "proxy:offset=2:penumbra=" + std::to_string(penumbra));
+        double worst = 0.0;
+        int hidden = 0, cleared = 0;
+        for (size_t i = 0; i < f.world.size(); ++i) {
+            if (!isFloor(f.world[i])) continue;
+            const double v = f.visibility[i * 4];
+            ASSERT_TRUE(std::isfinite(v));
+            hidden += v < 0.99;
+            cleared += v > 0.999 && listing.visibility[i * 4] < 0.99;
+            worst = std::max(worst, std::abs(v - expectedRays(glm::dvec3(f.world[i]), kTravel, s, penumbra)));
+        }
+        std::cout << "penumbra " << penumbra << ": worst error " << worst << ", " << hidden << " shadowed, "
+                  << cleared << " lit that Listing 1.4 alone darkens\n";
+        EXPECT_LT(worst, 2e-3) << penumbra;
+        EXPECT_GT(hidden, 200) << penumbra;
+        EXPECT_GT(cleared, 500) << penumbra;
+    }
 }
 
 TEST(ProxyGLTest, FalloffCutoffAndTheListingAsPrinted) {
@@ -119,16 +166,17 @@ TEST(ProxyGLTest, FalloffCutoffAndTheListingAsPrinted) {
     int shadowed = 0;
     Shading a;
     a.offset = 1.5, a.falloff = 2.5, a.shadow = 0.8, a.cutoff = 0.3;
-    EXPECT_LT(worstError(render(scene, "proxy:offset=1.5:falloff=2.5:shadow=0.8:cutoff=0.3"), 0, kTravel, a,
-                         &shadowed),
+    EXPECT_LT(worstError(render(scene, "proxy:offset=1.5:falloff=2.5:shadow=0.8:cutoff=0.3:modulate=on"), 0,
+                         kTravel, a, &shadowed),
               2e-3);
     EXPECT_GT(shadowed, 500);
     Shading b = a;
     b.exponentOnFactor = true;
-    EXPECT_LT(
-        worstError(render(scene, "proxy:offset=1.5:falloff=2.5:shadow=0.8:cutoff=0.3:exponent_on=factor"), 0,
-                   kTravel, b, &shadowed),
-        2e-3);
+    EXPECT_LT(worstError(
+                  render(scene,
+                         "proxy:offset=1.5:falloff=2.5:shadow=0.8:cutoff=0.3:exponent_on=factor:modulate=on"),
+                  0, kTravel, b, &shadowed),
+              2e-3);
     Shading c;
     c.offset = 2.0, c.modulate = false;
     EXPECT_LT(worstError(render(scene, "proxy:offset=2:modulate=off"), 0, kTravel, c, &shadowed), 2e-3);
@@ -155,7 +203,7 @@ TEST(ProxyGLTest, EachColouredLightGetsItsOwnModulatedShadow) {
                    R"([{"type": "directional", "direction": [0.4, -1, 0.1], "color": [1, 0.5, 0.2]},
                                              {"type": "directional", "direction": [-0.6, -1, -0.3], "color": [0.2, 0.4, 1]}])",
                    "[]");
-    const Frame f = render(scene, "proxy:offset=2");
+    const Frame f = render(scene, "proxy:offset=2:modulate=on");
     Shading s;
     s.offset = 2.0;
     int shadowed0 = 0, shadowed1 = 0;
@@ -253,7 +301,7 @@ double closeUp(const char* camera, double x, double z, double height, double* st
     Harness h(
         test::quickConfig(std::string(SB_SOURCE_DIR) + "/tests/hard/scenes/proxy_ball.json", camera, kSize));
     ProxyGL t;
-    t.properties().apply(TechniqueSpec::parse("proxy:offset=2").properties);
+    t.properties().apply(TechniqueSpec::parse("proxy:offset=2:modulate=on").properties);
     h.prepare(t);
     h.renderFrame(t);
     const std::vector<float> vis = h.targets().readVisibilityRGBA32F();
@@ -370,7 +418,7 @@ TEST(ProxyGLTest, ReceiverOnAProxyFaceGetsTheHaloNotAHardShadow) {
     // with modulation (0 without), under a caster the chapter says casts infinitely soft shadows.
     const std::string scene = writeContactScene(test::freshTestDir("proxy"));
     for (const bool modulate : {true, false}) {
-        const std::string spec = modulate ? "proxy:offset=0.5" : "proxy:offset=0.5:modulate=off";
+        const std::string spec = modulate ? "proxy:offset=0.5:modulate=on" : "proxy:offset=0.5:modulate=off";
         const Frame f = render(scene, spec);
         double worst = 0.0;
         int footprint = 0, deepLit = 0, deep = 0;
@@ -401,7 +449,7 @@ TEST(ProxyGLTest, NoSeamAcrossTheContactLine) {
     // footprint was 0 throughout, continuous with the halo outside at distance 0 but a hard full
     // shadow (the test above).
     const std::string scene = writeContactScene(test::freshTestDir("proxy"));
-    for (const char* spec : {"proxy", "proxy:modulate=off"}) {
+    for (const char* spec : {"proxy:modulate=on", "proxy", "proxy:modulate=off"}) {
         const Frame f = render(scene, spec);
         auto at = [&](int x, int y) { return size_t(y) * kSize + size_t(x); };
         auto nearEdge = [&](const glm::vec4& w) {

@@ -72,13 +72,6 @@ constexpr Exception kExceptions[] = {
      "the blob is the ellipse through the projected corners of the caster's bounding box, pi/2 times the "
      "box's footprint, while a teapot's shadow under this high sun is smaller than its box: the blobs' "
      "dark cores cover several times the ground the teapots shadow (2.1% of the judged samples)"},
-    {"proxy/teapot/light0",
-     "ShadowProxies darken the ground around a proxy by distance and direction, not along the light's "
-     "rays: under this high sun the true shadows hide under the teapots (2.1% of the judged samples), "
-     "and the halo around each teapot costs more than the shadow it adds"},
-    {"proxy/synthetic_draws/light0",
-     "a dense field of small casters (10000 quads): each proxy's halo reaches past its quad's shadow on "
-     "every side, and together the halos outweigh the shadows"},
     {"vsm/synthetic_draws/light0",
      "10000 quads of 0.2 units with empty space around each, ~3 texels of the default 1024^2 map: the "
      "3-texel "

@@ -8,7 +8,9 @@
 // (exitLocal): soft and continuous there too, never a hard full shadow.
 //
 // Defines: LIGHT_COUNT; PROXY_GRID (else every proxy in view is tested: grid=off); PROXY_MODULATE
-// (Listing 1.4, only when the scene has a light to modulate towards); PROXY_BLEED (only when the
+// (Listing 1.4, only when the scene has a light to modulate towards); PROXY_RAYS (with PROXY_MODULATE:
+// the modulated halo kept only where the ray towards the light passes through or near the proxy,
+// rayShadow); PROXY_BLEED (only when the
 // scene asks for colour bleeding); PROXY_EXPONENT_ON_FACTOR (Listing 1.3 as printed: the exponent
 // raises the shadow factor, not the attenuation).
 #include "common/frame.glsl"
@@ -47,6 +49,9 @@ layout(location = 23) uniform int uProxyCount; // proxies in view
 #endif
 layout(location = 16) uniform vec4 uShading;   // x: ProxyOffset, y: shadow factor, z: falloff exponent, w: cutoff
 layout(location = 18) uniform float uStart;    // distance from the surface where the falloff starts
+#ifdef PROXY_RAYS
+layout(location = 19) uniform float uPenumbra; // tan of the penumbra's half-angle seen from the receiver
+#endif
 #ifdef PROXY_BLEED
 layout(location = 17) uniform float uBleed;    // amount of colour bleeding
 #endif
@@ -168,6 +173,86 @@ vec3 lightTravel(int i, vec3 p) {
 }
 #endif
 
+#ifdef PROXY_RAYS
+// Narrows [lo, hi] to the ray's parameters where its coordinate o + t d lies in [-1, 1] (one slab of
+// the unit shape); a ray parallel to the slab keeps it whole or empties it.
+void clipSlab(float o, float d, inout float lo, inout float hi) {
+    if (abs(d) < 1e-12) {
+        if (abs(o) > 1.0) hi = -1.0;
+        return;
+    }
+    float a = (-1.0 - o) / d, b = (1.0 - o) / d;
+    lo = max(lo, min(a, b));
+    hi = min(hi, max(a, b));
+}
+
+// Narrows [lo, hi] to where |o + t d| <= 1 (o, d: 2D for the cylinder's side, 3D for the sphere).
+// A ray that misses the round shape narrows it to its point nearest the axis or centre (an empty
+// interval unless that point is what [lo, hi] holds), the candidate for the miss distance.
+void clipRound(float oo, float od, float dd, inout float lo, inout float hi) {
+    if (dd < 1e-24) {
+        if (oo > 1.0) hi = -1.0;
+        return;
+    }
+    float disc = od * od - dd * (oo - 1.0);
+    float root = sqrt(max(disc, 0.0));
+    lo = max(lo, (-od - root) / dd);
+    hi = min(hi, disc < 0.0 ? -1.0 : (-od + root) / dd);
+    if (disc < 0.0) lo = -od / dd;
+}
+
+// The ray o + t d, 0 <= t <= reach, against the unit shape (exact: slabs and quadrics): its
+// parameters inside the shape are [lo, hi], empty (lo > hi) when it misses; then the gap between
+// where it leaves one bound and enters another is where it passes nearest.
+vec2 rayInterval(int shape, vec3 o, vec3 d, float reach) {
+    float lo = 0.0, hi = reach;
+    if (shape == 0) {
+        clipRound(dot(o, o), dot(o, d), dot(d, d), lo, hi);
+    } else if (shape == 1) {
+        clipSlab(o.x, d.x, lo, hi);
+        clipSlab(o.y, d.y, lo, hi);
+        clipSlab(o.z, d.z, lo, hi);
+    } else {
+        clipRound(dot(o.xy, o.xy), dot(o.xy, d.xy), dot(d.xy, d.xy), lo, hi);
+        clipSlab(o.z, d.z, lo, hi);
+    }
+    return vec2(lo, hi);
+}
+
+// World distance from the ray's point at parameter t to the proxy, over the penumbra's width there.
+float missRatio(Proxy p, int shape, vec3 origin, vec3 dir, vec3 pos, vec3 toLight, float t) {
+    if (!(t > 0.0)) return 1e30;
+    vec3 closest = closestLocal(shape, origin + dir * t);
+    return length((p.toWorld * vec4(closest, 1.0)).xyz - (pos + toLight * t)) / (uPenumbra * t);
+}
+
+// How much of the light the proxy hides from world point `pos` along the ray towards it (`toLight`,
+// unit, `reach` long): 1 where the ray passes through the proxy (exact test in the unit shape's
+// space), else falling to 0 where it misses by uPenumbra times the distance along the ray (the
+// penumbra of a light of that angular radius: hard at contact, soft far from the caster). Listing
+// 1.4's egg only weighs the halo by the direction from the proxy; under a low light a thin caster's
+// shadow is a long thin streak, and the egg darkens a half disc round its foot that the light
+// reaches. The miss distance is taken at the ends and middle of the gap the clipping leaves (where
+// a near miss passes nearest an edge or the round side), continuous with the hit as the gap closes.
+float rayShadow(Proxy p, int shape, vec3 pos, vec3 toLight, float reach) {
+    vec3 origin = (p.toLocal * vec4(pos, 1.0)).xyz;
+    vec3 dir = mat3(p.toLocal) * toLight;
+    if (touchingLocal(shape, origin)) return 1.0;
+    vec2 span = rayInterval(shape, origin, dir, reach);
+    if (span.x <= span.y) return 1.0;
+    float a = clamp(span.y, 0.0, reach), b = clamp(span.x, 0.0, reach);
+    float ratio = min(missRatio(p, shape, origin, dir, pos, toLight, a),
+                      min(missRatio(p, shape, origin, dir, pos, toLight, b),
+                          missRatio(p, shape, origin, dir, pos, toLight, 0.5 * (a + b))));
+    return 1.0 - clamp(ratio, 0.0, 1.0);
+}
+
+// Where the ray towards light i from `pos` ends: a directional light's never does.
+float lightReach(int i, vec3 pos) {
+    return uLightPos[i].w == 0.0 ? 1e30 : length(uLightPos[i].xyz - pos);
+}
+#endif
+
 // Listing 1.3: 1 at the surface, 0 at ProxyOffset; ProxyOffset <= 0 shrinks the volume to the surface
 // (no division by zero). The exponent shapes the attenuation (section 1.2: "the falloff of the
 // shadows as the exponent to the attenuation function") unless PROXY_EXPONENT_ON_FACTOR reproduces the
@@ -226,7 +311,12 @@ void applyProxy(int index, int self, vec3 receiverNormal, inout Accum acc) {
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec3 travel = lightTravel(i, surface);
         // Listing 1.4: the shadow stretched away from the light (normal along the light's travel) ...
-        acc.visibility[i] *= 1.0 - clamp(shadow * clamp(dot(travel, n), uShading.w, 1.0), 0.0, 1.0);
+        float lobe = clamp(dot(travel, n), uShading.w, 1.0);
+#ifdef PROXY_RAYS
+        // ... where the light's ray passes the proxy (past the chapter: the long thin streak of a low light).
+        if (lobe > 0.0) lobe *= rayShadow(p, shape, vWorldPos, -lightTravel(i, vWorldPos), lightReach(i, vWorldPos));
+#endif
+        acc.visibility[i] *= 1.0 - clamp(shadow * lobe, 0.0, 1.0);
 #ifdef PROXY_BLEED
         // ... and the bleeding towards it, the same with the normal reversed.
         acc.bleed += bleed * max(clamp(dot(-travel, n), uShading.w, 1.0), 0.0) * p.diffuse.rgb * uLightColor[i].rgb;

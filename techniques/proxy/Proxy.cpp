@@ -24,9 +24,12 @@ std::vector<PropertyDesc> declareProperties() {
         real(Proxy::kBleed, "0.5", 0, 1, "amount of colour bleeding at the surface"),
         choice(Proxy::kBleeding, "auto", {"auto", "on", "off"},
                "colour bleeding compiled in: auto = when the scene asks for colour_bleeding"),
-        choice(Proxy::kModulate, "auto", {"auto", "on", "off"},
-               "egg-shaped volumes towards/away from each light (Listing 1.4): auto = when the scene has "
-               "lights"),
+        choice(Proxy::kModulate, "auto", {"auto", "rays", "on", "off"},
+               "egg-shaped volumes towards/away from each light (Listing 1.4): on = as printed; rays = kept "
+               "where the ray towards the light passes the proxy (a low light's long thin shadow); auto = "
+               "rays when the scene has lights"),
+        real(Proxy::kPenumbra, "10", 0.01, 45,
+             "modulate=rays: the penumbra's half-angle (degrees) round the ray towards the light"),
         flag(Proxy::kGrid, "true",
              "screen-space IndexMap (true) or every proxy in view tested by every fragment"),
         integer(Proxy::kCells, "64", 1, 1024, "IndexMap grid cells along x and along y"),

@@ -17,6 +17,7 @@ struct Proxy {
     static constexpr const char* kGrid = "grid";
     static constexpr const char* kModulate = "modulate";
     static constexpr const char* kOffset = "offset";
+    static constexpr const char* kPenumbra = "penumbra";
     static constexpr const char* kProxies = "proxies";
     static constexpr const char* kShadow = "shadow";
     static constexpr const char* kStart = "start";

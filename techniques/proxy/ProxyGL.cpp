@@ -1,6 +1,7 @@
 #include "techniques/proxy/ProxyGL.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "core/Error.h"
@@ -10,8 +11,8 @@ namespace sb {
 namespace {
 // shaders/proxy/lit.frag
 constexpr GLuint kProxyBinding = 2, kIndexBinding = 3;
-constexpr GLint kShadingLocation = 16, kBleedLocation = 17, kStartLocation = 18, kCellsLocation = 20,
-                kViewportLocation = 21, kCapacityLocation = 22, kCountLocation = 23;
+constexpr GLint kShadingLocation = 16, kBleedLocation = 17, kStartLocation = 18, kPenumbraLocation = 19,
+                kCellsLocation = 20, kViewportLocation = 21, kCapacityLocation = 22, kCountLocation = 23;
 
 /// auto|on|off -> on, given what `auto` means for this scene.
 bool resolve(const std::string& value, bool automatic) {
@@ -50,7 +51,9 @@ void ProxyGL::setScene(const Scene& scene) {
     mUseGrid = properties().getBool(Proxy::kGrid);
     mCells = int(properties().getInt(Proxy::kCells));
     mCapacity = int(properties().getInt(Proxy::kCapacity));
-    mModulate = resolve(properties().getEnum(Proxy::kModulate), !scene.lights.empty());
+    const std::string modulate = properties().getEnum(Proxy::kModulate);
+    mModulate = modulate == "auto" ? !scene.lights.empty() : modulate != "off";
+    mRays = mModulate && modulate != "on";
     mBleed =
         resolve(properties().getEnum(Proxy::kBleeding), hasEffect(scene.effects, Effect::ColourBleeding));
     mWarnedOverflow = false;
@@ -61,6 +64,7 @@ void ProxyGL::compile(const CompileContext& ctx) {
     d["LIGHT_COUNT"] = std::to_string(mLights);
     if (mUseGrid) d["PROXY_GRID"] = "";
     if (mModulate) d["PROXY_MODULATE"] = "";
+    if (mRays) d["PROXY_RAYS"] = "";
     if (mBleed) d["PROXY_BLEED"] = "";
     if (properties().getEnum(Proxy::kExponentOn) == "factor") d["PROXY_EXPONENT_ON_FACTOR"] = "";
     mProgram = &ctx.programs.get({"common/scene.vert", "proxy/lit.frag", ""}, d);
@@ -117,6 +121,7 @@ void ProxyGL::execute(FrameContext& ctx) {
     glUniform4f(kShadingLocation, float(p.getFloat(Proxy::kOffset)), float(p.getFloat(Proxy::kShadow)),
                 float(p.getFloat(Proxy::kFalloff)), float(p.getFloat(Proxy::kCutoff)));
     glUniform1f(kStartLocation, float(p.getFloat(Proxy::kStart)));
+    if (mRays) glUniform1f(kPenumbraLocation, std::tan(glm::radians(float(p.getFloat(Proxy::kPenumbra)))));
     if (mBleed) glUniform1f(kBleedLocation, float(p.getFloat(Proxy::kBleed)));
     if (mUseGrid) {
         glUniform2i(kCellsLocation, mCells, mCells);

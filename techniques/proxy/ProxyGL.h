@@ -57,7 +57,7 @@ private:
     std::vector<GpuProxy> mRecords;    ///< per entry of mProxies
     std::vector<GpuProxy> mInView;     ///< this frame's upload, in the grid's numbering
     ProxyIndexGrid mGrid;
-    bool mUseGrid = true, mModulate = false, mBleed = false, mWarnedOverflow = false;
+    bool mUseGrid = true, mModulate = false, mRays = false, mBleed = false, mWarnedOverflow = false;
     int mLights = 1, mCells = 64, mCapacity = 16;
     GLuint mProxyBuffer = 0, mIndexBuffer = 0;
     size_t mProxyCapacity = 0, mIndexCapacity = 0; ///< buffer sizes in elements

@@ -5,6 +5,7 @@
 // of the evaluation, the line printed and every assertion come from here.
 #include <cstdint>
 #include <iostream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -28,13 +29,25 @@ inline AccuracyOptions hardCaseOptions(const HardCase& c, HardCaseStability stab
     return options;
 }
 
+/// Holds row `c`'s RMSE (r.soft) to that of drawing no shadow on the same judged samples of `judged`
+/// (the evaluator's last frame: visibility 1 against its reference) plus the row's maxRmseOverNone.
+inline void expectNoWorseThanNoShadow(const HardCase& c, const AccuracyResult& r,
+                                      const AccuracyEvaluator::Sample* judged) {
+    ASSERT_NE(judged, nullptr) << c.name << ": the RMSE bound needs the judged frame";
+    const std::vector<float> lit(judged->reference.size(), 1.0f);
+    const double none = AccuracyMetrics::soft(lit, judged->reference, judged->mask).rmse;
+    std::cout << c.name << ": RMSE " << r.soft.rmse << ", no shadow's " << none << "\n";
+    EXPECT_LE(r.soft.rmse, none + c.maxRmseOverNone) << c.why;
+}
+
 /// Prints one line of what `r` measured for row `c` (`api` after the row's name, e.g. " (Vulkan)"; the
 /// stability measures only when Judged) and holds `r` to the row's bounds: more than 1/20 of the pixels
 /// judged, no NaN, Inf or out-of-range value, error with and without the edge band, false shadow, the
-/// negative controls' lower bound and, when `stability` is Judged, camera gain, light gain and flicker.
+/// negative controls' lower bound, the RMSE against no shadow's where the row asks (`frame`: the
+/// evaluator's last frame) and, when `stability` is Judged, camera gain, light gain and flicker.
 /// Every bound's failure carries the row's `why`. Non-fatal (EXPECT): a row reports every bound it breaks.
 inline void expectHardCaseBounds(const HardCase& c, const AccuracyResult& r, HardCaseStability stability,
-                                 const char* api = "") {
+                                 const char* api = "", const AccuracyEvaluator::Sample* frame = nullptr) {
     const bool judged = stability == HardCaseStability::Judged;
     std::cout << c.name << api << ": evaluated " << r.hard.evaluated << ", wrong " << r.hard.wrongPct
               << "% (no edge " << r.hard.wrongNoEdgePct << "%, false shadow " << r.hard.falseShadowPct
@@ -57,6 +70,7 @@ inline void expectHardCaseBounds(const HardCase& c, const AccuracyResult& r, Har
     }
     EXPECT_GE(r.hard.wrongNoEdgePct, c.minWrongNoEdgePct) << c.why;
     EXPECT_LE(r.hard.falseShadowPct, c.maxFalseShadowPct) << c.why;
+    if (c.maxRmseOverNone >= 0.0) expectNoWorseThanNoShadow(c, r, frame);
 }
 
 } // namespace sb::test

@@ -27,7 +27,7 @@ TEST_P(HardCases, BoundsHold) {
     AccuracyEvaluator evaluator(harness);
     const AccuracyResult r =
         evaluator.evaluate(*technique, test::hardCaseOptions(c, test::HardCaseStability::Judged));
-    test::expectHardCaseBounds(c, r, test::HardCaseStability::Judged);
+    test::expectHardCaseBounds(c, r, test::HardCaseStability::Judged, "", evaluator.lastJudged());
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, HardCases, ::testing::ValuesIn(test::kHardCases),
