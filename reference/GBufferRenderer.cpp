@@ -98,6 +98,9 @@ GBuffer GBufferRenderer::render(Submitter& submitter, ProgramCache& programs, co
     SavedState saved;
     draw(submitter, programs, viewProj);
     GBuffer out = readBack();
+    // The clip-space point (0, 0, -1, 0) is the eye of a perspective projection (its w row maps the
+    // eye to w = 0) and the direction towards the viewer of an orthographic one: one form for both.
+    out.viewer = glm::inverse(viewProj) * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f);
     saved.restore();
     return out;
 }

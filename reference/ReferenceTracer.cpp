@@ -100,8 +100,10 @@ struct TraceJob {
     std::atomic<int> next{0};
     std::atomic<uint64_t> rayCount{0};
 
+    /// The seen side's normal (ReferenceTracer::seenNormalAt).
     glm::vec3 normal(size_t pixel) const {
-        return embree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]);
+        return gbuffer.seenNormal(pixel,
+                                  embree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]));
     }
     /// False for a light that casts no shadow and on an instance that receives none: nothing
     /// occludes the light there (the techniques' common/lighting.glsl, shadowApplies).
@@ -267,8 +269,9 @@ float ReferenceTracer::originEpsilon(const glm::vec3& p) {
     return std::max(kAbsolute, kRelative * m);
 }
 
-glm::vec3 ReferenceTracer::normalAt(const GBuffer& gbuffer, size_t pixel) const {
-    return mEmbree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]);
+glm::vec3 ReferenceTracer::seenNormalAt(const GBuffer& gbuffer, size_t pixel) const {
+    return gbuffer.seenNormal(pixel,
+                              mEmbree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]));
 }
 
 VisibilityImage ReferenceTracer::trace(const GBuffer& gbuffer, int light, const Options& options,

@@ -80,6 +80,20 @@ inline const HardCase kHardCases[] = {
     {"volume_camera_inside_zpass", "volume_camera_inside", "inside", "volume:mode=zpass", 384, 100, 100, 1e9,
      1e9, 1e9, "negative control: z-pass is off by the one volume enclosing the eye everywhere (100% wrong)",
      0.05f, 50},
+    // The eye inside a closed caster (a box), which shuts the light off its inner walls: every seen
+    // sample is in shadow. 96^2 is enough: the judged floor is 36% of the image (3280 pixels); measured
+    // 2026-12-05 in parentheses.
+    {"volume_camera_in_caster_zfail", "volume_camera_in_caster", "in_box", "volume:mode=zfail", 96, 0.05,
+     0.01, 5, 5, 5,
+     "(0%; gains 0/0/0) the inside of the box is in shadow and z-fail says so; judged from the side the "
+     "camera sees (an evaluator that traced from the walls' outer side measured 100% wrong here)"},
+    {"volume_camera_in_caster_auto", "volume_camera_in_caster", "in_box", "volume", 96, 0.05, 0.01, 5, 5, 5,
+     "(0%) the eye is inside the box's own volume: auto must choose z-fail"},
+    {"volume_camera_in_caster_zpass", "volume_camera_in_caster", "in_box", "volume:mode=zpass", 96, 100, 100,
+     1e9, 1e9, 1e9,
+     "negative control (100% wrong): z-pass starts from the eye's count of 0 where it is 1 and calls the "
+     "floor lit; an evaluator that traced from the walls' outer side measured it 0% wrong",
+     0.05f, 50},
     {"volume_near_slice_auto", "volume_near_slice", "slice", "volume", 384, 0.05, 0.01, 5, 5, 5,
      "the near plane cuts the volume: auto falls back to z-fail with caps for that caster"},
     {"volume_near_slice_zpass", "volume_near_slice", "slice", "volume:mode=zpass", 384, 100, 100, 1e9, 1e9,
