@@ -20,22 +20,18 @@ struct GBuffer {
     /// Triangle index within the instance's mesh (gl_PrimitiveID of the draw; restarts per instance
     /// in every submission mode). Meaningless where position.w == 0.
     std::vector<uint32_t> primitive;
-    /// The camera as a homogeneous point: a positive multiple of (eye, 1) for a perspective camera, of
-    /// (direction towards the viewer, 0) for an orthographic one (GBufferRenderer sets it from the
-    /// inverse view-projection). All zero: not recorded (a hand-built list of samples); every sample is
-    /// then seen from the side its geometric normal points to.
-    glm::vec4 viewer{0.0f};
+    /// 1 where the sample is on a back face, as the rasteriser decided it (gl_FrontFacing, the decision
+    /// every technique's shading made for that pixel). Empty: not recorded (a hand-built list of
+    /// samples); every sample is then seen from the side its geometric normal points to.
+    std::vector<uint8_t> backFacing;
 
     size_t size() const { return size_t(width) * size_t(height); }
     bool covered(size_t i) const { return position[i].w > 0.0f; }
     /// 0-based index into Scene::instances for a covered pixel.
     uint32_t instance(size_t i) const { return uint32_t(position[i].w) - 1u; }
-    /// `normal` (the sample's geometric normal) turned towards the camera: negated where it points
-    /// away from viewer (a back face, as the rasteriser's gl_FrontFacing calls it), unchanged where it
-    /// points towards it, edge-on or with no viewer recorded.
+    /// `normal` (the sample's geometric normal) turned towards the camera: negated on a back face.
     glm::vec3 seenNormal(size_t i, const glm::vec3& normal) const {
-        const glm::vec3 towardsViewer = glm::vec3(viewer) - glm::vec3(position[i]) * viewer.w;
-        return glm::dot(normal, towardsViewer) < 0.0f ? -normal : normal;
+        return !backFacing.empty() && backFacing[i] ? -normal : normal;
     }
 };
 

@@ -232,6 +232,9 @@ void validate(const Scene& scene, const GBuffer& g) {
                     " has " + std::to_string(g.position.size()) + " positions and " +
                     std::to_string(g.primitive.size()) + " primitive ids, expected " +
                     std::to_string(g.size()) + " of each");
+    if (!g.backFacing.empty() && g.backFacing.size() != g.size())
+        throw Error("reference: G-buffer has " + std::to_string(g.backFacing.size()) +
+                    " back-face flags, expected none or " + std::to_string(g.size()));
     for (size_t i = 0; i < g.size(); ++i) {
         if (!g.covered(i)) continue;
         const uint32_t inst = g.instance(i);

@@ -5,8 +5,8 @@
 //       0 shadowed;
 //   soft (area lights: rect, disk, sphere; directional disk = angular sun): N stratified samples over
 //       the emitter, visibility = unoccluded fraction, with its noise bound.
-// n is the normal of the side the camera sees: the geometric normal turned towards the G-buffer's
-// viewer (GBuffer::seenNormal), as every technique turns its shading normal (gl_FrontFacing). A back
+// n is the normal of the side the camera sees: the geometric normal, negated on a back face
+// (GBuffer::seenNormal, the rasteriser's gl_FrontFacing), as every technique turns its shading normal. A back
 // face, e.g. the inside of a closed caster seen from a camera within it, is judged from the inside: a
 // ray from its outer side would call lit what no light reaches. Samples whose n faces away from the
 // light (n.L <= 0, L towards the light's centre) are 0 (no direct light), and so are spot-light samples
@@ -56,8 +56,8 @@ public:
     VisibilityImage trace(const GBuffer& gbuffer, int light, const Options& options,
                           TraceStats* stats = nullptr) const;
     /// Normal of the side of a covered sample the camera sees: its geometric normal (from EmbreeScene)
-    /// turned towards the G-buffer's viewer (GBuffer::seenNormal). The tracer's rays start on this side,
-    /// and the accuracy judge's n.L mask uses it.
+    /// negated where the G-buffer saw a back face (GBuffer::seenNormal). The tracer's rays start on this
+    /// side, and the accuracy judge's n.L mask uses it.
     glm::vec3 seenNormalAt(const GBuffer& gbuffer, size_t pixel) const;
     /// Ray-origin offset for a point: grows with the largest coordinate magnitude (relative epsilon
     /// on float precision) with an absolute floor for points near the origin:
