@@ -1,6 +1,7 @@
 #pragma once
 // Accuracy of a technique's visibility against the reference's, over the samples that show
-// geometry facing the light (geometric n.L > 0.05): the evaluation mask.
+// geometry whose seen side faces the light (n.L > 0.05, n turned towards the camera): the evaluation
+// mask.
 //   hard: false-shadow rate (reference lit, technique shadowed), false-light rate (the reverse), their
 //         sum, each in percent of evaluated samples; the same with samples within 1 px of a reference
 //         shadow edge left out (separates edge aliasing from gross errors). A technique sample counts as

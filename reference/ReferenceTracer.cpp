@@ -100,8 +100,10 @@ struct TraceJob {
     std::atomic<int> next{0};
     std::atomic<uint64_t> rayCount{0};
 
+    /// The seen side's normal (ReferenceTracer::seenNormalAt).
     glm::vec3 normal(size_t pixel) const {
-        return embree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]);
+        return gbuffer.seenNormal(pixel,
+                                  embree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]));
     }
     /// False for a light that casts no shadow and on an instance that receives none: nothing
     /// occludes the light there (the techniques' common/lighting.glsl, shadowApplies).
@@ -230,6 +232,9 @@ void validate(const Scene& scene, const GBuffer& g) {
                     " has " + std::to_string(g.position.size()) + " positions and " +
                     std::to_string(g.primitive.size()) + " primitive ids, expected " +
                     std::to_string(g.size()) + " of each");
+    if (!g.backFacing.empty() && g.backFacing.size() != g.size())
+        throw Error("reference: G-buffer has " + std::to_string(g.backFacing.size()) +
+                    " back-face flags, expected none or " + std::to_string(g.size()));
     for (size_t i = 0; i < g.size(); ++i) {
         if (!g.covered(i)) continue;
         const uint32_t inst = g.instance(i);
@@ -267,8 +272,9 @@ float ReferenceTracer::originEpsilon(const glm::vec3& p) {
     return std::max(kAbsolute, kRelative * m);
 }
 
-glm::vec3 ReferenceTracer::normalAt(const GBuffer& gbuffer, size_t pixel) const {
-    return mEmbree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]);
+glm::vec3 ReferenceTracer::seenNormalAt(const GBuffer& gbuffer, size_t pixel) const {
+    return gbuffer.seenNormal(pixel,
+                              mEmbree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]));
 }
 
 VisibilityImage ReferenceTracer::trace(const GBuffer& gbuffer, int light, const Options& options,

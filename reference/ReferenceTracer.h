@@ -5,12 +5,16 @@
 //       0 shadowed;
 //   soft (area lights: rect, disk, sphere; directional disk = angular sun): N stratified samples over
 //       the emitter, visibility = unoccluded fraction, with its noise bound.
-// Samples whose geometric normal faces away from the light (n.L <= 0, L towards the light's centre)
-// are 0 (no direct light), and so are spot-light samples outside the outer cone (no light arrives
-// there; Light::range, an attenuation, is not applied). Soft: emitter samples below the receiver's
-// horizon count as not seen (see reference/LightSampler.h for what "fraction of the light" means). Rays
-// start at p + n * originEpsilon(p) on the light's side, where the epsilon grows with |p| (a fixed one
-// fails at |p| ~ 1e5). Rays go out in packets of 16 (rtcOccluded16) over image tiles, on a thread pool.
+// n is the normal of the side the camera sees: the geometric normal, negated on a back face
+// (GBuffer::seenNormal, the rasteriser's gl_FrontFacing), as every technique turns its shading normal. A back
+// face, e.g. the inside of a closed caster seen from a camera within it, is judged from the inside: a
+// ray from its outer side would call lit what no light reaches. Samples whose n faces away from the
+// light (n.L <= 0, L towards the light's centre) are 0 (no direct light), and so are spot-light samples
+// outside the outer cone (no light arrives there; Light::range, an attenuation, is not applied). Soft:
+// emitter samples below the receiver's horizon count as not seen (see reference/LightSampler.h for what
+// "fraction of the light" means). Rays start at p + n * originEpsilon(p) on the seen side, where the
+// epsilon grows with |p| (a fixed one fails at |p| ~ 1e5). Rays go out in packets of 16 (rtcOccluded16) over
+// image tiles, on a thread pool.
 #include <cstdint>
 #include <vector>
 
@@ -51,8 +55,10 @@ public:
     /// out of range or the G-buffer is empty.
     VisibilityImage trace(const GBuffer& gbuffer, int light, const Options& options,
                           TraceStats* stats = nullptr) const;
-    /// Geometric normal of a covered sample (from EmbreeScene).
-    glm::vec3 normalAt(const GBuffer& gbuffer, size_t pixel) const;
+    /// Normal of the side of a covered sample the camera sees: its geometric normal (from EmbreeScene)
+    /// negated where the G-buffer saw a back face (GBuffer::seenNormal). The tracer's rays start on this
+    /// side, and the accuracy judge's n.L mask uses it.
+    glm::vec3 seenNormalAt(const GBuffer& gbuffer, size_t pixel) const;
     /// Ray-origin offset for a point: grows with the largest coordinate magnitude (relative epsilon
     /// on float precision) with an absolute floor for points near the origin:
     /// max(1e-4, 2^-18 * max|p_i|), i.e. 32 float ulps of the largest coordinate (the why in the .cpp).

@@ -167,3 +167,48 @@ TEST_F(PerfGateCliTest, BadInputIsExitTwo) {
 }
 
 } // namespace
+
+// A gate run that calibrates -t auto (the suite's auto_aircraft on a renderer its committed seed was not
+// measured on: here the seed's rows are relabelled to another renderer, as on another driver) leaves the
+// committed calibration byte for byte as it was and writes what it measured to the user's cache folder
+// ($XDG_CACHE_HOME/shadowbench). The committed suite and seed are copied into a scratch source tree, the
+// run's working directory, with one change: the suite's frame size is 32x32 (the calibration's cost is
+// preparing its candidates, not pixels). Nothing but the two copied files may be in that tree afterwards.
+TEST_F(PerfGateCliTest, CalibratingLeavesTheCommittedSeedAsItWas) {
+    namespace fs = std::filesystem;
+    const fs::path tree = fs::path(mDir) / "tree", ci = tree / "results" / "ci",
+                   cache = fs::path(mDir) / "cache";
+    fs::create_directories(ci);
+    std::string suite = test::readFile(std::string(SB_SOURCE_DIR) + "/results/ci/suite.json");
+    const std::string size = "\"--size\", \"160x160\"";
+    ASSERT_NE(suite.find(size), std::string::npos) << suite;
+    suite.replace(suite.find(size), size.size(), "\"--size\", \"32x32\"");
+    test::writeFile((ci / "suite.json").string(), suite);
+    CsvTable seed = CsvWriter::read(std::string(SB_SOURCE_DIR) + "/results/ci/auto-calibration.csv");
+    ASSERT_FALSE(seed.rows.empty());
+    ASSERT_EQ(seed.header[0], "renderer");
+    for (auto& row : seed.rows) row[0] = "another renderer";
+    const std::string seedPath = (ci / "auto-calibration.csv").string();
+    CsvWriter::writeTable(seedPath, seed);
+    const std::string before = test::readFile(seedPath);
+
+    // Mesa's shader cache stays where it was (it follows XDG_CACHE_HOME too): a cold one costs seconds.
+    const auto run = test::runCommand(
+        "cd " + tree.string() +
+        " && MESA_SHADER_CACHE_DIR=\"${XDG_CACHE_HOME:-$HOME/.cache}/mesa_shader_cache\" " +
+        "XDG_CACHE_HOME=" + cache.string() + " " + test::benchBinary() +
+        " ci --quick --configs auto_aircraft --suite results/ci/suite.json --update --baseline " + mDir +
+        "/baseline --out " + mDir + "/out");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::string after = test::readFile(seedPath);
+    EXPECT_TRUE(after == before) << "a benchmark run modified the committed calibration: " << before.size()
+                                 << " bytes before, " << after.size() << " after";
+    const fs::path cached = cache / "shadowbench" / "auto-calibration.csv";
+    ASSERT_TRUE(fs::exists(cached)) << "the calibration did not go to $XDG_CACHE_HOME/shadowbench";
+    EXPECT_FALSE(CsvWriter::read(cached.string()).rows.empty());
+    std::vector<std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(tree))
+        if (!e.is_directory()) files.push_back(fs::relative(e.path(), tree).string());
+    std::sort(files.begin(), files.end());
+    EXPECT_EQ(files, (std::vector<std::string>{"results/ci/auto-calibration.csv", "results/ci/suite.json"}));
+}

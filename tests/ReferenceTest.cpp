@@ -540,7 +540,7 @@ TEST(ReferenceTest, AircraftHardShadowThroughput) {
     for (size_t i = 0; i < g.size(); ++i) {
         if (!g.covered(i)) continue;
         ++covered;
-        facing += glm::dot(tracer.normalAt(g, i), towards) > 0.0f;
+        facing += glm::dot(tracer.seenNormalAt(g, i), towards) > 0.0f;
     }
     ASSERT_GT(covered, g.size() / 2); // the far camera sees mostly ground and aircraft
     for (int threads : {1, 0}) {
@@ -572,5 +572,53 @@ TEST(ReferenceTest, AircraftHardShadowThroughput) {
                     "%.2f M rays/s/thread (target 15; best of 3)\n",
                     size, size, buildSeconds, (unsigned long long)stats.rays, stats.seconds, stats.threads,
                     stats.raysPerSecondPerThread * 1e-6);
+    }
+}
+
+// (8) The side the camera sees. A closed box (half extent 2, centred 3 above the ground), the sun from
+// above and aside. Seen from an eye inside it, every inner wall is shut off from the light by the box
+// itself, so the hand-known visibility of every seen sample is 0; the seen sides of three faces (the
+// floor and the two walls turned away from the sun) face the light, and the accuracy judge counts them.
+// Seen from outside, on the light's side, the same samples are lit exactly where the outward normal faces
+// the light (the box is convex and nothing else is above it). Every sample is a triangle's centroid, far
+// from any edge, so no rounding margin is needed: exact values.
+TEST(ReferenceTest, BackFacesAreJudgedFromTheSideTheCameraSees) {
+    const glm::vec3 centre(0, 3, 0);
+    Scene scene = groundAndCaster(MeshGenerators::box(glm::vec3(2.0f), 2), centre, 1.0f);
+    scene.lights.push_back(directional(glm::vec3(0.3f, -1.0f, 0.2f)));
+    const glm::vec3 towards = -glm::normalize(scene.lights[0].direction);
+    EmbreeScene embree(scene);
+    ReferenceTracer tracer(scene, embree);
+    const Mesh& box = scene.meshes[1];
+    const glm::mat4& model = scene.instances[1].model;
+    SampleList walls;
+    std::vector<glm::vec3> outward;
+    for (size_t t = 0; t < box.triangleCount(); ++t) {
+        glm::vec3 w[3];
+        for (int k = 0; k < 3; ++k)
+            w[k] = glm::vec3(model * glm::vec4(box.positions[box.indices[3 * t + k]], 1.0f));
+        walls.add((w[0] + w[1] + w[2]) / 3.0f, 1, uint32_t(t));
+        outward.push_back(glm::normalize(glm::cross(w[1] - w[0], w[2] - w[0])));
+    }
+    ASSERT_EQ(walls.points.size(), 48u); // six faces of 2x2 quads
+
+    GBuffer inside = walls.gbuffer();
+    inside.backFacing.assign(walls.points.size(), 1); // from inside a closed mesh, every face is a back face
+    const VisibilityImage fromInside = tracer.trace(inside, 0, options());
+    int judged = 0;
+    for (size_t i = 0; i < walls.points.size(); ++i) {
+        EXPECT_EQ(fromInside.value[i], 0.0f)
+            << "inner wall sample " << i << " (outward normal " << outward[i].x << ", " << outward[i].y
+            << ", " << outward[i].z << ") is lit from inside a closed box";
+        EXPECT_GT(glm::dot(tracer.seenNormalAt(inside, i), -outward[i]), 0.999f) << "sample " << i;
+        judged += glm::dot(tracer.seenNormalAt(inside, i), towards) > 0.05f;
+    }
+    EXPECT_EQ(judged, 24); // floor and the walls at x = +2, z = +2: three faces of eight triangles
+
+    GBuffer outside = walls.gbuffer(); // front faces where seen, no light on the others either way
+    const VisibilityImage fromOutside = tracer.trace(outside, 0, options());
+    for (size_t i = 0; i < walls.points.size(); ++i) {
+        const bool facing = glm::dot(outward[i], towards) > 0.0f;
+        EXPECT_EQ(fromOutside.value[i], facing ? 1.0f : 0.0f) << "sample " << i;
     }
 }

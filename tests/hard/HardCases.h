@@ -84,6 +84,20 @@ inline const HardCase kHardCases[] = {
     {"volume_camera_inside_zpass", "volume_camera_inside", "inside", "volume:mode=zpass", 384, 100, 100, 1e9,
      1e9, 1e9, "negative control: z-pass is off by the one volume enclosing the eye everywhere (100% wrong)",
      0.05f, 50},
+    // The eye inside a closed caster (a box), which shuts the light off its inner walls: every seen
+    // sample is in shadow. 96^2 is enough: the judged floor is 36% of the image (3280 pixels); measured
+    // 2026-12-05 in parentheses.
+    {"volume_camera_in_caster_zfail", "volume_camera_in_caster", "in_box", "volume:mode=zfail", 96, 0.05,
+     0.01, 5, 5, 5,
+     "(0%; gains 0/0/0) the inside of the box is in shadow and z-fail says so; judged from the side the "
+     "camera sees (an evaluator that traced from the walls' outer side measured 100% wrong here)"},
+    {"volume_camera_in_caster_auto", "volume_camera_in_caster", "in_box", "volume", 96, 0.05, 0.01, 5, 5, 5,
+     "(0%) the eye is inside the box's own volume: auto must choose z-fail"},
+    {"volume_camera_in_caster_zpass", "volume_camera_in_caster", "in_box", "volume:mode=zpass", 96, 100, 100,
+     1e9, 1e9, 1e9,
+     "negative control (100% wrong): z-pass starts from the eye's count of 0 where it is 1 and calls the "
+     "floor lit; an evaluator that traced from the walls' outer side measured it 0% wrong",
+     0.05f, 50},
     {"volume_near_slice_auto", "volume_near_slice", "slice", "volume", 384, 0.05, 0.01, 5, 5, 5,
      "the near plane cuts the volume: auto falls back to z-fail with caps for that caster"},
     {"volume_near_slice_zpass", "volume_near_slice", "slice", "volume:mode=zpass", 384, 100, 100, 1e9, 1e9,
@@ -180,8 +194,9 @@ inline const HardCase kHardCases[] = {
     // shadow no plane stands for (the body's and the lid's on the spout: the body has no planes, as in
     // the thesis). The bounds: below the no-shadow error, and where the spout's own shadows dominate, at
     // most half of it (the planes must recover most of the shadow `none` misses).
-    {"occluder_teapot_tip", "occluder_teapot", "tip", "occluder", 384, 2.3, 1.78, 3, 3, 3,
-     "(2.22%, 1.72%; none 2.36% / 1.82%, 6.95% / 5.58% before the receiver sections): close on the spout "
+    {"occluder_teapot_tip", "occluder_teapot", "tip", "occluder", 384, 2.5, 1.9, 3, 3, 3,
+     "(2.42%, 1.82%; none 2.56% / 1.92%; 2.22% / 1.72% when the judge took the teapot's inside, seen through "
+     "its openings, from its outer side; 6.95% / 5.58% before the receiver sections): close on the spout "
      "under the default light, most of the view in the body's and the lid's shadow, which no plane stands "
      "for; the occluder must not add false shadow on the tip, so it stays below none"},
     {"occluder_teapot_spout_tip", "occluder_teapot_spout", "tip", "occluder", 384, 0.7, 0.6, 3, 3, 3,
@@ -193,10 +208,14 @@ inline const HardCase kHardCases[] = {
      "the body's front: half of none's error at most"},
     {"occluder_teapot_no_planes", "occluder_teapot", "mid", "occluder:planes=0", 384, 100, 100, 1e9, 1e9, 1e9,
      "negative control (5.6% off the edge band): without planes the teapot has no self-shadow", 0.05f, 4.0},
-    {"occluder_large_coordinates", "occluder_large_coordinates", "mid", "occluder", 384, 6.0, 3.5, 6, 3, 5,
-     "(3.98%, 2.27%; 1.14% / 0.67% at the origin) at (1e5, 0, 1e5) the rasterised positions snap to 7.8 mm "
-     "while the planes' coordinates stay exact in object space, so shadow edges and pixels disagree by ~1 "
-     "px"},
+    {"occluder_large_coordinates", "occluder_large_coordinates", "mid", "occluder", 384, 28.0, 27.0, 6, 3, 6,
+     "(27.0%, 26.1%, 25.6% false shadow, flicker 5.1; 1.14% / 0.67% at the origin) at (1e5, 0, 1e5) the "
+     "rasterised positions snap to 7.8 mm while the planes' coordinates stay exact in object space, so "
+     "shadow edges and pixels disagree by ~1 px; and the snapped skins let ~4300 px of back faces (the "
+     "lower skins) show through the upper ones: judged from their seen, upward side, whose ray starts "
+     "0.38 above them (the origin epsilon at 1e5, more than the skins' gap), so the reference calls them "
+     "lit where the planes shadow them (3.98% / 2.27% when those back faces were judged from below and "
+     "left out). A known weakness of both the technique and the judge at 1e5, bounded so it cannot grow"},
     // ShadowProxies (van der Spek, OpenGL Insights). Proxies approximate soft shadows: against the hard
     // reference they miss shadow cast far along the light and add halo where none is, so the bounds are the
     // measured, deterministic errors with ~25% headroom (they are what the technique is, not noise); the rows
@@ -233,10 +252,12 @@ inline const HardCase kHardCases[] = {
      "continued from the contact line along the ground (no hard footprint, the proxies are declared 5x "
      "larger than their meshes); what is left is the reference's shadows the halo does not reach",
      0.05f, 0.0, 0.05},
-    {"proxy_teapot_near", "scenes/data/teapot.json", "near", "proxy", 384, 3.3, 2.8, 3, 3, 3,
+    {"proxy_teapot_near", "scenes/data/teapot.json", "near", "proxy", 384, 4.7, 3.5, 3, 3, 3,
      "(false shadow 0% against 12.13% before: the fitted box stands on the ground, whose footprint was "
-     "distance 0, a hard shadow of 1 - dot(travel, down) = 0.11; 2.64% wrong, 2.24% off edge, all false "
-     "light: the teapot's own hard shadow, which the halo does not reach, exactly as `none` misses it; "
+     "distance 0, a hard shadow of 1 - dot(travel, down) = 0.11; 4.57% wrong, 3.38% off edge, all false "
+     "light, as `none` (4.57% / 3.38%): the teapot's own hard shadow, which the halo does not reach, and "
+     "its inside seen through the openings, judged from the side the camera sees (2.64% / 2.24% when the "
+     "judge took it from the outer side); "
      "gains 0/0/0). Bound on false shadow from the approximation: the ground meets the box only at its "
      "vertical side faces, so at the ground the halo is cast along horizontal normals (outside: from the "
      "bottom edge; inside: the side faces' lines, shaders/proxy/lit.frag) and Listing 1.4 gives at most "

@@ -94,7 +94,7 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> 
     for (size_t i = 0; i < g.size(); ++i) {
         if (!g.covered(i)) continue;
         glm::vec3 p(g.position[i]);
-        s.mask[i] = glm::dot(mTracer->normalAt(g, i), towardsLight(light, p)) > o.nDotLThreshold &&
+        s.mask[i] = glm::dot(mTracer->seenNormalAt(g, i), towardsLight(light, p)) > o.nDotLThreshold &&
                     lightArrives(light, p);
     }
     return s;

@@ -7,7 +7,8 @@
 //     channel);
 //  2. render the G-buffer with the same camera and submitter, trace the reference there (hard for
 //     point-shaped lights, stratified soft for area lights);
-//  3. evaluation mask: covered samples whose geometric normal faces the light, n.L > 0.05;
+//  3. evaluation mask: covered samples whose seen side faces the light, n.L > 0.05 (n: the geometric
+//     normal turned towards the camera, ReferenceTracer::seenNormalAt);
 //  4. metrics (reference/AccuracyMetrics.h): false-shadow/false-light rates, with and without the
 //     1-px band around reference edges; RMSE, mean and max error;
 //  5. stability: perturbation gain for a 0.25 px camera shift and for a 0.01 degree light turn

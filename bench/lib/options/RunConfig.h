@@ -52,6 +52,7 @@ struct RunConfig {
     /// default under ~/.cache) and whether to measure every candidate again.
     double autoMaxWrongPct = 10.0;
     std::string calibrationPath;
+    std::string calibrationSeedPath; ///< --calibration-seed: rows read first, never written ("" = none)
     bool recalibrate = false;
     /// A scene in motion (scenes/Motion.h) frozen at this path time in [0, 1] (--time); < 0: the frames
     /// move along the path.

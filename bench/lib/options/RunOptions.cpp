@@ -70,7 +70,7 @@ std::string formatNumber(double v) {
 /// An option that names a file or folder and was given as "" would silently mean "not given".
 void requireNonEmptyPaths(const CLI::App& app) {
     for (const char* name : {"--csv", "--samples", "--screenshot", "--visibility", "--dump-shaders",
-                             "--model", "--scene", "--calibration", "--images"}) {
+                             "--model", "--scene", "--calibration", "--calibration-seed", "--images"}) {
         const CLI::Option* o = app.get_option_no_throw(name);
         if (o && o->count() > 0 && o->as<std::string>().empty())
             throw Error(std::string(name) + ": the path is empty");
@@ -154,8 +154,13 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "-t auto: the most a candidate may misplace of the reference's shadow (misclassified "
                    "samples over shadowed ones, %)")
         ->capture_default_str();
-    app.add_option("--calibration", c.calibrationPath,
-                   "-t auto: the calibration cache (CSV; default ~/.cache/shadowbench/auto-calibration.csv)");
+    app.add_option(
+        "--calibration", c.calibrationPath,
+        "-t auto: the calibration cache (CSV; default $XDG_CACHE_HOME/shadowbench/auto-calibration.csv, "
+        "else ~/.cache/shadowbench/...)");
+    app.add_option(
+        "--calibration-seed", c.calibrationSeedPath,
+        "-t auto: a calibration read before the cache and never written (results/ci/auto-calibration.csv)");
     app.add_flag("--recalibrate", c.recalibrate, "-t auto: measure every candidate again");
     app.add_option("--repeat", c.repeat,
                    "rounds: measure the techniques in turn K times (A B, A B ...); ratios within a round")

@@ -12,6 +12,7 @@ namespace sb {
 AutoResolution AutoResolver::resolve(Harness& harness, const RunConfig& config, std::ostream& log) {
     CalibrationOptions options;
     options.cachePath = config.calibrationPath;
+    options.seedPath = config.calibrationSeedPath;
     options.refresh = config.recalibrate;
     std::vector<AutoCandidate> candidates = Calibration::candidates(harness, options, log);
     const EffectMask request = harness.scene().effects;

@@ -12,6 +12,7 @@
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/rows/Environment.h"
 #include "core/Error.h"
+#include "core/Paths.h"
 #include "registry/TechniqueRegistry.h"
 #include "techniques/PointLightRefusal.h"
 
@@ -145,6 +146,24 @@ AutoCandidate fromCache(const CsvTable& table, const std::vector<std::string>& r
     return c;
 }
 
+/// The seed's file: `given` as it is when it exists (or is absolute), else as bench finds its data.
+std::string seedFile(const std::string& given) {
+    std::error_code ec;
+    if (std::filesystem::exists(given, ec) || std::filesystem::path(given).is_absolute()) return given;
+    const std::string found = Paths::findResource(given);
+    return found.empty() ? given : found;
+}
+
+/// The seed's rows (none for ""); a seed named but missing is bad input, not an empty calibration.
+CsvTable readSeed(const std::string& given) {
+    if (given.empty()) return {};
+    const std::string path = seedFile(given);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error("--calibration-seed " + given + ": no such file", ExitCode::BadInput);
+    return CsvWriter::read(path);
+}
+
 CsvRow cacheRow(const CsvRow& key, const AutoCandidate& c) {
     CsvRow row = key;
     row.emplace_back("status", c.measured ? "ok" : "refused");
@@ -163,9 +182,11 @@ CsvRow cacheRow(const CsvRow& key, const AutoCandidate& c) {
 std::string Calibration::defaultCachePath() {
     const char* xdg = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
-    std::filesystem::path dir = xdg && *xdg     ? std::filesystem::path(xdg) / "shadowbench"
-                                : home && *home ? std::filesystem::path(home) / ".cache" / "shadowbench"
-                                                : std::filesystem::path(".");
+    std::error_code ignored;
+    std::filesystem::path dir = xdg && *xdg ? std::filesystem::path(xdg) / "shadowbench"
+                                : home && *home
+                                    ? std::filesystem::path(home) / ".cache" / "shadowbench"
+                                    : std::filesystem::temp_directory_path(ignored) / "shadowbench";
     return (dir / "auto-calibration.csv").string();
 }
 
@@ -185,13 +206,14 @@ CsvRow Calibration::keyColumns(const Harness& harness, const std::string& spec) 
 std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const CalibrationOptions& options,
                                                    std::ostream& log) {
     const std::string path = options.cachePath.empty() ? defaultCachePath() : options.cachePath;
+    const CsvTable seed = readSeed(options.seedPath);
     CsvTable table;
     if (std::filesystem::exists(path)) table = CsvWriter::read(path);
     std::vector<AutoCandidate> out;
     std::vector<CsvRow> keys;  ///< per candidate
     std::vector<bool> measure; ///< per candidate: not (usefully) in the cache
     std::vector<Trial> trials;
-    size_t fromFile = 0;
+    size_t fromSeed = 0, fromFile = 0;
     std::vector<std::string> configurations;
     for (const std::string& name : TechniqueRegistry::names())
         if (isCandidate(name))
@@ -207,6 +229,12 @@ std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const Calib
         c.variant = parsed.properties.empty() ? "" : given;
         c.effects = technique->info().effects;
         keys.push_back(keyColumns(harness, c.spec));
+        if (const auto* row = options.refresh ? nullptr : cached(seed, keys.back())) {
+            out.push_back(fromCache(seed, *row, c));
+            measure.push_back(false);
+            ++fromSeed;
+            continue;
+        }
         if (const auto* row = options.refresh ? nullptr : cached(table, keys.back())) {
             out.push_back(fromCache(table, *row, c));
             measure.push_back(false);
@@ -229,8 +257,9 @@ std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const Calib
     std::vector<CsvRow> fresh;
     for (size_t i = 0; i < out.size(); ++i)
         if (measure[i]) fresh.push_back(cacheRow(keys[i], out[i]));
-    log << "auto: " << out.size() << " candidates, " << fromFile << " from " << path << ", " << fresh.size()
-        << " measured now (" << options.frames
+    log << "auto: " << out.size() << " candidates, ";
+    if (!options.seedPath.empty()) log << fromSeed << " from the seed " << options.seedPath << ", ";
+    log << fromFile << " from " << path << ", " << fresh.size() << " measured now (" << options.frames
         << " interleaved rounds of one frame each, exact work, judged against the reference)\n";
     if (!fresh.empty()) {
         std::error_code ignored;

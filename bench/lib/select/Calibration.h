@@ -13,6 +13,11 @@
 // renderer, GL version, scene hash, size, camera, submission and the candidate's canonical spec, so a second
 // run on the same machine measures nothing;
 // --recalibrate measures again, and a cache file written by hand injects costs (the tests do).
+// A seed (--calibration-seed) is a calibration read before the cache and never written: the perf
+// suite's committed results/ci/auto-calibration.csv, which keeps -t auto's choice, and so its exact work,
+// the same on every run on the machine it was measured on. What a run measures goes to the cache, which
+// lives in the user's cache folder, never in the source tree: a benchmark run does not modify
+// committed results.
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -24,17 +29,23 @@ namespace sb {
 
 struct CalibrationOptions {
     std::string cachePath; ///< "" = defaultCachePath()
-    bool refresh = false;  ///< measure every candidate again (and replace its cached row)
-    int frames = 5;        ///< interleaved rounds: timed frames per candidate
+    /// "" = none. Rows read before the cache's, never written. A relative path not found from the
+    /// working directory is looked up where bench finds its data (Paths::findResource: the build's or
+    /// installed tree), so a suite naming results/ci/... runs from any folder.
+    std::string seedPath;
+    bool refresh = false; ///< measure every candidate again (and replace its cached row)
+    int frames = 5;       ///< interleaved rounds: timed frames per candidate
     int warmup = 1;
 };
 
 class Calibration {
 public:
-    /// $XDG_CACHE_HOME/shadowbench/auto-calibration.csv, else ~/.cache/shadowbench/..., else
-    /// ./auto-calibration.csv.
+    /// $XDG_CACHE_HOME/shadowbench/auto-calibration.csv, else ~/.cache/shadowbench/..., else (neither
+    /// variable set) the system's temporary folder's shadowbench/...: never the working directory, which
+    /// may be the source tree.
     static std::string defaultCachePath();
-    /// The candidates, measured here or read from the cache (what came from where goes to `log`).
+    /// The candidates, read from the seed, else from the cache, else measured here and appended to the
+    /// cache (what came from where goes to `log`). Throws Error(BadInput) for a seed that does not exist.
     static std::vector<AutoCandidate> candidates(Harness& harness, const CalibrationOptions& options,
                                                  std::ostream& log);
     /// The cache key of candidate `spec` on `harness` (the columns a cached row must match).
