@@ -55,8 +55,9 @@ struct Mesh {
     /// Occluder-texture shadow planes in object space (the `occluder` technique): declared per mesh in
     /// the scene file or built in for generated content (scenes/BuiltinShadowPlanes.h).
     std::vector<ShadowPlane> shadowPlanes;
-    /// No planes were given for this geometry (a --model file): the occluder technique chooses them for
-    /// the scene's lights (scenes/ShadowPlaneChooser.h).
+    /// No planes were given or built in for this geometry (a --model file, a generator other than the
+    /// aircraft and the teapot, a model file without "shadow_planes"): the occluder technique chooses
+    /// them for the scene's lights (scenes/ShadowPlaneChooser.h).
     bool shadowPlanesAuto = false;
     /// ShadowProxies in object space (the `proxy` technique), declared per mesh in the scene file
     /// ("proxies"); when not declared (proxiesDeclared false) the technique fits the tightest sphere,

@@ -432,6 +432,9 @@ void parseMesh(Context& ctx, const JsonReader& m) {
             m["generator"].error(e.what());
         }
     }
+    // No planes given or built in: the occluder technique chooses them (scenes/ShadowPlaneChooser.h).
+    if (!m.has("shadow_planes") && mesh.shadowPlanes.empty())
+        for (Mesh& object : meshes) object.shadowPlanesAuto = true;
     // Proxies (the `proxy` technique) in the mesh's object space; [] means none, no key: fitted. A
     // model's objects share one object space: the first holds the declared ones, the others none.
     if (m.has("proxies")) {

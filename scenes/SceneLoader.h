@@ -46,10 +46,10 @@
 //   silhouette; the teapot knob's plane). "receivers" (default: every part) names the parts of the mesh
 //   that receive the plane's shadow (the thesis's receiver sections). Names
 //   are unique per mesh. Without the key a generated mesh gets its built-in planes
-//   (scenes/BuiltinShadowPlanes.h: aircraft 3, teapot 11, the other generators none) and a model file
-//   none; "shadow_planes": [] means none. A mesh that --model replaces takes no planes along (its
-//   planes were for the replaced geometry): the occluder technique chooses the model's automatically
-//   (Mesh::shadowPlanesAuto, scenes/ShadowPlaneChooser.h).
+//   (scenes/BuiltinShadowPlanes.h: aircraft 3, teapot 11) and every other mesh none given: the
+//   occluder technique chooses its planes (Mesh::shadowPlanesAuto); "shadow_planes": [] means none. A mesh
+//   that --model replaces takes no planes along (its planes were for the replaced geometry): the occluder
+//   technique chooses the model's automatically (Mesh::shadowPlanesAuto, scenes/ShadowPlaneChooser.h).
 // - meshes, "proxies" (either kind of mesh): the proxy technique's ShadowProxies (scenes/ShadowProxy.h)
 //   in the mesh's object space:
 //     "proxies": [ {"shape": "sphere" | "box" | "cylinder", "position": [x,y,z], "rotation": [deg x,y,z],

@@ -66,6 +66,16 @@ for label in "${labels[@]}"; do
   summary+=("$(printf '%-6s %5d s  %s' "$label" $((SECONDS - start)) "$([ $rc -eq 0 ] && echo ok || echo FAILED)")")
   [ $rc -eq 0 ] || status=1
 done
-echo "sanitize: ctest under ASan + UBSan (build-asan/)"
+# Under the other SIMD width llvmpipe runs, 128 bits (CPUs without AVX, and ARM; this machine's default
+# is 256): every registered technique and -t auto once, one frame at 32x32, in one ASan bench process, on
+# the same shader cache as the runs above (the case core/DriverShaderCache.h keeps apart).
+start=$SECONDS
+rc=0
+mapfile -t techniques < <(./bench --list | awk '/^scenes:/ {exit} /^[a-z]/ {print "-t"; print $1}')
+LP_NATIVE_VECTOR_WIDTH=128 ./bench "${techniques[@]}" -t auto --instances 2 --size 32x32 --frames 1 \
+  --no-timer-check >/dev/null || rc=$?
+summary+=("$(printf '%-6s %5d s  %s' lp128 $((SECONDS - start)) "$([ $rc -eq 0 ] && echo ok || echo FAILED)")")
+[ $rc -eq 0 ] || status=1
+echo "sanitize: ctest under ASan + UBSan (build-asan/), then every technique at 128-bit vectors (lp128)"
 printf '  %s\n' "${summary[@]}"
 exit $status

@@ -7,6 +7,7 @@
 #include <dlfcn.h>
 #include <link.h>
 
+#include "core/DriverShaderCache.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -262,6 +263,7 @@ void VulkanContext::clearValidationMessages() {
 }
 
 void VulkanContext::createInstance(bool validation) {
+    DriverShaderCache::separateByVectorWidth(); // before lavapipe opens its shader cache
     if (!validation) {
         mInstance = createBareInstance();
         return;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/DriverShaderCache.h"
 #include "core/Error.h"
 #include "core/NameTable.h"
 #include "gl/backends/EglDeviceContext.h"
@@ -118,6 +119,7 @@ std::string backendNames(bool headlessOnly) {
 }
 
 std::unique_ptr<Context> createContext(const ContextOptions& options) {
+    DriverShaderCache::separateByVectorWidth(); // before the driver opens its shader cache
     std::string reasons;
     for (const BackendEntry* backend : candidates(options)) {
         if (!backend) throw Error("createContext: no backend for this Backend value", ExitCode::Failure);

@@ -83,11 +83,17 @@ std::vector<glm::vec3> lightsInObjectSpace(const Scene& scene, uint32_t mesh) {
     for (const Instance& inst : scene.instances)
         if (inst.mesh == mesh) instances.push_back(&inst);
     const size_t step = std::max<size_t>(1, (instances.size() + 7) / 8);
-    const glm::vec3 centre = scene.meshes[mesh].computeBounds().center();
+    const Aabb bounds = scene.meshes[mesh].computeBounds();
+    const glm::vec3 centre = bounds.center();
     std::vector<glm::vec3> out;
     for (size_t i = 0; i < instances.size(); i += step) {
         const glm::mat4 inverse = glm::inverse(instances[i]->model);
         for (const Light& l : scene.lights) {
+            // A light inside the mesh's bounds has no one direction to it (the jack-o'-lantern's).
+            const glm::vec3 local = glm::vec3(inverse * glm::vec4(l.position, 1.0f));
+            if (l.type != LightType::Directional && glm::all(glm::greaterThanEqual(local, bounds.min)) &&
+                glm::all(glm::lessThanEqual(local, bounds.max)))
+                continue;
             const glm::vec3 world =
                 l.type == LightType::Directional
                     ? -l.direction
@@ -104,25 +110,56 @@ std::vector<glm::vec3> lightsInObjectSpace(const Scene& scene, uint32_t mesh) {
 } // namespace
 
 void OccluderGL::choosePlanes(const Scene& scene, const std::vector<bool>& drawn) {
-    // Meshes without given planes (a --model file) get automatically chosen ones, for the scene's lights;
-    // one that yields no useful plane is said so on stderr and counted (counter no_useful_planes).
+    // Meshes without given planes (a --model file, a generated box, sphere or cylinder, a model file the
+    // scene names without planes) get automatically chosen ones, for the scene's lights. Only meshes
+    // with an instance that casts shadows: a plane shadows its own mesh, and a mesh that casts nothing
+    // (the ground) must not shadow itself.
     mMeshPlanes.assign(scene.meshes.size(), {});
     mNoUsefulPlanes = 0;
+    std::vector<bool> casts(scene.meshes.size(), false);
+    for (const Instance& inst : scene.instances) casts[inst.mesh] = casts[inst.mesh] || inst.castsShadow;
+    std::vector<std::string> lines;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
-        if (!mesh.shadowPlanesAuto || !drawn[m]) {
+        if (!mesh.shadowPlanesAuto || !drawn[m] || !casts[m]) {
             mMeshPlanes[m] = mesh.shadowPlanes;
             continue;
         }
-        const ShadowPlaneChoice choice =
-            ShadowPlaneChooser::choose(mesh, lightsInObjectSpace(scene, uint32_t(m)), kAutoPlanes);
+        // Lights inside the mesh's bounds (the jack-o'-lantern's) give no direction: without any, the
+        // chooser would fall back to its 14 light-independent directions, whose planes shadow what the
+        // light reaches (measured: worse than no shadow on the built-in jack_o_lantern scene).
+        const std::vector<glm::vec3> towardLight = lightsInObjectSpace(scene, uint32_t(m));
+        ShadowPlaneChoice choice;
+        if (towardLight.empty() && !scene.lights.empty())
+            choice.reason = "no light direction (every light inside its bounds)";
+        else
+            choice = ShadowPlaneChooser::choose(mesh, towardLight, kAutoPlanes);
         mMeshPlanes[m] = choice.planes;
         if (choice.planes.empty()) {
             ++mNoUsefulPlanes;
-            std::cerr << "occluder: mesh '" << mesh.name
-                      << "': no useful shadow plane, it is drawn unshadowed: " << choice.reason << "\n";
+            lines.push_back("occluder: mesh '" + mesh.name +
+                            "': no useful shadow plane, it is drawn unshadowed: " + choice.reason);
         }
     }
+    reportUnshadowed(scene, drawn, lines);
+}
+
+void OccluderGL::reportUnshadowed(const Scene& scene, const std::vector<bool>& drawn,
+                                  const std::vector<std::string>& meshLines) {
+    // With no plane on any drawn mesh the technique draws none's image: the row must not claim the
+    // shadows (effects_delivered) and one line says so, as planar and blob do without a receiver.
+    mutableInfo().effects = Occluder::declaration().effects;
+    bool any = false;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) any = any || (drawn[m] && !mMeshPlanes[m].empty());
+    if (any) {
+        for (const std::string& line : meshLines) std::cerr << line << "\n";
+        return;
+    }
+    mutableInfo().effects &= ~(Effect::HardShadows | Effect::SelfShadowing);
+    std::cerr << "occluder: scene '" << scene.name << "': no mesh has a shadow plane"
+              << (meshLines.empty() ? ""
+                                    : " (" + std::to_string(meshLines.size()) + " chosen for, none useful)")
+              << ": nothing is shadowed\n";
 }
 
 void OccluderGL::collectPlanes(const Scene& scene) {

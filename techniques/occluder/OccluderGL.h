@@ -27,6 +27,7 @@
 // sweep the cost per plane); receivers (self, the thesis; all: every receiver also tests the planes of
 // the other instances that may shadow it, per fragment in world space); resolution (baked texture size);
 // dilate (texels the baked silhouette is grown by, thesis section 5).
+#include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -63,6 +64,10 @@ private:
     };
 
     void choosePlanes(const Scene& scene, const std::vector<bool>& drawn);
+    /// Without a plane on any drawn mesh: hard_shadows and self_shadowing left out of the effects the
+    /// row reports, and one line on stderr; otherwise `meshLines` (the meshes left without one).
+    void reportUnshadowed(const Scene& scene, const std::vector<bool>& drawn,
+                          const std::vector<std::string>& meshLines);
     void collectPlanes(const Scene& scene);
     void buildTextures(const CompileContext& ctx);
     void uploadInstances(bool lights);

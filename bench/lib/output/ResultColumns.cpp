@@ -108,7 +108,8 @@ const std::vector<ColumnInfo> kColumns = {
      "GPU time of each declared pass, median (empty unless trusted)"},
     {col::kCounter, "", ColumnType::Number, kEveryRun,
      "technique counters of the last frame: `triangles`, `draw_calls`, `shadow_map_texels`, `rays` ...; "
-     "`no_useful_planes` (occluder): meshes of a `--model` run whose automatic shadow-plane choice found no "
+     "`no_useful_planes` (occluder): casting meshes without given planes whose automatic shadow-plane choice "
+     "found no "
      "useful plane (drawn unshadowed)"},
     {col::kLoadGlCalls, "count", ColumnType::Integer, kEveryRun,
      "GL calls the submitter issued in one untimed census frame after the measured ones (immediate mode: one "
