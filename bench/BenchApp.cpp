@@ -1,7 +1,11 @@
 #include "bench/BenchApp.h"
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
 #include "bench/bottleneck/BottleneckCommand.h"
 #include "bench/ci/CiCommand.h"
@@ -15,11 +19,13 @@
 #include "bench/lib/options/CliCatalog.h"
 #include "bench/lib/output/StandardStreams.h"
 #include "bench/lib/rows/BuildInfo.h"
+#include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/SweepWorker.h"
 #include "bench/merge/MergeCommand.h"
 #include "bench/report/ReportCommand.h"
 #include "bench/run/RunCommand.h"
 #include "bench/sweep/SweepCommand.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/Injection.h"
 #include "core/Paths.h"
@@ -189,6 +195,29 @@ int generate(int argc, char** argv) {
     throw Error("unknown subcommand " + word + Suggestion::didYouMean(word, names) + " (see bench --help)");
 }
 
+/// `--driver NAME|PATH` (core/DriverTable.h): the libraries are chosen when a process starts, so a run
+/// asked for another driver than the one it runs on runs itself again with that driver's environment.
+/// The option stays in argv for the subcommand, which records it. Returns only when the process runs
+/// on the driver asked for (or none was asked for).
+void runOnRequestedDriver(char** argv, int argc) {
+    constexpr const char* kRerun = "SHADOWBENCH_DRIVER_RERUN"; // guards against running again forever
+    const std::string wanted = DriverTable::requested(argc, argv);
+    const bool rerun = std::getenv(kRerun) != nullptr;
+    ::unsetenv(kRerun);
+    if (wanted.empty()) return;
+    const Driver driver = DriverTable::resolve(wanted);
+    if (DriverTable::isActive(driver)) return;
+    if (rerun)
+        throw Error("--driver " + wanted + ": its environment did not take effect in the new process",
+                    ExitCode::Failure);
+    DriverTable::activate(driver);
+    ::setenv(kRerun, "1", 1);
+    const std::string self = ChildProcess::selfExecutable();
+    ::execv(self.c_str(), argv);
+    throw Error("--driver " + wanted + ": cannot run " + self + " again: " + std::strerror(errno),
+                ExitCode::Failure);
+}
+
 } // namespace
 
 int BenchApp::dispatch(int argc, char** argv) {
@@ -211,6 +240,7 @@ int BenchApp::main(int argc, char** argv) {
     MeasuredHarness::pinAllocator();
     try {
         checkInjections(); // a typo in SHADOWBENCH_INJECT must not measure the unmodified code
+        runOnRequestedDriver(argv, argc);
         return dispatch(argc, argv);
     } catch (const Error& e) {
         std::cerr << "bench: error: " << e.what() << "\n";

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/options/DriverOption.h"
 #include "core/Error.h"
 #include "core/Strings.h"
 #include "gl/FrameTargets.h"
@@ -81,7 +82,7 @@ void requireNonEmptyPaths(const CLI::App& app) {
 struct RawOptions {
     std::vector<std::string> techniques;
     std::string size = "1024x1024", submit = "retained", backend = "auto", light, format = "console";
-    std::string api = "gl";
+    std::string api = "gl", driver;
     int instances = -1, tess = -1;
     int64_t seed = -1;
     double maxMemoryGiB = 0.0;
@@ -130,6 +131,7 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "--api vulkan: device index as --list shows (default: lavapipe, else the first)");
     app.add_flag("--vk-validation", c.vulkan.validation,
                  "--api vulkan: Khronos validation layer on, its messages printed (slows every frame)");
+    DriverOption::add(app, raw.driver);
     app.add_option("--backend", raw.backend, backendNames())->capture_default_str();
     app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
     app.add_flag("--window", raw.window, "on-screen viewer (GLFW) instead of a measurement");
