@@ -164,8 +164,15 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
         const TechniqueInstructions& h = heads[i].counts;
         char perFrame[64];
         std::snprintf(perFrame, sizeof perFrame, "%.4g Ir/frame", h.irPerFrame);
-        if (!bases[i] || !noVerdict.empty()) {
+        if (!noVerdict.empty()) {
             cell = {perFrame, "NO VERDICT"};
+        } else if (!bases[i]) {
+            // Not compared, and the record could have held it: like a configuration missing from layer A's
+            // baseline, a failure with its reason rather than a silent gap.
+            cell = {std::string(perFrame) + "; not in the instruction baseline", "FAIL"};
+            failed = true;
+            out.layer.details.push_back(configs[i]->name +
+                                        ": not in the instruction baseline (add it with bench ci --update)");
         } else {
             const InstructionDiff d =
                 InstructionDiff::compare(*bases[i], base ? h : cutLike(h, *bases[i]), 5);
@@ -181,6 +188,9 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
     }
     if (!noVerdict.empty()) out.layer.details.push_back("no verdict: " + noVerdict);
     out.layer.verdict = !noVerdict.empty() ? "NO VERDICT" : failed ? "FAIL" : "PASS";
+    // Every reason for no verdict here is the instrument's (unstable, no record, another machine's record):
+    // reported, never an alarm (GateReport.h).
+    out.layer.declined = !noVerdict.empty();
     return out;
 }
 
