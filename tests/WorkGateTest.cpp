@@ -252,6 +252,18 @@ TEST(WorkGateTest, TheFingerprintNamesTheDriverOnBothApis) {
     EXPECT_TRUE(a.differences(built).empty());
     named["driver"] = "system";
     EXPECT_EQ(Fingerprint::capture(named, "", {}).differences(built), (std::vector<std::string>{"driver"}));
+    // A driver A/B may differ in the driver and the variables its sides set, nothing else: a side that
+    // fell back to another backend (Mesa 25.0.7's EGL does not load under LD_BIND_NOW=1) is left over.
+    Fingerprint osmesa = Fingerprint::capture(v25, "", {{"LD_LIBRARY_PATH", "/opt/mesa/lib"}});
+    osmesa.backend = "osmesa";
+    Fingerprint egl = Fingerprint::capture(v22, "", {});
+    egl.backend = "egl-surfaceless";
+    EXPECT_EQ(egl.differencesBesidesDriver(osmesa, {"LD_LIBRARY_PATH"}),
+              (std::vector<std::string>{"backend"}));
+    osmesa.backend = egl.backend;
+    EXPECT_TRUE(egl.differencesBesidesDriver(osmesa, {"LD_LIBRARY_PATH"}).empty());
+    EXPECT_EQ(egl.differencesBesidesDriver(osmesa, {}),
+              (std::vector<std::string>{"environment.LD_LIBRARY_PATH"}));
 }
 
 // The gate's verdict: a NO VERDICT layer (it compared nothing) never hides a FAIL and never makes the

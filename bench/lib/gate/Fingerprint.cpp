@@ -145,6 +145,18 @@ std::vector<std::string> Fingerprint::differences(const Fingerprint& other) cons
     return out;
 }
 
+std::vector<std::string> Fingerprint::differencesBesidesDriver(const Fingerprint& other,
+                                                               const std::set<std::string>& tested) const {
+    static const std::set<std::string> kDriverFields = {
+        "renderer", "gl_version", "mesa_version", "llvm_version", "vector_bits", "driver", "driver_version"};
+    std::vector<std::string> out = differences(other);
+    std::erase_if(out, [&](const std::string& d) {
+        const bool variable = d.rfind("environment.", 0) == 0;
+        return kDriverFields.count(d) || (variable && tested.count(d.substr(12)));
+    });
+    return out;
+}
+
 void Fingerprint::requireComparable(const Fingerprint& base, const Fingerprint& current,
                                     FingerprintUse layer) {
     if (layer == FingerprintUse::ExactCounters) return;

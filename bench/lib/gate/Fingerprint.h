@@ -15,6 +15,7 @@
 // cache) changes what code runs.
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,13 @@ struct Fingerprint {
     /// The fields (JSON names) whose values differ, "environment.LP_NUM_THREADS" for one variable;
     /// driver and driver_version only where both sides have them.
     std::vector<std::string> differences(const Fingerprint& other) const;
+    /// differences(other) without those a driver A/B changes on purpose: the driver's own fields
+    /// (renderer, gl_version, mesa_version, llvm_version, vector_bits, driver, driver_version) and the
+    /// variables either side set (`tested`, e.g. LD_LIBRARY_PATH, LP_NUM_THREADS). What is left (the
+    /// backend, the CPU, valgrind, glibc, the compiler, other variables) must match for the A/B to compare
+    /// one driver's code against the other's.
+    std::vector<std::string> differencesBesidesDriver(const Fingerprint& other,
+                                                      const std::set<std::string>& tested) const;
     /// Throws Error (BadInput) naming every differing field when `layer` is Instructions or WallTime
     /// and the fingerprints differ; ExactCounters compare across machines.
     static void requireComparable(const Fingerprint& base, const Fingerprint& current, FingerprintUse layer);
