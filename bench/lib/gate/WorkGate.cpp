@@ -182,6 +182,38 @@ LayerCell compareCounts(const std::string& key, const ConfigRows& b, const Confi
     return {"exact", "PASS"};
 }
 
+/// Anything that fails layer A whatever else was compared (the header comment's list).
+bool failing(const WorkComparison& w) {
+    return !w.problems.empty() || !w.increases.empty() || !w.applicationChanges.empty() ||
+           !w.missing.empty() || !w.onlyInBase.empty() || !w.onlyInHead.empty() || !w.notComparable.empty();
+}
+
+/// One detail line per finding, failures first, then what is reported without a verdict.
+std::vector<std::string> findings(const WorkComparison& w, const std::string& baseName) {
+    std::vector<std::string> out;
+    auto add = [&](const std::string& prefix, const std::vector<std::string>& lines) {
+        for (const std::string& l : lines) out.push_back(prefix + l);
+    };
+    auto addChanges = [&](const std::string& prefix, const std::vector<WorkChange>& changes, bool ratio) {
+        for (const WorkChange& c : changes)
+            out.push_back(prefix + (ratio ? c.describeRatio() : c.describe()));
+    };
+    add("unusable input: ", w.problems);
+    addChanges("increase: ", w.increases, false);
+    addChanges("application work differs across drivers: ", w.applicationChanges, false);
+    addChanges("count on one side only: ", w.missing, false);
+    for (const std::string& c : w.onlyInBase)
+        out.push_back(c + ": in the " + baseName + " only (not measured now)");
+    const std::string addIt = baseName == "baseline" ? " (add it with --update)" : "";
+    for (const std::string& c : w.onlyInHead) out.push_back(c + ": not in the " + baseName + addIt);
+    add("not compared: ", w.notComparable);
+    addChanges("decrease: ", w.decreases, false);
+    addChanges("driver work (explained, not judged): ", w.driverDifferences, true);
+    add("skipped, unsupported on both sides: ", w.skipped);
+    add("across drivers: ", w.drivers);
+    return out;
+}
+
 } // namespace
 
 std::string WorkChange::describe() const {
@@ -207,8 +239,7 @@ std::string WorkChange::describeRatio() const {
 }
 
 bool WorkComparison::pass() const {
-    return configs > 0 && problems.empty() && increases.empty() && applicationChanges.empty() &&
-           missing.empty() && onlyInBase.empty() && onlyInHead.empty() && notComparable.empty();
+    return configs > 0 && !failing(*this);
 }
 
 LayerCell WorkComparison::cell(const std::string& config) const {
@@ -271,39 +302,17 @@ WorkComparison WorkGate::compare(const CsvTable& base, const CsvTable& head) {
 }
 
 GateLayer WorkGate::layer(const WorkComparison& w, const std::string& baseName) {
-    GateLayer layer{"A: exact work", true, false, "PASS", {}};
-    auto add = [&](const std::string& prefix, const std::vector<std::string>& lines) {
-        for (const std::string& l : lines) layer.details.push_back(prefix + l);
-    };
-    auto addChanges = [&](const std::string& prefix, const std::vector<WorkChange>& changes, bool ratio) {
-        for (const WorkChange& c : changes)
-            layer.details.push_back(prefix + (ratio ? c.describeRatio() : c.describe()));
-    };
-    add("unusable input: ", w.problems);
-    addChanges("increase: ", w.increases, false);
-    addChanges("application work differs across drivers: ", w.applicationChanges, false);
-    addChanges("count on one side only: ", w.missing, false);
-    addChanges("decrease: ", w.decreases, false);
-    addChanges("driver work (explained, not judged): ", w.driverDifferences, true);
-    for (const std::string& c : w.onlyInBase)
-        layer.details.push_back(c + ": in the " + baseName + " only (not measured now)");
-    for (const std::string& c : w.onlyInHead)
-        layer.details.push_back(c + ": not in the " + baseName + " (add it with --update)");
-    add("not compared: ", w.notComparable);
-    add("skipped, unsupported on both sides: ", w.skipped);
-    add("across drivers: ", w.drivers);
-    const bool failing = !w.problems.empty() || !w.increases.empty() || !w.applicationChanges.empty() ||
-                         !w.missing.empty() || !w.onlyInBase.empty() || !w.onlyInHead.empty() ||
-                         !w.notComparable.empty();
-    if (!w.decreases.empty() && !failing)
-        layer.details.push_back("less work than the " + baseName + ": record it with bench ci --update");
+    GateLayer layer{"A: exact work", true, false, "PASS", findings(w, baseName)};
+    const bool fails = failing(w);
+    if (!w.decreases.empty() && !fails && baseName == "baseline")
+        layer.details.push_back("less work than the baseline: record it with bench ci --update");
     layer.details.push_back(std::to_string(w.metrics) + " counts of " + std::to_string(w.configs) +
                             " configurations compared exactly" +
                             (w.acrossDrivers ? " (" + std::to_string(w.acrossDrivers) +
                                                    " across drivers: the application's work exactly, the "
                                                    "driver's reported)"
                                              : ""));
-    layer.verdict = failing ? "FAIL" : w.configs == 0 ? "NO VERDICT" : "PASS";
+    layer.verdict = fails ? "FAIL" : w.configs == 0 ? "NO VERDICT" : "PASS";
     if (layer.verdict == "NO VERDICT")
         layer.details.push_back("nothing was compared: no configuration is measured ok on both sides");
     return layer;
