@@ -39,9 +39,10 @@ TEST_F(PerfGateCliTest, SameBuildPassesAndAnInjectedPassFailsNamingIt) {
     const auto injected = ci("SHADOWBENCH_INJECT=extra_fullscreen_pass", "");
     EXPECT_EQ(injected.exitCode, 1) << injected.output;
     EXPECT_NE(injected.output.find("perf gate: FAIL"), std::string::npos) << injected.output;
-    EXPECT_NE(injected.output.find("none_aircraft: injected_fullscreen_fragments 0 -> "), std::string::npos)
+    EXPECT_NE(injected.output.find("none_aircraft: injected_fullscreen_fragments absent -> "),
+              std::string::npos)
         << injected.output;
-    EXPECT_NE(injected.output.find("shadowmap_aircraft: injected_fullscreen_fragments 0 -> "),
+    EXPECT_NE(injected.output.find("shadowmap_aircraft: injected_fullscreen_fragments absent -> "),
               std::string::npos)
         << injected.output;
     // The report files say the same.
@@ -113,6 +114,146 @@ TEST_F(PerfGateCliTest, CompareJudgesTwoResultFiles) {
     const auto shrank = test::runCommand(bench + " compare " + mDir + "/b.csv " + mDir + "/a.csv");
     EXPECT_EQ(shrank.exitCode, 0) << shrank.output;
     EXPECT_NE(shrank.output.find("decrease:"), std::string::npos) << shrank.output;
+}
+
+// The hostile-input battery: bench compare on files that hold nothing comparable, or counts that are not
+// counts. Each must fail (exit 1) with its reason and no configuration may read PASS; non-finite
+// thresholds are bad input (exit 2). Before, every one of these exited 0 with PASS (an absent or
+// unparseable count read as 0, a "decrease"; a nan floor made layer C unable to fail).
+TEST_F(PerfGateCliTest, CompareFailsOnWhatItCouldNotCompare) {
+    const std::string header = "ci_config,status,renderer,gl_version,work_depth_draws,work_depth_fragments\n";
+    const std::string good = header + "a,ok,llvmpipe,Mesa 22.3.6,40,1000\n";
+    auto withCount = [&](const std::string& fragments) {
+        return header + "a,ok,llvmpipe,Mesa 22.3.6,40," + fragments + "\n";
+    };
+    struct Case {
+        std::string name, base, head, options;
+        int exitCode;
+        std::string reason;
+    };
+    const std::vector<Case> cases = {
+        {"empty head", good, "", "", 1, "head: the file is empty (no header)"},
+        {"empty base", "", good, "", 1, "base: the file is empty (no header)"},
+        {"header only", good, header, "", 1, "head: no rows (a header only)"},
+        {"cut inside its header", good, "ci_config,status,rend", "", 1,
+         "head: no work columns (work_*, load_*, counter_*)"},
+        {"wrong header", good, "name,value\na,1\n", "", 1, "head: no status column (not a result table)"},
+        {"every row failed", good, header + "a,failed,,,,\n", "", 1,
+         "head: none of its 1 rows has status ok"},
+        {"nan", good, withCount("nan"), "", 1, "head: work_depth_fragments 'nan' is not a count"},
+        {"negative", good, withCount("-5"), "", 1, "head: work_depth_fragments '-5' is not a count"},
+        {"fractional", good, withCount("999.5"), "", 1, "work_depth_fragments '999.5' is not a count"},
+        {"not a number", good, withCount("lots"), "", 1, "work_depth_fragments 'lots' is not a count"},
+        {"empty where the base has it", good, withCount(""), "", 1,
+         "count on one side only: a: depth_fragments 1000 -> absent"},
+        {"absent column", good,
+         "ci_config,status,renderer,gl_version,work_depth_draws\na,ok,llvmpipe,Mesa 22.3.6,40\n", "", 1,
+         "count on one side only: a: depth_fragments 1000 -> absent"},
+        {"missing from the head", good, header + "b,ok,llvmpipe,Mesa 22.3.6,40,1000\n", "", 1,
+         "a: in the base only"},
+        {"missing from the base", header + "b,ok,llvmpipe,Mesa 22.3.6,40,1000\n", good, "", 1,
+         "a: not in the base"},
+        {"floor nan", good, good, "--floor nan", 2, "--floor nan: expected a number in [0, 10]"},
+        {"alpha nan", good, good, "--alpha nan", 2, "--alpha nan: expected a number in [1e-09, 0.5]"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        test::writeFile(mDir + "/base.csv", c.base);
+        test::writeFile(mDir + "/head.csv", c.head);
+        const auto r = test::runCommand(std::string(test::benchBinary()) + " compare " + mDir + "/base.csv " +
+                                        mDir + "/head.csv " + c.options);
+        EXPECT_EQ(r.exitCode, c.exitCode) << r.output;
+        EXPECT_NE(r.output.find(c.reason), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("(PASS)"), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("compare: PASS"), std::string::npos) << r.output;
+    }
+    // The control: the good file against itself passes, its configuration compared.
+    test::writeFile(mDir + "/base.csv", good);
+    const auto same = test::runCommand(std::string(test::benchBinary()) + " compare " + mDir + "/base.csv " +
+                                       mDir + "/base.csv");
+    EXPECT_EQ(same.exitCode, 0) << same.output;
+    EXPECT_NE(same.output.find("| a |  | exact (PASS) |"), std::string::npos) << same.output;
+}
+
+// bench ci against a baseline cut inside its header, and against one that lacks a configuration of the
+// suite: each fails naming why, and the configuration's cell says it was not compared. Before, both said
+// PASS with "exact (PASS)" on rows that were never compared.
+TEST_F(PerfGateCliTest, CiFailsOnATruncatedBaselineAndAMissingConfiguration) {
+    // The committed baseline's rows (none_aircraft's is its first), cut, in the scratch baseline folder.
+    const std::string full = test::readFile(std::string(SB_SOURCE_DIR) + "/results/ci/baseline/work.csv");
+    const std::string path = mDir + "/baseline/work.csv";
+    std::filesystem::create_directories(mDir + "/baseline");
+    test::writeFile(path, full.substr(0, full.find(',', full.find(',') + 1) + 4)); // "ci_config,status,api"
+    const auto cut = ci("", "");
+    EXPECT_EQ(cut.exitCode, 1) << cut.output;
+    EXPECT_NE(cut.output.find("perf gate: FAIL"), std::string::npos) << cut.output;
+    EXPECT_NE(cut.output.find("unusable input: base: no work columns"), std::string::npos) << cut.output;
+    EXPECT_NE(cut.output.find("| none_aircraft | balanced | not compared: not in the base (FAIL) |"),
+              std::string::npos)
+        << cut.output;
+    // The baseline without shadowmap_aircraft's row (the header and none_aircraft's row only).
+    const size_t second = full.find('\n', full.find('\n') + 1) + 1;
+    ASSERT_EQ(full.find("\nnone_aircraft,"), full.find('\n'));
+    test::writeFile(path, full.substr(0, second));
+    const auto missing = ci("", "");
+    EXPECT_EQ(missing.exitCode, 1) << missing.output;
+    EXPECT_NE(missing.output.find("shadowmap_aircraft: not in the baseline (add it with --update)"),
+              std::string::npos)
+        << missing.output;
+    EXPECT_NE(missing.output.find("| none_aircraft | balanced | exact (PASS) |"), std::string::npos)
+        << missing.output;
+    EXPECT_EQ(missing.output.find("| shadowmap_aircraft | balanced | exact"), std::string::npos)
+        << missing.output;
+    EXPECT_EQ(ci("", "--floor nan").exitCode, 2);
+}
+
+// The driver A/B end to end: the base on Mesa 25.0.7 (unpacked beside the system's 22.3.6), the head on
+// the system driver, one configuration each. On Vulkan (whose rows leave gl_version empty) the
+// application's work is exact and the driver's fragments are reported with both values, neither PASS nor
+// FAIL; on GL the head doubles its shadow map (an application-work change), which fails naming the
+// counter. Before, the Vulkan row passed as "exact (PASS)" with the depth pass's lost fragments judged as
+// a decrease on one driver, and the GL row said only "not comparable".
+TEST_F(PerfGateCliTest, DriverABJudgesApplicationWorkAndReportsDriverWork) {
+    const std::string prefix = "/opt/shadowbench/drivers/mesa-25.0.7";
+    if (!std::filesystem::exists(prefix))
+        GTEST_SKIP() << "Mesa 25.0.7 is not unpacked at " << prefix << ": no second driver to A/B against";
+    const std::string lib = prefix + "/usr/lib/x86_64-linux-gnu";
+    const std::string baseEnv = " --base-env LD_LIBRARY_PATH=" + lib +
+                                " --base-env LIBGL_DRIVERS_PATH=" + lib +
+                                "/dri --base-env __EGL_VENDOR_LIBRARY_FILENAMES=" + prefix +
+                                "/etc/egl_vendor.json --base-env VK_ICD_FILENAMES=" + prefix +
+                                "/etc/lvp_icd.json --base-env GBM_BACKENDS_PATH=" + lib + "/gbm";
+    auto ab = [&](const std::string& config, const std::string& extra) {
+        return test::runCommand(std::string(test::benchBinary()) + " ci --layers A --configs " + config +
+                                baseEnv + extra + " --out " + mDir + "/out");
+    };
+    const auto vulkan = ab("shadowmap_vulkan", "");
+    EXPECT_EQ(vulkan.exitCode, 0) << vulkan.output;
+    EXPECT_NE(vulkan.output.find("perf gate: PASS"), std::string::npos) << vulkan.output;
+    EXPECT_NE(
+        vulkan.output.find("| shadowmap_vulkan | balanced | application work exact; driver work differs "
+                           "(explained): "),
+        std::string::npos)
+        << vulkan.output;
+    EXPECT_EQ(vulkan.output.find("(PASS)"), std::string::npos) << vulkan.output;
+    // Both values, 25.0.7's (no fragment shader in a depth-only pass) and 22.3.6's.
+    EXPECT_NE(
+        vulkan.output.find("driver work (explained, not judged): shadowmap_vulkan: depth_fragments 0 -> "
+                           "59072 (head/base: from 0)"),
+        std::string::npos)
+        << vulkan.output;
+    EXPECT_NE(vulkan.output.find("llvmpipe Mesa 25.0.7"), std::string::npos) << vulkan.output;
+
+    const auto gl = ab("shadowmap_aircraft", " --head-env SHADOWBENCH_INJECT=double_shadow_resolution");
+    EXPECT_EQ(gl.exitCode, 1) << gl.output;
+    EXPECT_NE(gl.output.find("application work differs across drivers: shadowmap_aircraft: "
+                             "counter_shadow_map_texels 262144 -> 1048576"),
+              std::string::npos)
+        << gl.output;
+    EXPECT_NE(
+        gl.output.find("driver work (explained, not judged): shadowmap_aircraft: depth_fragments 0 -> "),
+        std::string::npos)
+        << gl.output;
 }
 
 // Layer B on a machine where valgrind cannot run the bench: exit 3 (the machine lacks what the layer

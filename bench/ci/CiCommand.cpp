@@ -37,7 +37,8 @@ constexpr const char* kFooter = R"(Examples:
   bench ci --base-env LP_NUM_THREADS=2 --head-env LP_NUM_THREADS=1 --layers A,C   a driver A/B
   SHADOWBENCH_INJECT=extra_fullscreen_pass bench ci --layers A   the proof: a known regression
 
-Layers: A exact work per pass (any increase fails; a decrease passes and asks for --update),
+Layers: A exact work per pass (any increase fails; a decrease passes and asks for --update; across two
+drivers the application's work must match exactly and the driver's is reported with both values),
 B instructions per frame under valgrind (fails beyond max(0.5%, the A/A pair)), C wall time
 interleaved with an A/A control (fails beyond max(5%, the control's noise) at p < alpha).
 Exit codes: 0 pass, 1 a gating layer failed, 2 bad input, 3 the machine lacks what a layer needs.)";
@@ -107,44 +108,34 @@ CsvTable workRows(const CiSuite& suite, const std::vector<const CiConfig*>& conf
     return CsvWriter::toTable(rows);
 }
 
+/// Layer A's verdict, details and each configuration's cell (WorkGate.h: nothing uncompared reads PASS;
+/// across drivers the application's work is judged and the driver's reported).
 GateLayer judgeWork(const WorkComparison& w, GateReport& report, const std::string& baseName) {
-    GateLayer layer{"A: exact work", true, false, w.pass() ? "PASS" : "FAIL", {}};
-    for (const WorkChange& c : w.increases) layer.details.push_back("increase: " + c.describe());
-    for (const WorkChange& c : w.decreases) layer.details.push_back("decrease: " + c.describe());
-    for (const std::string& c : w.onlyInBase)
-        layer.details.push_back(c + ": in the " + baseName + " only (not measured now)");
-    for (const std::string& c : w.onlyInHead)
-        layer.details.push_back(c + ": not in the " + baseName + " (add it with --update)");
-    for (const std::string& c : w.notComparable) layer.details.push_back("not comparable: " + c);
-    if (!w.decreases.empty() && w.pass())
-        layer.details.push_back("less work than the " + baseName + ": record it with bench ci --update");
-    layer.details.push_back(std::to_string(w.metrics) + " counts of " + std::to_string(w.configs) +
-                            " configurations compared exactly");
-    for (GateConfigRow& row : report.rows) {
-        std::string worst;
-        double worstPct = 0;
-        int changes = 0;
-        for (const WorkChange& c : w.increases) {
-            if (c.config != row.config) continue;
-            ++changes;
-            const double pct = c.base == 0 ? 1e300 : (c.head - c.base) / c.base;
-            if (worst.empty() || pct > worstPct)
-                worst = c.describe().substr(c.config.size() + 2), worstPct = pct;
-        }
-        if (changes)
-            row.work = {worst + (changes > 1 ? " and " + std::to_string(changes - 1) + " more" : ""), "FAIL"};
-        else
-            row.work = {"exact", "PASS"};
-    }
-    return layer;
+    for (GateConfigRow& row : report.rows) row.work = w.cell(row.config);
+    return WorkGate::layer(w, baseName);
 }
 
 /// What the committed baseline keeps of layer A's rows: the configuration's identity and its exact
-/// counts, no times or timestamps, so that its diff in review shows only work that changed.
+/// counts, no times or timestamps, so that its diff in review shows only work that changed. The identity
+/// includes the driver on both APIs (Vulkan rows name it in gl_vendor only), so that layer A can tell a
+/// head on another driver from one on the baseline's.
 CsvTable baselineColumns(const CsvTable& rows) {
-    static const std::vector<std::string> kKeep = {
-        col::kCiConfig, col::kStatus,    col::kRenderer, col::kGlVersion, col::kTechnique, col::kProperties,
-        col::kScene,    col::kInstances, col::kSubmit,   col::kWidth,     col::kHeight,    col::kLights};
+    static const std::vector<std::string> kKeep = {col::kCiConfig,
+                                                   col::kStatus,
+                                                   col::kApi,
+                                                   col::kRenderer,
+                                                   col::kGlVersion,
+                                                   col::kGlVendor,
+                                                   WorkGate::kDriverColumn,
+                                                   WorkGate::kDriverVersionColumn,
+                                                   col::kTechnique,
+                                                   col::kProperties,
+                                                   col::kScene,
+                                                   col::kInstances,
+                                                   col::kSubmit,
+                                                   col::kWidth,
+                                                   col::kHeight,
+                                                   col::kLights};
     std::vector<size_t> keep;
     for (size_t c = 0; c < rows.header.size(); ++c)
         if (std::find(kKeep.begin(), kKeep.end(), rows.header[c]) != kKeep.end() ||
@@ -211,6 +202,7 @@ int CiCommand::main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 10.0))
         ->capture_default_str();
     if (int code = parseCli(app, argc, argv, "bench ci"); code >= 0) return code;
+    WallLayer::checkThresholds(o.wall.familyAlpha, o.wall.floor);
     // Before any configuration runs: a mistyped binary would otherwise fail minutes later, as exit 1.
     for (const auto& [option, path] :
          {std::pair{"--base-bench", o.baseBench}, {"--head-bench", o.headBench}}) {

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "bench/lib/gate/GateReport.h"
+#include "bench/lib/gate/WallLayer.h"
 #include "bench/lib/gate/WorkGate.h"
 #include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
@@ -27,7 +28,12 @@ constexpr const char* kFooter = R"(Examples:
   bench compare ci-out-old/work.csv ci-out/work.csv --json cmp.json
   bench -t shadowmap --repeat 9 --csv a.csv; ...; bench compare a.csv b.csv
 
-Layer A compares the census columns (work_*, load_*, counter_*) exactly: any increase fails. Layer C
+Layer A compares the census columns (work_*, load_*, counter_*) exactly. On one driver any increase
+fails; when the files' rows ran on two drivers (driver_version, else gl_version or gl_vendor) the
+application's work (calls, draws, triangles, primitives, counters) must match exactly and the driver's
+(vertex and fragment shader invocations, clipped primitives) is reported with both values. An empty or
+header-only file, no ok row, a configuration in one file only or a count that is not a whole number
+fails: nothing uncompared passes. Layer C
 needs >= 2 rows of a configuration in both files; its rounds were measured apart, so it is a
 Mann-Whitney U test on the wall medians (unpaired), failing only beyond --floor at p < alpha split
 over the configurations. Instructions (layer B) and an interleaved A/A control need bench ci.)";
@@ -103,6 +109,7 @@ int CompareCommand::main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 10.0))
         ->capture_default_str();
     if (int code = parseCli(app, argc, argv, "bench compare"); code >= 0) return code;
+    WallLayer::checkThresholds(alpha, floor);
     for (const std::string& p : {basePath, headPath})
         if (!std::filesystem::exists(p)) throw Error("bench compare: " + p + ": no such file");
     const CsvTable base = CsvWriter::read(basePath), head = CsvWriter::read(headPath);
@@ -111,21 +118,12 @@ int CompareCommand::main(int argc, char** argv) {
     GateReport report;
     report.title = "shadowbench compare";
     report.about = {"base: " + basePath + " (" + std::to_string(base.rows.size()) + " rows)",
-                    "new: " + headPath + " (" + std::to_string(head.rows.size()) + " rows)"};
+                    "head (new): " + headPath + " (" + std::to_string(head.rows.size()) + " rows)"};
     report.reproduce = "bench compare " + basePath + " " + headPath;
     const WorkComparison w = WorkGate::compare(base, head);
-    GateLayer a{"A: exact work", true, false, w.pass() ? "PASS" : "FAIL", {}};
-    if (w.configs == 0 && w.notComparable.empty()) {
-        a.verdict = "NO VERDICT";
-        a.details.push_back("no configuration is in both files");
-    }
-    for (const WorkChange& c : w.increases) a.details.push_back("increase: " + c.describe());
-    for (const WorkChange& c : w.decreases) a.details.push_back("decrease: " + c.describe());
-    for (const std::string& c : w.onlyInBase) a.details.push_back(c + ": in the base only");
-    for (const std::string& c : w.onlyInHead) a.details.push_back(c + ": in the new file only");
-    for (const std::string& c : w.notComparable) a.details.push_back("not comparable: " + c);
-    a.details.push_back(std::to_string(w.metrics) + " counts of " + std::to_string(w.configs) +
-                        " configurations compared exactly");
+    GateLayer a = WorkGate::layer(w, "base");
+    // The table's rows: every configuration either file has, each saying what happened to it.
+    for (const auto& [config, cell] : w.cells) report.rows.push_back({config, "", cell, {}, {}});
     report.layers.push_back(a);
     report.layers.push_back({"B: instructions per frame", false, false, "", {"needs bench ci (valgrind)"}});
     report.layers.push_back(compareWall(base, head, alpha, floor));

@@ -40,12 +40,19 @@ std::string text(const nlohmann::json& row, const char* key) {
 using Field = std::string Fingerprint::*;
 const std::vector<std::pair<const char*, Field>>& fields() {
     static const std::vector<std::pair<const char*, Field>> kFields = {
-        {"renderer", &Fingerprint::renderer},        {"gl_version", &Fingerprint::glVersion},
-        {"mesa_version", &Fingerprint::mesaVersion}, {"llvm_version", &Fingerprint::llvmVersion},
-        {"vector_bits", &Fingerprint::vectorBits},   {"backend", &Fingerprint::backend},
-        {"cpu_model", &Fingerprint::cpuModel},       {"cpu_flags", &Fingerprint::cpuFlags},
-        {"valgrind", &Fingerprint::valgrind},        {"glibc", &Fingerprint::glibc},
+        {"renderer", &Fingerprint::renderer},
+        {"gl_version", &Fingerprint::glVersion},
+        {"mesa_version", &Fingerprint::mesaVersion},
+        {"llvm_version", &Fingerprint::llvmVersion},
+        {"vector_bits", &Fingerprint::vectorBits},
+        {"backend", &Fingerprint::backend},
+        {"cpu_model", &Fingerprint::cpuModel},
+        {"cpu_flags", &Fingerprint::cpuFlags},
+        {"valgrind", &Fingerprint::valgrind},
+        {"glibc", &Fingerprint::glibc},
         {"compiler", &Fingerprint::compiler},
+        {"driver", &Fingerprint::driver},
+        {"driver_version", &Fingerprint::driverVersion},
     };
     return kFields;
 }
@@ -73,7 +80,10 @@ Fingerprint Fingerprint::capture(const nlohmann::json& row, const std::string& v
     Fingerprint f;
     f.renderer = text(row, "renderer");
     f.glVersion = text(row, "gl_version");
-    f.mesaVersion = firstMatch(f.glVersion, std::regex(R"(Mesa ([0-9][0-9A-Za-z.\-]*))"));
+    const std::regex mesa(R"(Mesa ([0-9][0-9A-Za-z.\-~+]*))");
+    f.mesaVersion = firstMatch(f.glVersion.empty() ? text(row, "gl_vendor") : f.glVersion, mesa);
+    f.driver = text(row, "driver");
+    f.driverVersion = text(row, "driver_version");
     f.llvmVersion = firstMatch(f.renderer, std::regex(R"(LLVM ([0-9][0-9.]*))"));
     f.vectorBits = firstMatch(f.renderer, std::regex(R"(([0-9]+) bits)"));
     f.backend = text(row, "backend");
@@ -118,8 +128,12 @@ Fingerprint Fingerprint::fromJson(const nlohmann::json& j, const std::string& so
 
 std::vector<std::string> Fingerprint::differences(const Fingerprint& other) const {
     std::vector<std::string> out;
-    for (const auto& [name, field] : fields())
+    // Records written before the driver table lack the driver's name and version: unknown, not different.
+    const std::set<std::string> ifBoth = {"driver", "driver_version"};
+    for (const auto& [name, field] : fields()) {
+        if (ifBoth.count(name) && ((this->*field).empty() || (other.*field).empty())) continue;
         if (this->*field != other.*field) out.push_back(name);
+    }
     std::set<std::string> keys;
     for (const auto& [k, v] : environment) keys.insert(k);
     for (const auto& [k, v] : other.environment) keys.insert(k);
@@ -128,6 +142,18 @@ std::vector<std::string> Fingerprint::differences(const Fingerprint& other) cons
         const bool same = a != environment.end() && b != other.environment.end() && a->second == b->second;
         if (!same) out.push_back("environment." + k);
     }
+    return out;
+}
+
+std::vector<std::string> Fingerprint::differencesBesidesDriver(const Fingerprint& other,
+                                                               const std::set<std::string>& tested) const {
+    static const std::set<std::string> kDriverFields = {
+        "renderer", "gl_version", "mesa_version", "llvm_version", "vector_bits", "driver", "driver_version"};
+    std::vector<std::string> out = differences(other);
+    std::erase_if(out, [&](const std::string& d) {
+        const bool variable = d.rfind("environment.", 0) == 0;
+        return kDriverFields.count(d) || (variable && tested.count(d.substr(12)));
+    });
     return out;
 }
 

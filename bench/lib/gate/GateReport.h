@@ -1,7 +1,16 @@
 #pragma once
 // What the perf gate found, per layer and per configuration, as one Markdown block (for a CI log or a
-// pull-request comment) and as JSON (for dashboards). The verdict of the gate is FAIL when a gating
-// layer failed; layers named advisory are reported the same way but cannot fail it.
+// pull-request comment) and as JSON (for dashboards). Layers named advisory are reported the same way
+// but cannot fail the gate. The gate's verdict:
+// - FAIL when a gating layer failed, or a gating layer gave NO VERDICT (it compared nothing: its inputs
+//   held nothing comparable, which is never a pass) unless the layer `declined` (its instrument cannot
+//   judge on this machine, e.g. layer B against an instruction baseline counted on another CPU: said so,
+//   never an alarm);
+// - NO VERDICT when no gating layer judged anything (all declined, advisory or not run): this also exits
+//   as a failure, since nothing was compared;
+// - PASS otherwise: at least one gating layer compared and none failed.
+// A configuration's cell reads PASS only when that configuration was compared; otherwise it says what
+// happened ("not compared: only in the base", "driver work differs (explained)").
 #include <string>
 #include <vector>
 
@@ -27,6 +36,8 @@ struct GateLayer {
     bool advisory = false;
     std::string verdict; ///< PASS, FAIL, INCONCLUSIVE, NO VERDICT
     std::vector<std::string> details;
+    /// With NO VERDICT: the instrument cannot judge here (see the header comment), so it does not fail.
+    bool declined = false;
 };
 
 struct GateReport {
@@ -36,7 +47,9 @@ struct GateReport {
     std::vector<GateLayer> layers;
     std::string reproduce; ///< the command line
 
-    /// FAIL when a non-advisory layer failed, else PASS.
+    /// "FAIL", "NO VERDICT" or "PASS" (see the header comment).
+    std::string verdict() const;
+    /// verdict() is not PASS.
     bool failed() const;
     std::string markdown() const;
     nlohmann::json json() const;

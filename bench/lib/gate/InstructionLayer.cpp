@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 
 #include "bench/lib/callgrind/InstructionCount.h"
 #include "bench/lib/callgrind/InstructionDiff.h"
@@ -94,6 +95,32 @@ std::string categoryChanges(const TechniqueInstructions& base, const TechniqueIn
     return out.empty() ? "none" : out;
 }
 
+/// Why a base measured now cannot be compared with the head ("" when it can): their fingerprints may
+/// differ in the driver and the variables the sides set, nothing else. Seen: Mesa 25.0.7's EGL does not
+/// load under the pinned LD_BIND_NOW=1, so its side fell back to the osmesa backend and would have been
+/// compared with 22.3.6 on egl-surfaceless.
+std::string abMismatch(const Fingerprint& base, const Fingerprint& head, const CiSide& baseSide,
+                       const CiSide& headSide) {
+    std::set<std::string> tested;
+    for (const CiSide* side : {&baseSide, &headSide})
+        for (const auto& [k, v] : side->env) tested.insert(k);
+    const std::vector<std::string> besides = base.differencesBesidesDriver(head, tested);
+    if (besides.empty()) return "";
+    std::string list;
+    for (const std::string& d : besides) list += (list.empty() ? "" : ", ") + d;
+    // The pin's LD_BIND_NOW=1 is what made 25.0.7's EGL fail to load; unset on both sides it loads.
+    const std::string backends =
+        base.backend == head.backend
+            ? ""
+            : " (backend " + base.backend + " against " + head.backend +
+                  "; a driver whose EGL does not load under the pinned LD_BIND_NOW=1 "
+                  "falls back to osmesa: try --base-env LD_BIND_NOW= --head-env "
+                  "LD_BIND_NOW=)";
+    return "base and head differ in " + list + backends +
+           " besides the driver and the variables under test: their instructions would be of different "
+           "code paths";
+}
+
 } // namespace
 
 InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
@@ -144,6 +171,7 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
     }
     bar.close();
     std::string noVerdict;
+    bool invalidAB = false; // base and head differ beyond the driver: not the instrument's doing
     if (unstable)
         noVerdict = "instrument unstable: the A/A pair disagrees by more than " + pct(kUnstableAbove);
     if (!baseFingerprint) noVerdict = "no instruction baseline yet (bench ci --update writes one)";
@@ -152,9 +180,11 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
     if (!differences.empty()) {
         std::string list;
         for (const std::string& d : differences) list += (list.empty() ? "" : ", ") + d;
-        if (base)
-            out.layer.details.push_back("base and head fingerprints differ in: " + list);
-        else if (noVerdict.empty())
+        if (base) out.layer.details.push_back("base and head fingerprints differ in: " + list);
+        if (base && noVerdict.empty())
+            noVerdict = abMismatch(*baseFingerprint, heads.front().fingerprint, *base, head);
+        invalidAB = base && !noVerdict.empty() && !unstable;
+        if (!base && noVerdict.empty())
             noVerdict = "the baseline was counted on another machine or toolchain (" + list +
                         "): instructions are compared on one fingerprint only";
     }
@@ -164,8 +194,15 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
         const TechniqueInstructions& h = heads[i].counts;
         char perFrame[64];
         std::snprintf(perFrame, sizeof perFrame, "%.4g Ir/frame", h.irPerFrame);
-        if (!bases[i] || !noVerdict.empty()) {
+        if (!noVerdict.empty()) {
             cell = {perFrame, "NO VERDICT"};
+        } else if (!bases[i]) {
+            // Not compared, and the record could have held it: like a configuration missing from layer A's
+            // baseline, a failure with its reason rather than a silent gap.
+            cell = {std::string(perFrame) + "; not in the instruction baseline", "FAIL"};
+            failed = true;
+            out.layer.details.push_back(configs[i]->name +
+                                        ": not in the instruction baseline (add it with bench ci --update)");
         } else {
             const InstructionDiff d =
                 InstructionDiff::compare(*bases[i], base ? h : cutLike(h, *bases[i]), 5);
@@ -181,6 +218,9 @@ InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
     }
     if (!noVerdict.empty()) out.layer.details.push_back("no verdict: " + noVerdict);
     out.layer.verdict = !noVerdict.empty() ? "NO VERDICT" : failed ? "FAIL" : "PASS";
+    // The instrument's reasons (unstable, no record, another machine's record) are reported, never an
+    // alarm (GateReport.h); an A/B whose sides differ beyond the driver compared nothing and fails.
+    out.layer.declined = !noVerdict.empty() && !invalidAB;
     return out;
 }
 

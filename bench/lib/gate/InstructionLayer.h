@@ -6,9 +6,10 @@
 // the instruction outside libc, whose calloc follows the heap's history (2.8e-4 seen, all in libc). Otherwise
 // a configuration fails when its instructions per frame grew by more than max(0.5%, the A/A difference).
 // Against the committed baseline (results/ci/baseline/instructions.json) the fingerprints must match
-// (Fingerprint.h): another CPU, Mesa, LLVM, valgrind or glibc gives no verdict, never a false alarm.
-// Against a base measured now, the differences of the fingerprints are listed (a driver A/B differs on
-// purpose).
+// (Fingerprint.h): another CPU, Mesa (on either API), LLVM, valgrind or glibc gives no verdict, marked
+// declined (GateReport.h: reported, never a false alarm); a configuration the record lacks fails. Against
+// a base measured now, the differences of the fingerprints are listed and the layer judges: in a driver
+// A/B (--base-env/--head-env, or each side's driver) the driver is the variable under test.
 #include <optional>
 #include <string>
 #include <vector>

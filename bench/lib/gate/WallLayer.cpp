@@ -41,6 +41,18 @@ struct Series {
 
 } // namespace
 
+void WallLayer::checkThresholds(double familyAlpha, double floor) {
+    auto check = [](const char* option, double v, double lo, double hi) {
+        if (!std::isfinite(v) || v < lo || v > hi) {
+            char text[160];
+            std::snprintf(text, sizeof text, "%s %g: expected a number in [%g, %g]", option, v, lo, hi);
+            throw Error(text, ExitCode::BadInput);
+        }
+    };
+    check("--alpha", familyAlpha, 1e-9, 0.5);
+    check("--floor", floor, 0.0, 10.0);
+}
+
 WallLayerResult WallLayer::run(const CiSuite& suite, const std::vector<const CiConfig*>& configs,
                                const std::optional<CiSide>& base, const CiSide& head,
                                const WallLayerOptions& options) {

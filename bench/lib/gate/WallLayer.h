@@ -36,6 +36,10 @@ struct WallLayerResult {
 class WallLayer {
 public:
     /// `base` empty: the head against itself only (the control), reported as what the job could see.
+    /// Throws Error(BadInput) unless `familyAlpha` is in [1e-9, 0.5] and `floor` in [0, 10], both finite:
+    /// CLI11's range check lets nan through (every comparison with nan is false), and a nan floor would
+    /// make the layer unable to fail.
+    static void checkThresholds(double familyAlpha, double floor);
     static WallLayerResult run(const CiSuite& suite, const std::vector<const CiConfig*>& configs,
                                const std::optional<CiSide>& base, const CiSide& head,
                                const WallLayerOptions& options);
