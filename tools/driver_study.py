@@ -58,7 +58,10 @@ def version(row):
 
 def load_pairs(folder, suite):
     """[(config, base row, head row)] in the suite's order; checks that each pair ran one configuration."""
-    rows = pd.read_csv(os.path.join(folder, "work.csv"))
+    path = os.path.join(folder, "work.csv")
+    if not os.path.exists(path):
+        fail(f"no {path} (bash scripts/driver-study.sh writes it)")
+    rows = pd.read_csv(path)
     configs = suite["configs"]
     if len(rows) != 2 * len(configs):
         fail(f"work.csv has {len(rows)} rows for {len(configs)} configurations on two drivers")
