@@ -85,6 +85,8 @@ TEST(CallgrindDumpTest, CategoriesOfTheFixture) {
 TEST(CallgrindDumpTest, ClassifiesMesaLibrariesAndTheHarnessByFileName) {
     EXPECT_EQ(classifyObject("", ""), CostCategory::ShaderJit);
     EXPECT_EQ(classifyObject("/usr/lib/x86_64-linux-gnu/libgallium-24.2.so", ""), CostCategory::Mesa);
+    // lavapipe, the Vulkan side of the same driver
+    EXPECT_EQ(classifyObject("/usr/lib/x86_64-linux-gnu/libvulkan_lvp.so", ""), CostCategory::Mesa);
     EXPECT_EQ(classifyObject("/usr/lib/x86_64-linux-gnu/libOSMesa.so.8", ""), CostCategory::Mesa);
     EXPECT_EQ(classifyObject("/usr/lib/x86_64-linux-gnu/libLLVM-15.so.1", ""), CostCategory::Llvm);
     EXPECT_EQ(classifyObject("/usr/lib/x86_64-linux-gnu/libm.so.6", ""), CostCategory::System);

@@ -25,8 +25,9 @@ CostCategory classifyObject(const std::string& object, const std::string& harnes
         return CostCategory::Harness;
     if (startsWith(file, "libLLVM")) return CostCategory::Llvm;
     // Debian 12's Mesa 22.3 puts llvmpipe into the swrast_dri.so megadriver (EGL, GLX) and into
-    // libOSMesa; newer Mesa moves it into libgallium-<version>.so.
+    // libOSMesa; newer Mesa moves it into libgallium-<version>.so. lavapipe is libvulkan_lvp.so.
     if (file.find("_dri.so") != std::string::npos || startsWith(file, "libgallium") ||
+        startsWith(file, "libvulkan_lvp") ||
         startsWith(file, "libOSMesa") || startsWith(file, "libglapi") || startsWith(file, "libEGL_mesa") ||
         startsWith(file, "libGLX_mesa") || startsWith(file, "libgbm"))
         return CostCategory::Mesa;
