@@ -80,7 +80,9 @@ constexpr Mode kModes[] = {
      "what the scene asks for, what each technique delivers of it, the\n"
      "permutation it compiles and the passes one frame runs or skips",
      ExplainCommand::main},
-    {"bisect", "bench bisect GOOD BAD -c CONFIG", "the first commit where a configuration's work changed",
+    {"bisect", "bench bisect GOOD BAD -c CONFIG",
+     "the first commit of GOOD..BAD where a configuration's exact work,\n"
+     "instructions per frame or image changed (builds in a worktree)",
      BisectCommand::main},
     {"compare", "bench compare BASE NEW", "the perf gate's verdict on two result CSVs", CompareCommand::main},
     {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main},

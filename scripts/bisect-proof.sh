@@ -29,7 +29,8 @@ git -C "$repo" checkout -q --detach "$head"
 git() { command git -C "$repo" -c user.name="bisect proof" -c user.email=proof@localhost "$@"; }
 
 # Files compiled into bench that no probe's configuration depends on: a comment changes no work.
-files=(techniques/none/NoneGL.cpp bench/lib/gate/WorkGate.cpp core/Strings.cpp scenes/SceneLoader.cpp)
+files=(techniques/none/NoneGL.cpp bench/lib/gate/WorkGate.cpp core/Suggestion.cpp scenes/SceneLoader.cpp)
+for f in "${files[@]}"; do [ -f "$repo/$f" ] || { echo "no $f in the checkout" >&2; exit 1; }; done
 regression_line='mDrawAllIntoMap = injected(Injection::NoCasterCulling);'
 injected=""
 for i in $(seq 1 "$n"); do
