@@ -18,6 +18,11 @@ struct BadBisect {
     std::string mustContain;
 };
 
+/// The case's name in gtest's messages instead of its bytes.
+void PrintTo(const BadBisect& c, std::ostream* os) {
+    *os << c.name;
+}
+
 class BisectCli : public ::testing::TestWithParam<BadBisect> {};
 
 std::string shellQuoted(const std::string& s) {
@@ -53,4 +58,4 @@ INSTANTIATE_TEST_SUITE_P(
                                 "$(git -C " + shellQuoted(test::sourceDir()) +
                                     " rev-list --max-parents=0 HEAD | head -1) HEAD -c no_such_config",
                                 "no configuration 'no_such_config'"}),
-    [](const ::testing::TestParamInfo<BadBisect>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<BadBisect>& p) { return std::string(p.param.name); });

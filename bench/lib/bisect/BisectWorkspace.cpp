@@ -53,9 +53,9 @@ std::string BisectWorkspace::folderFor(const GitRepo& repo, const std::string& c
                    ? fs::path(xdg) / "shadowbench" / "bisect"
                    : fs::path("/var/tmp") / ("shadowbench-bisect-" + std::string(user ? user : "user"));
     }
-    root = fs::absolute(root);
+    root = fs::weakly_canonical(fs::absolute(root)); // "repo/../cache" printed as "cache"
     const fs::path source = fs::weakly_canonical(repo.dir());
-    if (inside(fs::weakly_canonical(root), source))
+    if (inside(root, source))
         throw Error("bisect: the cache folder " + root.string() + " lies inside the source tree " +
                         source.string() + " (give --cache-dir elsewhere)",
                     ExitCode::BadInput);
