@@ -7,6 +7,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "bench/bisect/BisectCommand.h"
 #include "bench/bottleneck/BottleneckCommand.h"
 #include "bench/ci/CiCommand.h"
 #include "bench/compare/CompareCommand.h"
@@ -85,6 +86,10 @@ constexpr Mode kModes[] = {
      "what the scene asks for, what each technique delivers of it, the\n"
      "permutation it compiles and the passes one frame runs or skips",
      ExplainCommand::main},
+    {"bisect", "bench bisect GOOD BAD -c CONFIG",
+     "the first commit of GOOD..BAD where a configuration's exact work,\n"
+     "instructions per frame or image changed (builds in a worktree)",
+     BisectCommand::main},
     {"compare", "bench compare BASE NEW", "the perf gate's verdict on two result CSVs", CompareCommand::main},
     {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main},
     {"export", "bench export IN.csv --format md",

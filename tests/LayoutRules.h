@@ -104,6 +104,8 @@ inline const std::vector<Layer>& layers() {
         {"bench/lib/bottleneck", lib({"output", "options", "statistics", "sweep"}), {}},
         // The performance gate: the suite, its runner and layers (work, instructions, wall time).
         {"bench/lib/gate", lib({"output", "options", "statistics", "sweep", "callgrind"}), {}},
+        // Bisection: builds commits in a worktree and measures them as the gate's layers do.
+        {"bench/lib/bisect", lib({"output", "options", "statistics", "sweep", "callgrind", "gate"}), {}},
         // One folder per subcommand, each on the libraries only (never on another subcommand).
         {"bench/run",
          lib({"output", "options", "statistics", "harness", "rows", "measure", "select", "viewer", "images"}),
@@ -122,12 +124,15 @@ inline const std::vector<Layer>& layers() {
          {}},
         {"bench/ci", lib({"output", "options", "statistics", "sweep", "callgrind", "gate"}), {}},
         {"bench/compare", lib({"output", "options", "statistics", "gate"}), {}},
+        {"bench/bisect",
+         lib({"output", "options", "statistics", "sweep", "callgrind", "gate", "bisect"}),
+         {}},
         {"bench/report", lib({"output", "options", "sweep"}), {}},
         // The dispatcher: every subcommand and the libraries.
         {"bench",
          plus(lib({"output", "options", "statistics", "harness", "rows", "measure", "sweep"}),
               {"bench/run", "bench/explain", "bench/merge", "bench/export", "bench/sweep", "bench/bottleneck",
-               "bench/figures", "bench/golden", "bench/ci", "bench/compare", "bench/report"}),
+               "bench/figures", "bench/golden", "bench/ci", "bench/compare", "bench/report", "bench/bisect"}),
          {"common"}},
         // The comparison programs. handloop runs bench's harness beside a hand-written loop;
         // handshadow is the other end of a comparison and shares no harness code: the scene model only.
