@@ -10,6 +10,7 @@
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/sweep/ChildProcess.h"
+#include "bench/lib/sweep/InterruptGuard.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 
@@ -39,37 +40,6 @@ struct BisectOptions {
     double irThreshold = 0.005;
     bool clean = false;
     std::vector<std::string> runArgs; ///< after `--`
-};
-
-volatile int gInterrupted = 0;
-
-void onInterrupt(int sig) {
-    gInterrupted = 1;
-    ChildProcess::interruptCurrent(sig);
-}
-
-/// SIGINT/SIGTERM set a flag for the lifetime of a bisection, so that it unwinds (removing the
-/// worktree) instead of dying with the registration left behind.
-class InterruptGuard {
-public:
-    InterruptGuard() {
-        gInterrupted = 0;
-        struct sigaction sa {};
-        sa.sa_handler = onInterrupt;
-        sigemptyset(&sa.sa_mask);
-        sigaction(SIGINT, &sa, &mOldInt);
-        sigaction(SIGTERM, &sa, &mOldTerm);
-    }
-    ~InterruptGuard() {
-        sigaction(SIGINT, &mOldInt, nullptr);
-        sigaction(SIGTERM, &mOldTerm, nullptr);
-    }
-    InterruptGuard(const InterruptGuard&) = delete;
-    InterruptGuard& operator=(const InterruptGuard&) = delete;
-
-private:
-    struct sigaction mOldInt {
-    }, mOldTerm{};
 };
 
 /// The repository: --repo, else the checkout holding the working directory, else the source tree this
@@ -233,7 +203,7 @@ int BisectCommand::main(int argc, char** argv) {
     {
         InterruptGuard guard;
         BisectWorkspace workspace(repo, folder, good);
-        result = Bisection(repo, workspace, signal, o.jobs).run(good, bad, gInterrupted);
+        result = Bisection(repo, workspace, signal, o.jobs).run(good, bad, InterruptGuard::flag());
     } // the worktree's registration ends here, also when run() throws
     if (o.clean) fs::remove_all(folder);
     printResult(result, repo, signal);

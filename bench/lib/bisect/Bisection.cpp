@@ -1,6 +1,7 @@
 #include "bench/lib/bisect/Bisection.h"
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <memory>
 
@@ -30,7 +31,7 @@ std::string stepLine(const BisectStep& s) {
     return line;
 }
 
-void checkInterrupt(const volatile int& interrupted) {
+void checkInterrupt(const volatile std::sig_atomic_t& interrupted) {
     if (interrupted) throw Error("bisect: interrupted", ExitCode::Failure);
 }
 
@@ -82,7 +83,7 @@ nlohmann::json BisectResult::toJson(const std::string& signal,
 Bisection::Bisection(const GitRepo& repo, BisectWorkspace& workspace, const BisectSignal& signal, int jobs)
     : mRepo(repo), mWorkspace(workspace), mSignal(signal), mJobs(jobs) {}
 
-BisectStep Bisection::measure(const std::string& commit, const volatile int& interrupted) {
+BisectStep Bisection::measure(const std::string& commit, const volatile std::sig_atomic_t& interrupted) {
     BisectStep s{commit, mRepo.subject(commit), "", 0, 0, "", {}, {}};
     try {
         mWorkspace.checkout(commit);
@@ -101,7 +102,7 @@ BisectStep Bisection::measure(const std::string& commit, const volatile int& int
 }
 
 BisectResult Bisection::run(const std::string& good, const std::string& bad,
-                            const volatile int& interrupted) {
+                            const volatile std::sig_atomic_t& interrupted) {
     const auto start = std::chrono::steady_clock::now();
     BisectResult r;
     r.good = good;

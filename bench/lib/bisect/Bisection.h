@@ -4,6 +4,7 @@
 // in the one build folder (BisectWorkspace.h) and measured once (BisectSignal.h). A commit that does not
 // build or run is skipped, with its reason. Progress goes to stderr, a line per commit: its step of at
 // most ceil(log2 N) + 1, hash, subject, verdict, build and run time.
+#include <csignal>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,11 +47,12 @@ public:
     Bisection(const GitRepo& repo, BisectWorkspace& workspace, const BisectSignal& signal, int jobs);
     /// Runs the search; Error(Failure) when GOOD itself does not build or run (no reference), and when
     /// `interrupted` reads true after a child returns (SIGINT: the worktree is cleaned up as it unwinds).
-    BisectResult run(const std::string& good, const std::string& bad, const volatile int& interrupted);
+    BisectResult run(const std::string& good, const std::string& bad,
+                     const volatile std::sig_atomic_t& interrupted);
 
 private:
     /// Checks out, builds and measures one commit; a build or run that fails is a skipped step.
-    BisectStep measure(const std::string& commit, const volatile int& interrupted);
+    BisectStep measure(const std::string& commit, const volatile std::sig_atomic_t& interrupted);
     const GitRepo& mRepo;
     BisectWorkspace& mWorkspace;
     const BisectSignal& mSignal;

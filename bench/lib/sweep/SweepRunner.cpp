@@ -14,6 +14,7 @@
 #include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/rows/Environment.h"
 #include "bench/lib/sweep/ChildProcess.h"
+#include "bench/lib/sweep/InterruptGuard.h"
 #include "bench/lib/sweep/SweepJob.h"
 #include "core/Error.h"
 #include "gl/ProgramCache.h"
@@ -23,34 +24,6 @@
 namespace sb {
 
 namespace {
-
-volatile std::sig_atomic_t gInterrupted = 0;
-
-void onInterrupt(int sig) {
-    gInterrupted = 1;
-    ChildProcess::interruptCurrent(sig); // a kill of the runner alone must stop the worker too
-}
-
-/// SIGINT/SIGTERM handlers for the lifetime of a run, restored afterwards.
-class InterruptGuard {
-public:
-    InterruptGuard() {
-        gInterrupted = 0;
-        struct sigaction sa {};
-        sa.sa_handler = onInterrupt;
-        sigemptyset(&sa.sa_mask);
-        sigaction(SIGINT, &sa, &mOldInt);
-        sigaction(SIGTERM, &sa, &mOldTerm);
-    }
-    ~InterruptGuard() {
-        sigaction(SIGINT, &mOldInt, nullptr);
-        sigaction(SIGTERM, &mOldTerm, nullptr);
-    }
-
-private:
-    struct sigaction mOldInt {
-    }, mOldTerm{};
-};
 
 /// A private directory for the job files, removed with everything in it.
 class TempDirectory {
@@ -154,10 +127,10 @@ public:
             if (it != earlier.end() && r.technique == mGroup.techniques.front())
                 mBaselineWalls[r.round] = it->second;
         }
-        while (!pending.empty() && !gInterrupted) {
+        while (!pending.empty() && !InterruptGuard::flag()) {
             Attempt a = attempt(pending);
             std::erase_if(pending, [&](const PlannedRow& r) { return a.finished.count(r.index) > 0; });
-            if (gInterrupted || pending.empty()) return;
+            if (InterruptGuard::flag() || pending.empty()) return;
             std::vector<PlannedRow> failed = culprits(a, pending);
             recordFailures(failed, a);
             std::erase_if(pending, [&](const PlannedRow& r) {
@@ -321,10 +294,10 @@ SweepSummary SweepRunner::run(const SweepPlan& plan, const SweepRunOptions& opti
     for (auto& [group, pending] : work) {
         GroupRun(plan, *group, options, summary.timer, jobs.path(), bar, summary)
             .run(std::move(pending), done.wallMs);
-        if (gInterrupted) break;
+        if (InterruptGuard::flag()) break;
     }
     bar.close();
-    summary.interrupted = gInterrupted != 0;
+    summary.interrupted = InterruptGuard::flag() != 0;
     return summary;
 }
 
