@@ -1,7 +1,11 @@
 #include "core/DriverTable.h"
 
 #include <cstdlib>
+#include <dlfcn.h>
 #include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "core/Error.h"
 #include "core/Suggestion.h"
@@ -225,6 +229,51 @@ std::vector<std::pair<std::string, std::string>> DriverTable::childEnvironment(c
     auto out = driver.environment;
     if (!driver.prefix.empty()) out.emplace_back(kActiveVariable, driver.name);
     return out;
+}
+
+namespace {
+
+/// The `ICD.library_path` of a glvnd vendor file or a Vulkan ICD file; "" when the file says none.
+std::string icdLibrary(const std::string& file) {
+    std::ifstream in(file);
+    if (!in)
+        throw Error("--driver " + DriverTable::current() + ": cannot read " + file, ExitCode::Unsupported);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("ICD") || !j["ICD"].contains("library_path") ||
+        !j["ICD"]["library_path"].is_string())
+        throw Error("--driver " + DriverTable::current() + ": " + file + " names no ICD.library_path",
+                    ExitCode::Unsupported);
+    const std::string path = j["ICD"]["library_path"].get<std::string>();
+    // The loaders read a relative path with a '/' from the file's folder, a bare name through the
+    // library search path (as dlopen does).
+    if (path.find('/') == std::string::npos || fs::path(path).is_absolute()) return path;
+    return (fs::path(file).parent_path() / path).string();
+}
+
+} // namespace
+
+void DriverTable::requireLoadable(Api api) {
+    const std::string name = current();
+    if (name == "system" || name == "environment") return;
+    const char* variable = api == Api::GL ? "__EGL_VENDOR_LIBRARY_FILENAMES" : "VK_ICD_FILENAMES";
+    const char* what = api == Api::GL ? "GL (EGL vendor)" : "Vulkan (ICD)";
+    const std::string file = env(variable);
+    if (file.empty())
+        throw Error("--driver " + name + ": no " + what + " library in this driver (" + variable + " unset)",
+                    ExitCode::Unsupported);
+    const std::string library = icdLibrary(file);
+    // Loaded once here and kept: the loader that opens it next gets the same handle.
+    if (!::dlopen(library.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
+        const char* why = ::dlerror();
+        throw Error("--driver " + name + ": its " + what +
+                        " library cannot load: " + (why ? std::string(why) : library),
+                    ExitCode::Unsupported);
+    }
+}
+
+std::string DriverTable::versionInGlVersion(const std::string& glVersion) {
+    const size_t mesa = glVersion.find("Mesa ");
+    return mesa == std::string::npos ? glVersion : glVersion.substr(mesa);
 }
 
 } // namespace sb

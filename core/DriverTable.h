@@ -58,6 +58,17 @@ public:
     /// driver: its environment and SHADOWBENCH_DRIVER. Throws BadInput when this process already runs on
     /// another driver (a child could not return to the system's libraries by adding variables).
     static std::vector<std::pair<std::string, std::string>> childEnvironment(const Driver& driver);
+    /// The library of one API a driver's ICD file names: glvnd's EGL vendor library or the Vulkan ICD.
+    enum class Api { GL, Vulkan };
+    /// Loads the library through which `api` reaches the driver this process runs on (the one its
+    /// vendor or ICD file names), so that a prefix whose library cannot load is refused in one line
+    /// naming the driver and the library, with ExitCode::Unsupported, instead of a loader's failure
+    /// (or, on GL, a silent fall back to another backend). Nothing to check on the system driver or
+    /// one set by hand ("environment"). Called before a context or instance is created.
+    static void requireLoadable(Api api);
+    /// The driver's version in a GL_VERSION string: from "Mesa " on ("4.5 (Compatibility Profile) Mesa
+    /// 25.0.7-2~bpo12+1" gives "Mesa 25.0.7-2~bpo12+1"), the whole string for a driver that is not Mesa.
+    static std::string versionInGlVersion(const std::string& glVersion);
 };
 
 } // namespace sb

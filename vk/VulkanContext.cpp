@@ -8,6 +8,7 @@
 #include <link.h>
 
 #include "core/DriverShaderCache.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -166,6 +167,7 @@ VulkanDeviceInfo describe(VkPhysicalDevice device, int index, VkPhysicalDevicePr
     info.name = props.properties.deviceName;
     info.type = typeName(props.properties.deviceType);
     info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
+    info.driverInfo = driver.driverInfo;
     info.apiVersion = versionString(props.properties.apiVersion);
     return info;
 }
@@ -197,6 +199,7 @@ void VulkanContext::check(VkResult result, const char* what) {
 }
 
 std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
+    DriverTable::requireLoadable(DriverTable::Api::Vulkan);
     VkInstance instance = createBareInstance();
     pinVulkanLibraries();
     std::vector<VulkanDeviceInfo> out;
@@ -213,6 +216,7 @@ std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
 
 VulkanContext::VulkanContext(const VulkanOptions& options) {
     try {
+        DriverTable::requireLoadable(DriverTable::Api::Vulkan);
         createInstance(options.validation);
         pinVulkanLibraries();
         pickDevice(options.device);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/DriverShaderCache.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/NameTable.h"
 #include "gl/backends/EglDeviceContext.h"
@@ -120,6 +121,7 @@ std::string backendNames(bool headlessOnly) {
 
 std::unique_ptr<Context> createContext(const ContextOptions& options) {
     DriverShaderCache::separateByVectorWidth(); // before the driver opens its shader cache
+    DriverTable::requireLoadable(DriverTable::Api::GL);
     std::string reasons;
     for (const BackendEntry* backend : candidates(options)) {
         if (!backend) throw Error("createContext: no backend for this Backend value", ExitCode::Failure);
