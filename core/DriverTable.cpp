@@ -198,6 +198,12 @@ std::string DriverTable::current() {
     return selectingVariableSet() ? "environment" : "system";
 }
 
+std::vector<std::string> DriverTable::carriedVariables() {
+    std::vector<std::string> out = driverVariables();
+    out.emplace_back(kActiveVariable);
+    return out;
+}
+
 bool DriverTable::isActive(const Driver& driver) {
     if (current() != driver.name) return false;
     for (const auto& [name, value] : driver.environment)

@@ -48,6 +48,9 @@ public:
     /// The driver this process runs on: the name a `--driver` run set ($SHADOWBENCH_DRIVER), else
     /// "system". Recorded in every row (the `driver` column).
     static std::string current();
+    /// The variables that carry the driver this process runs on to a child started with an environment
+    /// of its own (valgrind's): the ones any driver sets and the name --driver gave it.
+    static std::vector<std::string> carriedVariables();
     /// True when this process already runs with `driver`'s environment (so no re-run is needed).
     static bool isActive(const Driver& driver);
     /// Sets `driver`'s variables in this process's environment (restoring the values a previous driver
