@@ -1,7 +1,6 @@
 #include "core/DriverTable.h"
 
 #include <cstdlib>
-#include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
 
@@ -258,23 +257,30 @@ std::string icdLibrary(const std::string& file) {
 
 } // namespace
 
-void DriverTable::requireLoadable(Api api) {
+namespace {
+
+const char* apiLibraryName(DriverTable::Api api) {
+    return api == DriverTable::Api::GL ? "GL (EGL vendor)" : "Vulkan (ICD)";
+}
+
+} // namespace
+
+std::string DriverTable::libraryToLoad(Api api) {
     const std::string name = current();
-    if (name == "system" || name == "environment") return;
+    if (name == "system" || name == "environment") return "";
     const char* variable = api == Api::GL ? "__EGL_VENDOR_LIBRARY_FILENAMES" : "VK_ICD_FILENAMES";
-    const char* what = api == Api::GL ? "GL (EGL vendor)" : "Vulkan (ICD)";
     const std::string file = env(variable);
     if (file.empty())
-        throw Error("--driver " + name + ": no " + what + " library in this driver (" + variable + " unset)",
+        throw Error("--driver " + name + ": no " + apiLibraryName(api) + " library in this driver (" +
+                        variable + " unset)",
                     ExitCode::Unsupported);
-    const std::string library = icdLibrary(file);
-    // Loaded once here and kept: the loader that opens it next gets the same handle.
-    if (!::dlopen(library.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
-        const char* why = ::dlerror();
-        throw Error("--driver " + name + ": its " + what +
-                        " library cannot load: " + (why ? std::string(why) : library),
-                    ExitCode::Unsupported);
-    }
+    return icdLibrary(file);
+}
+
+Error DriverTable::cannotLoad(Api api, const char* why) {
+    return Error("--driver " + current() + ": its " + apiLibraryName(api) +
+                     " library cannot load: " + (why ? why : "unknown reason"),
+                 ExitCode::Unsupported);
 }
 
 std::string DriverTable::versionInGlVersion(const std::string& glVersion) {

@@ -198,8 +198,20 @@ void VulkanContext::check(VkResult result, const char* what) {
         throw Error(std::string("vulkan: ") + what + " failed: " + resultName(result), ExitCode::Failure);
 }
 
+namespace {
+
+/// The chosen driver's lavapipe, loaded once and kept (the Vulkan loader then gets the same handle), so
+/// that one that cannot load is refused in one line naming it (core/DriverTable.h).
+void requireDriverLoadable() {
+    const std::string library = DriverTable::libraryToLoad(DriverTable::Api::Vulkan);
+    if (!library.empty() && !::dlopen(library.c_str(), RTLD_LAZY | RTLD_LOCAL))
+        throw DriverTable::cannotLoad(DriverTable::Api::Vulkan, ::dlerror());
+}
+
+} // namespace
+
 std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
-    DriverTable::requireLoadable(DriverTable::Api::Vulkan);
+    requireDriverLoadable();
     VkInstance instance = createBareInstance();
     pinVulkanLibraries();
     std::vector<VulkanDeviceInfo> out;
@@ -216,7 +228,7 @@ std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
 
 VulkanContext::VulkanContext(const VulkanOptions& options) {
     try {
-        DriverTable::requireLoadable(DriverTable::Api::Vulkan);
+        requireDriverLoadable();
         createInstance(options.validation);
         pinVulkanLibraries();
         pickDevice(options.device);
