@@ -196,3 +196,32 @@ TEST(DriverCli, CommandsThatRenderListItAndTheOthersRefuseIt) {
         EXPECT_NE(r.output.find("--driver"), std::string::npos) << args << ": " << r.output;
     }
 }
+
+TEST(DriverCli, CiSidesRunOnTheDriversGiven) {
+    REQUIRE_SECOND_DRIVER();
+    const std::string dir = sb::test::freshTestDir("driver-cli-ci");
+    // One Vulkan configuration of the committed suite: the rows of each side, not the verdict (the
+    // judging of a driver A/B is bench/lib/gate's), are what this asserts.
+    const auto r = runCommand(bench() + " ci --base-driver system --head-driver " + kSecond +
+                              " --layers A --configs none_vulkan --out " + dir);
+    const auto head = sb::test::csvRowMaps(dir + "/work.csv"),
+               base = sb::test::csvRowMaps(dir + "/work_base.csv");
+    ASSERT_EQ(head.size(), 1u) << r.output;
+    ASSERT_EQ(base.size(), 1u) << r.output;
+    EXPECT_EQ(head[0].at("driver"), kSecond);
+    EXPECT_EQ(head[0].at("driver_version").rfind("Mesa 25.0.7", 0), 0u) << head[0].at("driver_version");
+    EXPECT_EQ(base[0].at("driver"), "system");
+}
+
+TEST(DriverCli, CiOnADriverWithoutItsBaselineIsBadInputNamingTheFolder) {
+    REQUIRE_SECOND_DRIVER();
+    // A suite beside which no baseline was committed: the system's and the second driver's are missing.
+    const std::string dir = sb::test::freshTestDir("driver-cli-ci-baseline");
+    fs::copy_file(std::string(SB_SOURCE_DIR) + "/results/ci/suite.json", dir + "/suite.json");
+    const auto r = runCommand(bench() + " --driver " + kSecond + " ci --quick --suite " + dir +
+                              "/suite.json --out " + dir + "/out");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find(dir + "/baseline/mesa-25.0.7/work.csv"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bench ci --update --driver mesa-25.0.7"), std::string::npos) << r.output;
+}
