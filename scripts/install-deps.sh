@@ -9,7 +9,7 @@
 #          (not installed: the system's Mesa stays the default) into its own prefix,
 #          <drivers>/mesa-25.0.7 (<drivers>: $SHADOWBENCH_DRIVERS_DIR, else /opt/shadowbench/drivers),
 #          for `bench --driver mesa-25.0.7` (core/DriverTable.h); adds the suite to apt's sources if
-#          missing. About 30 MB downloaded, 120 MB unpacked
+#          missing. About 24 MB downloaded, 119 MB unpacked, 12-19 s
 #   test   everything: bench, plot, driver, and what the test suite, the sanitizer build and the fuzzers
 #          drive (quick start 2, scripts/test.sh); the default
 # Idempotent: packages already present are skipped and a complete driver prefix is kept, so it costs
@@ -68,6 +68,11 @@ DRIVER_NAME=mesa-25.0.7
 DRIVER_VERSION=25.0.7-2~bpo12+1
 DRIVER_SUITE=bookworm-backports
 DRIVER_DEBS=(mesa-libgallium libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgbm1 libosmesa6 mesa-vulkan-drivers)
+# The libdrm the backport was built against: bookworm's 2.4.114 lacks symbols libgallium names
+# (amdgpu_va_get_start_addr), harmless while symbols bind lazily, fatal under LD_BIND_NOW=1 (the perf
+# gate's layer B pins it).
+DRM_VERSION=2.4.123-1~bpo12+1
+DRM_DEBS=(libdrm2 libdrm-amdgpu1)
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"; return; fi
@@ -84,8 +89,8 @@ ensure_backports_source() {
     as_root tee "/etc/apt/sources.list.d/$DRIVER_SUITE.sources" >/dev/null
 }
 
-# Complete: the stamp names this version, or (a prefix laid out by hand) the versioned gallium library
-# and both files the driver table reads are there.
+# Complete: the stamp names this version, or (a prefix laid out by hand, which may lack the libdrm that
+# only layer B needs) the versioned gallium library and both files the driver table reads are there.
 driver_complete() {
   local prefix=$1 lib=$1/usr/lib/x86_64-linux-gnu
   [ "$(cat "$prefix/.shadowbench-driver" 2>/dev/null)" = "$DRIVER_VERSION" ] && return 0
@@ -103,10 +108,11 @@ install_driver() {
   ensure_backports_source
   local pinned=()
   for p in "${DRIVER_DEBS[@]}"; do pinned+=("$p=$DRIVER_VERSION"); done
+  for p in "${DRM_DEBS[@]}"; do pinned+=("$p=$DRM_VERSION"); done
   if ! apt-cache show "mesa-vulkan-drivers=$DRIVER_VERSION" >/dev/null 2>&1; then
     as_root apt-get update -qq
   fi
-  echo "install-deps: downloading Mesa $DRIVER_VERSION (${DRIVER_DEBS[*]}) into $prefix"
+  echo "install-deps: downloading Mesa $DRIVER_VERSION (${DRIVER_DEBS[*]}; ${DRM_DEBS[*]} $DRM_VERSION) into $prefix"
   mkdir -p "$drivers"
   local tmp
   tmp=$(mktemp -d "$drivers/.$DRIVER_NAME.XXXXXX")
