@@ -1,5 +1,6 @@
 #include "bench/BenchApp.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -43,6 +44,8 @@ struct Mode {
     const char* usage;   ///< as --help shows it
     const char* summary; ///< --help's description; '\n' continues it on the next line
     int (*main)(int argc, char** argv);
+    /// Whether it renders, and so takes `--driver`; the others refuse the option as unknown (exit 2).
+    bool renders = true;
 };
 
 int measureMain(int argc, char** argv) {
@@ -90,14 +93,16 @@ constexpr Mode kModes[] = {
      "the first commit of GOOD..BAD where a configuration's exact work,\n"
      "instructions per frame or image changed (builds in a worktree)",
      BisectCommand::main},
-    {"compare", "bench compare BASE NEW", "the perf gate's verdict on two result CSVs", CompareCommand::main},
-    {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main},
+    {"compare", "bench compare BASE NEW", "the perf gate's verdict on two result CSVs", CompareCommand::main,
+     false},
+    {"merge", "bench merge -o OUT IN...", "join the CSVs of a sharded sweep", MergeCommand::main, false},
     {"export", "bench export IN.csv --format md",
      "a result CSV as a Markdown table, JSON, CSV, Google Benchmark JSON\n"
      "or github-action-benchmark input (dashboards)",
-     ExportCommand::main},
-    {"report", "bench report DIR [-o PAGE]", "results as one HTML page (sortable)", ReportCommand::main},
-    {"sweep-worker", "bench sweep-worker JOB.json", nullptr, workerMain},
+     ExportCommand::main, false},
+    {"report", "bench report DIR [-o PAGE]", "results as one HTML page (sortable)", ReportCommand::main,
+     false},
+    {"sweep-worker", "bench sweep-worker JOB.json", nullptr, workerMain, false},
 };
 
 /// Column where the modes' summaries start in --help.
@@ -200,6 +205,20 @@ int generate(int argc, char** argv) {
     throw Error("unknown subcommand " + word + Suggestion::didYouMean(word, names) + " (see bench --help)");
 }
 
+/// The dynamic loader refuses a driver's library that is missing or broken before main() runs, with
+/// exit code 127 and its own line; tried first in a child (`bench --version`, milliseconds) so that the
+/// refusal is this program's one line, exit 3, naming the driver.
+void requireStartable(const std::string& self, const std::string& driver) {
+    const ChildExit probe = ChildProcess::run({self, "--version"}, {}, [](const std::string&) {});
+    if (probe.ok()) return;
+    std::string last = probe.stderrTail;
+    while (!last.empty() && last.back() == '\n') last.pop_back();
+    last = last.substr(last.rfind('\n') == std::string::npos ? 0 : last.rfind('\n') + 1);
+    throw Error("--driver " + driver + ": this program cannot start on its libraries (" + probe.describe() +
+                    "): " + last,
+                ExitCode::Unsupported);
+}
+
 /// `--driver NAME|PATH` (core/DriverTable.h): the libraries are chosen when a process starts, so a run
 /// asked for another driver than the one it runs on runs itself again with that driver's environment.
 /// The option stays in argv for the subcommand, which records it. Returns only when the process runs
@@ -216,11 +235,30 @@ void runOnRequestedDriver(char** argv, int argc) {
         throw Error("--driver " + wanted + ": its environment did not take effect in the new process",
                     ExitCode::Failure);
     DriverTable::activate(driver);
-    ::setenv(kRerun, "1", 1);
     const std::string self = ChildProcess::selfExecutable();
+    requireStartable(self, wanted);
+    ::setenv(kRerun, "1", 1);
     ::execv(self.c_str(), argv);
     throw Error("--driver " + wanted + ": cannot run " + self + " again: " + std::strerror(errno),
                 ExitCode::Failure);
+}
+
+/// The mode `word` names (argv[1]), or nullptr for the plain run and words that are no mode.
+const Mode* modeNamed(const std::string& word) {
+    for (const Mode& m : kModes)
+        if (*m.name && word == m.name) return &m;
+    return nullptr;
+}
+
+/// `bench --driver X SUB ...` is `bench SUB --driver X ...`: the driver reads as a choice made for the
+/// whole program, so it may come before the subcommand. Moves it behind the subcommand's word in place,
+/// so that the subcommand parses (and records, or refuses) it like its other options.
+void driverAfterSubcommand(int argc, char** argv) {
+    if (argc < 3) return;
+    const std::string first = argv[1];
+    const int width = first == "--driver" ? 2 : first.rfind("--driver=", 0) == 0 ? 1 : 0;
+    if (width == 0 || argc <= width + 1 || !modeNamed(argv[width + 1])) return;
+    std::rotate(argv + 1, argv + 1 + width, argv + 2 + width);
 }
 
 } // namespace
@@ -245,7 +283,10 @@ int BenchApp::main(int argc, char** argv) {
     MeasuredHarness::pinAllocator();
     try {
         checkInjections(); // a typo in SHADOWBENCH_INJECT must not measure the unmodified code
-        runOnRequestedDriver(argv, argc);
+        driverAfterSubcommand(argc, argv);
+        // Only a mode that renders acts on --driver; the others refuse it as an option they lack.
+        const Mode* mode = argc > 1 ? modeNamed(argv[1]) : nullptr;
+        if (!mode || mode->renders) runOnRequestedDriver(argv, argc);
         return dispatch(argc, argv);
     } catch (const Error& e) {
         std::cerr << "bench: error: " << e.what() << "\n";

@@ -2,6 +2,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "core/Error.h"
 #include "core/Suggestion.h"
@@ -194,6 +197,12 @@ std::string DriverTable::current() {
     return selectingVariableSet() ? "environment" : "system";
 }
 
+std::vector<std::string> DriverTable::carriedVariables() {
+    std::vector<std::string> out = driverVariables();
+    out.emplace_back(kActiveVariable);
+    return out;
+}
+
 bool DriverTable::isActive(const Driver& driver) {
     if (current() != driver.name) return false;
     for (const auto& [name, value] : driver.environment)
@@ -225,6 +234,58 @@ std::vector<std::pair<std::string, std::string>> DriverTable::childEnvironment(c
     auto out = driver.environment;
     if (!driver.prefix.empty()) out.emplace_back(kActiveVariable, driver.name);
     return out;
+}
+
+namespace {
+
+/// The `ICD.library_path` of a glvnd vendor file or a Vulkan ICD file; "" when the file says none.
+std::string icdLibrary(const std::string& file) {
+    std::ifstream in(file);
+    if (!in)
+        throw Error("--driver " + DriverTable::current() + ": cannot read " + file, ExitCode::Unsupported);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("ICD") || !j["ICD"].contains("library_path") ||
+        !j["ICD"]["library_path"].is_string())
+        throw Error("--driver " + DriverTable::current() + ": " + file + " names no ICD.library_path",
+                    ExitCode::Unsupported);
+    const std::string path = j["ICD"]["library_path"].get<std::string>();
+    // The loaders read a relative path with a '/' from the file's folder, a bare name through the
+    // library search path (as dlopen does).
+    if (path.find('/') == std::string::npos || fs::path(path).is_absolute()) return path;
+    return (fs::path(file).parent_path() / path).string();
+}
+
+} // namespace
+
+namespace {
+
+const char* apiLibraryName(DriverTable::Api api) {
+    return api == DriverTable::Api::GL ? "GL (EGL vendor)" : "Vulkan (ICD)";
+}
+
+} // namespace
+
+std::string DriverTable::libraryToLoad(Api api) {
+    const std::string name = current();
+    if (name == "system" || name == "environment") return "";
+    const char* variable = api == Api::GL ? "__EGL_VENDOR_LIBRARY_FILENAMES" : "VK_ICD_FILENAMES";
+    const std::string file = env(variable);
+    if (file.empty())
+        throw Error("--driver " + name + ": no " + apiLibraryName(api) + " library in this driver (" +
+                        variable + " unset)",
+                    ExitCode::Unsupported);
+    return icdLibrary(file);
+}
+
+Error DriverTable::cannotLoad(Api api, const char* why) {
+    return Error("--driver " + current() + ": its " + apiLibraryName(api) +
+                     " library cannot load: " + (why ? why : "unknown reason"),
+                 ExitCode::Unsupported);
+}
+
+std::string DriverTable::versionInGlVersion(const std::string& glVersion) {
+    const size_t mesa = glVersion.find("Mesa ");
+    return mesa == std::string::npos ? glVersion : glVersion.substr(mesa);
 }
 
 } // namespace sb

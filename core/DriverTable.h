@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/Error.h"
+
 namespace sb {
 
 struct Driver {
@@ -48,6 +50,9 @@ public:
     /// The driver this process runs on: the name a `--driver` run set ($SHADOWBENCH_DRIVER), else
     /// "system". Recorded in every row (the `driver` column).
     static std::string current();
+    /// The variables that carry the driver this process runs on to a child started with an environment
+    /// of its own (valgrind's): the ones any driver sets and the name --driver gave it.
+    static std::vector<std::string> carriedVariables();
     /// True when this process already runs with `driver`'s environment (so no re-run is needed).
     static bool isActive(const Driver& driver);
     /// Sets `driver`'s variables in this process's environment (restoring the values a previous driver
@@ -58,6 +63,21 @@ public:
     /// driver: its environment and SHADOWBENCH_DRIVER. Throws BadInput when this process already runs on
     /// another driver (a child could not return to the system's libraries by adding variables).
     static std::vector<std::pair<std::string, std::string>> childEnvironment(const Driver& driver);
+    /// The library of one API a driver's ICD file names: glvnd's EGL vendor library or the Vulkan ICD.
+    enum class Api { GL, Vulkan };
+    /// The library through which `api` reaches the driver this process runs on (the one its vendor or
+    /// ICD file names), for the caller to load before it creates a context or instance, so that a prefix
+    /// whose library cannot load is refused in one line (cannotLoad) instead of by a loader's failure
+    /// (or, on GL, a silent fall back to another backend). "" on the system driver or one set by hand
+    /// ("environment"): nothing to check. Throws Unsupported when the driver has no such file for `api`
+    /// or the file names no library.
+    static std::string libraryToLoad(Api api);
+    /// The one-line refusal (ExitCode::Unsupported) of a library libraryToLoad named that did not load;
+    /// `why` is the loader's message (dlerror()), which names the library.
+    static Error cannotLoad(Api api, const char* why);
+    /// The driver's version in a GL_VERSION string: from "Mesa " on ("4.5 (Compatibility Profile) Mesa
+    /// 25.0.7-2~bpo12+1" gives "Mesa 25.0.7-2~bpo12+1"), the whole string for a driver that is not Mesa.
+    static std::string versionInGlVersion(const std::string& glVersion);
 };
 
 } // namespace sb

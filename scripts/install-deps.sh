@@ -5,10 +5,15 @@
 #   plot   python3 with matplotlib and pandas: `bench figures` (tools/plot.py) and `bench report`
 #          (tools/report.py), optional at run time (without them those two stop with an error naming
 #          what to install)
-#   test   everything: bench, plot, and what the test suite, the sanitizer build and the fuzzers drive
-#          (quick start 2, scripts/test.sh); the default
-# Idempotent: packages already present are skipped, so it costs ~1 s on a provisioned machine.
-# Needs root (apt-get). Usage: bash scripts/install-deps.sh [bench|plot|test]...
+#   driver the second GL and Vulkan driver, Mesa 25.0.7 from Debian's bookworm-backports suite, unpacked
+#          (not installed: the system's Mesa stays the default) into its own prefix,
+#          <drivers>/mesa-25.0.7 (<drivers>: $SHADOWBENCH_DRIVERS_DIR, else /opt/shadowbench/drivers),
+#          for `bench --driver mesa-25.0.7` (core/DriverTable.h); adds the suite to apt's sources if
+#          missing. About 24 MB downloaded, 119 MB unpacked, 12-19 s
+#   test   everything: bench, plot, driver, and what the test suite, the sanitizer build and the fuzzers
+#          drive (quick start 2, scripts/test.sh); the default
+# Idempotent: packages already present are skipped and a complete driver prefix is kept, so it costs
+# ~1 s on a provisioned machine. Needs root (apt-get). Usage: bash scripts/install-deps.sh [GROUP]...
 set -euo pipefail
 
 BENCH=(
@@ -58,14 +63,95 @@ TEST=(
   groff-base man-db
 )
 
+# The second driver: Debian's packages of this Mesa release, at this exact version, unpacked together.
+DRIVER_NAME=mesa-25.0.7
+DRIVER_VERSION=25.0.7-2~bpo12+1
+DRIVER_SUITE=bookworm-backports
+DRIVER_DEBS=(mesa-libgallium libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgbm1 libosmesa6 mesa-vulkan-drivers)
+# The libdrm the backport was built against: bookworm's 2.4.114 lacks symbols libgallium names
+# (amdgpu_va_get_start_addr), harmless while symbols bind lazily, fatal under LD_BIND_NOW=1 (the perf
+# gate's layer B pins it).
+DRM_VERSION=2.4.123-1~bpo12+1
+DRM_DEBS=(libdrm2 libdrm-amdgpu1)
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"; return; fi
+  command -v sudo >/dev/null || { echo "install-deps: need root to run: $*" >&2; exit 1; }
+  sudo "$@"
+}
+
+# A deb822 source for the backports suite, beside the bookworm one Debian's image carries.
+ensure_backports_source() {
+  if grep -rqs "$DRIVER_SUITE" /etc/apt/sources.list /etc/apt/sources.list.d/; then return; fi
+  echo "install-deps: adding Debian's $DRIVER_SUITE suite to apt's sources"
+  printf 'Types: deb\nURIs: http://deb.debian.org/debian\nSuites: %s\nComponents: main\nSigned-By: %s\n' \
+    "$DRIVER_SUITE" /usr/share/keyrings/debian-archive-keyring.gpg |
+    as_root tee "/etc/apt/sources.list.d/$DRIVER_SUITE.sources" >/dev/null
+}
+
+# Complete: the stamp names this version, or (a prefix laid out by hand, which may lack the libdrm that
+# only layer B needs) the versioned gallium library and both files the driver table reads are there.
+driver_complete() {
+  local prefix=$1 lib=$1/usr/lib/x86_64-linux-gnu
+  [ "$(cat "$prefix/.shadowbench-driver" 2>/dev/null)" = "$DRIVER_VERSION" ] && return 0
+  [ -f "$lib/libgallium-$DRIVER_VERSION.so" ] && [ -f "$prefix/etc/egl_vendor.json" ] &&
+    [ -f "$prefix/etc/lvp_icd.json" ]
+}
+
+install_driver() {
+  local drivers=${SHADOWBENCH_DRIVERS_DIR:-/opt/shadowbench/drivers}
+  local prefix=$drivers/$DRIVER_NAME
+  if driver_complete "$prefix"; then
+    echo "install-deps: driver $DRIVER_NAME ($DRIVER_VERSION) present in $prefix"
+    return
+  fi
+  ensure_backports_source
+  local pinned=()
+  for p in "${DRIVER_DEBS[@]}"; do pinned+=("$p=$DRIVER_VERSION"); done
+  for p in "${DRM_DEBS[@]}"; do pinned+=("$p=$DRM_VERSION"); done
+  if ! apt-cache show "mesa-vulkan-drivers=$DRIVER_VERSION" >/dev/null 2>&1; then
+    as_root apt-get update -qq
+  fi
+  echo "install-deps: downloading Mesa $DRIVER_VERSION (${DRIVER_DEBS[*]}; ${DRM_DEBS[*]} $DRM_VERSION) into $prefix"
+  mkdir -p "$drivers"
+  local tmp
+  tmp=$(mktemp -d "$drivers/.$DRIVER_NAME.XXXXXX")
+  trap 'rm -rf "$tmp"' EXIT
+  if ! (cd "$tmp" && apt-get download -q "${pinned[@]}" >/dev/null 2>"$tmp/apt.log"); then
+    echo "install-deps: cannot download Mesa $DRIVER_VERSION from $DRIVER_SUITE: $(grep -m1 '^E:' "$tmp/apt.log" || tail -n1 "$tmp/apt.log")" >&2
+    exit 1
+  fi
+  for deb in "$tmp"/*.deb; do dpkg -x "$deb" "$tmp/prefix"; done
+  # The files the loaders read, naming the libraries by absolute path (the packages' own name them by
+  # file name, for the system's library path): glvnd's EGL vendor file and lavapipe's ICD file.
+  local lib=$prefix/usr/lib/x86_64-linux-gnu
+  mkdir -p "$tmp/prefix/etc"
+  printf '{"file_format_version":"1.0.0","ICD":{"library_path":"%s"}}' "$lib/libEGL_mesa.so.0" \
+    >"$tmp/prefix/etc/egl_vendor.json"
+  sed "s|\"library_path\": \"libvulkan_lvp.so\"|\"library_path\": \"$lib/libvulkan_lvp.so\"|" \
+    "$tmp/prefix/usr/share/vulkan/icd.d/lvp_icd.json" >"$tmp/prefix/etc/lvp_icd.json"
+  grep -q "\"$lib/libvulkan_lvp.so\"" "$tmp/prefix/etc/lvp_icd.json" || {
+    echo "install-deps: lavapipe's ICD file in Mesa $DRIVER_VERSION has an unexpected library_path" >&2
+    exit 1
+  }
+  echo "$DRIVER_VERSION" >"$tmp/prefix/.shadowbench-driver"
+  rm -rf "$prefix"
+  mv "$tmp/prefix" "$prefix"
+  rm -rf "$tmp"
+  trap - EXIT
+  echo "install-deps: driver $DRIVER_NAME in $prefix ($(du -sm "$prefix" | cut -f1) MB)"
+}
+
 [ $# -eq 0 ] && set -- test
 PACKAGES=()
+WANT_DRIVER=0
 for group in "$@"; do
   case "$group" in
     bench) PACKAGES+=("${BENCH[@]}") ;;
     plot) PACKAGES+=("${PLOT[@]}") ;;
-    test) PACKAGES+=("${BENCH[@]}" "${PLOT[@]}" "${TEST[@]}") ;;
-    *) echo "install-deps: unknown group '$group' (bench, plot or test)" >&2; exit 2 ;;
+    driver) WANT_DRIVER=1 ;;
+    test) PACKAGES+=("${BENCH[@]}" "${PLOT[@]}" "${TEST[@]}"); WANT_DRIVER=1 ;;
+    *) echo "install-deps: unknown group '$group' (bench, plot, driver or test)" >&2; exit 2 ;;
   esac
 done
 
@@ -77,18 +163,12 @@ for p in "${PACKAGES[@]}"; do
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#PACKAGES[@]} packages of '$*' present"
-  exit 0
-fi
-
-if [ "$(id -u)" -ne 0 ]; then
-  SUDO=sudo
-  command -v sudo >/dev/null || { echo "install-deps: need root to install: ${missing[*]}" >&2; exit 1; }
+  [ ${#PACKAGES[@]} -gt 0 ] && echo "install-deps: all ${#PACKAGES[@]} packages of '$*' present"
 else
-  SUDO=
+  echo "install-deps: installing ${#missing[@]} packages ($*): ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  as_root apt-get update -qq
+  as_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  echo "install-deps: done"
 fi
-echo "install-deps: installing ${#missing[@]} packages ($*): ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-echo "install-deps: done"
+[ $WANT_DRIVER -eq 0 ] || install_driver

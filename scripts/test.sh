@@ -20,6 +20,8 @@ wrap=()
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null; then
   wrap=(xvfb-run -a -s "-screen 0 1280x1024x24")
 fi
+# The second driver was installed above (scripts/install-deps.sh's test group): its tests may not skip.
+export SHADOWBENCH_REQUIRE_DRIVERS=1
 (cd "$root/build" && "${wrap[@]}" ctest --output-on-failure --parallel "$(nproc)" "${args[@]}")
 [ "$quick" = 1 ] && exit 0
 SHADOWBENCH_GATE_BUILD=0 bash "$root/scripts/gate.sh"

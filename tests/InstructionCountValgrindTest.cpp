@@ -31,6 +31,7 @@
 #include "bench/lib/callgrind/ValgrindDiagnosis.h"
 #include "bench/lib/gate/Fingerprint.h"
 #include "bench/lib/gate/InstructionLayer.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 
 using namespace sb;
@@ -99,6 +100,37 @@ TEST_F(InstructionCountValgrindTest, TheMeasuredBinaryRunsUnderValgrindForOneFra
         ADD_FAILURE() << "the bench does not run under valgrind on this machine: " << e.what();
     }
     fs::remove_all(o.outDir);
+}
+
+// The child gets an environment of its own (the pin, not the caller's), but the driver this process
+// runs on (bench --driver X ci) must reach it: with only LD_LIBRARY_PATH kept, the Vulkan loader read the
+// system's ICD file and counted the system's lavapipe, and the rows said `system`. One frame on the
+// second driver's Vulkan; the row must name that driver and its version. 10-30 s (valgrind's start).
+TEST_F(InstructionCountValgrindTest, TheDriverThisProcessRunsOnReachesTheChild) {
+    const std::string drivers = DriverTable::driversDirectory();
+    if (!fs::exists(drivers + "/mesa-25.0.7")) {
+        const char* required = std::getenv("SHADOWBENCH_REQUIRE_DRIVERS");
+        if (required && std::string(required) == "1") FAIL() << "mesa-25.0.7 is not installed in " << drivers;
+        GTEST_SKIP() << "mesa-25.0.7 is not installed; install it with: bash scripts/install-deps.sh driver";
+    }
+    DriverTable::activate(DriverTable::resolve("mesa-25.0.7")); // the variables only: nothing loaded here
+    InstructionCount::Options o;
+    o.bench = SB_BENCH_BINARY;
+    o.benchArgs = {"--api",  "vulkan", "-t",          "none", "--frames",        "1", "--warmup", "0",
+                   "--size", "32x32",  "--instances", "1",    "--no-timer-check"};
+    o.outDir = (fs::temp_directory_path() / ("sb-ir-" + std::to_string(getpid()) + "-driver")).string();
+    std::string driver, version;
+    try {
+        const InstructionRun run = InstructionCount(o).run();
+        driver = run.rows[0].value("driver", "");
+        version = run.rows[0].value("driver_version", "");
+    } catch (const Error& e) {
+        ADD_FAILURE() << e.what();
+    }
+    DriverTable::activate(DriverTable::resolve("system"));
+    fs::remove_all(o.outDir);
+    EXPECT_EQ(driver, "mesa-25.0.7");
+    EXPECT_EQ(version.rfind("Mesa 25.0.7", 0), 0u) << version;
 }
 
 // The reason above is read from valgrind's own log, so it must name an instruction valgrind cannot run:

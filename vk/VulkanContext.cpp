@@ -8,6 +8,7 @@
 #include <link.h>
 
 #include "core/DriverShaderCache.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -166,6 +167,7 @@ VulkanDeviceInfo describe(VkPhysicalDevice device, int index, VkPhysicalDevicePr
     info.name = props.properties.deviceName;
     info.type = typeName(props.properties.deviceType);
     info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
+    info.driverInfo = driver.driverInfo;
     info.apiVersion = versionString(props.properties.apiVersion);
     return info;
 }
@@ -196,7 +198,20 @@ void VulkanContext::check(VkResult result, const char* what) {
         throw Error(std::string("vulkan: ") + what + " failed: " + resultName(result), ExitCode::Failure);
 }
 
+namespace {
+
+/// The chosen driver's lavapipe, loaded once and kept (the Vulkan loader then gets the same handle), so
+/// that one that cannot load is refused in one line naming it (core/DriverTable.h).
+void requireDriverLoadable() {
+    const std::string library = DriverTable::libraryToLoad(DriverTable::Api::Vulkan);
+    if (!library.empty() && !::dlopen(library.c_str(), RTLD_LAZY | RTLD_LOCAL))
+        throw DriverTable::cannotLoad(DriverTable::Api::Vulkan, ::dlerror());
+}
+
+} // namespace
+
 std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
+    requireDriverLoadable();
     VkInstance instance = createBareInstance();
     pinVulkanLibraries();
     std::vector<VulkanDeviceInfo> out;
@@ -213,6 +228,7 @@ std::vector<VulkanDeviceInfo> VulkanContext::listDevices() {
 
 VulkanContext::VulkanContext(const VulkanOptions& options) {
     try {
+        requireDriverLoadable();
         createInstance(options.validation);
         pinVulkanLibraries();
         pickDevice(options.device);

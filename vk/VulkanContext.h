@@ -37,6 +37,7 @@ struct VulkanDeviceInfo {
     std::string name;       ///< VkPhysicalDeviceProperties::deviceName ("llvmpipe (LLVM 15.0.6, 256 bits)")
     std::string type;       ///< "cpu", "integrated", "discrete", "virtual", "other"
     std::string driver;     ///< driverName and driverInfo ("llvmpipe Mesa 22.3.6 (LLVM 15.0.6)")
+    std::string driverInfo; ///< driverInfo alone, the driver's version ("Mesa 22.3.6 (LLVM 15.0.6)")
     std::string apiVersion; ///< "1.3.230"
 };
 

@@ -5,6 +5,7 @@
 
 #include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/options/DriverOption.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/sweep/SweepOptions.h"
 #include "bench/lib/sweep/SweepReport.h"
@@ -73,6 +74,8 @@ int BottleneckCommand::main(int argc, char** argv) {
     app.add_option("--format", format, "stdout: " + rowFormatChoices() + " (the classification)")
         ->capture_default_str();
     axes.add(app);
+    std::string driver; // acted on by BenchApp: the process already runs on it
+    DriverOption::add(app, driver);
     if (int code = parseCli(app, argc, argv, "bench bottleneck"); code >= 0) return code;
     const RowFormat rowFormat = parseRowFormat(format);
     // Checked before the study runs: the classification has shares and ratios, no frame time to chart.

@@ -13,12 +13,14 @@
 #include "bench/lib/gate/WallLayer.h"
 #include "bench/lib/gate/WorkGate.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/options/DriverOption.h"
 #include "bench/lib/output/AtomicFile.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/DashboardExport.h"
 #include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/sweep/ChildProcess.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Paths.h"
@@ -34,7 +36,9 @@ constexpr const char* kFooter = R"(Examples:
   bench ci --quick                              layer A only (exact work; seconds)
   bench ci --update                             after an intended change: rewrite results/ci/baseline/
   bench ci --base-bench /tmp/base/bench         this build against another build, all three layers
-  bench ci --base-env LP_NUM_THREADS=2 --head-env LP_NUM_THREADS=1 --layers A,C   a driver A/B
+  bench ci --base-env LP_NUM_THREADS=2 --head-env LP_NUM_THREADS=1 --layers A,C   a threads A/B
+  bench ci --base-driver system --head-driver mesa-25.0.7 --layers A   a driver A/B
+  bench --driver mesa-25.0.7 ci --quick          the gate on another driver, against baseline/mesa-25.0.7/
   SHADOWBENCH_INJECT=extra_fullscreen_pass bench ci --layers A   the proof: a known regression
 
 Layers: A exact work per pass (any increase fails; a decrease passes and asks for --update; across two
@@ -49,6 +53,7 @@ struct CiOptions {
     bool update = false, quick = false;
     std::vector<std::string> configs, baseEnv, headEnv;
     std::string baseBench, headBench;
+    std::string driver, baseDriver, headDriver; ///< --driver is acted on by BenchApp
     WallLayerOptions wall;
     std::string scheme = "abba";
 };
@@ -126,8 +131,8 @@ CsvTable baselineColumns(const CsvTable& rows) {
                                                    col::kRenderer,
                                                    col::kGlVersion,
                                                    col::kGlVendor,
-                                                   WorkGate::kDriverColumn,
-                                                   WorkGate::kDriverVersionColumn,
+                                                   col::kDriver,
+                                                   col::kDriverVersion,
                                                    col::kTechnique,
                                                    col::kProperties,
                                                    col::kScene,
@@ -162,6 +167,29 @@ CsvTable onlyConfigs(CsvTable table, const std::vector<const CiConfig*>& configs
     return table;
 }
 
+/// A side's variables: its driver's (core/DriverTable.h; none when `driver` is empty) then --*-env's,
+/// which may override them.
+std::vector<std::pair<std::string, std::string>>
+sideEnvironment(const std::string& driver, const std::vector<std::string>& env, const char* envOption) {
+    std::vector<std::pair<std::string, std::string>> out;
+    if (!driver.empty()) out = DriverTable::childEnvironment(DriverTable::resolve(driver));
+    for (auto& item : parseEnv(env, envOption)) out.push_back(std::move(item));
+    return out;
+}
+
+/// The committed baseline of the driver the head runs on: results/ci/baseline/ for the system driver,
+/// baseline/<name>/ for another named one (each driver rasterises, and so counts, its own way). A
+/// driver given by its prefix has no committed baseline: --baseline names one.
+std::string driverBaseline(const std::string& root, const std::string& driver) {
+    if (driver == "system") return root;
+    const auto named = DriverTable::names();
+    if (std::find(named.begin(), named.end(), driver) == named.end())
+        throw Error("bench ci on the driver " + driver +
+                    ": no committed baseline for a driver outside the table; give --baseline DIR (write "
+                    "one with bench ci --update --baseline DIR)");
+    return (fs::path(root) / driver).string();
+}
+
 std::string joinArgs(int argc, char** argv) {
     std::string out = "bench";
     for (int i = 0; i < argc; ++i) out += std::string(" ") + argv[i];
@@ -191,6 +219,10 @@ int CiCommand::main(int argc, char** argv) {
     app.add_option("--head-bench", o.headBench, "the head's bench binary (default: this one)");
     app.add_option("--base-env", o.baseEnv, "NAME=VALUE for the base's runs (repeatable)");
     app.add_option("--head-env", o.headEnv, "NAME=VALUE for the head's runs (repeatable)");
+    DriverOption::add(app, o.driver);
+    app.add_option("--base-driver", o.baseDriver,
+                   "the base's runs on this driver (as --driver; a driver A/B)");
+    app.add_option("--head-driver", o.headDriver, "the head's runs on this driver (as --driver)");
     app.add_option("--rounds", o.wall.rounds, "layer C rounds (default: the suite's)")
         ->check(CLI::Range(2, 1000));
     app.add_option("--seed", o.wall.seed, "layer C schedule seed (random scheme)");
@@ -219,21 +251,25 @@ int CiCommand::main(int argc, char** argv) {
 
     const CiSuite suite = CiSuite::load(defaultPath(o.suitePath, "results/ci/suite.json"));
     if (!app.count("--rounds")) o.wall.rounds = suite.wall.rounds;
-    const std::string baselineDir = o.baselineDir.empty()
-                                        ? fs::path(suite.path).parent_path().append("baseline").string()
-                                        : o.baselineDir;
+    const std::string headDriver =
+        o.headDriver.empty() ? DriverTable::current() : DriverTable::resolve(o.headDriver).name;
+    const std::string baselineDir =
+        o.baselineDir.empty()
+            ? driverBaseline(fs::path(suite.path).parent_path().append("baseline").string(), headDriver)
+            : o.baselineDir;
     const std::string baselineWork = (fs::path(baselineDir) / "work.csv").string(); ///< layer A's
     const CiSide head{"head", o.headBench.empty() ? ChildProcess::selfExecutable() : o.headBench,
-                      parseEnv(o.headEnv, "--head-env")};
+                      sideEnvironment(o.headDriver, o.headEnv, "--head-env")};
     std::optional<CiSide> base;
-    if (!o.baseBench.empty() || !o.baseEnv.empty())
-        base =
-            CiSide{"base", o.baseBench.empty() ? head.bench : o.baseBench, parseEnv(o.baseEnv, "--base-env")};
+    if (!o.baseBench.empty() || !o.baseEnv.empty() || !o.baseDriver.empty())
+        base = CiSide{"base", o.baseBench.empty() ? head.bench : o.baseBench,
+                      sideEnvironment(o.baseDriver, o.baseEnv, "--base-env")};
     if (o.update && base)
-        throw Error("--update writes the head's baseline; it takes no --base-bench/--base-env");
+        throw Error("--update writes the head's baseline; it takes no --base-bench/--base-env/--base-driver");
     // A missing committed baseline is bad input, said before the suite runs rather than after it.
     if (!o.update && !base && hasLayer(o.layers, 'A') && !fs::exists(baselineWork))
-        throw Error("no committed baseline " + baselineWork + " (write one with bench ci --update)");
+        throw Error("no committed baseline " + baselineWork + " (write one with bench ci --update" +
+                    (headDriver == "system" ? std::string() : " --driver " + headDriver) + ")");
     fs::create_directories(o.outDir);
     AtomicFile::checkWritable((fs::path(o.outDir) / "report.md").string(), "the report");
 

@@ -10,6 +10,7 @@
 #include "bench/figures/FigureCatalog.h"
 #include "bench/lib/bottleneck/BottleneckStudy.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/options/DriverOption.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/SweepDefinition.h"
@@ -26,6 +27,7 @@ namespace fs = std::filesystem;
 
 struct FiguresCli {
     std::string catalog, out, only;
+    std::string driver; ///< acted on by BenchApp: the process already runs on it
     bool reduced = false, resume = false, plotOnly = false, list = false, noProgress = false;
 };
 
@@ -139,6 +141,7 @@ int FiguresCommand::main(int argc, char** argv) {
     app.add_flag("--plot-only", cli.plotOnly, "replot from the existing data.csv files");
     app.add_flag("--list", cli.list, "list the declared figures and exit");
     app.add_flag("--no-progress", cli.noProgress, "no progress bar on stderr");
+    DriverOption::add(app, cli.driver);
     if (int code = parseCli(app, argc, argv, "bench figures"); code >= 0) return code;
     const std::string catalog = cli.catalog.empty() ? FigureCatalog::defaultPath() : cli.catalog;
     const std::vector<FigureDeclaration> figures = FigureCatalog::load(catalog);

@@ -14,8 +14,10 @@
 #include "bench/golden/MatrixProgress.h"
 #include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/options/DriverOption.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/select/AutoResolver.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "core/Strings.h"
@@ -104,7 +106,8 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     }
     run.finish();
     std::cout << "golden check: " << checked << " cells checked, " << failed << " failed, " << unsupported
-              << " unsupported (--verbose lists them) against " << cli.dir << "\n";
+              << " unsupported (--verbose lists them) against " << cli.dir << " on the driver "
+              << DriverTable::current() << "\n";
     return failed ? int(ExitCode::Failure) : 0;
 }
 
@@ -312,6 +315,8 @@ under the cell (bench/golden/GoldenDiff.h).)");
                    "matches its golden into this folder (default: shadowbench-golden-diff in the temporary "
                    "directory)");
     app.add_flag("-v,--verbose", cli.verbose, "print every cell, its comparisons and unsupported cells");
+    std::string driver; // acted on by BenchApp: the process already runs on it
+    DriverOption::add(app, driver);
     if (int code = parseCli(app, argc, argv, "bench golden"); code >= 0) return code;
     const std::vector<std::string> known = GoldenMatrix::builtinScenes();
     const std::vector<std::string> chosen = scenes.empty() ? known : scenes;

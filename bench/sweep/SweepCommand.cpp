@@ -1,4 +1,5 @@
 #include "bench/sweep/SweepCommand.h"
+#include "bench/lib/options/DriverOption.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -38,6 +39,7 @@ struct SweepCli {
     std::string file, csv, shard = "1/1", format = "console", name, mode;
     bool resume = false, dryRun = false, noProgress = false, qualitySweep = false;
     int64_t maxConfigs = -1;
+    std::string driver; ///< acted on by BenchApp (the process already runs on it)
     SweepOptions axes;
 };
 
@@ -51,6 +53,7 @@ int SweepCommand::main(int argc, char** argv) {
     app.add_option("file", cli.file, "sweep definition (JSON; see README 'Sweep configurations')");
     app.add_option("--csv", cli.csv, "rows go here, appended as they finish (required unless --dry-run)");
     cli.axes.add(app);
+    DriverOption::add(app, cli.driver);
     app.add_option("--mode", cli.mode, "measure (default) or accuracy (judge against the reference too)");
     app.add_flag("--quality-sweep", cli.qualitySweep, "accuracy: walk each technique's quality knobs");
     app.add_option("--name", cli.name, "sweep name recorded in every row (default: the file's stem)");

@@ -2,10 +2,12 @@
 
 #include <epoxy/gl.h>
 
+#include <dlfcn.h>
 #include <optional>
 #include <vector>
 
 #include "core/DriverShaderCache.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/NameTable.h"
 #include "gl/backends/EglDeviceContext.h"
@@ -120,6 +122,10 @@ std::string backendNames(bool headlessOnly) {
 
 std::unique_ptr<Context> createContext(const ContextOptions& options) {
     DriverShaderCache::separateByVectorWidth(); // before the driver opens its shader cache
+    // Loaded once here and kept: glvnd, which opens it next, gets the same handle.
+    const std::string driverLibrary = DriverTable::libraryToLoad(DriverTable::Api::GL);
+    if (!driverLibrary.empty() && !::dlopen(driverLibrary.c_str(), RTLD_LAZY | RTLD_LOCAL))
+        throw DriverTable::cannotLoad(DriverTable::Api::GL, ::dlerror());
     std::string reasons;
     for (const BackendEntry* backend : candidates(options)) {
         if (!backend) throw Error("createContext: no backend for this Backend value", ExitCode::Failure);

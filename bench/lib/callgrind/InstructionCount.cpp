@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "bench/lib/callgrind/ValgrindDiagnosis.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 
@@ -145,6 +146,10 @@ InstructionRun InstructionCount::run() const {
     run.command = commandLine();
     for (const char* keep : {"LD_LIBRARY_PATH", "TMPDIR", "DISPLAY", "SHADOWBENCH_INJECT"})
         if (const char* v = std::getenv(keep)) run.environment[keep] = v;
+    // The driver this process runs on (bench --driver X ci): without its vendor and ICD files the
+    // child would load another driver's pieces, or fall back to OSMesa, and count their instructions.
+    for (const std::string& keep : DriverTable::carriedVariables())
+        if (const char* v = std::getenv(keep.c_str())) run.environment[keep] = v;
     for (const auto& [k, v] : mOptions.environment) run.environment[k] = v;
     run.pinned = mOptions.environment;
 

@@ -254,7 +254,7 @@ std::string WorkGate::configKey(const CsvTable& table, const std::vector<std::st
 }
 
 std::string WorkGate::driverOf(const CsvTable& table, const std::vector<std::string>& row) {
-    const std::string name = table.cell(row, kDriverColumn), version = table.cell(row, kDriverVersionColumn);
+    const std::string name = table.cell(row, col::kDriver), version = table.cell(row, col::kDriverVersion);
     if (!version.empty()) return name.empty() ? version : name + " " + version;
     const std::string gl = table.cell(row, col::kGlVersion);
     return gl.empty() ? table.cell(row, col::kGlVendor) : gl;

@@ -75,10 +75,6 @@ struct WorkComparison {
 
 class WorkGate {
 public:
-    /// The driver table's columns: rows of a run on a chosen driver carry its name ("system",
-    /// "mesa-25.0.7" or an install prefix) and its full version string on both APIs; older rows lack them.
-    static constexpr const char* kDriverColumn = "driver";
-    static constexpr const char* kDriverVersionColumn = "driver_version";
     /// True for the exact-work columns (WorkColumns::isWork).
     static bool isWorkColumn(const std::string& column) { return WorkColumns::isWork(column); }
     /// The key a row is matched by (see the header comment).

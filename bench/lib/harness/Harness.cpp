@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "gl/DebugOutput.h"
 #include "gl/backends/BackendRegistry.h"
@@ -32,8 +33,19 @@ Harness::~Harness() = default;
 
 RowSource Harness::rowSource() const {
     const Context& c = *mContext;
-    return {config(),  scene(),    contentHash(), moving(), timerVerdict(),           "gl",
-            c.version, c.renderer, c.version,     c.vendor, backendName(c.backend()), c.deviceName};
+    return {config(),
+            scene(),
+            contentHash(),
+            moving(),
+            timerVerdict(),
+            "gl",
+            c.version,
+            c.renderer,
+            c.version,
+            c.vendor,
+            backendName(c.backend()),
+            c.deviceName,
+            DriverTable::versionInGlVersion(c.version)};
 }
 
 GlTechnique& Harness::glForm(Technique& technique) {

@@ -16,13 +16,14 @@ struct RowSource {
     const std::string& contentHash;
     bool moving = false;
     const TimerVerdict& verdict;
-    std::string api;        ///< "gl" or "vulkan" (the CSV's `api`)
-    std::string apiVersion; ///< GL_VERSION, or the Vulkan device's API version ("1.3.230")
-    std::string renderer;   ///< GL_RENDERER, or the Vulkan device name
-    std::string glVersion;  ///< GL_VERSION on GL, empty on Vulkan
-    std::string vendor;     ///< GL_VENDOR, or the Vulkan driver (name and info)
-    std::string backend;    ///< the GL context backend, or "vulkan"
-    std::string device;     ///< EGL device name (egl-device) or the Vulkan device index and name
+    std::string api;           ///< "gl" or "vulkan" (the CSV's `api`)
+    std::string apiVersion;    ///< GL_VERSION, or the Vulkan device's API version ("1.3.230")
+    std::string renderer;      ///< GL_RENDERER, or the Vulkan device name
+    std::string glVersion;     ///< GL_VERSION on GL, empty on Vulkan
+    std::string vendor;        ///< GL_VENDOR, or the Vulkan driver (name and info)
+    std::string backend;       ///< the GL context backend, or "vulkan"
+    std::string device;        ///< EGL device name (egl-device) or the Vulkan device index and name
+    std::string driverVersion; ///< the driver's own version (the CSV's `driver_version`)
 };
 
 } // namespace sb

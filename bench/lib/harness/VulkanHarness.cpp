@@ -61,7 +61,8 @@ RowSource VulkanHarness::rowSource() const {
     return {config(),     scene(),        contentHash(),
             false,        timerVerdict(), "vulkan",
             d.apiVersion, d.name,         "",
-            d.driver,     "vulkan",       std::to_string(d.index) + ": " + d.name};
+            d.driver,     "vulkan",       std::to_string(d.index) + ": " + d.name,
+            d.driverInfo};
 }
 
 VulkanTechnique& VulkanHarness::vulkanForm(Technique& technique) {

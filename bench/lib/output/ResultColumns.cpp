@@ -22,6 +22,13 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kRenderer, "", ColumnType::Text, kEveryRun, "`GL_RENDERER`, or the Vulkan device name"},
     {col::kGlVersion, "", ColumnType::Text, kEveryRun, "`GL_VERSION` (empty on Vulkan)"},
     {col::kGlVendor, "", ColumnType::Text, kEveryRun, "`GL_VENDOR`, or the Vulkan driver's name and info"},
+    {col::kDriver, "", ColumnType::Text, kEveryRun,
+     "the driver build the run loaded (`--driver`): `system`, `mesa-25.0.7`, a Mesa prefix's path, or "
+     "`environment` when its variables were set by hand"},
+    {col::kDriverVersion, "", ColumnType::Text, kEveryRun,
+     "the version the driver reports: from `Mesa` on in `GL_VERSION` (`Mesa 25.0.7-2~bpo12+1`), the Vulkan "
+     "driver's info (`Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)`); the whole `GL_VERSION` of a driver that is "
+     "not Mesa"},
     {col::kBackend, "", ColumnType::Text, kEveryRun,
      "context backend: egl-surfaceless, egl-device, osmesa, glfw; `vulkan` on Vulkan"},
     {col::kDevice, "", ColumnType::Text, kEveryRun,

@@ -4,6 +4,7 @@
 
 #include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/output/ResultColumns.h"
+#include "core/DriverTable.h"
 #include "core/Injection.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/Motion.h"
@@ -101,6 +102,8 @@ CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environmen
         {col::kRenderer, h.renderer},
         {col::kGlVersion, h.glVersion},
         {col::kGlVendor, h.vendor},
+        {col::kDriver, DriverTable::current()},
+        {col::kDriverVersion, h.driverVersion},
         {col::kBackend, h.backend},
         {col::kDevice, h.device},
         {col::kCpuModel, env.cpuModel},
