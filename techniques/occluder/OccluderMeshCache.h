@@ -3,9 +3,9 @@
 // choice of its shadow planes (ShadowPlaneChooser::choose, scenes/ShadowPlaneChooser.h) and the texels
 // of each plane's baked occluder texture (OccluderTextures::bake, read back and bordered by
 // OccluderGL). Both are set-up work that OccluderGL repeats whenever it is set up again on the same
-// meshes, which a process that runs it many times does: the golden matrix (every submission mode), a
-// sweep, and the shader permutations test (2751 set-ups: about 60 ms of choosing and 10 ms of baking at
-// the default resolution, 1.8 s at 8192 texels). Nothing about what the technique draws or compiles
+// meshes, which a process that runs it many times does: the golden matrix (every submission mode) and
+// the shader permutations test (2751 set-ups: about 60 ms of choosing and 10 ms of baking at the
+// default resolution, 1.8 s at 8192 texels). Nothing about what the technique draws or compiles
 // changes: a hit returns what the computation returned for the same inputs.
 //
 // Entries are matched on their full inputs compared bit for bit, never on a hash alone: the mesh's
