@@ -432,22 +432,34 @@ TEST(ShaderPermutations, GlslangRefusesABrokenShader) {
 // answer through the cache equal to the chooser's own on a plate over a floor (a mesh that gets a plane).
 TEST(ShaderPermutations, OccluderSetUpAgainChoosesAndBakesOnceAndDrawsTheSamePixels) {
     OccluderMeshCache::clear();
-    auto render = [](const std::string& scene) {
+    // The visibility of one frame, and the texture layers the technique made (its counter: a layer
+    // is resolution^2 texels, 512 by default).
+    auto render = [](const std::string& scene, size_t* layers = nullptr, const char* planes = "16") {
         RunConfig config = test::quickConfig(scene, "", 64);
         config.camera = SceneLoader::load(scene, config.sceneOptions).cameras.at(0).name;
         Harness h(config);
         OccluderGL t;
+        t.properties().set(Occluder::kPlanes, planes);
         h.prepare(t);
         h.renderFrame(t);
+        for (const auto& [name, value] : t.counters())
+            if (name == "occluder_texels" && layers) *layers = size_t(value / (512.0 * 512.0));
         return h.targets().readVisibilityRGBA32F();
     };
-    const std::vector<float> cold = render("teapot");
+    size_t layers = 0;
+    const std::vector<float> cold = render("teapot", &layers);
+    EXPECT_EQ(layers, 5u) << "the teapot's planes own five occluder textures";
     const OccluderMeshCache::Stats baked = OccluderMeshCache::stats();
-    EXPECT_EQ(baked.texelMisses, 5u) << "the teapot's five occluder textures";
+    EXPECT_EQ(baked.texelMisses, layers);
     EXPECT_EQ(baked.texelHits, 0u);
     const std::vector<float> warm = render("teapot");
-    EXPECT_EQ(OccluderMeshCache::stats().texelMisses, 5u) << "baked again";
-    EXPECT_EQ(OccluderMeshCache::stats().texelHits, 5u);
+    EXPECT_EQ(OccluderMeshCache::stats().texelMisses, layers) << "baked again";
+    EXPECT_EQ(OccluderMeshCache::stats().texelHits, layers);
+    // The textures shape the frame: without planes (planes=0) its visibility differs.
+    const std::vector<float> unshadowed = render("teapot", nullptr, "0");
+    size_t shaped = 0;
+    for (size_t i = 0; i < cold.size(); ++i) shaped += cold[i] != unshadowed[i];
+    EXPECT_GT(shaped, 0u) << "the teapot's frame shows no occluder shadow to compare";
     EXPECT_TRUE(cold == warm) << "a set-up from the cache draws other visibility than a fresh bake";
 
     render("primitives");
