@@ -18,7 +18,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
 targets=(${SB_FUZZ_TARGETS:-scene_loader technique_spec sweep_definition csv_parse})
 
-bash "$root/scripts/install-deps.sh"
+# SHADOWBENCH_DEPS_CHECKED=1: the caller (scripts/test.sh) has just run it.
+[ "${SHADOWBENCH_DEPS_CHECKED:-0}" = 1 ] || bash "$root/scripts/install-deps.sh"
 # shellcheck source=tools/sanitizers/options.sh
 source "$root/tools/sanitizers/options.sh"
 launcher=()

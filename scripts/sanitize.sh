@@ -10,7 +10,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 labels=("$@")
 [ ${#labels[@]} -gt 0 ] || labels=(unit cli vulkan)
 
-bash "$root/scripts/install-deps.sh"
+# SHADOWBENCH_DEPS_CHECKED=1: the caller (scripts/test.sh) has just run it.
+[ "${SHADOWBENCH_DEPS_CHECKED:-0}" = 1 ] || bash "$root/scripts/install-deps.sh"
 # The options the runs get, also during the build: gtest_discover_tests runs each test binary to list
 # its tests, and a leak report there would fail the build instead of the test.
 # shellcheck source=tools/sanitizers/options.sh

@@ -50,6 +50,9 @@
 #include "core/Error.h"
 #include "registry/TechniqueRegistry.h"
 #include "scenes/SceneLoader.h"
+#include "scenes/ShadowPlaneChooser.h"
+#include "techniques/occluder/OccluderGL.h"
+#include "techniques/occluder/OccluderMeshCache.h"
 
 using namespace sb;
 
@@ -421,6 +424,103 @@ TEST(ShaderPermutations, GlslangRefusesABrokenShader) {
     EXPECT_NE(test::runCommand("glslangValidator " + dir + "/bad.frag").exitCode, 0);
 }
 
+// The permutations below set the occluder up 2751 times on a few meshes; its plane choice and bakes
+// (techniques/occluder/OccluderMeshCache.h) are computed once per mesh and input, which took its test
+// from 214 s to 18 s of CPU. A set-up served from memory must draw what a fresh one draws, bit for bit:
+// the teapot (built-in planes, five baked layers) rendered with a cold cache and again with a warm one,
+// the primitives (three generated meshes, planes chosen automatically) set up twice, and the chooser's
+// answer through the cache equal to the chooser's own on a plate over a floor (a mesh that gets a plane).
+TEST(ShaderPermutations, OccluderSetUpAgainChoosesAndBakesOnceAndDrawsTheSamePixels) {
+    OccluderMeshCache::clear();
+    // The visibility of one frame, and the texture layers the technique made (its counter: a layer
+    // is resolution^2 texels, 512 by default).
+    auto render = [](const std::string& scene, size_t* layers = nullptr, const char* planes = "16") {
+        RunConfig config = test::quickConfig(scene, "", 64);
+        config.camera = SceneLoader::load(scene, config.sceneOptions).cameras.at(0).name;
+        Harness h(config);
+        OccluderGL t;
+        t.properties().set(Occluder::kPlanes, planes);
+        h.prepare(t);
+        h.renderFrame(t);
+        for (const auto& [name, value] : t.counters())
+            if (name == "occluder_texels" && layers) *layers = size_t(value / (512.0 * 512.0));
+        return h.targets().readVisibilityRGBA32F();
+    };
+    size_t layers = 0;
+    const std::vector<float> cold = render("teapot", &layers);
+    EXPECT_EQ(layers, 5u) << "the teapot's planes own five occluder textures";
+    const OccluderMeshCache::Stats baked = OccluderMeshCache::stats();
+    EXPECT_EQ(baked.texelMisses, layers);
+    EXPECT_EQ(baked.texelHits, 0u);
+    const std::vector<float> warm = render("teapot");
+    EXPECT_EQ(OccluderMeshCache::stats().texelMisses, layers) << "baked again";
+    EXPECT_EQ(OccluderMeshCache::stats().texelHits, layers);
+    // The textures shape the frame: without planes (planes=0) its visibility differs.
+    const std::vector<float> unshadowed = render("teapot", nullptr, "0");
+    size_t shaped = 0;
+    for (size_t i = 0; i < cold.size(); ++i) shaped += cold[i] != unshadowed[i];
+    EXPECT_GT(shaped, 0u) << "the teapot's frame shows no occluder shadow to compare";
+    EXPECT_TRUE(cold == warm) << "a set-up from the cache draws other visibility than a fresh bake";
+
+    render("primitives");
+    render("primitives");
+    const OccluderMeshCache::Stats chosen = OccluderMeshCache::stats();
+    EXPECT_EQ(chosen.choiceMisses, 3u) << "primitives: three meshes without given planes, chosen once each";
+    EXPECT_EQ(chosen.choiceHits, 3u);
+
+    // A plate (an 8 x 8 grid at y = 1) over a floor (8 x 8 at y = 0), lit from above: the chooser
+    // finds a plane. The cache's answer equals the chooser's, and any changed input is chosen anew.
+    Mesh m;
+    m.name = "plate_over_floor";
+    for (float y : {0.0f, 1.0f}) {
+        const uint32_t base = uint32_t(m.positions.size());
+        const float h = y > 0.0f ? 0.5f : 2.0f;
+        for (int j = 0; j <= 8; ++j)
+            for (int i = 0; i <= 8; ++i)
+                m.positions.emplace_back(-h + h * float(i) / 4.0f, y, -h + h * float(j) / 4.0f);
+        for (uint32_t j = 0; j < 8; ++j)
+            for (uint32_t i = 0; i < 8; ++i) {
+                const uint32_t a = base + j * 9 + i, b = a + 1, c = a + 9, d = c + 1;
+                for (uint32_t v : {a, c, d, a, d, b}) m.indices.push_back(v);
+            }
+    }
+    m.normals.assign(m.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+    const std::vector<glm::vec3> up = {glm::normalize(glm::vec3(0.2f, 1.0f, 0.1f))};
+    const ShadowPlaneChoice direct = ShadowPlaneChooser::choose(m, up, 4);
+    ASSERT_FALSE(direct.planes.empty()) << direct.reason;
+    for (int round = 0; round < 2; ++round) {
+        const ShadowPlaneChoice cached = OccluderMeshCache::choose(m, up, 4);
+        ASSERT_EQ(cached.planes.size(), direct.planes.size());
+        for (size_t i = 0; i < direct.planes.size(); ++i) {
+            const ShadowPlane &a = cached.planes[i], &b = direct.planes[i];
+            EXPECT_EQ(a.name, b.name);
+            EXPECT_TRUE(a.origin == b.origin && a.normal == b.normal && a.right == b.right && a.up == b.up &&
+                        a.width == b.width && a.height == b.height && a.sectionOnly == b.sectionOnly)
+                << a.name;
+        }
+        EXPECT_EQ(cached.reason, direct.reason);
+        EXPECT_EQ(cached.capturedPct, direct.capturedPct);
+        EXPECT_EQ(cached.falsePct, direct.falsePct);
+    }
+    const size_t before = OccluderMeshCache::stats().choiceMisses;
+    EXPECT_EQ(before, chosen.choiceMisses + 1) << "the plate was chosen for once";
+    Mesh moved = m;
+    moved.positions[0].x = std::nextafter(moved.positions[0].x, 1.0f); // one vertex, one ulp
+    OccluderMeshCache::choose(moved, up, 4);
+    OccluderMeshCache::choose(m, up, 3);
+    OccluderMeshCache::choose(m, {glm::vec3(0.0f, 1.0f, 0.0f)}, 4);
+    EXPECT_EQ(OccluderMeshCache::stats().choiceMisses, before + 3) << "a changed vertex, limit or light";
+
+    // A full cache drops its least recently used entries: with room for none, everything is made again.
+    const size_t budget = OccluderMeshCache::maxBytes();
+    OccluderMeshCache::setMaxBytes(0);
+    EXPECT_EQ(OccluderMeshCache::stats().entries, 0u);
+    OccluderMeshCache::choose(m, up, 4);
+    EXPECT_EQ(OccluderMeshCache::stats().choiceMisses, before + 4);
+    OccluderMeshCache::setMaxBytes(budget);
+    OccluderMeshCache::clear();
+}
+
 /// One test per registered technique, so that ctest runs them side by side and each has its own time
 /// limit (tests/CMakeLists.txt): the whole set took 111 s on one core of a 2-core AMD EPYC virtual machine
 /// with transparent huge pages and 658 s without (every evaluation builds the technique's shadow maps,
@@ -481,6 +581,13 @@ TEST_P(ShaderPermutationsTest, EveryPermutationCompilesWithGlslang) {
         permutations.insert(path.substr(path.find('/') + 1, path.rfind('/') - path.find('/') - 1));
         files.push_back(path);
     }
+    // Digests of what was selected and compiled: a change that means to alter only the cost (a cache,
+    // fewer rebuilds) must leave both as they were.
+    std::string selections, sources;
+    for (const Config& c : all) selections += Workbench::describe(c) + "=" + explorer.result(c) + "\n";
+    for (const auto& entry : byContent) sources += entry.first + "\n";
+    std::printf("[ shaders  ] digests: selections %016zx, sources %016zx\n",
+                std::hash<std::string>{}(selections), std::hash<std::string>{}(sources));
     const auto validated = std::chrono::steady_clock::now();
     const size_t failures = validate(dumpDir, files);
     const double glslangSeconds = secondsSince(validated);

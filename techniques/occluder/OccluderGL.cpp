@@ -15,6 +15,7 @@
 #include "scenes/Motion.h"
 #include "scenes/ShadowPlaneChooser.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/occluder/OccluderMeshCache.h"
 #include "techniques/occluder/OccluderTextures.h"
 #include "techniques/occluder/ReceiverSections.h"
 
@@ -52,6 +53,54 @@ void clearBorder(std::vector<uint8_t>& texels, int size) {
         texels[size_t(i)] = texels[size_t(size - 1) * size_t(size) + size_t(i)] = 255;
         texels[size_t(i) * size_t(size)] = texels[size_t(i) * size_t(size) + size_t(size - 1)] = 255;
     }
+}
+
+template <typename T>
+void appendBytes(std::string& key, const T& value) {
+    key.append(reinterpret_cast<const char*>(&value), sizeof(value));
+}
+void appendText(std::string& key, const std::string& text) {
+    appendBytes(key, text.size());
+    key += text;
+}
+/// Every input of an automatic bake but the mesh, as bytes: what OccluderTextures::bake reads of the
+/// plane (and its name, in its messages), the options, and the renderer that rasterises it.
+std::string bakeKey(const ShadowPlane& plane, const OccluderBakeOptions& options,
+                    const std::string& renderer) {
+    std::string key;
+    appendText(key, renderer);
+    appendText(key, plane.name);
+    for (const glm::vec3& v : {plane.origin, plane.normal, plane.right, plane.up}) appendBytes(key, v);
+    for (float f : {plane.width, plane.height}) appendBytes(key, f);
+    appendBytes(key, plane.parts.size());
+    for (const std::string& part : plane.parts) appendText(key, part);
+    for (int i : {options.resolution, options.dilate, int(options.crossSection), int(options.silhouette)})
+        appendBytes(key, i);
+    return key;
+}
+/// An automatic occluder texture's texels at options.resolution, its border whitened: baked once per
+/// mesh, plane, options and renderer in a process (OccluderMeshCache.h). The bake's programs are asked
+/// for either way, so the program cache sees what a bake would have compiled.
+OccluderMeshCache::Texels bakedLayer(const CompileContext& ctx, const Mesh& mesh, const ShadowPlane& plane,
+                                     const OccluderBakeOptions& options) {
+    OccluderTextures::requestPrograms(ctx.programs);
+    return OccluderMeshCache::texels(mesh, bakeKey(plane, options, ctx.context.renderer), [&] {
+        const GLuint texture = OccluderTextures::bake(ctx.programs, mesh, plane, options);
+        int w = 0, h = 0;
+        std::vector<uint8_t> texels = OccluderTextures::readBack(texture, w, h);
+        glDeleteTextures(1, &texture);
+        texels = resample(texels, w, h, options.resolution);
+        clearBorder(texels, options.resolution);
+        return texels;
+    });
+}
+/// A texture file's texels, resampled to `resolution` (read each time: the file may change).
+OccluderMeshCache::Texels loadedLayer(const std::string& path, int resolution) {
+    const GLuint texture = OccluderTextures::load(path);
+    int w = 0, h = 0;
+    std::vector<uint8_t> texels = OccluderTextures::readBack(texture, w, h);
+    glDeleteTextures(1, &texture);
+    return std::make_shared<const std::vector<uint8_t>>(resample(texels, w, h, resolution));
 }
 
 } // namespace
@@ -133,7 +182,7 @@ void OccluderGL::choosePlanes(const Scene& scene, const std::vector<bool>& drawn
         if (towardLight.empty() && !scene.lights.empty())
             choice.reason = "no light direction (every light inside its bounds)";
         else
-            choice = ShadowPlaneChooser::choose(mesh, towardLight, kAutoPlanes);
+            choice = OccluderMeshCache::choose(mesh, towardLight, kAutoPlanes);
         mMeshPlanes[m] = choice.planes;
         if (choice.planes.empty()) {
             ++mNoUsefulPlanes;
@@ -348,7 +397,7 @@ void OccluderGL::buildTextures(const CompileContext& ctx) {
     // One layer per texture owner: a plane with its own texture, or the plane another names in
     // texture_of (the thesis's two tail fins share one), whether or not the owner itself is used.
     std::map<std::pair<int, int>, int> layerOf;
-    std::vector<std::vector<uint8_t>> layers;
+    std::vector<OccluderMeshCache::Texels> layers;
     for (size_t e = 0; e < mPlanes.size(); ++e) {
         const auto [m, k] = std::pair<int, int>(mPlaneSource[e].x, mPlaneSource[e].y);
         const Mesh& mesh = ctx.scene.meshes[size_t(m)];
@@ -369,18 +418,12 @@ void OccluderGL::buildTextures(const CompileContext& ctx) {
             const ShadowPlane& source = planes[size_t(owner)];
             OccluderBakeOptions planeOptions = options;
             planeOptions.silhouette = !source.sectionOnly;
-            const GLuint texture = source.texture == "auto"
-                                       ? OccluderTextures::bake(ctx.programs, mesh, source, planeOptions)
-                                       : OccluderTextures::load(source.texture);
-            int w = 0, h = 0;
-            std::vector<uint8_t> texels = OccluderTextures::readBack(texture, w, h);
-            glDeleteTextures(1, &texture);
-            layers.push_back(resample(texels, w, h, resolution));
-            if (source.texture == "auto") clearBorder(layers.back(), resolution);
+            layers.push_back(source.texture == "auto" ? bakedLayer(ctx, mesh, source, planeOptions)
+                                                      : loadedLayer(source.texture, resolution));
             // SB_DUMP_OCCLUDERS=DIR writes every texture as DIR/<mesh>_<plane>.png (to inspect bakes).
             if (const char* dir = std::getenv("SB_DUMP_OCCLUDERS"))
                 OccluderTextures::write(std::string(dir) + "/" + mesh.name + "_" + source.name + ".png",
-                                        layers.back(), resolution, resolution);
+                                        *layers.back(), resolution, resolution);
         }
         mPlanes[e].origin.w = float(it->second);
     }
@@ -392,7 +435,7 @@ void OccluderGL::buildTextures(const CompileContext& ctx) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (size_t l = 0; l < layers.size(); ++l)
         glTextureSubImage3D(mTextures, 0, 0, 0, GLint(l), resolution, resolution, 1, GL_RED, GL_UNSIGNED_BYTE,
-                            layers[l].data());
+                            layers[l]->data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     // Bilinear magnification (section 5: "enabling bilinear filtering ... minimizes the artifacts");
     // clamping happens in the shader, as Appendix B does.

@@ -16,6 +16,7 @@ namespace {
 constexpr int kMaxResolution = 16384;
 constexpr uint8_t kClear = 255;
 constexpr uint8_t kOccluder = 0;
+const ShaderSources kBakeSources{"occluder/bake.vert", "occluder/bake.frag", ""};
 
 std::string planeLabel(const ShadowPlane& plane) {
     return "shadow plane '" + plane.name + "'";
@@ -119,15 +120,19 @@ uint8_t luma(float r, float g, float b) {
 
 } // namespace
 
+void OccluderTextures::requestPrograms(ProgramCache& programs) {
+    for (const Defines& d : {Defines{}, Defines{{"BAKE_CLIP", ""}}, Defines{{"BAKE_FULLSCREEN", ""}}})
+        programs.get(kBakeSources, d);
+}
+
 GLuint OccluderTextures::bake(ProgramCache& programs, const Mesh& mesh, const ShadowPlane& plane,
                               const OccluderBakeOptions& options) {
     validate(mesh, plane, options);
     const std::vector<MeshPart> parts = selectParts(mesh, plane);
     // Programs first: a compile error throws before any GL state is touched.
-    const ShaderSources sources{"occluder/bake.vert", "occluder/bake.frag", ""};
-    const Program& draw = programs.get(sources, {});
-    const Program& clipped = programs.get(sources, {{"BAKE_CLIP", ""}});
-    const Program& fill = programs.get(sources, {{"BAKE_FULLSCREEN", ""}});
+    const Program& draw = programs.get(kBakeSources, {});
+    const Program& clipped = programs.get(kBakeSources, {{"BAKE_CLIP", ""}});
+    const Program& fill = programs.get(kBakeSources, {{"BAKE_FULLSCREEN", ""}});
 
     GlStateGuard guard; // everything below, restored also when an exception leaves bake()
     const int n = options.resolution;

@@ -50,6 +50,10 @@ struct OccluderTextures {
     /// (gl/GlStateGuard.h: viewport, bindings, enables, masks, stencil state).
     static GLuint bake(ProgramCache& programs, const Mesh& mesh, const ShadowPlane& plane,
                        const OccluderBakeOptions& options);
+    /// Asks `programs` for the programs bake() draws with (compiling them there if new), as bake() does
+    /// first: a caller that reuses texels an earlier bake made calls it, so the program cache and its
+    /// dump (--dump-shaders) see the same programs whether or not it baked.
+    static void requestPrograms(ProgramCache& programs);
     /// Loads a PNG file into the same format: the first channel of grey or grey+alpha images; for three
     /// or more channels the Rec. 709 luma of the stored (encoded) values,
     /// round(0.2126 R + 0.7152 G + 0.0722 B); alpha ignored; 16-bit data scaled to 8 bits;
