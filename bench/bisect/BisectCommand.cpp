@@ -6,6 +6,7 @@
 
 #include "bench/lib/bisect/Bisection.h"
 #include "bench/lib/options/CliParse.h"
+#include "bench/lib/options/DriverOption.h"
 #include "bench/lib/output/AtomicFile.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ProgressBar.h"
@@ -35,6 +36,7 @@ Exit codes: 0 found, 1 GOOD and BAD do not differ (or skipped commits hide the a
 3 git, cmake, ninja or valgrind missing.)";
 
 struct BisectOptions {
+    std::string driver; ///< --driver, applied by BenchApp before this command runs
     std::string good, bad, config, signal = "work", repo, suite, buildDir, json;
     int jobs = 0;
     double irThreshold = 0.005;
@@ -180,6 +182,8 @@ int BisectCommand::main(int argc, char** argv) {
         ->check(CLI::Range(1e-9, 1.0))
         ->capture_default_str();
     app.add_option("--json", o.json, "also write the result as JSON to this file");
+    // The bench this command runs itself on the driver already; each commit's bench inherits it.
+    DriverOption::add(app, o.driver);
     app.add_flag("--clean", o.clean,
                  "remove the build folder (alone: only that; after a bisection: at its end)");
     if (int code = parseCli(app, own, argv, "bench bisect"); code >= 0) return code;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <regex>
 #include <set>
 
 #include "bench/lib/output/ResultColumns.h"
@@ -254,10 +255,19 @@ std::string WorkGate::configKey(const CsvTable& table, const std::vector<std::st
 }
 
 std::string WorkGate::driverOf(const CsvTable& table, const std::vector<std::string>& row) {
-    const std::string name = table.cell(row, col::kDriver), version = table.cell(row, col::kDriverVersion);
-    if (!version.empty()) return name.empty() ? version : name + " " + version;
-    const std::string gl = table.cell(row, col::kGlVersion);
-    return gl.empty() ? table.cell(row, col::kGlVendor) : gl;
+    // The same driver writes its version differently per column and API ("4.5 (Compatibility Profile)
+    // Mesa 22.3.6" in gl_version, "llvmpipe Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)" in a Vulkan row's
+    // gl_vendor, "Mesa 22.3.6" in driver_version), and older rows lack driver_version: the identity is
+    // the "Mesa <version>" any of them names, else the first non-empty one as it is.
+    static const std::regex kMesa("Mesa [0-9][^ ()]*");
+    std::string first;
+    for (const char* c : {col::kDriverVersion, col::kGlVersion, col::kGlVendor}) {
+        const std::string text = table.cell(row, c);
+        std::smatch m;
+        if (std::regex_search(text, m, kMesa)) return m.str();
+        if (first.empty()) first = text;
+    }
+    return first;
 }
 
 WorkComparison WorkGate::compare(const CsvTable& base, const CsvTable& head) {

@@ -13,8 +13,9 @@
 //   else, and fails. The driver's work is expected to differ: it is reported with both values and their
 //   ratio as an explained difference, neither a pass nor a failure.
 //
-// A row's driver is its `driver` and `driver_version` columns where it has them, else `gl_version` (GL)
-// or `gl_vendor` (Vulkan rows leave gl_version empty; their vendor string names Mesa's version). Rows
+// A row's driver is the "Mesa <version>" its `driver_version`, else `gl_version` (GL), else `gl_vendor`
+// (Vulkan rows leave gl_version empty) names, so rows written before the driver columns existed match
+// the same driver's new rows; the driver table's name ("system") is not part of it. Rows
 // are matched by `ci_config` where both tables have it (the suite's names), else by the columns that
 // define a configuration (technique, properties, scene, instances, scale, tessellation, seed, model,
 // submit, camera, size, lights).
