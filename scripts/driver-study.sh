@@ -46,21 +46,10 @@ for driver in "$base_driver" "$head_driver"; do
     fi
 done
 
-# The variables that select the head driver for bench ci's sides, as core/DriverTable.cpp sets them for
-# --driver. LD_BIND_NOW is set empty (lazy binding) on both sides: the gate pins LD_BIND_NOW=1 for
-# layer B, and 25.0.7's libgallium refers to libdrm_amdgpu symbols newer than Debian 12's libdrm, so
-# under immediate binding its libEGL_mesa does not load and the auto backend falls back to OSMesa.
-prefix="${SHADOWBENCH_DRIVERS_DIR:-/opt/shadowbench/drivers}/$head_driver"
-lib="$prefix/usr/lib/x86_64-linux-gnu"
-base_env=(LD_BIND_NOW= "SHADOWBENCH_DRIVER=$base_driver")
-head_env=(LD_BIND_NOW= "SHADOWBENCH_DRIVER=$head_driver" "LD_LIBRARY_PATH=$lib" "LIBGL_DRIVERS_PATH=$lib/dri"
-    "__EGL_VENDOR_LIBRARY_FILENAMES=$prefix/etc/egl_vendor.json" "VK_ICD_FILENAMES=$prefix/etc/lvp_icd.json"
-    "VK_DRIVER_FILES=$prefix/etc/lvp_icd.json" "GBM_BACKENDS_PATH=$lib/gbm")
-ci_sides=()
-for v in "${base_env[@]}"; do ci_sides+=(--base-env "$v"); done
-for v in "${head_env[@]}"; do ci_sides+=(--head-env "$v"); done
-# Once bench ci takes drivers by name, the four lines above become this one:
-# ci_sides=(--base-driver "$base_driver" --head-driver "$head_driver")
+# bench ci's two sides, each on its driver (core/DriverTable: the same environment as --driver). Layer B
+# pins LD_BIND_NOW=1 as the gate does; that needs the backported libdrm that install-deps.sh unpacks into
+# the driver's prefix (results/drivers/README.md, "Instructions per frame").
+ci_sides=(--base-driver "$base_driver" --head-driver "$head_driver")
 
 # name<TAB>argument<TAB>argument... per configuration, the suite's common arguments first.
 configs() {
