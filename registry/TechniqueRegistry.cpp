@@ -17,6 +17,7 @@
 #include "techniques/shadowmap/CubeMapVulkan.h"
 #include "techniques/shadowmap/EsmGL.h"
 #include "techniques/shadowmap/ParaboloidGL.h"
+#include "techniques/shadowmap/ParaboloidVulkan.h"
 #include "techniques/shadowmap/PcssGL.h"
 #include "techniques/shadowmap/ShadowMapGL.h"
 #include "techniques/shadowmap/ShadowMapVulkan.h"
@@ -63,7 +64,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"shadowmap", gl<ShadowMapGL>, vulkan<ShadowMapVulkan>},
         // The shadow-map family: omni maps for point lights, cascades, soft and filterable maps.
         {"cubemap", gl<CubeMapGL>, vulkan<CubeMapVulkan>},
-        {"paraboloid", gl<ParaboloidGL>, {}},
+        {"paraboloid", gl<ParaboloidGL>, vulkan<ParaboloidVulkan>},
         {"cascaded", gl<CascadedGL>, {}},
         {"pcss", gl<PcssGL>, {}},
         {"vsm", gl<VsmGL>, {}},
