@@ -13,6 +13,7 @@
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/shadowmap/CascadedGL.h"
+#include "techniques/shadowmap/CascadedVulkan.h"
 #include "techniques/shadowmap/CubeMapGL.h"
 #include "techniques/shadowmap/CubeMapVulkan.h"
 #include "techniques/shadowmap/EsmGL.h"
@@ -65,7 +66,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         // The shadow-map family: omni maps for point lights, cascades, soft and filterable maps.
         {"cubemap", gl<CubeMapGL>, vulkan<CubeMapVulkan>},
         {"paraboloid", gl<ParaboloidGL>, vulkan<ParaboloidVulkan>},
-        {"cascaded", gl<CascadedGL>, {}},
+        {"cascaded", gl<CascadedGL>, vulkan<CascadedVulkan>},
         {"pcss", gl<PcssGL>, {}},
         {"vsm", gl<VsmGL>, {}},
         {"esm", gl<EsmGL>, {}},
