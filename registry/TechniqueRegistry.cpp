@@ -13,10 +13,12 @@
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/shadowmap/CascadedGL.h"
+#include "techniques/shadowmap/CascadedVulkan.h"
 #include "techniques/shadowmap/CubeMapGL.h"
 #include "techniques/shadowmap/CubeMapVulkan.h"
 #include "techniques/shadowmap/EsmGL.h"
 #include "techniques/shadowmap/ParaboloidGL.h"
+#include "techniques/shadowmap/ParaboloidVulkan.h"
 #include "techniques/shadowmap/PcssGL.h"
 #include "techniques/shadowmap/ShadowMapGL.h"
 #include "techniques/shadowmap/ShadowMapVulkan.h"
@@ -63,8 +65,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"shadowmap", gl<ShadowMapGL>, vulkan<ShadowMapVulkan>},
         // The shadow-map family: omni maps for point lights, cascades, soft and filterable maps.
         {"cubemap", gl<CubeMapGL>, vulkan<CubeMapVulkan>},
-        {"paraboloid", gl<ParaboloidGL>, {}},
-        {"cascaded", gl<CascadedGL>, {}},
+        {"paraboloid", gl<ParaboloidGL>, vulkan<ParaboloidVulkan>},
+        {"cascaded", gl<CascadedGL>, vulkan<CascadedVulkan>},
         {"pcss", gl<PcssGL>, {}},
         {"vsm", gl<VsmGL>, {}},
         {"esm", gl<EsmGL>, {}},

@@ -65,6 +65,24 @@ const Case kCases[] = {
     {"cubemap_point_instanced_pcf3", "point_light", "near", "cubemap:pcf=3", SubmitMode::Instanced},
     {"cubemap_spot_flat", "aircraft", "far", "cubemap", SubmitMode::Retained, "spot"},
     {"cubemap_directional_flat", "aircraft", "mid", "cubemap:pcf=3"},
+    {"paraboloid_point_split", "point_light", "far", "paraboloid"},
+    {"paraboloid_point_per_vertex_instanced", "point_light", "near", "paraboloid:split=false:pcf=3",
+     SubmitMode::Instanced},
+    {"paraboloid_room", "room", "wall", "paraboloid"},
+    {"paraboloid_jack_o_lantern", "jack_o_lantern", "mid", "paraboloid"},
+    {"paraboloid_spot_flat", "aircraft", "far", "paraboloid", SubmitMode::Retained, "spot"},
+    {"cascaded_aircraft", "aircraft", "far", "cascaded"},
+    // cascaded's lighting pass computes each cascade's map coordinate per fragment from the interpolated
+    // world position, whose last bits differ between the two drivers; a near cascade magnifies its texels
+    // many times, so on a few pixels of a shadow's edge the bilinear compare filter lands on the other
+    // side of a weight step: visibility 0.001 to 0.01 apart, never a whole tap (measured: 1 pixel of
+    // 25,600 in each; from teapot's near camera 55 to 94, so that scene is checked from afar).
+    {"cascaded_city_tight_no_blend", "city", "mid", "cascaded:stabilize=false:blend=0", SubmitMode::Retained,
+     "", 0.0002},
+    {"cascaded_teapot_instanced_uniform_pcf3", "teapot", "far", "cascaded:cascades=3:lambda=0:pcf=3",
+     SubmitMode::Instanced, "", 0.0002},
+    {"cascaded_spot", "sphere_plane", "far", "cascaded", SubmitMode::Retained, "spot"},
+    {"cascaded_exceptions", "exceptions", "far", "cascaded:cascades=2"},
     {"volume_aircraft", "aircraft", "far", "volume", SubmitMode::Retained, "", 0.001},
     {"volume_vertex_instanced", "aircraft", "mid", "volume:extrusion=vertex", SubmitMode::Instanced, "",
      0.001},

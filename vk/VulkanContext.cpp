@@ -379,6 +379,7 @@ void VulkanContext::createDevice() {
     enabled.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
     enabled.geometryShader = available.geometryShader; // GraphicsPipelineDesc::geometry (volume extrusion)
     enabled.imageCubeArray = available.imageCubeArray; // samplerCubeArrayShadow (cubemap's lighting pass)
+    enabled.shaderClipDistance = available.shaderClipDistance; // paraboloid's cut at each half's plane
     // volume's light pass blends colour ADD and visibility MAX, as GL's per-draw-buffer equations do
     enabled.independentBlend = available.independentBlend;
     mDepthClamp = available.depthClamp == VK_TRUE;

@@ -13,6 +13,19 @@ in vec4 vColorId;
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 (techniques/shadowmap/CascadedVulkan.h): the uniforms GL sets by location, in one block, and the
+// map. std140: each int of an array takes 16 bytes.
+layout(std140, set = 1, binding = 0) uniform CascadedBlock {
+    vec4 uSplitFar;
+    vec4 uBandStart;
+    vec4 uBandScale;
+    uint uEmptySlots;
+    mat4 uSlotMatrix[SLOT_COUNT];
+    int uSlotLayer[SLOT_COUNT];
+};
+layout(set = 1, binding = 1) uniform sampler2DArrayShadow uShadowMap;
+#else
 layout(binding = 0) uniform sampler2DArrayShadow uShadowMap;
 layout(location = 10) uniform vec4 uSplitFar;               // view depth where cascade c ends
 layout(location = 11) uniform vec4 uBandStart;              // view depth where cascade c's blend band begins
@@ -20,6 +33,7 @@ layout(location = 12) uniform vec4 uBandScale;              // 1 / the band's wi
 layout(location = 15) uniform uint uEmptySlots;             // bit per slot: no caster in its map, lit
 layout(location = 16) uniform mat4 uSlotMatrix[SLOT_COUNT]; // bias * ortho * lightView per slot
 layout(location = 32) uniform int uSlotLayer[SLOT_COUNT];   // the depth array's layer of each slot
+#endif
 
 // Per light, compile-time constants (the light loop unrolls, so every branch on them folds: on a
 // rasteriser that runs both sides of a branch, as llvmpipe does, a spot light pays no cascade code

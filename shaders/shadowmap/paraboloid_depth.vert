@@ -8,9 +8,19 @@
 #include "common/instance.glsl"
 #include "shadowmap/paraboloid_frame.glsl"
 
+#ifdef VULKAN
+// One slot per hemisphere of a dynamic uniform buffer (techniques/shadowmap/ParaboloidVulkan.h).
+layout(std140, set = 1, binding = 0) uniform ParaboloidPass {
+    vec4 uLight; // xyz: position; w: hemisphere (0 front, 1 back)
+    vec2 uNearFar;
+    float uMaxAngle;  // radians a segment may span (paraboloid_split.geom)
+    float uBeyondRim; // the clip plane's offset behind the hemisphere's
+};
+#else
 layout(location = 8) uniform vec4 uLight; // xyz: position; w: hemisphere (0 front, 1 back)
 layout(location = 12) uniform vec2 uNearFar;
 layout(location = 14) uniform float uBeyondRim; // the clip plane's offset behind the hemisphere's
+#endif
 
 out float gl_ClipDistance[1];
 

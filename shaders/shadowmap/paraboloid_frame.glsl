@@ -36,5 +36,8 @@ vec4 paraboloidClip(vec3 v, int half_, vec2 nearFar, float beyondRim, out float 
     float w = 1.0 + d.z;
     float z = 2.0 * paraboloidDepth(dist, nearFar) - 1.0;
     clipDistance = d.z + beyondRim;
+#ifdef VULKAN
+    z = 0.5 * z + 0.5; // Vulkan's clip z runs over [0, w] (VulkanFrameBlock::depthFromGl)
+#endif
     return vec4(d.xy, z * w, w);
 }

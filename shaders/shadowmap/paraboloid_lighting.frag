@@ -11,7 +11,11 @@
 
 #ifdef OMNI_MAPS
 #ifndef FLAT_MAPS
+#ifdef VULKAN
+layout(set = 1, binding = 1) uniform sampler2DArrayShadow uFlatMaps;
+#else
 layout(binding = 0) uniform sampler2DArrayShadow uFlatMaps;
+#endif
 #endif
 
 float omniVisibility(int light, int layer, vec3 v, vec2 nearFar) {

@@ -31,12 +31,31 @@ const int kMaxSegments = 13;
 
 in vec4 vWorld[];
 
+#ifdef VULKAN
+// One slot per hemisphere of a dynamic uniform buffer (techniques/shadowmap/ParaboloidVulkan.h).
+layout(std140, set = 1, binding = 0) uniform ParaboloidPass {
+    vec4 uLight; // xyz: position; w: hemisphere (0 front, 1 back)
+    vec2 uNearFar;
+    float uMaxAngle;  // radians a segment may span (paraboloid_split.geom)
+    float uBeyondRim; // the clip plane's offset behind the hemisphere's
+};
+#else
 layout(location = 8) uniform vec4 uLight; // xyz: position; w: hemisphere (0 front, 1 back)
 layout(location = 12) uniform vec2 uNearFar;
 layout(location = 13) uniform float uMaxAngle; // radians a segment may span
 layout(location = 14) uniform float uBeyondRim; // the clip plane's offset behind the hemisphere's
+#endif
 
+#ifdef VULKAN
+// Position and clip distance only: 5 components a vertex, 975 in all (the limit is 1024), where the
+// implicit block's point size and cull distance would count too.
+out gl_PerVertex {
+    vec4 gl_Position;
+    float gl_ClipDistance[1];
+};
+#else
 out float gl_ClipDistance[1];
+#endif
 
 vec3 gA, gB, gC; // the triangle's corners, light-relative
 int gN;          // grid segments per side

@@ -35,18 +35,16 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/Cascaded.h"
+#include "techniques/shadowmap/CascadedMaps.h"
 #include "techniques/shadowmap/DepthLayers.h"
 
 namespace sb {
 
 class CascadedGL final : public GlTechnique {
 public:
-    static constexpr int kMaxSlots = kMaxLights * Cascaded::kMaxCascades;
-
     CascadedGL();
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
@@ -55,42 +53,16 @@ public:
 
     /// The split distances (view depth, cascades + 1) and the cascades of directional light `light` of
     /// the last frame: what the tests compare against closed forms.
-    const std::vector<float>& splits() const { return mSplits; }
-    const std::vector<Cascade>& cascades(size_t light) const { return mLights[light].cascades; }
+    const std::vector<float>& splits() const { return mPlan.splits(); }
+    const std::vector<Cascade>& cascades(size_t light) const { return mPlan.cascades(light); }
 
 private:
-    /// A shadowed light: its slots and how they are fitted.
-    struct LightMaps {
-        bool directional = true;
-        bool castsShadows = true; ///< false: its slots are never drawn (empty: the lookup says lit)
-        int firstSlot = 0;
-        int slots = 1;                 ///< cascades (directional) or 1 (spot)
-        glm::mat4 lightView{1.0f};     ///< directional: the light's rotation
-        CascadeSceneBounds bounds;     ///< directional: what its cascades are clipped to
-        glm::mat4 spotViewProj{1.0f};  ///< spot: the fitted perspective map
-        std::vector<Cascade> cascades; ///< directional: this frame's fits
-    };
-
-    void fitCascades(const FrameContext& ctx);
     void renderDepth(FrameContext& ctx);
     void renderLighting(FrameContext& ctx);
-    int slotCount() const;
-    void shareIdenticalFits(const LightMaps& m);
 
-    std::vector<LightMaps> mLights;
-    std::vector<Aabb> mReceivers; ///< world bounds of every receiving instance
-    std::vector<float> mSplits;   ///< this frame's split distances (view depth)
-    std::vector<float> mFitStart; ///< where each cascade's fit starts (its blend band included)
-    // Per slot (a light's cascade, or a spot light's one map; slot i may use layer i at most):
-    std::vector<glm::mat4> mSlotViewProj; ///< world -> the map's clip space
-    std::vector<glm::mat4> mSlotShadow;   ///< bias * viewProj (to [0, 1] texture space)
-    std::vector<int> mSlotLayer;          ///< the depth array's layer it reads (shared when identical)
-    uint32_t mEmptySlots = 0;             ///< bit per slot: no caster reaches its map this frame
-    int mMapsRendered = 0;                ///< distinct maps drawn last frame
-    DepthLayers mMaps{"cascaded"};        ///< GL_TEXTURE_2D_ARRAY, one layer per slot
-    InstanceCulling mCulling;
-    std::vector<uint8_t> mKeep; ///< the depth pass's mask, reused per map
-    size_t mCulled = 0;         ///< casters culled, summed over the maps drawn, last frame
+    CascadedMaps mPlan;            ///< lights, slots, fits and the depth pass's plan (both APIs')
+    DepthLayers mMaps{"cascaded"}; ///< GL_TEXTURE_2D_ARRAY, one layer per slot
+    std::vector<uint8_t> mKeep;    ///< the depth pass's mask, reused per map
     const Program* mDepthProgram = nullptr;
     const Program* mLightingProgram = nullptr;
     Counters mCounters;

@@ -1,6 +1,10 @@
 #include "techniques/shadowmap/Paraboloid.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "techniques/Property.h"
+#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
@@ -39,6 +43,38 @@ TechniqueInfo Paraboloid::declaration() {
                 P::biasConstantSweep(),
                 P::biasSlopeSweep(),
             }};
+}
+
+float Paraboloid::beyondRim(int resolution, int pcf) {
+    // The lookup's footprint reaches pcf / 2 texels plus the bilinear one past its centre; one more
+    // for the half-texel chords of the cut. At the rim a map unit spans one radian, a texel 2 /
+    // resolution of both.
+    const float texels = 0.5f * float(pcf) + 2.0f;
+    return std::sin(texels * 2.0f / float(std::max(resolution, 1)));
+}
+
+glm::vec3 Paraboloid::hemisphereAxis(int half) {
+    return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+Defines Paraboloid::lightingDefines(Defines lit, const PropertySet& p, const OmniLightSet& lights) {
+    lit["SHADOW_MAP"] = "";
+    lit["LIGHT_COUNT"] = std::to_string(lights.shaderLightCount());
+    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    if (lights.flatCount() > 0) lit["FLAT_MAPS"] = "";
+    if (lights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    return lit;
+}
+
+Counters Paraboloid::counters(const SubmitStats& s, int resolution, int layers, const OmniLightSet& lights,
+                              int hemispheresRendered, size_t culled, size_t split) {
+    const double res = double(resolution);
+    return DepthLightingFrame::counters(s, res * res * double(layers),
+                                        {{"hemispheres_rendered", double(hemispheresRendered)},
+                                         {"casters_culled", double(culled)},
+                                         {"casters_split", double(split)},
+                                         {"lights_skipped", double(lights.skippedCount())},
+                                         {"lights_unshadowed", double(lights.unshadowedCount())}});
 }
 
 } // namespace sb

@@ -24,18 +24,6 @@ constexpr GLuint kMapUnit = 0;           // shadowmap/omni_lighting.glsl, parabo
 
 ParaboloidGL::ParaboloidGL() : GlTechnique(Paraboloid::declaration()) {}
 
-float ParaboloidGL::beyondRim(int resolution, int pcf) {
-    // The lookup's footprint reaches pcf / 2 texels plus the bilinear one past its centre; one more
-    // for the half-texel chords of the cut. At the rim a map unit spans one radian, a texel 2 /
-    // resolution of both.
-    const float texels = 0.5f * float(pcf) + 2.0f;
-    return std::sin(texels * 2.0f / float(std::max(resolution, 1)));
-}
-
-glm::vec3 ParaboloidGL::hemisphereAxis(int half) {
-    return half == 0 ? glm::vec3(0.0f, -1.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-}
-
 void ParaboloidGL::setScene(const Scene& scene) {
     mLights.setScene(scene);
     mCulling.setScene(scene);
@@ -57,13 +45,9 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
         {"shadowmap/cube_depth.vert", "shadowmap/depth.frag", "shadowmap/paraboloid_split.geom"}, base);
     mSplit = p.getBool(Paraboloid::kSplit);
     mMaxSegmentAngle = ParaboloidSplitting::maxSegmentAngle(int(p.getInt(P::kResolution)));
-    mBeyondRim = beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));
-    Defines lit = ctx.defines(); // the depth passes have no shadow to apply
-    lit["SHADOW_MAP"] = "";
-    lit["LIGHT_COUNT"] = std::to_string(mLights.shaderLightCount());
-    lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
-    if (mLights.flatCount() > 0) lit["FLAT_MAPS"] = "";
-    if (mLights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    mBeyondRim = Paraboloid::beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));
+    // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
+    const Defines lit = Paraboloid::lightingDefines(ctx.defines(), p, mLights);
     mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/paraboloid_lighting.frag", ""}, lit);
     setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mSplitDepth->key() + "|" +
                       mLighting->key());
@@ -99,8 +83,8 @@ void ParaboloidGL::renderHemispheres(FrameContext& ctx) {
         }
         for (int half = 0; half < 2; ++half) {
             mMaps.beginLayer(2 * o.index + half);
-            const size_t kept =
-                mOmniCulling.cullHemisphere(o.point.position, o.point.farZ, hemisphereAxis(half), mKeep);
+            const size_t kept = mOmniCulling.cullHemisphere(o.point.position, o.point.farZ,
+                                                            Paraboloid::hemisphereAxis(half), mKeep);
             mCulled += mOmniCulling.casters() - kept;
             if (kept == 0) continue; // the cleared half is the answer: nothing casts into it
             drawHemisphere(ctx, glm::vec4(o.point.position, float(half)));
@@ -133,15 +117,8 @@ void ParaboloidGL::renderLighting(FrameContext& ctx) {
 void ParaboloidGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
-    const double res = double(mMaps.size());
-    mCounters = {{"draw_calls", double(s.drawCalls)},
-                 {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", res * res * double(mMaps.layers())},
-                 {"hemispheres_rendered", double(mHemispheresRendered)},
-                 {"casters_culled", double(mCulled)},
-                 {"casters_split", double(mSplitDrawn)},
-                 {"lights_skipped", double(mLights.skippedCount())},
-                 {"lights_unshadowed", double(mLights.unshadowedCount())}};
+    mCounters = Paraboloid::counters(s, mMaps.size(), mMaps.layers(), mLights, mHemispheresRendered, mCulled,
+                                     mSplitDrawn);
 }
 
 } // namespace sb

@@ -60,14 +60,6 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
 
-    /// The axis of hemisphere `half` (0 front: -Y, 1 back: +Y), as shaders/shadowmap/paraboloid_frame.glsl
-    /// sets it up.
-    static glm::vec3 hemisphereAxis(int half);
-    /// How far behind its plane each half's depth pass cuts the casters (the sine of the angle): the
-    /// map keeps a ring of pcf / 2 + 2 texels outside the unit disc, filled with the other half's
-    /// nearest edge, so that lookups at the light's height never filter in the cleared far depth.
-    static float beyondRim(int resolution, int pcf);
-
 private:
     void renderDepth(FrameContext& ctx);
     void renderHemispheres(FrameContext& ctx);
