@@ -17,12 +17,15 @@
 #include "techniques/shadowmap/CubeMapGL.h"
 #include "techniques/shadowmap/CubeMapVulkan.h"
 #include "techniques/shadowmap/EsmGL.h"
+#include "techniques/shadowmap/EsmVulkan.h"
 #include "techniques/shadowmap/ParaboloidGL.h"
 #include "techniques/shadowmap/ParaboloidVulkan.h"
 #include "techniques/shadowmap/PcssGL.h"
+#include "techniques/shadowmap/PcssVulkan.h"
 #include "techniques/shadowmap/ShadowMapGL.h"
 #include "techniques/shadowmap/ShadowMapVulkan.h"
 #include "techniques/shadowmap/VsmGL.h"
+#include "techniques/shadowmap/VsmVulkan.h"
 #include "techniques/synthetic/SyntheticGL.h"
 #include "techniques/volume/VolumeGL.h"
 #include "techniques/volume/VolumeVulkan.h"
@@ -70,6 +73,11 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"pcss", gl<PcssGL>, {}},
         {"vsm", gl<VsmGL>, {}},
         {"esm", gl<EsmGL>, {}},
+        {"paraboloid", gl<ParaboloidGL>, {}},
+        {"cascaded", gl<CascadedGL>, {}},
+        {"pcss", gl<PcssGL>, vulkan<PcssVulkan>},
+        {"vsm", gl<VsmGL>, vulkan<VsmVulkan>},
+        {"esm", gl<EsmGL>, vulkan<EsmVulkan>},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
         {"occluder", gl<OccluderGL>, {}},
         {"proxy", gl<ProxyGL>, {}},

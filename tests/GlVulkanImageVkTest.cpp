@@ -83,6 +83,30 @@ const Case kCases[] = {
      SubmitMode::Instanced, "", 0.0002},
     {"cascaded_spot", "sphere_plane", "far", "cascaded", SubmitMode::Retained, "spot"},
     {"cascaded_exceptions", "exceptions", "far", "cascaded:cascades=2"},
+    // pcss: a blocker-search tap that the two compilers round to either side of the receiver's depth
+    // changes the pixel's penumbra width and so every filter tap: measured 0-6 pixels of 25,600 whose
+    // visibility moves by more than rounding (4-6 on teapot), 0.05%.
+    {"pcss_aircraft", "aircraft", "far", "pcss", SubmitMode::Retained, "", 0.0005},
+    {"pcss_instanced_light_size", "aircraft", "mid", "pcss:light_size=0.05", SubmitMode::Instanced, "",
+     0.0005},
+    {"pcss_spot", "sphere_plane", "far", "pcss:resolution=1024", SubmitMode::Retained, "spot", 0.0005},
+    {"pcss_teapot", "teapot", "far", "pcss", SubmitMode::Retained, "", 0.0005},
+    {"pcss_exceptions", "exceptions", "far", "pcss", SubmitMode::Retained, "", 0.0005},
+    // vsm: Chebyshev's bound divides by the variance M2 - M1^2, a difference of two nearly equal sums
+    // (the blur's and the bilinear filter's, rounded differently by the two compilers), so where the
+    // filtered variance is near min_variance the last bits of the moments move the bound by more than
+    // rounding: measured 0-12 pixels of 25,600 (12 on teapot without the receiver background), 0.05%.
+    {"vsm_aircraft", "aircraft", "far", "vsm", SubmitMode::Retained, "", 0.0005},
+    {"vsm_instanced_blur5", "aircraft", "mid", "vsm:blur=5", SubmitMode::Instanced, "", 0.0005},
+    {"vsm_spot", "sphere_plane", "far", "vsm:resolution=512", SubmitMode::Retained, "spot", 0.0005},
+    {"vsm_teapot_no_background", "teapot", "far", "vsm:receiver_background=false", SubmitMode::Retained, "",
+     0.0005},
+    {"vsm_exceptions", "exceptions", "far", "vsm", SubmitMode::Retained, "", 0.0005},
+    {"esm_aircraft", "aircraft", "far", "esm"},
+    {"esm_instanced_no_blur", "aircraft", "mid", "esm:blur=0", SubmitMode::Instanced},
+    {"esm_spot", "sphere_plane", "far", "esm:resolution=512:exponent=80", SubmitMode::Retained, "spot"},
+    {"esm_teapot", "teapot", "far", "esm"},
+    {"esm_exceptions", "exceptions", "far", "esm"},
     {"volume_aircraft", "aircraft", "far", "volume", SubmitMode::Retained, "", 0.001},
     {"volume_vertex_instanced", "aircraft", "mid", "volume:extrusion=vertex", SubmitMode::Instanced, "",
      0.001},

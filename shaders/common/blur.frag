@@ -12,18 +12,32 @@
 // m + log(sum w_k exp(c (d_k - m))) / c with m the largest d_k: every exp() is at most 1 and the sum at
 // least the largest tap's weight, so no exponent overflows or takes the log of 0. Otherwise (`vsm`) every
 // channel is filtered linearly.
-#ifdef BLUR_FROM_ARRAY
-layout(binding = 0) uniform sampler2DArray uSource;
+#ifdef VULKAN
+// Set 0 (techniques/vulkan/VulkanSeparableBlur.h): the source and a block written once per compile; the
+// layer of the horizontal pass in a push constant. std140: each float of the array takes 16 bytes.
+#define SB_SOURCE_BINDING set = 0, binding = 0
+layout(std140, set = 0, binding = 1) uniform BlurBlock {
+    float uExponent;
+    float uWeights[BLUR_RADIUS + 1];
+};
+layout(push_constant) uniform BlurPush {
+    int uLayer;
+};
+#else
+#define SB_SOURCE_BINDING binding = 0
 layout(location = 0) uniform int uLayer;
+layout(location = 1) uniform float uExponent;
+layout(location = 2) uniform float uWeights[BLUR_RADIUS + 1];
+#endif
+#ifdef BLUR_FROM_ARRAY
+layout(SB_SOURCE_BINDING) uniform sampler2DArray uSource;
 const ivec2 kStep = ivec2(1, 0);
 vec4 texel(ivec2 p) { return texelFetch(uSource, ivec3(p, uLayer), 0); }
 #else
-layout(binding = 0) uniform sampler2D uSource;
+layout(SB_SOURCE_BINDING) uniform sampler2D uSource;
 const ivec2 kStep = ivec2(0, 1);
 vec4 texel(ivec2 p) { return texelFetch(uSource, p, 0); }
 #endif
-layout(location = 1) uniform float uExponent;
-layout(location = 2) uniform float uWeights[BLUR_RADIUS + 1];
 layout(location = 0) out vec4 oValue;
 
 #ifdef BLUR_OUTSIDE_ONE

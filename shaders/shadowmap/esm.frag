@@ -20,11 +20,24 @@ in vec4 vShadowCoord[LIGHT_COUNT];
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 (techniques/shadowmap/VulkanMomentMaps.h): the uniforms GL sets by location, in one block whose
+// head common/scene.vert reads, and the depths.
+layout(std140, set = 1, binding = 0) uniform ShadowMapBlock {
+    mat4 uShadowMatrix[LIGHT_COUNT];
+    vec4 uDepthPlane[LIGHT_COUNT];
+    vec4 uDepthPoint[LIGHT_COUNT];
+    float uMapMargin;
+    float uExponent;
+};
+layout(set = 1, binding = 1) uniform sampler2DArray uDepths;
+#else
 layout(binding = 0) uniform sampler2DArray uDepths;
 layout(location = 32) uniform vec4 uDepthPlane[LIGHT_COUNT];
 layout(location = 36) uniform vec4 uDepthPoint[LIGHT_COUNT];
 layout(location = 44) uniform float uMapMargin; // texture coordinates
 layout(location = 40) uniform float uExponent;
+#endif
 
 // Bilinear filtering of exp(c d) in log space: the texels and weights GL_LINEAR would use.
 float exponentialLookup(int layer, vec2 uv, float t) {

@@ -6,8 +6,17 @@
 // Otherwise (ESM, Salvi 2008's log-space form): d itself; the exponential is taken when filtering.
 #include "shadowmap/light_depth.glsl"
 
+#ifdef VULKAN
+// The light's slot (shadowmap/moments.vert).
+layout(std140, set = 1, binding = 0) uniform LightPass {
+    mat4 uLightViewProj;
+    vec4 uDepthPlane;
+    vec4 uDepthPoint;
+};
+#else
 layout(location = 32) uniform vec4 uDepthPlane;
 layout(location = 36) uniform vec4 uDepthPoint;
+#endif
 in vec3 vWorldPos;
 layout(location = 0) out vec4 oMoments;
 

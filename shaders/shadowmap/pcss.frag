@@ -18,6 +18,21 @@ in vec4 vShadowCoord[LIGHT_COUNT];
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 (techniques/shadowmap/PcssVulkan.h): the uniforms GL sets by location, in one block whose head
+// common/scene.vert reads, and the one map through two samplers. std140: each vec2 of an array takes 16
+// bytes.
+layout(std140, set = 1, binding = 0) uniform ShadowMapBlock {
+    mat4 uShadowMatrix[LIGHT_COUNT];
+    vec4 uPcssLight[LIGHT_COUNT];
+    vec4 uPcssSearch[LIGHT_COUNT];
+    vec2 uBlockerKernel[64];
+    vec2 uFilterKernel[64];
+    ivec2 uTaps;
+};
+layout(set = 1, binding = 1) uniform sampler2DArray uDepthMap;       // nearest, no comparison
+layout(set = 1, binding = 2) uniform sampler2DArrayShadow uShadowMap; // linear, comparison
+#else
 layout(binding = 0) uniform sampler2DArray uDepthMap;       // nearest, no comparison: the search
 layout(binding = 1) uniform sampler2DArrayShadow uShadowMap; // linear, comparison: the filter
 // x: light size L; y: 1 perspective map, 0 orthographic; z, w: near and far of the linear depth.
@@ -30,6 +45,7 @@ layout(location = 16) uniform vec4 uPcssSearch[LIGHT_COUNT];
 layout(location = 20) uniform vec2 uBlockerKernel[64];
 layout(location = 84) uniform vec2 uFilterKernel[64];
 layout(location = 148) uniform ivec2 uTaps;
+#endif
 
 bool perspectiveMap(int i) { return uPcssLight[i].y > 0.5; }
 

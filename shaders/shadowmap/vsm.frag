@@ -18,12 +18,26 @@ in vec4 vShadowCoord[LIGHT_COUNT];
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 (techniques/shadowmap/VulkanMomentMaps.h): the uniforms GL sets by location, in one block whose
+// head common/scene.vert reads, and the moments.
+layout(std140, set = 1, binding = 0) uniform ShadowMapBlock {
+    mat4 uShadowMatrix[LIGHT_COUNT];
+    vec4 uDepthPlane[LIGHT_COUNT];
+    vec4 uDepthPoint[LIGHT_COUNT];
+    float uMapMargin;
+    float uMinVariance;
+    float uBleedReduction;
+};
+layout(set = 1, binding = 1) uniform sampler2DArray uMoments;
+#else
 layout(binding = 0) uniform sampler2DArray uMoments;
 layout(location = 32) uniform vec4 uDepthPlane[LIGHT_COUNT];
 layout(location = 36) uniform vec4 uDepthPoint[LIGHT_COUNT];
 layout(location = 44) uniform float uMapMargin; // texture coordinates
 layout(location = 40) uniform float uMinVariance;
 layout(location = 41) uniform float uBleedReduction;
+#endif
 
 float visibility(int layer, vec4 coord) {
     vec2 uv;

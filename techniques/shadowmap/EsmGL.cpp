@@ -12,16 +12,16 @@ constexpr glm::vec4 kNoOccluder{1.0f, 0.0f, 0.0f, 0.0f};
 EsmGL::EsmGL() : GlTechnique(Esm::declaration()) {}
 
 void EsmGL::setScene(const Scene& scene) {
-    mMaps.setScene(scene);
+    mMaps.fits().setScene(scene);
 }
 
 void EsmGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int resolution = int(p.getInt(Esm::kResolution));
-    mMaps.setReceiverBackground(p.getBool(Esm::kReceiverBackground));
-    mMaps.setViewCull(p.getBool(Esm::kCull));
+    mMaps.fits().setReceiverBackground(p.getBool(Esm::kReceiverBackground));
+    mMaps.fits().setViewCull(p.getBool(Esm::kCull));
     // The border the filter's reads need: the blur's radius and the bilinear footprint's texel.
-    mMaps.fit(ctx.scene, resolution, int(p.getInt(Esm::kBlur)) / 2 + 1);
+    mMaps.fits().fit(ctx.scene, resolution, int(p.getInt(Esm::kBlur)) / 2 + 1);
     mMaps.allocate(resolution, GL_R32F);
     mDepthProgram =
         &ctx.programs.get({"shadowmap/moments.vert", "shadowmap/moments.frag", ""}, ctx.submitter.defines());

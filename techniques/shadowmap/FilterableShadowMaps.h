@@ -1,5 +1,6 @@
 #pragma once
-// The depth pass that filterable shadow maps share (`vsm` and `esm`): per light one layer of a colour
+// The depth pass that filterable shadow maps share (`vsm` and `esm`) on GL (the fits, the culling and the
+// counters both APIs share are techniques/shadowmap/MomentMapFits.h): per light one layer of a colour
 // texture array (RG32F moments for VSM, R32F depth for ESM) holding what the technique's program writes
 // from each caster fragment, rendered with a depth buffer (one renderbuffer for all layers) so the nearest
 // caster wins, and cleared to "no occluder" (depth 1) first.
@@ -57,9 +58,9 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/SeparableBlur.h"
+#include "techniques/shadowmap/MomentMapFits.h"
 
 namespace sb {
 
@@ -74,26 +75,19 @@ public:
     static constexpr GLint kDepthPointLocation = 36;
     static constexpr GLint kMarginLocation = 44; ///< lighting: the margin in texture coordinates
 
-    explicit FilterableShadowMaps(std::string owner) : mOwner(std::move(owner)) {}
+    explicit FilterableShadowMaps(std::string owner) : mOwner(owner), mFits(std::move(owner)) {}
     ~FilterableShadowMaps();
     FilterableShadowMaps(const FilterableShadowMaps&) = delete;
     FilterableShadowMaps& operator=(const FilterableShadowMaps&) = delete;
 
-    /// Fits a light camera per light (at most kMaxLights, scenes/LightFit.h); throws Error(Unsupported)
-    /// naming the omni techniques for a point light.
-    void setScene(const Scene& scene);
-    /// A scene in motion moved: the light fits again, then the maps fitted as the last fit() did.
-    void sceneChanged(const Scene& scene);
-    /// The light cameras for maps of `resolution` texels with a border of `marginTexels` (below), and the
-    /// depth parameters for them. Cheap when nothing changed. A margin above a quarter of the resolution
-    /// is refused (Error(BadInput)): the casters would keep less than half the map.
-    void fit(const Scene& scene, int resolution, int marginTexels);
+    /// The light fits (MomentMapFits): setScene, sceneChanged, fit, the receiver background and the
+    /// view culling are set there.
+    MomentMapFits& fits() { return mFits; }
+    const MomentMapFits& fits() const { return mFits; }
     /// (Re)allocates the array, the depth renderbuffer and the framebuffers when the size or format
     /// changed. `format`: GL_RG32F or GL_R32F. Bilinear filtering, clamp to edge.
     void allocate(int resolution, GLenum format);
 
-    /// Whether render() draws the non-casters as the map's background (below). Default true.
-    void setReceiverBackground(bool on) { mReceiverBackground = on; }
     /// The depth pass: binds `program` (which must write the light's moments to colour 0), and per light
     /// clears its layer to `clear` (depth 1 in the technique's encoding), sets the light's matrix and
     /// depth parameters and, if any caster reaches its frustum, draws with the receiver background the
@@ -106,18 +100,10 @@ public:
     /// lighting's own uniforms): resets the submit stats; pass "depth", render() with `depth` and
     /// `clear`; pass "blur", `blur` over the layers a caster reached; pass "lighting", the frame targets
     /// bound, `lighting` used, setLightingUniforms(), `setUniforms` for the technique's own, the maps on
-    /// unit 0, everything drawn. Returns the frame's counters (draw_calls, triangles, shadow_map_texels,
-    /// blur_texels, casters_culled).
+    /// unit 0, everything drawn. Returns the frame's counters (MomentMapFits::counters).
     Counters renderFrame(FrameContext& ctx, const Program& depth, const glm::vec4& clear, SeparableBlur& blur,
                          const Program& lighting, const std::function<void()>& setUniforms);
 
-    size_t lights() const { return mFitted.size(); }
-    /// The lights that cast shadows (their layers are rendered and blurred).
-    size_t shadowedLights() const;
-    int marginTexels() const { return mMarginTexels; }
-    /// Leave out of each light's map the casters whose shadow, grown by the filter's reach, cannot
-    /// reach the view (vsm's and esm's `cull`).
-    void setViewCull(bool on) { mViewCull = on; }
     int layers() const { return mLayers; }
     int resolution() const { return mResolution; }
     GLuint texture() const { return mArray; }
@@ -126,34 +112,15 @@ public:
     const std::vector<uint8_t>& layerHasCasters() const { return mHasCasters; }
     size_t castersCulled() const { return mCulled; }
 
-    /// Linear light-space depth parameters (light_depth.glsl): directional lights a plane (the receiver's
-    /// d = dot(plane.xyz, p) + plane.w) with point.w = 0; spot lights the light's position and 1 / dMax
-    /// in point (d = |p - point.xyz| * point.w).
-    const std::vector<glm::vec4>& depthPlanes() const { return mDepthPlane; }
-    const std::vector<glm::vec4>& depthPoints() const { return mDepthPoint; }
-    /// The same d on the CPU (tests).
-    static float linearDepth(const glm::vec4& plane, const glm::vec4& point, const glm::vec3& p);
-    const std::vector<glm::mat4>& viewProjections() const { return mViewProj; }
-
 private:
     void release();
 
-    std::string mOwner;                 ///< technique name, for error messages
-    std::vector<glm::mat4> mFitted;     ///< per light: scenes/LightFit.h's camera, before the margin
-    std::vector<uint8_t> mCastsShadows; ///< per light
-    std::vector<uint8_t> mDirectional;
-    std::vector<glm::vec3> mLightPosition;
-    int mFitResolution = 0, mMarginTexels = -1;
-    bool mViewCull = true;
-    Aabb mReceiverBounds; ///< what can receive a shadow (setScene), for mViewCull
-    std::vector<glm::mat4> mViewProj, mShadowMatrix;
-    std::vector<glm::vec4> mDepthPlane, mDepthPoint;
+    std::string mOwner; ///< technique name, for error messages
+    MomentMapFits mFits;
     GLuint mArray = 0, mDepthBuffer = 0;
     std::vector<GLuint> mFbos;
     int mResolution = 0, mLayers = 0;
     GLenum mFormat = 0;
-    InstanceCulling mCulling;
-    bool mReceiverBackground = true;
     std::vector<uint8_t> mKeep, mKeepBackground, mHasCasters;
     size_t mCulled = 0;
 };

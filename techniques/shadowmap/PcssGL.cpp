@@ -25,42 +25,7 @@ constexpr GLint kFilterKernelLocation =
     kBlockerKernelLocation + Pcss::kMaxTaps;                            // uFilterKernel[Pcss::kMaxTaps]
 constexpr GLint kTapsLocation = kFilterKernelLocation + Pcss::kMaxTaps; // uTaps
 constexpr GLint kSearchUnit = 0, kCompareUnit = 1;
-/// The filter's Poisson disk differs from the search's: two seeds.
-constexpr uint64_t kFilterSeed = PoissonDisk::kSeed ^ 0x46494c544552ull;
 
-/// Row r of a matrix (GLM is column-major).
-glm::vec4 row(const glm::mat4& m, int r) {
-    return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
-}
-
-/// The light size the scene gives `light` (0 when it has no extent), see PcssGL.h.
-float sceneLightSize(const Light& light) {
-    if (light.shape == LightShape::Point) return 0.0f;
-    if (light.type == LightType::Directional)
-        return 2.0f * std::tan(glm::radians(std::clamp(light.angularRadiusDeg, 0.0f, 89.0f)));
-    if (light.shape == LightShape::Rect) // the disk of the same area
-        return 2.0f * std::sqrt(std::max(light.size.x * light.size.y, 0.0f) / float(M_PI));
-    return 2.0f * std::max(light.size.x, 0.0f); // disk and sphere: the diameter
-}
-
-/// Linear depth (PcssGL::LightParams) of the nearest corner of the casters' bounds, held within the
-/// map's depth range. Both a perspective map's w and an orthographic map's depth are linear in the world
-/// position, so the nearest point of a box is one of its corners.
-float nearestCasterDepth(const Scene& scene, const glm::mat4& lightViewProj, const PcssGL::LightParams& lp) {
-    Aabb casters = scene.computeBounds(true);
-    if (casters.empty()) return lp.nearZ;
-    float nearest = lp.farZ;
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner((c & 1) ? casters.max.x : casters.min.x,
-                               (c & 2) ? casters.max.y : casters.min.y,
-                               (c & 4) ? casters.max.z : casters.min.z);
-        const glm::vec4 clip = lightViewProj * glm::vec4(corner, 1.0f);
-        // Perspective: w is the depth along the axis; orthographic: window depth times (far - near).
-        const float z = lp.perspective ? clip.w : (0.5f * clip.z / clip.w + 0.5f) * lp.farZ;
-        nearest = std::min(nearest, z);
-    }
-    return std::clamp(nearest, lp.nearZ, lp.farZ);
-}
 } // namespace
 
 PcssGL::PcssGL() : GlTechnique(Pcss::declaration()) {}
@@ -68,38 +33,6 @@ PcssGL::PcssGL() : GlTechnique(Pcss::declaration()) {}
 PcssGL::~PcssGL() {
     if (mSearchSampler) glDeleteSamplers(1, &mSearchSampler);
     if (mCompareSampler) glDeleteSamplers(1, &mCompareSampler);
-}
-
-PcssGL::LightParams PcssGL::lightParams(const Scene& scene, const Light& light,
-                                        const glm::mat4& lightViewProj, float sizeOverride) {
-    LightParams lp;
-    const glm::vec4 r0 = row(lightViewProj, 0), r1 = row(lightViewProj, 1);
-    const glm::vec4 r2 = row(lightViewProj, 2), r3 = row(lightViewProj, 3);
-    lp.extent = glm::vec2(2.0f / glm::length(glm::vec3(r0)), 2.0f / glm::length(glm::vec3(r1)));
-    lp.perspective = glm::dot(glm::vec3(r3), glm::vec3(r3)) > 0.0f;
-    if (lp.perspective) {
-        // Clip z = alpha w + beta (glm::perspective): alpha = (f + n) / (f - n), beta = -2 f n / (f - n).
-        const float alpha = glm::dot(glm::vec3(r2), glm::vec3(r3)) / glm::dot(glm::vec3(r3), glm::vec3(r3));
-        const float beta = r2.w - alpha * r3.w;
-        lp.nearZ = -beta / (alpha + 1.0f);
-        lp.farZ = beta / (1.0f - alpha);
-    } else {
-        lp.nearZ = 0.0f; // depth from the near plane: 2 / |row 2| = far - near
-        lp.farZ = 2.0f / glm::length(glm::vec3(r2));
-    }
-    lp.nearestCaster = nearestCasterDepth(scene, lightViewProj, lp);
-    float size = sizeOverride > 0.0f ? sizeOverride : sceneLightSize(light);
-    if (!(size > 0.0f)) {
-        lp.defaulted = true;
-        size = 2.0f * std::tan(glm::radians(kDefaultAngularRadiusDeg));
-        if (light.type != LightType::Directional) {
-            Aabb casters = scene.computeBounds(true);
-            if (casters.empty()) casters = scene.computeBounds(false);
-            size *= std::max(glm::length(casters.center() - light.position), 1e-3f);
-        }
-    }
-    lp.size = size;
-    return lp;
 }
 
 void PcssGL::setScene(const Scene& scene) {
@@ -136,8 +69,8 @@ void PcssGL::sceneChanged(const Scene& scene, uint32_t) {
 void PcssGL::fitLightSizes(const Scene& scene) {
     mParams.clear();
     for (size_t i = 0; i < mLights.size(); ++i)
-        mParams.push_back(lightParams(scene, scene.lights[i], mLights.viewProj()[i],
-                                      float(properties().getFloat(Pcss::kLightSize))));
+        mParams.push_back(Pcss::lightParams(scene, scene.lights[i], mLights.viewProj()[i],
+                                            float(properties().getFloat(Pcss::kLightSize))));
 }
 
 void PcssGL::compile(const CompileContext& ctx) {
@@ -147,7 +80,7 @@ void PcssGL::compile(const CompileContext& ctx) {
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), layers, false);
     createSamplers();
     mBlockerKernel = PoissonDisk::generate(int(p.getInt(Pcss::kBlockerTaps)));
-    mFilterKernel = PoissonDisk::generate(int(p.getInt(Pcss::kFilterTaps)), kFilterSeed);
+    mFilterKernel = PoissonDisk::generate(int(p.getInt(Pcss::kFilterTaps)), Pcss::filterSeed());
     fitLightSizes(ctx.scene);
 
     Defines base = ctx.submitter.defines();
@@ -170,8 +103,8 @@ void PcssGL::uploadLightUniforms() const {
     std::vector<glm::vec4> light;
     std::vector<glm::vec4> search;
     for (const LightParams& lp : mParams) {
-        light.emplace_back(lp.size, lp.perspective ? 1.0f : 0.0f, lp.nearZ, lp.farZ);
-        search.emplace_back(lp.extent, lp.nearestCaster, 0.0f);
+        light.push_back(Pcss::lightVector(lp));
+        search.push_back(Pcss::searchVector(lp));
     }
     if (!light.empty()) {
         glUniform4fv(kLightLocation, GLsizei(light.size()), glm::value_ptr(light[0]));
@@ -202,17 +135,8 @@ void PcssGL::renderLighting(FrameContext& ctx) {
 void PcssGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
-    double defaulted = 0.0;
-    for (const LightParams& lp : mParams) defaulted += lp.defaulted ? 1.0 : 0.0;
-    mCounters = {{"draw_calls", double(s.drawCalls)},
-                 {"triangles", double(s.triangles)},
-                 {"shadow_map_texels", double(mMaps.size()) * mMaps.size() * double(mLights.shadowed())},
-                 {"lights_unshadowed", double(mLights.size() - mLights.shadowed())},
-                 {"casters_culled", double(mCulled)},
-                 {"blocker_taps", double(mBlockerKernel.size())},
-                 {"filter_taps", double(mFilterKernel.size())},
-                 {"light_size", mParams.empty() ? 0.0 : double(mParams[0].size)},
-                 {"light_size_defaulted", defaulted}};
+    mCounters = Pcss::counters(s, mMaps.size(), mLights.size(), mLights.shadowed(), mCulled,
+                               mBlockerKernel.size(), mFilterKernel.size(), mParams);
 }
 
 } // namespace sb

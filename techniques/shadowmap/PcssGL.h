@@ -48,9 +48,6 @@ namespace sb {
 
 class PcssGL final : public GlTechnique {
 public:
-    /// Angular radius of the emitter a light with no extent is given (degrees): a 1 degree disk.
-    static constexpr float kDefaultAngularRadiusDeg = 0.5f;
-
     PcssGL();
     ~PcssGL() override;
     void setScene(const Scene& scene) override;
@@ -60,22 +57,8 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
 
-    /// What the shader needs of one light's map: L (light size, see above), whether the map is
-    /// perspective, its near and far planes (orthographic: 0 and far - near, depth measured from the near
-    /// plane), the world extent of the map along its u and v axes (perspective: at depth 1) and the
-    /// linear depth of the nearest caster (the casters' bounds' nearest corner, within [near, far]).
-    struct LightParams {
-        float size = 0.0f;
-        bool perspective = false;
-        float nearZ = 0.0f, farZ = 1.0f;
-        glm::vec2 extent{1.0f};
-        float nearestCaster = 0.0f;
-        bool defaulted = false; ///< the light had no extent: the 1 degree default
-    };
-    /// The parameters of light `light` of `scene` rendered with `lightViewProj` (scenes/LightFit.h), with
-    /// `sizeOverride` > 0 replacing the scene's light size. Public for the tests' closed forms.
-    static LightParams lightParams(const Scene& scene, const Light& light, const glm::mat4& lightViewProj,
-                                   float sizeOverride);
+    /// Per light: Pcss::LightParams (techniques/shadowmap/Pcss.h), shared with the Vulkan form.
+    using LightParams = Pcss::LightParams;
 
 private:
     void fitLightSizes(const Scene& scene); ///< mParams for the current fits and light_size

@@ -13,16 +13,16 @@ constexpr glm::vec4 kNoOccluder{1.0f, 1.0f, 0.0f, 0.0f};
 VsmGL::VsmGL() : GlTechnique(Vsm::declaration()) {}
 
 void VsmGL::setScene(const Scene& scene) {
-    mMaps.setScene(scene);
+    mMaps.fits().setScene(scene);
 }
 
 void VsmGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     const int resolution = int(p.getInt(Vsm::kResolution));
-    mMaps.setReceiverBackground(p.getBool(Vsm::kReceiverBackground));
-    mMaps.setViewCull(p.getBool(Vsm::kCull));
+    mMaps.fits().setReceiverBackground(p.getBool(Vsm::kReceiverBackground));
+    mMaps.fits().setViewCull(p.getBool(Vsm::kCull));
     // The border the filter's reads need: the blur's radius and the bilinear footprint's texel.
-    mMaps.fit(ctx.scene, resolution, int(p.getInt(Vsm::kBlur)) / 2 + 1);
+    mMaps.fits().fit(ctx.scene, resolution, int(p.getInt(Vsm::kBlur)) / 2 + 1);
     mMaps.allocate(resolution, GL_RG32F);
     Defines depth = ctx.submitter.defines();
     depth["VSM"] = "";

@@ -42,7 +42,7 @@ public:
     VsmGL();
     void setScene(const Scene& scene) override;
     /// The light fits and the maps' fit to the receivers follow the scene (FilterableShadowMaps).
-    void sceneChanged(const Scene& scene, uint32_t) override { mMaps.sceneChanged(scene); }
+    void sceneChanged(const Scene& scene, uint32_t) override { mMaps.fits().sceneChanged(scene); }
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
