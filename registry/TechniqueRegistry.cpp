@@ -12,6 +12,7 @@
 #include "techniques/planar/PlanarGL.h"
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
+#include "techniques/proxy/ProxyVulkan.h"
 #include "techniques/shadowmap/CascadedGL.h"
 #include "techniques/shadowmap/CubeMapGL.h"
 #include "techniques/shadowmap/CubeMapVulkan.h"
@@ -70,7 +71,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"esm", gl<EsmGL>, {}},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
         {"occluder", gl<OccluderGL>, {}},
-        {"proxy", gl<ProxyGL>, {}},
+        {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},
         {"planar", gl<PlanarGL>, {}},
         {"projective", gl<ProjectiveGL>, {}},
         {"blob", gl<BlobGL>, {}},

@@ -75,6 +75,11 @@ const Case kCases[] = {
      "point", 0.001},
     {"volume_exceptions", "exceptions", "far", "volume:far=depth_clamp", SubmitMode::Retained, "", 0.001,
      0.03},
+    {"proxy_point_light", "point_light", "far", "proxy"},
+    {"proxy_painting_machine", "painting_machine", "far", "proxy"},
+    {"proxy_instanced_room", "room", "far", "proxy", SubmitMode::Instanced},
+    {"proxy_primitives_no_grid", "primitives", "far", "proxy:grid=false"},
+    {"proxy_jack_cells_8", "jack_o_lantern", "far", "proxy:cells=8:modulate=on:bleeding=on"},
 };
 
 struct Images {
