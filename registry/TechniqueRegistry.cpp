@@ -9,6 +9,7 @@
 #include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderGL.h"
+#include "techniques/occluder/OccluderVulkan.h"
 #include "techniques/planar/PlanarGL.h"
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
@@ -70,7 +71,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"vsm", gl<VsmGL>, {}},
         {"esm", gl<EsmGL>, {}},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
-        {"occluder", gl<OccluderGL>, {}},
+        {"occluder", gl<OccluderGL>, vulkan<OccluderVulkan>},
         {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},
         {"planar", gl<PlanarGL>, {}},
         {"projective", gl<ProjectiveGL>, {}},
