@@ -9,9 +9,11 @@
 #include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderGL.h"
+#include "techniques/occluder/OccluderVulkan.h"
 #include "techniques/planar/PlanarGL.h"
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
+#include "techniques/proxy/ProxyVulkan.h"
 #include "techniques/shadowmap/CascadedGL.h"
 #include "techniques/shadowmap/CascadedVulkan.h"
 #include "techniques/shadowmap/CubeMapGL.h"
@@ -79,8 +81,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"vsm", gl<VsmGL>, vulkan<VsmVulkan>},
         {"esm", gl<EsmGL>, vulkan<EsmVulkan>},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
-        {"occluder", gl<OccluderGL>, {}},
-        {"proxy", gl<ProxyGL>, {}},
+        {"occluder", gl<OccluderGL>, vulkan<OccluderVulkan>},
+        {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},
         {"planar", gl<PlanarGL>, {}},
         {"projective", gl<ProjectiveGL>, {}},
         {"blob", gl<BlobGL>, {}},

@@ -83,9 +83,9 @@ TEST(VulkanCli, GlRowsSayGl) {
 }
 
 TEST(VulkanCli, ATechniqueWithoutAVulkanFormIsUnsupported) {
-    auto r = runCommand(vulkan("-t occluder"));
+    auto r = runCommand(vulkan("-t hybrid"));
     EXPECT_EQ(r.exitCode, 3) << r.output;
-    EXPECT_NE(r.output.find("occluder has no Vulkan form"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("hybrid has no Vulkan form"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("--api gl"), std::string::npos) << r.output;
 }
 

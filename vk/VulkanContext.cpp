@@ -382,6 +382,8 @@ void VulkanContext::createDevice() {
     enabled.shaderClipDistance = available.shaderClipDistance; // paraboloid's cut at each half's plane
     // volume's light pass blends colour ADD and visibility MAX, as GL's per-draw-buffer equations do
     enabled.independentBlend = available.independentBlend;
+    // occluder's texture bake clips the cross-section's marking pass to one side of the plane
+    enabled.shaderClipDistance = available.shaderClipDistance;
     mDepthClamp = available.depthClamp == VK_TRUE;
     mIndependentBlend = available.independentBlend == VK_TRUE;
     mPipelineStatistics = available.pipelineStatisticsQuery == VK_TRUE;

@@ -6,15 +6,30 @@
 // BAKE_FULLSCREEN: a full-screen triangle from gl_VertexID instead (the stencil-tested fill pass).
 #ifdef BAKE_FULLSCREEN
 void main() {
-    vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+#ifdef VULKAN
+    int id = gl_VertexIndex;
+#else
+    int id = gl_VertexID;
+#endif
+    vec2 p = vec2((id << 1) & 2, id & 2);
     gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
 }
 #else
 layout(location = 0) in vec3 aPosition;
+#ifdef VULKAN
+// techniques/occluder/OccluderBakeVulkan.h: GL's uniforms as push constants (std430: each vec3 16 bytes).
+layout(push_constant) uniform BakePush {
+    vec3 uOrigin;
+    vec3 uRight;
+    vec3 uUp;
+    vec3 uNormal;
+};
+#else
 layout(location = 0) uniform vec3 uOrigin; // texture (0, 0) corner
 layout(location = 1) uniform vec3 uRight;  // right / width: u = dot(uRight, p - uOrigin)
 layout(location = 2) uniform vec3 uUp;     // up / height
 layout(location = 3) uniform vec3 uNormal; // unit
+#endif
 
 void main() {
     vec3 d = aPosition - uOrigin;

@@ -5,12 +5,19 @@
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
 
+#ifdef VULKAN
+// Set 1 (techniques/occluder/OccluderVulkan.h): the same bindings as GL's, in the technique's set.
+#define OCCLUDER_SET set = 1,
+#else
+#define OCCLUDER_SET
+#endif
+
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec4 vColorId;
 in vec4 vOccluder[LIGHT_COUNT * PLANE_COUNT];
 flat in vec4 vLayer[(PLANE_COUNT + 3) / 4];
-layout(binding = 0) uniform sampler2DArray uOccluders;
+layout(OCCLUDER_SET binding = 0) uniform sampler2DArray uOccluders;
 
 
 layout(location = 0) out vec4 oColor;
@@ -34,10 +41,10 @@ struct WorldPlane {
     vec4 right;  // right / width (world units)
     vec4 up;     // up / height
 };
-layout(std430, binding = 5) readonly buffer OccluderWorldPlanes {
+layout(std430, OCCLUDER_SET binding = 5) readonly buffer OccluderWorldPlanes {
     WorldPlane uWorldPlanes[];
 };
-layout(std430, binding = 6) readonly buffer OccluderCandidates {
+layout(std430, OCCLUDER_SET binding = 6) readonly buffer OccluderCandidates {
     uvec2 uCandidates[];
 };
 

@@ -18,13 +18,20 @@
 #include "common/lighting.glsl"
 #include "common/instance.glsl"
 
+#ifdef VULKAN
+// Set 1 (techniques/occluder/OccluderVulkan.h): the same bindings as GL's, in the technique's set.
+#define OCCLUDER_SET set = 1,
+#else
+#define OCCLUDER_SET
+#endif
+
 struct OccluderPlane {
     vec4 origin; // xyz: texture corner (object space); w: texture layer, < 0 for a solid occluder
     vec4 normal; // xyz: unit normal
     vec4 right;  // xyz: right / width
     vec4 up;     // xyz: up / height
 };
-layout(std430, binding = 2) readonly buffer OccluderPlanes {
+layout(std430, OCCLUDER_SET binding = 2) readonly buffer OccluderPlanes {
     OccluderPlane uPlanes[];
 };
 // Per instance (object id - 1): x = first plane, y = plane count, z = first slot of the mesh's receiver
@@ -34,21 +41,21 @@ struct OccluderInstance {
     uvec4 planes;
     vec4 light[LIGHT_COUNT];
 };
-layout(std430, binding = 3) readonly buffer OccluderInstances {
+layout(std430, OCCLUDER_SET binding = 3) readonly buffer OccluderInstances {
     OccluderInstance uInstances[];
 };
 
 #ifdef TEXTURE_MATRIX
 // Per instance, light and plane: rows u, v, s of the affine map, at
 // ((instance * LIGHT_COUNT + light) * PLANE_COUNT + plane) * 3.
-layout(std430, binding = 4) readonly buffer OccluderMatrices {
+layout(std430, OCCLUDER_SET binding = 4) readonly buffer OccluderMatrices {
     vec4 uMatrices[];
 };
 #endif
 
 #ifdef RECEIVER_SECTIONS
 // Slots (x, y, z bits of a vertex position, mask of the planes it receives; 0xFFFFFFFF = free).
-layout(std430, binding = 7) readonly buffer OccluderSections {
+layout(std430, OCCLUDER_SET binding = 7) readonly buffer OccluderSections {
     uvec4 uSections[];
 };
 

@@ -32,6 +32,29 @@ struct Proxy {
     vec4 diffuse;    // rgb: colour bled towards the light; w: shape 0 sphere, 1 box, 2 cylinder
     vec4 reflective; // rgb: colour bled whatever the light; w: object id of the instance it stands for
 };
+#ifdef VULKAN
+// Set 1 (techniques/proxy/ProxyVulkan.h): the uniforms GL sets by location in one block, then the two
+// storage buffers. uViewport.y flips gl_FragCoord's y to GL's lower-left origin (the grid's rows are
+// GL's, bottom up).
+layout(std140, set = 1, binding = 0) uniform ProxyBlock {
+    vec4 uShading;    // x: ProxyOffset, y: shadow factor, z: falloff exponent, w: cutoff
+    ivec2 uCells;     // grid cells along x and y
+    vec2 uViewport;   // pixels
+    float uStart;     // distance from the surface where the falloff starts
+    float uPenumbra;  // tan of the penumbra's half-angle seen from the receiver
+    float uBleed;     // amount of colour bleeding
+    int uCapacity;    // entries per cell
+    int uProxyCount;  // proxies in view
+};
+layout(std430, set = 1, binding = 1) readonly buffer ProxyParams {
+    Proxy uProxies[];
+};
+#ifdef PROXY_GRID
+layout(std430, set = 1, binding = 2) readonly buffer ProxyIndexMap {
+    uint uIndexMap[];
+};
+#endif
+#else
 layout(std430, binding = 2) readonly buffer ProxyParams {
     Proxy uProxies[];
 };
@@ -54,6 +77,7 @@ layout(location = 19) uniform float uPenumbra; // tan of the penumbra's half-ang
 #endif
 #ifdef PROXY_BLEED
 layout(location = 17) uniform float uBleed;    // amount of colour bleeding
+#endif
 #endif
 
 // Listing 1.1 in the proxy's local frame: the positive octant's boundary point, signs put back.
@@ -336,7 +360,11 @@ Accum proxies(int self, vec3 receiverNormal) {
     Accum acc = Accum(vec4(1.0), 1.0, vec3(0.0));
 #ifdef PROXY_GRID
     // Listing 1.2: the cell of this fragment, then its indices until a 0.
-    ivec2 cell = clamp(ivec2(floor(gl_FragCoord.xy / uViewport * vec2(uCells))), ivec2(0), uCells - 1);
+    vec2 pixel = gl_FragCoord.xy;
+#ifdef VULKAN
+    pixel.y = uViewport.y - pixel.y; // GL's lower-left origin: the grid's rows are GL's
+#endif
+    ivec2 cell = clamp(ivec2(floor(pixel / uViewport * vec2(uCells))), ivec2(0), uCells - 1);
     int base = (cell.y * uCells.x + cell.x) * uCapacity;
     for (int k = 0; k < uCapacity; ++k) {
         uint entry = uIndexMap[base + k];

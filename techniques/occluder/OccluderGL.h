@@ -27,14 +27,11 @@
 // sweep the cost per plane); receivers (self, the thesis; all: every receiver also tests the planes of
 // the other instances that may shadow it, per fragment in world space); resolution (baked texture size);
 // dilate (texels the baked silhouette is grown by, thesis section 5).
-#include <string>
-#include <vector>
-
 #include <epoxy/gl.h>
-#include <glm/glm.hpp>
 
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/occluder/Occluder.h"
+#include "techniques/occluder/OccluderPlan.h"
 
 namespace sb {
 
@@ -52,52 +49,16 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
     /// Most planes chosen automatically for a mesh without given ones (the cost is per plane).
-    static constexpr int kAutoPlanes = 4;
+    static constexpr int kAutoPlanes = OccluderPlan::kAutoPlanes;
 
 private:
-    /// std430 mirror of OccluderPlane in shaders/occluder/scene.vert.
-    struct GpuPlane {
-        glm::vec4 origin; ///< w: texture layer, -1 for a solid occluder
-        glm::vec4 normal;
-        glm::vec4 right; ///< right / width
-        glm::vec4 up;    ///< up / height
-    };
-
-    void choosePlanes(const Scene& scene, const std::vector<bool>& drawn);
-    /// Without a plane on any drawn mesh: hard_shadows and self_shadowing left out of the effects the
-    /// row reports, and one line on stderr; otherwise `meshLines` (the meshes left without one).
-    void reportUnshadowed(const Scene& scene, const std::vector<bool>& drawn,
-                          const std::vector<std::string>& meshLines);
-    void collectPlanes(const Scene& scene);
     void buildTextures(const CompileContext& ctx);
-    void uploadInstances(bool lights);
-    void uploadMatrices();
-    void collectCandidates(const Scene& scene);
+    void uploadInstances();
     void uploadWorldPlanes();
-    void buildReceiverSections(const Scene& scene);
     void release();
 
-    const Scene* mScene = nullptr;
-    int mLights = 1, mPlaneSlots = 1;
-    bool mPerInstance = false, mTextureMatrix = false, mReceiveAll = false;
-    // receivers=all: per receiver instance (first, count) into mCandidates (caster instances).
-    std::vector<glm::uvec2> mCandidateRange;
-    std::vector<uint32_t> mCandidates, mInstancePlaneFirst;
+    OccluderPlan mPlan; ///< planes, layers, records, permutation, counters (shared with OccluderVulkan)
     size_t mWorldPlanes = 0;
-    /// Per mesh the planes it is drawn with: its own, or for a mesh without given planes (a --model file)
-    /// those ShadowPlaneChooser picked for the scene's lights; mNoUsefulPlanes counts those left without.
-    std::vector<std::vector<ShadowPlane>> mMeshPlanes;
-    int mNoUsefulPlanes = 0;
-    std::vector<GpuPlane> mPlanes;                ///< every mesh's used planes, contiguous per mesh
-    std::vector<uint32_t> mMeshFirst, mMeshCount; ///< per mesh: range in mPlanes
-    std::vector<glm::ivec2> mPlaneSource;         ///< per entry of mPlanes: mesh, plane index
-    std::vector<glm::mat4> mInverseModel;         ///< per instance (the per_instance light space)
-    std::vector<glm::vec4> mInstanceData;         ///< per instance: (first, count) then the lights
-    std::vector<glm::vec4> mMatrices;             ///< texture_matrix: 3 rows per instance, light, plane
-    /// Receiver sections (ReceiverSections.h): every mesh's hash table, contiguous, and per mesh its
-    /// (first slot, slot count), count 0 where every part receives every plane.
-    std::vector<glm::uvec4> mSectionTable;
-    std::vector<glm::uvec2> mMeshSections;
     GLuint mTextures = 0, mPlaneBuffer = 0, mInstanceBuffer = 0, mMatrixBuffer = 0, mWorldPlaneBuffer = 0,
            mCandidateBuffer = 0, mSectionBuffer = 0;
     int mResolution = 0, mLayers = 0;

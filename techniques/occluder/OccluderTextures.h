@@ -21,22 +21,9 @@
 #include "gl/ProgramCache.h"
 #include "scenes/Mesh.h"
 #include "scenes/ShadowPlane.h"
+#include "techniques/occluder/OccluderTexels.h"
 
 namespace sb {
-
-struct OccluderBakeOptions {
-    int resolution = 512; ///< texels per side, [1, 16384]
-    /// Grow the occluder by this many texels: a min filter over a (2k+1)^2 square (thesis section 5:
-    /// raster silhouettes never match the geometric edge exactly). [0, resolution].
-    int dilate = 1;
-    /// Also mark black where the plane lies inside the whole mesh's solid (all parts, not only the
-    /// plane's): the non-zero winding number of the plane point with respect to the mesh. Needs a closed,
-    /// consistently wound mesh (overlapping closed parts, as the aircraft's, are fine).
-    bool crossSection = true;
-    /// Draw the triangles of plane.parts (the silhouette). false: the cross-section alone (tests, and
-    /// planes that stand for a solid's section only).
-    bool silhouette = true;
-};
 
 /// Free functions: baking, image I/O and read-back of occluder textures. Every function needs a current
 /// GL context (except write()).
@@ -65,9 +52,13 @@ struct OccluderTextures {
     /// Writes width x height 8-bit single-channel texels (row 0 = v near 0) as a grey PNG, top row =
     /// v near 1, so load(write(x)) round-trips exactly.
     /// Throws sb::Error (ExitCode::Failure) naming the file on failure, BadInput for a size mismatch.
-    static void write(const std::string& path, const std::vector<uint8_t>& texels, int width, int height);
-    /// The (2k+1)^2 min filter bake() applies (clamped at the border), exposed for tests.
-    static std::vector<uint8_t> dilate(const std::vector<uint8_t>& texels, int width, int height, int k);
+    static void write(const std::string& path, const std::vector<uint8_t>& texels, int width, int height) {
+        OccluderTexels::write(path, texels, width, height);
+    }
+    /// The (2k+1)^2 min filter bake() applies (OccluderTexels::dilate), exposed for tests.
+    static std::vector<uint8_t> dilate(const std::vector<uint8_t>& texels, int width, int height, int k) {
+        return OccluderTexels::dilate(texels, width, height, k);
+    }
 };
 
 } // namespace sb

@@ -21,16 +21,11 @@
 // reproduces Listing 1.3 as printed); multiple coloured lights each get their own modulated shadow
 // (the chapter's suggested extension). Colour bleeding is compiled in only when the scene asks for
 // colour_bleeding, the directional modulation only when the scene has a light to modulate towards.
-#include <vector>
-
 #include <epoxy/gl.h>
-#include <glm/glm.hpp>
 
-#include "scenes/ProxyCollection.h"
-#include "scenes/ShadowProxy.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/proxy/Proxy.h"
-#include "techniques/proxy/ProxyIndexGrid.h"
+#include "techniques/proxy/ProxyPlan.h"
 
 namespace sb {
 
@@ -44,21 +39,10 @@ public:
     Counters counters() const override { return mCounters; }
 
 private:
-    /// std430 mirror of `struct Proxy` in shaders/proxy/lit.frag.
-    struct GpuProxy {
-        glm::mat4 toLocal, toWorld;
-        glm::vec4 diffuse;    ///< w: shape
-        glm::vec4 reflective; ///< w: owner object id
-    };
     void uploadFrame(FrameContext& ctx);
     void release();
 
-    std::vector<ShadowProxy> mProxies; ///< world space, every caster's
-    std::vector<GpuProxy> mRecords;    ///< per entry of mProxies
-    std::vector<GpuProxy> mInView;     ///< this frame's upload, in the grid's numbering
-    ProxyIndexGrid mGrid;
-    bool mUseGrid = true, mModulate = false, mRays = false, mBleed = false, mWarnedOverflow = false;
-    int mLights = 1, mCells = 64, mCapacity = 16;
+    ProxyPlan mPlan; ///< proxies, permutation, grid and counters (shared with ProxyVulkan)
     GLuint mProxyBuffer = 0, mIndexBuffer = 0;
     size_t mProxyCapacity = 0, mIndexCapacity = 0; ///< buffer sizes in elements
     const Program* mProgram = nullptr;

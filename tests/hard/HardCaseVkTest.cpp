@@ -44,7 +44,7 @@ TEST_P(HardCasesVulkan, BoundsHold) {
     const AccuracyResult r =
         evaluator.evaluateVisibility(vulkan.harness().targets().readVisibilityRGBA32F(),
                                      test::hardCaseOptions(c, test::HardCaseStability::NotJudged));
-    test::expectHardCaseBounds(c, r, test::HardCaseStability::NotJudged, " (Vulkan)");
+    test::expectHardCaseBounds(c, r, test::HardCaseStability::NotJudged, " (Vulkan)", evaluator.lastJudged());
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, HardCasesVulkan, ::testing::ValuesIn(vulkanRows()),
