@@ -5,11 +5,13 @@
 #include "core/Suggestion.h"
 #include "reference/ReferenceGL.h"
 #include "techniques/blob/BlobGL.h"
+#include "techniques/blob/BlobVulkan.h"
 #include "techniques/hybrid/HybridGL.h"
 #include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderGL.h"
 #include "techniques/planar/PlanarGL.h"
+#include "techniques/planar/PlanarVulkan.h"
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/shadowmap/CascadedGL.h"
@@ -71,9 +73,9 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
         {"occluder", gl<OccluderGL>, {}},
         {"proxy", gl<ProxyGL>, {}},
-        {"planar", gl<PlanarGL>, {}},
+        {"planar", gl<PlanarGL>, vulkan<PlanarVulkan>},
         {"projective", gl<ProjectiveGL>, {}},
-        {"blob", gl<BlobGL>, {}},
+        {"blob", gl<BlobGL>, vulkan<BlobVulkan>},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
         {"reference", gl<ReferenceGL>, {}},

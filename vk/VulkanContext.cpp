@@ -381,8 +381,10 @@ void VulkanContext::createDevice() {
     enabled.imageCubeArray = available.imageCubeArray; // samplerCubeArrayShadow (cubemap's lighting pass)
     // volume's light pass blends colour ADD and visibility MAX, as GL's per-draw-buffer equations do
     enabled.independentBlend = available.independentBlend;
+    enabled.shaderClipDistance = available.shaderClipDistance; // planar's guards (gl_ClipDistance)
     mDepthClamp = available.depthClamp == VK_TRUE;
     mIndependentBlend = available.independentBlend == VK_TRUE;
+    mClipDistance = available.shaderClipDistance == VK_TRUE;
     mPipelineStatistics = available.pipelineStatisticsQuery == VK_TRUE;
 
     const float priority = 1.0f;
