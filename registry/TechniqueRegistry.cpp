@@ -5,12 +5,14 @@
 #include "core/Suggestion.h"
 #include "reference/ReferenceGL.h"
 #include "techniques/blob/BlobGL.h"
+#include "techniques/blob/BlobVulkan.h"
 #include "techniques/hybrid/HybridGL.h"
 #include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderGL.h"
 #include "techniques/occluder/OccluderVulkan.h"
 #include "techniques/planar/PlanarGL.h"
+#include "techniques/planar/PlanarVulkan.h"
 #include "techniques/projective/ProjectiveGL.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/proxy/ProxyVulkan.h"
@@ -84,8 +86,11 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"occluder", gl<OccluderGL>, vulkan<OccluderVulkan>},
         {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},
         {"planar", gl<PlanarGL>, {}},
+        {"occluder", gl<OccluderGL>, {}},
+        {"proxy", gl<ProxyGL>, {}},
+        {"planar", gl<PlanarGL>, vulkan<PlanarVulkan>},
         {"projective", gl<ProjectiveGL>, {}},
-        {"blob", gl<BlobGL>, {}},
+        {"blob", gl<BlobGL>, vulkan<BlobVulkan>},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
         {"reference", gl<ReferenceGL>, {}},

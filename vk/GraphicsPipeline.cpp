@@ -68,6 +68,11 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
             blend.srcColorBlendFactor = blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
             blend.dstColorBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
             blend.colorBlendOp = blend.alphaBlendOp = VK_BLEND_OP_ADD;
+        } else if (i == 0 && desc.subtractColour) { // dst - src: a light's term removed (planar, blob)
+            blend.blendEnable = VK_TRUE;
+            blend.srcColorBlendFactor = blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+            blend.dstColorBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+            blend.colorBlendOp = blend.alphaBlendOp = VK_BLEND_OP_REVERSE_SUBTRACT;
         } else if (i == 1 && desc.multiplyVisibility) { // dst * src: src * DST_COLOR + dst * ZERO
             blend.blendEnable = VK_TRUE;
             blend.srcColorBlendFactor = VK_BLEND_FACTOR_DST_COLOR;
@@ -86,9 +91,10 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     blend.attachmentCount = desc.colourAttachments;
     blend.pAttachments = blends.data();
 
-    const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                       VK_DYNAMIC_STATE_STENCIL_REFERENCE};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
+    dynamic.dynamicStateCount = desc.dynamicStencilReference ? 3 : 2;
     dynamic.pDynamicStates = dynamics;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};

@@ -32,7 +32,11 @@ struct GraphicsPipelineDesc {
     bool visibilityWrite = true;                    ///< attachment 1's write mask (when it exists)
     bool additive = false;                          ///< blend ONE + ONE on attachment 0 (light passes)
     bool multiplyVisibility = false;                ///< blend attachment 1 as dst * src (volumes per light)
-    bool maxVisibility = false; ///< blend attachment 1 as max(src, dst) (glBlendEquationi(1, GL_MAX))
+    bool maxVisibility = false;  ///< blend attachment 1 as max(src, dst) (glBlendEquationi(1, GL_MAX))
+    bool subtractColour = false; ///< blend attachment 0 as dst - src (GL_FUNC_REVERSE_SUBTRACT, ONE, ONE)
+    /// The stencil reference is dynamic (vkCmdSetStencilReference before each draw): a pass that marks
+    /// with a fresh value per draw, as glStencilFunc(..., ref, ...) does between draws on GL.
+    bool dynamicStencilReference = false;
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
 };

@@ -379,13 +379,14 @@ void VulkanContext::createDevice() {
     enabled.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
     enabled.geometryShader = available.geometryShader; // GraphicsPipelineDesc::geometry (volume extrusion)
     enabled.imageCubeArray = available.imageCubeArray; // samplerCubeArrayShadow (cubemap's lighting pass)
-    enabled.shaderClipDistance = available.shaderClipDistance; // paraboloid's cut at each half's plane
+    // gl_ClipDistance: paraboloid's cut at each half's plane, occluder's bake (one side of the
+    // cross-section's plane) and planar's guards
+    enabled.shaderClipDistance = available.shaderClipDistance;
     // volume's light pass blends colour ADD and visibility MAX, as GL's per-draw-buffer equations do
     enabled.independentBlend = available.independentBlend;
-    // occluder's texture bake clips the cross-section's marking pass to one side of the plane
-    enabled.shaderClipDistance = available.shaderClipDistance;
     mDepthClamp = available.depthClamp == VK_TRUE;
     mIndependentBlend = available.independentBlend == VK_TRUE;
+    mClipDistance = available.shaderClipDistance == VK_TRUE;
     mPipelineStatistics = available.pipelineStatisticsQuery == VK_TRUE;
 
     const float priority = 1.0f;

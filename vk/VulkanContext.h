@@ -68,6 +68,8 @@ public:
     bool pipelineStatistics() const { return mPipelineStatistics; }
     /// Blend state per colour attachment (volume's light pass: colour ADD, visibility MAX).
     bool independentBlend() const { return mIndependentBlend; }
+    /// gl_ClipDistance in shaders (planar's guards clip occluder parts behind the receiver).
+    bool clipDistance() const { return mClipDistance; }
     /// Whether the physical device offers device extension `name` ("VK_KHR_ray_query").
     bool hasDeviceExtension(const std::string& name) const;
 
@@ -116,6 +118,7 @@ private:
     bool mDepthClamp = false;
     bool mPipelineStatistics = false;
     bool mIndependentBlend = false;
+    bool mClipDistance = false;
     std::vector<std::string> mMessages;
     size_t mErrors = 0;
     std::vector<std::string> mDeviceExtensions; ///< what the physical device offers (pickDevice)

@@ -6,8 +6,16 @@
 in vec2 vCorner;
 in vec3 vWorld;
 flat in vec3 vParams;
+#ifdef VULKAN
+// The push constants (common/push.glsl, techniques/blob/BlobVulkan.h): the ground's plane in vec, its
+// colour in colorId.
+#include "common/push.glsl"
+#define uPlane uPush.vec
+#define uAlbedo uPush.colorId.rgb
+#else
 layout(location = 12) uniform vec4 uPlane;  // the ground: (n, d)
 layout(location = 14) uniform vec3 uAlbedo; // the ground's colour
+#endif
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 

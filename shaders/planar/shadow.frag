@@ -4,9 +4,21 @@
 #include "common/lighting.glsl"
 
 in vec4 vFlat;
+#ifdef VULKAN
+// Set 1 (techniques/planar/PlanarVulkan.h): the uniforms GL sets by location, one record per flattening
+// bound at its dynamic offset. The same block in both stages.
+layout(std140, set = 1, binding = 0) uniform Flattening {
+    mat4 uFlatten;
+    vec4 uPlane;
+    vec4 uLight;
+    vec4 uAlbedoLight;
+    float uDarkness;
+};
+#else
 layout(location = 12) uniform vec4 uPlane;
 layout(location = 14) uniform vec4 uAlbedoLight; // rgb: the receiver's albedo; w: light index
 layout(location = 15) uniform float uDarkness;   // 1: the light is fully removed
+#endif
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 

@@ -3,9 +3,21 @@
 #include "common/frame.glsl"
 #include "common/instance.glsl"
 
+#ifdef VULKAN
+// Set 1 (techniques/planar/PlanarVulkan.h): the uniforms GL sets by location, one record per flattening
+// bound at its dynamic offset. The same block in both stages.
+layout(std140, set = 1, binding = 0) uniform Flattening {
+    mat4 uFlatten;
+    vec4 uPlane;
+    vec4 uLight;
+    vec4 uAlbedoLight;
+    float uDarkness;
+};
+#else
 layout(location = 8) uniform mat4 uFlatten; // M for this plane and light
 layout(location = 12) uniform vec4 uPlane;  // P = (n, d): n.x + d = 0
 layout(location = 13) uniform vec4 uLight;  // L: (position, 1) or (-direction, 0)
+#endif
 out vec4 vFlat;                              // homogeneous world position on the plane
 
 void main() {

@@ -48,19 +48,13 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
 
-    /// std430 mirror of the blob records in shaders/blob/blob.vert: 3 vec4 per blob.
-    struct Blob {
-        glm::vec4 centre; ///< xyz on the ground; w: opacity
-        glm::vec4 axisU;  ///< xyz: first semi-axis (direction * length); w: light index
-        glm::vec4 axisV;  ///< xyz: second semi-axis; w: softness
-    };
-    /// The blob of world bounds `bounds` on `ground` for `light` (its index in w of axisU), or nothing
-    /// when the light is behind or in the ground's plane or the bounds lie wholly below it. Public for
-    /// tests.
+    /// A blob record (Blob::Record). Public for tests.
+    using Blob = sb::Blob::Record;
     static std::optional<Blob> fit(const Aabb& bounds, const ReceiverPlane& ground, const Light& light,
-                                   int lightIndex, float opacity, float softness, float fade);
-    /// The receiver plane facing most nearly up (normal.y >= 0.5), if any.
-    static std::optional<ReceiverPlane> findGround(const Scene& scene);
+                                   int lightIndex, float opacity, float softness, float fade) {
+        return sb::Blob::fit(bounds, ground, light, lightIndex, opacity, softness, fade);
+    }
+    static std::optional<ReceiverPlane> findGround(const Scene& scene) { return sb::Blob::findGround(scene); }
 
 private:
     void fitAll(const Scene& scene);

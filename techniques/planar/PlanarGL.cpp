@@ -9,9 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/InstanceCulling.h"
-#include "scenes/MeshGenerators.h"
 #include "scenes/Motion.h"
-#include "scenes/ProxyCollection.h"
 #include "scenes/ShadowWork.h"
 #include "techniques/SubmissionPlan.h"
 #include "techniques/gl/FrameState.h"
@@ -22,20 +20,6 @@ namespace sb {
 namespace {
 constexpr GLint kFlattenLocation = 8, kPlaneLocation = 12, kLightLocation = 13, kAlbedoLightLocation = 14,
                 kDarknessLocation = 15; // shaders/planar/shadow.*
-
-/// The unit shapes of ShadowProxy (sphere radius 1, box [-1, 1]^3, cylinder radius 1 around z, z in
-/// [-1, 1]), coarse: an occluder proxy is meant to be cheap.
-Scene unitShapes() {
-    Scene s;
-    s.meshes.push_back(MeshGenerators::sphere(6));
-    s.meshes.push_back(MeshGenerators::box(glm::vec3(1.0f), 1));
-    Mesh cylinder = MeshGenerators::cylinder(6); // along +y: turn y onto z
-    const glm::mat3 yToZ = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0)));
-    for (glm::vec3& p : cylinder.positions) p = yToZ * p;
-    for (glm::vec3& n : cylinder.normals) n = yToZ * n;
-    s.meshes.push_back(std::move(cylinder));
-    return s;
-}
 
 } // namespace
 
@@ -49,23 +33,6 @@ void PlanarGL::release() {
     if (mProxyInstances) glDeleteBuffers(1, &mProxyInstances);
     mProxyInstances = 0;
     mProxyBatches.clear();
-}
-
-std::vector<PlanarGL::Projection> PlanarGL::projections(const std::vector<ReceiverPlane>& planes,
-                                                        const Scene& scene, bool guards) {
-    std::vector<Projection> out;
-    const int lights = std::min<int>(int(scene.lights.size()), kMaxLights);
-    for (size_t p = 0; p < planes.size(); ++p)
-        for (int l = 0; l < lights; ++l) {
-            if (!scene.lights[size_t(l)].castsShadows) continue; // a fill light: nothing flattened
-            const glm::vec4 light = ReceiverPlane::homogeneousLight(scene.lights[size_t(l)]);
-            // Relative to the light's coordinates: a light "in" the plane up to float rounding of its
-            // position casts nothing (every occluder would collapse onto the light's footprint).
-            const float side = planes[p].lightSide(light);
-            if (guards && !(side > 1e-6f * std::max(1.0f, glm::length(glm::vec3(light))))) continue;
-            out.push_back({p, l, light, planes[p].projection(light)});
-        }
-    return out;
 }
 
 void PlanarGL::setScene(const Scene& scene) {
@@ -82,19 +49,14 @@ void PlanarGL::setScene(const Scene& scene) {
 
 void PlanarGL::uploadProxies(const Scene& scene) {
     // The casters' proxies, grouped by shape: one instanced draw per shape and flattening.
-    const std::vector<ShadowProxy> proxies = ProxyCollection::collect(scene, false, nullptr);
-    const Scene shapes = unitShapes();
+    const Scene shapes = Planar::unitShapes();
     mProxyMeshes.upload(shapes);
-    std::vector<InstanceRecord> records;
-    mProxyTriangles = 0;
-    for (size_t s = 0; s < shapes.meshes.size(); ++s) {
-        ProxyBatch b{mProxyMeshes.vao(s), mProxyMeshes.indexCount(s), GLsizei(records.size()), 0};
-        for (const ShadowProxy& p : proxies)
-            if (size_t(p.shape) == s) records.push_back({p.frame, glm::vec4(p.diffuse, 0.0f)});
-        b.count = GLsizei(records.size()) - b.first;
-        mProxyTriangles += uint64_t(b.indexCount / 3) * uint64_t(b.count);
-        if (b.count) mProxyBatches.push_back(b);
-    }
+    const Planar::ProxyPlan plan = Planar::planProxies(scene, shapes);
+    const std::vector<InstanceRecord>& records = plan.records;
+    mProxyTriangles = plan.triangles;
+    for (const Planar::ProxyBatch& b : plan.batches)
+        mProxyBatches.push_back({mProxyMeshes.vao(b.shape), mProxyMeshes.indexCount(b.shape),
+                                 GLsizei(b.first), GLsizei(b.count)});
     glCreateBuffers(1, &mProxyInstances);
     glNamedBufferStorage(mProxyInstances,
                          GLsizeiptr(std::max<size_t>(1, records.size()) * sizeof(InstanceRecord)),
@@ -104,7 +66,7 @@ void PlanarGL::uploadProxies(const Scene& scene) {
 }
 
 void PlanarGL::sceneChanged(const Scene& scene, uint32_t changes) {
-    if (changes & kLightsMoved) mProjections = projections(mPlanes, scene, mGuards);
+    if (changes & kLightsMoved) mProjections = Planar::projections(mPlanes, scene, mGuards);
     if (changes & kCastersMoved) mCulling.instancesMoved(scene);
     if ((changes & kCastersMoved) && mUseProxies) {
         release();
@@ -119,7 +81,7 @@ void PlanarGL::compile(const CompileContext& ctx) {
     mGuards = p.getBool(Planar::kGuards);
     mCull = p.getBool(Planar::kCull) && !mUseProxies;
     mDarkness = float(p.getFloat(Planar::kDarkness));
-    mProjections = projections(mPlanes, ctx.scene, mGuards);
+    mProjections = Planar::projections(mPlanes, ctx.scene, mGuards);
 
     Defines base = ctx.submitter.defines();
     Defines lit = base;
@@ -224,14 +186,14 @@ void PlanarGL::renderShadows(FrameContext& ctx) {
 }
 
 void PlanarGL::setCounters(const FrameContext& ctx) {
-    const SubmitStats& s = ctx.submitter.stats();
-    const double proxies = mUseProxies ? double(mProjections.size()) : 0.0;
-    mCounters = {{"draw_calls", double(s.drawCalls) + proxies * double(mProxyBatches.size())},
-                 {"triangles", double(s.triangles) + proxies * double(mProxyTriangles)},
-                 {"receiver_planes", double(mPlanes.size())},
-                 {"flattenings", double(mProjections.size())},
-                 {"casters_culled", double(mCulled)},
-                 {"lights_unshadowed", double(ShadowWork::unshadowedLights(ctx.scene, kMaxLights))}};
+    mCounters = Planar::counters(ctx.submitter.stats(),
+                                 {.planes = mPlanes.size(),
+                                  .flattenings = mProjections.size(),
+                                  .culled = mCulled,
+                                  .proxyBatches = mProxyBatches.size(),
+                                  .proxyTriangles = mProxyTriangles,
+                                  .proxies = mUseProxies},
+                                 ctx.scene);
 }
 
 } // namespace sb

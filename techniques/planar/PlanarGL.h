@@ -50,18 +50,12 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
 
-    /// One flattening: a receiver plane and a light in front of it. Public for tests.
-    struct Projection {
-        size_t plane = 0;
-        int light = 0;
-        glm::vec4 lightPos{0.0f}; ///< homogeneous (ReceiverPlane::homogeneousLight)
-        glm::mat4 matrix{1.0f};   ///< ReceiverPlane::projection
-    };
-    /// The (plane, light) pairs that get shadows: with `guards`, only lights strictly in front of the
-    /// plane (P.L > 1e-6 |L|); without, every pair (a light behind or in the plane then makes the
-    /// slides' anti-shadows).
+    /// One flattening (Planar::Projection). Public for tests.
+    using Projection = Planar::Projection;
     static std::vector<Projection> projections(const std::vector<ReceiverPlane>& planes, const Scene& scene,
-                                               bool guards);
+                                               bool guards) {
+        return Planar::projections(planes, scene, guards);
+    }
 
 private:
     struct ProxyBatch {
