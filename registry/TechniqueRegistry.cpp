@@ -6,6 +6,7 @@
 #include "reference/ReferenceGL.h"
 #include "techniques/blob/BlobGL.h"
 #include "techniques/hybrid/HybridGL.h"
+#include "techniques/hybrid/HybridVulkan.h"
 #include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderGL.h"
@@ -45,6 +46,11 @@ std::unique_ptr<GlTechnique> createPart(const std::string& name) {
     return TechniqueRegistry::create(name);
 }
 
+/// A hybrid part's Vulkan form at its default properties (Unsupported for a technique without one).
+std::unique_ptr<VulkanTechnique> createVulkanPart(const std::string& name) {
+    return TechniqueRegistry::createVulkan(TechniqueSpec{name, {}});
+}
+
 } // namespace
 
 template <typename T>
@@ -75,7 +81,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"projective", gl<ProjectiveGL>, {}},
         {"blob", gl<BlobGL>, {}},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
-        {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
+        {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); },
+         [] { return std::unique_ptr<VulkanTechnique>(new HybridVulkan(createVulkanPart, partNames())); }},
         {"reference", gl<ReferenceGL>, {}},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", gl<SyntheticGL>, {}},

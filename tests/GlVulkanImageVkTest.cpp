@@ -75,6 +75,13 @@ const Case kCases[] = {
      "point", 0.001},
     {"volume_exceptions", "exceptions", "far", "volume:far=depth_clamp", SubmitMode::Retained, "", 0.001,
      0.03},
+    // hybrid: the tolerance of its parts (a volume part's specks).
+    {"hybrid_volume_shadowmap_aircraft", "aircraft", "far", "hybrid:self=volume:cast=shadowmap",
+     SubmitMode::Retained, "", 0.001},
+    {"hybrid_cubemap_volume_point", "point_light", "far", "hybrid:self=cubemap:cast=volume",
+     SubmitMode::Retained, "", 0.001},
+    {"hybrid_none_shadowmap_instanced", "sphere_plane", "mid", "hybrid:self=none:cast=shadowmap",
+     SubmitMode::Instanced},
 };
 
 struct Images {
