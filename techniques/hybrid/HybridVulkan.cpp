@@ -7,9 +7,7 @@ namespace sb {
 
 HybridVulkan::HybridVulkan(Factory create, std::vector<std::string> choices)
     : VulkanTechnique(Hybrid::declaration(choices)), mCreate(std::move(create)) {
-    // The default parts need not have Vulkan forms: the registry applies the spec's properties next,
-    // and propertiesApplied refuses the parts it names then.
-    makeParts();
+    propertiesApplied();
 }
 
 HybridVulkan::~HybridVulkan() = default;
@@ -34,7 +32,9 @@ bool HybridVulkan::makeParts() {
 }
 
 void HybridVulkan::propertiesApplied() {
-    if (!makeParts()) throw Error(mMissing, ExitCode::Unsupported);
+    // A part without a Vulkan form is refused when the hybrid is prepared (setScene), where every
+    // caller expects a technique the device or API cannot run to say so (ExitCode::Unsupported).
+    makeParts();
 }
 
 void HybridVulkan::setScene(const Scene& scene) {

@@ -29,8 +29,10 @@ public:
     ~HybridVulkan() override;
 
     /// Creates the parts the `self` and `cast` properties name, and derives this technique's effects,
-    /// capabilities and passes from them; throws for a part without a Vulkan form.
+    /// capabilities and passes from them. A part without a Vulkan form leaves the hybrid without parts,
+    /// refused by setScene.
     void propertiesApplied() override;
+    /// Throws sb::Error(Unsupported) naming the role whose technique has no Vulkan form.
     void setScene(const Scene& scene) override;
     /// Each prepared part follows the scene as it would alone.
     void sceneChanged(const Scene& scene, uint32_t changes) override;
