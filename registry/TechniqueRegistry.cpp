@@ -23,6 +23,7 @@
 #include "techniques/shadowmap/ShadowMapVulkan.h"
 #include "techniques/shadowmap/VsmGL.h"
 #include "techniques/synthetic/SyntheticGL.h"
+#include "techniques/synthetic/SyntheticVulkan.h"
 #include "techniques/volume/VolumeGL.h"
 #include "techniques/volume/VolumeVulkan.h"
 
@@ -85,7 +86,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
          [] { return std::unique_ptr<VulkanTechnique>(new HybridVulkan(createVulkanPart, partNames())); }},
         {"reference", gl<ReferenceGL>, {}},
         // Not a shadow technique: the bottleneck study's calibration workloads.
-        {"synthetic", gl<SyntheticGL>, {}},
+        {"synthetic", gl<SyntheticGL>, vulkan<SyntheticVulkan>},
     };
     return kEntries;
 }
