@@ -7,6 +7,7 @@
 #include "techniques/blob/BlobGL.h"
 #include "techniques/blob/BlobVulkan.h"
 #include "techniques/hybrid/HybridGL.h"
+#include "techniques/hybrid/HybridVulkan.h"
 #include "techniques/none/NoneGL.h"
 #include "techniques/none/NoneVulkan.h"
 #include "techniques/occluder/OccluderGL.h"
@@ -31,6 +32,7 @@
 #include "techniques/shadowmap/VsmGL.h"
 #include "techniques/shadowmap/VsmVulkan.h"
 #include "techniques/synthetic/SyntheticGL.h"
+#include "techniques/synthetic/SyntheticVulkan.h"
 #include "techniques/volume/VolumeGL.h"
 #include "techniques/volume/VolumeVulkan.h"
 
@@ -52,6 +54,11 @@ std::vector<std::string> partNames() {
 
 std::unique_ptr<GlTechnique> createPart(const std::string& name) {
     return TechniqueRegistry::create(name);
+}
+
+/// A hybrid part's Vulkan form at its default properties (Unsupported for a technique without one).
+std::unique_ptr<VulkanTechnique> createVulkanPart(const std::string& name) {
+    return TechniqueRegistry::createVulkan(TechniqueSpec{name, {}});
 }
 
 } // namespace
@@ -92,10 +99,11 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"projective", gl<ProjectiveGL>, {}},
         {"blob", gl<BlobGL>, vulkan<BlobVulkan>},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
-        {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
+        {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); },
+         [] { return std::unique_ptr<VulkanTechnique>(new HybridVulkan(createVulkanPart, partNames())); }},
         {"reference", gl<ReferenceGL>, {}},
         // Not a shadow technique: the bottleneck study's calibration workloads.
-        {"synthetic", gl<SyntheticGL>, {}},
+        {"synthetic", gl<SyntheticGL>, vulkan<SyntheticVulkan>},
     };
     return kEntries;
 }

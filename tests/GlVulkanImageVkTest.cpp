@@ -131,6 +131,21 @@ const Case kCases[] = {
     {"proxy_instanced_room", "room", "far", "proxy", SubmitMode::Instanced},
     {"proxy_primitives_no_grid", "primitives", "far", "proxy:grid=false"},
     {"proxy_jack_cells_8", "jack_o_lantern", "far", "proxy:cells=8:modulate=on:bleeding=on"},
+    // hybrid: the tolerance of its parts (a volume part's specks).
+    {"hybrid_volume_shadowmap_aircraft", "aircraft", "far", "hybrid:self=volume:cast=shadowmap",
+     SubmitMode::Retained, "", 0.001},
+    {"hybrid_cubemap_volume_point", "point_light", "far", "hybrid:self=cubemap:cast=volume",
+     SubmitMode::Retained, "", 0.001},
+    {"hybrid_none_shadowmap_instanced", "sphere_plane", "mid", "hybrid:self=none:cast=shadowmap",
+     SubmitMode::Instanced},
+    // synthetic draws the instances' flat colours unlit: the aircraft scene's 0.5 and 0.7 channels are
+    // exact ties in 8 bits (127.5, 178.5), so the last bit of each driver's interpolation picks the
+    // step on most covered pixels (measured 4,289 of 25,600, never more than one step).
+    {"synthetic_scene_aircraft", "aircraft", "far", "synthetic", SubmitMode::Retained, "", 0.0, 0.2},
+    {"synthetic_fill_sphere_plane", "sphere_plane", "mid",
+     "synthetic:fragment_iterations=20:draw_scene=false"},
+    {"synthetic_vertex_fill_teapot", "teapot", "far", "synthetic:vertex_iterations=10:fragment_iterations=5",
+     SubmitMode::Instanced},
 };
 
 struct Images {
@@ -214,8 +229,10 @@ TEST_P(GlVulkanImage, SamePixelsOnBothApis) {
         colourOff += d > 0;
     }
     EXPECT_LE(double(flips), c.flipFraction * double(pixels)) << "pixels whose visibility changed sides";
-    // A case whose image has no shadow would compare nothing a shadow technique does.
-    if (std::string(c.technique).rfind("none", 0) != 0) {
+    // A case whose image has no shadow would compare nothing a shadow technique does (none and the
+    // synthetic workloads draw none).
+    if (std::string(c.technique).rfind("none", 0) != 0 &&
+        std::string(c.technique).rfind("synthetic", 0) != 0) {
         EXPECT_GT(shadowed, 0u) << "no shadowed pixel on GL";
     }
     EXPECT_LE(worstColour, 1) << colourOff << " pixels differ in colour (where visibility agrees)";

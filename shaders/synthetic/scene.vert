@@ -2,9 +2,15 @@
 // arithmetic per vertex (the vertex-bound calibration workload when raised).
 #include "common/alu_loop.glsl"
 #include "common/frame.glsl"
-#include "common/instance.glsl"
-
+// On Vulkan the steps are a push constant, in both submission modes: included before
+// common/instance.glsl, whose inclusion of it is inside a branch instanced mode does not take.
+#ifdef VULKAN
+#include "common/push.glsl"
+#define uVertexIterations uPush.ints.x
+#else
 layout(location = 9) uniform int uVertexIterations;
+#endif
+#include "common/instance.glsl"
 out vec4 vColor;
 
 void main() {

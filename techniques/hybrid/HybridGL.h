@@ -27,9 +27,10 @@
 #include <string>
 #include <vector>
 
-#include "techniques/PassRouter.h"
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/Submitter.h"
 #include "techniques/hybrid/Hybrid.h"
+#include "techniques/hybrid/HybridPart.h"
 
 namespace sb {
 
@@ -53,21 +54,7 @@ public:
 
 private:
     /// One role: its technique, the instances it shades and the names its passes are recorded under.
-    struct Part final : PassRouter {
-        std::string role; ///< "self" or "cast"
-        std::unique_ptr<GlTechnique> technique;
-        std::vector<uint8_t> scope; ///< per instance: shaded by this part
-        size_t scopeCount = 0;      ///< instances in scope
-        /// "<role>_<pass>", parallel to the part's passes: interned for the life of the process, since the
-        /// timer-query ring reads a pass's name frames after it ran, possibly after this technique is
-        /// gone (-t auto's calibration destroys its candidates before the run it chose is drained).
-        std::vector<const char*> passNames;
-        std::vector<bool> viewPass;     ///< parallel to the part's passes
-        Submitter* submitter = nullptr; ///< of the frame being drawn
-        const char* enter(const char* pass) override;
-        const char* nameOf(const char* pass) const override;
-        size_t indexOf(const char* pass) const;
-    };
+    using Part = HybridPart<GlTechnique, Submitter>;
     Part makePart(const std::string& role, const std::string& name) const;
     void runPart(Part& part, FrameContext& ctx);
 

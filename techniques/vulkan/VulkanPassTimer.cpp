@@ -5,6 +5,7 @@
 namespace sb {
 
 void VulkanPassTimer::begin(const char* pass) {
+    if (mRouter) pass = mRouter->enter(pass);
     if (mClock) mClock->passBegins(pass); // first: the pass's CPU span includes the timestamp below
     if (mRing) mRing->pass(mCmd, pass);
     if (!mCensus) return;
@@ -26,7 +27,7 @@ void VulkanPassTimer::endCensusFrame() {
 }
 
 void VulkanPassTimer::skip(const char* pass, const char* reason) {
-    if (mCensus) mSkipped.emplace_back(pass, reason);
+    if (mCensus) mSkipped.emplace_back(mRouter ? mRouter->nameOf(pass) : pass, reason);
 }
 
 void VulkanPassTimer::startCensus(const VulkanSubmitter& submitter, VkQueryPool statistics) {

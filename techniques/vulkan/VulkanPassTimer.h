@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include "techniques/PassClock.h"
+#include "techniques/PassRouter.h"
 #include "techniques/Submission.h"
 #include "vk/TimestampRing.h"
 
@@ -24,6 +25,10 @@ public:
     void setCommandBuffer(VkCommandBuffer cmd) { mCmd = cmd; }
     /// nullptr: none. The harness sets one to take each pass's CPU begin (techniques/PassClock.h).
     void setClock(PassClock* clock) { mClock = clock; }
+    /// nullptr: none. A hybrid technique sets one while each of its parts runs, so the part's passes are
+    /// recorded under the role's names (techniques/PassRouter.h), as PassTimer does on GL.
+    void setRouter(PassRouter* router) { mRouter = router; }
+    PassRouter* router() const { return mRouter; }
     /// Starts `pass` (outside a render pass). `pass` must outlive the frame (a literal).
     void begin(const char* pass);
     /// The technique leaves out declared pass `pass` this frame because of `reason` (literals).
@@ -54,6 +59,7 @@ private:
     void closeInterval();
     TimestampRing* mRing = nullptr;
     PassClock* mClock = nullptr;
+    PassRouter* mRouter = nullptr;
     VkCommandBuffer mCmd = VK_NULL_HANDLE;
     const VulkanSubmitter* mCensus = nullptr;
     VkQueryPool mStatistics = VK_NULL_HANDLE;

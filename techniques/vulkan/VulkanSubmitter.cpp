@@ -80,10 +80,17 @@ void VulkanSubmitter::bindMesh(VkCommandBuffer cmd, uint32_t mesh) {
 
 void VulkanSubmitter::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
                            const VulkanPush& push) {
+    if (!mScope.empty()) keep = narrowToScope(keep);
     if (mMode == SubmitMode::Instanced)
         drawInstanced(cmd, layout, set, keep, push);
     else
         drawRetained(cmd, layout, set, keep, push);
+}
+
+InstanceMask VulkanSubmitter::narrowToScope(InstanceMask keep) {
+    mScoped.resize(mScope.size());
+    for (size_t i = 0; i < mScope.size(); ++i) mScoped[i] = mScope[i] && keptBy(keep, i) ? 1 : 0;
+    return mScoped;
 }
 
 void VulkanSubmitter::drawRetained(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set,

@@ -56,8 +56,14 @@ public:
 
     /// Records the draws of the instances of `set` that `keep` keeps (empty: all) with the bound
     /// pipeline of `layout`; `push` (a technique's per-pass values) is pushed with each instance's.
+    /// Inside a view scope (setViewScope) only the scope's instances are drawn.
     void draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep = {},
               const VulkanPush& push = {});
+    /// As Submitter::setViewScope on GL: restricts every draw to the instances `scope` keeps until it is
+    /// cleared with an empty mask (a hybrid technique's part drawing the visible scene). The mask must
+    /// outlive the scope.
+    void setViewScope(InstanceMask scope) { mScope = scope; }
+    InstanceMask viewScope() const { return mScope; }
     const SubmitStats& stats() const { return mStats; }
     void resetStats() {
         mLifetime += mStats;
@@ -75,6 +81,8 @@ private:
     void drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
                        const VulkanPush& push);
     void bindMesh(VkCommandBuffer cmd, uint32_t mesh);
+    /// `keep` narrowed to the view scope (in mScoped).
+    InstanceMask narrowToScope(InstanceMask keep);
 
     VulkanContext& mContext;
     SubmitMode mMode;
@@ -82,8 +90,10 @@ private:
     std::vector<MeshGpu> mMeshes;
     std::vector<uint32_t> mOrder; ///< retained: instances by mesh (instancesByMesh)
     SubmissionPlan mPlan;         ///< instanced: the records in mInstances and their batches
-    VulkanBuffer mInstances; ///< host-visible
+    VulkanBuffer mInstances;      ///< host-visible
     SubmitStats mStats, mLifetime;
+    InstanceMask mScope;          ///< empty: no view scope
+    std::vector<uint8_t> mScoped; ///< the last narrowed mask
 };
 
 } // namespace sb
