@@ -4,6 +4,7 @@
 #include "core/Strings.h"
 #include "core/Suggestion.h"
 #include "reference/ReferenceGL.h"
+#include "reference/ReferenceVulkan.h"
 #include "techniques/blob/BlobGL.h"
 #include "techniques/hybrid/HybridGL.h"
 #include "techniques/none/NoneGL.h"
@@ -76,7 +77,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"blob", gl<BlobGL>, {}},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
-        {"reference", gl<ReferenceGL>, {}},
+        {"reference", gl<ReferenceGL>, vulkan<ReferenceVulkan>},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", gl<SyntheticGL>, {}},
     };
