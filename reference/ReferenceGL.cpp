@@ -6,11 +6,6 @@
 
 namespace sb {
 
-namespace {
-constexpr uint32_t kSeed = 1; // fixed: the same frame traces to the same image, frame after frame
-
-} // namespace
-
 ReferenceGL::ReferenceGL() : GlTechnique(Reference::declaration()) {}
 
 ReferenceGL::~ReferenceGL() {
@@ -60,13 +55,7 @@ void ReferenceGL::ensureTargets(int width, int height) {
 }
 
 ReferenceTracer::Options ReferenceGL::tracerOptions() const {
-    const PropertySet& p = properties();
-    ReferenceTracer::Options o;
-    o.softSamples = int(p.getInt(Reference::kSamples));
-    o.threads = int(p.getInt(Reference::kThreads));
-    o.seed = kSeed;
-    o.forceHard = p.getBool(Reference::kHard);
-    return o;
+    return Reference::tracerOptions(properties());
 }
 
 void ReferenceGL::renderGBuffer(FrameContext& ctx) {
@@ -86,12 +75,8 @@ void ReferenceGL::trace() {
 }
 
 void ReferenceGL::uploadVisibility() {
-    // Channel i = light i; channels without a light stay 1 (lit), as the cleared target would be.
-    std::vector<float> rgba(size_t(mWidth) * size_t(mHeight) * 4, 1.0f);
-    for (size_t light = 0; light < mVisibility.size(); ++light) {
-        const std::vector<float>& v = mVisibility[light].value;
-        for (size_t p = 0; p < v.size(); ++p) rgba[p * 4 + light] = v[p];
-    }
+    std::vector<float> rgba(size_t(mWidth) * size_t(mHeight) * 4);
+    Reference::packVisibility(mVisibility, mWidth, mHeight, false, rgba.data());
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
@@ -123,21 +108,7 @@ void ReferenceGL::execute(FrameContext& ctx) {
 void ReferenceGL::updateCounters(const SubmitStats& shadeStats) {
     // Both passes' draws, the G-buffer's counted by its renderer (it may draw without the submitter).
     const SubmitStats& g = mGBufferRenderer->lastStats();
-    const SubmitStats s = g + shadeStats;
-    double rays = 0.0, threadSeconds = 0.0, noise = 0.0;
-    int spp = 0;
-    for (const TraceStats& t : mTraceStats) {
-        rays += double(t.rays);
-        threadSeconds += t.seconds * t.threads;
-        noise = std::max(noise, t.noiseBound);
-        spp = std::max(spp, t.samplesPerPixel);
-    }
-    mCounters = {{"draw_calls", double(s.drawCalls)},
-                 {"triangles", double(s.triangles)},
-                 {"rays", rays},
-                 {"rays_per_second_per_thread", threadSeconds > 0.0 ? rays / threadSeconds : 0.0},
-                 {"noise_bound", noise},
-                 {"samples_per_pixel", double(spp)}};
+    mCounters = Reference::counters(g + shadeStats, mTraceStats);
 }
 
 } // namespace sb

@@ -4,6 +4,7 @@
 #include "core/Strings.h"
 #include "core/Suggestion.h"
 #include "reference/ReferenceGL.h"
+#include "reference/ReferenceVulkan.h"
 #include "techniques/blob/BlobGL.h"
 #include "techniques/blob/BlobVulkan.h"
 #include "techniques/hybrid/HybridGL.h"
@@ -102,6 +103,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); },
          [] { return std::unique_ptr<VulkanTechnique>(new HybridVulkan(createVulkanPart, partNames())); }},
         {"reference", gl<ReferenceGL>, {}},
+        {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
+        {"reference", gl<ReferenceGL>, vulkan<ReferenceVulkan>},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", gl<SyntheticGL>, vulkan<SyntheticVulkan>},
     };

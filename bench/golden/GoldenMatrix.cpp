@@ -216,8 +216,9 @@ MatrixCell unsupportedCell(const std::string& technique, const std::string& scen
     return cell;
 }
 
-/// One Vulkan cell: rendered by `vulkan`, judged (retained mode) against `evaluator`'s GL reference of
-/// the same frame. A validation error fails the cell.
+/// One Vulkan cell: rendered by `vulkan` and judged by `evaluator`, an evaluator of that harness (its own
+/// frames at the samples its own G-buffer places), as renderCell judges a GL cell: the same frame of a
+/// path, each light's frame rendered again. A validation error fails the cell.
 MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator, const std::string& technique,
                             const std::string& scene, const MatrixOptions& options) {
     MatrixCell cell;
@@ -227,6 +228,7 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     cell.api = "vulkan";
     std::unique_ptr<VulkanTechnique> t = TechniqueRegistry::createVulkan(TechniqueSpec{technique, {}});
     const size_t errorsBefore = vulkan.context().validationErrors();
+    vulkan.seekPath(0); // a scene in motion starts each cell at rest
     try {
         vulkan.prepare(*t);
     } catch (const Error& e) {
@@ -234,16 +236,17 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
         cell.unsupported = e.what();
         return cell;
     }
+    if (vulkan.moving())
+        for (uint64_t f = 0; f < kPathStep; ++f) vulkan.renderFrame(*t);
+    vulkan.seekPath(kPathStep);
     vulkan.renderFrame(*t);
-    VulkanTargets& targets = vulkan.targets();
-    const std::vector<float> vis = targets.readVisibilityRGBA32F();
-    readImages(targets.width(), targets.height(), vis, targets.readColorRGBA8(), vulkan.scene().lights.size(),
-               cell);
-    if (cell.mode == SubmitMode::Retained)
-        for (size_t l = 0; l < vulkan.scene().lights.size(); ++l)
-            cell.lights.push_back(
-                scoreLight(evaluator.judgeVisibility(vis, optionsFor(int(l), options), nullptr), int(l),
-                           vulkan.scene(), options));
+    const size_t lights = vulkan.scene().lights.size();
+    readImages(vulkan.width(), vulkan.height(), vulkan.readVisibility(), vulkan.readColor(), lights, cell);
+    for (size_t l = 0; l < lights; ++l) {
+        vulkan.seekPath(kPathStep); // each judged frame is the same frame of the path
+        cell.lights.push_back(scoreLight(evaluator.judgeFrame(*t, optionsFor(int(l), options), nullptr),
+                                         int(l), vulkan.scene(), options));
+    }
     if (vulkan.context().validationErrors() > errorsBefore) {
         const std::vector<std::string> messages = vulkan.takeValidationMessages();
         cell.failure = "the Vulkan validation layer reported an error: " +
@@ -275,9 +278,6 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
 void renderVulkanCells(const std::string& scene, const std::string& camera,
                        const std::vector<std::string>& techniques, const MatrixOptions& options,
                        const MatrixObserver& observer, std::vector<MatrixCell>& cells) {
-    RunConfig gl = RunConfig::oneFrame(scene, camera, options.size, SubmitMode::Retained);
-    std::unique_ptr<Harness> judge;
-    std::unique_ptr<AccuracyEvaluator> evaluator;
     for (SubmitMode mode : kVulkanModes) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         config.api = RunConfig::Api::Vulkan;
@@ -290,10 +290,9 @@ void renderVulkanCells(const std::string& scene, const std::string& camera,
             if (e.code() != ExitCode::Unsupported) throw;
             refusal = e.what(); // a scene in motion, or no Vulkan driver at all
         }
-        if (vulkan && !judge) {
-            judge = std::make_unique<Harness>(gl);
-            evaluator = std::make_unique<AccuracyEvaluator>(*judge);
-        }
+        // Each mode's harness judges its own frames (no GL context on the Vulkan axis).
+        std::unique_ptr<AccuracyEvaluator> evaluator;
+        if (vulkan) evaluator = std::make_unique<AccuracyEvaluator>(*vulkan);
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, true), observer, [&] {
                 return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode, options);

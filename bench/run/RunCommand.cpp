@@ -264,21 +264,13 @@ std::vector<Configured> createTechniques(const RunConfig& config, const std::vec
     return out;
 }
 
-/// The harness of the run's API. Accuracy is judged on GL (its G-buffer places the reference's samples):
-/// on Vulkan a GL harness of the same configuration is the judge, `judge` keeps it.
-std::unique_ptr<MeasuredHarness> createHarness(const RunConfig& config, std::unique_ptr<Harness>& judge) {
+/// The harness of the run's API. It judges its own frames too (accuracy renders its G-buffer on the
+/// same API): a Vulkan run creates no GL context.
+std::unique_ptr<MeasuredHarness> createHarness(const RunConfig& config) {
     if (config.api != RunConfig::Api::Vulkan) return std::make_unique<Harness>(config);
     if (config.context.visibleWindow)
         throw Error("--window draws with GL; --api vulkan measures headless only", ExitCode::Unsupported);
-    auto harness = std::make_unique<VulkanHarness>(config);
-    if (config.mode == RunConfig::Mode::Accuracy) {
-        RunConfig gl = config;
-        gl.api = RunConfig::Api::GL;
-        gl.submit = SubmitMode::Retained; // the G-buffer's submission: the same triangles in any mode
-        gl.dumpShadersPath.clear();       // the judge's programs are not the run's
-        judge = std::make_unique<Harness>(gl);
-    }
-    return harness;
+    return std::make_unique<VulkanHarness>(config);
 }
 
 /// The label each configuration's --screenshot and --visibility files get (RunImageNames.h), from the
@@ -296,7 +288,6 @@ std::vector<std::string> imageLabels(const std::vector<Configured>& configured) 
 int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     // Declared before the techniques so that it is destroyed after them: techniques release API objects
     // in their destructors, which needs the harness's context or device (also when an exception unwinds).
-    std::unique_ptr<Harness> judge; // bench accuracy on Vulkan: the GL harness whose reference judges
     std::unique_ptr<MeasuredHarness> harnessOwner;
     const bool accuracy = config.mode == RunConfig::Mode::Accuracy;
     // Validate everything that needs no context first: a typo fails in milliseconds, not after a run.
@@ -305,7 +296,7 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     checkOutputs(config);
     if (!imagesDir.empty()) AccuracyImages::prepareDirectory(imagesDir);
 
-    harnessOwner = createHarness(config, judge);
+    harnessOwner = createHarness(config);
     MeasuredHarness& harness = *harnessOwner;
     // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows (GL).
     std::vector<CsvRow> autoColumns(configured.size());
@@ -334,15 +325,11 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
     if (config.checkTimer) harness.calibrateTimer();
     if (!config.quiet) ConsoleReport::printTimerVerdict(log, harness.timerVerdict());
     std::unique_ptr<AccuracyEvaluator> evaluator;
-    if (accuracy)
-        evaluator = std::make_unique<AccuracyEvaluator>(judge ? *judge : static_cast<Harness&>(harness));
+    if (accuracy) evaluator = std::make_unique<AccuracyEvaluator>(harness);
     AccuracyOptions options;
     options.light = config.accuracyLight;
     options.referenceSamples = config.referenceSamples;
-    options.stability = config.stability && harness.api() == Api::GL;
-    if (accuracy && config.stability && harness.api() != Api::GL && !config.quiet)
-        log << "stability (camera and light gains, flicker): perturbed frames are rendered on GL only; "
-               "these rows leave them empty\n";
+    options.stability = config.stability;
     std::unique_ptr<AccuracyImages> images;
     if (evaluator && !imagesDir.empty())
         images = std::make_unique<AccuracyImages>(imagesDir, harness.scene().name, config.accuracyLight,

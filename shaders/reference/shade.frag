@@ -10,7 +10,13 @@ in vec4 vColorId;
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 after the frame block (reference/ReferenceVulkan.h), uploaded with Vulkan's row order, so the
+// fragment's own coordinates (origin at the top) fetch its sample too.
+layout(set = 1, binding = 0) uniform sampler2D uVisibility;
+#else
 layout(binding = 0) uniform sampler2D uVisibility;
+#endif
 
 void main() {
     vec4 traced = texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0);

@@ -121,6 +121,14 @@ std::vector<PassTimes> Harness::collectGpuTimes(bool wait) {
     return wait ? mRing->drain() : mRing->collect();
 }
 
+GBuffer Harness::renderGBuffer() {
+    if (!mGBuffer) {
+        mGBuffer = std::make_unique<GBufferRenderer>(width(), height());
+        mGBuffer->setScene(scene()); // immediate/displaylist G-buffers draw per instance themselves
+    }
+    return mGBuffer->render(*mSubmitter, mPrograms, projection() * view());
+}
+
 FrameLoads Harness::census(Technique& technique) {
     const bool counting = PipelineStatistics::available(
         mContext->glMajor, mContext->glMinor, mContext->hasExtension("GL_ARB_pipeline_statistics_query"));

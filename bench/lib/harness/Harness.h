@@ -28,6 +28,7 @@
 #include "gl/PipelineStatistics.h"
 #include "gl/ProgramCache.h"
 #include "gl/TimerQueryRing.h"
+#include "reference/GBufferRenderer.h"
 #include "scenes/Scene.h"
 #include "techniques/gl/FrameUniforms.h"
 #include "techniques/gl/GlTechnique.h"
@@ -63,6 +64,8 @@ public:
     FrameLoads measureLoads(Technique& technique) { return census(technique); }
     std::vector<unsigned char> readColor() override { return mTargets->readColorRGBA8(); }
     std::vector<float> readVisibility() override { return mTargets->readVisibilityRGBA32F(); }
+    /// reference/GBufferRenderer.h with this harness's submitter, programs and projection * view.
+    GBuffer renderGBuffer() override;
 
 private:
     void setVisibilityOutput(bool on) override { mTargets->setVisibilityOutput(on); }
@@ -81,7 +84,8 @@ private:
     std::unique_ptr<PassTimer> mPassTimer;
     std::unique_ptr<PipelineStatistics> mPipelineStatistics; ///< created on the first census
     ProgramCache mPrograms;
-    InjectedPass mInjectedPass; ///< after mContext: its GL objects go first
+    InjectedPass mInjectedPass;                ///< after mContext: its GL objects go first
+    std::unique_ptr<GBufferRenderer> mGBuffer; ///< created on the first renderGBuffer (after mContext)
 };
 
 } // namespace sb

@@ -23,6 +23,7 @@
 #include "bench/lib/harness/TimerTrust.h"
 #include "bench/lib/options/RunConfig.h"
 #include "core/PassTimes.h"
+#include "reference/GBuffer.h"
 #include "scenes/Scene.h"
 #include "techniques/FrameBlock.h"
 #include "techniques/PassClock.h"
@@ -85,6 +86,10 @@ public:
     /// colour, and the visibility target as 4 floats a pixel (channel i = light i).
     virtual std::vector<unsigned char> readColor() = 0;
     virtual std::vector<float> readVisibility() = 0;
+    /// The G-buffer (reference/GBuffer.h) of the current camera, pixel shift and scene, drawn by this
+    /// API with the run's submitter and a lighting pass's rasterisation, read back rows bottom-up: the
+    /// sample positions the accuracy evaluator judges this harness's frames at (untimed, between frames).
+    virtual GBuffer renderGBuffer() = 0;
     int width() const { return mConfig.width; }
     int height() const { return mConfig.height; }
     /// Messages of the API's validation since the last call (Vulkan with --vk-validation), each once.

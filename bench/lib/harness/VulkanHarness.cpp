@@ -139,6 +139,15 @@ FrameSample VulkanHarness::renderFrame(Technique& technique) {
     return s;
 }
 
+GBuffer VulkanHarness::renderGBuffer() {
+    if (!mGBuffer)
+        mGBuffer = std::make_unique<VulkanGBufferRenderer>(*mContext, *mShaders, *mSubmitter, *mFrameBlock,
+                                                           width(), height());
+    // Between frames (the last frame's fence was waited for): slot 0 is free to hold this camera.
+    mFrameBlock->beginFrame();
+    return mGBuffer->render(*mSubmitter, mFrameBlock->write(frameData()));
+}
+
 FrameLoads VulkanHarness::census(Technique& technique) {
     // One more frame with the visibility target on: what each pass submitted, counted between the
     // passes' begins while the frame is recorded, and where the device counts them, what the pipeline

@@ -20,6 +20,7 @@
 
 #include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/options/RunConfig.h"
+#include "reference/VulkanGBufferRenderer.h"
 #include "scenes/Scene.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/TimestampRing.h"
@@ -46,6 +47,9 @@ public:
     FrameSample renderFrame(Technique& technique) override;
     std::vector<unsigned char> readColor() override { return mTargets->readColorRGBA8(); }
     std::vector<float> readVisibility() override { return mTargets->readVisibilityRGBA32F(); }
+    /// reference/VulkanGBufferRenderer.h with this harness's submitter and a slot of its frame block
+    /// written for the current camera: no GL anywhere in a Vulkan run's judgement.
+    GBuffer renderGBuffer() override;
     /// Validation messages so far (with --vk-validation), each once: a run prints them.
     std::vector<std::string> takeValidationMessages() override;
     size_t validationErrors() const override { return mContext->validationErrors(); }
@@ -70,6 +74,7 @@ private:
     VkFence mFence = VK_NULL_HANDLE;
     VkQueryPool mStatistics = VK_NULL_HANDLE; ///< the census's pipeline statistics (where supported)
     size_t mMessagesShown = 0;
+    std::unique_ptr<VulkanGBufferRenderer> mGBuffer; ///< created on the first renderGBuffer
 };
 
 } // namespace sb

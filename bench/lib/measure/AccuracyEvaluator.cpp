@@ -35,11 +35,10 @@ Light turnLight(const Light& l, float deg, const glm::vec3& sceneCentre) {
 }
 } // namespace
 
-AccuracyEvaluator::AccuracyEvaluator(Harness& harness) : mHarness(harness), mEmbreeTime(harness.pathTime()) {
+AccuracyEvaluator::AccuracyEvaluator(MeasuredHarness& harness)
+    : mHarness(harness), mEmbreeTime(harness.pathTime()) {
     mEmbree = std::make_unique<EmbreeScene>(harness.scene());
     mTracer = std::make_unique<ReferenceTracer>(harness.scene(), *mEmbree);
-    mGBuffer = std::make_unique<GBufferRenderer>(harness.config().width, harness.config().height);
-    mGBuffer->setScene(harness.scene()); // immediate/displaylist G-buffers draw per instance themselves
 }
 
 AccuracyEvaluator::~AccuracyEvaluator() = default;
@@ -70,10 +69,10 @@ bool lightArrives(const Light& light, const glm::vec3& p) {
 }
 } // namespace
 
-AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(GlTechnique& technique, const AccuracyOptions& o,
+AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, const AccuracyOptions& o,
                                                         TraceStats* stats) {
     mHarness.renderFrame(technique);
-    return judgeVisibility(mHarness.targets().readVisibilityRGBA32F(), o, stats);
+    return judgeVisibility(mHarness.readVisibility(), o, stats);
 }
 
 AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> visibilityRgba,
@@ -83,8 +82,7 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> 
     Sample s;
     s.techniqueRgba = std::move(visibilityRgba);
     s.technique = AccuracyMetrics::channel(s.techniqueRgba, o.light);
-    GBuffer g =
-        mGBuffer->render(mHarness.submitter(), mHarness.programs(), mHarness.projection() * mHarness.view());
+    const GBuffer g = mHarness.renderGBuffer(); // the judged API's own rasterisation of the samples
     ReferenceTracer::Options ro;
     ro.softSamples = o.referenceSamples;
     VisibilityImage ref = mTracer->trace(g, o.light, ro, stats);
@@ -107,7 +105,7 @@ uint64_t AccuracyEvaluator::techniqueChanges(const Sample& a, const Sample& b) c
     return AccuracyMetrics::changedSamples(a.technique, b.technique, both);
 }
 
-void AccuracyEvaluator::measureStability(GlTechnique& technique, const AccuracyOptions& o, const Sample& base,
+void AccuracyEvaluator::measureStability(Technique& technique, const AccuracyOptions& o, const Sample& base,
                                          AccuracyResult& r) {
     auto referenceChanges = [](const Sample& a, const Sample& b) {
         std::vector<uint8_t> both(a.mask.size());
@@ -149,7 +147,7 @@ void AccuracyEvaluator::measureStability(GlTechnique& technique, const AccuracyO
     r.stabilityMeasured = true;
 }
 
-AccuracyResult AccuracyEvaluator::evaluate(GlTechnique& technique, const AccuracyOptions& o) {
+AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyOptions& o) {
     AccuracyResult r = start(o);
     mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
     const Sample base = judgeFrame(technique, o, &r.reference);
@@ -205,7 +203,7 @@ void AccuracyEvaluator::score(const Sample& base, const AccuracyOptions& o, Accu
     r.soft = AccuracyMetrics::soft(base.technique, base.reference, base.mask);
 }
 
-void AccuracyEvaluator::measurePath(GlTechnique& technique, const AccuracyOptions& o, AccuracyResult& r) {
+void AccuracyEvaluator::measurePath(Technique& technique, const AccuracyOptions& o, AccuracyResult& r) {
     const Motion& motion = *mHarness.scene().motion;
     const int w = mHarness.config().width, h = mHarness.config().height;
     AccuracyResult::Path path;

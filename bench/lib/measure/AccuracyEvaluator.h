@@ -1,6 +1,9 @@
 #pragma once
 // `bench accuracy`: judges a technique's visibility target against the exact reference at
-// the same sample positions, and measures how stable it is.
+// the same sample positions, and measures how stable it is. The same on every API: the evaluator
+// renders every frame it judges (perturbed and moving ones included) and its G-buffer on the harness
+// it was given (MeasuredHarness::renderGBuffer: GL's or Vulkan's own rasterisation), so a Vulkan run is
+// judged by Vulkan frames at the samples Vulkan rasterised, with no GL context at all.
 //
 // For light `light` of the scene:
 //  1. render one frame of the technique, read back its visibility target (numeric sanity over every
@@ -26,11 +29,10 @@
 #include <optional>
 #include <string>
 
-#include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "reference/AccuracyMetrics.h"
 #include "reference/EmbreeScene.h"
-#include "reference/GBufferRenderer.h"
 #include "reference/ReferenceTracer.h"
 
 namespace sb {
@@ -74,14 +76,14 @@ class AccuracyEvaluator {
 public:
     static constexpr int kDriftSteps = 6;
     static constexpr int kPathSamples = 4;
-    explicit AccuracyEvaluator(Harness& harness);
+    explicit AccuracyEvaluator(MeasuredHarness& harness);
     ~AccuracyEvaluator();
-    /// The technique must have been prepared on this harness (Harness::measure does it). Restores the
-    /// harness's camera shift and lights afterwards.
-    AccuracyResult evaluate(GlTechnique& technique, const AccuracyOptions& options);
-    /// The same judgement of one frame's visibility rendered by another API for this harness's
-    /// configuration (bench accuracy --api vulkan): hard and soft metrics and the numeric sanity, no
-    /// stability (the perturbations would have to be rendered by that API too) and no path.
+    /// The technique must be this harness's API's form, prepared on it (MeasuredHarness::measure does
+    /// it). Restores the harness's camera shift and lights afterwards.
+    AccuracyResult evaluate(Technique& technique, const AccuracyOptions& options);
+    /// The same judgement of one visibility read-back of this harness's configuration (its size and
+    /// camera): hard and soft metrics and the numeric sanity, no stability and no path (nothing is
+    /// rendered but the G-buffer).
     AccuracyResult evaluateVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options);
     /// Whether `harness` is the one this evaluator renders with (evaluate() can re-render its frames).
     bool rendersWith(const MeasuredHarness& harness) const { return &harness == &mHarness; }
@@ -92,10 +94,9 @@ public:
         std::vector<uint8_t> mask;
         std::vector<float> techniqueRgba; ///< the whole read-back, for the numeric sanity check
     };
-    Sample judgeFrame(GlTechnique& technique, const AccuracyOptions& options, TraceStats* stats);
-    /// The same judgement of a visibility read-back rendered elsewhere (RGBA per pixel, rows bottom-up,
-    /// the harness's size and camera): another API's frame of the same configuration (bench accuracy
-    /// --api vulkan, the matrix's Vulkan cells) against this harness's G-buffer and reference.
+    Sample judgeFrame(Technique& technique, const AccuracyOptions& options, TraceStats* stats);
+    /// The same judgement of a visibility read-back (RGBA per pixel, rows bottom-up, the harness's size
+    /// and current camera) against this harness's G-buffer and reference.
     Sample judgeVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options,
                            TraceStats* stats);
     /// The frame the last evaluate() or evaluateVisibility() scored (its hard, soft and sanity metrics
@@ -109,21 +110,20 @@ private:
     /// Hard, soft and sanity metrics of `base` into `result`; throws when no pixel can be judged.
     void score(const Sample& base, const AccuracyOptions& options, AccuracyResult& result) const;
     uint64_t techniqueChanges(const Sample& a, const Sample& b) const;
-    void measureStability(GlTechnique& technique, const AccuracyOptions& options, const Sample& base,
+    void measureStability(Technique& technique, const AccuracyOptions& options, const Sample& base,
                           AccuracyResult& result);
     /// A scene in motion: the metrics along the path (AccuracyResult::Path); the harness is left at
     /// the path's start.
-    void measurePath(GlTechnique& technique, const AccuracyOptions& options, AccuracyResult& result);
+    void measurePath(Technique& technique, const AccuracyOptions& options, AccuracyResult& result);
     /// The Embree scene rebuilt where the harness's casters stand now (a scene in motion).
     void followCasters();
     /// Keeps `sample` (without its RGBA read-back) as lastJudged().
     void keepJudged(const Sample& sample);
-    Harness& mHarness;
+    MeasuredHarness& mHarness;
     std::optional<Sample> mLastJudged;
     float mEmbreeTime = 0.0f; ///< the path time whose casters the Embree scene holds
     std::unique_ptr<EmbreeScene> mEmbree;
     std::unique_ptr<ReferenceTracer> mTracer;
-    std::unique_ptr<GBufferRenderer> mGBuffer;
 };
 
 } // namespace sb

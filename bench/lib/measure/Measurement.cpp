@@ -11,7 +11,7 @@ Measurement Measurement::take(MeasuredHarness& harness, Technique& technique, Ac
     Measurement m;
     m.run = harness.measure(technique);
     if (evaluator && evaluator->rendersWith(harness)) {
-        m.accuracy = evaluator->evaluate(static_cast<GlTechnique&>(technique), options);
+        m.accuracy = evaluator->evaluate(technique, options);
     } else if (evaluator) {
         AccuracyOptions visibilityOnly = options;
         visibilityOnly.stability = false;

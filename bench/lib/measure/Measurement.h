@@ -17,9 +17,9 @@ struct Measurement {
     CsvRow row;
 
     /// Measures `technique` (MeasuredHarness::measure), judges it when `evaluator` is not null, and builds
-    /// the row (its timestamp is set to now). On the evaluator's own harness (GL) the judgement renders
-    /// what it needs (perturbations, the path); on another API's harness it judges the census frame's
-    /// visibility at the same pixels, without the stability perturbations (bench accuracy --api vulkan).
+    /// the row (its timestamp is set to now). On the evaluator's own harness (any API) the judgement
+    /// renders what it needs (perturbations, the path); on another harness it judges the census frame's
+    /// visibility at the evaluator's samples, without the stability perturbations.
     static Measurement take(MeasuredHarness& harness, Technique& technique, AccuracyEvaluator* evaluator,
                             const AccuracyOptions& options, Environment& env);
     /// Adds the interleaving columns: `repeat` (the round) and, when `baselineWallMs` is given, the

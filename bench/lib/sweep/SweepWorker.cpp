@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "bench/lib/harness/Harness.h"
 #include "bench/lib/measure/Measurement.h"
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/ResultColumns.h"
