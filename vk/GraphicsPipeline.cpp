@@ -54,6 +54,7 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     depth.stencilTestEnable = desc.stencilTest ? VK_TRUE : VK_FALSE;
     depth.front = desc.stencilFront;
     depth.back = desc.stencilBack;
+    depth.depthBoundsTestEnable = desc.depthBounds ? VK_TRUE : VK_FALSE;
     depth.minDepthBounds = 0.0f;
     depth.maxDepthBounds = 1.0f;
 
@@ -86,9 +87,10 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     blend.attachmentCount = desc.colourAttachments;
     blend.pAttachments = blends.data();
 
-    const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                       VK_DYNAMIC_STATE_DEPTH_BOUNDS};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
+    dynamic.dynamicStateCount = desc.depthBounds ? 3 : 2;
     dynamic.pDynamicStates = dynamics;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
