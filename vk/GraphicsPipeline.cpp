@@ -54,6 +54,7 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     depth.stencilTestEnable = desc.stencilTest ? VK_TRUE : VK_FALSE;
     depth.front = desc.stencilFront;
     depth.back = desc.stencilBack;
+    depth.depthBoundsTestEnable = desc.depthBounds ? VK_TRUE : VK_FALSE;
     depth.minDepthBounds = 0.0f;
     depth.maxDepthBounds = 1.0f;
 
@@ -91,11 +92,14 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     blend.attachmentCount = desc.colourAttachments;
     blend.pAttachments = blends.data();
 
-    const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                       VK_DYNAMIC_STATE_STENCIL_REFERENCE};
+    // Dynamic state: viewport and scissor always; the stencil reference and the depth bounds where the
+    // pipeline asks for them.
+    std::vector<VkDynamicState> dynamics = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    if (desc.dynamicStencilReference) dynamics.push_back(VK_DYNAMIC_STATE_STENCIL_REFERENCE);
+    if (desc.depthBounds) dynamics.push_back(VK_DYNAMIC_STATE_DEPTH_BOUNDS);
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = desc.dynamicStencilReference ? 3 : 2;
-    dynamic.pDynamicStates = dynamics;
+    dynamic.dynamicStateCount = uint32_t(dynamics.size());
+    dynamic.pDynamicStates = dynamics.data();
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     info.stageCount = static_cast<uint32_t>(stages.size());

@@ -24,6 +24,8 @@ struct GraphicsPipelineDesc {
     bool depthBias = false; ///< slope and constant factors below (glPolygonOffset(slope, constant))
     float depthBiasSlope = 0.0f, depthBiasConstant = 0.0f;
     bool depthTest = true, depthWrite = true;
+    /// The depth bounds test with dynamic bounds (vkCmdSetDepthBounds); needs the depthBounds feature.
+    bool depthBounds = false;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS;
     bool stencilTest = false;
     VkStencilOpState stencilFront{}, stencilBack{}; ///< two-sided stencil: each face its own ops

@@ -384,6 +384,12 @@ void VulkanContext::createDevice() {
     enabled.shaderClipDistance = available.shaderClipDistance;
     // volume's light pass blends colour ADD and visibility MAX, as GL's per-draw-buffer equations do
     enabled.independentBlend = available.independentBlend;
+    // volume's depth_bounds (GL_EXT_depth_bounds_test) and its stencil_samples_passed counter
+    // (GL_SAMPLES_PASSED counts samples; a Vulkan occlusion query counts them only with the precise bit)
+    enabled.depthBounds = available.depthBounds;
+    enabled.occlusionQueryPrecise = available.occlusionQueryPrecise;
+    mDepthBounds = available.depthBounds == VK_TRUE;
+    mOcclusionQueryPrecise = available.occlusionQueryPrecise == VK_TRUE;
     mDepthClamp = available.depthClamp == VK_TRUE;
     mIndependentBlend = available.independentBlend == VK_TRUE;
     mClipDistance = available.shaderClipDistance == VK_TRUE;

@@ -70,6 +70,10 @@ public:
     bool independentBlend() const { return mIndependentBlend; }
     /// gl_ClipDistance in shaders (planar's guards clip occluder parts behind the receiver).
     bool clipDistance() const { return mClipDistance; }
+    /// The depth bounds test (volume's depth_bounds); lavapipe 22.3.6 and 25.0.7 lack it.
+    bool depthBounds() const { return mDepthBounds; }
+    /// Occlusion queries that count samples, not only zero or non-zero (volume's stencil_samples_passed).
+    bool occlusionQueryPrecise() const { return mOcclusionQueryPrecise; }
     /// Whether the physical device offers device extension `name` ("VK_KHR_ray_query").
     bool hasDeviceExtension(const std::string& name) const;
 
@@ -119,6 +123,8 @@ private:
     bool mPipelineStatistics = false;
     bool mIndependentBlend = false;
     bool mClipDistance = false;
+    bool mDepthBounds = false;
+    bool mOcclusionQueryPrecise = false;
     std::vector<std::string> mMessages;
     size_t mErrors = 0;
     std::vector<std::string> mDeviceExtensions; ///< what the physical device offers (pickDevice)

@@ -46,6 +46,9 @@ VolumeVulkan::~VolumeVulkan() {
 void VolumeVulkan::release() {
     if (!mDevice) return;
     vkDestroyPipelineLayout(mDevice, mLayout, nullptr);
+    vkDestroyQueryPool(mDevice, mSamples, nullptr);
+    mSamples = VK_NULL_HANDLE;
+    mQueriesIssued = {};
     mSets = DescriptorSets();
     mLayout = VK_NULL_HANDLE;
     mAmbientBlock = VulkanBuffer();
@@ -130,7 +133,8 @@ void VolumeVulkan::createDescriptors(VulkanContext& context) {
 void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     const VolumePlanner::Settings& settings = mPlanner.settings();
     const bool clamp = settings.far == VolumePlanner::Far::DepthClamp;
-    const std::string state = std::string("|clamp=") + (clamp ? "1" : "0") + "|";
+    const std::string state =
+        std::string("|clamp=") + (clamp ? "1" : "0") + "|bounds=" + (mDepthBounds ? "1" : "0") + "|";
     const Defines scene = ctx.submitter.defines();
 
     // Ambient: GL's default state (depth LESS with writes), the visibility target written.
@@ -149,6 +153,7 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
         light.depthClamp = clamp;
         light.depthWrite = false;
         light.depthCompare = VK_COMPARE_OP_EQUAL;
+        light.depthBounds = mDepthBounds;
         light.additive = true;
         light.maxVisibility = true;
         light.stencilTest = stencil == 1;
@@ -182,6 +187,7 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
             d.depthClamp = clamp;
             d.depthWrite = false;
             d.depthCompare = VK_COMPARE_OP_LESS;
+            d.depthBounds = mDepthBounds;
             d.colourWrite = 0;
             d.visibilityWrite = false;
             d.stencilTest = true;
@@ -211,10 +217,11 @@ void VolumeVulkan::compile(const VulkanCompileContext& ctx) {
     mDevice = ctx.context.device();
     mPlanner.setSettings(VolumePlanner::readSettings(properties()));
     const VolumePlanner::Settings& settings = mPlanner.settings();
-    if (settings.depthBounds)
-        throw Error("volume: depth_bounds needs the depthBounds feature, which the Vulkan back end does not "
-                    "enable: unsupported here, skipped (run without depth_bounds=true)",
+    if (settings.depthBounds && !ctx.context.depthBounds())
+        throw Error("volume: depth_bounds needs the depthBounds feature, which '" + ctx.context.info().name +
+                        "' does not offer: unsupported here, skipped (run without depth_bounds=true)",
                     ExitCode::Unsupported);
+    mDepthBounds = settings.depthBounds;
     if (settings.far == VolumePlanner::Far::DepthClamp && !ctx.context.depthClamp())
         throw Error("volume: far=depth_clamp needs the depthClamp feature, which '" +
                         ctx.context.info().name +
@@ -229,6 +236,40 @@ void VolumeVulkan::compile(const VulkanCompileContext& ctx) {
     createDescriptors(ctx.context);
     mLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
     buildPipelines(ctx);
+    if (ctx.context.occlusionQueryPrecise()) {
+        VkQueryPoolCreateInfo pool{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        pool.queryType = VK_QUERY_TYPE_OCCLUSION;
+        pool.queryCount = 2 * kMaxLights;
+        VulkanContext::check(vkCreateQueryPool(mDevice, &pool, nullptr, &mSamples),
+                             "vkCreateQueryPool (occlusion)");
+    }
+}
+
+void VolumeVulkan::readStencilQueries(VkCommandBuffer cmd) {
+    // As VolumeGL::readStencilQuery: this slot's queries were issued two frames ago. The harness waited
+    // for that frame's fence, so they are there; never wait on them all the same.
+    if (!mSamples) return;
+    const uint32_t slot = uint32_t(mQueryFrame % 2), first = slot * uint32_t(kMaxLights);
+    const int issued = mQueriesIssued[slot];
+    if (issued) {
+        std::array<uint64_t, kMaxLights> samples{};
+        const VkResult r = vkGetQueryPoolResults(mDevice, mSamples, first, uint32_t(issued), sizeof samples,
+                                                 samples.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
+        if (r == VK_SUCCESS) {
+            double sum = 0;
+            for (int i = 0; i < issued; ++i) sum += double(samples[size_t(i)]);
+            mStencilSamples = sum;
+        }
+    }
+    mQueriesIssued[slot] = 0;
+    vkCmdResetQueryPool(cmd, mSamples, first, uint32_t(kMaxLights));
+}
+
+void VolumeVulkan::setDepthBounds(VkCommandBuffer cmd, int light) const {
+    if (!mDepthBounds) return;
+    const VolumePlanner::LightRegion& r = mRegions[size_t(light)];
+    const glm::vec2 bounds = r.depthBounds ? r.depth : glm::vec2(0.0f, 1.0f);
+    vkCmdSetDepthBounds(cmd, bounds.x, bounds.y);
 }
 
 void VolumeVulkan::collectFrame(const VulkanFrameContext& ctx, const VolumePlanner::View& view, int lights,
@@ -315,6 +356,11 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
 
     const int finite = mPlanner.finiteFor(light) ? 1 : 0;
     ctx.frame.bind(cmd, mLayout, frame);
+    setDepthBounds(cmd, lightIndex);
+    const uint32_t slot = uint32_t(mQueryFrame % 2);
+    if (mSamples)
+        vkCmdBeginQuery(cmd, mSamples, slot * uint32_t(kMaxLights) + uint32_t(lightIndex),
+                        VK_QUERY_CONTROL_PRECISE_BIT);
     if (!settings.vertexExtrusion && mStream)
         vkCmdBindIndexBuffer(cmd, mStream.buffer(), 0, VK_INDEX_TYPE_UINT32);
     int counting = -1;
@@ -348,6 +394,10 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
         if (d.capCount) vkCmdDrawIndexed(cmd, d.capCount, 1, 0, 0, 0);
         if (d.sideCount) vkCmdDrawIndexed(cmd, d.sideCount, 1, gpu.capIndices, 0, 0);
     }
+    if (mSamples) {
+        vkCmdEndQuery(cmd, mSamples, slot * uint32_t(kMaxLights) + uint32_t(lightIndex));
+        mQueriesIssued[slot] = std::max(mQueriesIssued[slot], lightIndex + 1);
+    }
     vkCmdEndRenderPass(cmd);
 }
 
@@ -360,6 +410,7 @@ void VolumeVulkan::renderLight(VulkanFrameContext& ctx, uint32_t frame, int ligh
     VkCommandBuffer cmd = ctx.cmd;
     ctx.targets.beginPass(cmd);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setDepthBounds(cmd, lightIndex);
     ctx.frame.bind(cmd, mLayout, frame);
     const VkDescriptorSet set = mSets.set(0);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, 1, 1, &set, 0, nullptr);
@@ -387,11 +438,14 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
 
     const int lights = std::min<int>(int(ctx.scene.lights.size()), kMaxLights);
     for (int i = 0; i < lights; ++i)
-        mRegions[size_t(i)] = mPlanner.regionOf(ctx.scene.lights[size_t(i)], ctx.view, view, proj, false);
+        mRegions[size_t(i)] =
+            mPlanner.regionOf(ctx.scene.lights[size_t(i)], ctx.view, view, proj, mDepthBounds);
     VolumePlanner::FrameStats stats;
     collectFrame(ctx, view, lights, stats);
     writeAmbientBlock(lights, height);
 
+    // Outside the passes' render passes: the queries are reset before the marking passes reuse them.
+    readStencilQueries(ctx.cmd);
     ctx.passes.begin("ambient");
     renderAmbient(ctx, frame);
     for (int i = 0; i < lights; ++i) {
@@ -407,7 +461,9 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
         ctx.passes.begin("lighting");
         renderLight(ctx, frame, i, scissor);
     }
-    mCounters = mPlanner.counters(stats, ctx.submitter.stats(), std::nullopt);
+    ++mQueryFrame;
+    mCounters = mPlanner.counters(stats, ctx.submitter.stats(),
+                                  mSamples ? std::optional<double>(mStencilSamples) : std::nullopt);
 }
 
 } // namespace sb

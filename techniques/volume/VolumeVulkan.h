@@ -20,11 +20,14 @@
 // extrusion length (ints.y, as float bits).
 //
 // far=infinite draws every pass with the camera's projection at infinity (a frame-block slot of its own);
-// far=depth_clamp needs the depthClamp feature (ExitCode::Unsupported without it); depth_bounds is
-// refused (ExitCode::Unsupported: the device is created without the depthBounds feature).
-// Counters: GL's, except stencil_samples_passed: the device is created without occlusionQueryPrecise,
-// so a Vulkan occlusion query only promises zero or non-zero, not GL_SAMPLES_PASSED's count; the counter
-// is left out rather than reported with another meaning.
+// far=depth_clamp needs the depthClamp feature (ExitCode::Unsupported without it). depth_bounds is GL's
+// GL_EXT_depth_bounds_test: the mark and lighting pipelines test depth bounds, set per light with
+// vkCmdSetDepthBounds; a device without the depthBounds feature refuses it (ExitCode::Unsupported,
+// naming the device), as GL refuses it where the extension is missing.
+// Counters: GL's. stencil_samples_passed is an occlusion query with VK_QUERY_CONTROL_PRECISE_BIT around
+// each light's marking draws, as GL_SAMPLES_PASSED is on GL, in two slots read two frames late as on GL
+// (VolumeGL::readStencilQuery); on a device without occlusionQueryPrecise a query only promises zero
+// or non-zero, so the counter is left out rather than reported with another meaning.
 #include <array>
 #include <memory>
 #include <vector>
@@ -72,6 +75,11 @@ private:
     void renderAmbient(VulkanFrameContext& ctx, uint32_t frame);
     void markShadows(VulkanFrameContext& ctx, uint32_t frame, int light, const VkRect2D& scissor);
     void renderLight(VulkanFrameContext& ctx, uint32_t frame, int light, const VkRect2D& scissor);
+    /// The light's depth bounds (all of [0, 1] where its region has none), with depth_bounds on.
+    void setDepthBounds(VkCommandBuffer cmd, int light) const;
+    /// Reads the slot of the stencil queries issued two frames ago and resets it for this frame
+    /// (outside any render pass).
+    void readStencilQueries(VkCommandBuffer cmd);
 
     VolumePlanner mPlanner;
     const Scene* mScene = nullptr;
@@ -92,6 +100,14 @@ private:
     ScenePipeline mAmbient;
     ScenePipeline mLight[2];   ///< [stencil test]
     ScenePipeline mMark[2][2]; ///< [finite][zfail]
+    bool mDepthBounds = false; ///< depth_bounds on a device with the depthBounds feature
+
+    /// Occlusion queries of the marking passes: [slot * kMaxLights + light], two slots (null without
+    /// occlusionQueryPrecise).
+    VkQueryPool mSamples = VK_NULL_HANDLE;
+    std::array<int, 2> mQueriesIssued{}; ///< per slot, the lights whose queries were issued
+    uint64_t mQueryFrame = 0;
+    double mStencilSamples = 0;
     Counters mCounters;
 };
 

@@ -17,7 +17,7 @@ using Clock = std::chrono::steady_clock;
 constexpr uint32_t kRingFrames = 4, kPassesPerFrame = 32;
 } // namespace
 
-VulkanHarness::VulkanHarness(const RunConfig& config) : MeasuredHarness(config, false) {
+VulkanHarness::VulkanHarness(const RunConfig& config) : MeasuredHarness(config, true) {
     mContext = std::make_unique<VulkanContext>(config.vulkan);
     mTargets = std::make_unique<VulkanTargets>(*mContext, config.width, config.height);
     mShaders = std::make_unique<ShaderModuleCache>(*mContext);
@@ -59,7 +59,7 @@ VulkanHarness::~VulkanHarness() {
 RowSource VulkanHarness::rowSource() const {
     const VulkanDeviceInfo& d = mContext->info();
     return {config(),     scene(),        contentHash(),
-            false,        timerVerdict(), "vulkan",
+            moving(),     timerVerdict(), "vulkan",
             d.apiVersion, d.name,         "",
             d.driver,     "vulkan",       std::to_string(d.index) + ": " + d.name,
             d.driverInfo};
@@ -82,6 +82,12 @@ const TimerVerdict& VulkanHarness::calibrateTimer() {
 TimerVerdict VulkanHarness::recalibrate() {
     mShaders->setDumpLabel("timer_trust");
     return VulkanTimerTrust::calibrate(*mContext, *mShaders);
+}
+
+void VulkanHarness::instancesMoved() {
+    // Retained draws push each instance's transform from the scene as it is now; instanced draws read
+    // the instance buffer, rewritten in place (the previous frame's fence was waited for).
+    mSubmitter->instancesMoved(scene());
 }
 
 std::vector<PassTimes> VulkanHarness::collectGpuTimes(bool) {
@@ -111,6 +117,9 @@ FrameSample VulkanHarness::renderFrame(Technique& technique) {
     FrameSample s;
     const auto t0 = Clock::now();
     passClock().frameBegins(t0);
+    // A scene in motion moves first, as an application animates before it draws: part of the frame, as
+    // on GL (the instance records rewritten, the techniques' sceneChanged, the frame block below).
+    s.motionMs = advancePath(technique);
     VulkanContext::check(vkResetCommandBuffer(mCmd, 0), "vkResetCommandBuffer");
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
