@@ -67,6 +67,12 @@ void ParaboloidVulkan::setScene(const Scene& scene) {
     mSplitting.setScene(scene);
 }
 
+void ParaboloidVulkan::sceneChanged(const Scene& scene, uint32_t) {
+    setScene(scene);
+    // The harness waits for each frame's fence before the next is recorded: no slot is in flight.
+    if (mLightingBlock.map()) writeBlocks();
+}
+
 void ParaboloidVulkan::checkFeatures(const VulkanContext& context) const {
     VkPhysicalDeviceFeatures features{};
     vkGetPhysicalDeviceFeatures(context.physicalDevice(), &features); // VulkanContext enables these
@@ -287,9 +293,7 @@ void ParaboloidVulkan::renderDepth(VulkanFrameContext& ctx) {
 }
 
 void ParaboloidVulkan::execute(VulkanFrameContext& ctx) {
-    // As GL sets its uniforms every frame: a scene in motion (sceneChanged -> setScene) moved the fits.
-    // The previous frame's fence has been waited for, so no slot is in flight.
-    writeBlocks();
+    // The slots and the lighting block were written by compile() and sceneChanged(): nothing per frame.
     mCulled = 0;
     mSplitDrawn = 0;
     mHemispheresRendered = 0;

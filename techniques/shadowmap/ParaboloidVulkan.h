@@ -40,6 +40,9 @@ public:
     ParaboloidVulkan();
     ~ParaboloidVulkan() override;
     void setScene(const Scene& scene) override;
+    /// As the GL form (the whole setScene: lights refitted, casters' bounds and edges), then the slots
+    /// and the lighting block rewritten: a scene in motion moved the fits.
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
