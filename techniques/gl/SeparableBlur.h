@@ -70,7 +70,8 @@ public:
     SeparableBlur& operator=(const SeparableBlur&) = delete;
 
     /// Kernel::TexelIntegral's weights for `width`: taps 0..width/2 (the kernel is symmetric: tap -k has
-    /// the weight of tap k); they sum to 1 over all 2 (width/2) + 1 taps. Width 0 gives {1}.
+    /// the weight of tap k); they sum to 1 over all 2 (width/2) + 1 taps. Width 0 gives {1}. The same
+    /// floats as the Vulkan blur's (techniques/GaussianKernel.h computes both).
     static std::vector<float> weights(int width);
 
     /// Programs and the intermediate texture for `settings`. Returns the programs' permutation keys
