@@ -13,6 +13,7 @@
 #include "techniques/planar/PlanarGL.h"
 #include "techniques/planar/PlanarVulkan.h"
 #include "techniques/projective/ProjectiveGL.h"
+#include "techniques/projective/ProjectiveVulkan.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/shadowmap/CascadedGL.h"
 #include "techniques/shadowmap/CubeMapGL.h"
@@ -74,7 +75,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"occluder", gl<OccluderGL>, {}},
         {"proxy", gl<ProxyGL>, {}},
         {"planar", gl<PlanarGL>, vulkan<PlanarVulkan>},
-        {"projective", gl<ProjectiveGL>, {}},
+        {"projective", gl<ProjectiveGL>, vulkan<ProjectiveVulkan>},
         {"blob", gl<BlobGL>, vulkan<BlobVulkan>},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); }, {}},
