@@ -16,6 +16,7 @@
 #include "techniques/planar/PlanarGL.h"
 #include "techniques/planar/PlanarVulkan.h"
 #include "techniques/projective/ProjectiveGL.h"
+#include "techniques/projective/ProjectiveVulkan.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/proxy/ProxyVulkan.h"
 #include "techniques/shadowmap/CascadedGL.h"
@@ -89,7 +90,7 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"occluder", gl<OccluderGL>, vulkan<OccluderVulkan>},
         {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},
         {"planar", gl<PlanarGL>, vulkan<PlanarVulkan>},
-        {"projective", gl<ProjectiveGL>, {}},
+        {"projective", gl<ProjectiveGL>, vulkan<ProjectiveVulkan>},
         {"blob", gl<BlobGL>, vulkan<BlobVulkan>},
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); },

@@ -149,6 +149,19 @@ const Case kCases[] = {
      "synthetic:fragment_iterations=20:draw_scene=false"},
     {"synthetic_vertex_fill_teapot", "teapot", "far", "synthetic:vertex_iterations=10:fragment_iterations=5",
      SubmitMode::Instanced},
+    {"planar_aircraft", "aircraft", "far", "planar"},
+    {"planar_proxy_instanced", "aircraft", "mid", "planar:occluder=proxy", SubmitMode::Instanced},
+    {"planar_no_stencil", "sphere_plane", "far", "planar:stencil=false"},
+    {"planar_point_no_guards", "point_light", "far", "planar:guards=false"},
+    {"planar_exceptions", "exceptions", "far", "planar"},
+    {"blob_aircraft", "aircraft", "far", "blob"},
+    {"blob_spot_instanced", "sphere_plane", "far", "blob:softness=0.25", SubmitMode::Instanced, "spot"},
+    {"blob_point", "point_light", "far", "blob"},
+    {"blob_exceptions", "exceptions", "far", "blob"},
+    {"projective_aircraft", "aircraft", "far", "projective"},
+    {"projective_spot_instanced", "sphere_plane", "far", "projective", SubmitMode::Instanced, "spot"},
+    {"projective_point_no_cull_256", "point_light", "far", "projective:cull=false:resolution=256"},
+    {"projective_exceptions", "exceptions", "far", "projective"},
 };
 
 struct Images {

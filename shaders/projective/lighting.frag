@@ -14,7 +14,13 @@ in vec4 vShadowCoord[LIGHT_COUNT];
 layout(location = 0) out vec4 oColor;
 layout(location = 1) out vec4 oVisibility;
 
+#ifdef VULKAN
+// Set 1 (techniques/projective/ProjectiveVulkan.h): binding 0 the texture matrices (common/scene.vert's
+// ShadowMapBlock), binding 1 the textures.
+layout(set = 1, binding = 1) uniform sampler2DArray uProjective;
+#else
 layout(binding = 0) uniform sampler2DArray uProjective;
+#endif
 
 float visibility(int layer, vec4 coord) {
     if (coord.q <= 0.0) return 1.0;

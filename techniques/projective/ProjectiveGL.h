@@ -51,16 +51,8 @@ namespace sb {
 
 class ProjectiveGL final : public GlTechnique {
 public:
-    /// The widest projector half-angle (degrees): a projector that would need a wider frustum (one
-    /// reaching 90 degrees or more) gets this one.
-    static constexpr float kMaxHalfAngleDeg = 80.0f;
-
-    /// A light's projector: view-projection of the light camera (clip space) and whether its frustum
-    /// was clamped to kMaxHalfAngleDeg.
-    struct Projector {
-        glm::mat4 viewProj{1.0f};
-        bool clamped = false;
-    };
+    static constexpr float kMaxHalfAngleDeg = Projective::kMaxHalfAngleDeg;
+    using Projector = Projective::Projector;
 
     ProjectiveGL();
     ~ProjectiveGL() override;
@@ -69,12 +61,13 @@ public:
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
 
-    /// The projector of `light` for `scene` (whose casters must not be empty). Public for tests.
-    static Projector computeProjector(const Scene& scene, const Light& light);
-    /// A point or spot light's projector aimed at `receivers` (world bounds, not empty): from the
-    /// light towards their centre, the half-angle to their farthest corner (at most
-    /// kMaxHalfAngleDeg), far at their deepest corner. Public for tests.
-    static Projector aimAtReceivers(const Light& light, const Aabb& receivers);
+    /// Projective::computeProjector and aimAtReceivers. Public for tests.
+    static Projector computeProjector(const Scene& scene, const Light& light) {
+        return Projective::computeProjector(scene, light);
+    }
+    static Projector aimAtReceivers(const Light& light, const Aabb& receivers) {
+        return Projective::aimAtReceivers(light, receivers);
+    }
 
 private:
     void renderTexture(FrameContext& ctx);

@@ -1,0 +1,284 @@
+#include "techniques/projective/ProjectiveVulkan.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/Error.h"
+#include "shading/ShaderLimits.h"
+#include "techniques/vulkan/ScenePass.h"
+
+namespace sb {
+
+namespace {
+constexpr size_t kTextureSet = 0, kLightingSet = 1; // in mSets
+} // namespace
+
+ProjectiveVulkan::ProjectiveVulkan() : VulkanTechnique(Projective::declaration()) {}
+
+ProjectiveVulkan::~ProjectiveVulkan() {
+    release();
+}
+
+void ProjectiveVulkan::release() {
+    if (!mDevice) return;
+    for (VkFramebuffer fb : mFramebuffers) vkDestroyFramebuffer(mDevice, fb, nullptr);
+    mFramebuffers.clear();
+    vkDestroyRenderPass(mDevice, mTexturePass, nullptr);
+    vkDestroySampler(mDevice, mSampler, nullptr);
+    vkDestroyPipelineLayout(mDevice, mTextureLayout, nullptr);
+    vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
+    mTexturePass = VK_NULL_HANDLE;
+    mSampler = VK_NULL_HANDLE;
+    mTextureLayout = mLightingLayout = VK_NULL_HANDLE;
+    mSets = DescriptorSets();
+    mProjectors = VulkanBuffer();
+    mMatrices = VulkanBuffer();
+    mArray = VulkanImage();
+}
+
+void ProjectiveVulkan::setScene(const Scene& scene) {
+    mCulling.setScene(scene);
+    mPlan = Projective::plan(scene);
+}
+
+void ProjectiveVulkan::createTextures(VulkanContext& context, uint32_t layers) {
+    VulkanImageDesc d;
+    d.width = d.height = uint32_t(mResolution);
+    d.layers = layers;
+    d.format = VK_FORMAT_R8_UNORM;
+    d.usage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    d.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    mArray = VulkanImage(context, d);
+    // Layers no frame draws (a light that casts no shadow) are never looked up; white (lit) anyway.
+    context.submitNow([&](VkCommandBuffer cmd) {
+        transitionImage(cmd, mArray.image(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, layers);
+        const VkClearColorValue white{{1.0f, 1.0f, 1.0f, 1.0f}};
+        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+        vkCmdClearColorImage(cmd, mArray.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &white, 1, &range);
+        transitionImage(cmd, mArray.image(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, layers);
+    });
+    createRenderPass();
+    for (uint32_t i = 0; i < layers; ++i) {
+        VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        const VkImageView view = mArray.layerView(i);
+        info.renderPass = mTexturePass;
+        info.attachmentCount = 1;
+        info.pAttachments = &view;
+        info.width = info.height = uint32_t(mResolution);
+        info.layers = 1;
+        VkFramebuffer fb = VK_NULL_HANDLE;
+        VulkanContext::check(vkCreateFramebuffer(mDevice, &info, nullptr, &fb),
+                             "vkCreateFramebuffer (projective)");
+        mFramebuffers.push_back(fb);
+    }
+}
+
+void ProjectiveVulkan::createRenderPass() {
+    // One colour attachment cleared to white (lit) and left for the lighting pass to sample.
+    VkAttachmentDescription a{};
+    a.format = VK_FORMAT_R8_UNORM;
+    a.samples = VK_SAMPLE_COUNT_1_BIT;
+    a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    a.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription sub{};
+    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    sub.colorAttachmentCount = 1;
+    sub.pColorAttachments = &ref;
+    // Before: the previous frame's lighting pass read the layer (write after read). After: this
+    // frame's lighting pass reads what the silhouette wrote.
+    VkSubpassDependency deps[2]{};
+    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    deps[0].dstSubpass = 0;
+    deps[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[0].srcAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].srcSubpass = 0;
+    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.attachmentCount = 1;
+    info.pAttachments = &a;
+    info.subpassCount = 1;
+    info.pSubpasses = &sub;
+    info.dependencyCount = 2;
+    info.pDependencies = deps;
+    VulkanContext::check(vkCreateRenderPass(mDevice, &info, nullptr, &mTexturePass),
+                         "vkCreateRenderPass (projective)");
+}
+
+void ProjectiveVulkan::createDescriptors(VulkanContext& context, uint32_t layers) {
+    // Bilinear lookups; outside the projector's frustum no caster was drawn: a white (lit) border.
+    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    s.magFilter = s.minFilter = VK_FILTER_LINEAR;
+    s.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    s.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
+    s.maxLod = 0.0f;
+    VulkanContext::check(vkCreateSampler(mDevice, &s, nullptr, &mSampler), "vkCreateSampler (projective)");
+
+    using D = DescriptorSets;
+    mSets = DescriptorSets(
+        mDevice,
+        {{D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT)},
+         {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT),
+          D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
+        "projective");
+    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
+    mStride = uint32_t((sizeof(glm::mat4) + align - 1) / align * align);
+    mProjectors = VulkanBuffer(context, VkDeviceSize(mStride) * layers, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    mMatrices = VulkanBuffer(context, sizeof(glm::mat4) * layers, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    char* projectors = static_cast<char*>(mProjectors.map());
+    char* matrices = static_cast<char*>(mMatrices.map());
+    std::memset(projectors, 0, size_t(mStride) * layers);
+    std::memset(matrices, 0, sizeof(glm::mat4) * layers);
+    for (size_t i = 0; i < mPlan.viewProj.size(); ++i) {
+        // The silhouette is sampled, not shown: Vulkan's depth range, no flip (depthFromGl).
+        const glm::mat4 m = VulkanFrameBlock::depthFromGl() * mPlan.viewProj[i];
+        std::memcpy(projectors + size_t(mStride) * i, &m, sizeof m);
+        std::memcpy(matrices + sizeof(glm::mat4) * i, &mPlan.textureMatrix[i], sizeof(glm::mat4));
+    }
+    mSets.writeBuffer(kTextureSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mProjectors.buffer(),
+                      sizeof(glm::mat4));
+    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mMatrices.buffer(),
+                      sizeof(glm::mat4) * layers);
+    mSets.writeImage(kLightingSet, 1, mSampler, mArray.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+void ProjectiveVulkan::buildPipelines(const VulkanCompileContext& ctx) {
+    const Defines base = ctx.submitter.defines();
+    // Casters (and, without projectors, everything): lit and unshadowed, as `none` draws them.
+    Defines lit = base;
+    lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    std::string litKey = "projective-lit|";
+    mLit.build(ctx.pipelines, litKey,
+               scenePipeline(ctx, "common/scene.vert", "common/lit.frag", lit, mLightingLayout, litKey),
+               ctx.targets);
+    std::string key = definesKey(lit);
+    mTexturePipeline = VK_NULL_HANDLE;
+    if (mPlan.viewProj.empty()) {
+        setPermutationKey(key);
+        return;
+    }
+    // A silhouette: every caster fragment is black, whatever its depth (no depth attachment at all).
+    std::string textureKey = "projective-texture|";
+    GraphicsPipelineDesc texture = scenePipeline(ctx, "projective/texture.vert", "projective/texture.frag",
+                                                 base, mTextureLayout, textureKey);
+    texture.depthTest = false;
+    texture.depthWrite = false;
+    texture.renderPass = mTexturePass;
+    mTexturePipeline = ctx.pipelines.get(textureKey, texture);
+
+    Defines projective = ctx.defines(); // its lookups follow the scene's exceptions
+    projective["SHADOW_MAP"] = "";      // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
+    projective["LIGHT_COUNT"] = std::to_string(mPlan.viewProj.size());
+    std::string projectiveKey = "projective-lighting|";
+    mProjective.build(ctx.pipelines, projectiveKey,
+                      scenePipeline(ctx, "common/scene.vert", "projective/lighting.frag", projective,
+                                    mLightingLayout, projectiveKey),
+                      ctx.targets);
+    setPermutationKey(key + "|" + definesKey(base) + "|" + definesKey(projective));
+}
+
+void ProjectiveVulkan::compile(const VulkanCompileContext& ctx) {
+    release();
+    mDevice = ctx.context.device();
+    const PropertySet& p = properties();
+    mResolution = int(p.getInt(Projective::kResolution));
+    mBlurRadius = int(p.getInt(Projective::kBlur));
+    if (mBlurRadius > 0)
+        throw Error("projective: blur > 0 has no Vulkan form yet (the separable blur pass is GL's): "
+                    "unsupported here (run with blur=0, or --api gl)",
+                    ExitCode::Unsupported);
+    mCull = p.getBool(Projective::kCull) && mBlurRadius == 0;
+    const uint32_t layers = uint32_t(std::max<size_t>(1, mPlan.viewProj.size()));
+    createTextures(ctx.context, layers);
+    createDescriptors(ctx.context, layers);
+    mTextureLayout = createScenePipelineLayout(ctx, {mSets.layout(kTextureSet)});
+    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    buildPipelines(ctx);
+}
+
+void ProjectiveVulkan::renderTexture(VulkanFrameContext& ctx) {
+    mCulled = 0;
+    const glm::mat4 camera = ctx.proj * ctx.view;
+    VkClearValue white{};
+    white.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
+    const VkDescriptorSet set = mSets.set(kTextureSet);
+    for (size_t i = 0; i < mPlan.viewProj.size(); ++i) {
+        if (!mPlan.castsShadows[i]) continue;
+        size_t kept = mCulling.count(DrawSet::Casters);
+        if (mCull) { // a caster whose shadow misses the view puts no texel where a visible receiver looks
+            kept = mCulling.cullShadows(ctx.scene.lights[i], mPlan.receivers, camera, mKeep);
+            mCulled += mCulling.count(DrawSet::Casters) - kept;
+        }
+        VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        begin.renderPass = mTexturePass;
+        begin.framebuffer = mFramebuffers[i];
+        begin.renderArea.extent = {uint32_t(mResolution), uint32_t(mResolution)};
+        begin.clearValueCount = 1;
+        begin.pClearValues = &white;
+        vkCmdBeginRenderPass(ctx.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+        if (kept) {
+            const VkViewport viewport{0.0f, 0.0f, float(mResolution), float(mResolution), 0.0f, 1.0f};
+            const VkRect2D scissor{{0, 0}, {uint32_t(mResolution), uint32_t(mResolution)}};
+            vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
+            vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
+            vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mTexturePipeline);
+            const uint32_t offset = mStride * uint32_t(i);
+            vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mTextureLayout, 1, 1, &set, 1,
+                                    &offset);
+            ctx.submitter.draw(ctx.cmd, mTextureLayout, DrawSet::Casters,
+                               mCull ? InstanceMask(mKeep) : InstanceMask{});
+        }
+        vkCmdEndRenderPass(ctx.cmd);
+    }
+}
+
+void ProjectiveVulkan::renderLighting(VulkanFrameContext& ctx) {
+    if (mPlan.viewProj.empty()) { // nothing casts: every instance lit
+        drawLitScene(ctx, mLit, mLightingLayout);
+        return;
+    }
+    // Casters fully lit (no self-shadowing: the texture cannot tell a caster's lit side from its
+    // shadowed one), then the receivers with the projected textures.
+    VkCommandBuffer cmd = ctx.cmd;
+    ctx.targets.beginPass(cmd);
+    ctx.frame.bind(cmd, mLightingLayout, ctx.frameOffset);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLit.get(ctx.targets));
+    ctx.submitter.draw(cmd, mLightingLayout, DrawSet::Casters);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mProjective.get(ctx.targets));
+    const VkDescriptorSet set = mSets.set(kLightingSet);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0, nullptr);
+    ctx.submitter.draw(cmd, mLightingLayout, DrawSet::NonCasters);
+    vkCmdEndRenderPass(cmd);
+}
+
+void ProjectiveVulkan::execute(VulkanFrameContext& ctx) {
+    ctx.submitter.resetStats();
+    if (mPlan.noProjector) {
+        ctx.passes.skip("texture", mPlan.noProjector);
+        ctx.passes.skip("blur", mPlan.noProjector);
+    } else {
+        ctx.passes.begin("texture");
+        renderTexture(ctx);
+        ctx.passes.skip("blur", "blur 0");
+    }
+    ctx.passes.begin("lighting");
+    renderLighting(ctx);
+    mCounters = Projective::counters(ctx.submitter.stats(), ctx.scene, mResolution, mPlan.castsShadows, 0,
+                                     mPlan.clamped, mCulled);
+}
+
+} // namespace sb
