@@ -81,7 +81,8 @@ inline const std::vector<Layer>& layers() {
         // A technique's folder: its declaration (neutral), its GL form and its Vulkan form; the
         // vulkan-gl rule keeps the Vulkan form's includes free of GL.
         {"techniques/*", plus(glContract, {"vk", "techniques/vulkan"}), {"common"}},
-        {"reference", glContract, {"reference", "common"}},
+        // The judge: like a technique's folder, a GL and a Vulkan form, and each API's G-buffer.
+        {"reference", plus(glContract, {"vk", "techniques/vulkan"}), {"reference", "common"}},
         // The one table of techniques, above every technique folder and the reference.
         {"registry", plus(plus(glContract, {"vk", "techniques/vulkan", "techniques/*"}), {"reference"}), {}},
         // bench's libraries, in one order: output < options, statistics < harness < rows < measure < ...
@@ -312,13 +313,15 @@ inline void checkOutsideReferences(const std::string& file, const std::vector<st
                 out.push_back({file, int(i) + 1, "outside-reference", p.what});
 }
 
-/// A file of a Vulkan form: vk/, techniques/vulkan/, or a technique folder's *Vulkan.{h,cpp}.
+/// A file of a Vulkan form: vk/, techniques/vulkan/, a technique folder's *Vulkan.{h,cpp}, or a
+/// reference/ file naming Vulkan (ReferenceVulkan, VulkanGBufferRenderer).
 inline bool isVulkanFile(const std::string& file) {
     const std::string folder = folderOf(file);
     const std::string name = fs::path(file).stem().string();
     return folder == "vk" || folder == "techniques/vulkan" ||
            (layerOf(folder) == "techniques/*" && name.size() > 6 &&
-            name.compare(name.size() - 6, 6, "Vulkan") == 0);
+            name.compare(name.size() - 6, 6, "Vulkan") == 0) ||
+           (folder == "reference" && name.find("Vulkan") != std::string::npos);
 }
 
 /// What a GL header is: a file of the GL layers, or a system header of GL's (epoxy, EGL, GL, GLFW).
