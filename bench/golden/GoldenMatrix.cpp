@@ -227,6 +227,7 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     cell.api = "vulkan";
     std::unique_ptr<VulkanTechnique> t = TechniqueRegistry::createVulkan(TechniqueSpec{technique, {}});
     const size_t errorsBefore = vulkan.context().validationErrors();
+    vulkan.seekPath(0); // as renderCell: a scene in motion starts each cell at rest
     try {
         vulkan.prepare(*t);
     } catch (const Error& e) {
@@ -234,6 +235,9 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
         cell.unsupported = e.what();
         return cell;
     }
+    if (vulkan.moving())
+        for (uint64_t f = 0; f < kPathStep; ++f) vulkan.renderFrame(*t);
+    vulkan.seekPath(kPathStep); // the judge follows (MeasuredHarness::setPathFollower)
     vulkan.renderFrame(*t);
     VulkanTargets& targets = vulkan.targets();
     const std::vector<float> vis = targets.readVisibilityRGBA32F();
@@ -272,28 +276,31 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
 }
 
 /// The Vulkan axis of one scene (GoldenMatrix::renderScene).
-void renderVulkanCells(const std::string& scene, const std::string& camera,
+void renderVulkanCells(const std::string& scene, const std::string& camera, bool moves,
                        const std::vector<std::string>& techniques, const MatrixOptions& options,
                        const MatrixObserver& observer, std::vector<MatrixCell>& cells) {
     RunConfig gl = RunConfig::oneFrame(scene, camera, options.size, SubmitMode::Retained);
+    if (moves) gl.pathFrames = kPathFrames;
     std::unique_ptr<Harness> judge;
     std::unique_ptr<AccuracyEvaluator> evaluator;
     for (SubmitMode mode : kVulkanModes) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         config.api = RunConfig::Api::Vulkan;
         config.vulkan.validation = true;
+        if (moves) config.pathFrames = kPathFrames;
         std::unique_ptr<VulkanHarness> vulkan;
         std::string refusal;
         try {
             vulkan = std::make_unique<VulkanHarness>(config);
         } catch (const Error& e) {
             if (e.code() != ExitCode::Unsupported) throw;
-            refusal = e.what(); // a scene in motion, or no Vulkan driver at all
+            refusal = e.what(); // no Vulkan driver at all
         }
         if (vulkan && !judge) {
             judge = std::make_unique<Harness>(gl);
             evaluator = std::make_unique<AccuracyEvaluator>(*judge);
         }
+        if (vulkan) vulkan->setPathFollower(judge.get());
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, true), observer, [&] {
                 return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode, options);
@@ -367,7 +374,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
                 }
             });
     }
-    renderVulkanCells(scene, camera, techniques, options, observer, cells);
+    renderVulkanCells(scene, camera, bool(loaded.motion), techniques, options, observer, cells);
     return cells;
 }
 

@@ -277,6 +277,7 @@ std::unique_ptr<MeasuredHarness> createHarness(const RunConfig& config, std::uni
         gl.submit = SubmitMode::Retained; // the G-buffer's submission: the same triangles in any mode
         gl.dumpShadersPath.clear();       // the judge's programs are not the run's
         judge = std::make_unique<Harness>(gl);
+        harness->setPathFollower(judge.get()); // a scene in motion: judged where the frame drew it
     }
     return harness;
 }

@@ -115,6 +115,21 @@ void MeasuredHarness::seekPath(uint64_t frame) {
     moveTo(mScene.motion->timeOfFrame(frame));
     instancesMoved();
     updateFrameData();
+    syncFollower();
+}
+
+void MeasuredHarness::setPathFollower(MeasuredHarness* follower) {
+    mFollower = follower;
+    syncFollower();
+}
+
+void MeasuredHarness::syncFollower() {
+    if (!mFollower || !mFollower->moving()) return;
+    if (mFollower->mPathTime == mPathTime && mFollower->mPathFrame == mPathFrame) return;
+    mFollower->mPathFrame = mPathFrame;
+    mFollower->moveTo(mPathTime);
+    mFollower->instancesMoved();
+    mFollower->updateFrameData();
 }
 
 double MeasuredHarness::advancePath(Technique& technique) {

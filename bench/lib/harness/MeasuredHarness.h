@@ -78,6 +78,9 @@ public:
     /// Prepare, warm-up, the measured frames, the timer re-check, statistics, then one untimed census
     /// frame for the loads. The same loop on every API.
     RunResult measure(Technique& technique);
+    /// One extra frame, not timed, with every pass's work counted (the census: the submitter's draws
+    /// and, where the API counts them, a pipeline-statistics query per pass). What explain prints.
+    FrameLoads measureLoads(Technique& technique) { return census(technique); }
     /// One frame, not timed beyond its sample, with the visibility target written (what accuracy, images
     /// and the viewer read).
     virtual FrameSample renderFrame(Technique& technique) = 0;
@@ -104,6 +107,10 @@ public:
     /// accuracy evaluator judges frames along the path this way. Techniques see it at their next frame
     /// (Technique::sceneChanged).
     void seekPath(uint64_t frame);
+    /// A harness of the same configuration that judges this one's frames (bench accuracy and the matrix
+    /// on Vulkan judge with a GL harness's G-buffer): it follows this one along the path, so the reference
+    /// sees the scene the frame drew. It moves outside the timed intervals (syncFollower); null: none.
+    void setPathFollower(MeasuredHarness* follower);
 
 protected:
     /// Loads the scene, picks the camera, applies --time and --path-frames and checks the light limit;
@@ -114,6 +121,9 @@ protected:
     /// (Technique::sceneChanged), casters first (instancesMoved). Returns the milliseconds it took (0 for a
     /// static scene): part of the frame, as an application animates before it draws.
     double advancePath(Technique& technique);
+    /// Moves the path follower to this harness's place on the path (untimed: after a frame's clock
+    /// readings, or on a seek).
+    void syncFollower();
     /// The frame block's contents for the current camera, pixel shift and lights.
     const FrameUniformData& frameData() const { return mFrameData; }
     uint64_t nextFrameIndex() { return mFrameIndex++; }
@@ -167,6 +177,7 @@ private:
     TimerVerdict mVerdict;     ///< what the last run ended with
     uint64_t mFrameIndex = 0;
     PassClock mPassClock;
+    MeasuredHarness* mFollower = nullptr;
 };
 
 /// The statistics of a measured run: median, percentiles and the rest per series (CPU submit, wall, the

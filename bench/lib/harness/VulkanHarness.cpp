@@ -145,6 +145,7 @@ FrameSample VulkanHarness::renderFrame(Technique& technique) {
     const auto t2 = Clock::now();
     VulkanContext::check(vkResetFences(mContext->device(), 1, &mFence), "vkResetFences");
     recordFrameTimes(s, t0, t1, t2);
+    syncFollower(); // after the clock readings: the judge's move is not part of the frame
     return s;
 }
 
