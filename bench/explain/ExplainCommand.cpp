@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/TextColumns.h"
 #include "bench/lib/select/AutoResolver.h"
@@ -88,7 +89,44 @@ Examples:
   bench explain -t planar --scene aircraft                    self_shadowing is missing: why planar warns
   bench explain -t shadowmap -t volume --scene sphere_plane   what each pass draws, side by side
   bench explain -t vsm:blur=0 --submit instanced              the blur pass entered without work
-  bench explain -t none -t shadowmap --scene point_light      a refusal explained (exit code 3))";
+  bench explain -t none -t shadowmap --scene point_light      a refusal explained (exit code 3)
+  bench explain --api vulkan -t volume --scene sphere_plane   the same frame on Vulkan (pipeline statistics))";
+
+/// A technique of the command line: its form on the run's API, or why there is none (a technique
+/// without a Vulkan form is explained with that refusal, as one that refuses the configuration).
+struct Explained {
+    std::unique_ptr<Technique> technique;
+    std::unique_ptr<Technique> described; ///< the GL form, for the header, where `technique` is null
+    std::string refusal;
+    ExitCode code = ExitCode::Ok;
+};
+
+std::vector<Explained> createTechniques(const RunConfig& config) {
+    const Api api = config.api == RunConfig::Api::Vulkan ? Api::Vulkan : Api::GL;
+    std::vector<Explained> out;
+    for (const TechniqueSpec& spec : config.techniques) {
+        // The choice of -t auto is a timed calibration, which explain (untimed, one frame) does not make.
+        if (spec.name == AutoResolver::kName)
+            throw Error("bench explain does not take -t auto: run `bench -t auto` with these options, "
+                        "then explain the technique it chose");
+        Explained e;
+        try {
+            e.technique = TechniqueRegistry::create(spec, api);
+        } catch (const Error& error) {
+            if (error.code() != ExitCode::Unsupported) throw; // a typo fails before any frame
+            e.described = TechniqueRegistry::create(spec);
+            e.refusal = error.what();
+            e.code = error.code();
+        }
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+std::unique_ptr<MeasuredHarness> createHarness(const RunConfig& config) {
+    if (config.api == RunConfig::Api::Vulkan) return std::make_unique<VulkanHarness>(config);
+    return std::make_unique<Harness>(config);
+}
 
 } // namespace
 
@@ -96,42 +134,40 @@ int ExplainCommand::main(int argc, char** argv) {
     RunConfig config;
     bool listOnly = false;
     if (int code = RunOptions::parse(argc, argv, config, listOnly, kHelp); code >= 0) return code;
-    RunOptions::requireGl(config, "bench explain");
-    // Declared before the techniques, so destroyed after them: they release GL objects in their
+    // Declared before the techniques, so destroyed after them: they release API objects in their
     // destructors (as in RunCommand::run).
-    std::unique_ptr<Harness> harnessOwner;
-    std::vector<std::unique_ptr<GlTechnique>> techniques; // created first: a typo fails before any GL
-    for (const TechniqueSpec& spec : config.techniques) {
-        // The choice of -t auto is a timed calibration, which explain (untimed, one frame) does not make.
-        if (spec.name == AutoResolver::kName)
-            throw Error("bench explain does not take -t auto: run `bench -t auto` with these options, "
-                        "then explain the technique it chose");
-        techniques.push_back(TechniqueRegistry::create(spec));
-    }
-    harnessOwner = std::make_unique<Harness>(config);
-    Harness& harness = *harnessOwner;
+    std::unique_ptr<MeasuredHarness> harnessOwner;
+    std::vector<Explained> techniques = createTechniques(config); // created first: a typo fails first
+    harnessOwner = createHarness(config);
+    MeasuredHarness& harness = *harnessOwner;
     const Scene& scene = harness.scene();
     std::cout << "scene " << scene.name << ": " << scene.lights.size() << " light(s), "
               << scene.totalTriangles() << " triangles; " << config.width << "x" << config.height
               << ", camera " << config.camera << ", " << submitModeName(config.submit) << " submission; "
-              << harness.context().renderer << "\n";
+              << harness.rowSource().renderer << (harness.api() == Api::Vulkan ? " (vulkan)" : "") << "\n";
     ExitCode worst = ExitCode::Ok;
-    for (const auto& technique : techniques) {
-        const TechniqueInfo& info = technique->info();
-        std::cout << "\n" << info.name << " " << technique->properties().toString() << "\n";
+    for (Explained& e : techniques) {
+        const Technique& shown = e.technique ? *e.technique : *e.described;
+        const TechniqueInfo& info = shown.info();
+        std::cout << "\n" << info.name << " " << shown.properties().toString() << "\n";
         const EffectCoverage coverage = EffectCoverage::of(scene.effects, info.effects);
         printEffects(std::cout, coverage);
         try {
-            harness.prepare(*technique);
-            const FrameLoads loads = harness.measureLoads(*technique);
-            std::cout << "  permutation        " << technique->permutationKey() << "\n";
+            if (!e.technique) throw Error(e.refusal, e.code);
+            harness.prepare(*e.technique);
+            const FrameLoads loads = harness.measureLoads(*e.technique);
+            std::cout << "  permutation        " << e.technique->permutationKey() << "\n";
             printPasses(std::cout, info, loads);
-            printCounters(std::cout, technique->counters());
-        } catch (const Error& e) {
-            std::cout << "  refused            " << e.what() << " (exit code " << int(e.code()) << ")\n";
-            worst = worseExitCode(worst, e.code());
+            printCounters(std::cout, e.technique->counters());
+        } catch (const Error& error) {
+            std::cout << "  refused            " << error.what() << " (exit code " << int(error.code())
+                      << ")\n";
+            worst = worseExitCode(worst, error.code());
         }
     }
+    for (const std::string& message : harness.takeValidationMessages())
+        std::cerr << "bench: vulkan validation: " << message << "\n";
+    if (harness.validationErrors() > 0) worst = worseExitCode(worst, ExitCode::Failure);
     return int(worst);
 }
 

@@ -275,20 +275,21 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
 }
 
 /// The Vulkan axis of one scene (GoldenMatrix::renderScene).
-void renderVulkanCells(const std::string& scene, const std::string& camera,
+void renderVulkanCells(const std::string& scene, const std::string& camera, bool moves,
                        const std::vector<std::string>& techniques, const MatrixOptions& options,
                        const MatrixObserver& observer, std::vector<MatrixCell>& cells) {
     for (SubmitMode mode : kVulkanModes) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         config.api = RunConfig::Api::Vulkan;
         config.vulkan.validation = true;
+        if (moves) config.pathFrames = kPathFrames;
         std::unique_ptr<VulkanHarness> vulkan;
         std::string refusal;
         try {
             vulkan = std::make_unique<VulkanHarness>(config);
         } catch (const Error& e) {
             if (e.code() != ExitCode::Unsupported) throw;
-            refusal = e.what(); // a scene in motion, or no Vulkan driver at all
+            refusal = e.what(); // no Vulkan driver at all
         }
         // Each mode's harness judges its own frames (no GL context on the Vulkan axis).
         std::unique_ptr<AccuracyEvaluator> evaluator;
@@ -366,7 +367,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
                 }
             });
     }
-    renderVulkanCells(scene, camera, techniques, options, observer, cells);
+    renderVulkanCells(scene, camera, bool(loaded.motion), techniques, options, observer, cells);
     return cells;
 }
 

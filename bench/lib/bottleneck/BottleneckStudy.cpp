@@ -177,6 +177,7 @@ std::vector<std::string> scenesWithNear(const SweepDefinition& d) {
 /// Whether the workers will run on Mesa llvmpipe (then the study adds LP_NO_RAST=1).
 bool onLlvmpipe(const SweepDefinition& d) {
     const RunConfig config = RunOptions::parseArgs(d.commonArgs, RunConfig::Mode::Measure);
+    RunOptions::requireGl(config, "bench bottleneck");
     return createContext(config.context)->renderer.find("llvmpipe") != std::string::npos;
 }
 

@@ -59,9 +59,6 @@ public:
     void prepare(Technique& technique) override;
     /// One frame, timed. Returns the CPU/wall sample; GPU times arrive later through the ring.
     FrameSample renderFrame(Technique& technique) override;
-    /// One extra frame, not timed, each pass wrapped in pipeline-statistics queries where the context
-    /// has them (WorkCensus).
-    FrameLoads measureLoads(Technique& technique) { return census(technique); }
     std::vector<unsigned char> readColor() override { return mTargets->readColorRGBA8(); }
     std::vector<float> readVisibility() override { return mTargets->readVisibilityRGBA32F(); }
     /// reference/GBufferRenderer.h with this harness's submitter, programs and projection * view.

@@ -79,6 +79,9 @@ public:
     /// Prepare, warm-up, the measured frames, the timer re-check, statistics, then one untimed census
     /// frame for the loads. The same loop on every API.
     RunResult measure(Technique& technique);
+    /// One extra frame, not timed, with every pass's work counted (the census: the submitter's draws
+    /// and, where the API counts them, a pipeline-statistics query per pass). What explain prints.
+    FrameLoads measureLoads(Technique& technique) { return census(technique); }
     /// One frame, not timed beyond its sample, with the visibility target written (what accuracy, images
     /// and the viewer read).
     virtual FrameSample renderFrame(Technique& technique) = 0;

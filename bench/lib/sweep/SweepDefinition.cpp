@@ -163,7 +163,8 @@ KeyValues identityColumns(const std::vector<std::string>& v) {
             {"scale", csvNumber(std::stod(v[5]))},
             {"tessellation", v[6]},
             {"tess_factor", csvNumber(std::stod(v[7]))},
-            {"instances", v[8] == "default" ? "" : v[8]}};
+            {"instances", v[8] == "default" ? "" : v[8]},
+            {"api", v[9]}};
 }
 
 template <typename T>
@@ -217,7 +218,7 @@ SweepDefinition SweepDefinition::fromJson(const nlohmann::json& doc, const std::
     root.requireObject({"name",    "mode",        "quality_sweep", "techniques", "scenes",  "instances",
                         "scale",   "tess",        "tess_factor",   "submit",     "camera",  "size",
                         "light",   "repeat",      "frames",        "warmup",     "seconds", "seed",
-                        "backend", "ref_samples", "stability",     "args"});
+                        "backend", "ref_samples", "stability",     "args",       "api"});
     SweepDefinition d;
     d.name = root.has("name") ? root["name"].string() : defaultName;
     if (root.has("mode")) {
@@ -237,7 +238,8 @@ SweepDefinition SweepDefinition::fromJson(const nlohmann::json& doc, const std::
                                                                       {"submit", &d.axes.submit},
                                                                       {"camera", &d.axes.camera},
                                                                       {"size", &d.axes.size},
-                                                                      {"light", &d.axes.light}};
+                                                                      {"light", &d.axes.light},
+                                                                      {"api", &d.axes.api}};
     for (const auto& [key, axis] : axes)
         if (root.has(key)) *axis = axisValues(root[key]);
     if (root.has("repeat")) d.repeat = int(root["repeat"].integer(1, 1000, "an integer in [1, 1000]"));
@@ -276,7 +278,7 @@ SweepPlan SweepDefinition::expand() const {
         specCount = std::min<uint64_t>(UINT64_MAX - 1, specCount) + techniqueCount(t);
     uint64_t combinations = 1;
     for (const auto* axis : {&axes.scenes, &axes.instances, &axes.scale, &axes.tess, &axes.tessFactor,
-                             &axes.submit, &axes.camera, &axes.size, &axes.light})
+                             &axes.submit, &axes.camera, &axes.size, &axes.light, &axes.api})
         combinations = saturatingProduct(combinations, std::max<uint64_t>(1, axis->size()));
     checkSize(saturatingProduct(saturatingProduct(specCount, combinations), uint64_t(repeat)),
               std::to_string(specCount) + " technique specs x " + std::to_string(combinations) +
@@ -312,7 +314,8 @@ SweepPlan SweepDefinition::expand() const {
                       orDefault(axes.submit, std::string("retained")),
                       orDefault(axes.camera, std::string("far")),
                       orDefault(axes.size, std::string("1024x1024")),
-                      orDefault(axes.light, std::string("scene"))};
+                      orDefault(axes.light, std::string("scene")),
+                      orDefault(axes.api, std::string("gl"))};
     SceneCheck scenes;
     // Outer to inner (see the header); an axis value equal to `omit` adds no option (bench's default).
     const std::vector<Axis> product{{"scene", "--scene", a.scenes, ""},
@@ -323,7 +326,8 @@ SweepPlan SweepDefinition::expand() const {
                                     {"scale", "--scale", a.scale, ""},
                                     {"tess", "--tess", a.tess, "default"},
                                     {"tess_factor", "--tess-factor", a.tessFactor, ""},
-                                    {"instances", "--instances", a.instances, "default"}};
+                                    {"instances", "--instances", a.instances, "default"},
+                                    {"api", "--api", a.api, "gl"}};
     forEachCombination(product, [&](const std::vector<std::string>& values) {
         std::vector<std::string> args;
         for (size_t i = 0; i < product.size(); ++i)

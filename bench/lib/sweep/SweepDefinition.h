@@ -13,13 +13,14 @@
 //     "scenes": ["aircraft", "teapot"],    "instances": [1, 50, 100, 200],   "scale": [1, 10],
 //     "tess": [8, 16],   "tess_factor": [0.5, 1, 2],   "submit": ["retained", "immediate"],
 //     "camera": ["far", "near"],   "size": ["512x512", "1024x1024"],   "light": ["directional", "spot"],
+//     "api": ["gl", "vulkan"],                          (bench's --api: the rows' `api` column says which)
 //     "repeat": 3,                                      (rounds of A/B interleaving per combination)
 //     "frames": 30, "warmup": 5, "seconds": 0, "seed": 1, "backend": "egl-surfaceless",
 //     "ref_samples": 64, "stability": true, "args": ["--max-memory-gib", "4"]   (passed to every run)
 //   }
 // Axes left out take bench's defaults (a single value). "instances": "default" keeps the scene's count.
 // Order of the product, outer to inner: scene, light, camera, size, submit, scale, tess, tess_factor,
-// instances (so the points of an instance curve run next to each other).
+// instances, api (so the points of an instance curve run next to each other, and each point's APIs).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@ namespace sb {
 
 struct SweepAxes {
     std::vector<std::string> techniques, scenes, instances, scale, tess, tessFactor, submit, camera, size,
-        light;
+        light, api;
 };
 
 class SweepDefinition {

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bench/lib/harness/Harness.h"
+#include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/measure/Measurement.h"
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/ResultColumns.h"
@@ -44,17 +45,25 @@ void injectFault(size_t index) {
 
 /// Runs the rows; reports each on stdout. Throws on the first failure, with `current` naming it.
 void runRows(const SweepJob& job, const RunConfig& config, size_t& current) {
-    std::unique_ptr<Harness> harness; // outlives the techniques (they release GL objects)
-    std::map<std::string, std::unique_ptr<GlTechnique>> techniques;
+    // The harness outlives the techniques (they release API objects).
+    std::unique_ptr<MeasuredHarness> harness;
+    const bool vulkan = config.api == RunConfig::Api::Vulkan;
+    std::map<std::string, std::unique_ptr<Technique>> techniques;
     for (const PlannedRow& row : job.rows)
         if (!techniques.count(row.technique))
-            techniques[row.technique] = TechniqueRegistry::create(TechniqueSpec::parse(row.technique));
+            techniques[row.technique] = TechniqueRegistry::create(TechniqueSpec::parse(row.technique),
+                                                                  vulkan ? Api::Vulkan : Api::GL);
     current = job.rows.front().index; // a failure to start is the first row's
-    harness = std::make_unique<Harness>(config);
-    if (job.timer)
+    if (vulkan)
+        harness = std::make_unique<VulkanHarness>(config);
+    else
+        harness = std::make_unique<Harness>(config);
+    // The sweep's verdict is the GL timer's: a Vulkan worker checks its own timestamps.
+    if (job.timer && !vulkan)
         harness->setTimerVerdict(*job.timer);
     else if (config.checkTimer)
         harness->calibrateTimer();
+    // Accuracy is judged by the harness that rendered the frame (its own G-buffer), on either API.
     std::unique_ptr<AccuracyEvaluator> evaluator;
     if (config.mode == RunConfig::Mode::Accuracy) evaluator = std::make_unique<AccuracyEvaluator>(*harness);
     AccuracyOptions options;
