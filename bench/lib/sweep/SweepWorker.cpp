@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/measure/Measurement.h"
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/ResultColumns.h"
@@ -43,19 +44,27 @@ void injectFault(size_t index) {
 
 /// Runs the rows; reports each on stdout. Throws on the first failure, with `current` naming it.
 void runRows(const SweepJob& job, const RunConfig& config, size_t& current) {
-    std::unique_ptr<Harness> harness; // outlives the techniques (they release GL objects)
-    std::map<std::string, std::unique_ptr<GlTechnique>> techniques;
+    std::unique_ptr<MeasuredHarness> harness; // outlives the techniques (they release API objects)
+    std::map<std::string, std::unique_ptr<Technique>> techniques;
+    // --api vulkan among the job's arguments: the Vulkan harness and forms (measurement only: accuracy
+    // is refused by RunOptions::parseArgs).
+    const bool vulkan = config.api == RunConfig::Api::Vulkan;
     for (const PlannedRow& row : job.rows)
         if (!techniques.count(row.technique))
-            techniques[row.technique] = TechniqueRegistry::create(TechniqueSpec::parse(row.technique));
+            techniques[row.technique] = TechniqueRegistry::create(TechniqueSpec::parse(row.technique),
+                                                                  vulkan ? Api::Vulkan : Api::GL);
     current = job.rows.front().index; // a failure to start is the first row's
-    harness = std::make_unique<Harness>(config);
+    if (vulkan)
+        harness = std::make_unique<VulkanHarness>(config);
+    else
+        harness = std::make_unique<Harness>(config);
     if (job.timer)
         harness->setTimerVerdict(*job.timer);
     else if (config.checkTimer)
         harness->calibrateTimer();
     std::unique_ptr<AccuracyEvaluator> evaluator;
-    if (config.mode == RunConfig::Mode::Accuracy) evaluator = std::make_unique<AccuracyEvaluator>(*harness);
+    if (config.mode == RunConfig::Mode::Accuracy)
+        evaluator = std::make_unique<AccuracyEvaluator>(static_cast<Harness&>(*harness));
     AccuracyOptions options;
     options.light = config.accuracyLight;
     options.referenceSamples = config.referenceSamples;
