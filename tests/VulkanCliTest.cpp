@@ -168,8 +168,6 @@ TEST(VulkanCli, GlOnlyCommandsSaySo) {
     const auto apiColumn = std::find(swept.header.begin(), swept.header.end(), col::kApi);
     ASSERT_NE(apiColumn, swept.header.end());
     EXPECT_EQ(swept.rows[0][size_t(apiColumn - swept.header.begin())], "vulkan");
-    r = runCommand(vulkan("-t auto"));
-    EXPECT_EQ(r.exitCode, 3) << r.output;
     r = runCommand(vulkan("--scene aircraft_day -t shadowmap"));
     EXPECT_EQ(r.exitCode, 3) << r.output;
     EXPECT_NE(r.output.find("motion"), std::string::npos) << r.output;

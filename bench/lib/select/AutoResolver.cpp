@@ -1,5 +1,6 @@
 #include "bench/lib/select/AutoResolver.h"
 
+#include <memory>
 #include <ostream>
 
 #include "bench/lib/output/TextColumns.h"
@@ -9,12 +10,29 @@
 
 namespace sb {
 
-AutoResolution AutoResolver::resolve(Harness& harness, const RunConfig& config, std::ostream& log) {
+namespace {
+
+/// The GL harness that judges Vulkan candidates: the same scene, camera and size; retained submission
+/// (the G-buffer's: the same triangles in any mode), as bench accuracy --api vulkan's judge.
+std::unique_ptr<Harness> judgeFor(const MeasuredHarness& harness) {
+    if (harness.api() == Api::GL) return nullptr;
+    RunConfig gl = harness.config();
+    gl.api = RunConfig::Api::GL;
+    gl.submit = SubmitMode::Retained;
+    gl.dumpShadersPath.clear();
+    return std::make_unique<Harness>(gl);
+}
+
+} // namespace
+
+AutoResolution AutoResolver::resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log) {
     CalibrationOptions options;
     options.cachePath = config.calibrationPath;
     options.seedPath = config.calibrationSeedPath;
     options.refresh = config.recalibrate;
-    std::vector<AutoCandidate> candidates = Calibration::candidates(harness, options, log);
+    const std::unique_ptr<Harness> judge = judgeFor(harness);
+    std::vector<AutoCandidate> candidates =
+        Calibration::candidates(harness, judge ? *judge : static_cast<Harness&>(harness), options, log);
     const EffectMask request = harness.scene().effects;
     const AutoChoice choice = AutoSelection::choose(request, candidates, config.autoMaxWrongPct);
     AutoResolution r;
