@@ -156,7 +156,7 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
 
 /// -t auto on the retained harness, as `bench -t auto` resolves it, with a calibration of its own (a
 /// temporary cache, measured afresh) so no earlier run's cache decides.
-AutoPick resolveAuto(Harness& harness) {
+AutoPick resolveAuto(MeasuredHarness& harness, Harness* judge = nullptr) {
     RunConfig config = harness.config();
     const std::filesystem::path cache = std::filesystem::temp_directory_path() /
                                         ("shadowbench-matrix-auto-" + std::to_string(::getpid()) + ".csv");
@@ -170,7 +170,7 @@ AutoPick resolveAuto(Harness& harness) {
             std::filesystem::remove(path, ignored);
         }
     } removeCache{cache};
-    const AutoResolution r = AutoResolver::resolve(harness, config, log);
+    const AutoResolution r = AutoResolver::resolve(harness, config, log, judge);
     AutoPick pick;
     pick.spec = r.spec.toString();
     pick.reason = r.reason;
@@ -219,13 +219,15 @@ MatrixCell unsupportedCell(const std::string& technique, const std::string& scen
 /// One Vulkan cell: rendered by `vulkan`, judged (retained mode) against `evaluator`'s GL reference of
 /// the same frame. A validation error fails the cell.
 MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator, const std::string& technique,
-                            const std::string& scene, const MatrixOptions& options) {
+                            const std::string& scene, const MatrixOptions& options,
+                            const TechniqueSpec* spec = nullptr) {
     MatrixCell cell;
     cell.technique = technique;
     cell.scene = scene;
     cell.mode = vulkan.config().submit;
     cell.api = "vulkan";
-    std::unique_ptr<VulkanTechnique> t = TechniqueRegistry::createVulkan(TechniqueSpec{technique, {}});
+    std::unique_ptr<VulkanTechnique> t =
+        TechniqueRegistry::createVulkan(spec ? *spec : TechniqueSpec{technique, {}});
     const size_t errorsBefore = vulkan.context().validationErrors();
     try {
         vulkan.prepare(*t);
@@ -252,14 +254,38 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     return cell;
 }
 
+/// -t auto on Vulkan, as `bench --api vulkan -t auto` resolves it: calibrated among the Vulkan forms on
+/// the first mode's Vulkan harness (a calibration of its own, kept for the other mode as the GL cells
+/// keep theirs), the chosen technique rendered and held to its golden as the GL auto cells are.
+MatrixCell vulkanAutoCell(VulkanHarness& vulkan, Harness& judge, AccuracyEvaluator& evaluator,
+                          std::optional<AutoPick>& pick, std::string& refusal, const std::string& scene,
+                          SubmitMode mode, const MatrixOptions& options) {
+    if (!pick && refusal.empty()) {
+        try {
+            pick = resolveAuto(vulkan, &judge);
+        } catch (const Error& e) {
+            if (e.code() != ExitCode::Unsupported) throw;
+            refusal = e.what();
+        }
+    }
+    if (!pick) return unsupportedCell(AutoResolver::kName, scene, mode, "vulkan", refusal);
+    const TechniqueSpec chosen = TechniqueSpec::parse(pick->spec);
+    MatrixCell cell = renderVulkanCell(vulkan, evaluator, chosen.name, scene, options, &chosen);
+    cell.technique = AutoResolver::kName;
+    cell.autoPick = pick;
+    cell.autoPick->effects = TechniqueRegistry::createVulkan(chosen)->info().effects;
+    return cell;
+}
+
 /// One Vulkan cell of the axis: unsupported with the reason where it cannot run, else rendered.
-MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const std::string& refusal,
-                      const std::string& technique, const std::string& scene, SubmitMode mode,
-                      const MatrixOptions& options) {
+/// `judge`, `autoPick`, `autoRefusal`: -t auto's GL judge and Vulkan choice for the scene (vulkanAutoCell).
+MatrixCell vulkanCell(VulkanHarness* vulkan, Harness* judge, AccuracyEvaluator* evaluator,
+                      const std::string& refusal, const std::string& technique, const std::string& scene,
+                      SubmitMode mode, const MatrixOptions& options, std::optional<AutoPick>& autoPick,
+                      std::string& autoRefusal) {
     if (!vulkan) return unsupportedCell(technique, scene, mode, "vulkan", refusal);
     if (technique == AutoResolver::kName)
-        return unsupportedCell(technique, scene, mode, "vulkan",
-                               "-t auto chooses among GL techniques (name one with --api vulkan)");
+        return vulkanAutoCell(*vulkan, *judge, *evaluator, autoPick, autoRefusal, scene, mode, options);
     if (!TechniqueRegistry::hasVulkan(technique))
         return unsupportedCell(technique, scene, mode, "vulkan", technique + " has no Vulkan form yet");
     try {
@@ -278,6 +304,8 @@ void renderVulkanCells(const std::string& scene, const std::string& camera,
     RunConfig gl = RunConfig::oneFrame(scene, camera, options.size, SubmitMode::Retained);
     std::unique_ptr<Harness> judge;
     std::unique_ptr<AccuracyEvaluator> evaluator;
+    std::optional<AutoPick> autoPick; // -t auto's Vulkan choice, resolved on the first mode's harness
+    std::string autoRefusal;          // or why nothing qualifies
     for (SubmitMode mode : kVulkanModes) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         config.api = RunConfig::Api::Vulkan;
@@ -296,7 +324,8 @@ void renderVulkanCells(const std::string& scene, const std::string& camera,
         }
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, true), observer, [&] {
-                return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode, options);
+                return vulkanCell(vulkan.get(), judge.get(), evaluator.get(), refusal, technique, scene, mode,
+                                  options, autoPick, autoRefusal);
             });
     }
 }

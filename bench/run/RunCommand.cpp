@@ -303,11 +303,12 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
 
     harnessOwner = createHarness(config, judge);
     MeasuredHarness& harness = *harnessOwner;
-    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows (either API).
+    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows (either
+    // API).
     std::vector<CsvRow> autoColumns(configured.size());
     for (size_t i = 0; i < configured.size(); ++i) {
         if (configured[i].technique || configured[i].refused) continue;
-        const AutoResolution chosen = AutoResolver::resolve(harness, config, logStream(config));
+        const AutoResolution chosen = AutoResolver::resolve(harness, config, logStream(config), judge.get());
         configured[i].spec = specs[i] = chosen.spec;
         configured[i].technique = TechniqueRegistry::create(chosen.spec, harness.api());
         autoColumns[i] = chosen.columns();

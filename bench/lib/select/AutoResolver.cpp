@@ -14,8 +14,8 @@ namespace {
 
 /// The GL harness that judges Vulkan candidates: the same scene, camera and size; retained submission
 /// (the G-buffer's: the same triangles in any mode), as bench accuracy --api vulkan's judge.
-std::unique_ptr<Harness> judgeFor(const MeasuredHarness& harness) {
-    if (harness.api() == Api::GL) return nullptr;
+std::unique_ptr<Harness> judgeFor(const MeasuredHarness& harness, const Harness* given) {
+    if (harness.api() == Api::GL || given) return nullptr;
     RunConfig gl = harness.config();
     gl.api = RunConfig::Api::GL;
     gl.submit = SubmitMode::Retained;
@@ -25,14 +25,15 @@ std::unique_ptr<Harness> judgeFor(const MeasuredHarness& harness) {
 
 } // namespace
 
-AutoResolution AutoResolver::resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log) {
+AutoResolution AutoResolver::resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log,
+                                     Harness* judge) {
     CalibrationOptions options;
     options.cachePath = config.calibrationPath;
     options.seedPath = config.calibrationSeedPath;
     options.refresh = config.recalibrate;
-    const std::unique_ptr<Harness> judge = judgeFor(harness);
-    std::vector<AutoCandidate> candidates =
-        Calibration::candidates(harness, judge ? *judge : static_cast<Harness&>(harness), options, log);
+    const std::unique_ptr<Harness> made = judgeFor(harness, judge);
+    Harness& judging = made ? *made : judge ? *judge : static_cast<Harness&>(harness);
+    std::vector<AutoCandidate> candidates = Calibration::candidates(harness, judging, options, log);
     const EffectMask request = harness.scene().effects;
     const AutoChoice choice = AutoSelection::choose(request, candidates, config.autoMaxWrongPct);
     AutoResolution r;

@@ -28,9 +28,11 @@ public:
     static constexpr const char* kName = "auto";
     /// Calibrates or reads the cache, chooses, prints the candidate table and the choice to `log`.
     /// On Vulkan the candidates are measured on `harness` with their Vulkan forms and judged through a
-    /// GL harness of the same configuration made here (Calibration.h). Throws Error(Unsupported) naming
-    /// the request and the bound when no candidate qualifies.
-    static AutoResolution resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log);
+    /// GL harness of the same configuration: `judge` where the caller has one (its GL context stays
+    /// current), else one made here for the calibration (Calibration.h). Throws Error(Unsupported)
+    /// naming the request and the bound when no candidate qualifies.
+    static AutoResolution resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log,
+                                  Harness* judge = nullptr);
 };
 
 } // namespace sb
