@@ -169,3 +169,27 @@ TEST(AutoCli, APointLightIsRefusedWithEveryWorkingOmniConfigurationAndAutoTriesT
             << spec << " not measured within the bound: " << candidates;
     }
 }
+
+// On Vulkan, -t auto calibrates on the API it runs on: the candidates' Vulkan forms measured with the
+// Vulkan harness, cached under api vulkan; a GL run with the same cache measures its own candidates (the
+// two APIs' rows never answer for each other), and a second Vulkan run reads its rows back.
+TEST(AutoCli, CalibratesOnVulkanWithItsFormsAndKeepsTheCacheApart) {
+    const std::string dir = test::freshDir("auto-vulkan");
+    const std::string cache = dir + "/calibration.csv", csv = dir + "/r.csv";
+    const auto vulkan =
+        runCommand(kBench + " --api vulkan" + kRun + " --calibration " + cache + " --csv " + csv);
+    ASSERT_EQ(vulkan.exitCode, 0) << vulkan.output;
+    const auto rows = test::csvRowMaps(csv);
+    ASSERT_EQ(rows.size(), 1u) << vulkan.output;
+    EXPECT_EQ(rows[0].at(col::kApi), "vulkan");
+    EXPECT_FALSE(rows[0].at(col::kAutoChoice).empty()) << vulkan.output;
+    for (const auto& row : test::csvRowMaps(cache)) EXPECT_EQ(row.at("api"), "vulkan") << row.at("candidate");
+    const std::regex measured("[1-9][0-9]* measured now");
+    EXPECT_TRUE(std::regex_search(vulkan.output, measured)) << vulkan.output;
+    const auto gl = runCommand(kBench + kRun + " --calibration " + cache);
+    ASSERT_EQ(gl.exitCode, 0) << gl.output;
+    EXPECT_TRUE(std::regex_search(gl.output, measured)) << "GL read Vulkan's rows:\n" << gl.output;
+    const auto again = runCommand(kBench + " --api vulkan" + kRun + " --calibration " + cache);
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_NE(again.output.find(", 0 measured now"), std::string::npos) << again.output;
+}

@@ -3,6 +3,7 @@
 //   fill:   a full-screen pass of 100 arithmetic steps per pixel, no geometry;
 //   vertex: a million tiny triangles (synthetic_triangles: 256 spheres x 4032 triangles, a few pixels each);
 //   cpu:    10000 two-triangle quads in immediate mode (synthetic_draws: draw calls, next to no work).
+// The same three on Vulkan (--api vulkan: every run of the study draws with the Vulkan forms).
 // The label needs a share >= 0.5; measured margins on llvmpipe are wide (fill 0.91-0.94, vertex 0.91-0.98,
 // cpu 0.89-0.95 at 128^2-512^2), so timing noise from tests running beside this one cannot flip it.
 #include <filesystem>
@@ -30,6 +31,14 @@ const KnownWorkload kWorkloads[] = {
     {"fill", "-t synthetic:fragment_iterations=100:draw_scene=false --scene sphere_plane", "fill"},
     {"vertex", "-t synthetic --scene synthetic_triangles", "vertex"},
     {"cpu", "-t synthetic --scene synthetic_draws --submit immediate", "cpu"},
+    // The same claim on Vulkan (lavapipe): the workloads' Vulkan forms, the study's Vulkan submission
+    // switch (instanced), and retained submission as the CPU workload (Vulkan has no immediate mode: its
+    // 10000 per-instance draws are the CPU's work). Measured shares on lavapipe at 256^2 on a loaded
+    // machine: fill 0.93, vertex 0.75, cpu 0.94.
+    {"vulkan_fill", "--api vulkan -t synthetic:fragment_iterations=100:draw_scene=false --scene sphere_plane",
+     "fill"},
+    {"vulkan_vertex", "--api vulkan -t synthetic --scene synthetic_triangles", "vertex"},
+    {"vulkan_cpu", "--api vulkan -t synthetic --scene synthetic_draws", "cpu"},
 };
 
 void PrintTo(const KnownWorkload& w, std::ostream* os) {

@@ -162,8 +162,6 @@ TEST(VulkanCli, GlOnlyCommandsSaySo) {
     // bench sweep has no --api option (2): a sweep file names the API (ASweepRunsWhereItsFileSays).
     auto r = runCommand(kBench + " sweep --api vulkan -t shadowmap -n 1,2");
     EXPECT_EQ(r.exitCode, 2) << r.output;
-    r = runCommand(vulkan("-t auto"));
-    EXPECT_EQ(r.exitCode, 3) << r.output;
 }
 
 TEST(VulkanCli, ASceneInMotionMovesOnVulkanAsOnGl) {

@@ -17,9 +17,10 @@ namespace sb {
 namespace {
 
 const char* kFooter = R"(Perturbations (each its own worker process, techniques interleaved inside):
-  baseline; submit_immediate (CPU up; submit_retained from an immediate base); scale_x10_near and
+  baseline; submit_immediate (CPU up; submit_retained from an immediate base; with --api vulkan, which
+  has no immediate mode, submit_instanced: CPU down); scale_x10_near and
   scale_x0.01 (fill up/down at equal vertex count, thesis section 6.2); size_half, size_double (fill
-  only); tess_half, tess_double (vertex only); lp_no_rast (Mesa llvmpipe: rasteriser off).
+  only); tess_half, tess_double (vertex only); lp_no_rast (Mesa llvmpipe, lavapipe: rasteriser off).
 Each technique is classified from a fit of frame time against the loads measured in an untimed
 census frame: CPU load = GL calls issued; vertex load = primitives submitted (not vertex shader
 invocations, which the submission mode changes by itself); fill load = fragment shader invocations.
@@ -30,6 +31,7 @@ Examples:
   bench bottleneck -t shadowmap --scene aircraft,teapot --frames 10 --csv bn.csv --resume
   bench bottleneck --from bn.csv                       classify rows measured before
   bench bottleneck -t synthetic:fragment_iterations=200:draw_scene=false --scene sphere_plane --csv f.csv
+  bench bottleneck --api vulkan -t shadowmap --scene aircraft --csv vk.csv   the Vulkan forms on lavapipe
 
 Writes the measurement rows to --csv and the classification to --classes (default: <csv>_classes.csv).)";
 
@@ -74,6 +76,10 @@ int BottleneckCommand::main(int argc, char** argv) {
     app.add_option("--format", format, "stdout: " + rowFormatChoices() + " (the classification)")
         ->capture_default_str();
     axes.add(app);
+    std::string api = "gl";
+    app.add_option("--api", api, "gl or vulkan: the API every run of the study draws with")
+        ->check(CLI::IsMember({"gl", "vulkan"}))
+        ->capture_default_str();
     std::string driver; // acted on by BenchApp: the process already runs on it
     DriverOption::add(app, driver);
     if (int code = parseCli(app, argc, argv, "bench bottleneck"); code >= 0) return code;
@@ -94,6 +100,9 @@ int BottleneckCommand::main(int argc, char** argv) {
     // --frames, --seconds or --warmup replaces these, as it replaces a sweep file's).
     definition.commonArgs = {"--frames", "20", "--warmup", "3"};
     axes.applyTo(definition);
+    // Every run draws with the API asked for: the workers take it from the common arguments, and the
+    // plan picks the submission switch the API can express.
+    if (api == "vulkan") definition.commonArgs.insert(definition.commonArgs.end(), {"--api", "vulkan"});
     const SweepPlan plan = BottleneckStudy::plan(definition);
     SweepRunOptions options;
     options.csvPath = csv;

@@ -156,7 +156,7 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
 
 /// -t auto on the retained harness, as `bench -t auto` resolves it, with a calibration of its own (a
 /// temporary cache, measured afresh) so no earlier run's cache decides.
-AutoPick resolveAuto(Harness& harness) {
+AutoPick resolveAuto(MeasuredHarness& harness) {
     RunConfig config = harness.config();
     const std::filesystem::path cache = std::filesystem::temp_directory_path() /
                                         ("shadowbench-matrix-auto-" + std::to_string(::getpid()) + ".csv");
@@ -220,13 +220,15 @@ MatrixCell unsupportedCell(const std::string& technique, const std::string& scen
 /// frames at the samples its own G-buffer places), as renderCell judges a GL cell: the same frame of a
 /// path, each light's frame rendered again. A validation error fails the cell.
 MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator, const std::string& technique,
-                            const std::string& scene, const MatrixOptions& options) {
+                            const std::string& scene, const MatrixOptions& options,
+                            const TechniqueSpec* spec = nullptr) {
     MatrixCell cell;
     cell.technique = technique;
     cell.scene = scene;
     cell.mode = vulkan.config().submit;
     cell.api = "vulkan";
-    std::unique_ptr<VulkanTechnique> t = TechniqueRegistry::createVulkan(TechniqueSpec{technique, {}});
+    std::unique_ptr<VulkanTechnique> t =
+        TechniqueRegistry::createVulkan(spec ? *spec : TechniqueSpec{technique, {}});
     const size_t errorsBefore = vulkan.context().validationErrors();
     vulkan.seekPath(0); // a scene in motion starts each cell at rest
     try {
@@ -255,14 +257,38 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     return cell;
 }
 
+/// -t auto on Vulkan, as `bench --api vulkan -t auto` resolves it: calibrated among the Vulkan forms on
+/// the first mode's Vulkan harness (a calibration of its own, kept for the other mode as the GL cells
+/// keep theirs), the chosen technique rendered and held to its golden as the GL auto cells are.
+MatrixCell vulkanAutoCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
+                          std::optional<AutoPick>& pick, std::string& refusal, const std::string& scene,
+                          SubmitMode mode, const MatrixOptions& options) {
+    if (!pick && refusal.empty()) {
+        try {
+            pick = resolveAuto(vulkan);
+        } catch (const Error& e) {
+            if (e.code() != ExitCode::Unsupported) throw;
+            refusal = e.what();
+        }
+    }
+    if (!pick) return unsupportedCell(AutoResolver::kName, scene, mode, "vulkan", refusal);
+    const TechniqueSpec chosen = TechniqueSpec::parse(pick->spec);
+    MatrixCell cell = renderVulkanCell(vulkan, evaluator, chosen.name, scene, options, &chosen);
+    cell.technique = AutoResolver::kName;
+    cell.autoPick = pick;
+    cell.autoPick->effects = TechniqueRegistry::createVulkan(chosen)->info().effects;
+    return cell;
+}
+
 /// One Vulkan cell of the axis: unsupported with the reason where it cannot run, else rendered.
-MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const std::string& refusal,
-                      const std::string& technique, const std::string& scene, SubmitMode mode,
-                      const MatrixOptions& options) {
+/// `autoPick`, `autoRefusal`: -t auto's Vulkan choice for the scene (vulkanAutoCell).
+MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator,
+                      const std::string& refusal, const std::string& technique, const std::string& scene,
+                      SubmitMode mode, const MatrixOptions& options, std::optional<AutoPick>& autoPick,
+                      std::string& autoRefusal) {
     if (!vulkan) return unsupportedCell(technique, scene, mode, "vulkan", refusal);
     if (technique == AutoResolver::kName)
-        return unsupportedCell(technique, scene, mode, "vulkan",
-                               "-t auto chooses among GL techniques (name one with --api vulkan)");
+        return vulkanAutoCell(*vulkan, *evaluator, autoPick, autoRefusal, scene, mode, options);
     if (!TechniqueRegistry::hasVulkan(technique))
         return unsupportedCell(technique, scene, mode, "vulkan", technique + " has no Vulkan form yet");
     try {
@@ -278,6 +304,8 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
 void renderVulkanCells(const std::string& scene, const std::string& camera, bool moves,
                        const std::vector<std::string>& techniques, const MatrixOptions& options,
                        const MatrixObserver& observer, std::vector<MatrixCell>& cells) {
+    std::optional<AutoPick> autoPick; // -t auto's Vulkan choice, resolved on the first mode's harness
+    std::string autoRefusal;          // or why nothing qualifies
     for (SubmitMode mode : kVulkanModes) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         config.api = RunConfig::Api::Vulkan;
@@ -296,7 +324,8 @@ void renderVulkanCells(const std::string& scene, const std::string& camera, bool
         if (vulkan) evaluator = std::make_unique<AccuracyEvaluator>(*vulkan);
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, true), observer, [&] {
-                return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode, options);
+                return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode,
+                                  options, autoPick, autoRefusal);
             });
     }
 }

@@ -247,11 +247,7 @@ std::vector<Configured> createTechniques(const RunConfig& config, const std::vec
     std::vector<Configured> out;
     for (const TechniqueSpec& spec : specs) {
         Configured c{spec, nullptr, std::nullopt};
-        if (isAuto(spec)) {
-            if (api == Api::Vulkan)
-                throw Error("-t auto chooses among GL techniques; with --api vulkan name the technique",
-                            ExitCode::Unsupported);
-        } else {
+        if (!isAuto(spec)) { // -t auto is resolved on the run's harness, on its API
             try {
                 c.technique = TechniqueRegistry::create(spec, api);
             } catch (const Error& e) {
@@ -298,14 +294,14 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
 
     harnessOwner = createHarness(config);
     MeasuredHarness& harness = *harnessOwner;
-    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows (GL).
+    // `-t auto` becomes the technique the calibration chooses, with the choice recorded in its rows (either
+    // API).
     std::vector<CsvRow> autoColumns(configured.size());
     for (size_t i = 0; i < configured.size(); ++i) {
         if (configured[i].technique || configured[i].refused) continue;
-        const AutoResolution chosen =
-            AutoResolver::resolve(static_cast<Harness&>(harness), config, logStream(config));
+        const AutoResolution chosen = AutoResolver::resolve(harness, config, logStream(config));
         configured[i].spec = specs[i] = chosen.spec;
-        configured[i].technique = TechniqueRegistry::create(chosen.spec, Api::GL);
+        configured[i].technique = TechniqueRegistry::create(chosen.spec, harness.api());
         autoColumns[i] = chosen.columns();
     }
     const std::vector<std::string> labels = imageLabels(configured);

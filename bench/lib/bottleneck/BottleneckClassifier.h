@@ -46,7 +46,10 @@ namespace sb {
 namespace perturbation {
 inline constexpr const char* kBaseline = "baseline";
 inline constexpr const char* kSubmitImmediate = "submit_immediate"; ///< baseline retained
-inline constexpr const char* kSubmitRetained = "submit_retained";   ///< baseline immediate
+inline constexpr const char* kSubmitRetained = "submit_retained";   ///< baseline immediate or instanced
+/// Vulkan (no immediate mode), baseline retained: the per-instance draws become one per mesh and run,
+/// CPU load down at equal vertex and fill load.
+inline constexpr const char* kSubmitInstanced = "submit_instanced";
 inline constexpr const char* kScaleNear = "scale_x10_near";
 inline constexpr const char* kScaleSmall = "scale_x0.01";
 inline constexpr const char* kSizeHalf = "size_half";

@@ -17,6 +17,7 @@
 #include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
 #include "scenes/SceneLoader.h"
+#include "vk/VulkanContext.h"
 
 namespace sb {
 
@@ -60,14 +61,20 @@ struct Perturbation {
     std::function<void(Setting&)> apply;
 };
 
-std::vector<Perturbation> perturbationsFor(const Setting& base, bool llvmpipe, bool hasNear) {
+/// The submission switch: CPU load up (immediate) or, on Vulkan, which has no immediate mode, down
+/// (instanced); back to retained from a base that is already there.
+Perturbation submissionSwitch(const Setting& base, bool vulkan) {
+    const std::string mode = base.get(col::kSubmit);
+    const bool switchBack = mode == (vulkan ? "instanced" : "immediate");
+    const std::string to = switchBack ? "retained" : vulkan ? "instanced" : "immediate";
+    const char* name = switchBack ? p::kSubmitRetained : vulkan ? p::kSubmitInstanced : p::kSubmitImmediate;
+    return {name, [=](Setting& s) { s.set("--submit", col::kSubmit, to); }};
+}
+
+std::vector<Perturbation> perturbationsFor(const Setting& base, bool llvmpipe, bool hasNear, bool vulkan) {
     const double scale = base.number(col::kScale), factor = base.number(col::kTessFactor);
     const int w = int(base.number(col::kWidth)), h = int(base.number(col::kHeight));
-    const bool immediate = base.get(col::kSubmit) == "immediate";
-    std::vector<Perturbation> out{{p::kBaseline, [](Setting&) {}},
-                                  {immediate ? p::kSubmitRetained : p::kSubmitImmediate, [=](Setting& s) {
-                                       s.set("--submit", col::kSubmit, immediate ? "retained" : "immediate");
-                                   }}};
+    std::vector<Perturbation> out{{p::kBaseline, [](Setting&) {}}, submissionSwitch(base, vulkan)};
     if (hasNear)
         out.push_back({p::kScaleNear, [=](Setting& s) {
                            s.set("--scale", col::kScale, csvNumber(scale * 10.0));
@@ -157,10 +164,10 @@ std::string fmt(const char* f, double v) {
 
 const char* shortName(const std::string& perturbation) {
     static const std::map<std::string, const char*> names{
-        {p::kBaseline, "base"},      {p::kSubmitImmediate, "imm"}, {p::kSubmitRetained, "ret"},
-        {p::kScaleNear, "x10near"},  {p::kScaleSmall, "x0.01"},    {p::kSizeHalf, "res/2"},
-        {p::kSizeDouble, "res*2"},   {p::kTessHalf, "tess/2"},     {p::kTessDouble, "tess*2"},
-        {p::kNoRasterizer, "norast"}};
+        {p::kBaseline, "base"},        {p::kSubmitImmediate, "imm"}, {p::kSubmitRetained, "ret"},
+        {p::kSubmitInstanced, "inst"}, {p::kScaleNear, "x10near"},   {p::kScaleSmall, "x0.01"},
+        {p::kSizeHalf, "res/2"},       {p::kSizeDouble, "res*2"},    {p::kTessHalf, "tess/2"},
+        {p::kTessDouble, "tess*2"},    {p::kNoRasterizer, "norast"}};
     const auto it = names.find(perturbation);
     return it == names.end() ? "?" : it->second;
 }
@@ -174,11 +181,24 @@ std::vector<std::string> scenesWithNear(const SweepDefinition& d) {
     return out;
 }
 
-/// Whether the workers will run on Mesa llvmpipe (then the study adds LP_NO_RAST=1).
+/// Whether the workers draw with Vulkan (--api vulkan among the common arguments).
+bool onVulkan(const SweepDefinition& d) {
+    return RunOptions::parseArgs(d.commonArgs, RunConfig::Mode::Measure).api == RunConfig::Api::Vulkan;
+}
+
+/// Whether the workers will run on Mesa llvmpipe, or on Vulkan lavapipe, which rasterises with
+/// llvmpipe's code and honours LP_NO_RAST too (measured: a fill-bound frame drops from 89 ms to 0.1 ms
+/// and its fragment count to 0): then the study adds LP_NO_RAST=1.
 bool onLlvmpipe(const SweepDefinition& d) {
     const RunConfig config = RunOptions::parseArgs(d.commonArgs, RunConfig::Mode::Measure);
-    RunOptions::requireGl(config, "bench bottleneck");
-    return createContext(config.context)->renderer.find("llvmpipe") != std::string::npos;
+    if (config.api != RunConfig::Api::Vulkan)
+        return createContext(config.context)->renderer.find("llvmpipe") != std::string::npos;
+    const std::vector<VulkanDeviceInfo> devices = VulkanContext::listDevices();
+    for (const VulkanDeviceInfo& device : devices) // the harness's choice: the index, else lavapipe
+        if (config.vulkan.device < 0 ? device.name.find("llvmpipe") != std::string::npos
+                                     : device.index == config.vulkan.device)
+            return device.name.find("llvmpipe") != std::string::npos;
+    return false;
 }
 
 } // namespace
@@ -188,15 +208,17 @@ SweepPlan BottleneckStudy::plan(const SweepDefinition& base) {
 }
 
 const std::vector<std::string>& BottleneckStudy::perturbations() {
-    static const std::vector<std::string> kAll{
-        p::kBaseline, p::kSubmitImmediate, p::kSubmitRetained, p::kScaleNear,  p::kScaleSmall,
-        p::kSizeHalf, p::kSizeDouble,      p::kTessHalf,       p::kTessDouble, p::kNoRasterizer};
+    static const std::vector<std::string> kAll{p::kBaseline,       p::kSubmitImmediate, p::kSubmitInstanced,
+                                               p::kSubmitRetained, p::kScaleNear,       p::kScaleSmall,
+                                               p::kSizeHalf,       p::kSizeDouble,      p::kTessHalf,
+                                               p::kTessDouble,     p::kNoRasterizer};
     return kAll;
 }
 
 SweepPlan BottleneckStudy::plan(const SweepDefinition& base, bool llvmpipe,
                                 const std::vector<std::string>& scenesWithNear) {
     const SweepPlan bases = base.expand(); // validates every base combination
+    const bool vulkan = onVulkan(base);
     SweepPlan out;
     out.name = bases.name;
     out.mode = bases.mode;
@@ -205,7 +227,7 @@ SweepPlan BottleneckStudy::plan(const SweepDefinition& base, bool llvmpipe,
         const Setting setting{b.args, b.columns, {}};
         const bool hasNear =
             std::count(scenesWithNear.begin(), scenesWithNear.end(), setting.get(col::kScene)) > 0;
-        for (const Perturbation& pert : perturbationsFor(setting, llvmpipe, hasNear)) {
+        for (const Perturbation& pert : perturbationsFor(setting, llvmpipe, hasNear, vulkan)) {
             Setting s = setting;
             pert.apply(s);
             out.addGroup(s.args, s.columns, b.techniques, base.repeat, s.env,
@@ -292,7 +314,8 @@ void BottleneckStudy::printTable(std::ostream& os, const std::vector<BottleneckE
           "else mixed; resid = rms residual of the fit relative to max(T, T0), ? = over 15%;\n* = predicted, "
           "not "
           "fitted (the scale runs: they change more than the measured loads); ! = failed or loads unknown. "
-          "Abbreviations: imm/ret submission switched, x10near/x0.01 scale,\nres resolution per axis, tess "
+          "Abbreviations: imm/inst/ret submission switched, x10near/x0.01 scale,\nres resolution per axis, "
+          "tess "
           "tessellation factor, norast LP_NO_RAST=1.\n";
 }
 

@@ -4,13 +4,16 @@
 // one setting) and every technique, the perturbation set (BottleneckClassifier.h lists what each one
 // moves):
 //   baseline          as given
-//   submit_immediate  submission immediate: CPU load up (submit_retained when the base is immediate)
+//   submit_immediate  submission immediate: CPU load up (submit_retained when the base is immediate);
+//                     on Vulkan (--api vulkan among the common arguments), which has no immediate mode,
+//                     submit_instanced instead: CPU load down (submit_retained from an instanced base)
 //   scale_x10_near    instances x10 seen from the 'near' camera: fill up at equal vertex count (the
 //                     thesis's fill test; left out for scenes without a 'near' camera)
 //   scale_x0.01       instances x0.01: fill down at equal vertex count (the thesis's vertex test)
 //   size_half, size_double   resolution /2 and x2 per axis: fill only
 //   tess_half, tess_double   tessellation factor /2 and x2: vertex load only (retained submission)
-//   lp_no_rast        Mesa llvmpipe only: LP_NO_RAST=1 in the worker's environment, the rasteriser off
+//   lp_no_rast        Mesa llvmpipe and lavapipe only: LP_NO_RAST=1 in the worker's environment, the
+//   rasteriser off
 // Each perturbation is a group of the sweep machinery (its own worker process, so LP_NO_RAST reaches only
 // its own context), the techniques interleaved inside it. The analysis reads the rows back (from this
 // run or any earlier CSV: --from), fits BottleneckClassifier per base and technique, prints the table
@@ -44,7 +47,8 @@ public:
     static SweepPlan plan(const SweepDefinition& base, bool llvmpipe,
                           const std::vector<std::string>& scenesWithNear);
     /// The same for this machine: probes the GL renderer the workers will get (a context of the
-    /// definition's backend) and loads the scenes to see which have a 'near' camera.
+    /// definition's backend), or the Vulkan device with --api vulkan, and loads the scenes to see which
+    /// have a 'near' camera.
     static SweepPlan plan(const SweepDefinition& base);
     /// Classifies every (sweep, base, technique) found in `rows` (rows of other kinds are ignored).
     /// Throws sb::Error when the table holds no bottleneck rows at all.

@@ -99,6 +99,9 @@ public:
     virtual std::vector<std::string> takeValidationMessages() { return {}; }
     /// Validation errors so far: a run with any did not render what the API promises (exit 1).
     virtual size_t validationErrors() const { return 0; }
+    /// One extra frame, not timed, with the census's per-pass counts (Harness::measureLoads on either
+    /// API): -t auto's exact work on the API it calibrates on.
+    FrameLoads measureLoads(Technique& technique) { return census(technique); }
 
     /// Moves the camera (the viewer's orbit); measurements use the configured preset.
     void setCamera(const CameraPreset& camera);

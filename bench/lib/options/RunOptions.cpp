@@ -42,8 +42,8 @@ RunConfig RunOptions::parseArgs(const std::vector<std::string>& args, RunConfig:
     bool listOnly = false;
     if (parse(int(pointers.size()), pointers.data(), config, listOnly) >= 0 || listOnly)
         throw Error("options '" + join(args, " ") + "': --help and --list do not belong here");
-    // A sweep's workers measure on the API the options name (SweepWorker); the bottleneck study refuses
-    // Vulkan itself (BottleneckStudy).
+    // A sweep's workers, the bottleneck study and the figures measure on the API the options name, and
+    // accuracy is judged by the harness that rendered the frame (SweepWorker).
     return config;
 }
 

@@ -9,7 +9,7 @@
 
 namespace sb {
 
-AutoResolution AutoResolver::resolve(Harness& harness, const RunConfig& config, std::ostream& log) {
+AutoResolution AutoResolver::resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log) {
     CalibrationOptions options;
     options.cachePath = config.calibrationPath;
     options.seedPath = config.calibrationSeedPath;

@@ -27,8 +27,10 @@ public:
     /// The name that asks for the choice (`-t auto`); it takes no properties.
     static constexpr const char* kName = "auto";
     /// Calibrates or reads the cache, chooses, prints the candidate table and the choice to `log`.
-    /// Throws Error(Unsupported) naming the request and the bound when no candidate qualifies.
-    static AutoResolution resolve(Harness& harness, const RunConfig& config, std::ostream& log);
+    /// The candidates are the forms of the harness's API, measured and judged on `harness` itself
+    /// (Calibration.h). Throws Error(Unsupported) naming the request and the bound when no candidate
+    /// qualifies.
+    static AutoResolution resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log);
 };
 
 } // namespace sb

@@ -7,12 +7,14 @@
 #include <ostream>
 #include <unistd.h>
 
+#include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/rows/Environment.h"
 #include "core/Error.h"
 #include "core/Paths.h"
+#include "core/Strings.h"
 #include "registry/TechniqueRegistry.h"
 #include "techniques/PointLightRefusal.h"
 
@@ -53,8 +55,8 @@ std::vector<std::string> configurationsOf(const std::string& name, const Scene& 
 
 /// One candidate being measured: its technique, prepared on the harness, and what it measured.
 struct Trial {
-    size_t candidate = 0; ///< index into the candidates
-    std::unique_ptr<GlTechnique> technique;
+    size_t candidate = 0;                 ///< index into the candidates
+    std::unique_ptr<Technique> technique; ///< the form of the harness's API
 };
 
 double median(std::vector<double> v) {
@@ -63,7 +65,7 @@ double median(std::vector<double> v) {
 }
 
 /// The worst light's misplaced share of the shadow.
-double judge(Harness& harness, GlTechnique& technique, AccuracyEvaluator& evaluator) {
+double judge(MeasuredHarness& harness, Technique& technique, AccuracyEvaluator& evaluator) {
     AccuracyOptions accuracy;
     accuracy.stability = false;
     double worst = 0.0;
@@ -75,7 +77,7 @@ double judge(Harness& harness, GlTechnique& technique, AccuracyEvaluator& evalua
 }
 
 /// Vertex plus fragment shader invocations of one census frame (-1 where the context cannot count).
-double exactWork(Harness& harness, GlTechnique& technique) {
+double exactWork(MeasuredHarness& harness, Technique& technique) {
     const FrameLoads loads = harness.measureLoads(technique);
     if (!loads.pipeline) return -1.0;
     return double(loads.pipeline->vertexShaderInvocations + loads.pipeline->fragmentShaderInvocations);
@@ -83,8 +85,9 @@ double exactWork(Harness& harness, GlTechnique& technique) {
 
 /// Times the trials in interleaved rounds (one frame of each per round, after their warm-up), so load
 /// that comes and goes falls on every candidate alike, then takes each one's exact work and error.
-void measureInterleaved(Harness& harness, std::vector<Trial>& trials, std::vector<AutoCandidate>& out,
-                        const CalibrationOptions& options, const std::string& batch) {
+void measureInterleaved(MeasuredHarness& harness, std::vector<Trial>& trials,
+                        std::vector<AutoCandidate>& out, const CalibrationOptions& options,
+                        const std::string& batch) {
     for (Trial& t : trials)
         for (int i = 0; i < options.warmup; ++i) harness.renderFrame(*t.technique);
     for (int r = 0; r < std::max(1, options.frames); ++r)
@@ -117,10 +120,16 @@ std::vector<double> parseRounds(const std::string& text) {
     return out;
 }
 
+/// Whether `row` is `key`'s. The API is part of every key: GL's keys and rows written before the cache
+/// knew APIs have no `api` column and mean GL, so a Vulkan row never answers for GL nor the other way.
 bool sameKey(const CsvTable& table, const std::vector<std::string>& row, const CsvRow& key) {
-    for (const auto& [column, value] : key)
+    bool keyHasApi = false;
+    for (const auto& [column, value] : key) {
+        keyHasApi = keyHasApi || column == "api";
         if (table.cell(row, column) != value) return false;
-    return true;
+    }
+    const std::string rowApi = table.cell(row, "api");
+    return keyHasApi || rowApi.empty() || rowApi == "gl";
 }
 
 /// The last cached row of `key`, if any.
@@ -190,20 +199,30 @@ std::string Calibration::defaultCachePath() {
     return (dir / "auto-calibration.csv").string();
 }
 
-CsvRow Calibration::keyColumns(const Harness& harness, const std::string& spec) {
+CsvRow Calibration::keyColumns(const MeasuredHarness& harness, const std::string& spec) {
     const RunConfig& c = harness.config();
-    return {{"renderer", harness.context().renderer},
-            {"gl_version", harness.context().version},
-            {"scene", harness.scene().name},
-            {"scene_hash", harness.contentHash()},
-            {"width", std::to_string(c.width)},
-            {"height", std::to_string(c.height)},
-            {"camera", c.camera},
-            {"submit", submitModeName(c.submit)},
-            {"candidate", spec}};
+    CsvRow key;
+    if (harness.api() == Api::Vulkan) {
+        // The device and its driver in the columns GL fills with GL_RENDERER and GL_VERSION, and the API.
+        const VulkanDeviceInfo& device = static_cast<const VulkanHarness&>(harness).context().info();
+        key = {{"api", "vulkan"},
+               {"renderer", device.name},
+               {"gl_version", "Vulkan " + device.apiVersion + " " + device.driver}};
+    } else {
+        const Harness& gl = static_cast<const Harness&>(harness);
+        key = {{"renderer", gl.context().renderer}, {"gl_version", gl.context().version}};
+    }
+    key.insert(key.end(), {{"scene", harness.scene().name},
+                           {"scene_hash", harness.contentHash()},
+                           {"width", std::to_string(c.width)},
+                           {"height", std::to_string(c.height)},
+                           {"camera", c.camera},
+                           {"submit", submitModeName(c.submit)},
+                           {"candidate", spec}});
+    return key;
 }
 
-std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const CalibrationOptions& options,
+std::vector<AutoCandidate> Calibration::candidates(MeasuredHarness& harness, const CalibrationOptions& options,
                                                    std::ostream& log) {
     const std::string path = options.cachePath.empty() ? defaultCachePath() : options.cachePath;
     const CsvTable seed = readSeed(options.seedPath);
@@ -214,14 +233,23 @@ std::vector<AutoCandidate> Calibration::candidates(Harness& harness, const Calib
     std::vector<bool> measure; ///< per candidate: not (usefully) in the cache
     std::vector<Trial> trials;
     size_t fromSeed = 0, fromFile = 0;
-    std::vector<std::string> configurations;
-    for (const std::string& name : TechniqueRegistry::names())
-        if (isCandidate(name))
-            for (const std::string& spec : configurationsOf(name, harness.scene()))
-                configurations.push_back(spec);
+    const Api api = harness.api();
+    std::vector<std::string> configurations, withoutForm;
+    for (const std::string& name : TechniqueRegistry::names()) {
+        if (!isCandidate(name)) continue;
+        if (!TechniqueRegistry::has(name, api)) { // measured on the API it runs on, or not at all
+            withoutForm.push_back(name);
+            continue;
+        }
+        for (const std::string& spec : configurationsOf(name, harness.scene()))
+            configurations.push_back(spec);
+    }
+    if (!withoutForm.empty())
+        log << "auto: skipped (no " << (api == Api::Vulkan ? "Vulkan" : "GL")
+            << " form): " << join(withoutForm, ", ") << "\n";
     for (const std::string& given : configurations) {
         const TechniqueSpec parsed = TechniqueSpec::parse(given);
-        std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(parsed);
+        std::unique_ptr<Technique> technique = TechniqueRegistry::create(parsed, api);
         AutoCandidate c;
         // A technique without properties (none) is its bare name: "none:" does not parse back.
         const std::string properties = technique->properties().toString();

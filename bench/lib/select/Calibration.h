@@ -9,9 +9,14 @@
 // AutoSelection's every-round comparison), their exact work counted in one census frame (vertex plus fragment
 // shader invocations), and each judged against the Embree reference on every light (samples misclassified at
 // 0.5 as a share of those the reference shadows: the misplaced share of the shadow, the worst light). A
-// candidate that refuses the configuration is kept with its refusal. Results are cached in a CSV keyed by
-// renderer, GL version, scene hash, size, camera, submission and the candidate's canonical spec, so a second
-// run on the same machine measures nothing;
+// candidate that refuses the configuration is kept with its refusal. On Vulkan (a VulkanHarness) the
+// candidates are the techniques' Vulkan forms, timed, counted and judged on the Vulkan harness (its own
+// G-buffer places the reference's samples, as bench accuracy --api vulkan judges); a technique without a
+// form on the harness's API is skipped with a line saying so. Results are
+// cached in a CSV keyed by API (Vulkan rows say api vulkan; GL's rows have no api or gl), renderer (the
+// Vulkan device), GL version (Vulkan: its API version and driver), scene hash, size, camera, submission and
+// the candidate's canonical spec, so GL's and Vulkan's measurements never mix and a second run on the same
+// machine measures nothing;
 // --recalibrate measures again, and a cache file written by hand injects costs (the tests do).
 // A seed (--calibration-seed) is a calibration read before the cache and never written: the perf
 // suite's committed results/ci/auto-calibration.csv, which keeps -t auto's choice, and so its exact work,
@@ -46,10 +51,11 @@ public:
     static std::string defaultCachePath();
     /// The candidates, read from the seed, else from the cache, else measured here and appended to the
     /// cache (what came from where goes to `log`). Throws Error(BadInput) for a seed that does not exist.
-    static std::vector<AutoCandidate> candidates(Harness& harness, const CalibrationOptions& options,
+    /// Every candidate is timed, counted and judged on `harness` (GL or Vulkan).
+    static std::vector<AutoCandidate> candidates(MeasuredHarness& harness, const CalibrationOptions& options,
                                                  std::ostream& log);
     /// The cache key of candidate `spec` on `harness` (the columns a cached row must match).
-    static CsvRow keyColumns(const Harness& harness, const std::string& spec);
+    static CsvRow keyColumns(const MeasuredHarness& harness, const std::string& spec);
 };
 
 } // namespace sb

@@ -86,7 +86,8 @@ std::optional<TimerVerdict> calibrateOnce(const SweepPlan& plan) {
     const RunConfig config = RunOptions::parseArgs(plan.commonArgs, plan.mode == SweepPlan::Mode::Accuracy
                                                                         ? RunConfig::Mode::Accuracy
                                                                         : RunConfig::Mode::Measure);
-    if (!config.checkTimer) return std::nullopt;
+    // Vulkan workers calibrate their own device's timestamps (the GL probe would judge another clock).
+    if (!config.checkTimer || config.api == RunConfig::Api::Vulkan) return std::nullopt;
     std::unique_ptr<Context> context = createContext(config.context);
     TimerVerdict v;
     {
