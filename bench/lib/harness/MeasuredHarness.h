@@ -80,7 +80,8 @@ public:
     /// frame for the loads. The same loop on every API.
     RunResult measure(Technique& technique);
     /// One extra frame, not timed, with every pass's work counted (the census: the submitter's draws
-    /// and, where the API counts them, a pipeline-statistics query per pass). What explain prints.
+    /// and, where the API counts them, a pipeline-statistics query per pass). What explain prints, and
+    /// -t auto's exact work on the API it calibrates on.
     FrameLoads measureLoads(Technique& technique) { return census(technique); }
     /// One frame, not timed beyond its sample, with the visibility target written (what accuracy, images
     /// and the viewer read).
@@ -99,10 +100,6 @@ public:
     virtual std::vector<std::string> takeValidationMessages() { return {}; }
     /// Validation errors so far: a run with any did not render what the API promises (exit 1).
     virtual size_t validationErrors() const { return 0; }
-    /// One extra frame, not timed, with the census's per-pass counts (Harness::measureLoads on either
-    /// API): -t auto's exact work on the API it calibrates on.
-    FrameLoads measureLoads(Technique& technique) { return census(technique); }
-
     /// Moves the camera (the viewer's orbit); measurements use the configured preset.
     void setCamera(const CameraPreset& camera);
     /// Shifts the image by `pixels` (sub-pixel camera perturbations of the stability metrics): a
