@@ -162,6 +162,7 @@ const Case kCases[] = {
     {"projective_spot_instanced", "sphere_plane", "far", "projective", SubmitMode::Instanced, "spot"},
     {"projective_point_no_cull_256", "point_light", "far", "projective:cull=false:resolution=256"},
     {"projective_exceptions", "exceptions", "far", "projective"},
+    {"projective_blur4_exceptions", "exceptions", "far", "projective:blur=4"},
 };
 
 struct Images {

@@ -1,6 +1,7 @@
 #include "techniques/projective/ProjectiveVulkan.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "core/Error.h"
@@ -197,10 +198,6 @@ void ProjectiveVulkan::compile(const VulkanCompileContext& ctx) {
     const PropertySet& p = properties();
     mResolution = int(p.getInt(Projective::kResolution));
     mBlurRadius = int(p.getInt(Projective::kBlur));
-    if (mBlurRadius > 0)
-        throw Error("projective: blur > 0 has no Vulkan form yet (the separable blur pass is GL's): "
-                    "unsupported here (run with blur=0, or --api gl)",
-                    ExitCode::Unsupported);
     mCull = p.getBool(Projective::kCull) && mBlurRadius == 0;
     const uint32_t layers = uint32_t(std::max<size_t>(1, mPlan.viewProj.size()));
     createTextures(ctx.context, layers);
@@ -208,6 +205,14 @@ void ProjectiveVulkan::compile(const VulkanCompileContext& ctx) {
     mTextureLayout = createScenePipelineLayout(ctx, {mSets.layout(kTextureSet)});
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
     buildPipelines(ctx);
+    // As ProjectiveGL: point-sampled weights and a lit outside (the texture's white border), one channel.
+    VulkanSeparableBlur::Settings blur{.width = mPlan.viewProj.empty() ? 0 : mBlurRadius,
+                                       .resolution = mResolution,
+                                       .format = VK_FORMAT_R8_UNORM,
+                                       .pointSampled = true,
+                                       .outsideOne = true};
+    const std::string blurKey = mBlur.compile(ctx.context, ctx.shaders, ctx.pipelines, blur, mArray);
+    if (!blurKey.empty()) setPermutationKey(permutationKey() + "|" + blurKey);
 }
 
 void ProjectiveVulkan::renderTexture(VulkanFrameContext& ctx) {
@@ -246,6 +251,12 @@ void ProjectiveVulkan::renderTexture(VulkanFrameContext& ctx) {
     }
 }
 
+int ProjectiveVulkan::renderBlur(VulkanFrameContext& ctx) {
+    // Two passes of resolution^2 texels per layer that casts, as GL's SeparableBlur::Work::passes.
+    const double perPass = double(mResolution) * mResolution;
+    return int(std::lround(mBlur.apply(ctx.cmd, mPlan.castsShadows) / perPass));
+}
+
 void ProjectiveVulkan::renderLighting(VulkanFrameContext& ctx) {
     if (mPlan.viewProj.empty()) { // nothing casts: every instance lit
         drawLitScene(ctx, mLit, mLightingLayout);
@@ -267,18 +278,24 @@ void ProjectiveVulkan::renderLighting(VulkanFrameContext& ctx) {
 
 void ProjectiveVulkan::execute(VulkanFrameContext& ctx) {
     ctx.submitter.resetStats();
+    int blurPasses = 0;
     if (mPlan.noProjector) {
         ctx.passes.skip("texture", mPlan.noProjector);
         ctx.passes.skip("blur", mPlan.noProjector);
     } else {
         ctx.passes.begin("texture");
         renderTexture(ctx);
-        ctx.passes.skip("blur", "blur 0");
+        if (mBlurRadius > 0) {
+            ctx.passes.begin("blur");
+            blurPasses = renderBlur(ctx);
+        } else {
+            ctx.passes.skip("blur", "blur 0");
+        }
     }
     ctx.passes.begin("lighting");
     renderLighting(ctx);
-    mCounters = Projective::counters(ctx.submitter.stats(), ctx.scene, mResolution, mPlan.castsShadows, 0,
-                                     mPlan.clamped, mCulled);
+    mCounters = Projective::counters(ctx.submitter.stats(), ctx.scene, mResolution, mPlan.castsShadows,
+                                     blurPasses, mPlan.clamped, mCulled);
 }
 
 } // namespace sb

@@ -8,10 +8,11 @@
 // Passes. texture: per light that casts shadows, one render pass into its layer of an R8 2D array
 // (cleared to white, no depth attachment: a silhouette), the casters black, each light's projector at
 // its dynamic offset of one uniform buffer (Vulkan's depth range, no flip:
-// VulkanFrameBlock::depthFromGl). blur: skipped ("blur 0"); blur > 0 is refused (ExitCode::Unsupported)
-// until the separable blur has a Vulkan form here. lighting: the casters lit and unshadowed, then the
-// non-casters with the textures projected (set 1: the texture matrices and the array through a
-// bilinear sampler whose border is white: lit outside the frustum).
+// VulkanFrameBlock::depthFromGl). blur: skipped at blur 0 ("blur 0"); otherwise GL's point-sampled
+// Gaussian of radius `blur` with a lit (1) outside, per layer that casts (VulkanSeparableBlur, the same
+// shader and permutation as ProjectiveGL's SeparableBlur), two render passes per layer. lighting: the casters
+// lit and unshadowed, then the non-casters with the textures projected (set 1: the texture matrices and the
+// array through a bilinear sampler whose border is white: lit outside the frustum).
 //
 // Nothing is written per frame: the projectors are fitted in setScene, as on GL (lights do not move
 // them: GL refits nothing in sceneChanged either).
@@ -19,6 +20,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/projective/Projective.h"
+#include "techniques/vulkan/VulkanSeparableBlur.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -42,6 +44,7 @@ private:
     void createDescriptors(VulkanContext& context, uint32_t layers);
     void buildPipelines(const VulkanCompileContext& ctx);
     void renderTexture(VulkanFrameContext& ctx);
+    int renderBlur(VulkanFrameContext& ctx); ///< returns the number of blur passes (as GL's counter)
     void renderLighting(VulkanFrameContext& ctx);
 
     VkDevice mDevice = VK_NULL_HANDLE;
@@ -52,7 +55,8 @@ private:
     std::vector<uint8_t> mKeep; ///< the casters a light's texture keeps
     size_t mCulled = 0;         ///< casters left out over the frame's textures
 
-    VulkanImage mArray; ///< R8 2D array, one layer per light
+    VulkanImage mArray;        ///< R8 2D array, one layer per light
+    VulkanSeparableBlur mBlur; ///< the layers' blur (its intermediate: R8 2D)
     VkRenderPass mTexturePass = VK_NULL_HANDLE;
     std::vector<VkFramebuffer> mFramebuffers; ///< per layer
     VkSampler mSampler = VK_NULL_HANDLE;

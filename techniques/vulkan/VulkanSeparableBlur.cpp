@@ -1,6 +1,8 @@
 #include "techniques/vulkan/VulkanSeparableBlur.h"
 
+#include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include "techniques/GaussianKernel.h"
 #include "techniques/vulkan/VulkanPipelineCache.h"
@@ -135,7 +137,13 @@ std::string VulkanSeparableBlur::compile(VulkanContext& context, ShaderModuleCac
     release();
     mDevice = context.device();
     mSettings = settings;
-    const std::vector<float> weights = GaussianKernel::texelIntegral(settings.width);
+    if (settings.pointSampled && settings.logSpace)
+        throw std::invalid_argument(
+            "VulkanSeparableBlur: the log-space mode takes the texel-integral kernel");
+    // The point-sampled kernel's weights are the shader's; the block still holds BLUR_RADIUS + 1 (unread).
+    const std::vector<float> weights = settings.pointSampled
+                                           ? std::vector<float>(size_t(std::max(0, settings.width)) + 1, 0.0f)
+                                           : GaussianKernel::texelIntegral(settings.width);
     mRadius = int(weights.size()) - 1;
     if (mRadius == 0) return "";
     createTargets(context, array);
@@ -144,6 +152,8 @@ std::string VulkanSeparableBlur::compile(VulkanContext& context, ShaderModuleCac
 
     // As SeparableBlur's defines: the texel-integral kernel and clamp to edge are the shader's defaults.
     Defines defines = {{"BLUR_RADIUS", std::to_string(mRadius)}};
+    if (settings.pointSampled) defines["BLUR_POINT_SAMPLED"] = "";
+    if (settings.outsideOne) defines["BLUR_OUTSIDE_ONE"] = "";
     if (settings.logSpace) defines["LOG_SPACE"] = "";
     auto pipeline = [&](const Defines& d) {
         const ShaderModules modules =

@@ -3,9 +3,12 @@
 // GL, whose header describes the kernel and the modes): per layer of a 2D array image, a horizontal pass
 // from the layer into one intermediate 2D image, then a vertical pass from it back into the layer
 // (shaders/common/blur.frag, its `#ifdef VULKAN` block), each a render pass of one full-screen triangle.
-// The texel-integral kernel only (`vsm`, `esm`), linear or log space, clamp to edge; the weights are
-// GaussianKernel's, the same floats as GL's. The weights and the exponent are written once in compile()
-// (a uniform block), the layer is a push constant: a frame records no descriptor write.
+// Both of GL's kernels: the texel-integral one (`vsm`, `esm`; linear or log space), whose weights are
+// GaussianKernel's, the same floats as GL's, and the point-sampled one (`projective`: Settings::
+// pointSampled, the weights computed in the shader as on GL, the first channel only); taps outside the
+// layer read the edge texel, or 1 (Settings::outsideOne, GL's Border::One). The weights and the exponent
+// are written once in compile() (a uniform block), the layer is a push constant: a frame records no
+// descriptor write.
 //
 // What the layers must be before apply(): written by a render pass whose end makes its colour writes
 // visible to fragment-shader reads and leaves the image SHADER_READ_ONLY_OPTIMAL; apply() leaves them
@@ -35,6 +38,8 @@ public:
         float exponent = 1.0f; ///< c of the log-space mode
         int resolution = 0;    ///< the layers' width and height
         VkFormat format = VK_FORMAT_UNDEFINED; ///< the layers' format, the intermediate's too
+        bool pointSampled = false; ///< GL's Kernel::PointSampled: `width` is the radius (taps |k| <= width)
+        bool outsideOne = false;   ///< GL's Border::One: taps outside the layer read 1, not the edge texel
     };
 
     VulkanSeparableBlur() = default;
@@ -44,7 +49,8 @@ public:
 
     /// The intermediate image, render pass, framebuffers and pipelines for `settings`, blurring `array`
     /// (its whole-array view is sampled, its layer views are written). Returns the shaders' permutation
-    /// key (horizontal|vertical; "" for a one-tap kernel, which makes nothing).
+    /// key (horizontal|vertical; "" for a one-tap kernel, which makes nothing). Throws
+    /// std::invalid_argument for the log-space mode with the point-sampled kernel (not built, as on GL).
     std::string compile(VulkanContext& context, ShaderModuleCache& shaders, VulkanPipelineCache& pipelines,
                         const Settings& settings, VulkanImage& array);
     /// Records the blur of each layer i for which `layers[i]` is non-zero; returns the texels written
