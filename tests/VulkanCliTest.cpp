@@ -339,7 +339,7 @@ TEST(VulkanCli, TheEffectsWarningIsPrintedOnceOnVulkan) {
 TEST(VulkanCli, ARefusingTechniqueIsARowWhileTheOthersAreMeasured) {
     // shadowmap's flat maps refuse a point light on either API (cubemap draws it): a row, exit 3.
     const std::string csv = test::freshDir("vulkan-cli-refusal") + "/r.csv";
-    auto r = runCommand(vulkan("--scene point_light -t none -t shadowmap -t cubemap --csv " + csv));
+    auto r = runCommand(vulkan("--light point -t none -t shadowmap -t cubemap --csv " + csv));
     EXPECT_EQ(r.exitCode, 3) << r.output; // the worst of the run
     const auto rows = test::csvRowMaps(csv);
     ASSERT_EQ(rows.size(), 3u) << r.output;
