@@ -9,10 +9,18 @@
 #   fill       scale 10: the rasteriser's fragments dominate
 #   draws      2000 instances at scale 0.05: per-draw cost (the application thread) dominates
 #   immediate  GL's glBegin/glEnd submission of the base scene (GL only: Vulkan has no such mode)
-# Usage: bash scripts/vulkan.sh [output folder, default results/vulkan]   (about 10 minutes on 2 cores)
+#   every      every technique of the registry (bench --list), 256x256, 100 instances, 20 frames after 3
+#              warm-up: where the API changes the answer, technique by technique; and the bottleneck class of
+#              one technique per family on either API (bench bottleneck --api, every_bottleneck_<api>_classes.csv)
+# Usage: bash scripts/vulkan.sh [output folder, default results/vulkan] [configuration ...]
+#   (all five: about 25 minutes on 2 cores; `bash scripts/vulkan.sh results/vulkan every`: about 12)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$root/results/vulkan}"
+shift || true
+wanted=("$@")
+[ ${#wanted[@]} -gt 0 ] || wanted=(base_retained base_instanced fill draws immediate every)
+want() { [[ " ${wanted[*]} " == *" $1 "* ]]; }
 bench="$root/build/bench"
 [ -x "$bench" ] || bash "$root/scripts/build.sh"
 mkdir -p "$out"
@@ -31,12 +39,30 @@ measure() { # name, then the options of the configuration
   done
 }
 
-measure base_retained --submit retained
-measure base_instanced --submit instanced
-measure fill --scale 10 --submit retained
-measure draws --instances 2000 --scale 0.05 --submit retained
-rm -f "$out/immediate.csv"
-for _ in 1 2 3; do
-  run --api gl "${techniques[@]}" "${common[@]}" --submit immediate --csv "$out/immediate.csv"
-done
+want base_retained && measure base_retained --submit retained
+want base_instanced && measure base_instanced --submit instanced
+want fill && measure fill --scale 10 --submit retained
+want draws && measure draws --instances 2000 --scale 0.05 --submit retained
+if want immediate; then
+  rm -f "$out/immediate.csv"
+  for _ in 1 2 3; do
+    run --api gl "${techniques[@]}" "${common[@]}" --submit immediate --csv "$out/immediate.csv"
+  done
+fi
+if want every; then
+  # Every technique with both forms on the aircraft under its sun (cubemap and paraboloid draw it with
+  # their flat maps).
+  mapfile -t techniques < <("$bench" --list | awk '/^scenes:/ {exit} /^[a-z]/ {name=$1} /apis: *gl, vulkan/ {print "-t"; print name}')
+  common=(--scene aircraft --camera far --size 256x256 --instances 100 --frames 20 --warmup 3 --no-timer-check)
+  measure every --submit retained
+  # The bottleneck class of one technique per family on either API (every_bottleneck_<api>_classes.csv).
+  family=(-t shadowmap -t cubemap -t vsm -t volume -t occluder -t proxy -t planar)
+  for api in gl vulkan; do
+    rm -f "$out/every_bottleneck_$api.csv" "$out/every_bottleneck_${api}_classes.csv"
+    echo "+ bench bottleneck --api $api" >&2
+    "$bench" bottleneck --api "$api" "${family[@]}" --scene aircraft --camera far --size 256x256 \
+      --instances 100 --frames 10 --warmup 2 --no-timer-check --no-progress \
+      --csv "$out/every_bottleneck_$api.csv" >/dev/null
+  done
+fi
 /usr/bin/python3 "$root/tools/vulkan_summary.py" "$out"

@@ -6,6 +6,7 @@ run's median; the Vulkan/GL ratio is taken per round (the runs next to each othe
 driver (GL: the draw calls, in which llvmpipe runs the vertex stage; Vulkan: recording and vkQueueSubmit,
 after which lavapipe runs everything on its own threads). The exact work (vertices, fragments) comes
 from the census frame's pipeline statistics on both APIs and must agree.
+The `every` configuration adds each family's bottleneck class on either API (every_bottleneck_<api>_classes.csv).
 Usage: /usr/bin/python3 tools/vulkan_summary.py results/vulkan"""
 import glob
 import os
@@ -44,10 +45,38 @@ def summarize(path):
         print("| " + " | ".join(r) + " |")
 
 
+def bottleneck_classes(folder):
+    """Each technique's bottleneck class on GL and on Vulkan (bench bottleneck --api), side by side."""
+    tables = {}
+    for api in ("gl", "vulkan"):
+        path = os.path.join(folder, f"every_bottleneck_{api}_classes.csv")
+        if os.path.exists(path):
+            tables[api] = pd.read_csv(path).set_index("technique_spec")
+    if len(tables) < 2:
+        return
+    print("\n### every: bottleneck class\n")
+    head = ["technique", "GL class", "GL cpu/vertex/fill", "GL fit residual", "Vulkan class",
+            "Vulkan cpu/vertex/fill", "Vulkan fit residual"]
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    for tech in tables["gl"].index:
+        cells = [tech]
+        for api in ("gl", "vulkan"):
+            if tech not in tables[api].index:
+                cells += ["", "", ""]
+                continue
+            r = tables[api].loc[tech]
+            cells += [str(r["class"]), f"{r.share_cpu:.2f} / {r.share_vertex:.2f} / {r.share_fill:.2f}",
+                      f"{r.rms_rel_residual:.2f}"]
+        print("| " + " | ".join(cells) + " |")
+
+
 def main():
     folder = sys.argv[1] if len(sys.argv) > 1 else "results/vulkan"
     for path in sorted(glob.glob(os.path.join(folder, "*.csv"))):
-        summarize(path)
+        if "bottleneck" not in os.path.basename(path):
+            summarize(path)
+    bottleneck_classes(folder)
 
 
 if __name__ == "__main__":

@@ -42,6 +42,25 @@ void ProjectiveVulkan::setScene(const Scene& scene) {
     mPlan = Projective::plan(scene);
 }
 
+void ProjectiveVulkan::sceneChanged(const Scene& scene, uint32_t) {
+    // The sun of a scene in motion turns: GL reads the refitted matrices as uniforms every frame, here
+    // the buffers the frames read are rewritten (the frame before has been waited for).
+    setScene(scene);
+    writeMatrices();
+}
+
+void ProjectiveVulkan::writeMatrices() {
+    char* projectors = static_cast<char*>(mProjectors.map());
+    char* matrices = static_cast<char*>(mMatrices.map());
+    if (!projectors || !matrices) return; // before compile
+    for (size_t i = 0; i < mPlan.viewProj.size(); ++i) {
+        // The silhouette is sampled, not shown: Vulkan's depth range, no flip (depthFromGl).
+        const glm::mat4 m = VulkanFrameBlock::depthFromGl() * mPlan.viewProj[i];
+        std::memcpy(projectors + size_t(mStride) * i, &m, sizeof m);
+        std::memcpy(matrices + sizeof(glm::mat4) * i, &mPlan.textureMatrix[i], sizeof(glm::mat4));
+    }
+}
+
 void ProjectiveVulkan::createTextures(VulkanContext& context, uint32_t layers) {
     VulkanImageDesc d;
     d.width = d.height = uint32_t(mResolution);
@@ -140,16 +159,9 @@ void ProjectiveVulkan::createDescriptors(VulkanContext& context, uint32_t layers
     mStride = uint32_t((sizeof(glm::mat4) + align - 1) / align * align);
     mProjectors = VulkanBuffer(context, VkDeviceSize(mStride) * layers, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     mMatrices = VulkanBuffer(context, sizeof(glm::mat4) * layers, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    char* projectors = static_cast<char*>(mProjectors.map());
-    char* matrices = static_cast<char*>(mMatrices.map());
-    std::memset(projectors, 0, size_t(mStride) * layers);
-    std::memset(matrices, 0, sizeof(glm::mat4) * layers);
-    for (size_t i = 0; i < mPlan.viewProj.size(); ++i) {
-        // The silhouette is sampled, not shown: Vulkan's depth range, no flip (depthFromGl).
-        const glm::mat4 m = VulkanFrameBlock::depthFromGl() * mPlan.viewProj[i];
-        std::memcpy(projectors + size_t(mStride) * i, &m, sizeof m);
-        std::memcpy(matrices + sizeof(glm::mat4) * i, &mPlan.textureMatrix[i], sizeof(glm::mat4));
-    }
+    std::memset(mProjectors.map(), 0, size_t(mStride) * layers);
+    std::memset(mMatrices.map(), 0, sizeof(glm::mat4) * layers);
+    writeMatrices();
     mSets.writeBuffer(kTextureSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mProjectors.buffer(),
                       sizeof(glm::mat4));
     mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mMatrices.buffer(),

@@ -14,8 +14,8 @@
 // lit and unshadowed, then the non-casters with the textures projected (set 1: the texture matrices and the
 // array through a bilinear sampler whose border is white: lit outside the frustum).
 //
-// Nothing is written per frame: the projectors are fitted in setScene, as on GL (lights do not move
-// them: GL refits nothing in sceneChanged either).
+// Nothing is written per frame: the projectors are fitted in setScene, as on GL, and refitted with the
+// scene in motion (sceneChanged rewrites the matrices the frames read).
 #include <vector>
 
 #include "scenes/InstanceCulling.h"
@@ -33,6 +33,7 @@ public:
     ProjectiveVulkan();
     ~ProjectiveVulkan() override;
     void setScene(const Scene& scene) override;
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
@@ -42,6 +43,7 @@ private:
     void createTextures(VulkanContext& context, uint32_t layers);
     void createRenderPass();
     void createDescriptors(VulkanContext& context, uint32_t layers);
+    void writeMatrices(); ///< the projectors' and texture matrices of mPlan into their buffers
     void buildPipelines(const VulkanCompileContext& ctx);
     void renderTexture(VulkanFrameContext& ctx);
     int renderBlur(VulkanFrameContext& ctx); ///< returns the number of blur passes (as GL's counter)
