@@ -2,7 +2,7 @@
 # Quick start 2: install every package group, build everything with the test suite configured
 # (scripts/build.sh), run the whole test suite through ctest (unit, GL on Mesa llvmpipe, CLI,
 # valgrind), then the perf gate against the committed baseline (scripts/gate.sh), the sanitizer build's
-# unit and CLI tests (scripts/sanitize.sh) and every fuzz target for 60 s (scripts/fuzz.sh).
+# unit and CLI tests (scripts/sanitize.sh) and every fuzz target for 30 s (scripts/fuzz.sh).
 # --quick stops after ctest. Other arguments go to ctest, e.g.
 # `bash scripts/test.sh --quick -L unit`.
 # Usage: bash scripts/test.sh [--quick] [ctest arguments]
@@ -43,4 +43,4 @@ cat "$gate_log"
 rm -f "$gate_log"
 [ "$gate_rc" = 0 ] || { echo "test.sh: the perf gate failed (exit $gate_rc)" >&2; exit "$gate_rc"; }
 [ "$sanitize_rc" = 0 ] || { echo "test.sh: the sanitizer run failed (exit $sanitize_rc)" >&2; exit "$sanitize_rc"; }
-bash "$root/scripts/fuzz.sh" 60
+bash "$root/scripts/fuzz.sh" 30

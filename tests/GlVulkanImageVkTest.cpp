@@ -163,6 +163,13 @@ const Case kCases[] = {
     {"projective_point_no_cull_256", "point_light", "far", "projective:cull=false:resolution=256"},
     {"projective_exceptions", "exceptions", "far", "projective"},
     {"projective_blur4_exceptions", "exceptions", "far", "projective:blur=4"},
+    // A third built-in scene for the techniques above that had two (the exceptions scene is the test's).
+    {"none_sphere_plane", "sphere_plane", "far", "none"},
+    {"none_teapot_instanced", "teapot", "far", "none", SubmitMode::Instanced},
+    {"shadowmap_teapot", "teapot", "far", "shadowmap"},
+    {"volume_teapot", "teapot", "far", "volume", SubmitMode::Retained, "", 0.001},
+    {"cubemap_room", "room", "wall", "cubemap"},
+    {"occluder_aircraft_day", "aircraft_day", "path", "occluder"},
 };
 
 struct Images {

@@ -2,7 +2,10 @@
 // rendered by lavapipe with the validation layer on and judged by the Vulkan harness's own accuracy
 // evaluator: the reference is traced at the samples of a G-buffer Vulkan rasterised
 // (reference/VulkanGBufferRenderer.h), and the stability measures' perturbed frames (camera shift, light
-// turn, drift) are Vulkan frames too. The same bounds as GL hold, stability included.
+// turn, drift) are Vulkan frames too. The same bounds as GL hold. The stability bounds are judged on the
+// first row of each technique: their perturbed frames (8 more frames, about half a row's time) run the
+// evaluator's code that every API shares, and each technique's Vulkan form answers a shifted camera and
+// a turned light in its first row as in the others; GL judges them on every row (HardCaseTest.cpp).
 #include <string>
 #include <vector>
 
@@ -27,6 +30,14 @@ std::vector<test::HardCase> vulkanRows() {
     return rows;
 }
 
+/// Whether `c` is its technique's first row in the table (the row whose stability is judged on Vulkan).
+bool firstOfItsTechnique(const test::HardCase& c) {
+    const std::string technique = TechniqueSpec::parse(c.technique).name;
+    for (const test::HardCase& row : test::kHardCases)
+        if (TechniqueSpec::parse(row.technique).name == technique) return std::string(row.name) == c.name;
+    return false;
+}
+
 class HardCasesVulkan : public ::testing::TestWithParam<test::HardCase> {};
 
 TEST_P(HardCasesVulkan, BoundsHold) {
@@ -34,10 +45,11 @@ TEST_P(HardCasesVulkan, BoundsHold) {
     RunConfig cfg = test::quickConfig(test::hardCaseScene(c), c.camera, c.size);
     test::VulkanFrame vulkan(cfg, c.technique);
     AccuracyEvaluator evaluator(vulkan.harness());
-    const AccuracyResult r =
-        evaluator.evaluate(vulkan.technique(), test::hardCaseOptions(c, test::HardCaseStability::Judged));
-    EXPECT_TRUE(r.stabilityMeasured);
-    test::expectHardCaseBounds(c, r, test::HardCaseStability::Judged, " (Vulkan)", evaluator.lastJudged());
+    const test::HardCaseStability stability =
+        firstOfItsTechnique(c) ? test::HardCaseStability::Judged : test::HardCaseStability::NotJudged;
+    const AccuracyResult r = evaluator.evaluate(vulkan.technique(), test::hardCaseOptions(c, stability));
+    EXPECT_EQ(r.stabilityMeasured, stability == test::HardCaseStability::Judged);
+    test::expectHardCaseBounds(c, r, stability, " (Vulkan)", evaluator.lastJudged());
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, HardCasesVulkan, ::testing::ValuesIn(vulkanRows()),
