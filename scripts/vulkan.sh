@@ -10,16 +10,17 @@
 #   draws      2000 instances at scale 0.05: per-draw cost (the application thread) dominates
 #   immediate  GL's glBegin/glEnd submission of the base scene (GL only: Vulkan has no such mode)
 #   every      every technique of the registry (bench --list), 256x256, 100 instances, 20 frames after 3
-#              warm-up: where the API changes the answer, technique by technique; and the bottleneck class of
-#              one technique per family on either API (bench bottleneck --api, every_bottleneck_<api>_classes.csv)
+#              warm-up: where the API changes the answer, technique by technique
+#   every_bottleneck  the bottleneck class of one technique per family on either API (bench bottleneck
+#              --api, every_bottleneck_<api>_classes.csv)
 # Usage: bash scripts/vulkan.sh [output folder, default results/vulkan] [configuration ...]
-#   (all five: about 25 minutes on 2 cores; `bash scripts/vulkan.sh results/vulkan every`: about 12)
+#   e.g. `bash scripts/vulkan.sh results/vulkan every` (every configuration: about half an hour on 2 cores)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$root/results/vulkan}"
 shift || true
 wanted=("$@")
-[ ${#wanted[@]} -gt 0 ] || wanted=(base_retained base_instanced fill draws immediate every)
+[ ${#wanted[@]} -gt 0 ] || wanted=(base_retained base_instanced fill draws immediate every every_bottleneck)
 want() { [[ " ${wanted[*]} " == *" $1 "* ]]; }
 bench="$root/build/bench"
 [ -x "$bench" ] || bash "$root/scripts/build.sh"
@@ -55,6 +56,8 @@ if want every; then
   mapfile -t techniques < <("$bench" --list | awk '/^scenes:/ {exit} /^[a-z]/ {name=$1} /apis: *gl, vulkan/ {print "-t"; print name}')
   common=(--scene aircraft --camera far --size 256x256 --instances 100 --frames 20 --warmup 3 --no-timer-check)
   measure every --submit retained
+fi
+if want every_bottleneck; then
   # The bottleneck class of one technique per family on either API (every_bottleneck_<api>_classes.csv).
   family=(-t shadowmap -t cubemap -t vsm -t volume -t occluder -t proxy -t planar)
   for api in gl vulkan; do
