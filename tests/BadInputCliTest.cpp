@@ -36,6 +36,9 @@ struct BadInput {
     int exitCode = 2;
     std::function<bool(const std::string& dir)> setup; ///< false: the case cannot be made here (skipped)
     bool closeStdout = false;
+    /// The args are a whole command line of their own (a subcommand that takes no run options, such as
+    /// report, merge, export or golden): nothing is appended to them.
+    bool bare = false;
 };
 
 bool makeFifo(const std::string& dir) {
@@ -245,9 +248,10 @@ TEST(BadInputCli, EveryClassOfBadInputIsOneLineAndExitTwoAndLosesNothing) {
         const bool ownCsv = args.find("--csv") != std::string::npos;
         const std::string err = dir + "/../badinput-stderr.txt";
         const bool sweep = args.rfind("sweep ", 0) == 0;
-        std::string command = "cd " + dir + " && " + SB_BENCH_BINARY + " " + args +
-                              (sweep ? kQuickSweep : kQuick) + (ownCsv ? "" : " --csv pre.csv") + " 2>" +
-                              err + (c.closeStdout ? " >&-" : " >/dev/null");
+        const std::string appended =
+            c.bare ? "" : std::string(sweep ? kQuickSweep : kQuick) + (ownCsv ? "" : " --csv pre.csv");
+        std::string command = "cd " + dir + " && " + SB_BENCH_BINARY + " " + args + appended + " 2>" + err +
+                              (c.closeStdout ? " >&-" : " >/dev/null");
         // A hung run (the FIFO case before the fix) is a failure, not a hang of the suite.
         const int code = test::runCommand("timeout 60 sh -c " + shellQuoted(command)).exitCode;
         ++tried;
