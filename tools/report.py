@@ -27,13 +27,26 @@ Python standard library only (csv, html), so /usr/bin/python3 of any Debian 12 r
 import argparse
 import base64
 import csv
+import fcntl
 import html
+import io
 import math
 import os
 import re
+import stat
 import sys
+import urllib.parse
 
 CSV_LIMIT = 10 * 1024 * 1024  # a result CSV larger than this is listed, not tabulated
+# Every file read is read through one descriptor checked to be a regular file no larger than its bound,
+# so a link to /dev/zero, a FIFO or a huge file costs nothing (each is skipped and listed instead).
+README_LIMIT = 1024 * 1024  # a README.md larger than this is skipped
+EMBED_LIMIT = 16 * 1024 * 1024  # with --embed, a larger image is skipped (the page is one file to send)
+# The one temporary name of the page's writer, beside the page (write_page).
+PARTIAL_SUFFIX = ".partial"
+# A link of the page is a relative path, every byte outside these percent-encoded: no scheme ("javascript:"
+# needs its colon), no host, no absolute path can appear.
+SAFE_URL = re.compile(r"[A-Za-z0-9._~%/-]+")
 IMAGE_EXTS = (".png", ".svg", ".jpg", ".jpeg", ".gif")
 # The key columns of a bench row, in this order, where present (README.md, "CSV columns").
 KEY_COLUMNS = [
@@ -50,47 +63,141 @@ ENVIRONMENT_COLUMNS = [
 WIDE = 14  # a table with more columns than this shows the key ones, the rest under "all columns"
 
 
+def display(text):
+    """`text` (a path or an argument, which may hold bytes that are not UTF-8) as text the page and
+    messages can hold: each undecodable byte becomes U+FFFD."""
+    return os.fsencode(text).decode("utf-8", "replace")
+
+
 def bad_input(message):
-    """Exit code 2, bench's code for wrong input (core/Error.h), with the message on stderr."""
-    print(f"report.py: {message}", file=sys.stderr)
+    """Exit code 2, bench's code for wrong input (core/Error.h), with the message on stderr (one line)."""
+    print(f"report.py: {display(message)}", file=sys.stderr)
     sys.exit(2)
 
 
+def os_failure(message):
+    """Exit code 1, bench's code for a failure of the OS (a full disk), as the CSV writer reports it."""
+    print(f"report.py: {display(message)}", file=sys.stderr)
+    sys.exit(1)
+
+
+def kind_of(mode):
+    """What a file that is not a regular file is, in words (bench/lib/output/AtomicFile.cpp's words)."""
+    for test, kind in ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"),
+                       (stat.S_ISBLK, "a block device"), (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return kind
+    return "not a regular file"
+
+
+class Skipped(Exception):
+    """An entry left out of the page: the reason, in words ("a FIFO", "larger than 1 MiB")."""
+
+
+def mib(n):
+    return f"{n // (1024 * 1024)} MiB"
+
+
+def check_entry(path, limit=None):
+    """The size of `path` (a link is followed), or Skipped when it is not a regular file or is larger
+    than `limit`. Only stat() here: nothing is opened, so a FIFO cannot block."""
+    try:
+        st = os.stat(path)
+    except FileNotFoundError:
+        raise Skipped("a broken link") from None
+    except OSError as e:
+        raise Skipped(f"cannot inspect it: {e.strerror}") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise Skipped(kind_of(st.st_mode) + ", not a regular file")
+    if limit is not None and st.st_size > limit:
+        raise Skipped(f"larger than {mib(limit)}")
+    return st.st_size
+
+
+def open_regular(path, limit):
+    """`path` opened for reading (binary), checked through its descriptor: a regular file of at most
+    `limit` bytes, else Skipped. O_NONBLOCK: a FIFO swapped in after check_entry does not block the open."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC)
+    except OSError as e:
+        raise Skipped(f"cannot open it: {e.strerror}") from None
+    st = os.fstat(fd)
+    if not stat.S_ISREG(st.st_mode) or st.st_size > limit:
+        os.close(fd)
+        raise Skipped(kind_of(st.st_mode) + ", not a regular file" if not stat.S_ISREG(st.st_mode)
+                      else f"larger than {mib(limit)}")
+    return os.fdopen(fd, "rb")
+
+
+def read_text(path, limit):
+    """A text file's content (bytes that are not UTF-8 replaced), at most `limit` bytes read."""
+    with open_regular(path, limit) as f:
+        return f.read(limit + 1).decode("utf-8", "replace")
+
+
 def read_csv(path):
-    with open(path, newline="", encoding="utf-8", errors="replace") as f:
-        rows = list(csv.reader(f))
+    """The header and rows of a CSV of at most CSV_LIMIT bytes (Skipped when larger). A cell may be as
+    large as the file; a malformed one stops the report naming the file and the line (exit 2)."""
+    csv.field_size_limit(CSV_LIMIT)  # the default 128 KiB is smaller than a file this script accepts
+    with open_regular(path, CSV_LIMIT) as f:
+        reader = csv.reader(io.TextIOWrapper(f, encoding="utf-8", errors="replace", newline=""))
+        try:
+            rows = list(reader)
+        except csv.Error as e:
+            bad_input(f"{path}: line {reader.line_num}: {e}")
     if not rows:
         return [], []
     header, body = rows[0], rows[1:]
     return header, [r + [""] * (len(header) - len(r)) for r in body]
 
 
-def collect(paths, out_path):
-    """The CSVs, images and READMEs of the arguments, in a stable order; the page itself left out."""
+def collect(paths, out_path, embed, skipped):
+    """The CSVs, images and READMEs of the arguments, in a stable order; the page itself left out. Only
+    regular files (a link is followed) within their size bound are taken, and only images whose link
+    can be made safe; every other entry of those kinds is appended to `skipped` as (path, why)."""
     csvs, images, readmes = [], [], []
     out_real = os.path.realpath(out_path)
+    out_dir = os.path.dirname(os.path.abspath(out_path))
 
     def add(path):
         low = path.lower()
+        if low.endswith(".csv"):
+            found, limit = csvs, None  # a larger CSV is listed as such (build)
+        elif low.endswith(IMAGE_EXTS):
+            found, limit = images, EMBED_LIMIT if embed else None
+        elif os.path.basename(low) == "readme.md":
+            found, limit = readmes, README_LIMIT
+        else:
+            return
         if os.path.realpath(path) == out_real:
             return
-        if low.endswith(".csv"):
-            csvs.append(path)
-        elif low.endswith(IMAGE_EXTS):
-            images.append(path)
-        elif os.path.basename(low) == "readme.md":
-            readmes.append(path)
+        try:
+            check_entry(path, limit)
+            if found is images and href(path, out_dir) is None:
+                raise Skipped("its name cannot be written as a safe relative link")
+        except Skipped as why:
+            skipped.append((path, str(why)))
+            return
+        found.append(path)
+
+    def unreadable(error):
+        skipped.append((error.filename, f"cannot list it: {error.strerror}"))
 
     for p in paths:
-        if os.path.isdir(p):
-            for root, dirs, files in os.walk(p):
+        try:
+            mode = os.stat(p).st_mode
+        except OSError:
+            bad_input(f"{p}: no such file or folder")
+        if stat.S_ISDIR(mode):
+            # Links to folders are not followed (os.walk's default): a loop cannot make the walk endless.
+            for root, dirs, files in os.walk(p, onerror=unreadable):
                 dirs.sort()
                 for name in sorted(files):
                     add(os.path.join(root, name))
-        elif os.path.isfile(p):
+        elif stat.S_ISREG(mode):
             add(p)
         else:
-            bad_input(f"{p}: no such file or folder")
+            bad_input(f"{p}: it is {kind_of(mode)}, not a regular file or a folder")
     return csvs, images, readmes
 
 
@@ -102,18 +209,46 @@ def is_number(text):
         return False
 
 
-def link(path, out_dir, embed):
-    """The src of an image: relative to the page, or the file itself as a data: URL (--embed)."""
-    if embed:
-        ext = os.path.splitext(path)[1].lower().lstrip(".")
-        mime = {"svg": "image/svg+xml", "jpg": "image/jpeg"}.get(ext, f"image/{ext}")
-        with open(path, "rb") as f:
-            return f"data:{mime};base64," + base64.b64encode(f.read()).decode("ascii")
-    return os.path.relpath(path, out_dir).replace(os.sep, "/")
+def href(path, out_dir):
+    """`path` as a link of the page: relative to the page's folder, every byte but letters, digits and
+    "._~-/" percent-encoded (a name that is not UTF-8 too), so no scheme, host or absolute path can
+    appear; None where the result would still not be a plain relative path."""
+    rel = os.path.relpath(path, out_dir).replace(os.sep, "/")
+    url = urllib.parse.quote(os.fsencode(rel), safe="/")
+    return url if SAFE_URL.fullmatch(url) and not url.startswith("/") else None
+
+
+# The data: URLs of --embed, each image read once however often the page shows it.
+EMBEDDED = {}
+EMBED_TYPES = {"png": "image/png", "svg": "image/svg+xml", "jpg": "image/jpeg", "jpeg": "image/jpeg",
+               "gif": "image/gif"}
+
+
+def src(path, out_dir, embed):
+    """The src of an image: its safe relative link, or with --embed the file itself as a data: URL of
+    an image type ("" where the file changed into something unreadable since it was collected)."""
+    if not embed:
+        return href(path, out_dir) or ""
+    if path not in EMBEDDED:
+        mime = EMBED_TYPES.get(os.path.splitext(path)[1].lower().lstrip("."), "image/png")
+        try:
+            with open_regular(path, EMBED_LIMIT) as f:
+                EMBEDDED[path] = f"data:{mime};base64," + base64.b64encode(f.read(EMBED_LIMIT + 1)).decode("ascii")
+        except Skipped:
+            EMBEDDED[path] = ""
+    return EMBEDDED[path]
+
+
+def picture(path, out_dir, embed, attributes=""):
+    """An image of the page, linked to the file where it is linked (not embedded): `<a><img></a>`."""
+    source = src(path, out_dir, embed)
+    img = (f'<img{attributes} alt="{html.escape(display(os.path.basename(path)))}" '
+           f'src="{html.escape(source)}">')
+    return img if embed else f'<a href="{html.escape(source)}">{img}</a>'
 
 
 def shown_path(path, out_dir):
-    return os.path.relpath(path, out_dir).replace(os.sep, "/")
+    return display(os.path.relpath(path, out_dir).replace(os.sep, "/"))
 
 
 def sanitized(name):
@@ -134,7 +269,17 @@ def recorded_images(header, row, csv_dir, images):
         return None
     known = {os.path.realpath(i): i for i in images}
     paths = [os.path.join(csv_dir, c) for c in cells]
-    return [known.get(os.path.realpath(p), p) for p in paths if os.path.isfile(p)]
+    return [known.get(os.path.realpath(p), p) for p in paths if os.path.realpath(p) in known or usable_image(p)]
+
+
+def usable_image(path):
+    """An image a row records outside the inputs: shown where it is a regular file with an image's name
+    and a safe link (collect's rules for the inputs' images)."""
+    try:
+        check_entry(path)
+    except Skipped:
+        return False
+    return path.lower().endswith(IMAGE_EXTS) and href(path, os.getcwd()) is not None
 
 
 def row_images(header, rows, images, csv_dir):
@@ -180,9 +325,7 @@ def table_html(table_id, header, rows, columns, pictures, out_dir, embed, captio
     for n, r in enumerate(rows, start=1):
         cells = [f'<td data-col="row" data-value="{n}">{n}</td>']
         if pictures is not None:
-            imgs = "".join(f'<a href="{html.escape(link(p, out_dir, embed))}"><img class="thumb" alt="'
-                           f'{html.escape(os.path.basename(p))}" src="{html.escape(link(p, out_dir, embed))}"></a>'
-                           for p in pictures[n - 1])
+            imgs = "".join(picture(p, out_dir, embed, ' class="thumb"') for p in pictures[n - 1])
             cells.append(f'<td class="pics">{imgs}</td>')
         for c in columns:
             v = r[index[c]]
@@ -362,9 +505,7 @@ def gallery(pictures, labels, out_dir, embed):
             if p in seen:
                 continue
             seen.add(p)
-            src = html.escape(link(p, out_dir, embed))
-            out.append(f'<figure><a href="{src}"><img alt="{html.escape(os.path.basename(p))}" src="{src}"></a>'
-                       f"<figcaption>{html.escape(short(labels[n - 1]))}</figcaption></figure>")
+            out.append(f"<figure>{picture(p, out_dir, embed)}<figcaption>{html.escape(short(labels[n - 1]))}</figcaption></figure>")
     return f'<div class="gallery">{"".join(out)}</div>' if out else ""
 
 
@@ -509,12 +650,14 @@ SCRIPT_MAIN = r"""
 "use strict";
 // Sorting: a click on a heading sorts its table by that column, ascending, then descending. Numbers
 // compare as numbers; empty cells go last either way; ties keep the CSV's order (the row number).
-function cellValue(row, col) {
-  var cell = row.querySelector('td[data-col="' + col + '"]');
-  return cell ? cell.getAttribute("data-value") : "";
+// A column is found by its place (every row has the heading's cells), never by its name in a selector:
+// a name may hold any character (" < ' \).
+function cellValue(row, index) {
+  var cell = row.cells[index];
+  return (cell && cell.getAttribute("data-value")) || "";
 }
-function compareRows(a, b, col, type, direction) {
-  var x = cellValue(a, col), y = cellValue(b, col);
+function compareRows(a, b, index, type, direction) {
+  var x = cellValue(a, index), y = cellValue(b, index);
   if (x === "" || y === "") {
     if (x === y) return Number(a.dataset.row) - Number(b.dataset.row);
     return x === "" ? 1 : -1;
@@ -524,10 +667,10 @@ function compareRows(a, b, col, type, direction) {
   return direction === "desc" ? -d : d;
 }
 function sortTable(table, th, direction) {
-  var col = th.dataset.col, type = th.dataset.type;
+  var index = th.cellIndex, type = th.dataset.type;
   var body = table.tBodies[0];
   var rows = Array.prototype.slice.call(body.rows);
-  rows.sort(function (a, b) { return compareRows(a, b, col, type, direction); });
+  rows.sort(function (a, b) { return compareRows(a, b, index, type, direction); });
   rows.forEach(function (r) { body.appendChild(r); });
   Array.prototype.forEach.call(table.tHead.rows[0].cells, function (c) { c.removeAttribute("aria-sort"); });
   th.setAttribute("aria-sort", direction === "desc" ? "descending" : "ascending");
@@ -539,7 +682,7 @@ function onHeading(event) {
 function inOrder(table, th, direction) {
   var rows = table.tBodies[0].rows;
   for (var i = 1; i < rows.length; ++i)
-    if (compareRows(rows[i - 1], rows[i], th.dataset.col, th.dataset.type, direction) > 0) return false;
+    if (compareRows(rows[i - 1], rows[i], th.cellIndex, th.dataset.type, direction) > 0) return false;
   return true;
 }
 // #selftest: every sortable column of every table, clicked twice (ascending, descending), checked in
@@ -570,7 +713,8 @@ function sortFromFragment(fragment) {
   var m = /^sort=([^:]+):(.+):(asc|desc)$/.exec(fragment);
   if (!m) return;
   var table = document.getElementById(m[1]);
-  var th = table && table.querySelector('th[data-col="' + m[2] + '"]');
+  var th = table && Array.prototype.find.call(table.querySelectorAll("th[data-col]"),
+                                              function (h) { return h.dataset.col === m[2]; });
   if (!th) { console.error("#sort: no column " + m[2] + " in table " + m[1]); return; }
   th.click();
   if (m[3] === "desc") th.click();
@@ -619,18 +763,140 @@ output#selftest { display: block; color: #555; }
 """
 
 
+def cannot_write(out, what, error=None):
+    """The CSV writer's message for a page that cannot be written (AtomicFile.cpp's words)."""
+    return f"cannot write report page '{out}': {what}" + (f": {error.strerror}" if error is not None else "")
+
+
+def check_page_path(out):
+    """`out` names a regular file or nothing: a device, a FIFO, a socket or a folder is refused (exit 2)
+    before anything is opened. Returns its stat, or None where it does not exist."""
+    try:
+        st = os.stat(out)
+    except FileNotFoundError:
+        return None
+    except OSError as e:
+        bad_input(cannot_write(out, "cannot inspect it", e))
+    if not stat.S_ISREG(st.st_mode):
+        bad_input(cannot_write(out, f"it is {kind_of(st.st_mode)}, not a regular file (the page is written by "
+                                    "replacing the file)"))
+    return st
+
+
+def same_file(fd, path):
+    """`path` (not followed) still names the file open on `fd`."""
+    try:
+        a, b = os.fstat(fd), os.lstat(path)
+    except OSError:
+        return False
+    return (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino)
+
+
+def clear_stale_partial(tmp):
+    """Removes `tmp` where no live writer holds it: a link or any other non-regular file planted there
+    (removed, never followed), or the temporary file of a writer that died (a live writer holds an
+    exclusive flock on it until it renames it: waiting for that lock, then finding the file still in
+    place, means its writer is gone)."""
+    try:
+        st = os.lstat(tmp)
+    except FileNotFoundError:
+        return
+    if not stat.S_ISREG(st.st_mode):
+        os.unlink(tmp)
+        return
+    try:
+        fd = os.open(tmp, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+    except FileNotFoundError:
+        return  # its writer renamed it meanwhile
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        if same_file(fd, tmp):
+            os.unlink(tmp)
+    finally:
+        os.close(fd)
+
+
+def create_partial(tmp):
+    """`tmp` created exclusively (O_EXCL: never an existing file, O_NOFOLLOW: never through a link) and
+    locked; its descriptor. Whatever is in the way is cleared first (clear_stale_partial)."""
+    for _ in range(100):  # each round lost means another writer got the name first and finished
+        try:
+            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW | os.O_CLOEXEC, 0o666)
+        except FileExistsError:
+            clear_stale_partial(tmp)
+            continue
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        if same_file(fd, tmp):  # else a clearer took it for a dead writer's before the lock: again
+            return fd
+        os.close(fd)
+    raise OSError(0, "other writers kept taking its name")
+
+
+def write_page(out, data):
+    """Writes the page by the CSV writer's rules (bench/lib/output/AtomicFile.h): a special file or a
+    folder at `out` is refused (exit 2); the bytes go to "<page>.partial" beside the page (created
+    exclusively, see create_partial), which is fsynced and renamed over the page, then the folder is
+    fsynced. A failure (a full disk) is one line and exit 1, and leaves the old page and no
+    temporary file. A link at `out` is followed: the file it names is replaced, the link kept."""
+    st = check_page_path(out)
+    target = os.path.realpath(out) if st is not None else out
+    directory = os.path.dirname(target) or "."
+    try:
+        os.makedirs(directory, exist_ok=True)
+    except OSError as e:
+        bad_input(cannot_write(out, f"cannot make its folder '{directory}'", e))
+    tmp = target + PARTIAL_SUFFIX
+    try:
+        fd = create_partial(tmp)
+    except OSError as e:
+        os_failure(cannot_write(out, f"cannot create temporary file '{tmp}'", e))
+    step = f"cannot write temporary file '{tmp}'"
+    try:
+        if st is not None:
+            try:  # replacing the page keeps who may read it (best effort: a foreign-owned page may refuse)
+                os.fchmod(fd, stat.S_IMODE(st.st_mode))
+            except OSError:
+                pass
+        view = memoryview(data)
+        while view:
+            view = view[os.write(fd, view):]
+        os.fsync(fd)
+        step = f"cannot rename '{tmp}' over it"
+        os.rename(tmp, target)
+    except OSError as e:
+        if same_file(fd, tmp):
+            os.unlink(tmp)
+        os_failure(cannot_write(out, step, e))
+    finally:
+        os.close(fd)
+    try:  # the rename itself survives a power cut (best effort: some file systems refuse)
+        dir_fd = os.open(directory, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+        try:
+            os.fsync(dir_fd)
+        finally:
+            os.close(dir_fd)
+    except OSError:
+        pass
+
+
 def build(args):
     out_dir = os.path.dirname(os.path.abspath(args.out))
-    csvs, images, readmes = collect(args.inputs, args.out)
+    check_page_path(args.out)  # before minutes of work: a device or a folder named by -o is refused
+    skipped = []
+    csvs, images, readmes = collect(args.inputs, args.out, args.embed, skipped)
     if not csvs and not images:
         bad_input(f"no CSV or image in {' '.join(args.inputs)}")
     tables, sections, glances, used_images = [], [], [], set()
     for t, path in enumerate(csvs, start=1):
-        if os.path.getsize(path) > CSV_LIMIT:
-            sections.append(f"<h2>{html.escape(shown_path(path, out_dir))}</h2><p>Larger than "
-                            f"{CSV_LIMIT // (1024 * 1024)} MiB: not tabulated.</p>")
+        try:
+            header, rows = read_csv(path)
+        except Skipped as why:
+            if str(why).startswith("larger than"):
+                sections.append(f"<h2>{html.escape(shown_path(path, out_dir))}</h2><p>Larger than "
+                                f"{mib(CSV_LIMIT)}: not tabulated.</p>")
+            else:
+                skipped.append((path, str(why)))
             continue
-        header, rows = read_csv(path)
         if not header:
             continue
         tables.append((header, rows))
@@ -664,9 +930,7 @@ def build(args):
             part.append('<div class="figures">')
             for fig in figures:
                 used_images.add(fig)
-                part.append(f'<figure><a href="{html.escape(link(fig, out_dir, args.embed))}"><img alt="'
-                            f'{html.escape(os.path.basename(fig))}" src="{html.escape(link(fig, out_dir, args.embed))}">'
-                            f"</a><figcaption>{html.escape(shown_path(fig, out_dir))}</figcaption></figure>")
+                part.append(f"<figure>{picture(fig, out_dir, args.embed)}<figcaption>{html.escape(shown_path(fig, out_dir))}</figcaption></figure>")
             used_images.update(i for i in images if os.path.splitext(i)[0] in svgs)
             part.append("</div>")
         part.append("</div>")
@@ -679,20 +943,24 @@ def build(args):
     rest = [i for i in images if i not in used_images]
     if rest:
         sections.append("<h2>Other images</h2><div class=\"pair\">" + "".join(
-            f'<figure><img class="figure" style="max-width:400px" alt="{html.escape(os.path.basename(i))}" '
-            f'src="{html.escape(link(i, out_dir, args.embed))}"><figcaption>{html.escape(shown_path(i, out_dir))}'
+            f'<figure><img class="figure" style="max-width:400px" alt="{html.escape(display(os.path.basename(i)))}" '
+            f'src="{html.escape(src(i, out_dir, args.embed))}"><figcaption>{html.escape(shown_path(i, out_dir))}'
             f"</figcaption></figure>" for i in rest) + "</div>")
     notes = []
     for path in readmes:
-        with open(path, encoding="utf-8", errors="replace") as f:
-            text = f.read()
+        try:
+            text = read_text(path, README_LIMIT)
+        except Skipped as why:
+            skipped.append((path, str(why)))
+            continue
         lines = readme_commands(text)
         notes.append(f"<h3>{html.escape(shown_path(path, out_dir))}</h3>")
         if lines:
             notes.append("<p>Its commands:</p><pre class=\"commands\">" + html.escape("\n".join(lines)) + "</pre>")
         notes.append(f"<details><summary>the whole file</summary><pre>{html.escape(text)}</pre></details>")
     inputs = ", ".join(html.escape(shown_path(p, out_dir)) for p in args.inputs)
-    title = args.title or "shadowbench results: " + ", ".join(os.path.basename(os.path.normpath(p)) for p in args.inputs)
+    title = display(args.title or "shadowbench results: " +
+                    ", ".join(os.path.basename(os.path.normpath(p)) for p in args.inputs))
     page = [
         "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
         '<meta name="viewport" content="width=device-width, initial-scale=1">',
@@ -703,6 +971,10 @@ def build(args):
         f"{len(images)} image(s). Static: sorting runs in this page, nothing is fetched.</p>",
         '<pre id="js-errors" hidden></pre>', '<output id="selftest"></output>',
     ]
+    if skipped:
+        page.append(f'<h2>Skipped</h2><ul id="skipped">' + "".join(
+            f"<li><code>{html.escape(shown_path(p, out_dir))}</code>: {html.escape(why)}</li>" for p, why in skipped)
+            + "</ul>")
     page.extend(g for g in glances if g)
     page += [
         "<h2>Environment</h2><p>What the rows record about the machine, driver and build that measured them.</p>",
@@ -713,13 +985,12 @@ def build(args):
         page.extend(notes)
     page.extend(sections)
     page.append("</body></html>\n")
-    os.makedirs(out_dir, exist_ok=True)
-    text = "\n".join(page)
-    tmp = args.out + ".partial"
-    with open(tmp, "w", encoding="utf-8", newline="\n") as f:
-        f.write(text)
-    os.replace(tmp, args.out)
-    print(f"wrote {args.out} ({len(tables)} table(s), {len(images)} image(s), {len(text) // 1024} KiB)")
+    data = "\n".join(page).encode("utf-8", "replace")  # display() made every name UTF-8 already
+    write_page(args.out, data)
+    if skipped:  # one line, the same list as the page's
+        print(f"report.py: skipped {len(skipped)} entr{'y' if len(skipped) == 1 else 'ies'}: " +
+              "; ".join(f"{display(p)} ({why})" for p, why in skipped), file=sys.stderr)
+    print(f"wrote {display(args.out)} ({len(tables)} table(s), {len(images)} image(s), {len(data) // 1024} KiB)")
 
 
 def main():

@@ -32,6 +32,42 @@ std::string defaultOut(const std::string& first) {
     return ((fs::is_directory(p) ? p : p.parent_path()) / "report.html").string();
 }
 
+/// The lines of `text`, empty ones and trailing blanks left out.
+std::vector<std::string> nonEmptyLines(const std::string& text) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(start, end - start);
+        while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+        if (!line.empty()) out.push_back(line);
+        start = end + 1;
+    }
+    return out;
+}
+
+/// tools/report.py says what it skipped, and why it failed, in lines of its own ("report.py: ...").
+constexpr const char* kScriptPrefix = "report.py: ";
+
+std::string withoutScriptPrefix(const std::string& line) {
+    return line.rfind(kScriptPrefix, 0) == 0 ? line.substr(std::string(kScriptPrefix).size()) : line;
+}
+
+/// The error for a failed script: its own one-line message with its code where it gave one (2 wrong
+/// input, 1 an OS failure such as a full disk), else how it ended and its last line (a bug).
+Error scriptFailure(const ChildExit& exit) {
+    const std::vector<std::string> lines = nonEmptyLines(exit.stderrTail);
+    const std::string last = lines.empty() ? "" : lines.back();
+    const bool ownMessage = exit.signal == 0 && (exit.exitCode == 1 || exit.exitCode == 2) &&
+                            lines.size() == 1 && last.rfind(kScriptPrefix, 0) == 0;
+    if (ownMessage)
+        return Error("bench report: " + withoutScriptPrefix(last),
+                     exit.exitCode == 2 ? ExitCode::BadInput : ExitCode::Failure);
+    return Error("bench report: tools/report.py failed (" + exit.describe() + "): " + last,
+                 ExitCode::Failure);
+}
+
 } // namespace
 
 std::string ReportCommand::python() {
@@ -95,12 +131,12 @@ lines are listed as the way to reproduce). The page is written by tools/report.p
     if (cli.embed) command.push_back("--embed");
     const ChildExit exit =
         ChildProcess::run(command, {}, [](const std::string& line) { std::cout << line << "\n"; });
-    if (exit.ok()) return 0;
-    // The script exits 2 for inputs that hold nothing to report (tools/report.py, bad_input).
-    std::string tail = exit.stderrTail;
-    while (!tail.empty() && std::isspace(static_cast<unsigned char>(tail.back()))) tail.pop_back();
-    throw Error("bench report: tools/report.py failed (" + exit.describe() + "): " + tail,
-                exit.signal == 0 && exit.exitCode == 2 ? ExitCode::BadInput : ExitCode::Failure);
+    if (!exit.ok()) throw scriptFailure(exit);
+    // A page written all the same: what it left out (special files, files over their bound, names
+    // that cannot be linked safely) is one line, also listed in the page.
+    for (const std::string& line : nonEmptyLines(exit.stderrTail))
+        std::cerr << "bench: warning: bench report: " << withoutScriptPrefix(line) << "\n";
+    return 0;
 }
 
 } // namespace sb
