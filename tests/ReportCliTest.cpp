@@ -244,6 +244,27 @@ TEST(ReportCliRows, EachRowShowsThePictureItRecords) {
     }
 }
 
+// Column names holding the characters that end an HTML attribute, a CSS selector's string or a script's
+// string (" < ' \): the page loads without a script error and sorting by the quoted column (the
+// fragment #sort= clicks its heading) puts the rows in the order this test computes from the values.
+// A CSV written by hand: no run needed.
+TEST(ReportCliNames, ColumnNamesWithQuotesSortAndBreakNothing) {
+    if (!haveChromium()) GTEST_SKIP() << "headless Chromium is needed: apt-get install chromium";
+    const std::string own = test::freshDir("report-cli-names");
+    test::writeFile(own + "/run.csv",
+                    "technique,\"a\"\"b\",c<d,e'f,g\\h\nnone,3,x,2,b\nshadowmap,1,y,5,a\nblob,2,z,1,c\n");
+    const auto page = runCommand(kBench + " report " + own + " -o " + own + "/index.html");
+    ASSERT_EQ(page.exitCode, 0) << page.output;
+    // a"b descending: 3 (row 1), 2 (row 3), 1 (row 2).
+    const Browser b = load(own, "file://" + own + "/index.html#sort=t1:a%22b:desc");
+    EXPECT_EQ(scriptProblems(b), "") << b.log.substr(0, 2000);
+    std::vector<std::string> order;
+    for (const auto& r : tableRows(b.dom, "t1")) order.push_back(r.at("row"));
+    EXPECT_EQ(order, (std::vector<std::string>{"1", "3", "2"}));
+    for (const std::string name : {"a\"b", "c<d", "e'f", "g\\h"})
+        EXPECT_TRUE(tableRows(b.dom, "t1").at(0).count(name)) << name << " is a column of the table";
+}
+
 TEST_F(ReportCli, SortingByClickOrdersTheRows) {
     const CsvTable csv = CsvWriter::read(dir + "/run.csv");
     bool moved = false;
