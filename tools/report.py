@@ -22,6 +22,12 @@ and writes the verdict into <output id="selftest">; #sort=TABLE:COLUMN:asc|desc 
 load as a click would. Script errors are written into <pre id="js-errors">, and <body> gets
 data-js-ready="1" once the script has run to its end (tests/ReportCliTest.cpp reads both).
 
+Hostile folders: only regular files are read, each within a size bound (a link to /dev/zero, a FIFO,
+a file over its bound is skipped and named in the page and in one line on stderr); every link is a
+percent-encoded relative path (no file name becomes a scheme); the page is written by the CSV writer's
+rules (write_page). Every failure is one line "report.py: ..." on stderr: exit 2 wrong input, 1 an
+OS failure such as a full disk.
+
 Python standard library only (csv, html), so /usr/bin/python3 of any Debian 12 runs it.
 """
 import argparse

@@ -97,8 +97,12 @@ int ReportCommand::main(int argc, char** argv) {
 
 Folders are searched recursively for *.csv, images (*.png, *.svg, *.jpg) and README.md (whose command
 lines are listed as the way to reproduce). The page is written by tools/report.py with /usr/bin/python3
-(SHADOWBENCH_PYTHON overrides). Exit codes: 2 an input is missing or holds no CSV or image,
-3 no Python interpreter or no tools/report.py here, 1 the script failed.)");
+(SHADOWBENCH_PYTHON overrides). Only regular files are read, each within a size bound; what is skipped
+(a FIFO, a link to a device, a file over its bound) is listed in the page and in one line on stderr.
+The page is written through PAGE.partial (created exclusively, fsynced, renamed over the page).
+Exit codes: 2 an input is missing or not a file or folder, -o names a device, FIFO or folder, or the
+inputs hold no CSV or image; 3 no Python interpreter or no tools/report.py here; 1 the page cannot
+be written (a full disk: the old page is kept) or the script failed.)");
     ReportCli cli;
     app.add_option("inputs", cli.inputs, "folders, result CSVs, images, README.md")->required();
     app.add_option("-o,--out", cli.out, "the page to write (default: FIRST_FOLDER/report.html)");

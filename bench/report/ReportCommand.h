@@ -7,8 +7,10 @@
 // and the commands that measure them again. The page is written by tools/report.py under Debian's
 // /usr/bin/python3 (SHADOWBENCH_PYTHON overrides it); this command finds the script, checks the
 // inputs and maps the outcome to bench's exit codes (core/Error.h): 2 for an input that does not
-// exist or holds nothing to report, 3 when the Python interpreter or the script is missing here, 1
-// when the script fails.
+// exist or holds nothing to report (and the script's own wrong-input refusals: -o a device or a
+// folder), 3 when the Python interpreter or the script is missing here, 1 when the page cannot be
+// written (a full disk) or the script fails. The script's one-line message becomes bench's; the line
+// naming what it skipped (special files, files over their bound) is passed on as a warning.
 #include <string>
 #include <vector>
 
