@@ -102,8 +102,8 @@ bool validUtf8(const std::string& s) {
 }
 
 // The page's temporary name is not followed: a link planted there towards a file outside the folder
-// leaves that file as it was, and the page is written all the same. A dead writer's temporary file is
-// cleared the same way.
+// leaves that file as it was, and the page is written all the same; so does a link planted as the page
+// itself. A dead writer's temporary file is cleared and the page written.
 TEST(ReportHostileCli, PlantedPartialLinkIsNotFollowed) {
     const std::string dir = sb::test::freshTestDir("report-hostile");
     fs::create_directories(dir + "/results");
@@ -116,6 +116,14 @@ TEST(ReportHostileCli, PlantedPartialLinkIsNotFollowed) {
     EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir + "/results/report.html")));
     EXPECT_EQ(sb::test::readFile(dir + "/results/report.html").rfind("<!DOCTYPE html>", 0), 0u);
     EXPECT_FALSE(fs::exists(fs::symlink_status(dir + "/results/report.html.partial")));
+
+    // The page's own name planted as a link to a file outside: the link is replaced, the file kept.
+    fs::remove(dir + "/results/report.html");
+    fs::create_symlink(dir + "/outside.txt", dir + "/results/report.html");
+    const auto page = reportErr(dir + "/results");
+    EXPECT_EQ(page.exitCode, 0) << page.output;
+    EXPECT_EQ(sb::test::readFile(dir + "/outside.txt"), "not yours\n");
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir + "/results/report.html")));
 
     sb::test::writeFile(dir + "/results/report.html.partial", "a writer killed half-way");
     const auto again = reportErr(dir + "/results");

@@ -843,9 +843,11 @@ def write_page(out, data):
     folder at `out` is refused (exit 2); the bytes go to "<page>.partial" beside the page (created
     exclusively, see create_partial), which is fsynced and renamed over the page, then the folder is
     fsynced. A failure (a full disk) is one line and exit 1, and leaves the old page and no
-    temporary file. A link at `out` is followed: the file it names is replaced, the link kept."""
+    temporary file. Unlike a CSV, a link at `out` is not followed but replaced by the page: the default
+    page lies in the results folder, and a link planted there must not make the report overwrite a
+    file outside it (a link to a device or a folder is still refused, as is the device itself)."""
     st = check_page_path(out)
-    target = os.path.realpath(out) if st is not None else out
+    target = out
     directory = os.path.dirname(target) or "."
     try:
         os.makedirs(directory, exist_ok=True)
