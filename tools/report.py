@@ -75,15 +75,21 @@ def display(text):
     return os.fsencode(text).decode("utf-8", "replace")
 
 
+def say(message):
+    """`message` as one line on stderr: a control character of a file name ("\\n") is written as \\xNN."""
+    text = re.sub(r"[\x00-\x1f\x7f]", lambda m: f"\\x{ord(m.group()):02x}", display(message))
+    print(f"report.py: {text}", file=sys.stderr)
+
+
 def bad_input(message):
     """Exit code 2, bench's code for wrong input (core/Error.h), with the message on stderr (one line)."""
-    print(f"report.py: {display(message)}", file=sys.stderr)
+    say(message)
     sys.exit(2)
 
 
 def os_failure(message):
     """Exit code 1, bench's code for a failure of the OS (a full disk), as the CSV writer reports it."""
-    print(f"report.py: {display(message)}", file=sys.stderr)
+    say(message)
     sys.exit(1)
 
 
@@ -996,8 +1002,8 @@ def build(args):
     data = "\n".join(page).encode("utf-8", "replace")  # display() made every name UTF-8 already
     write_page(args.out, data)
     if skipped:  # one line, the same list as the page's
-        print(f"report.py: skipped {len(skipped)} entr{'y' if len(skipped) == 1 else 'ies'}: " +
-              "; ".join(f"{display(p)} ({why})" for p, why in skipped), file=sys.stderr)
+        say(f"skipped {len(skipped)} entr{'y' if len(skipped) == 1 else 'ies'}: " +
+            "; ".join(f"{display(p)} ({why})" for p, why in skipped))
     print(f"wrote {display(args.out)} ({len(tables)} table(s), {len(images)} image(s), {len(data) // 1024} KiB)")
 
 
