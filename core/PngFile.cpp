@@ -88,16 +88,24 @@ struct StoredHeader {
     size_t rowBytes = 0; ///< one stored row without its filter byte
 };
 
-/// Reads the header and sets the transforms. False with codec.message set on a libpng error.
-bool readHeader(Codec& codec, StoredHeader& stored, Layout& layout) {
+/// Reads the header as stored. False with codec.message set on a libpng error. libpng's own side limit
+/// is its largest (2^31 - 1): the suite's limits are checked after, with a message that says why.
+bool readInfo(Codec& codec, StoredHeader& stored) {
     if (setjmp(png_jmpbuf(codec.png))) return false;
     png_init_io(codec.png, codec.file);
-    png_set_user_limits(codec.png, PngFile::kMaxSide, PngFile::kMaxSide);
+    png_set_user_limits(codec.png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
     png_set_chunk_malloc_max(codec.png, kMaxChunkBytes);
     png_read_info(codec.png, codec.info);
     stored.width = png_get_image_width(codec.png, codec.info);
     stored.height = png_get_image_height(codec.png, codec.info);
     stored.rowBytes = png_get_rowbytes(codec.png, codec.info);
+    return true;
+}
+
+/// Sets the transforms (which allocate libpng's row buffers: only after the header was believed). False
+/// with codec.message set on a libpng error.
+bool setTransforms(Codec& codec, Layout& layout) {
+    if (setjmp(png_jmpbuf(codec.png))) return false;
     const int colorType = png_get_color_type(codec.png, codec.info);
     const int depth = png_get_bit_depth(codec.png, codec.info);
     if (colorType == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(codec.png);
@@ -163,11 +171,20 @@ std::string readError(const std::string& path, const std::string& why) {
     return "cannot read image '" + path + "': " + why;
 }
 
-/// Why a header that passed libpng's side limits is still refused before the pixels are allocated:
-/// too many pixels for any image of the suite, or more rows than `fileBytes` of deflate can hold.
-/// Empty when it is believable.
+/// libpng's reason for giving up, where "Read Error" (its words for a short read) is said plainly.
+std::string libpngReason(const Codec& codec, std::FILE* file) {
+    if (std::feof(file)) return "truncated: the file ends before its image does";
+    return codec.message;
+}
+
+/// Why a header libpng accepted is refused before anything is allocated for its pixels: a side or a
+/// pixel count no image of the suite has, or more rows than `fileBytes` of deflate can hold. Empty when
+/// it is believable.
 std::string implausibleSize(const StoredHeader& h, uint64_t fileBytes) {
     const std::string size = std::to_string(h.width) + "x" + std::to_string(h.height);
+    if (h.width > PngFile::kMaxSide || h.height > PngFile::kMaxSide)
+        return "its header claims " + size + " pixels, over the " + std::to_string(PngFile::kMaxSide) +
+               " a side of the largest image the suite writes";
     if (uint64_t(h.width) * h.height > PngFile::kMaxPixels)
         return "its header claims " + size + " pixels, over the " + std::to_string(PngFile::kMaxPixels) +
                " of the largest image the suite writes";
@@ -222,9 +239,10 @@ PngImage PngFile::read(const std::string& path) {
 
     StoredHeader stored;
     Layout layout;
-    if (!readHeader(codec, stored, layout)) throw Error(readError(path, codec.message));
+    if (!readInfo(codec, stored)) throw Error(readError(path, libpngReason(codec, file.get())));
     if (const std::string why = implausibleSize(stored, uint64_t(st.st_size)); !why.empty())
         throw Error(readError(path, why));
+    if (!setTransforms(codec, layout)) throw Error(readError(path, libpngReason(codec, file.get())));
     if (layout.width == 0 || layout.height == 0 || layout.channels < 1 || layout.channels > 4 ||
         (layout.bitDepth != 8 && layout.bitDepth != 16))
         throw Error(readError(path, "unexpected layout after expansion"));
@@ -244,7 +262,7 @@ PngImage PngFile::read(const std::string& path) {
     }
     std::vector<png_bytep> rows(layout.height);
     for (png_uint_32 y = 0; y < layout.height; ++y) rows[y] = base + size_t(y) * layout.rowBytes;
-    if (!readRows(codec, rows.data())) throw Error(readError(path, codec.message));
+    if (!readRows(codec, rows.data())) throw Error(readError(path, libpngReason(codec, file.get())));
     return image;
 }
 
