@@ -6,9 +6,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <filesystem>
 
 #include <png.h>
 
@@ -142,8 +140,8 @@ bool writeImage(Codec& codec, png_uint_32 width, png_uint_32 height, int colorTy
     return true;
 }
 
-/// Encodes the image into `file`, then flushes, syncs and closes it, checking each step: a full disk
-/// may show at any of them (stdio buffers the writes, the file system may defer the blocks to fsync).
+/// Encodes the image into `file`, then flushes and closes it, checking each step: a full disk may show
+/// at any of them (stdio buffers the writes; some file systems report a deferred failure at close).
 /// Empty on success, else why it failed (the OS's reason where there is one).
 std::string encode(File& file, png_uint_32 width, png_uint_32 height, int colorType, png_bytepp rows) {
     Codec codec;
@@ -158,7 +156,7 @@ std::string encode(File& file, png_uint_32 width, png_uint_32 height, int colorT
     if (!writeImage(codec, width, height, colorType, rows))
         return codec.osError ? std::strerror(codec.osError) : codec.message;
     errno = 0;
-    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) || ::fsync(::fileno(file.get())) != 0) {
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get())) {
         const int err = errno ? errno : EIO;
         return std::strerror(err);
     }
@@ -196,6 +194,14 @@ std::string implausibleSize(const StoredHeader& h, uint64_t fileBytes) {
     return "";
 }
 
+/// The size of the open file, its position left at the start.
+uint64_t fileSize(std::FILE* file) {
+    std::fseek(file, 0, SEEK_END);
+    const long size = std::ftell(file);
+    std::rewind(file);
+    return size > 0 ? uint64_t(size) : 0;
+}
+
 std::string writeError(const std::string& path, const std::string& what, int err) {
     return "cannot write image '" + path + "': " + what + (err ? std::string(": ") + std::strerror(err) : "");
 }
@@ -216,11 +222,12 @@ bool PngFile::hasPngExtension(const std::string& path) {
 }
 
 PngImage PngFile::read(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw Error(readError(path, "not a regular file")); // a FIFO would block, a device never end
     File file(path, "rb");
     if (!file.get()) throw Error(readError(path, std::strerror(errno)));
-    struct stat st {};
-    if (::fstat(::fileno(file.get()), &st) != 0) throw Error(readError(path, std::strerror(errno)));
-    if (!S_ISREG(st.st_mode)) throw Error(readError(path, "not a regular file"));
+    const uint64_t fileBytes = fileSize(file.get());
     png_byte signature[8] = {};
     if (std::fread(signature, 1, sizeof signature, file.get()) != sizeof signature ||
         png_sig_cmp(signature, 0, sizeof signature) != 0)
@@ -240,7 +247,7 @@ PngImage PngFile::read(const std::string& path) {
     StoredHeader stored;
     Layout layout;
     if (!readInfo(codec, stored)) throw Error(readError(path, libpngReason(codec, file.get())));
-    if (const std::string why = implausibleSize(stored, uint64_t(st.st_size)); !why.empty())
+    if (const std::string why = implausibleSize(stored, fileBytes); !why.empty())
         throw Error(readError(path, why));
     if (!setTransforms(codec, layout)) throw Error(readError(path, libpngReason(codec, file.get())));
     if (layout.width == 0 || layout.height == 0 || layout.channels < 1 || layout.channels > 4 ||
@@ -295,33 +302,31 @@ void PngFile::write(const std::string& path, int width, int height, int channels
     std::vector<png_bytep> rows(static_cast<size_t>(height));
     for (int y = 0; y < height; ++y) rows[size_t(y)] = const_cast<png_bytep>(pixels + y * rowStride);
 
-    // The temporary name is fixed (a killed writer leaves at most one, which the next truncates) and
-    // opened without following a link, so a link planted under that name cannot redirect the write.
+    // The temporary name is fixed (a killed writer leaves at most one, removed here) and created
+    // exclusively ("x": the open fails on anything already there and never follows a link), so a link
+    // planted under that name is removed, not written through.
     const std::string temp = tempPathFor(path);
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd < 0)
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    File file(temp, "wbx");
+    if (!file.get())
         throw Error(writeError(path, "cannot create temporary file '" + temp + "'", errno),
                     ExitCode::Failure);
-    struct stat old {};
-    if (::stat(path.c_str(), &old) == 0 && S_ISREG(old.st_mode)) (void)::fchmod(fd, old.st_mode & 07777);
-    File file(::fdopen(fd, "wb"));
-    if (!file.get()) {
-        const int err = errno;
-        ::close(fd);
-        ::unlink(temp.c_str());
-        throw Error(writeError(path, "cannot create temporary file '" + temp + "'", err), ExitCode::Failure);
-    }
+    if (std::filesystem::is_regular_file(path, ec)) // the replacement keeps who may read the image
+        std::filesystem::permissions(temp, std::filesystem::status(path, ec).permissions(), ec);
     const std::string why =
         encode(file, png_uint_32(width), png_uint_32(height), kColorTypes[channels - 1], rows.data());
     if (!why.empty()) {
-        ::unlink(temp.c_str());
+        std::filesystem::remove(temp, ec);
         throw Error(writeError(path, "cannot write temporary file '" + temp + "': " + why, 0),
                     ExitCode::Failure);
     }
-    if (::rename(temp.c_str(), path.c_str()) != 0) {
-        const int renameErr = errno;
-        ::unlink(temp.c_str());
-        throw Error(writeError(path, "cannot rename '" + temp + "' over it", renameErr), ExitCode::Failure);
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        throw Error(writeError(path, "cannot rename '" + temp + "' over it: " + ec.message(), 0),
+                    ExitCode::Failure);
     }
 }
 

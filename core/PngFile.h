@@ -54,8 +54,9 @@ public:
     /// Writes 8-bit samples: `channels` 1 to 4, rows `rowStride` bytes apart starting at `pixels`
     /// (default width * channels; negative for an image stored bottom-up, `pixels` then pointing at the
     /// top row), whatever `path`'s extension. Every image the suite writes comes here, and it is written
-    /// atomically: into tempPathFor(path) (created without following a link), each write, the flush,
-    /// fsync and close checked, then renamed over `path` (a file there keeps its permissions). A kill
+    /// atomically: into tempPathFor(path) (a stale one removed first, then created exclusively, so no
+    /// planted link is followed), each write, the flush and the close checked, then renamed over `path`
+    /// (a file there keeps its permissions). A kill
     /// leaves the old file or the new one, never a truncated one. Throws sb::Error(Failure) naming the
     /// path, the temporary file and the OS reason when it cannot be written (folder, disk full); the
     /// temporary file is removed and a file already at `path` is untouched.

@@ -218,7 +218,7 @@ TEST_F(PngFileTest, AForgedHeaderIsRefusedBeforeItsPixelsAreAllocated) {
 
 // Writes are atomic: a new image replaces the old one whole and leaves no temporary file; a write that
 // fails (here its temporary name is taken by a folder) keeps the old file byte for byte; a symbolic link
-// planted at the temporary name is not followed.
+// planted at the temporary name is removed, not written through.
 TEST_F(PngFileTest, AWriteReplacesWholeOrNotAtAllAndFollowsNoPlantedLink) {
     const uint8_t dark[4] = {0, 0, 0, 0}, light[4] = {255, 255, 255, 255};
     const std::string image = path("image.png");
@@ -231,7 +231,8 @@ TEST_F(PngFileTest, AWriteReplacesWholeOrNotAtAllAndFollowsNoPlantedLink) {
         std::ifstream in(image, std::ios::binary);
         return std::string(std::istreambuf_iterator<char>(in), {});
     }();
-    fs::create_directory(PngFile::tempPathFor(image));
+    fs::create_directory(PngFile::tempPathFor(image)); // a folder that is not empty: it cannot be removed
+    writeBytes(PngFile::tempPathFor(image) + "/keep", "x");
     try {
         PngFile::write(image, 2, 2, 1, dark);
         ADD_FAILURE() << "written through a folder";
@@ -246,11 +247,13 @@ TEST_F(PngFileTest, AWriteReplacesWholeOrNotAtAllAndFollowsNoPlantedLink) {
     }
     std::ifstream in(image, std::ios::binary);
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), before);
-    fs::remove(PngFile::tempPathFor(image));
+    fs::remove_all(PngFile::tempPathFor(image));
 
     writeBytes(path("victim.txt"), "outside");
     fs::create_symlink(path("victim.txt"), PngFile::tempPathFor(image));
-    EXPECT_THROW(PngFile::write(image, 2, 2, 1, dark), Error);
+    PngFile::write(image, 2, 2, 1, dark); // the link is removed, not written through
+    EXPECT_EQ(PngFile::read(image).pixels, std::vector<uint8_t>(dark, dark + 4));
+    EXPECT_FALSE(fs::exists(fs::symlink_status(PngFile::tempPathFor(image))));
     std::ifstream victim(path("victim.txt"), std::ios::binary);
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(victim), {}), "outside");
 }

@@ -24,7 +24,7 @@ public:
     /// regular file or nothing, in a writable directory. Throws sb::Error(BadInput).
     static void checkWritable(const std::string& path, const std::string& option);
     /// Writes `channels` x 8-bit pixels (top row first) to `path` as PNG, atomically (PngFile::write):
-    /// the image goes to "<path>.tmp" in the same folder, every write, flush, fsync and close checked,
+    /// the image goes to "<path>.tmp" in the same folder, every write, the flush and the close checked,
     /// and is renamed over `path`, so a reader never sees half a picture, a kill leaves the old image or
     /// the new one, and a failed write (a full disk) leaves the old file untouched and no temporary
     /// file. Throws sb::Error(Failure) naming the path, the temporary file and the OS reason, as the CSV
