@@ -27,10 +27,14 @@ struct Codec {
     png_structp png = nullptr;
     png_infop info = nullptr;
     char message[256] = "";
+    int osError = 0; ///< errno when libpng gave up (its "Write Error" after a failed fwrite)
 };
 
+// Both handlers are installed on every read and write struct, so libpng never prints: its message
+// becomes the one line of the sb::Error the caller throws.
 [[noreturn]] void onError(png_structp png, png_const_charp text) {
     auto* codec = static_cast<Codec*>(png_get_error_ptr(png));
+    codec->osError = errno;
     std::snprintf(codec->message, sizeof codec->message, "%s", text);
     std::longjmp(png_jmpbuf(png), 1);
 }
@@ -38,10 +42,20 @@ struct Codec {
 void onWarning(png_structp, png_const_charp) {
 } // warnings (an unknown chunk, a bad CRC in an ancillary one) are not errors
 
+/// Ancillary chunks (text, ICC profiles) may inflate to this much at most: none of the suite's images
+/// has one, and libpng's default (8 MB) is what a hostile chunk could otherwise claim per chunk.
+constexpr png_alloc_size_t kMaxChunkBytes = png_alloc_size_t(1) << 20;
+/// Deflate cannot expand data by more than 1032:1 (a 258-byte match costs at least 2 bits), so the
+/// rows a file can hold are bounded by its size: a header claiming more is a lie, refused before the
+/// pixels are allocated. The slack covers the zlib and chunk framing of a tiny file.
+constexpr uint64_t kMaxDeflateRatio = 1032;
+constexpr uint64_t kRatioSlack = 4096;
+
 /// The file's own opener, closed by its destructor (also when an error unwinds).
 class File {
 public:
     File(const std::string& path, const char* mode) : mFile(std::fopen(path.c_str(), mode)) {}
+    explicit File(std::FILE* file) : mFile(file) {}
     ~File() {
         if (mFile) std::fclose(mFile);
     }
@@ -66,12 +80,30 @@ struct Layout {
     size_t rowBytes = 0;
 };
 
-/// Reads the header and sets the transforms. False with codec.message set on a libpng error.
-bool readHeader(Codec& codec, Layout& layout) {
+/// The header as stored, before any transform: what the file's size is checked against.
+struct StoredHeader {
+    png_uint_32 width = 0, height = 0;
+    size_t rowBytes = 0; ///< one stored row without its filter byte
+};
+
+/// Reads the header as stored. False with codec.message set on a libpng error. libpng's own side limit
+/// is its largest (2^31 - 1): the suite's limits are checked after, with a message that says why.
+bool readInfo(Codec& codec, StoredHeader& stored) {
     if (setjmp(png_jmpbuf(codec.png))) return false;
     png_init_io(codec.png, codec.file);
-    png_set_user_limits(codec.png, PngFile::kMaxSide, PngFile::kMaxSide);
+    png_set_user_limits(codec.png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+    png_set_chunk_malloc_max(codec.png, kMaxChunkBytes);
     png_read_info(codec.png, codec.info);
+    stored.width = png_get_image_width(codec.png, codec.info);
+    stored.height = png_get_image_height(codec.png, codec.info);
+    stored.rowBytes = png_get_rowbytes(codec.png, codec.info);
+    return true;
+}
+
+/// Sets the transforms (which allocate libpng's row buffers: only after the header was believed). False
+/// with codec.message set on a libpng error.
+bool setTransforms(Codec& codec, Layout& layout) {
+    if (setjmp(png_jmpbuf(codec.png))) return false;
     const int colorType = png_get_color_type(codec.png, codec.info);
     const int depth = png_get_bit_depth(codec.png, codec.info);
     if (colorType == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(codec.png);
@@ -108,8 +140,70 @@ bool writeImage(Codec& codec, png_uint_32 width, png_uint_32 height, int colorTy
     return true;
 }
 
+/// Encodes the image into `file`, then flushes and closes it, checking each step: a full disk may show
+/// at any of them (stdio buffers the writes; some file systems report a deferred failure at close).
+/// Empty on success, else why it failed (the OS's reason where there is one).
+std::string encode(File& file, png_uint_32 width, png_uint_32 height, int colorType, png_bytepp rows) {
+    Codec codec;
+    codec.file = file.get();
+    codec.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &codec, onError, onWarning);
+    if (codec.png) codec.info = png_create_info_struct(codec.png);
+    struct Release {
+        Codec& c;
+        ~Release() { png_destroy_write_struct(&c.png, c.info ? &c.info : nullptr); }
+    } release{codec};
+    if (!codec.info) return "out of memory";
+    if (!writeImage(codec, width, height, colorType, rows))
+        return codec.osError ? std::strerror(codec.osError) : codec.message;
+    errno = 0;
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get())) {
+        const int err = errno ? errno : EIO;
+        return std::strerror(err);
+    }
+    errno = 0;
+    if (!file.close()) return std::strerror(errno ? errno : EIO);
+    return "";
+}
+
 std::string readError(const std::string& path, const std::string& why) {
     return "cannot read image '" + path + "': " + why;
+}
+
+/// libpng's reason for giving up, where "Read Error" (its words for a short read) is said plainly.
+std::string libpngReason(const Codec& codec, std::FILE* file) {
+    if (std::feof(file)) return "truncated: the file ends before its image does";
+    return codec.message;
+}
+
+/// Why a header libpng accepted is refused before anything is allocated for its pixels: a side or a
+/// pixel count no image of the suite has, or more rows than `fileBytes` of deflate can hold. Empty when
+/// it is believable.
+std::string implausibleSize(const StoredHeader& h, uint64_t fileBytes) {
+    const std::string size = std::to_string(h.width) + "x" + std::to_string(h.height);
+    if (h.width > PngFile::kMaxSide || h.height > PngFile::kMaxSide)
+        return "its header claims " + size + " pixels, over the " + std::to_string(PngFile::kMaxSide) +
+               " a side of the largest image the suite writes";
+    if (uint64_t(h.width) * h.height > PngFile::kMaxPixels)
+        return "its header claims " + size + " pixels, over the " + std::to_string(PngFile::kMaxPixels) +
+               " of the largest image the suite writes";
+    const uint64_t stored = (uint64_t(h.rowBytes) + 1) * h.height; // filter byte + samples per row
+    if (stored > fileBytes * kMaxDeflateRatio + kRatioSlack)
+        return "its header claims " + size + " (" + std::to_string(stored) + " bytes of rows), which " +
+               std::to_string(fileBytes) + " bytes of file cannot hold (deflate expands at most " +
+               std::to_string(kMaxDeflateRatio) + ":1): truncated or forged";
+    return "";
+}
+
+/// The size of the open file, its position left at the start.
+uint64_t fileSize(std::FILE* file) {
+    std::fseek(file, 0, SEEK_END);
+    const long size = std::ftell(file);
+    std::rewind(file);
+    return size > 0 ? uint64_t(size) : 0;
+}
+
+std::string writeError(const std::string& path, const std::string& what, int err) {
+    return "cannot write image '" + path + "': " + what + (err ? std::string(": ") + std::strerror(err) : "");
 }
 
 } // namespace
@@ -128,8 +222,12 @@ bool PngFile::hasPngExtension(const std::string& path) {
 }
 
 PngImage PngFile::read(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw Error(readError(path, "not a regular file")); // a FIFO would block, a device never end
     File file(path, "rb");
     if (!file.get()) throw Error(readError(path, std::strerror(errno)));
+    const uint64_t fileBytes = fileSize(file.get());
     png_byte signature[8] = {};
     if (std::fread(signature, 1, sizeof signature, file.get()) != sizeof signature ||
         png_sig_cmp(signature, 0, sizeof signature) != 0)
@@ -146,8 +244,12 @@ PngImage PngFile::read(const std::string& path) {
     if (!codec.info) throw Error(readError(path, "out of memory"), ExitCode::Failure);
     png_set_sig_bytes(codec.png, sizeof signature);
 
+    StoredHeader stored;
     Layout layout;
-    if (!readHeader(codec, layout)) throw Error(readError(path, codec.message));
+    if (!readInfo(codec, stored)) throw Error(readError(path, libpngReason(codec, file.get())));
+    if (const std::string why = implausibleSize(stored, fileBytes); !why.empty())
+        throw Error(readError(path, why));
+    if (!setTransforms(codec, layout)) throw Error(readError(path, libpngReason(codec, file.get())));
     if (layout.width == 0 || layout.height == 0 || layout.channels < 1 || layout.channels > 4 ||
         (layout.bitDepth != 8 && layout.bitDepth != 16))
         throw Error(readError(path, "unexpected layout after expansion"));
@@ -167,8 +269,12 @@ PngImage PngFile::read(const std::string& path) {
     }
     std::vector<png_bytep> rows(layout.height);
     for (png_uint_32 y = 0; y < layout.height; ++y) rows[y] = base + size_t(y) * layout.rowBytes;
-    if (!readRows(codec, rows.data())) throw Error(readError(path, codec.message));
+    if (!readRows(codec, rows.data())) throw Error(readError(path, libpngReason(codec, file.get())));
     return image;
+}
+
+std::string PngFile::tempPathFor(const std::string& path) {
+    return path + ".tmp";
 }
 
 PngImage PngFile::read8(const std::string& path) {
@@ -184,43 +290,43 @@ PngImage PngFile::read8(const std::string& path) {
 
 void PngFile::write(const std::string& path, int width, int height, int channels, const uint8_t* pixels,
                     std::ptrdiff_t rowStride) {
-    const std::string what = "cannot write image '" + path + "': ";
     static constexpr int kColorTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
                                           PNG_COLOR_TYPE_RGB_ALPHA};
     if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || !pixels)
-        throw Error(what + std::to_string(width) + "x" + std::to_string(height) + " with " +
-                        std::to_string(channels) + " channels is not an image",
+        throw Error(writeError(path,
+                               std::to_string(width) + "x" + std::to_string(height) + " with " +
+                                   std::to_string(channels) + " channels is not an image",
+                               0),
                     ExitCode::Failure);
     if (rowStride == 0) rowStride = std::ptrdiff_t(width) * channels;
     std::vector<png_bytep> rows(static_cast<size_t>(height));
     for (int y = 0; y < height; ++y) rows[size_t(y)] = const_cast<png_bytep>(pixels + y * rowStride);
 
-    File file(path, "wb");
-    if (!file.get()) throw Error(what + std::strerror(errno), ExitCode::Failure);
-    Codec codec;
-    codec.file = file.get();
-    codec.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &codec, onError, onWarning);
-    if (codec.png) codec.info = png_create_info_struct(codec.png);
-    struct Release {
-        Codec& c;
-        ~Release() { png_destroy_write_struct(&c.png, c.info ? &c.info : nullptr); }
-    } release{codec};
-    if (!codec.info) throw Error(what + "out of memory", ExitCode::Failure);
-    // A failed write leaves no partial file behind (ImageWriter::writeAtomic keeps the old one); only a
-    // regular file is removed, never a device the path named.
-    auto discard = [&] {
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(path, ec)) std::filesystem::remove(path, ec);
-    };
-    if (!writeImage(codec, png_uint_32(width), png_uint_32(height), kColorTypes[channels - 1], rows.data())) {
-        file.close();
-        discard();
-        throw Error(what + codec.message, ExitCode::Failure);
+    // The temporary name is fixed (a killed writer leaves at most one, removed here) and created
+    // exclusively ("x": the open fails on anything already there and never follows a link), so a link
+    // planted under that name is removed, not written through.
+    const std::string temp = tempPathFor(path);
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    File file(temp, "wbx");
+    if (!file.get())
+        throw Error(writeError(path, "cannot create temporary file '" + temp + "'", errno),
+                    ExitCode::Failure);
+    if (std::filesystem::is_regular_file(path, ec)) // the replacement keeps who may read the image
+        std::filesystem::permissions(temp, std::filesystem::status(path, ec).permissions(), ec);
+    const std::string why =
+        encode(file, png_uint_32(width), png_uint_32(height), kColorTypes[channels - 1], rows.data());
+    if (!why.empty()) {
+        std::filesystem::remove(temp, ec);
+        throw Error(writeError(path, "cannot write temporary file '" + temp + "': " + why, 0),
+                    ExitCode::Failure);
     }
-    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) || !file.close()) {
-        const std::string why = std::strerror(errno);
-        discard();
-        throw Error(what + why, ExitCode::Failure);
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        throw Error(writeError(path, "cannot rename '" + temp + "' over it: " + ec.message(), 0),
+                    ExitCode::Failure);
     }
 }
 

@@ -34,13 +34,18 @@ public:
     /// The largest width or height read (16384): a header may claim up to 2^31 pixels a side, and no
     /// image the suite reads is near this.
     static constexpr uint32_t kMaxSide = 16384;
+    /// The most pixels read: the largest image the suite writes (--size 16384x16384). A header is also
+    /// held to its file's size (deflate expands at most 1032:1), so a few bytes claiming a large image
+    /// are refused before anything is allocated.
+    static constexpr uint64_t kMaxPixels = uint64_t(kMaxSide) * kMaxSide;
 
     /// True when `path` ends in ".png" (any case): the check of an output name before anything runs.
     static bool hasPngExtension(const std::string& path);
 
     /// Reads `path`. 1, 2 and 4-bit grey is expanded to 8 bits, palettes to RGB, a tRNS chunk to an alpha
     /// channel; 8 and 16-bit samples are kept as stored. Throws sb::Error(BadInput) naming the path and
-    /// the reason (missing, not a PNG, corrupt, larger than kMaxSide).
+    /// the reason (missing, not a PNG, corrupt, larger than kMaxSide or kMaxPixels, a header claiming more
+    /// rows than the file can hold). libpng's own messages become that one line; it prints nothing.
     static PngImage read(const std::string& path);
     /// The same, with 16-bit samples reduced to 8 (value * 255 / 65535, rounded): for callers that
     /// compare 8-bit images.
@@ -48,10 +53,18 @@ public:
 
     /// Writes 8-bit samples: `channels` 1 to 4, rows `rowStride` bytes apart starting at `pixels`
     /// (default width * channels; negative for an image stored bottom-up, `pixels` then pointing at the
-    /// top row). The file is written whatever `path`'s extension (ImageWriter's temp names have none).
-    /// Throws sb::Error(Failure) naming the path when the file cannot be written (folder, disk full).
+    /// top row), whatever `path`'s extension. Every image the suite writes comes here, and it is written
+    /// atomically: into tempPathFor(path) (a stale one removed first, then created exclusively, so no
+    /// planted link is followed), each write, the flush and the close checked, then renamed over `path`
+    /// (a file there keeps its permissions). A kill
+    /// leaves the old file or the new one, never a truncated one. Throws sb::Error(Failure) naming the
+    /// path, the temporary file and the OS reason when it cannot be written (folder, disk full); the
+    /// temporary file is removed and a file already at `path` is untouched.
     static void write(const std::string& path, int width, int height, int channels, const uint8_t* pixels,
                       std::ptrdiff_t rowStride = 0);
+    /// "<path>.tmp", the one temporary name of `path` (the convention of every result file,
+    /// bench/lib/output/AtomicFile.h).
+    static std::string tempPathFor(const std::string& path);
 };
 
 } // namespace sb

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ForgedPng.h"
 #include "TestSupport.h"
 
 using namespace sb;
@@ -80,6 +81,23 @@ std::string sceneWith(const std::string& position, int tessellation = 8) {
            position + R"(}],
   "layout": {"mesh": "ball", "count": 10, "region": [[-5, 1, -5], [5, 2, 5]]},
   "cameras": [{"name": "far", "eye": [0, 20, 30]}]})";
+}
+
+/// A scene whose one mesh carries a shadow plane textured with `png` (huge.png), for the occluder
+/// technique, which reads the texture as it prepares.
+std::function<bool(const std::string&)> occluderTexture(std::string png) {
+    return [png](const std::string& dir) {
+        test::writeFile(dir + "/huge.png", png);
+        test::writeFile(dir + "/plate.obj", "v -0.5 1 -0.5\nv 0.5 1 -0.5\nv 0.5 1 0.5\nv -0.5 1 0.5\n"
+                                            "g plate\nf 1 4 3\nf 1 3 2\n");
+        test::writeFile(dir + "/plate.json", R"({"name": "plate", "meshes": [{"name": "plate", "file":
+  "plate.obj", "shadow_planes": [{"name": "p", "origin": [-0.5, 1, 0.5], "normal": [0, 1, 0], "right":
+  [1, 0, 0], "up": [0, 0, -1], "width": 1, "height": 1, "texture": "huge.png"}]}],
+  "instances": [{"mesh": "plate", "position": [0, 0, 0]}],
+  "cameras": [{"name": "far", "eye": [0, 8, 0.001], "target": [0, 0, 0], "up": [0, 0, -1]}],
+  "lights": [{"type": "directional", "direction": [0.3, -1, 0.2]}]})");
+        return true;
+    };
 }
 
 /// A PLY header of 3 vertices and `faces` faces in `format`.
@@ -219,6 +237,18 @@ std::vector<BadInput> table() {
          makeFifo,
          false,
          true},
+        // Goldens and images: a PNG whose 74 bytes claim an image no file of the suite can be, refused
+        // with the reason before its pixels are allocated (the 16-bit one cost 2.2 GB before).
+        {"image claiming 65535x65535",
+         "--scene {dir}/plate.json -t occluder",
+         {"huge.png", "claims 65535x65535 pixels, over the 16384 a side"},
+         2,
+         occluderTexture(test::forgedPng(65535, 65535, 8, 6))},
+        {"image claiming 2 GiB of rows in 74 bytes",
+         "--scene {dir}/plate.json -t occluder",
+         {"huge.png", "claims 16384x16384", "74 bytes of file cannot hold"},
+         2,
+         occluderTexture(test::forgedPng(16384, 16384, 16, 6))},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

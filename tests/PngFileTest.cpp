@@ -1,6 +1,7 @@
 // core/PngFile against answers it does not compute itself: what it writes is decoded by tests/PngDecoder.h
 // (the PNG specification over zlib, no libpng), and what it reads is assembled here byte by byte (chunks,
 // CRCs and a zlib stream of filter-0 rows), so every expected sample is written down in the test.
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include "ForgedPng.h"
 #include "PngDecoder.h"
 #include "core/Error.h"
 #include "core/PngFile.h"
@@ -33,34 +35,23 @@ protected:
     fs::path mDir;
 };
 
-void put32(std::string& out, uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) out += char((v >> shift) & 0xFF);
-}
-
-void chunk(std::string& out, const std::string& type, const std::string& body) {
-    put32(out, uint32_t(body.size()));
-    const std::string typed = type + body;
-    out += typed;
-    put32(out, uint32_t(crc32(0L, reinterpret_cast<const Bytef*>(typed.data()), uInt(typed.size()))));
-}
-
 /// A PNG of `rows` (each already prefixed with its filter byte 0), with `extra` chunks before IDAT.
 std::string pngBytes(uint32_t width, uint32_t height, int depth, int colorType, const std::string& rows,
                      const std::vector<std::pair<std::string, std::string>>& extra = {}) {
     std::string out = "\x89PNG\r\n\x1a\n";
     std::string header;
-    put32(header, width);
-    put32(header, height);
+    test::putBigEndian32(header, width);
+    test::putBigEndian32(header, height);
     header += {char(depth), char(colorType), 0, 0, 0};
-    chunk(out, "IHDR", header);
-    for (const auto& [type, body] : extra) chunk(out, type, body);
+    test::putChunk(out, "IHDR", header);
+    for (const auto& [type, body] : extra) test::putChunk(out, type, body);
     uLongf size = compressBound(uLong(rows.size()));
     std::string z(size, '\0');
     compress(reinterpret_cast<Bytef*>(z.data()), &size, reinterpret_cast<const Bytef*>(rows.data()),
              uLong(rows.size()));
     z.resize(size);
-    chunk(out, "IDAT", z);
-    chunk(out, "IEND", "");
+    test::putChunk(out, "IDAT", z);
+    test::putChunk(out, "IEND", "");
     return out;
 }
 
@@ -182,4 +173,87 @@ TEST_F(PngFileTest, AFailedWriteNamesTheFileAndLeavesNothing) {
     EXPECT_TRUE(PngFile::hasPngExtension("a/b.PNG"));
     EXPECT_FALSE(PngFile::hasPngExtension("a/b.jpg"));
     EXPECT_FALSE(PngFile::hasPngExtension("png"));
+}
+
+namespace {
+
+/// The process's peak resident memory so far, in KiB (getrusage's ru_maxrss never goes down).
+long peakRssKiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+std::string readFailure(const std::string& file) {
+    try {
+        PngFile::read(file);
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::BadInput) << e.what();
+        return e.what();
+    }
+    return "read";
+}
+
+} // namespace
+
+// Forged 74-byte files whose IHDR (correct CRC) claims a large image: refused with a reason before
+// anything is allocated for the pixels. The second claim is within every side limit (16384x16384 RGBA
+// at 16 bits: 2 GiB of samples), the old reader's worst case: it allocated and zeroed them all before
+// finding the data missing.
+TEST_F(PngFileTest, AForgedHeaderIsRefusedBeforeItsPixelsAreAllocated) {
+    writeBytes(path("wide.png"), test::forgedPng(65535, 65535, 8, 6));
+    const std::string wide = readFailure(path("wide.png"));
+    EXPECT_NE(wide.find("wide.png"), std::string::npos) << wide;
+    EXPECT_NE(wide.find("claims 65535x65535 pixels, over the 16384 a side"), std::string::npos) << wide;
+
+    const long before = peakRssKiB();
+    writeBytes(path("deep.png"), test::forgedPng(16384, 16384, 16, 6));
+    const std::string deep = readFailure(path("deep.png"));
+    EXPECT_NE(deep.find("claims 16384x16384"), std::string::npos) << deep;
+    EXPECT_NE(deep.find("74 bytes of file cannot hold"), std::string::npos) << deep;
+    // Under 64 MiB more than before: libpng's state and one row are a few hundred KiB; the old reader
+    // grew by 2 GiB here.
+    EXPECT_LT(peakRssKiB() - before, 64 * 1024);
+}
+
+// Writes are atomic: a new image replaces the old one whole and leaves no temporary file; a write that
+// fails (here its temporary name is taken by a folder) keeps the old file byte for byte; a symbolic link
+// planted at the temporary name is removed, not written through.
+TEST_F(PngFileTest, AWriteReplacesWholeOrNotAtAllAndFollowsNoPlantedLink) {
+    const uint8_t dark[4] = {0, 0, 0, 0}, light[4] = {255, 255, 255, 255};
+    const std::string image = path("image.png");
+    PngFile::write(image, 2, 2, 1, dark);
+    PngFile::write(image, 2, 2, 1, light);
+    EXPECT_EQ(PngFile::read(image).pixels, std::vector<uint8_t>(light, light + 4));
+    EXPECT_FALSE(fs::exists(PngFile::tempPathFor(image)));
+
+    const std::string before = [&] {
+        std::ifstream in(image, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    fs::create_directory(PngFile::tempPathFor(image)); // a folder that is not empty: it cannot be removed
+    writeBytes(PngFile::tempPathFor(image) + "/keep", "x");
+    try {
+        PngFile::write(image, 2, 2, 1, dark);
+        ADD_FAILURE() << "written through a folder";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::Failure);
+        EXPECT_EQ(std::string(e.what()).rfind("cannot write image '" + image +
+                                                  "': cannot create temporary file '" +
+                                                  PngFile::tempPathFor(image) + "'",
+                                              0),
+                  0u)
+            << e.what();
+    }
+    std::ifstream in(image, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), before);
+    fs::remove_all(PngFile::tempPathFor(image));
+
+    writeBytes(path("victim.txt"), "outside");
+    fs::create_symlink(path("victim.txt"), PngFile::tempPathFor(image));
+    PngFile::write(image, 2, 2, 1, dark); // the link is removed, not written through
+    EXPECT_EQ(PngFile::read(image).pixels, std::vector<uint8_t>(dark, dark + 4));
+    EXPECT_FALSE(fs::exists(fs::symlink_status(PngFile::tempPathFor(image))));
+    std::ifstream victim(path("victim.txt"), std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(victim), {}), "outside");
 }

@@ -111,15 +111,24 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     return failed ? int(ExitCode::Failure) : 0;
 }
 
-/// Writes one golden, printing whether it is new, unchanged or changed and by how much.
+/// Writes one golden, printing whether it is new, unchanged or changed and by how much. A golden that
+/// cannot be read (a truncated file, a forged header) is what --update exists to repair: it is replaced,
+/// and the line says so and why.
 void updateGolden(const std::string& path, const Image8& image) {
     std::string what = "new";
     if (std::filesystem::exists(path)) {
-        const ImageDiffResult d =
-            ImageDiff::compare(GoldenImage::read(path), image, MatrixCheck::kGoldenTolerance);
-        if (d.comparable && d.maxChannelDiff == 0) return; // byte-identical: leave the file alone
-        what = (d.passes(MatrixCheck::kGoldenTolerance) ? "changed within tolerance: " : "CHANGED: ") +
-               d.describe(MatrixCheck::kGoldenTolerance);
+        Image8 old;
+        try {
+            old = GoldenImage::read(path);
+        } catch (const Error& e) {
+            what = std::string("replaced an unreadable golden (") + e.what() + ")";
+        }
+        if (!old.empty()) {
+            const ImageDiffResult d = ImageDiff::compare(old, image, MatrixCheck::kGoldenTolerance);
+            if (d.comparable && d.maxChannelDiff == 0) return; // byte-identical: leave the file alone
+            what = (d.passes(MatrixCheck::kGoldenTolerance) ? "changed within tolerance: " : "CHANGED: ") +
+                   d.describe(MatrixCheck::kGoldenTolerance);
+        }
     }
     GoldenImage::write(path, image);
     std::cout << path << ": " << what << "\n";

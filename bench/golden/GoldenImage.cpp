@@ -26,7 +26,7 @@ Image8 GoldenImage::read(const std::string& path) {
 void GoldenImage::write(const std::string& path, const Image8& image) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    ImageWriter::write(path, image.width, image.height, image.channels, image.pixels.data());
+    ImageWriter::writeAtomic(path, image.width, image.height, image.channels, image.pixels.data());
 }
 
 } // namespace sb

@@ -9,10 +9,11 @@ namespace sb {
 
 class GoldenImage {
 public:
-    /// Reads `path` (16-bit files reduced to 8 bits); throws sb::Error naming the path when it is missing
-    /// or not a PNG.
+    /// Reads `path` (16-bit files reduced to 8 bits); throws sb::Error naming the path and why when it is
+    /// missing, not a PNG, truncated or claims a size its bytes cannot hold (core/PngFile.h).
     static Image8 read(const std::string& path);
-    /// Writes `image` to `path` as PNG, creating the parent folder.
+    /// Writes `image` to `path` as PNG, creating the parent folder: through "<path>.tmp" and a rename
+    /// (ImageWriter::writeAtomic), so a killed update leaves the old golden or the new one.
     static void write(const std::string& path, const Image8& image);
 };
 

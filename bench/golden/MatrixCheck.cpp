@@ -67,7 +67,18 @@ void checkGolden(const MatrixCell& cell, const std::string& dir, const std::stri
                  GoldenCache& goldens, CellVerdict& v) {
     const std::string path = MatrixCheck::goldenPath(dir, cell.scene, cell.judgedAs(), kind);
     auto [it, fresh] = goldens.try_emplace(path);
-    if (fresh && std::filesystem::exists(path)) it->second = GoldenImage::read(path);
+    if (fresh && std::filesystem::exists(path)) {
+        // An unreadable golden (truncated by a kill, a forged header) fails this cell, naming the file
+        // and why, and the matrix goes on: the other cells' verdicts still count. It is not cached, so
+        // every mode that needs it says so.
+        try {
+            it->second = GoldenImage::read(path);
+        } catch (const Error& e) {
+            goldens.erase(it);
+            v.failures.push_back(kind + ": " + e.what() + " (bench golden --update replaces it)");
+            return;
+        }
+    }
     if (it->second.empty()) {
         v.failures.push_back("no golden " + path + " (bench golden --update writes it)");
         return;
@@ -109,9 +120,10 @@ void checkAccuracy(const MatrixCell& cell, const std::map<std::string, AccuracyB
         // G-buffer, whose coverage differs from GL's by an edge pixel or two (the two clip-space
         // conversions round differently): it is held to its own reference's value (measured on
         // painting_machine: none and occluder 4.766% against GL's 4.760%).
-        const bool ownReference = rule.rule == "no_shadow" || rule.rule == "approximate" ||
-                                  rule.rule == "soft_approximate";
-        const AccuracyBound& held = cell.vulkan() && ownReference && committed.rule == rule.rule ? rule : committed;
+        const bool ownReference =
+            rule.rule == "no_shadow" || rule.rule == "approximate" || rule.rule == "soft_approximate";
+        const AccuracyBound& held =
+            cell.vulkan() && ownReference && committed.rule == rule.rule ? rule : committed;
         const double measured = held.measured(cell.lights[l]);
         const std::string text = rule.cell + " " + held.metric + " " + number(measured) + " (bound " +
                                  number(held.min) + ".." + number(held.max) + ", " + held.rule + ": " +

@@ -1,10 +1,7 @@
 #include "bench/lib/output/ImageWriter.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <vector>
 
 #include "bench/lib/output/AtomicFile.h"
@@ -20,20 +17,9 @@ void ImageWriter::checkWritable(const std::string& path, const std::string& opti
         throw Error(option + " " + path + ": images are written as PNG (name the file .png)");
 }
 
-void ImageWriter::write(const std::string& path, int width, int height, int channels,
-                        const unsigned char* pixels) {
-    PngFile::write(path, width, height, channels, pixels);
-}
-
 void ImageWriter::writeAtomic(const std::string& path, int width, int height, int channels,
                               const unsigned char* pixels) {
-    const std::string temp = AtomicFile::tempPathFor(path);
-    PngFile::write(temp, width, height, channels, pixels); // names the temp file; leaves none on failure
-    if (std::rename(temp.c_str(), path.c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(temp.c_str());
-        throw Error("cannot write image '" + path + "': " + why, ExitCode::Failure);
-    }
+    PngFile::write(path, width, height, channels, pixels); // temp file, checks and rename live there
 }
 
 void ImageWriter::writeColor(const FrameTargets& targets, const std::string& path) {
@@ -47,7 +33,7 @@ void ImageWriter::writeColor(int w, int h, const std::vector<unsigned char>& rgb
             for (int c = 0; c < 3; ++c)
                 rgb[(size_t(y) * size_t(w) + size_t(x)) * 3 + size_t(c)] =
                     rgba[(size_t(h - 1 - y) * size_t(w) + size_t(x)) * 4 + size_t(c)];
-    write(path, w, h, 3, rgb.data());
+    writeAtomic(path, w, h, 3, rgb.data());
 }
 
 void ImageWriter::writeVisibility(const FrameTargets& targets, int light, const std::string& path) {
@@ -64,7 +50,7 @@ void ImageWriter::writeVisibility(int w, int h, const std::vector<float>& vis, i
             grey[size_t(y) * size_t(w) + size_t(x)] =
                 (unsigned char)std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
         }
-    write(path, w, h, 1, grey.data());
+    writeAtomic(path, w, h, 1, grey.data());
 }
 
 } // namespace sb

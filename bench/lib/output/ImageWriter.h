@@ -1,5 +1,6 @@
 #pragma once
-// PNG output (core/PngFile): --screenshot (colour) and --visibility (the visibility target).
+// PNG output (core/PngFile): --screenshot (colour) and --visibility (the visibility target), and the
+// one write path of every other picture (goldens, error maps, contact sheets).
 #include <string>
 #include <vector>
 
@@ -22,12 +23,12 @@ public:
     /// The up-front check of an image output (`option` names it in the message): a `.png` name, a
     /// regular file or nothing, in a writable directory. Throws sb::Error(BadInput).
     static void checkWritable(const std::string& path, const std::string& option);
-    /// Writes `channels` x 8-bit pixels (top row first) to `path` as PNG.
-    static void write(const std::string& path, int width, int height, int channels,
-                      const unsigned char* pixels);
-    /// The same, atomically: the image is written to AtomicFile::tempPathFor(path) in the same folder
-    /// and renamed over `path`, so a reader never sees half a
-    /// picture and a failed write leaves no file behind. Throws sb::Error naming the path.
+    /// Writes `channels` x 8-bit pixels (top row first) to `path` as PNG, atomically (PngFile::write):
+    /// the image goes to "<path>.tmp" in the same folder, every write, the flush and the close checked,
+    /// and is renamed over `path`, so a reader never sees half a picture, a kill leaves the old image or
+    /// the new one, and a failed write (a full disk) leaves the old file untouched and no temporary
+    /// file. Throws sb::Error(Failure) naming the path, the temporary file and the OS reason, as the CSV
+    /// writer does. The one way the bench writes a picture (screenshots, visibility, goldens, maps).
     static void writeAtomic(const std::string& path, int width, int height, int channels,
                             const unsigned char* pixels);
 };
