@@ -41,7 +41,8 @@ public:
 
     /// What importing a file will cost, known before it is read: `corners` are the vertices assimp
     /// makes before it welds them (one per face corner in STL, OBJ and PLY), `bytes` the importer's
-    /// peak for them and the file's own bytes (kImportBytesPerCorner each, measured). Binary STL: the
+    /// peak for them (kImportBytesPerCorner each, measured), the file's own bytes and an OBJ file's
+    /// positions (24 B each). Binary STL: the
     /// triangle count at byte 80, which must match the file's size (84 + 50 per triangle; a truncated
     /// or lying header is refused, naming both); ASCII STL: its "vertex" lines; OBJ: the corners of
     /// its "f" lines; PLY: the header's face (three corners each) and vertex counts. Each read in one
