@@ -99,6 +99,15 @@ void appendMesh(Mesh& out, const aiMesh& in, const glm::mat4& transform) {
 Mesh buildObject(const aiScene& scene, const aiNode& node, const glm::mat4& transform, size_t index) {
     Mesh mesh;
     mesh.name = objectName(node, index);
+    // Sized once: growing by doubling held up to twice a large model's vertices at its peak.
+    size_t vertices = 0, faces = 0;
+    for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+        vertices += scene.mMeshes[node.mMeshes[k]]->mNumVertices;
+        faces += scene.mMeshes[node.mMeshes[k]]->mNumFaces;
+    }
+    mesh.positions.reserve(vertices);
+    mesh.normals.reserve(vertices);
+    mesh.indices.reserve(3 * faces);
     for (unsigned k = 0; k < node.mNumMeshes; ++k) {
         const aiMesh& in = *scene.mMeshes[node.mMeshes[k]];
         MeshPart part;
