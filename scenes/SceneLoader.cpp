@@ -23,6 +23,7 @@
 #include "scenes/MeshGeneratorTable.h"
 #include "scenes/ModelLoader.h"
 #include "scenes/Motion.h"
+#include "scenes/SceneDocumentCost.h"
 
 namespace sb {
 namespace fs = std::filesystem;
@@ -43,13 +44,19 @@ struct Context {
     /// A scene file's mesh name -> its meshes: one, or one per object of a multi-object model file.
     std::map<std::string, std::vector<uint32_t>> meshByName;
     std::optional<size_t> firstLayoutInstance;
-    /// The JSON pointer of each instance placed before the layout ("/instances/3"); the layout's
-    /// instances, which follow them, all come from "/layout".
-    std::vector<std::string> instancePaths;
+    /// The entry of "instances" each instance placed before the layout comes from (3 for
+    /// "/instances/3"; an index, not the pointer's text, which took more memory than the instance); the
+    /// layout's instances, which follow them, all come from "/layout".
+    std::vector<uint32_t> instanceEntries;
+    /// What the scene file's text and its parsed document hold while the scene is built
+    /// (SceneDocumentCost), part of every memory estimate.
+    uint64_t documentBytes = 0;
     std::string replacedMesh; ///< the layout's mesh name when --model replaces it
     /// Mesh name -> instances that will draw it, read from the document before any mesh is built, so
     /// that a mesh's memory (its own and its instances' copies) is estimated before it is generated.
     std::map<std::string, uint64_t> references;
+    /// The part of `references` that the entries of "instances" make (the layout's are checked with it).
+    std::map<std::string, uint64_t> explicitReferences;
 };
 
 // ---- coordinate bounds ---------------------------------------------------------------------------
@@ -96,9 +103,16 @@ int tessellationFor(const Context& ctx, const JsonReader& m, const MeshGenerator
     return tess;
 }
 
-std::string gib(uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f", double(bytes) / double(1ull << 30));
+/// An estimate or limit for a message: GiB from 1 GiB on ("8.0 GiB"), MiB or bytes below (a small
+/// limit given to a test or a small machine is not "0.0 GiB").
+std::string memoryText(uint64_t bytes) {
+    char text[40];
+    if (bytes >= (1ull << 30))
+        std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1ull << 30));
+    else if (bytes >= (1ull << 20))
+        std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(1ull << 20));
+    else
+        std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
     return text;
 }
 
@@ -130,9 +144,9 @@ void checkTessellationMemory(const Context& ctx, const JsonReader& m, const Mesh
     if (bytes <= double(ctx.options.memoryLimitBytes)) return;
     const std::string what = "tessellation " + std::to_string(tess) + " (about " +
                              std::to_string(uint64_t(triangles)) + " triangles, " + std::to_string(uses) +
-                             " instances): estimated memory " + gib(uint64_t(std::min(bytes, 1e19))) +
-                             " GiB exceeds the limit of " + gib(ctx.options.memoryLimitBytes) +
-                             " GiB (--max-memory-gib)";
+                             " instances): estimated memory " + memoryText(uint64_t(std::min(bytes, 1e19))) +
+                             " exceeds the limit of " + memoryText(ctx.options.memoryLimitBytes) +
+                             " (--max-memory-gib)";
     if (ctx.options.tessellation && generator.followsTessellationOptions)
         throw Error("--tess " + std::to_string(*ctx.options.tessellation) + ": mesh " +
                     JsonReader::excerpt(m["name"].string()) + ": " + what);
@@ -165,6 +179,36 @@ Mesh generateMesh(Context& ctx, const JsonReader& m, const std::string& generato
     }
 }
 
+/// Estimated bytes: the scene file's text and document while the scene is built (`documentBytes`),
+/// every mesh once (retained buffers), plus per instance the copy that immediate mode and display
+/// lists make of its triangles (3 vertices of 24 B each) and its instance data.
+uint64_t estimateMemory(const Scene& scene, const std::vector<uint32_t>& layoutMeshes, uint64_t layoutCount,
+                        uint64_t documentBytes) {
+    uint64_t bytes = documentBytes;
+    for (const auto& mesh : scene.meshes)
+        bytes += mesh.vertexCount() * kVertexBytes + mesh.indices.size() * 4;
+    auto perInstance = [&](uint32_t mesh) {
+        return uint64_t(scene.meshes[mesh].triangleCount()) * 3 * kVertexBytes + kInstanceBytes;
+    };
+    for (const auto& inst : scene.instances) bytes += perInstance(inst.mesh);
+    for (uint32_t mesh : layoutMeshes) bytes += layoutCount * perInstance(mesh);
+    return bytes;
+}
+
+/// A model file is refused before assimp reads it when its import (ModelLoader::estimateImport, from
+/// its header or one streamed count) and the scene so far exceed the limit: a 10^7-triangle STL took
+/// 8.9 GB to import under an estimate of 1.0 GiB made afterwards. Throws "model file '...': ...".
+void checkModelMemory(const Context& ctx, const std::string& path) {
+    const std::optional<ModelLoader::ImportEstimate> e = ModelLoader::estimateImport(path);
+    if (!e) return;
+    const uint64_t bytes = e->bytes + estimateMemory(ctx.scene, {}, 0, ctx.documentBytes);
+    if (bytes <= ctx.options.memoryLimitBytes) return;
+    throw Error("model file '" + path + "': " + std::to_string(e->triangles) + " triangles, " +
+                std::to_string(e->corners) + " vertices before welding: estimated memory " +
+                memoryText(bytes) + " to import exceeds the limit of " +
+                memoryText(ctx.options.memoryLimitBytes) + " (--max-memory-gib)");
+}
+
 /// A "file" mesh's objects (scenes/ModelLoader.h), errors located at its "file" key (so they name the
 /// scene file, the JSON path and the model file).
 std::vector<Mesh> loadModelObjects(const Context& ctx, const JsonReader& m) {
@@ -177,6 +221,7 @@ std::vector<Mesh> loadModelObjects(const Context& ctx, const JsonReader& m) {
     fs::path path = m["file"].string();
     if (path.is_relative()) path = fs::path(ctx.source).parent_path() / path;
     try {
+        checkModelMemory(ctx, path.string());
         return ModelLoader::loadObjects(path.string(), up);
     } catch (const Error& e) {
         m["file"].error(e.what());
@@ -378,6 +423,7 @@ std::pair<glm::vec3, float> boundingSphere(const std::vector<Mesh>& meshes) {
 /// the scene still frame it. The meshes are named after the model file ("horse.3ds", or
 /// "test1.3ds:Box01" per object), so every error about them names the file, not the replaced mesh.
 void replaceWithModel(Context& ctx, std::vector<Mesh>& meshes) {
+    checkModelMemory(ctx, ctx.options.modelPath);
     std::vector<Mesh> model = ModelLoader::loadObjects(ctx.options.modelPath);
     const auto [oldCentre, oldRadius] = boundingSphere(meshes);
     const auto [newCentre, newRadius] = boundingSphere(model);
@@ -464,14 +510,15 @@ const std::vector<uint32_t>& meshReference(const Context& ctx, const JsonReader&
 // ---- instances and layout -------------------------------------------------------------------------
 
 /// One instance per mesh of `meshes` (the objects of a model file), all with `inst`'s transform.
-/// `where` is the instance's JSON pointer (checkWorldBounds names it); layout instances pass none.
+/// `entry` is the instance's index in "instances" (checkWorldBounds names it); layout instances pass
+/// none.
 void pushObjects(Context& ctx, Instance inst, const std::vector<uint32_t>& meshes,
-                 const std::string* where = nullptr) {
+                 std::optional<uint32_t> entry = std::nullopt) {
     for (uint32_t k = 0; k < meshes.size(); ++k) {
         inst.mesh = meshes[k];
         inst.object = k;
         ctx.scene.instances.push_back(inst);
-        if (where) ctx.instancePaths.push_back(*where);
+        if (entry) ctx.instanceEntries.push_back(*entry);
     }
 }
 
@@ -481,7 +528,7 @@ void parseInstanceFlags(Instance& inst, const JsonReader& r) {
     if (r.has("receives_shadow")) inst.receivesShadow = r["receives_shadow"].boolean();
 }
 
-void parseInstance(Context& ctx, const JsonReader& r) {
+void parseInstance(Context& ctx, const JsonReader& r, uint32_t entry) {
     r.requireObject({"mesh", "position", "rotation", "scale", "color", "casts_shadow", "receives_shadow"});
     Instance inst;
     const std::vector<uint32_t> meshes = meshReference(ctx, r["mesh"]);
@@ -489,22 +536,38 @@ void parseInstance(Context& ctx, const JsonReader& r) {
     if (r.has("rotation")) inst.rotationDeg = r["rotation"].vec3();
     if (r.has("scale")) inst.scale = r["scale"].positiveNumber();
     parseInstanceFlags(inst, r);
-    const std::string where = r.path();
-    pushObjects(ctx, inst, meshes, &where);
+    pushObjects(ctx, inst, meshes, entry);
 }
 
-/// Estimated bytes: every mesh once (retained buffers), plus per instance the copy that immediate
-/// mode and display lists make of its triangles (3 vertices of 24 B each) and its instance data.
-uint64_t estimateMemory(const Scene& scene, const std::vector<uint32_t>& layoutMeshes, uint64_t layoutCount) {
-    uint64_t bytes = 0;
-    for (const auto& mesh : scene.meshes)
-        bytes += mesh.vertexCount() * kVertexBytes + mesh.indices.size() * 4;
-    auto perInstance = [&](uint32_t mesh) {
-        return uint64_t(scene.meshes[mesh].triangleCount()) * 3 * kVertexBytes + kInstanceBytes;
-    };
-    for (const auto& inst : scene.instances) bytes += perInstance(inst.mesh);
-    for (uint32_t mesh : layoutMeshes) bytes += layoutCount * perInstance(mesh);
-    return bytes;
+/// Before any explicit instance exists: the meshes, the document and every entry of "instances" at
+/// what it will cost (Context::references, counted from the document), so that a long instances
+/// array of a heavy mesh is refused before its instances are made.
+void checkExplicitInstancesMemory(const Context& ctx, const JsonReader& root) {
+    if (!root.has("instances")) return;
+    uint64_t bytes = estimateMemory(ctx.scene, {}, 0, ctx.documentBytes), entries = 0;
+    for (const auto& [name, count] : ctx.explicitReferences) {
+        const auto meshes = ctx.meshByName.find(name);
+        if (meshes == ctx.meshByName.end()) continue; // an unknown mesh: parseInstance reports it
+        for (uint32_t mesh : meshes->second)
+            bytes += count * (uint64_t(ctx.scene.meshes[mesh].triangleCount()) * 3 * kVertexBytes +
+                              kInstanceBytes + sizeof(Instance));
+    }
+    if (root["instances"].value().is_array()) entries = root["instances"].value().size();
+    if (bytes <= ctx.options.memoryLimitBytes) return;
+    root["instances"].error(std::to_string(entries) + " instances: estimated memory " + memoryText(bytes) +
+                            " exceeds the limit of " + memoryText(ctx.options.memoryLimitBytes) +
+                            " (--max-memory-gib)");
+}
+
+/// Room for every instance the document asks for, made once (growing the vector doubled it).
+void reserveInstances(Context& ctx, const JsonReader& root) {
+    uint64_t count = 0;
+    for (const auto& [name, uses] : ctx.references)
+        if (const auto meshes = ctx.meshByName.find(name); meshes != ctx.meshByName.end())
+            count += uses * meshes->second.size();
+    ctx.scene.instances.reserve(size_t(count));
+    if (root.has("instances") && root["instances"].value().is_array())
+        ctx.instanceEntries.reserve(root["instances"].value().size());
 }
 
 /// The instance count of the layout: --instances wins over the file; both are bounded. The file's
@@ -529,10 +592,10 @@ uint32_t layoutCount(const Context& ctx, const JsonReader& layout) {
 /// `layout` is null for a scene without one (then only the explicit instances count).
 void checkMemory(const Context& ctx, const JsonReader& where, const JsonReader* layout,
                  const std::vector<uint32_t>& layoutMeshes, uint32_t count) {
-    const uint64_t bytes = estimateMemory(ctx.scene, layoutMeshes, count);
+    const uint64_t bytes = estimateMemory(ctx.scene, layoutMeshes, count, ctx.documentBytes);
     if (bytes <= ctx.options.memoryLimitBytes) return;
-    const std::string what = "estimated memory " + gib(bytes) + " GiB exceeds the limit of " +
-                             gib(ctx.options.memoryLimitBytes) + " GiB";
+    const std::string what = "estimated memory " + memoryText(bytes) + " exceeds the limit of " +
+                             memoryText(ctx.options.memoryLimitBytes);
     if (!layout) where.error(what);
     if (ctx.options.instances) throw Error("--instances " + std::to_string(count) + ": " + what);
     (*layout)["count"].error(std::to_string(count) + " instances: " + what);
@@ -587,6 +650,17 @@ LightType lightType(const JsonReader& r) {
     return *type;
 }
 
+/// An emitter's extent (a rect's width or height, a disk's or sphere's radius): >= 0 and within
+/// ModelLoader::kMaxCoordinate, the bound on every coordinate. A float-range size (3e38) turns the
+/// samples on the emitter and every distance to them into inf, and the reference then judges a soft
+/// shadow against nonsense.
+float emitterExtent(const JsonReader& r) {
+    const float extent = r.nonNegativeNumber();
+    if (double(extent) > ModelLoader::kMaxCoordinate)
+        r.fail("a size in [0, 1e18], the bound on coordinates (squared distances overflow float beyond it)");
+    return extent;
+}
+
 /// "shape": point (default) | rect | disk | sphere; "size": [w, h] for rect, radius for disk/sphere;
 /// directional lights take "shape": "disk" with "angular_radius_deg" (the sun's disk) instead.
 void parseLightShapeKeys(const JsonReader& r, Light& light) {
@@ -598,6 +672,15 @@ void parseLightShapeKeys(const JsonReader& r, Light& light) {
     const auto shape = parseLightShape(r["shape"].string());
     if (!shape) r["shape"].fail("one of " + lightShapeNames().list());
     light.shape = *shape;
+    // Only the sun's disk has an angular size: on any other light the key would be ignored, and the
+    // scene would not be what its file says.
+    const bool sunDisk = light.type == LightType::Directional && light.shape == LightShape::Disk;
+    if (r.has("angular_radius_deg") && !sunDisk)
+        r["angular_radius_deg"].error(std::string("only a directional light with \"shape\": \"disk\" takes "
+                                                  "\"angular_radius_deg\" (this is a ") +
+                                      lightTypeName(light.type) + " light of shape \"" +
+                                      lightShapeName(light.shape) +
+                                      "\"; a point or spot light's emitter takes \"size\")");
     if (light.type == LightType::Directional) {
         if (light.shape != LightShape::Disk && light.shape != LightShape::Point)
             r["shape"].fail("\"disk\" (an angular disk) for a directional light");
@@ -607,12 +690,12 @@ void parseLightShapeKeys(const JsonReader& r, Light& light) {
     }
     if (light.shape == LightShape::Rect) {
         const JsonReader size = r["size"];
-        std::vector<double> wh;
-        for (const auto& e : size.elements()) wh.push_back(e.nonNegativeNumber());
+        std::vector<float> wh;
+        for (const auto& e : size.elements()) wh.push_back(emitterExtent(e));
         if (wh.size() != 2) size.fail("[width, height]");
-        light.size = glm::vec2(float(wh[0]), float(wh[1]));
+        light.size = glm::vec2(wh[0], wh[1]);
     } else if (light.shape != LightShape::Point) {
-        light.size = glm::vec2(float(r["size"].nonNegativeNumber()), 0.0f);
+        light.size = glm::vec2(emitterExtent(r["size"]), 0.0f);
     }
 }
 
@@ -808,6 +891,29 @@ void placeSun(Scene& scene) {
     scene.motion = std::move(motion);
 }
 
+/// Every measured frame of the camera path has a view direction: the eye, interpolated between two
+/// keys, must not reach the target (eye (0, 0, 10) to (0, 0, -10) around a target at the origin passes
+/// through it halfway). A frame whose camera sits on its target draws nothing, and its time and
+/// image would be taken for the technique's. Each key has been checked on its own (cameraKey); this
+/// walks the frames a run measures, t = f / frames, with the tolerance cameraKey applies, scaled to
+/// the points' magnitude so that float rounding of far points is not taken for a meeting.
+void checkCameraPath(const JsonReader& r, const CameraPath& path, uint32_t frames) {
+    Motion probe;
+    probe.camera = path;
+    for (uint32_t f = 0; f < frames; ++f) {
+        const float t = float(f) / float(frames);
+        const CameraPreset c = probe.cameraAt(t);
+        const float scale = std::max({1.0f, glm::length(c.eye), glm::length(c.target)});
+        if (glm::length(c.target - c.eye) >= 1e-6f * scale) continue;
+        const size_t key = std::min(size_t(t * float(path.keys.size() - 1)), path.keys.size() - 2);
+        char when[96];
+        std::snprintf(when, sizeof when, "at frame %u of %u (path time %g, between keys %zu and %zu)", f,
+                      frames, double(t), key, key + 1);
+        r.error(std::string(when) + " the eye " + pointText(c.eye) +
+                " reaches the target: the view direction is undefined (the path passes through its target)");
+    }
+}
+
 void parseMotion(Context& ctx, const JsonReader& r) {
     r.requireObject({"frames", "sun", "orbit", "camera", "casters"});
     auto motion = std::make_shared<Motion>();
@@ -821,6 +927,7 @@ void parseMotion(Context& ctx, const JsonReader& r) {
         CameraPath path;
         for (const auto& k : r["camera"].elements()) path.keys.push_back(cameraKey(ctx, k));
         if (path.keys.size() < 2) r["camera"].fail("at least two key cameras");
+        checkCameraPath(r["camera"], path, motion->frames);
         if (ctx.scene.findCamera(Motion::kCameraName))
             r["camera"].error("the scene already has a camera named \"path\", the camera path's name");
         motion->camera = std::move(path);
@@ -883,9 +990,11 @@ void checkWorldBounds(const Context& ctx) {
         if (meshBounds[inst.mesh].empty()) continue;
         const Aabb world = transformBounds(meshBounds[inst.mesh], inst.model);
         if (withinBound(world)) continue;
-        const std::string where = i < ctx.instancePaths.size() ? ctx.instancePaths[i] : "/layout";
+        const std::string where = i < ctx.instanceEntries.size()
+                                      ? "/instances/" + std::to_string(ctx.instanceEntries[i])
+                                      : "/layout";
         char scale[48] = "";
-        if (ctx.options.scale != 1.0f && i >= ctx.instancePaths.size())
+        if (ctx.options.scale != 1.0f && i >= ctx.instanceEntries.size())
             std::snprintf(scale, sizeof scale, " (with --scale %g)", double(ctx.options.scale));
         throw Error(ctx.source + ": " + where + ": instance " + std::to_string(i) + " of mesh " +
                     JsonReader::excerpt(ctx.scene.meshes[inst.mesh].name) + std::string(scale) + ": world " +
@@ -904,7 +1013,10 @@ void countReferences(Context& ctx, const JsonReader& root) {
     };
     if (auto it = doc.find("instances"); it != doc.end() && it->is_array())
         for (const auto& i : *it)
-            if (const nlohmann::json* mesh = meshOf(i)) ++ctx.references[mesh->get<std::string>()];
+            if (const nlohmann::json* mesh = meshOf(i)) {
+                ++ctx.references[mesh->get<std::string>()];
+                ++ctx.explicitReferences[mesh->get<std::string>()];
+            }
     auto layout = doc.find("layout");
     if (layout == doc.end()) return;
     const nlohmann::json* mesh = meshOf(*layout);
@@ -927,8 +1039,15 @@ void parseDocument(Context& ctx, const JsonReader& root) {
     if (!ctx.options.modelPath.empty()) ctx.replacedMesh = root["layout"]["mesh"].string();
     countReferences(ctx, root);
     for (const auto& m : root["meshes"].elements(true)) parseMesh(ctx, m);
-    if (root.has("instances"))
-        for (const auto& i : root["instances"].elements()) parseInstance(ctx, i);
+    checkExplicitInstancesMemory(ctx, root);
+    reserveInstances(ctx, root);
+    if (root.has("instances")) {
+        // One reader at a time: elements() would hold a reader (two strings) per entry at once.
+        const JsonReader list = root["instances"];
+        if (!list.value().is_array()) list.fail("an array");
+        for (uint32_t i = 0; i < list.value().size(); ++i)
+            parseInstance(ctx, JsonReader(list.value()[i], ctx.source, "/instances/" + std::to_string(i)), i);
+    }
     if (root.has("layout"))
         parseLayout(ctx, root["layout"]);
     else
@@ -950,6 +1069,38 @@ void parseDocument(Context& ctx, const JsonReader& root) {
     if (root.has("motion")) parseMotion(ctx, root["motion"]);
 }
 
+/// What every explicit instance costs at least, known before its mesh is: its Instance, its entry
+/// index, its instance data and the copies of one triangle (estimateMemory's terms for the smallest
+/// mesh).
+constexpr uint64_t kMinInstanceBytes =
+    sizeof(Instance) + sizeof(uint32_t) + kInstanceBytes + 3 * kVertexBytes;
+
+/// The text and the document it parses into, estimated (SceneDocumentCost) before the document is
+/// made; with the least its instances cost, refused past the limit (a 10^7-element instances array
+/// reached 8.8 GB before the limit was checked). Returns the text and document bytes.
+uint64_t checkDocumentMemory(const std::string& text, const std::string& source,
+                             const SceneOptions& options) {
+    const SceneDocumentCost cost = SceneDocumentCost::measure(text);
+    const uint64_t document = text.size() + cost.documentBytes;
+    const uint64_t bytes = document + cost.instances * kMinInstanceBytes;
+    if (bytes <= options.memoryLimitBytes) return document;
+    throw Error(source + ": " + std::to_string(cost.values) + " JSON values, " +
+                std::to_string(cost.instances) + " instances: estimated memory " + memoryText(bytes) +
+                " to read them exceeds the limit of " + memoryText(options.memoryLimitBytes) +
+                " (--max-memory-gib)");
+}
+
+/// A scene file's text, refused unread when the text alone exceeds the memory limit.
+std::string readSceneText(const std::string& path, const SceneOptions& options) {
+    std::error_code ec;
+    const uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size > options.memoryLimitBytes)
+        throw Error("scene file '" + path + "': " + std::to_string(size) +
+                    " bytes exceed the memory limit of " + memoryText(options.memoryLimitBytes) +
+                    " (--max-memory-gib)");
+    return Paths::readTextFile(path);
+}
+
 bool looksLikePath(const std::string& s) {
     return s.find('/') != std::string::npos || (s.size() > 5 && s.substr(s.size() - 5) == ".json");
 }
@@ -958,8 +1109,10 @@ bool looksLikePath(const std::string& s) {
 
 Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceName,
                          const SceneOptions& options) {
+    const uint64_t documentBytes = checkDocumentMemory(jsonText, sourceName, options);
     const nlohmann::json doc = JsonReader::parse(jsonText, sourceName);
     Context ctx{Scene{}, options, sourceName, {}, {}, {}};
+    ctx.documentBytes = documentBytes;
     ctx.scene.name = fs::path(sourceName).stem().string();
     ctx.scene.sourcePath = sourceName;
     parseDocument(ctx, JsonReader(doc, sourceName));
@@ -977,7 +1130,7 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
         const std::string inTree = fs::path(nameOrPath).is_relative() ? Paths::findResource(nameOrPath) : "";
         if (looksLikePath(nameOrPath) && inTree.empty())
             throw Error("scene file '" + nameOrPath + "': no such file");
-        if (!inTree.empty()) return parse(Paths::readTextFile(inTree), inTree, options);
+        if (!inTree.empty()) return parse(readSceneText(inTree, options), inTree, options);
         path = Paths::findResource("scenes/data/" + nameOrPath + ".json");
         if (path.empty()) {
             const std::vector<std::string> builtin = listBuiltinScenes();
@@ -985,7 +1138,7 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
                         ": not a file, and not a built-in scene (" + join(builtin, ", ") + ")");
         }
     }
-    return parse(Paths::readTextFile(path), path, options);
+    return parse(readSceneText(path, options), path, options);
 }
 
 std::vector<std::string> SceneLoader::listBuiltinScenes() {

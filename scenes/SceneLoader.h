@@ -71,7 +71,9 @@
 // - lights: "type", "direction", "position", "color", "intensity", "range", "spot_outer_deg",
 //   "spot_inner_deg", "shape", "size", "angular_radius_deg", "casts_shadows" (default true; false: a
 //   light that illuminates and casts no shadow, so no technique renders a shadow pass for it). Without
-//   "lights", one default directional light.
+//   "lights", one default directional light. "size" (a point or spot light's rect [w, h], disk or
+//   sphere radius) lies in [0, 1e18], the bound on coordinates; "angular_radius_deg" is taken by a
+//   directional light with "shape": "disk" only (on any other light it is an error, not ignored).
 // - cameras: "name" (required, unique), "eye", "target", "up", "fov", "near", "far"; or "follow":
 //   "first_instance" with "offset" (in units of that instance's scale, so --scale keeps the framing):
 //   eye = first layout instance + offset * scale, target = that instance. An up parallel to the view
@@ -84,7 +86,9 @@
 //       spot light on a horizontal circle (a spot aims at "target", default below the centre at y = 0)
 //     "camera": ["far", {"eye": [..], "target": [..], "fov": 45}, "near"]  key cameras (names of the
 //       scene's cameras or camera objects without "name"/"follow"), at least two, piecewise linear;
-//       the scene gets a camera named "path" that follows them (--camera path)
+//       the scene gets a camera named "path" that follows them (--camera path). At no measured frame
+//       may the eye reach the target (a path through its target has no view direction there: an
+//       error naming the frame and the keys it lies between)
 //     "casters": {"instances": "layout" | "casters" | [i, ...], "translate": [x,y,z], "yaw_deg": a}
 //       casters moved by translate and turned by yaw over the path ("layout", the default: the layout's
 //       instances); an instance that casts no shadow may not move (receivers stay put)
@@ -94,8 +98,12 @@
 // SceneOptions: --instances/--model need a layout (error otherwise); --model's meshes are named after the
 // model file ("horse.3ds", "test1.3ds:Box01"), so errors about them name it; --light moves a directional
 // light to centre - direction * 2 * radius of the casters' bounds, a spot's cone then encloses them.
-// Memory estimate (limit SceneOptions::memoryLimitBytes): mesh vertex (24 B) + index bytes, plus per
-// instance its triangles * 3 * 24 B (immediate / display-list copies) + 128 B.
+// Memory estimate (limit SceneOptions::memoryLimitBytes; docs/USAGE.md, "What --max-memory-gib
+// covers"), each part checked before it is paid: the file's text and its parsed document
+// (SceneDocumentCost, counted before the document is made) with the least each explicit instance
+// costs; mesh vertex (24 B) + index bytes, plus per instance its triangles * 3 * 24 B (immediate /
+// display-list copies) + 128 B, for the explicit instances before any is made and for the layout
+// before it is placed; a model file's import (ModelLoader::estimateImport) before assimp reads it.
 // Every error throws sb::Error naming the file, the JSON path ("/meshes/2/generator") and what was
 // expected, e.g. `scenes/data/x.json: /layout/count: expected a positive integer, got "ten"`.
 // Limits that keep hostile files from crashing or poisoning a run (each refused as bad input): arrays

@@ -397,3 +397,29 @@ TEST(ModelLoaderTest, OnlyDegenerateTrianglesAreRefused) {
         << error;
     std::remove(path.c_str());
 }
+
+TEST(ModelLoaderTest, ImportEstimateCountsCornersBeforeTheFileIsRead) {
+    // assimp makes one vertex per face corner before it welds them: an OBJ quad is 4 corners and 2
+    // triangles, a triangle 3 and 1 (4 "v" lines are positions, 24 B each on top); an ASCII STL facet
+    // 3 corners. bytes = corners * kImportBytesPerCorner + the file's size (+ the OBJ positions).
+    const std::string obj = writeTemp("sb_estimate.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                                         "f 1 2 3 4\nf 1 2 3\n");
+    const auto o = ModelLoader::estimateImport(obj);
+    ASSERT_TRUE(o.has_value());
+    EXPECT_EQ(o->corners, 7u);
+    EXPECT_EQ(o->triangles, 3u);
+    EXPECT_EQ(o->bytes, 7 * ModelLoader::kImportBytesPerCorner + std::filesystem::file_size(obj) + 4 * 24);
+    std::remove(obj.c_str());
+    const std::string stl = writeTemp("sb_estimate.stl", "solid t\nfacet normal 0 0 1\nouter loop\n"
+                                                         "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                                                         "endloop\nendfacet\nendsolid t\n");
+    const auto s = ModelLoader::estimateImport(stl);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_EQ(s->corners, 3u);
+    EXPECT_EQ(s->triangles, 1u);
+    std::remove(stl.c_str());
+    // A format without a count known before the import: nothing (checked after it instead).
+    const std::string gltf = writeTemp("sb_estimate.gltf", "{}");
+    EXPECT_FALSE(ModelLoader::estimateImport(gltf).has_value());
+    std::remove(gltf.c_str());
+}

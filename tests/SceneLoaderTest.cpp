@@ -156,9 +156,16 @@ TEST(SceneLoaderTest, AbsurdInstancesExceedTheMemoryLimit) {
     const std::string e = errorOf(json, options);
     EXPECT_EQ(e.rfind("--instances 1000000: estimated memory ", 0), 0u) << e;
     EXPECT_TRUE(contains(e, "GiB exceeds the limit of 8.0 GiB")) << e;
-    // The estimate is instances * (triangles * 72 + 128) + meshes: with a tiny limit even 10 fail.
+    // The estimate is instances * (triangles * 72 + 128) + meshes + the document: with a tiny limit
+    // the document itself is refused before it is parsed, with a little more room the 10 instances.
     SceneOptions tiny;
     tiny.memoryLimitBytes = 1000;
+    const std::string document = errorOf(sceneJson(), tiny);
+    EXPECT_TRUE(contains(document, "test.json: ")) << document;
+    EXPECT_TRUE(contains(document, " JSON values, 1 instances: estimated memory ")) << document;
+    EXPECT_TRUE(contains(document, " to read them exceeds the limit of 1000 bytes (--max-memory-gib)"))
+        << document;
+    tiny.memoryLimitBytes = 40000;
     EXPECT_TRUE(
         contains(errorOf(sceneJson(), tiny), "test.json: /layout/count: 10 instances: estimated memory"));
     tiny.memoryLimitBytes = 100000000;
