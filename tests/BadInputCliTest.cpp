@@ -197,6 +197,19 @@ std::vector<BadInput> table() {
          {"index.ply"},
          2,
          file("index.ply", plyHeader("ascii", 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n")},
+        // Run options and memory limits: every value a user can type is taken at its word (no -1 or 0
+        // stands for "not given"), and the GL context's options are refused under --api vulkan.
+        {"gpu -1", "--gpu -1", {"--gpu -1", "0..1023"}},
+        {"vk-device -1", "--api vulkan --vk-device -1", {"--vk-device -1", "0..1023"}},
+        {"path-frames 0", "--path-frames 0", {"--path-frames 0", "2..1000000"}},
+        {"time -1", "--time -1", {"--time -1", "[0, 1]"}},
+        {"instances -1", "--instances -1", {"--instances -1"}},
+        {"tess -1", "--tess -1", {"--tess -1", "1..1024"}},
+        {"seed -1", "--seed -1", {"--seed -1", "0..4294967295"}},
+        {"backend under vulkan", "--api vulkan --backend osmesa", {"--backend osmesa", "--vk-device"}},
+        {"gpu under vulkan", "--api vulkan --gpu 0", {"--gpu", "--vk-device"}},
+        {"sweep max-configs -1", "sweep -t none --max-configs -1", {"--max-configs -1"}},
+        {"sweep repeat 0", "sweep -t none --repeat 0", {"--repeat 0", "1..1000"}},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +
