@@ -210,6 +210,18 @@ std::vector<BadInput> table() {
         {"gpu under vulkan", "--api vulkan --gpu 0", {"--gpu", "--vk-device"}},
         {"sweep max-configs -1", "sweep -t none --max-configs -1", {"--max-configs -1"}},
         {"sweep repeat 0", "sweep -t none --repeat 0", {"--repeat 0", "1..1000"}},
+        // What a technique allocates counts against --max-memory-gib, refused before it is allocated:
+        // proxy's IndexMap of 1024^2 cells x 4096 entries is 32 GiB, cascaded maps of 8192^2 x 4 cascades
+        // x 4 B are 1 GiB, each over the limit given.
+        {"proxy grid past memory",
+         "-t proxy:capacity=4096:cells=1024 --max-memory-gib 1",
+         {"-t proxy:capacity=4096:cells=1024", "32.00 GiB", "--max-memory-gib"}},
+        {"shadow maps past memory",
+         "--scene sphere_plane -t cascaded:resolution=8192:cascades=4 --max-memory-gib 0.5",
+         {"-t cascaded:resolution=8192:cascades=4", "1.00 GiB", "--max-memory-gib"}},
+        {"sweep technique past memory",
+         "sweep -t proxy:cells=1024:capacity=4096 --max-memory-gib 1",
+         {"sweep: combination", "-t proxy:cells=1024:capacity=4096", "--max-memory-gib"}},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +
