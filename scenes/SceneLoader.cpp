@@ -1141,6 +1141,10 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
     return parse(readSceneText(path, options), path, options);
 }
 
+uint64_t SceneLoader::estimateBytes(const Scene& scene) {
+    return estimateMemory(scene, {}, 0);
+}
+
 std::vector<std::string> SceneLoader::listBuiltinScenes() {
     std::set<std::string> names;
     for (const auto& root : Paths::searchRoots()) {

@@ -111,6 +111,7 @@
 // number read as a float fits a float; every mesh's bounds, every instance's world bounds (position +
 // scale * size), and every camera eye/target and light position lie within ModelLoader::kMaxCoordinate
 // (1e18), the error naming the mesh's or instance's JSON path ("/layout" for layout instances).
+#include <cstdint>
 #include <string>
 
 #include "scenes/Scene.h"
@@ -128,6 +129,9 @@ public:
                        const SceneOptions& options = {});
     /// Names of the built-in scene files found (for --help and --list).
     static std::vector<std::string> listBuiltinScenes();
+    /// The memory estimate above of a loaded scene (every instance counted), in bytes: the run adds
+    /// the techniques' and the frame targets' to it (registry/MemoryBudget.h).
+    static uint64_t estimateBytes(const Scene& scene);
 };
 
 } // namespace sb

@@ -10,6 +10,7 @@
 
 #include "scenes/Scene.h"
 #include "techniques/Property.h"
+#include "techniques/ResourceEstimate.h"
 
 namespace sb {
 
@@ -47,6 +48,10 @@ struct TechniqueInfo {
     std::vector<std::string> viewPasses;
     std::vector<PropertyDesc> properties;
     std::vector<QualityKnob> quality; ///< knobs that trade accuracy for time, with sweep values
+    /// What it allocates for one configuration, before it allocates it (techniques/ResourceEstimate.h):
+    /// the run refuses a configuration over --max-memory-gib. Empty: nothing that grows with its
+    /// properties or the frame (its buffers are the scene's size, which the scene's estimate counts).
+    ResourceDeclaration resources;
 
     /// The capabilities of `api`'s form.
     std::vector<Capability> capabilitiesOf(Api api) const;

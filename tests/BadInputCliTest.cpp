@@ -282,6 +282,31 @@ std::vector<BadInput> table() {
          2,
          file("lie.stl",
               std::string(80, '\0') + std::string("\x80\x96\x98\x00", 4) + std::string(500, '\0'))},
+        // Run options and memory limits: every value a user can type is taken at its word (no -1 or 0
+        // stands for "not given"), and the GL context's options are refused under --api vulkan.
+        {"gpu -1", "--gpu -1", {"--gpu -1", "0..1023"}},
+        {"vk-device -1", "--api vulkan --vk-device -1", {"--vk-device -1", "0..1023"}},
+        {"path-frames 0", "--path-frames 0", {"--path-frames 0", "2..1000000"}},
+        {"time -1", "--time -1", {"--time -1", "[0, 1]"}},
+        {"instances -1", "--instances -1", {"--instances -1"}},
+        {"tess -1", "--tess -1", {"--tess -1", "1..1024"}},
+        {"seed -1", "--seed -1", {"--seed -1", "0..4294967295"}},
+        {"backend under vulkan", "--api vulkan --backend osmesa", {"--backend osmesa", "--vk-device"}},
+        {"gpu under vulkan", "--api vulkan --gpu 0", {"--gpu", "--vk-device"}},
+        {"sweep max-configs -1", "sweep -t none --max-configs -1", {"--max-configs -1"}},
+        {"sweep repeat 0", "sweep -t none --repeat 0", {"--repeat 0", "1..1000"}},
+        // What a technique allocates counts against --max-memory-gib, refused before it is allocated:
+        // proxy's IndexMap of 1024^2 cells x 4096 entries is 32 GiB, cascaded maps of 8192^2 x 4 cascades
+        // x 4 B are 1 GiB, each over the limit given.
+        {"proxy grid past memory",
+         "-t proxy:capacity=4096:cells=1024 --max-memory-gib 1",
+         {"-t proxy:capacity=4096:cells=1024", "32.00 GiB", "--max-memory-gib"}},
+        {"shadow maps past memory",
+         "--scene sphere_plane -t cascaded:resolution=8192:cascades=4 --max-memory-gib 0.5",
+         {"-t cascaded:resolution=8192:cascades=4", "1.00 GiB", "--max-memory-gib"}},
+        {"sweep technique past memory",
+         "sweep -t proxy:cells=1024:capacity=4096 --max-memory-gib 1",
+         {"sweep: combination", "-t proxy:cells=1024:capacity=4096", "--max-memory-gib"}},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

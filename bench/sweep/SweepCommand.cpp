@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "bench/lib/options/CliParse.h"
 #include "bench/lib/output/CsvWriter.h"
@@ -38,8 +39,8 @@ Exit codes: 0 ok, 1 some configurations failed (rows with status=failed say why)
 struct SweepCli {
     std::string file, csv, shard = "1/1", format = "console", name, mode;
     bool resume = false, dryRun = false, noProgress = false, qualitySweep = false;
-    int64_t maxConfigs = -1;
-    std::string driver; ///< acted on by BenchApp (the process already runs on it)
+    std::optional<int64_t> maxConfigs; ///< set only when given: no typed value means "the default"
+    std::string driver;                ///< acted on by BenchApp (the process already runs on it)
     SweepOptions axes;
 };
 
@@ -57,8 +58,9 @@ int SweepCommand::main(int argc, char** argv) {
     app.add_option("--mode", cli.mode, "measure (default) or accuracy (judge against the reference too)");
     app.add_flag("--quality-sweep", cli.qualitySweep, "accuracy: walk each technique's quality knobs");
     app.add_option("--name", cli.name, "sweep name recorded in every row (default: the file's stem)");
-    app.add_option("--max-configs", cli.maxConfigs,
-                   "refuse sweeps of more configurations (rows) than this (default 10000)");
+    app.add_option_function<int64_t>(
+        "--max-configs", [&cli](int64_t limit) { cli.maxConfigs = limit; },
+        "refuse sweeps of more configurations (rows) than this (default 10000)");
     app.add_flag("--resume", cli.resume, "continue the sweep in --csv, skipping the rows it already has");
     app.add_option("--shard", cli.shard, "run slice i of N (i/N) of the combinations")->capture_default_str();
     app.add_flag("--dry-run", cli.dryRun, "print the configurations and exit");
@@ -76,10 +78,11 @@ int SweepCommand::main(int argc, char** argv) {
     cli.axes.applyTo(definition);
     if (!cli.name.empty()) definition.name = cli.name;
     if (cli.qualitySweep) definition.qualitySweep = true;
-    if (cli.maxConfigs != -1) {
-        if (cli.maxConfigs < 1)
-            throw Error("--max-configs " + std::to_string(cli.maxConfigs) + ": must be at least 1");
-        definition.maxConfigs = uint64_t(cli.maxConfigs);
+    if (cli.maxConfigs) {
+        if (*cli.maxConfigs < 1)
+            throw Error("--max-configs " + std::to_string(*cli.maxConfigs) + ": expected 1.." +
+                        std::to_string(INT64_MAX));
+        definition.maxConfigs = uint64_t(*cli.maxConfigs);
     }
     if (!cli.mode.empty()) {
         if (cli.mode != "measure" && cli.mode != "accuracy")

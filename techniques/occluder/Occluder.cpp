@@ -38,7 +38,11 @@ TechniqueInfo Occluder::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"lighting"},
             .properties = declareProperties(),
-            .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}}};
+            .quality = {{kResolution, {"64", "128", "256", "512", "1024"}}},
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(kResolution), 1, uint64_t(std::max<int64_t>(1, p.getInt(kPlanes))),
+                                  in);
+            }};
 }
 
 } // namespace sb

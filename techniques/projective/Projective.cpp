@@ -37,9 +37,13 @@ TechniqueInfo Projective::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"texture", "blur", "lighting"},
             .properties = declareProperties(),
-            .quality = {
-                {kResolution, {"128", "256", "512", "1024", "2048"}},
-                {kBlur, {"0", "1", "2", "4", "8"}},
+            .quality =
+                {
+                    {kResolution, {"128", "256", "512", "1024", "2048"}},
+                    {kBlur, {"0", "1", "2", "4", "8"}},
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(kResolution), 1, 1, in, 1);
             }};
 }
 

@@ -1,6 +1,10 @@
 #include "techniques/proxy/Proxy.h"
 
+#include <cstdint>
+#include <string>
+
 #include "techniques/Property.h"
+#include "techniques/PropertySet.h"
 
 namespace sb {
 
@@ -41,6 +45,17 @@ std::vector<PropertyDesc> declareProperties() {
     };
 }
 
+/// The IndexMap (techniques/proxy/ProxyIndexGrid.h) is dense: every cell holds `capacity` 32-bit
+/// entries whether or not they are used, once in the CPU grid and once in the GPU buffer it is uploaded
+/// to. Without the grid one cell holds every proxy in view, which the scene's size bounds.
+ResourceEstimate indexMap(const PropertySet& p, const ResourceInputs&) {
+    if (!p.getBool(Proxy::kGrid)) return {};
+    const uint64_t cells = uint64_t(p.getInt(Proxy::kCells)), capacity = uint64_t(p.getInt(Proxy::kCapacity));
+    return {cells * cells * capacity * sizeof(uint32_t) * 2,
+            std::to_string(cells) + "^2 cells x " + std::to_string(capacity) +
+                " entries x 4 B, in the CPU grid and in the GPU buffer"};
+}
+
 } // namespace
 
 TechniqueInfo Proxy::declaration() {
@@ -55,7 +70,8 @@ TechniqueInfo Proxy::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"index_map", "lighting"},
             .properties = declareProperties(),
-            .quality = {{kOffset, {"0.25", "0.5", "1", "2", "4"}}, {kFalloff, {"0.5", "1", "2", "4"}}}};
+            .quality = {{kOffset, {"0.25", "0.5", "1", "2", "4"}}, {kFalloff, {"0.5", "1", "2", "4"}}},
+            .resources = indexMap};
 }
 
 } // namespace sb

@@ -39,11 +39,16 @@ TechniqueInfo Cascaded::declaration() {
             .passes = {"depth", "lighting"},
             .properties = declareProperties(),
             // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
-            .quality = {
-                {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
-                {kCascades, {"1", "2", "3", "4"}},
-                {kLambda, {"0", "0.25", "0.5", "0.75", "1"}},
-                P::pcfSweep(),
+            .quality =
+                {
+                    {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+                    {kCascades, {"1", "2", "3", "4"}},
+                    {kLambda, {"0", "0.25", "0.5", "0.75", "1"}},
+                    P::pcfSweep(),
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, uint64_t(p.getInt(kCascades)),
+                                  in);
             }};
 }
 

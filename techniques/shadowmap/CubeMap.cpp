@@ -33,11 +33,15 @@ TechniqueInfo CubeMap::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"depth", "lighting"},
             .properties = declareProperties(),
-            .quality = {
-                {P::kResolution, {"256", "512", "1024", "2048"}},
-                P::pcfSweep(),
-                P::biasConstantSweep(),
-                P::biasSlopeSweep(),
+            .quality =
+                {
+                    {P::kResolution, {"256", "512", "1024", "2048"}},
+                    P::pcfSweep(),
+                    P::biasConstantSweep(),
+                    P::biasSlopeSweep(),
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, CubeFaces::kFaces, in);
             }};
 }
 

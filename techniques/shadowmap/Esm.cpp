@@ -34,10 +34,14 @@ TechniqueInfo Esm::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"depth", "blur", "lighting"},
             .properties = declareProperties(),
-            .quality = {
-                {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                {kBlur, {"0", "3", "5", "9"}},
-                {kExponent, {"10", "40", "80", "160", "500"}},
+            .quality =
+                {
+                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                    {kBlur, {"0", "3", "5", "9"}},
+                    {kExponent, {"10", "40", "80", "160", "500"}},
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(kResolution), 4, 1, in, 4 + kDepthTexelBytes);
             }};
 }
 

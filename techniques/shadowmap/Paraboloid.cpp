@@ -37,11 +37,15 @@ TechniqueInfo Paraboloid::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"depth", "lighting"},
             .properties = declareProperties(),
-            .quality = {
-                {P::kResolution, {"512", "1024", "2048", "4096"}},
-                P::pcfSweep(),
-                P::biasConstantSweep(),
-                P::biasSlopeSweep(),
+            .quality =
+                {
+                    {P::kResolution, {"512", "1024", "2048", "4096"}},
+                    P::pcfSweep(),
+                    P::biasConstantSweep(),
+                    P::biasSlopeSweep(),
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 2, in);
             }};
 }
 

@@ -74,11 +74,15 @@ TechniqueInfo Pcss::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"depth", "lighting"},
             .properties = declareProperties(),
-            .quality = {
-                {P::kResolution, {"512", "1024", "2048", "4096"}},
-                {kBlockerTaps, {"4", "8", "16", "32"}},
-                {kFilterTaps, {"8", "16", "32", "64"}},
-                {kLightSize, {"0", "0.05", "0.2", "0.5"}},
+            .quality =
+                {
+                    {P::kResolution, {"512", "1024", "2048", "4096"}},
+                    {kBlockerTaps, {"4", "8", "16", "32"}},
+                    {kFilterTaps, {"8", "16", "32", "64"}},
+                    {kLightSize, {"0", "0.05", "0.2", "0.5"}},
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
             }};
 }
 

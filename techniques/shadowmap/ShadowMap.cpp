@@ -72,16 +72,20 @@ TechniqueInfo ShadowMap::declaration() {
             .passes = {"depth", "lighting"},
             .properties = declareProperties(),
             // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
-            .quality = {
-                {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
-                P::pcfSweep(),
-                P::biasConstantSweep(),
-                P::biasSlopeSweep(),
-                {kKernel, {"grid", "poisson", "rotated_grid"}},
-                {kTaps, {"8", "16", "32"}},
-                {kRadius, {"1", "1.5", "3"}},
-                {kNormalOffset, {"0", "1", "2", "4"}},
-                {kReceiverPlane, {"false", "true"}},
+            .quality =
+                {
+                    {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+                    P::pcfSweep(),
+                    P::biasConstantSweep(),
+                    P::biasSlopeSweep(),
+                    {kKernel, {"grid", "poisson", "rotated_grid"}},
+                    {kTaps, {"8", "16", "32"}},
+                    {kRadius, {"1", "1.5", "3"}},
+                    {kNormalOffset, {"0", "1", "2", "4"}},
+                    {kReceiverPlane, {"false", "true"}},
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
             }};
 }
 

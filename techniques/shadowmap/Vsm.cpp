@@ -40,10 +40,14 @@ TechniqueInfo Vsm::declaration() {
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"depth", "blur", "lighting"},
             .properties = declareProperties(),
-            .quality = {
-                {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                {kBlur, {"0", "3", "5", "9"}},
-                {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
+            .quality =
+                {
+                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                    {kBlur, {"0", "3", "5", "9"}},
+                    {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
+                },
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return squareMaps(p.getInt(kResolution), 8, 1, in, 8 + kDepthTexelBytes);
             }};
 }
 

@@ -4,8 +4,10 @@
 #include <malloc.h>
 #include <map>
 
+#include "bench/lib/options/QualitySweep.h"
 #include "core/Error.h"
 #include "core/Strings.h"
+#include "registry/MemoryBudget.h"
 #include "scenes/Math.h"
 #include "scenes/Motion.h"
 #include "scenes/SceneLoader.h"
@@ -67,6 +69,12 @@ MeasuredHarness::MeasuredHarness(const RunConfig& config, bool motion) : mConfig
     if (mScene.lights.size() > size_t(kMaxLights))
         throw Error("scene '" + mScene.name + "' has " + std::to_string(mScene.lights.size()) +
                     " lights; at most " + std::to_string(kMaxLights) + " are supported");
+    // Before the derived harness creates its targets and any technique its maps: the whole
+    // configuration within --max-memory-gib, as the scene alone was when it loaded.
+    const std::vector<TechniqueSpec> specs =
+        config.sweep ? QualitySweep::expandAll(config.techniques) : config.techniques;
+    MemoryBudget::check(specs, {config.width, config.height, int(mScene.lights.size())},
+                        SceneLoader::estimateBytes(mScene), config.sceneOptions.memoryLimitBytes);
     updateFrameData();
 }
 

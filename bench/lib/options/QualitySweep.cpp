@@ -20,4 +20,13 @@ std::vector<TechniqueSpec> QualitySweep::expand(const TechniqueSpec& spec) {
     return out;
 }
 
+std::vector<TechniqueSpec> QualitySweep::expandAll(const std::vector<TechniqueSpec>& specs) {
+    std::vector<TechniqueSpec> out;
+    for (const TechniqueSpec& spec : specs) {
+        const std::vector<TechniqueSpec> expanded = expand(spec);
+        out.insert(out.end(), expanded.begin(), expanded.end());
+    }
+    return out;
+}
+
 } // namespace sb

@@ -13,6 +13,8 @@ class QualitySweep {
 public:
     /// Deduplicated by canonical properties; order: the base spec first, then knob by knob.
     static std::vector<TechniqueSpec> expand(const TechniqueSpec& spec);
+    /// expand() of each spec in turn: the configurations `bench accuracy --sweep` runs.
+    static std::vector<TechniqueSpec> expandAll(const std::vector<TechniqueSpec>& specs);
 };
 
 } // namespace sb

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -78,18 +79,38 @@ void requireNonEmptyPaths(const CLI::App& app) {
     }
 }
 
-/// What CLI11 fills before it is checked: texts, and -1 for "not given", that become RunConfig fields.
+// Device indices: far beyond any machine's count of EGL or Vulkan devices, and small enough that an
+// index that names no device is refused by the context with the devices there are.
+constexpr int kMaxDeviceIndex = 1023;
+
+/// What CLI11 fills before it is checked: texts, and the numbers whose absence means "the scene's" or
+/// "the default". Those are optional, set only when the option is given, so that no value a user can
+/// type (-1, 0) is mistaken for "not given".
 struct RawOptions {
     std::vector<std::string> techniques;
     std::string size = "1024x1024", submit = "retained", backend = "auto", light, format = "console";
     std::string api = "gl", driver;
-    int instances = -1, tess = -1;
-    int64_t seed = -1;
+    std::optional<int> instances, tess, pathFrames, gpu, vkDevice;
+    std::optional<int64_t> seed;
+    std::optional<double> pathTime;
     double maxMemoryGiB = 0.0;
-    double pathTime = -1.0;
-    int pathFrames = 0;
     bool window = false, noTimerCheck = false, noStability = false;
 };
+
+/// An option whose value lands in `into` only when it is given.
+template <typename T>
+CLI::Option* addOptional(CLI::App& app, const std::string& name, std::optional<T>& into,
+                         const std::string& help) {
+    return app.add_option_function<T>(
+        name, [&into](const T& value) { into = value; }, help);
+}
+
+/// Throws sb::Error naming `option` and the accepted range when `value` lies outside [low, high].
+void requireRange(const char* option, int64_t value, int64_t low, int64_t high) {
+    if (value < low || value > high)
+        throw Error(std::string(option) + " " + std::to_string(value) + ": expected " + std::to_string(low) +
+                    ".." + std::to_string(high));
+}
 
 /// Every option of a run, in --help's order; RunConfig fields that need no check are bound directly.
 void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
@@ -99,13 +120,13 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
     app.add_option("--scene", c.scene, "built-in scene name or scene JSON file")->capture_default_str();
     app.add_option("--model", c.sceneOptions.modelPath,
                    "model file (obj, gltf, 3ds ...) replacing the layout mesh");
-    app.add_option("-n,--instances", raw.instances,
-                   "number of layout instances (scene default: 200 for aircraft)");
+    addOptional(app, "-n,--instances", raw.instances,
+                "number of layout instances (scene default: 200 for aircraft)");
     app.add_option("--scale", c.sceneOptions.scale,
                    "scale of every layout instance (10: fill-bound, 0.01: vertex-bound)")
         ->capture_default_str();
-    app.add_option("--seed", raw.seed, "layout seed (same seed, same scene)");
-    app.add_option("--tess", raw.tess, "tessellation of every generated mesh (vertex load)");
+    addOptional(app, "--seed", raw.seed, "layout seed (same seed, same scene)");
+    addOptional(app, "--tess", raw.tess, "tessellation of every generated mesh (vertex load)");
     app.add_option("--tess-factor", c.sceneOptions.tessellationFactor,
                    "multiply every generated mesh's tessellation (0.5: vertex load down)")
         ->capture_default_str();
@@ -113,11 +134,11 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
     app.add_option("--camera", c.camera,
                    "camera preset: far, mid, near, top (path: a moving scene's camera path)")
         ->capture_default_str();
-    app.add_option(
-        "--time", raw.pathTime,
+    addOptional(
+        app, "--time", raw.pathTime,
         "a scene in motion: freeze it at this path time in [0, 1] (default: frames move along the path)");
-    app.add_option("--path-frames", raw.pathFrames,
-                   "a scene in motion: frames per pass along its path (default: the scene's)");
+    addOptional(app, "--path-frames", raw.pathFrames,
+                "a scene in motion: frames per pass along its path (default: the scene's)");
     app.add_option("--size", raw.size, "render target WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--submit", raw.submit, "submission: " + submitModes().list())->capture_default_str();
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
@@ -127,13 +148,13 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "gl or vulkan: the API the frames are drawn with (vulkan: lavapipe by default; techniques "
                    "with a Vulkan form in --list)")
         ->capture_default_str();
-    app.add_option("--vk-device", c.vulkan.device,
-                   "--api vulkan: device index as --list shows (default: lavapipe, else the first)");
+    addOptional(app, "--vk-device", raw.vkDevice,
+                "--api vulkan: device index as --list shows (default: lavapipe, else the first)");
     app.add_flag("--vk-validation", c.vulkan.validation,
                  "--api vulkan: Khronos validation layer on, its messages printed (slows every frame)");
     DriverOption::add(app, raw.driver);
     app.add_option("--backend", raw.backend, backendNames())->capture_default_str();
-    app.add_option("--gpu", c.context.gpu, "EGL device index (implies egl-device under auto)");
+    addOptional(app, "--gpu", raw.gpu, "EGL device index (implies egl-device under auto)");
     app.add_flag("--window", raw.window, "on-screen viewer (GLFW) instead of a measurement");
     app.add_option("--window-frames", c.windowFrames,
                    "--window: quit after N frames (scripted checks; 0 = never)");
@@ -208,19 +229,18 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     c.context.visibleWindow = raw.window;
     c.context.width = c.width;
     c.context.height = c.height;
-    if (raw.instances != -1) {
-        if (raw.instances < 1)
-            throw Error("--instances " + std::to_string(raw.instances) + ": must be at least 1");
-        c.sceneOptions.instances = uint32_t(raw.instances);
+    if (raw.instances) {
+        if (*raw.instances < 1)
+            throw Error("--instances " + std::to_string(*raw.instances) + ": must be at least 1");
+        c.sceneOptions.instances = uint32_t(*raw.instances);
     }
-    if (raw.tess != -1) {
-        if (raw.tess < 1 || raw.tess > 1024)
-            throw Error("--tess " + std::to_string(raw.tess) + ": expected 1..1024");
-        c.sceneOptions.tessellation = raw.tess;
+    if (raw.tess) {
+        requireRange("--tess", *raw.tess, 1, 1024);
+        c.sceneOptions.tessellation = *raw.tess;
     }
-    if (raw.seed != -1) {
-        if (raw.seed < 0 || raw.seed > 0xffffffffll) throw Error("--seed: expected 0..4294967295");
-        c.sceneOptions.seed = uint32_t(raw.seed);
+    if (raw.seed) {
+        requireRange("--seed", *raw.seed, 0, 0xffffffffll);
+        c.sceneOptions.seed = uint32_t(*raw.seed);
     }
     if (!raw.light.empty()) {
         auto t = lightTypeNames().parse(raw.light);
@@ -232,18 +252,23 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     if (!(c.sceneOptions.scale >= kMinScale && c.sceneOptions.scale <= kMaxScale))
         throw Error("--scale " + formatNumber(c.sceneOptions.scale) + ": expected a number in [" +
                     formatNumber(kMinScale) + ", " + formatNumber(kMaxScale) + "]");
-    if (c.context.gpu != -1 && c.context.gpu < 0)
-        throw Error("--gpu " + std::to_string(c.context.gpu) + ": expected a device index 0, 1, ...");
-    if (c.context.gpu >= 0 && c.context.backend != Backend::Auto && c.context.backend != Backend::EglDevice)
+    if (raw.gpu) {
+        requireRange("--gpu", *raw.gpu, 0, kMaxDeviceIndex);
+        c.context.gpu = *raw.gpu;
+    }
+    if (raw.gpu && c.context.backend != Backend::Auto && c.context.backend != Backend::EglDevice)
         throw Error("--gpu selects an EGL device, which --backend " + raw.backend +
                     " does not use (use --backend egl-device or auto)");
     if (c.frames < 1) throw Error("--frames " + std::to_string(c.frames) + ": must be at least 1");
-    if (raw.pathTime != -1.0 && !(raw.pathTime >= 0.0 && raw.pathTime <= 1.0))
-        throw Error("--time " + formatNumber(raw.pathTime) + ": expected a path time in [0, 1]");
-    c.pathTime = raw.pathTime;
-    if (raw.pathFrames != 0 && (raw.pathFrames < 2 || raw.pathFrames > 1000000))
-        throw Error("--path-frames " + std::to_string(raw.pathFrames) + ": expected 2..1000000");
-    c.pathFrames = raw.pathFrames;
+    if (raw.pathTime) {
+        if (!(*raw.pathTime >= 0.0 && *raw.pathTime <= 1.0))
+            throw Error("--time " + formatNumber(*raw.pathTime) + ": expected a path time in [0, 1]");
+        c.pathTime = *raw.pathTime;
+    }
+    if (raw.pathFrames) {
+        requireRange("--path-frames", *raw.pathFrames, 2, 1000000);
+        c.pathFrames = *raw.pathFrames;
+    }
     if (c.warmup < 0) throw Error("--warmup: must be 0 or more");
     if (c.windowFrames < 0) throw Error("--window-frames: must be 0 or more");
     if (!(c.seconds >= 0.0 && c.seconds <= 86400.0)) throw Error("--seconds: expected 0..86400");
@@ -255,14 +280,16 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     c.checkTimer = !raw.noTimerCheck;
     if (raw.api != "gl" && raw.api != "vulkan") throw Error("--api " + raw.api + ": expected gl or vulkan");
     c.api = raw.api == "vulkan" ? RunConfig::Api::Vulkan : RunConfig::Api::GL;
-    if (c.vulkan.device < -1)
-        throw Error("--vk-device " + std::to_string(c.vulkan.device) + ": expected a device index 0, 1, ...");
-    if (c.api == RunConfig::Api::GL && (c.vulkan.device != -1 || c.vulkan.validation))
-        throw Error(std::string(c.vulkan.device != -1 ? "--vk-device" : "--vk-validation") +
+    if (raw.vkDevice) {
+        requireRange("--vk-device", *raw.vkDevice, 0, kMaxDeviceIndex);
+        c.vulkan.device = *raw.vkDevice;
+    }
+    if (c.api == RunConfig::Api::GL && (raw.vkDevice || c.vulkan.validation))
+        throw Error(std::string(raw.vkDevice ? "--vk-device" : "--vk-validation") +
                     " applies to --api vulkan only");
     // The GL context's options choose nothing on Vulkan: refused rather than accepted and ignored.
-    if (c.api == RunConfig::Api::Vulkan && (raw.backend != "auto" || c.context.gpu >= 0))
-        throw Error(std::string(c.context.gpu >= 0 ? "--gpu" : "--backend " + raw.backend) +
+    if (c.api == RunConfig::Api::Vulkan && (raw.backend != "auto" || raw.gpu))
+        throw Error(std::string(raw.gpu ? "--gpu" : "--backend " + raw.backend) +
                     " chooses the GL context; with --api vulkan the device is chosen with --vk-device");
 }
 

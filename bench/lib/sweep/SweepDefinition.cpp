@@ -16,6 +16,7 @@
 #include "core/JsonReader.h"
 #include "core/Paths.h"
 #include "core/Strings.h"
+#include "registry/MemoryBudget.h"
 #include "registry/TechniqueRegistry.h"
 #include "scenes/SceneLoader.h"
 
@@ -85,7 +86,10 @@ RunConfig validateArgs(const std::vector<std::string>& args, SweepPlan::Mode mod
 /// loaded once per distinct set of scene options (the camera, size and submit axes share one).
 class SceneCheck {
 public:
-    void check(const RunConfig& config, const std::string& where) {
+    /// Also the whole configuration of each of `techniques` within the memory limit
+    /// (registry/MemoryBudget.h).
+    void check(const RunConfig& config, const std::vector<std::string>& techniques,
+               const std::string& where) {
         const SceneOptions& o = config.sceneOptions;
         const std::string key = config.scene + "|" + o.modelPath + "|" +
                                 std::to_string(o.instances.value_or(0)) + "|" + std::to_string(o.scale) +
@@ -93,25 +97,35 @@ public:
                                 std::to_string(o.tessellationFactor) + "|" +
                                 std::to_string(o.lightType ? int(*o.lightType) : -1) + "|" +
                                 std::to_string(o.seed.value_or(0)) + "|" + std::to_string(o.memoryLimitBytes);
-        auto it = mCameras.find(key);
-        if (it == mCameras.end()) {
+        auto it = mScenes.find(key);
+        if (it == mScenes.end()) {
             try {
                 const Scene scene = SceneLoader::load(config.scene, o);
-                std::vector<std::string> names;
-                for (const CameraPreset& c : scene.cameras) names.push_back(c.name);
-                it = mCameras.emplace(key, names).first;
+                Loaded loaded{{}, int(scene.lights.size()), SceneLoader::estimateBytes(scene)};
+                for (const CameraPreset& c : scene.cameras) loaded.cameras.push_back(c.name);
+                it = mScenes.emplace(key, loaded).first;
             } catch (const Error& e) {
                 throw Error("sweep: " + where + ": " + e.what(), e.code());
             }
         }
-        const std::vector<std::string>& cameras = it->second;
+        std::vector<TechniqueSpec> specs;
+        for (const std::string& t : techniques) specs.push_back(TechniqueSpec::parse(t));
+        MemoryBudget::check(specs, {config.width, config.height, it->second.lights}, it->second.bytes,
+                            o.memoryLimitBytes, "sweep: " + where + ": ");
+        const std::vector<std::string>& cameras = it->second.cameras;
         if (std::find(cameras.begin(), cameras.end(), config.camera) == cameras.end())
             throw Error("sweep: scene '" + config.scene + "' has no camera '" + config.camera +
                         "' (known: " + join(cameras, ", ") + ")");
     }
 
 private:
-    std::map<std::string, std::vector<std::string>> mCameras; ///< scene-options key -> camera names
+    /// What a combination needs of its scene: its cameras' names, its lights and its memory estimate.
+    struct Loaded {
+        std::vector<std::string> cameras;
+        int lights = 0;
+        uint64_t bytes = 0;
+    };
+    std::map<std::string, Loaded> mScenes; ///< scene-options key -> what was loaded
 };
 
 /// a * b, saturating at the largest value (the estimate of a sweep's size must not wrap).
@@ -338,7 +352,7 @@ SweepPlan SweepDefinition::expand() const {
         for (size_t i = 0; i < product.size(); ++i)
             where += std::string(" ") + product[i].column + "=" + values[i];
         const RunConfig config = validateArgs(all, mode, where); // before identityColumns reads the numbers
-        scenes.check(config, where);
+        scenes.check(config, techniques, where);
         plan.addGroup(std::move(args), identityColumns(values), techniques, repeat);
     });
     return plan;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/Error.h"
 #include "gl/backends/BackendRegistry.h"
 
 namespace sb {
@@ -74,7 +75,9 @@ void SweepOptions::add(CLI::App& app) {
     app.add_option("--camera", camera, "camera presets, comma-separated");
     app.add_option("--size", size, "resolutions WxH, comma-separated");
     app.add_option("--light", light, "light types, comma-separated ('scene' = as the scene says)");
-    app.add_option("--repeat", repeat, "rounds of interleaved measurement per combination");
+    app.add_option_function<int>(
+        "--repeat", [this](int rounds) { repeat = rounds; },
+        "rounds of interleaved measurement per combination");
     // Options of a single run that stay the same across the sweep; forwarded verbatim.
     for (const PassThroughOption& o : kPassThrough) {
         const std::string help = o.help ? o.help : backendNames(true); // headless: runs are worker processes
@@ -105,7 +108,12 @@ void SweepOptions::applyTo(SweepDefinition& d) const {
     axis(camera, "--camera", d.axes.camera);
     axis(size, "--size", d.axes.size);
     axis(light, "--light", d.axes.light);
-    if (repeat > 0) d.repeat = repeat;
+    if (repeat) {
+        // The bounds of a run's --repeat and of the definition file's "repeat".
+        if (*repeat < 1 || *repeat > 1000)
+            throw Error("--repeat " + std::to_string(*repeat) + ": expected 1..1000");
+        d.repeat = *repeat;
+    }
     // The command line replaces what the definition says, as it does for the axes: the file's value of
     // an option given here goes (bench's parser takes an option once, so keeping both was an error),
     // and so does the other half of a frame budget (--frames after a file's "seconds" must not be
