@@ -99,6 +99,9 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> 
 }
 
 namespace {
+/// The most the kept references (AccuracyEvaluator::reference) may hold: two 1920x1080 images.
+constexpr size_t kReferenceBytes = size_t(16) << 20;
+
 /// Everything a reference image depends on besides the Embree scene: the samples (the G-buffer), the
 /// light as it is now (the stability check turns it) and the tracer's options.
 uint64_t referenceKey(const GBuffer& g, const Light& l, int light, const ReferenceTracer::Options& o,
@@ -138,7 +141,15 @@ std::vector<float> AccuracyEvaluator::reference(const GBuffer& g, int light,
         for (const auto& [k, image] : mReferences)
             if (k == key) return image;
     std::vector<float> image = mTracer->trace(g, light, o, stats).value;
-    if (mReferences.size() >= kReferencesKept) mReferences.erase(mReferences.begin());
+    // Kept within kReferencesKept images and kReferenceBytes: the matrix's 128x128 images are 64 KiB,
+    // while `bench accuracy` at a large size gets no more than that budget on top of what it held before.
+    if (image.size() * sizeof(float) > kReferenceBytes) return image;
+    size_t bytes = image.size() * sizeof(float);
+    for (const auto& kept : mReferences) bytes += kept.second.size() * sizeof(float);
+    while (!mReferences.empty() && (mReferences.size() >= kReferencesKept || bytes > kReferenceBytes)) {
+        bytes -= mReferences.front().second.size() * sizeof(float);
+        mReferences.erase(mReferences.begin());
+    }
     mReferences.emplace_back(key, image);
     return image;
 }
