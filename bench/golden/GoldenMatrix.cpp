@@ -13,6 +13,7 @@
 #include "bench/lib/harness/VulkanHarness.h"
 #include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/select/AutoResolver.h"
+#include "bench/lib/select/Calibration.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "registry/TechniqueRegistry.h"
@@ -155,8 +156,9 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
 }
 
 /// -t auto on the retained harness, as `bench -t auto` resolves it, with a calibration of its own (a
-/// temporary cache, measured afresh) so no earlier run's cache decides.
-AutoPick resolveAuto(MeasuredHarness& harness) {
+/// temporary cache, measured afresh, in MatrixOptions::autoRounds rounds) so no earlier run's cache
+/// decides.
+AutoPick resolveAuto(MeasuredHarness& harness, const MatrixOptions& options) {
     RunConfig config = harness.config();
     const std::filesystem::path cache = std::filesystem::temp_directory_path() /
                                         ("shadowbench-matrix-auto-" + std::to_string(::getpid()) + ".csv");
@@ -170,7 +172,10 @@ AutoPick resolveAuto(MeasuredHarness& harness) {
             std::filesystem::remove(path, ignored);
         }
     } removeCache{cache};
-    const AutoResolution r = AutoResolver::resolve(harness, config, log);
+    CalibrationOptions timing;
+    timing.frames = options.autoRounds;
+    timing.warmup = 0;
+    const AutoResolution r = AutoResolver::resolve(harness, config, log, timing);
     AutoPick pick;
     pick.spec = r.spec.toString();
     pick.reason = r.reason;
@@ -184,7 +189,7 @@ MatrixCell renderAutoCell(Harness& harness, AccuracyEvaluator& evaluator, std::o
                           std::string& refusal, const std::string& scene, const MatrixOptions& options) {
     if (!pick && refusal.empty()) {
         try {
-            pick = resolveAuto(harness);
+            pick = resolveAuto(harness, options);
         } catch (const Error& e) {
             if (e.code() != ExitCode::Unsupported) throw;
             refusal = e.what();
@@ -260,12 +265,12 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
 /// -t auto on Vulkan, as `bench --api vulkan -t auto` resolves it: calibrated among the Vulkan forms on
 /// the first mode's Vulkan harness (a calibration of its own, kept for the other mode as the GL cells
 /// keep theirs), the chosen technique rendered and held to its golden as the GL auto cells are.
-MatrixCell vulkanAutoCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
-                          std::optional<AutoPick>& pick, std::string& refusal, const std::string& scene,
-                          SubmitMode mode, const MatrixOptions& options) {
+MatrixCell vulkanAutoCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator, std::optional<AutoPick>& pick,
+                          std::string& refusal, const std::string& scene, SubmitMode mode,
+                          const MatrixOptions& options) {
     if (!pick && refusal.empty()) {
         try {
-            pick = resolveAuto(vulkan);
+            pick = resolveAuto(vulkan, options);
         } catch (const Error& e) {
             if (e.code() != ExitCode::Unsupported) throw;
             refusal = e.what();
@@ -282,9 +287,9 @@ MatrixCell vulkanAutoCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
 
 /// One Vulkan cell of the axis: unsupported with the reason where it cannot run, else rendered.
 /// `autoPick`, `autoRefusal`: -t auto's Vulkan choice for the scene (vulkanAutoCell).
-MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator,
-                      const std::string& refusal, const std::string& technique, const std::string& scene,
-                      SubmitMode mode, const MatrixOptions& options, std::optional<AutoPick>& autoPick,
+MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const std::string& refusal,
+                      const std::string& technique, const std::string& scene, SubmitMode mode,
+                      const MatrixOptions& options, std::optional<AutoPick>& autoPick,
                       std::string& autoRefusal) {
     if (!vulkan) return unsupportedCell(technique, scene, mode, "vulkan", refusal);
     if (technique == AutoResolver::kName)
@@ -324,8 +329,8 @@ void renderVulkanCells(const std::string& scene, const std::string& camera, bool
         if (vulkan) evaluator = std::make_unique<AccuracyEvaluator>(*vulkan);
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, true), observer, [&] {
-                return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode,
-                                  options, autoPick, autoRefusal);
+                return vulkanCell(vulkan.get(), evaluator.get(), refusal, technique, scene, mode, options,
+                                  autoPick, autoRefusal);
             });
     }
 }

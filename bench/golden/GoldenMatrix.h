@@ -74,6 +74,11 @@ struct MatrixOptions {
     std::vector<std::string> scenes;     ///< empty: every built-in scene
     std::vector<std::string> techniques; ///< empty: every registered technique, then `auto`
     int referenceSamples = 64;           ///< per pixel for area lights
+    /// -t auto's calibration in the `auto` cells: interleaved timed rounds per candidate, no warm-up
+    /// frame. What the cells check does not depend on the timings (any choice is held to its own
+    /// golden and bound, and to auto's rule, which reads the effects and the judged error), so two
+    /// rounds, the fewest the every-round comparison takes, do; `bench -t auto` times five.
+    int autoRounds = 2;
 };
 
 class GoldenMatrix {

@@ -8,6 +8,7 @@
 #include "bench/lib/output/CsvNumber.h"
 #include "bench/lib/output/ResultColumns.h"
 #include "core/Error.h"
+#include "core/Fnv1a.h"
 #include "scenes/Math.h"
 #include "scenes/Motion.h"
 
@@ -85,8 +86,7 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> 
     const GBuffer g = mHarness.renderGBuffer(); // the judged API's own rasterisation of the samples
     ReferenceTracer::Options ro;
     ro.softSamples = o.referenceSamples;
-    VisibilityImage ref = mTracer->trace(g, o.light, ro, stats);
-    s.reference = std::move(ref.value);
+    s.reference = reference(g, o.light, ro, stats);
     s.mask.assign(g.size(), 0);
     const Light& light = scene.lights[size_t(o.light)];
     for (size_t i = 0; i < g.size(); ++i) {
@@ -96,6 +96,62 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> 
                     lightArrives(light, p);
     }
     return s;
+}
+
+namespace {
+/// The most the kept references (AccuracyEvaluator::reference) may hold: two 1920x1080 images.
+constexpr size_t kReferenceBytes = size_t(16) << 20;
+
+/// Everything a reference image depends on besides the Embree scene: the samples (the G-buffer), the
+/// light as it is now (the stability check turns it) and the tracer's options.
+uint64_t referenceKey(const GBuffer& g, const Light& l, int light, const ReferenceTracer::Options& o,
+                      float casterTime) {
+    Fnv1a h;
+    h.value(g.width);
+    h.value(g.height);
+    h.vector(g.position);
+    h.vector(g.primitive);
+    h.vector(g.backFacing);
+    h.value(light);
+    h.value(casterTime);
+    h.value(o.softSamples);
+    h.value(o.seed);
+    h.value(o.forceHard);
+    h.value(l.type);
+    h.value(l.direction);
+    h.value(l.position);
+    h.value(l.range);
+    h.value(l.spotOuterDeg);
+    h.value(l.spotInnerDeg);
+    h.value(l.shape);
+    h.value(l.size);
+    h.value(l.angularRadiusDeg);
+    h.value(l.castsShadows);
+    return h.result();
+}
+} // namespace
+
+std::vector<float> AccuracyEvaluator::reference(const GBuffer& g, int light,
+                                                const ReferenceTracer::Options& o, TraceStats* stats) {
+    // The tracer throws for a light the scene does not have; it is asked before the key reads the light.
+    if (light < 0 || size_t(light) >= mHarness.scene().lights.size())
+        return mTracer->trace(g, light, o, stats).value;
+    const uint64_t key = referenceKey(g, mHarness.scene().lights[size_t(light)], light, o, mEmbreeTime);
+    if (!stats) // a caller that reports the trace's rays and time gets a trace
+        for (const auto& [k, image] : mReferences)
+            if (k == key) return image;
+    std::vector<float> image = mTracer->trace(g, light, o, stats).value;
+    // Kept within kReferencesKept images and kReferenceBytes: the matrix's 128x128 images are 64 KiB,
+    // while `bench accuracy` at a large size gets no more than that budget on top of what it held before.
+    if (image.size() * sizeof(float) > kReferenceBytes) return image;
+    size_t bytes = image.size() * sizeof(float);
+    for (const auto& kept : mReferences) bytes += kept.second.size() * sizeof(float);
+    while (!mReferences.empty() && (mReferences.size() >= kReferencesKept || bytes > kReferenceBytes)) {
+        bytes -= mReferences.front().second.size() * sizeof(float);
+        mReferences.erase(mReferences.begin());
+    }
+    mReferences.emplace_back(key, image);
+    return image;
 }
 
 uint64_t AccuracyEvaluator::techniqueChanges(const Sample& a, const Sample& b) const {

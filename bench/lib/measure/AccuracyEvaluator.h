@@ -28,6 +28,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/output/CsvWriter.h"
@@ -117,6 +119,12 @@ private:
     void measurePath(Technique& technique, const AccuracyOptions& options, AccuracyResult& result);
     /// The Embree scene rebuilt where the harness's casters stand now (a scene in motion).
     void followCasters();
+    /// The reference's visibility of `light` at the samples of `g`: traced, or the image traced for the
+    /// same samples, light and options before. The golden matrix judges every technique, and -t auto's
+    /// calibration every candidate, on the same frame of one harness: each trace (64 rays a sample for
+    /// an area light) was once repeated for every one of them. With `stats` it is always traced.
+    std::vector<float> reference(const GBuffer& g, int light, const ReferenceTracer::Options& o,
+                                 TraceStats* stats);
     /// Keeps `sample` (without its RGBA read-back) as lastJudged().
     void keepJudged(const Sample& sample);
     MeasuredHarness& mHarness;
@@ -124,6 +132,10 @@ private:
     float mEmbreeTime = 0.0f; ///< the path time whose casters the Embree scene holds
     std::unique_ptr<EmbreeScene> mEmbree;
     std::unique_ptr<ReferenceTracer> mTracer;
+    /// The last references traced (reference()), keyed by a hash of what they depend on; a few cover
+    /// every light of a scene and the stability check's turned light (a frame of 1920x1080 is 8 MiB).
+    static constexpr size_t kReferencesKept = 8;
+    std::vector<std::pair<uint64_t, std::vector<float>>> mReferences;
 };
 
 } // namespace sb

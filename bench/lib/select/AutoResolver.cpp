@@ -9,8 +9,9 @@
 
 namespace sb {
 
-AutoResolution AutoResolver::resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log) {
-    CalibrationOptions options;
+AutoResolution AutoResolver::resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log,
+                                     const CalibrationOptions& timing) {
+    CalibrationOptions options = timing;
     options.cachePath = config.calibrationPath;
     options.seedPath = config.calibrationSeedPath;
     options.refresh = config.recalibrate;

@@ -9,6 +9,7 @@
 #include "bench/lib/output/CsvWriter.h"
 #include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/select/AutoSelection.h"
+#include "bench/lib/select/Calibration.h"
 #include "techniques/PropertySet.h"
 
 namespace sb {
@@ -29,8 +30,10 @@ public:
     /// Calibrates or reads the cache, chooses, prints the candidate table and the choice to `log`.
     /// The candidates are the forms of the harness's API, measured and judged on `harness` itself
     /// (Calibration.h). Throws Error(Unsupported) naming the request and the bound when no candidate
-    /// qualifies.
-    static AutoResolution resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log);
+    /// qualifies. `timing`: the calibration's interleaved rounds and warm-up frames (the cache, seed and
+    /// refresh come from `config`).
+    static AutoResolution resolve(MeasuredHarness& harness, const RunConfig& config, std::ostream& log,
+                                  const CalibrationOptions& timing = {});
 };
 
 } // namespace sb
