@@ -4,8 +4,9 @@
 // on where the checkout is.
 namespace sb::test {
 const char* sourceDir();   ///< the source tree's root
-const char* benchBinary(); ///< the bench executable of this build
+const char* benchBinary(); ///< the bench executable of this build ($SHADOWBENCH_TEST_BENCH when set)
 const char* handshadowBinary(); ///< the hand-written shadow map (bench/handwritten/handshadow/) of this build
+                                ///< ($SHADOWBENCH_TEST_HANDSHADOW when set)
 } // namespace sb::test
 
 #define SB_SOURCE_DIR ::sb::test::sourceDir()
