@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/Error.h"
+#include "core/Strings.h"
 #include "registry/TechniqueRegistry.h"
 
 namespace sb {
@@ -35,11 +36,11 @@ void MemoryBudget::check(const std::vector<TechniqueSpec>& specs, const Resource
         const uint64_t total = plus(plus(sceneBytes, targets), technique.bytes);
         if (total <= limitBytes) continue;
         const std::string how = technique.how.empty() ? "" : " (" + technique.how + ")";
-        throw Error(where + "-t " + spec.toString() + ": estimated memory " + formatGiB(total) +
-                    " GiB (technique " + formatGiB(technique.bytes) + " GiB" + how + ", scene " +
-                    formatGiB(sceneBytes) + " GiB, frame targets " + formatGiB(targets) + " GiB at " +
-                    std::to_string(in.width) + "x" + std::to_string(in.height) + ") exceeds the limit of " +
-                    formatGiB(limitBytes) + " GiB (--max-memory-gib)");
+        throw Error(where + "-t " + spec.toString() + ": estimated memory " + byteSize(total) +
+                    " (technique " + byteSize(technique.bytes) + how + ", scene " + byteSize(sceneBytes) +
+                    ", frame targets " + byteSize(targets) + " at " + std::to_string(in.width) + "x" +
+                    std::to_string(in.height) + ") exceeds the limit of " + byteSize(limitBytes) +
+                    " (--max-memory-gib)");
     }
 }
 

@@ -103,19 +103,6 @@ int tessellationFor(const Context& ctx, const JsonReader& m, const MeshGenerator
     return tess;
 }
 
-/// An estimate or limit for a message: GiB from 1 GiB on ("8.0 GiB"), MiB or bytes below (a small
-/// limit given to a test or a small machine is not "0.0 GiB").
-std::string memoryText(uint64_t bytes) {
-    char text[40];
-    if (bytes >= (1ull << 30))
-        std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(1ull << 30));
-    else if (bytes >= (1ull << 20))
-        std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(1ull << 20));
-    else
-        std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
-    return text;
-}
-
 /// Bytes a mesh of `triangles` triangles costs, where a mesh of `sampleTriangles` took `sampleBytes`:
 /// its buffers (vertices and indices scaled from the sample, which has more seam vertices per triangle
 /// than a finer mesh: an overestimate) plus `uses` instance copies of 3 vertices per triangle.
@@ -144,8 +131,8 @@ void checkTessellationMemory(const Context& ctx, const JsonReader& m, const Mesh
     if (bytes <= double(ctx.options.memoryLimitBytes)) return;
     const std::string what = "tessellation " + std::to_string(tess) + " (about " +
                              std::to_string(uint64_t(triangles)) + " triangles, " + std::to_string(uses) +
-                             " instances): estimated memory " + memoryText(uint64_t(std::min(bytes, 1e19))) +
-                             " exceeds the limit of " + memoryText(ctx.options.memoryLimitBytes) +
+                             " instances): estimated memory " + byteSize(uint64_t(std::min(bytes, 1e19))) +
+                             " exceeds the limit of " + byteSize(ctx.options.memoryLimitBytes) +
                              " (--max-memory-gib)";
     if (ctx.options.tessellation && generator.followsTessellationOptions)
         throw Error("--tess " + std::to_string(*ctx.options.tessellation) + ": mesh " +
@@ -204,9 +191,9 @@ void checkModelMemory(const Context& ctx, const std::string& path) {
     const uint64_t bytes = e->bytes + estimateMemory(ctx.scene, {}, 0, ctx.documentBytes);
     if (bytes <= ctx.options.memoryLimitBytes) return;
     throw Error("model file '" + path + "': " + std::to_string(e->triangles) + " triangles, " +
-                std::to_string(e->corners) + " vertices before welding: estimated memory " +
-                memoryText(bytes) + " to import exceeds the limit of " +
-                memoryText(ctx.options.memoryLimitBytes) + " (--max-memory-gib)");
+                std::to_string(e->corners) + " vertices before welding: estimated memory " + byteSize(bytes) +
+                " to import exceeds the limit of " + byteSize(ctx.options.memoryLimitBytes) +
+                " (--max-memory-gib)");
 }
 
 /// A "file" mesh's objects (scenes/ModelLoader.h), errors located at its "file" key (so they name the
@@ -554,8 +541,8 @@ void checkExplicitInstancesMemory(const Context& ctx, const JsonReader& root) {
     }
     if (root["instances"].value().is_array()) entries = root["instances"].value().size();
     if (bytes <= ctx.options.memoryLimitBytes) return;
-    root["instances"].error(std::to_string(entries) + " instances: estimated memory " + memoryText(bytes) +
-                            " exceeds the limit of " + memoryText(ctx.options.memoryLimitBytes) +
+    root["instances"].error(std::to_string(entries) + " instances: estimated memory " + byteSize(bytes) +
+                            " exceeds the limit of " + byteSize(ctx.options.memoryLimitBytes) +
                             " (--max-memory-gib)");
 }
 
@@ -594,8 +581,8 @@ void checkMemory(const Context& ctx, const JsonReader& where, const JsonReader* 
                  const std::vector<uint32_t>& layoutMeshes, uint32_t count) {
     const uint64_t bytes = estimateMemory(ctx.scene, layoutMeshes, count, ctx.documentBytes);
     if (bytes <= ctx.options.memoryLimitBytes) return;
-    const std::string what = "estimated memory " + memoryText(bytes) + " exceeds the limit of " +
-                             memoryText(ctx.options.memoryLimitBytes);
+    const std::string what = "estimated memory " + byteSize(bytes) + " exceeds the limit of " +
+                             byteSize(ctx.options.memoryLimitBytes);
     if (!layout) where.error(what);
     if (ctx.options.instances) throw Error("--instances " + std::to_string(count) + ": " + what);
     (*layout)["count"].error(std::to_string(count) + " instances: " + what);
@@ -1085,8 +1072,8 @@ uint64_t checkDocumentMemory(const std::string& text, const std::string& source,
     const uint64_t bytes = document + cost.instances * kMinInstanceBytes;
     if (bytes <= options.memoryLimitBytes) return document;
     throw Error(source + ": " + std::to_string(cost.values) + " JSON values, " +
-                std::to_string(cost.instances) + " instances: estimated memory " + memoryText(bytes) +
-                " to read them exceeds the limit of " + memoryText(options.memoryLimitBytes) +
+                std::to_string(cost.instances) + " instances: estimated memory " + byteSize(bytes) +
+                " to read them exceeds the limit of " + byteSize(options.memoryLimitBytes) +
                 " (--max-memory-gib)");
 }
 
@@ -1096,7 +1083,7 @@ std::string readSceneText(const std::string& path, const SceneOptions& options) 
     const uintmax_t size = fs::file_size(path, ec);
     if (!ec && size > options.memoryLimitBytes)
         throw Error("scene file '" + path + "': " + std::to_string(size) +
-                    " bytes exceed the memory limit of " + memoryText(options.memoryLimitBytes) +
+                    " bytes exceed the memory limit of " + byteSize(options.memoryLimitBytes) +
                     " (--max-memory-gib)");
     return Paths::readTextFile(path);
 }
@@ -1142,7 +1129,7 @@ Scene SceneLoader::load(const std::string& nameOrPath, const SceneOptions& optio
 }
 
 uint64_t SceneLoader::estimateBytes(const Scene& scene) {
-    return estimateMemory(scene, {}, 0);
+    return estimateMemory(scene, {}, 0, 0); // the document is gone once the scene is built
 }
 
 std::vector<std::string> SceneLoader::listBuiltinScenes() {

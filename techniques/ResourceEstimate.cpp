@@ -1,7 +1,6 @@
 #include "techniques/ResourceEstimate.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace sb {
 
@@ -28,12 +27,6 @@ ResourceEstimate squareMaps(int64_t resolution, uint64_t bytesPerTexel, uint64_t
     how += " x " + std::to_string(lights) + (lights == 1 ? " light" : " lights");
     if (extraPerTexel) how += " + " + std::to_string(extraPerTexel) + " B";
     return {times(texels, perTexel), how + ")"};
-}
-
-std::string formatGiB(uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f", double(bytes) / double(1ull << 30));
-    return text;
 }
 
 } // namespace sb

@@ -38,7 +38,4 @@ using ResourceDeclaration = std::function<ResourceEstimate(const PropertySet&, c
 ResourceEstimate squareMaps(int64_t resolution, uint64_t bytesPerTexel, uint64_t layers,
                             const ResourceInputs& in, uint64_t extraPerTexel = 0);
 
-/// `bytes` in GiB with two decimals ("16.00"), for the refusal's line.
-std::string formatGiB(uint64_t bytes);
-
 } // namespace sb

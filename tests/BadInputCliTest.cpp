@@ -300,10 +300,10 @@ std::vector<BadInput> table() {
         // x 4 B are 1 GiB, each over the limit given.
         {"proxy grid past memory",
          "-t proxy:capacity=4096:cells=1024 --max-memory-gib 1",
-         {"-t proxy:capacity=4096:cells=1024", "32.00 GiB", "--max-memory-gib"}},
+         {"-t proxy:capacity=4096:cells=1024", "32.0 GiB", "--max-memory-gib"}},
         {"shadow maps past memory",
          "--scene sphere_plane -t cascaded:resolution=8192:cascades=4 --max-memory-gib 0.5",
-         {"-t cascaded:resolution=8192:cascades=4", "1.00 GiB", "--max-memory-gib"}},
+         {"-t cascaded:resolution=8192:cascades=4", "1.0 GiB", "--max-memory-gib"}},
         {"sweep technique past memory",
          "sweep -t proxy:cells=1024:capacity=4096 --max-memory-gib 1",
          {"sweep: combination", "-t proxy:cells=1024:capacity=4096", "--max-memory-gib"}},
