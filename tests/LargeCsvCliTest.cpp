@@ -1,0 +1,127 @@
+// Result files far larger than a run's rows (docs/ARCHITECTURE.md, "Results"): export, compare and an
+// append hold one row at a time, so their peak memory stays near the command's own and does not grow
+// with the file. The file is made here: one real row of `bench -t none`, repeated, so every column is
+// the bench's own. Peaks are measured (test::runCommandPeak), each bound stated with its reason.
+#include <string>
+#include <sys/stat.h>
+
+#include <gtest/gtest.h>
+
+#include "HostileSupport.h"
+#include "TestPaths.h"
+#include "TestSupport.h"
+
+namespace {
+
+constexpr size_t kTargetBytes = size_t(48)
+                                << 20; // large enough that holding it shows, small enough to be quick
+constexpr long kKiBPerMiB = 1024;
+
+class LargeCsvCliTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        sDir = sb::test::freshTestDir("largecsv");
+        const auto seed = sb::test::runCommand(
+            "cd " + sDir + " && " + SB_BENCH_BINARY +
+            " -t none --size 64x64 --frames 1 --warmup 0 --no-timer-check --csv seed.csv >/dev/null 2>&1");
+        ASSERT_EQ(seed.exitCode, 0) << seed.output;
+        const std::string text = sb::test::readFile(sDir + "/seed.csv");
+        const size_t headerEnd = text.find('\n') + 1;
+        const std::string header = text.substr(0, headerEnd), row = text.substr(headerEnd);
+        ASSERT_EQ(std::count(row.begin(), row.end(), '\n'), 1) << "one row of one line expected";
+        std::string big = header;
+        big.reserve(kTargetBytes + row.size());
+        sRows = 0;
+        while (big.size() < kTargetBytes) {
+            big += row;
+            ++sRows;
+        }
+        sb::test::writeFile(sDir + "/big.csv", big);
+        sBytes = big.size();
+    }
+
+    /// The peak of a small export (the seed's one row): what the command needs whatever the file.
+    static long baselineKiB(const std::string& args) {
+        return sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY + " " + args).peakRssKiB;
+    }
+
+    static long fileMiB() { return long(sBytes >> 20); }
+
+    static inline std::string sDir;
+    static inline size_t sRows = 0;
+    static inline size_t sBytes = 0;
+};
+
+// Streaming keeps one row and one output block (1 MiB): the peak is the small file's peak plus 16 MiB
+// of slack for allocator and page-cache noise, far below the file's size (48 MiB; the old export held
+// the table and the whole JSON document, 16 times the file).
+TEST_F(LargeCsvCliTest, JsonExportStreams) {
+    const long base = baselineKiB("export seed.csv --format json -o seed.json");
+    const auto r = sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY +
+                                            " export big.csv --format json -o big.json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_LT(r.peakRssKiB, base + 16 * kKiBPerMiB)
+        << "small file: " << base << " KiB; file " << fileMiB() << " MiB";
+    const std::string json = sb::test::readFile(sDir + "/big.json");
+    // Every row is there: one "status" key per row, and the document closes.
+    size_t rows = 0;
+    for (size_t at = json.find("\"status\": "); at != std::string::npos;
+         at = json.find("\"status\": ", at + 1))
+        ++rows;
+    EXPECT_EQ(rows, sRows);
+    EXPECT_EQ(json.substr(json.size() - 7), "\n  ]\n}\n");
+}
+
+TEST_F(LargeCsvCliTest, GoogleBenchmarkExportStreams) {
+    const long base = baselineKiB("export seed.csv --format gbench -o seed.gbench.json");
+    const auto r = sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY +
+                                            " export big.csv --format gbench -o big.gbench.json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_LT(r.peakRssKiB, base + 16 * kKiBPerMiB)
+        << "small file: " << base << " KiB; file " << fileMiB() << " MiB";
+    const std::string json = sb::test::readFile(sDir + "/big.gbench.json");
+    size_t benchmarks = 0;
+    for (size_t at = json.find("\"run_type\""); at != std::string::npos;
+         at = json.find("\"run_type\"", at + 1))
+        ++benchmarks;
+    EXPECT_EQ(benchmarks, sRows);
+}
+
+// compare keeps only the columns the gate reads (a few dozen of the row's ~150, short ones), so its
+// table is a fraction of the file: bound the small file's peak plus a quarter of the file (the old
+// code held every column twice over, 10 times the file).
+TEST_F(LargeCsvCliTest, CompareKeepsOnlyTheColumnsItNeeds) {
+    const long base = baselineKiB("compare seed.csv seed.csv");
+    const auto r =
+        sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY + " compare big.csv big.csv");
+    EXPECT_NE(r.output.find("(" + std::to_string(sRows) + " rows)"), std::string::npos) << r.output;
+    EXPECT_LT(r.peakRssKiB, base + long(sBytes / 4 / 1024))
+        << "small file: " << base << " KiB; file " << fileMiB() << " MiB";
+}
+
+// Appending a row whose columns are the file's header writes only that row: the same inode (no
+// rename), the earlier bytes unchanged, and the peak that of a run on a small file plus 16 MiB
+// (the old append read, parsed and rewrote the whole file: 6 times its size).
+TEST_F(LargeCsvCliTest, AppendingOneRowDoesNotRewriteTheFile) {
+    const std::string quick = " -t none --size 64x64 --frames 1 --warmup 0 --no-timer-check --csv ";
+    const long base = baselineKiB(quick + "seed.csv");
+    const std::string path = sDir + "/append.csv";
+    const std::string before = sb::test::readFile(sDir + "/big.csv");
+    sb::test::writeFile(path, before);
+    struct stat st {};
+    ASSERT_EQ(::stat(path.c_str(), &st), 0);
+    const ino_t inode = st.st_ino;
+    const auto r =
+        sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY + quick + "append.csv");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_LT(r.peakRssKiB, base + 16 * kKiBPerMiB)
+        << "small file: " << base << " KiB; file " << fileMiB() << " MiB";
+    ASSERT_EQ(::stat(path.c_str(), &st), 0);
+    EXPECT_EQ(st.st_ino, inode) << "the file was replaced, not appended to";
+    const std::string after = sb::test::readFile(path);
+    ASSERT_GT(after.size(), before.size());
+    EXPECT_TRUE(after.compare(0, before.size(), before) == 0) << "earlier bytes changed";
+    EXPECT_EQ(std::count(after.begin() + long(before.size()), after.end(), '\n'), 1);
+}
+
+} // namespace
