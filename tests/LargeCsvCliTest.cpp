@@ -20,7 +20,7 @@ constexpr long kKiBPerMiB = 1024;
 class LargeCsvCliTest : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        sDir = sb::test::freshTestDir("largecsv");
+        sDir = sb::test::freshDir("largecsv"); // once per suite: no current test to name it by
         const auto seed = sb::test::runCommand(
             "cd " + sDir + " && " + SB_BENCH_BINARY +
             " -t none --size 64x64 --frames 1 --warmup 0 --no-timer-check --csv seed.csv >/dev/null 2>&1");
@@ -87,21 +87,24 @@ TEST_F(LargeCsvCliTest, GoogleBenchmarkExportStreams) {
     EXPECT_EQ(benchmarks, sRows);
 }
 
-// compare keeps only the columns the gate reads (a few dozen of the row's ~150, short ones), so its
-// table is a fraction of the file: bound the small file's peak plus a quarter of the file (the old
-// code held every column twice over, 10 times the file).
+// compare keeps only the columns the gate reads, but still every row of them (bench/lib/gate/WorkGate.h
+// compares tables): measured 190 MiB over the small file's peak for this 48 MiB file, where the old
+// code, holding every column, took 480 MiB over it. Bound: five times the file over the small file's
+// peak, which the old code exceeds twice over.
 TEST_F(LargeCsvCliTest, CompareKeepsOnlyTheColumnsItNeeds) {
     const long base = baselineKiB("compare seed.csv seed.csv");
     const auto r =
         sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY + " compare big.csv big.csv");
     EXPECT_NE(r.output.find("(" + std::to_string(sRows) + " rows)"), std::string::npos) << r.output;
-    EXPECT_LT(r.peakRssKiB, base + long(sBytes / 4 / 1024))
+    EXPECT_LT(r.peakRssKiB, base + long(5 * sBytes / 1024))
         << "small file: " << base << " KiB; file " << fileMiB() << " MiB";
 }
 
 // Appending a row whose columns are the file's header writes only that row: the same inode (no
-// rename), the earlier bytes unchanged, and the peak that of a run on a small file plus 16 MiB
-// (the old append read, parsed and rewrote the whole file: 6 times its size).
+// rename), the earlier bytes unchanged, and the peak that of the same run on a small file plus 128 MiB
+// (llvmpipe's peak varies between runs, by up to 80 MiB measured under the load of a test run; the old
+// append read, parsed and rewrote the whole file: 290 MiB over the small file's peak for this 48 MiB
+// file). The inode and the unchanged bytes are the exact proof; the peak shows nothing else grows.
 TEST_F(LargeCsvCliTest, AppendingOneRowDoesNotRewriteTheFile) {
     const std::string quick = " -t none --size 64x64 --frames 1 --warmup 0 --no-timer-check --csv ";
     const long base = baselineKiB(quick + "seed.csv");
@@ -114,7 +117,7 @@ TEST_F(LargeCsvCliTest, AppendingOneRowDoesNotRewriteTheFile) {
     const auto r =
         sb::test::runCommandPeak("cd " + sDir + " && exec " + SB_BENCH_BINARY + quick + "append.csv");
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_LT(r.peakRssKiB, base + 16 * kKiBPerMiB)
+    EXPECT_LT(r.peakRssKiB, base + 128 * kKiBPerMiB)
         << "small file: " << base << " KiB; file " << fileMiB() << " MiB";
     ASSERT_EQ(::stat(path.c_str(), &st), 0);
     EXPECT_EQ(st.st_ino, inode) << "the file was replaced, not appended to";
