@@ -2,6 +2,8 @@
 // append hold one row at a time, so their peak memory stays near the command's own and does not grow
 // with the file. The file is made here: one real row of `bench -t none`, repeated, so every column is
 // the bench's own. Peaks are measured (test::runCommandPeak), each bound stated with its reason.
+#include <algorithm>
+#include <filesystem>
 #include <string>
 #include <sys/stat.h>
 
@@ -125,6 +127,36 @@ TEST_F(LargeCsvCliTest, AppendingOneRowDoesNotRewriteTheFile) {
     ASSERT_GT(after.size(), before.size());
     EXPECT_TRUE(after.compare(0, before.size(), before) == 0) << "earlier bytes changed";
     EXPECT_EQ(std::count(after.begin() + long(before.size()), after.end(), '\n'), 1);
+}
+
+} // namespace
+
+namespace {
+
+// The in-place path on a full disk does what the rewrite does there: exit 1, one line naming the path
+// and the OS reason, the earlier rows byte-identical (a short write is cut back), no file left beside.
+TEST_F(LargeCsvCliTest, InPlaceAppendOnAFullDiskKeepsTheFile) {
+    // The file is padded (in its empty `device` cell) to whole 4 KiB pages: a full tmpfs still takes
+    // bytes into a file's last, partly used page, so only a file ending on a page boundary is refused.
+    std::string seed = sb::test::readFile(sDir + "/seed.csv");
+    const size_t cell = seed.find(",egl-surfaceless,,");
+    ASSERT_NE(cell, std::string::npos) << seed;
+    seed.insert(cell + 17, (4096 - seed.size() % 4096) % 4096, 'x');
+    ASSERT_EQ(seed.size() % 4096, 0u);
+    sb::test::FullDisk disk(sDir + "/full");
+    disk.plant("pre.csv", seed);
+    const auto r =
+        sb::test::runCommand(disk.wrap("(" + std::string(SB_BENCH_BINARY) +
+                                       " -t none --size 64x64 --frames 1 --warmup 0 --no-timer-check --csv " +
+                                       disk.dir() + "/pre.csv >/dev/null)"));
+    EXPECT_EQ(r.exitCode, 1) << disk.how() << ": " << r.output;
+    EXPECT_NE(
+        r.output.find("bench: error: cannot write CSV '" + disk.dir() + "/pre.csv': cannot append to it"),
+        std::string::npos)
+        << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_EQ(sb::test::readFile(disk.dir() + "/pre.csv"), seed);
+    EXPECT_FALSE(std::filesystem::exists(disk.dir() + "/pre.csv.tmp"));
 }
 
 } // namespace
