@@ -226,13 +226,6 @@ std::vector<BadInput> table() {
          file("latin.csv", "status,scene,frames,wall_ms_median\nok,caf\xE9,3,1.5\n"),
          false,
          true},
-        {"result CSV with a partial last line",
-         "export {dir}/cut.csv --format json",
-         {"cut.csv:3", "does not end in a newline"},
-         2,
-         file("cut.csv", "status,frames,wall_ms_median\nok,3,1.5\nok,3,1."),
-         false,
-         true},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

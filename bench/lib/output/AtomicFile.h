@@ -19,7 +19,8 @@
 // ("<file>.tmp.<pid>") left by processes that are gone are removed by the next writer.
 // A crash during a replacement leaves either the old or the new file, never a truncated one. A crash
 // during an in-place append can leave a partial last line after the complete old content: the next
-// writer under the lock cuts it (cutPartialLastLine), and readers refuse it naming the file.
+// writer under the lock cuts it (cutPartialLastLine), and readers skip it with a warning naming the
+// file (bench/lib/output/CsvReader.h).
 #include <string>
 #include <string_view>
 #include <sys/types.h>
@@ -63,7 +64,7 @@ public:
     void appendInPlace(const std::string& text);
     /// When the file does not end in a newline (a writer killed during appendInPlace), cuts it back to
     /// its last newline and returns the bytes cut (0 when it ends in one or is empty). A file with no
-    /// newline at all is left alone (the reader then refuses it naming the file).
+    /// newline at all is left alone (the reader then skips it with a warning).
     off_t cutPartialLastLine();
 
     /// The up-front check before minutes of measuring: `path` is not empty, names a regular file or

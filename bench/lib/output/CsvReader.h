@@ -8,9 +8,10 @@
 // never stands for data); a leading UTF-8 byte-order mark is skipped. Line numbers count physical lines,
 // so an error points at the line an editor shows.
 //
-// A file (not a text in memory) must end in a newline: the writer always ends one, and a writer killed
-// half-way through an in-place append leaves a partial last line, which is refused naming the file and
-// the line rather than read as a row (the next append cuts it: CsvWriter::appendRows).
+// A file (not a text in memory) ends in a newline: the writer always ends one, and a writer killed
+// half-way through an in-place append leaves a partial last line. That line is not a row: it is skipped
+// with one warning on stderr naming the file and line (so a sweep's --resume measures it again), and the
+// next append cuts it (CsvWriter::appendRows).
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -59,6 +60,7 @@ private:
     void plainField(std::string& field);
     void quotedField(std::string& field);
     void grow(size_t bytes);
+    bool readRecord(std::vector<std::string>& record);
 
     std::string mSource;
     int mFd = -1;

@@ -4,7 +4,7 @@
 // (bench/lib/output/AtomicFile.h) only the header is read. When every new row's columns are in it and no
 // cell holds a line break, the rows are appended in place (one write at the end, fsync; cells of the
 // header's other columns empty): a crash then leaves the old rows whole plus at most a partial last line,
-// which the next append cuts and readers refuse (bench/lib/output/CsvReader.h). Rows with new columns
+// which the next append cuts and readers skip with a warning (bench/lib/output/CsvReader.h). Rows with new columns
 // widen the header (the union of old and new columns, in first-seen order; cells of missing columns stay
 // empty) and the file is rewritten, streamed row by row, through a temp file, fsync and rename: a crash
 // then leaves either the old or the new file. Two processes appending to one file both keep their rows.
