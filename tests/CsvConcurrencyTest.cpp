@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <string>
 #include <sys/stat.h>
@@ -148,6 +149,50 @@ TEST_F(CsvConcurrencyTest, KilledWritersNeverPileUpTempFiles) {
     const CsvTable table = CsvWriter::read(mPath);
     EXPECT_EQ(table.rows.front().front(), "seed");
     EXPECT_EQ(table.rows.back().front(), "last");
+}
+
+TEST_F(CsvConcurrencyTest, KilledInPlaceAppendsLoseNoRowAndKeepNoPartialRow) {
+    // Rows of 1 MiB fit the header, so each is appended in place with one long write, which SIGKILL can
+    // end half-way (a fatal signal stops a large write to a regular file early). After each kill the
+    // next append must cut what was left, keep every complete row and add its own; the file then reads
+    // back with every row whole. Whether a kill landed inside a write is timing; the count is printed.
+    const std::string big(size_t(1) << 20, 'x');
+    CsvWriter::appendRows(mPath, {{{"a", "seed"}, {"b", "0"}}});
+    int partial = 0;
+    for (int k = 0; k < 6; ++k) {
+        int ready[2];
+        ASSERT_EQ(::pipe(ready), 0) << std::strerror(errno);
+        pid_t pid = ::fork();
+        if (pid == 0) {
+            ::close(ready[0]);
+            for (int i = 0;; ++i) {
+                CsvWriter::appendRows(mPath,
+                                      {{{"a", std::to_string(k) + "-" + std::to_string(i)}, {"b", big}}});
+                if (i == 0 && (::write(ready[1], "x", 1) != 1 || ::close(ready[1]) != 0)) ::_exit(1);
+            }
+        }
+        ::close(ready[1]);
+        char byte = 0;
+        const bool started = ::read(ready[0], &byte, 1) == 1;
+        ::close(ready[0]);
+        if (started) ::usleep(useconds_t(2000 + 3000 * k));
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+        ASSERT_TRUE(started) << "writer " << k << " never completed an append";
+        const std::string text = test::readFile(mPath);
+        partial += !text.empty() && text.back() != '\n';
+        CsvWriter::appendRows(mPath, {{{"a", "after" + std::to_string(k)}, {"b", "1"}}});
+        const CsvTable table = CsvWriter::read(mPath); // no partial row: it parses
+        ASSERT_GE(table.rows.size(), 3u);
+        EXPECT_EQ(table.rows.front()[0], "seed");
+        EXPECT_EQ(table.rows.back()[0], "after" + std::to_string(k));
+        for (const auto& row : table.rows)
+            EXPECT_TRUE(row[1] == "0" || row[1] == "1" || row[1] == big) << row[0] << ": " << row[1].size();
+        size_t afters = 0;
+        for (const auto& row : table.rows) afters += row[0].rfind("after", 0) == 0;
+        EXPECT_EQ(afters, size_t(k + 1)); // every earlier "after" row survived the later kills
+    }
+    std::cout << "kills that left a partial last line: " << partial << " of 6\n";
 }
 
 TEST_F(CsvConcurrencyTest, SymbolicLinkIsFollowedAndKept) {

@@ -124,7 +124,8 @@ TEST_F(CsvMergeTest, AllowIncompleteWritesWhatIsThereAndReportsTheGaps) {
     options.allowIncomplete = true;
     MergeReport report = CsvMerge::merge({path("a.csv")}, path("out.csv"), options);
     EXPECT_EQ(readFile(path("out.csv")), std::string(kHeader) + "s1,5,0,1/3,ok\ns1,5,2,1/3,ok\n");
-    EXPECT_EQ(report.missing, (std::vector<size_t>{1, 3, 4}));
+    EXPECT_EQ(report.missingCount, 3u);
+    EXPECT_EQ(report.missing, (std::vector<std::pair<size_t, size_t>>{{1, 1}, {3, 4}}));
     EXPECT_EQ(report.rows, 2u);
     EXPECT_EQ(report.configs, 5u);
     EXPECT_EQ(report.failedRows, 0u);
@@ -365,13 +366,32 @@ const std::vector<BadMerge> kBadMerges = {
      {{"a.csv", rows("s1,6,0,1/2,ok\ns1,6,2,1/2,ok\n")}, {"b.csv", rows("s1,6,3,2/2,ok\n")}},
      {"a.csv", "b.csv"},
      "out.csv",
-     {"incomplete: 3 of 6 configurations missing (indices 1, 4, 5); rerun the shards that wrote them, or "
+     {"incomplete: 3 of 6 configurations missing (indices 1, 4-5); rerun the shards that wrote them, or "
       "pass --allow-incomplete"}},
-    {"IncompleteListsAtMostTenIndices",
+    {"IncompleteListsRanges",
      {{"a.csv", rows("s1,20,0,1/1,ok\n")}},
      {"a.csv"},
      "out.csv",
-     {"incomplete: 19 of 20 configurations missing (indices 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, ...); rerun"}},
+     {"incomplete: 19 of 20 configurations missing (indices 1-19); rerun"}},
+    {"IncompleteListsAtMostTenRanges",
+     {{"a.csv",
+       rows("s1,30,0,1/1,ok\ns1,30,2,1/1,ok\ns1,30,4,1/1,ok\ns1,30,6,1/1,ok\ns1,30,8,1/1,ok\ns1,30,10,1/1,"
+            "ok\ns1,30,12,1/1,ok\ns1,30,14,1/1,ok\ns1,30,16,1/1,ok\ns1,30,18,1/1,ok\ns1,30,20,1/1,ok\n")}},
+     {"a.csv"},
+     "out.csv",
+     {"incomplete: 19 of 30 configurations missing (indices 1, 3, 5, 7, 9, 11, 13, 15, 17, 19, ...); rerun"}},
+    // A damaged cell claiming a billion configurations: one line with the gaps as ranges, not a list
+    // of a billion indices (which took past 4 GiB).
+    {"IncompleteOfABillionIsOneRange",
+     {{"a.csv", rows("s1,1000000000,0,1/2,ok\n")}, {"b.csv", rows("s1,1000000000,1,2/2,ok\n")}},
+     {"a.csv", "b.csv"},
+     "out.csv",
+     {"incomplete: 999999998 of 1000000000 configurations missing (indices 2-999999999); rerun"}},
+    {"SweepConfigsBeyondAnySweep",
+     {{"a.csv", rows("s1,1000000000001,0,1/1,ok\n")}},
+     {"a.csv"},
+     "out.csv",
+     {"{dir}/a.csv:2: sweep_configs '1000000000001' is more than 1000000000000 configurations"}},
 };
 
 class CsvMergeRefusalTest : public MergeFixture, public ::testing::TestWithParam<BadMerge> {

@@ -171,3 +171,32 @@ TEST(DashboardExportTest, ReachableThroughTheRowFormatsAndRefusesTablesWithoutTi
         EXPECT_NE(std::string(e.what()).find("wall_ms_median"), std::string::npos);
     }
 }
+
+TEST(DashboardExportTest, SubnormalTimeIsASmallNumberAndBadCellsNameRowAndColumn) {
+    // A subnormal wall time is a valid number (it failed with the bare message "stod"); the JSON holds
+    // the same double, compared exactly: both sides parse the same decimal text.
+    const CsvTable tiny{{"status", "frames", "wall_ms_median"}, {{"ok", "3", "4.9e-320"}}};
+    const json doc = json::parse(DashboardExport::googleBenchmark(tiny));
+    EXPECT_EQ(doc["benchmarks"][0]["real_time"].get<double>(), 4.9e-320);
+    EXPECT_EQ(doc["benchmarks"][0]["iterations"].get<long long>(), 3);
+    // Counts that would be written wrong (-3 kept, 1e30 wrapped to -9223372036854775808) and text
+    // that is not UTF-8 are refused, naming the row's line and the column.
+    const std::vector<std::pair<CsvTable, std::string>> bad = {
+        {{{"status", "frames", "wall_ms_median"}, {{"ok", "-3", "1.5"}}}, "(rows):2: column 'frames'"},
+        {{{"status", "frames", "wall_ms_median"}, {{"ok", "1", "1.5"}, {"ok", "1e30", "1.5"}}},
+         "(rows):3: column 'frames'"},
+        {{{"status", "frames", "wall_ms_median", "load_vertices"}, {{"ok", "1", "1.5", "-2"}}},
+         "(rows):2: column 'load_vertices'"},
+        {{{"status", "scene", "frames", "wall_ms_median"}, {{"ok", "caf\xE9", "1", "1.5"}}},
+         "(rows):2: column 'scene': invalid UTF-8"},
+    };
+    for (const auto& [table, where] : bad) {
+        try {
+            DashboardExport::googleBenchmark(table);
+            ADD_FAILURE() << where << ": accepted";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.code(), ExitCode::BadInput);
+            EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+        }
+    }
+}

@@ -112,7 +112,11 @@ int CompareCommand::main(int argc, char** argv) {
     WallLayer::checkThresholds(alpha, floor);
     for (const std::string& p : {basePath, headPath})
         if (!std::filesystem::exists(p)) throw Error("bench compare: " + p + ": no such file");
-    const CsvTable base = CsvWriter::read(basePath), head = CsvWriter::read(headPath);
+    // Only the columns the gate reads are kept: a million-row file of a hundred columns shrinks to them.
+    const auto needed = [](const std::string& column) {
+        return WorkGate::readsColumn(column) || column == col::kWallMsMedian;
+    };
+    const CsvTable base = CsvWriter::read(basePath, needed), head = CsvWriter::read(headPath, needed);
     if (!jsonPath.empty()) CsvWriter::checkWritable(jsonPath);
 
     GateReport report;

@@ -3,12 +3,25 @@
 #include <iostream>
 
 #include "bench/lib/options/CliParse.h"
-#include "bench/lib/output/CsvWriter.h"
+#include "bench/lib/output/AtomicFile.h"
+#include "bench/lib/output/CsvSource.h"
 #include "bench/lib/output/RowExport.h"
 #include "bench/lib/output/StandardStreams.h"
 #include "core/Error.h"
 
 namespace sb {
+
+namespace {
+
+// Markdown needs every row for its column widths; the other formats are streamed.
+void writeRows(const CsvSource& source, RowFormat format, bool allColumns, const TextSink& sink) {
+    if (format != RowFormat::Markdown) return RowExport::write(source, format, sink);
+    CsvTable table{source.header(), {}};
+    source.forEachRow([&](const std::vector<std::string>& row, size_t) { table.rows.push_back(row); });
+    sink(RowExport::toMarkdown(table, allColumns));
+}
+
+} // namespace
 
 int ExportCommand::main(int argc, char** argv) {
     CLI::App app{"bench export: a result CSV as JSON, Markdown, CSV or a dashboard's JSON", "bench export"};
@@ -29,14 +42,17 @@ int ExportCommand::main(int argc, char** argv) {
     if (!rowFormats().find(f)->text)
         throw Error("--format " + format + ": export writes " + rowFormatChoices(true));
     if (output.empty()) StandardStreams::requireStdout("bench export");
-    const CsvTable table = CsvWriter::read(input);
-    const std::string text =
-        f == RowFormat::Markdown ? RowExport::toMarkdown(table, allColumns) : RowExport::format(table, f);
+    const CsvSource source = CsvSource::file(input);
     if (output.empty()) {
-        std::cout << text;
+        writeRows(source, f, allColumns, [](std::string_view text) { std::cout << text; });
         StandardStreams::finishStdout("bench export");
-    } else
-        CsvWriter::writeText(output, text);
+        return 0;
+    }
+    // Row by row into the temp file; a refusal half-way removes it and leaves the old output alone.
+    AtomicFile file(output, "file");
+    file.beginReplace();
+    writeRows(source, f, allColumns, [&](std::string_view text) { file.write(text); });
+    file.commit();
     return 0;
 }
 

@@ -31,7 +31,7 @@ drivers); rows come out sorted by config_index.)");
     std::cout << "merged " << r.files << " files of sweep " << r.sweepId << ": " << r.rows << " rows of "
               << r.configs << " configurations";
     if (r.failedRows) std::cout << " (" << r.failedRows << " failed)";
-    if (!r.missing.empty()) std::cout << ", " << r.missing.size() << " missing";
+    if (r.missingCount) std::cout << ", " << r.missingCount << " missing";
     std::cout << " -> " << output << "\n";
     if (r.timerVerdicts.size() > 1) {
         std::cout << "warning: rows carry different GPU-timer verdicts:";

@@ -270,6 +270,14 @@ std::string WorkGate::driverOf(const CsvTable& table, const std::vector<std::str
     return first;
 }
 
+bool WorkGate::readsColumn(const std::string& column) {
+    static const std::set<std::string> kRead = {col::kStatus,   col::kError,         col::kCiConfig,
+                                                col::kRenderer, col::kDriverVersion, col::kGlVersion,
+                                                col::kGlVendor};
+    return isWorkColumn(column) || kRead.count(column) ||
+           std::find(kKeyColumns.begin(), kKeyColumns.end(), column) != kKeyColumns.end();
+}
+
 WorkComparison WorkGate::compare(const CsvTable& base, const CsvTable& head) {
     const bool byName = base.hasColumn(col::kCiConfig) && head.hasColumn(col::kCiConfig);
     const Side b = collect(base, "base", byName), h = collect(head, "head", byName);

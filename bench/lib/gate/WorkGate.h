@@ -78,6 +78,9 @@ class WorkGate {
 public:
     /// True for the exact-work columns (WorkColumns::isWork).
     static bool isWorkColumn(const std::string& column) { return WorkColumns::isWork(column); }
+    /// True for every column compare() reads (work columns, status, error, the key and driver columns,
+    /// ci_config, renderer): a caller may drop the others before comparing.
+    static bool readsColumn(const std::string& column);
     /// The key a row is matched by (see the header comment).
     static std::string configKey(const CsvTable& table, const std::vector<std::string>& row);
     /// The driver a row ran on (see the header comment), "" when the row does not say.

@@ -20,6 +20,9 @@ constexpr mode_t kNewFileMode = 0666; // the umask decides, as for any file the 
 // A writer that keeps losing the race to writers renaming new files over the path gives up eventually
 // rather than spin; each lost round means another writer committed, so this is never reached in practice.
 constexpr int kMaxLockRounds = 1000;
+// Streamed replacements reach the temp file in blocks of this size: large enough that the system calls
+// do not count, small enough that a million-row export holds one block.
+constexpr size_t kTempBufferBytes = size_t(1) << 20;
 
 std::string directoryOf(const std::string& path) {
     size_t slash = path.rfind('/');
@@ -93,6 +96,10 @@ AtomicFile::AtomicFile(const std::string& path, std::string noun)
 }
 
 AtomicFile::~AtomicFile() {
+    if (mTempFd >= 0) { // a replacement that failed or was abandoned half-way
+        ::close(mTempFd);
+        ::unlink(tempPathFor(mResolved).c_str());
+    }
     if (mFd < 0) return;
     struct stat st {};
     // Only a file still empty and still ours is removed: another writer may have committed rows to the
@@ -153,10 +160,14 @@ void AtomicFile::lock() {
     fail("could not lock it: other writers kept replacing it", 0);
 }
 
-// Only the lock holder writes "<file>.tmp"; the older per-process names are removed once their
-// process is gone (kill(pid, 0) fails with ESRCH), so a live writer of an older version is left alone.
+// Only the lock holder writes "<file>.tmp", so it is removed at once; the older per-process names are removed
+// once their process is gone (kill(pid, 0) fails with ESRCH), so a live writer of an older version is left
+// alone.
 void AtomicFile::removeStaleTemps() const {
     const std::string dir = directoryOf(mResolved), base = baseNameOf(mResolved);
+    // The one temp name is written only under the lock, which this object holds: a file of that name
+    // is a killed writer's leftover (an in-place append would otherwise never reuse and remove it).
+    ::unlink(tempPathFor(mResolved).c_str());
     DIR* d = ::opendir(dir.c_str());
     if (!d) return; // best effort: the write itself reports a directory it cannot use
     while (const dirent* e = ::readdir(d)) {
@@ -180,24 +191,55 @@ std::string AtomicFile::read() const {
     }
 }
 
-// Step 3. Raw write() has no user-space buffer, so fsync() alone is the "flush + fsync" step. The
-// directory fsync makes the rename itself survive a power cut; it is best effort (some file systems
-// refuse fsync on directories) because the data is safe either way.
+// Step 3. Raw write() has no user-space buffer beyond mTempBuffer, so fsync() after the last write is
+// the "flush + fsync" step. The directory fsync makes the rename itself survive a power cut; it is best
+// effort (some file systems refuse fsync on directories) because the data is safe either way.
 void AtomicFile::replace(const std::string& text) {
+    beginReplace();
+    write(text);
+    commit();
+}
+
+void AtomicFile::beginReplace() {
     const std::string tmp = tempPathFor(mResolved);
-    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, kNewFileMode);
-    if (fd < 0) fail("cannot create temporary file '" + tmp + "'", errno);
+    mTempFd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, kNewFileMode);
+    if (mTempFd < 0) fail("cannot create temporary file '" + tmp + "'", errno);
     // Replacing the file must not change who may read it (best effort: a foreign-owned file may refuse).
-    (void)::fchmod(fd, mMode);
-    int err = 0;
-    if (!writeAll(fd, text) || ::fsync(fd) != 0) err = errno;
-    if (::close(fd) != 0 && !err) err = errno;
-    if (err) {
-        ::unlink(tmp.c_str());
-        fail("cannot write temporary file '" + tmp + "'", err);
+    (void)::fchmod(mTempFd, mMode);
+}
+
+void AtomicFile::failTemp(const std::string& what, int err) {
+    const std::string tmp = tempPathFor(mResolved);
+    if (mTempFd >= 0) ::close(mTempFd);
+    mTempFd = -1;
+    ::unlink(tmp.c_str());
+    fail(what + " '" + tmp + "'", err);
+}
+
+void AtomicFile::flushTemp() {
+    if (!writeAll(mTempFd, mTempBuffer)) failTemp("cannot write temporary file", errno);
+    mTempBuffer.clear();
+}
+
+void AtomicFile::write(std::string_view text) {
+    mTempBuffer.append(text);
+    if (mTempBuffer.size() >= kTempBufferBytes) flushTemp();
+}
+
+void AtomicFile::commit() {
+    flushTemp();
+    if (::fsync(mTempFd) != 0) failTemp("cannot write temporary file", errno);
+    int fd = mTempFd;
+    mTempFd = -1;
+    if (::close(fd) != 0) {
+        mTempFd = -1;
+        int err = errno;
+        ::unlink(tempPathFor(mResolved).c_str());
+        fail("cannot write temporary file '" + tempPathFor(mResolved) + "'", err);
     }
+    const std::string tmp = tempPathFor(mResolved);
     if (::rename(tmp.c_str(), mResolved.c_str()) != 0) {
-        err = errno;
+        int err = errno;
         ::unlink(tmp.c_str());
         fail("cannot rename '" + tmp + "' over it", err);
     }
@@ -207,6 +249,59 @@ void AtomicFile::replace(const std::string& text) {
         (void)::fsync(dirFd);
         ::close(dirFd);
     }
+}
+
+off_t AtomicFile::size() const {
+    struct stat st {};
+    if (::fstat(mFd, &st) != 0) fail("cannot inspect it", errno);
+    return st.st_size;
+}
+
+// One pwrite at the old end: under the lock no other writer moves the end meanwhile. A short or failed
+// write is undone, so a full disk keeps every earlier row and adds no partial line.
+void AtomicFile::appendInPlace(const std::string& text) {
+    const off_t end = size();
+    size_t done = 0;
+    int err = 0;
+    while (done < text.size()) {
+        ssize_t n = ::pwrite(mFd, text.data() + done, text.size() - done, end + off_t(done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            err = n < 0 ? errno : EIO;
+            break;
+        }
+        done += size_t(n);
+    }
+    if (!err && ::fsync(mFd) != 0) err = errno;
+    if (err) {
+        (void)::ftruncate(mFd, end);
+        (void)::fsync(mFd);
+        fail("cannot append to it", err);
+    }
+    mCommitted = true;
+}
+
+// Scans back from the end in blocks for the last newline: a partial line is at most one row long.
+off_t AtomicFile::cutPartialLastLine() {
+    const off_t end = size();
+    if (end == 0) return 0;
+    char block[4096];
+    for (off_t stop = end; stop > 0;) {
+        const off_t start = stop > off_t(sizeof block) ? stop - off_t(sizeof block) : 0;
+        ssize_t n = ::pread(mFd, block, size_t(stop - start), start);
+        if (n < 0 && errno == EINTR) continue;
+        if (n != stop - start) fail("cannot read the existing file", n < 0 ? errno : EIO);
+        if (stop == end && block[n - 1] == '\n') return 0;
+        for (ssize_t i = n - 1; i >= 0; --i)
+            if (block[i] == '\n') {
+                const off_t keep = start + i + 1;
+                if (::ftruncate(mFd, keep) != 0 || ::fsync(mFd) != 0)
+                    fail("cannot cut its partial last line", errno);
+                return end - keep;
+            }
+        stop = start;
+    }
+    return 0;
 }
 
 // Permission checks give the clear messages; the final probe (create and remove a file of a unique

@@ -17,7 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kMaxListedMissing = 10;
+constexpr size_t kMaxListedMissing = 10; // ranges of missing indices named in the message
+// The sweep refuses more than --max-configs rows (10000 unless raised); a trillion rows at a millisecond
+// each would take 30 years, so a larger sweep_configs is a damaged cell, not a sweep.
+constexpr size_t kMaxSweepConfigs = 1000000000000;
 
 // Every refusal is about what the user handed in; the message is the one line printed before exit 2.
 [[noreturn]] void fail(const std::string& message) {
@@ -170,6 +173,9 @@ private:
         std::optional<size_t> configs = parseCount(cell);
         if (!configs || *configs < 1)
             fail(where + ": " + col::kSweepConfigs + " " + inQuotes(cell) + " is not a positive integer");
+        if (*configs > kMaxSweepConfigs)
+            fail(where + ": " + col::kSweepConfigs + " " + inQuotes(cell) + " is more than " +
+                 std::to_string(kMaxSweepConfigs) + " configurations, more than any sweep measures");
         // Compared as numbers: "048" and "48" are the same sweep.
         agree(mConfigs, std::to_string(*configs), where, "rows of different sweeps mixed: sweep_configs");
         return *configs;
@@ -194,19 +200,37 @@ private:
     std::map<size_t, std::string> mWhere; ///< config_index -> where its row is
 };
 
-std::vector<size_t> missingIndices(const SweepCheck& check) {
-    std::vector<size_t> missing;
-    for (size_t i = 0; i < check.configs(); ++i)
-        if (!check.seenIndices().count(i)) missing.push_back(i);
-    return missing;
+// Walks the gaps between the indices seen: the ranges are at most one more than the rows, whatever
+// sweep_configs says, so a cell claiming a billion configurations costs nothing.
+std::vector<std::pair<size_t, size_t>> missingRanges(const SweepCheck& check, size_t& count) {
+    std::vector<std::pair<size_t, size_t>> ranges;
+    count = 0;
+    size_t next = 0; // the first index not yet accounted for
+    auto gapUpTo = [&](size_t end) {
+        if (end > next) {
+            ranges.emplace_back(next, end - 1);
+            count += end - next;
+        }
+    };
+    for (const auto& seen : check.seenIndices()) {
+        gapUpTo(seen.first);
+        next = seen.first + 1;
+    }
+    gapUpTo(check.configs());
+    return ranges;
 }
 
-std::string incompleteMessage(const std::vector<size_t>& missing, size_t configs) {
+std::string rangeText(const std::pair<size_t, size_t>& r) {
+    return r.first == r.second ? std::to_string(r.first)
+                               : std::to_string(r.first) + "-" + std::to_string(r.second);
+}
+
+std::string incompleteMessage(const MergeReport& report) {
     std::string list;
-    for (size_t i = 0; i < missing.size() && i < kMaxListedMissing; ++i)
-        list += (i ? ", " : "") + std::to_string(missing[i]);
-    if (missing.size() > kMaxListedMissing) list += ", ...";
-    return "incomplete: " + std::to_string(missing.size()) + " of " + std::to_string(configs) +
+    for (size_t i = 0; i < report.missing.size() && i < kMaxListedMissing; ++i)
+        list += (i ? ", " : "") + rangeText(report.missing[i]);
+    if (report.missing.size() > kMaxListedMissing) list += ", ...";
+    return "incomplete: " + std::to_string(report.missingCount) + " of " + std::to_string(report.configs) +
            " configurations missing (indices " + list +
            "); rerun the shards that wrote them, or pass --allow-incomplete";
 }
@@ -313,9 +337,8 @@ MergeReport CsvMerge::merge(const std::vector<std::string>& inputs, const std::s
     report.files = files.size();
     report.sweepId = check.sweepId();
     report.configs = check.configs();
-    report.missing = missingIndices(check);
-    if (!report.missing.empty() && !options.allowIncomplete)
-        fail(incompleteMessage(report.missing, report.configs));
+    report.missing = missingRanges(check, report.missingCount);
+    if (report.missingCount && !options.allowIncomplete) fail(incompleteMessage(report));
     const VerdictTally verdicts = tallyVerdicts(files);
     checkVerdicts(verdicts, options);
     report.timerVerdicts = verdicts.counts;

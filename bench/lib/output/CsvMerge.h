@@ -27,9 +27,12 @@ struct MergeReport {
     size_t files = 0; ///< inputs read
     size_t rows = 0;  ///< rows written
     std::string sweepId;
-    size_t configs = 0;          ///< sweep_configs
-    std::vector<size_t> missing; ///< config indices present in no input (sorted)
-    size_t failedRows = 0;       ///< rows whose status is not "ok" (empty or absent counts as not ok)
+    size_t configs = 0;      ///< sweep_configs
+    size_t missingCount = 0; ///< configurations present in no input
+    /// Those configurations as ranges [first, last] of indices, sorted; at most one more range than rows
+    /// read, however large sweep_configs is.
+    std::vector<std::pair<size_t, size_t>> missing;
+    size_t failedRows = 0; ///< rows whose status is not "ok" (empty or absent counts as not ok)
     /// Rows per timer_verdict value, in first-seen order (rows without a verdict, such as failed ones,
     /// are not counted). More than one entry only with allowMixedTimer.
     std::vector<std::pair<std::string, size_t>> timerVerdicts;
@@ -49,14 +52,14 @@ public:
     ///   std::filesystem::weakly_canonical);
     /// - the output exists and !options.force;
     /// - an input lacks a sweep column ("'<file>' is not a sweep CSV: column 'sweep_id' missing");
-    /// - a sweep cell is empty or malformed: sweep_configs not an integer >= 1, config_index not an
+    /// - a sweep cell is empty or malformed: sweep_configs not an integer in [1, 10^12], config_index not an
     ///   integer in [0, sweep_configs), shard not "i/N" with 1 <= i <= N (integers are plain digits);
     /// - two sweep_id or two sweep_configs values appear, or shards of different N (names both places);
     /// - one config_index appears twice (names both places);
     /// - the inputs hold no rows at all;
-    /// - configurations are missing and !options.allowIncomplete ("incomplete: 3 of 48 configurations
-    ///   missing (indices 5, 17, 40); rerun the shards that wrote them, or pass --allow-incomplete";
-    ///   at most 10 indices, then "...");
+    /// - configurations are missing and !options.allowIncomplete ("incomplete: 4 of 48 configurations
+    ///   missing (indices 5, 17-19); rerun the shards that wrote them, or pass --allow-incomplete";
+    ///   at most 10 ranges, then "...");
     /// - rows carry different non-empty timer_verdict values and !options.allowMixedTimer ("rows measured
     ///   under different GPU-timer verdicts: 'trusted' in '<file>:<line>' but 'untrusted' in ...").
     /// I/O failures (unreadable input, unwritable output) throw sb::Error(ExitCode::Failure) naming the

@@ -4,11 +4,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <iostream>
+#include <unordered_map>
 
 #include "bench/lib/output/AtomicFile.h"
+#include "bench/lib/output/CsvReader.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -26,137 +26,44 @@ constexpr const char* kUtf8Bom = "\xEF\xBB\xBF";
                 ExitCode::Failure);
 }
 
-/// A path that names no file (or a folder) is wrong input (exit 2) like any other; a file that exists
-/// and still cannot be read is a failure of the run (exit 1).
-[[noreturn]] void failRead(const std::string& path, int err) {
-    const bool wrongPath = err == ENOENT || err == ENOTDIR || err == EISDIR;
-    throw Error("cannot read CSV '" + path + "': " + std::strerror(err),
-                wrongPath ? ExitCode::BadInput : ExitCode::Failure);
-}
+/// Column name -> index, so that merging a header of 100000 columns stays linear.
+using ColumnIndex = std::unordered_map<std::string, size_t>;
 
-// Reads the whole file for merge and export. A device is refused before it is opened (/dev/zero would
-// be read forever); a FIFO is read to its end (process substitution hands one over).
-std::string readWhole(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) failRead(path, errno);
-    if (S_ISDIR(st.st_mode)) failRead(path, EISDIR);
-    if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
-        throw Error("cannot read CSV '" + path + "': not a regular file");
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
-    if (fd < 0) failRead(path, errno);
-    std::string text;
-    char buf[1 << 16];
-    int err = 0;
-    for (;;) {
-        ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) err = errno;
-        if (n <= 0) break;
-        text.append(buf, size_t(n));
-    }
-    ::close(fd);
-    if (err) failRead(path, err);
-    return text;
-}
-
-// RFC 4180 reader. Records end at LF or CRLF (a lone CR is accepted too); quoted fields may hold
-// separators, doubled quotes and line breaks. Line numbers count physical lines, so an error points
-// at the line an editor shows.
-class Parser {
-public:
-    Parser(const std::string& text, const std::string& source) : mText(text), mSource(source) {
-        if (mText.compare(0, 3, kUtf8Bom) == 0) mPos = 3; // spreadsheet programs prepend one
-    }
-
-    /// Next record and the line it starts on; false at the end of the text. Blank lines are skipped:
-    /// the writer quotes a lone empty cell (""), so a blank line never stands for data.
-    bool next(std::vector<std::string>& record, size_t& line) {
-        while (mPos < mText.size() && consumeLineBreak()) {
-        }
-        if (mPos >= mText.size()) return false;
-        record.clear();
-        line = mLine;
-        do record.push_back(peek() == kQuote ? quotedField() : plainField());
-        while (consume(kSeparator));
-        if (mPos < mText.size() && !consumeLineBreak())
-            fail(mLine, "unexpected character after a quoted field");
-        return true;
-    }
-
-    [[noreturn]] void fail(size_t line, const std::string& why) const {
-        throw Error(mSource + ":" + std::to_string(line) + ": " + why);
-    }
-
-private:
-    char peek() const { return mPos < mText.size() ? mText[mPos] : '\0'; }
-    bool consume(char c) {
-        if (mPos >= mText.size() || mText[mPos] != c) return false;
-        ++mPos;
-        return true;
-    }
-    bool consumeLineBreak() {
-        bool cr = consume('\r');
-        bool lf = consume('\n');
-        if (!cr && !lf) return false;
-        ++mLine;
-        return true;
-    }
-
-    std::string plainField() {
-        size_t end = mText.find_first_of(kNeedsQuoting, mPos);
-        if (end == std::string::npos) end = mText.size();
-        if (end < mText.size() && mText[end] == kQuote) fail(mLine, "'\"' inside an unquoted field");
-        std::string field = mText.substr(mPos, end - mPos);
-        mPos = end;
-        return field;
-    }
-
-    std::string quotedField() {
-        size_t startLine = mLine;
-        std::string field;
-        ++mPos; // opening quote
-        for (;;) {
-            if (mPos >= mText.size()) fail(startLine, "quoted field is not closed");
-            char c = mText[mPos++];
-            if (c == kQuote && !consume(kQuote)) return field; // "" is an escaped quote
-            if (c == '\n') ++mLine;
-            field += c;
-        }
-    }
-
-    const std::string& mText;
-    const std::string& mSource;
-    size_t mPos = 0;
-    size_t mLine = 1;
-};
-
-// ---------------------------------------------------------------------------------------------------
-// Merging and writing
-
-size_t columnIndex(const std::vector<std::string>& header, const std::string& column) {
-    return size_t(std::find(header.begin(), header.end(), column) - header.begin());
+ColumnIndex indexOf(const std::vector<std::string>& header) {
+    ColumnIndex index;
+    index.reserve(header.size());
+    for (size_t i = 0; i < header.size(); ++i) index.emplace(header[i], i);
+    return index;
 }
 
 // Header union in first-seen order: old columns keep their place, new ones follow in the order the new
-// rows name them. Old rows get empty cells for the new columns; new rows leave absent columns empty.
-void mergeRows(CsvTable& table, const std::vector<CsvRow>& rows, const std::string& path) {
+// rows name them.
+void widenHeader(std::vector<std::string>& header, ColumnIndex& index, const std::vector<CsvRow>& rows) {
     for (const CsvRow& row : rows)
         for (const auto& cell : row)
-            if (columnIndex(table.header, cell.first) == table.header.size())
-                table.header.push_back(cell.first);
-    for (auto& old : table.rows) old.resize(table.header.size());
-    for (const CsvRow& row : rows) {
-        std::vector<std::string> cells(table.header.size());
-        std::vector<bool> seen(table.header.size(), false);
-        for (const auto& [column, value] : row) {
-            size_t i = columnIndex(table.header, column);
-            // Two values for one column would silently drop one measurement: a bug in the caller.
-            if (seen[i]) failWrite(path, "a new row names column '" + column + "' twice", 0);
-            seen[i] = true;
-            cells[i] = value;
-        }
-        table.rows.push_back(std::move(cells));
+            if (index.emplace(cell.first, header.size()).second) header.push_back(cell.first);
+}
+
+// New rows leave the columns they do not name empty.
+std::vector<std::string> cellsOf(const CsvRow& row, const ColumnIndex& index, size_t width,
+                                 const std::string& path) {
+    std::vector<std::string> cells(width);
+    std::vector<bool> seen(width, false);
+    for (const auto& [column, value] : row) {
+        size_t i = index.at(column);
+        // Two values for one column would silently drop one measurement: a bug in the caller.
+        if (seen[i]) failWrite(path, "a new row names column '" + column + "' twice", 0);
+        seen[i] = true;
+        cells[i] = value;
     }
+    return cells;
+}
+
+void mergeRows(CsvTable& table, const std::vector<CsvRow>& rows, const std::string& path) {
+    ColumnIndex index = indexOf(table.header);
+    widenHeader(table.header, index, rows);
+    for (auto& old : table.rows) old.resize(table.header.size());
+    for (const CsvRow& row : rows) table.rows.push_back(cellsOf(row, index, table.header.size(), path));
 }
 
 void appendLine(std::string& out, const std::vector<std::string>& cells) {
@@ -170,6 +77,41 @@ void appendLine(std::string& out, const std::vector<std::string>& cells) {
         out += CsvWriter::quote(cells[i]);
     }
     out += '\n'; // LF rather than RFC 4180's CRLF: the files live in git and are read by Python/R
+}
+
+// In place only when every new row fits the header as it is and is one physical line: then a writer
+// killed half-way leaves a partial last line that the next writer can cut at the last newline without
+// cutting into a complete row.
+bool fitsInPlace(const std::vector<CsvRow>& rows, const ColumnIndex& index) {
+    for (const CsvRow& row : rows)
+        for (const auto& [column, value] : row)
+            if (!index.count(column) || value.find_first_of("\r\n") != std::string::npos) return false;
+    return true;
+}
+
+// The rewrite, streamed: the old rows go through one at a time, widened with empty cells for the new
+// columns (which come last), then the new rows.
+void rewriteWidened(AtomicFile& file, CsvReader& reader, std::vector<std::string> header,
+                    const std::vector<CsvRow>& rows, const std::string& path) {
+    const size_t oldWidth = header.size();
+    ColumnIndex index = indexOf(header);
+    widenHeader(header, index, rows);
+    file.beginReplace();
+    std::string text;
+    appendLine(text, header);
+    std::vector<std::string> record;
+    while (reader.next(record)) {
+        if (record.size() != oldWidth)
+            reader.fail(reader.line(), "row has " + std::to_string(record.size()) +
+                                           " fields but the header has " + std::to_string(oldWidth));
+        record.resize(header.size());
+        appendLine(text, record);
+        file.write(text);
+        text.clear();
+    }
+    for (const CsvRow& row : rows) appendLine(text, cellsOf(row, index, header.size(), path));
+    file.write(text);
+    file.commit();
 }
 
 } // namespace
@@ -205,15 +147,24 @@ std::string CsvWriter::quote(const std::string& field) {
     return out + kQuote;
 }
 
-// Read, merge and replace all happen under the file's lock (bench/lib/output/AtomicFile.h), so two processes
-// appending to one file both keep their rows.
+// Everything happens under the file's lock (bench/lib/output/AtomicFile.h), so two processes appending
+// to one file both keep their rows. Only the header is read when the rows fit it: the append is then
+// one write at the end of the file, whatever its size; a new column needs the (streamed) rewrite.
 void CsvWriter::appendRows(const std::string& path, const std::vector<CsvRow>& rows) {
     if (rows.empty()) return; // nothing to add, and no header to create a new file with
     AtomicFile file(path, "CSV");
-    // A corrupt existing file is an error (BadInput, naming file and line), never silently replaced.
-    CsvTable table = parse(file.read(), path);
-    mergeRows(table, rows, path);
-    file.replace(serialize(table));
+    if (off_t cut = file.cutPartialLastLine())
+        std::cerr << "bench: warning: " << path << ": cut a partial last line of " << cut
+                  << " bytes (left by a writer killed while appending it)\n";
+    CsvReader reader(file.fd(), path);
+    // A corrupt header is an error (BadInput, naming file and line), never silently replaced.
+    std::vector<std::string> header = reader.header();
+    const ColumnIndex index = indexOf(header);
+    if (header.empty() || !fitsInPlace(rows, index))
+        return rewriteWidened(file, reader, std::move(header), rows, path);
+    std::string text;
+    for (const CsvRow& row : rows) appendLine(text, cellsOf(row, index, header.size(), path));
+    file.appendInPlace(text);
 }
 
 // A ragged table would be written without complaint but could not be read back, so it is refused
@@ -233,25 +184,45 @@ void CsvWriter::checkWritable(const std::string& path) {
 }
 
 CsvTable CsvWriter::read(const std::string& path) {
-    return parse(readWhole(path), path);
+    return read(path, [](const std::string&) { return true; });
+}
+
+CsvTable CsvWriter::read(const std::string& path, const std::function<bool(const std::string&)>& keep) {
+    CsvReader reader(path);
+    return readTable(reader, keep);
 }
 
 CsvTable CsvWriter::parse(const std::string& text, const std::string& sourceName) {
-    Parser parser(text, sourceName);
+    CsvReader reader(std::string_view(text), sourceName);
+    return readTable(reader, [](const std::string&) { return true; });
+}
+
+CsvTable CsvWriter::readTable(CsvReader& reader, const std::function<bool(const std::string&)>& keep) {
     CsvTable table;
+    const std::vector<std::string> header = reader.header();
+    std::vector<size_t> kept;
+    for (size_t i = 0; i < header.size(); ++i)
+        if (keep(header[i])) {
+            kept.push_back(i);
+            table.header.push_back(header[i]);
+        }
     std::vector<std::string> record;
-    size_t line = 0;
-    if (!parser.next(table.header, line)) return table; // empty text: no header, no rows
-    for (size_t i = 0; i < table.header.size(); ++i)
-        if (columnIndex(table.header, table.header[i]) != i)
-            parser.fail(line, "column '" + table.header[i] + "' appears twice in the header");
-    while (parser.next(record, line)) {
-        if (record.size() != table.header.size())
-            parser.fail(line, "row has " + std::to_string(record.size()) + " fields but the header has " +
-                                  std::to_string(table.header.size()));
-        table.rows.push_back(record);
+    while (reader.next(record)) {
+        if (record.size() != header.size())
+            reader.fail(reader.line(), "row has " + std::to_string(record.size()) +
+                                           " fields but the header has " + std::to_string(header.size()));
+        std::vector<std::string> row;
+        row.reserve(kept.size());
+        for (size_t i : kept) row.push_back(std::move(record[i]));
+        table.rows.push_back(std::move(row));
     }
     return table;
+}
+
+std::string CsvWriter::line(const std::vector<std::string>& cells) {
+    std::string out;
+    appendLine(out, cells);
+    return out;
 }
 
 } // namespace sb

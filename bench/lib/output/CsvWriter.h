@@ -1,18 +1,24 @@
 #pragma once
 // Result CSV files (docs/ARCHITECTURE.md, "Results"): one row per measured configuration, header of column
-// names. Appending is atomic, safe against concurrent writers and loses nothing: under the file's lock
-// the existing file is read, the new rows appended (the header becomes the union of old and new columns,
-// in first-seen order; cells of missing columns stay empty) and the result replaces the file through a
-// temp file, fsync and rename (bench/lib/output/AtomicFile.h). A crash at any point leaves either the old or
-// the new file, never a truncated one; two processes appending to one file both keep their rows.
+// names. Appending is safe against concurrent writers and loses nothing: under the file's lock
+// (bench/lib/output/AtomicFile.h) only the header is read. When every new row's columns are in it and no
+// cell holds a line break, the rows are appended in place (one write at the end, fsync; cells of the
+// header's other columns empty): a crash then leaves the old rows whole plus at most a partial last line,
+// which the next append cuts and readers skip with a warning (bench/lib/output/CsvReader.h). Rows with new columns
+// widen the header (the union of old and new columns, in first-seen order; cells of missing columns stay
+// empty) and the file is rewritten, streamed row by row, through a temp file, fsync and rename: a crash
+// then leaves either the old or the new file. Two processes appending to one file both keep their rows.
 // Quoting follows RFC 4180 (fields with , " CR LF are quoted, quotes doubled).
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sb {
+
+class CsvReader;
 
 /// One row: ordered (column, value) pairs. Order is the column order for a new file.
 using CsvRow = std::vector<std::pair<std::string, std::string>>;
@@ -43,6 +49,10 @@ public:
     /// Parses a CSV file written by appendRows (RFC 4180). Throws on a missing file, a device or ragged
     /// rows (a FIFO is read to its end).
     static CsvTable read(const std::string& path);
+    /// The same keeping only the columns `keep` accepts (compare needs a few of many columns).
+    static CsvTable read(const std::string& path, const std::function<bool(const std::string&)>& keep);
+    /// The rest of `reader` as a table (header first), keeping the columns `keep` accepts.
+    static CsvTable readTable(CsvReader& reader, const std::function<bool(const std::string&)>& keep);
     static CsvTable parse(const std::string& text, const std::string& sourceName);
     /// Writes `table` to `path`, replacing any existing file atomically under the same lock and with the
     /// same temp file, fsync, rename and directory fsync steps as appendRows (it keeps its mode). Every row
@@ -59,6 +69,8 @@ public:
     /// fsync): for the other formats of the same rows (bench export -o). Throws like appendRows.
     static void writeText(const std::string& path, const std::string& text);
     static std::string quote(const std::string& field);
+    /// One record as serialize writes it, with its LF.
+    static std::string line(const std::vector<std::string>& cells);
 };
 
 } // namespace sb

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/lib/output/CsvSource.h"
 #include "bench/lib/output/CsvWriter.h"
 
 namespace sb {
@@ -35,8 +36,14 @@ class DashboardExport {
 public:
     /// One entry per row with status "ok" (failed rows have no numbers to chart; they are named in
     /// the context instead). Throws sb::Error(BadInput) when the table has no wall_ms_median column:
-    /// it is not a CSV of measured rows.
+    /// it is not a CSV of measured rows; and, naming "<file>:<line>" and the column, for a cell it
+    /// cannot convert honestly: a number that is not a JSON number literal or is beyond double range
+    /// (a subnormal is a valid small number), a negative or non-integer frame count or thread count or
+    /// one beyond 64 bits, a negative work counter, text that is not valid UTF-8.
     static std::vector<DashboardEntry> entries(const CsvTable& table);
+    /// The entry of one row of `source` (false for a row that is not "ok"), checked as above.
+    static bool entry(const CsvSource& source, const std::vector<std::string>& row, size_t line,
+                      DashboardEntry& out);
     /// The benchmark's name for a row (see the file comment).
     static std::string benchmarkName(const CsvTable& table, const std::vector<std::string>& row);
 
@@ -45,11 +52,16 @@ public:
     /// "iteration", iterations = frames, real_time = wall median, cpu_time = CPU submit median,
     /// time_unit "ms", and the counters as extra numeric fields. Ends in a newline.
     static std::string googleBenchmark(const CsvTable& table);
+    /// The same streamed: a first pass checks every row and counts those not ok (the context comes
+    /// first), the second writes one benchmark at a time.
+    static void writeGoogleBenchmark(const CsvSource& source, const TextSink& sink);
 
     /// github-action-benchmark customSmallerIsBetter: per entry one item "<name>" in ms with range
     /// "p5-p95 a..b" and, per counter, one item "<name> <counter>" with the counter's unit. Ends in a
     /// newline.
     static std::string githubActionBenchmark(const CsvTable& table);
+    /// The same streamed (one pass; a bad cell stops it before the rest is written).
+    static void writeGithubActionBenchmark(const CsvSource& source, const TextSink& sink);
 };
 
 } // namespace sb

@@ -50,7 +50,7 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 // The JSON number grammar, checked by hand because from_chars (and strtod) also take "inf", "nan",
 // leading zeros, ".5" and "1.". Staying inside the grammar means a value a spreadsheet would show
 // with leading zeros (a padded index, a commit-like "0123") is never silently turned into 123.
-bool isJsonNumberLiteral(const std::string& s) {
+bool isJsonNumberLiteralText(const std::string& s) {
     size_t i = 0;
     const size_t n = s.size();
     auto skipDigits = [&] {
@@ -96,15 +96,24 @@ OrderedJson numberValue(const std::string& s) {
 }
 
 /// Per column: true when its cells become JSON numbers (and Markdown right-aligns it).
-std::vector<bool> numericColumns(const CsvTable& table) {
-    std::vector<bool> numeric(table.header.size());
-    for (size_t c = 0; c < table.header.size(); ++c) {
-        numeric[c] = !RowExport::isIdentifierColumn(table.header[c]) &&
-                     std::all_of(table.rows.begin(), table.rows.end(), [c](const auto& row) {
-                         return row[c].empty() || RowExport::isNumber(row[c]);
-                     });
-    }
+std::vector<bool> numericColumns(const CsvSource& source) {
+    const std::vector<std::string>& header = source.header();
+    std::vector<bool> numeric(header.size());
+    for (size_t c = 0; c < header.size(); ++c) numeric[c] = !RowExport::isIdentifierColumn(header[c]);
+    source.forEachRow([&](const std::vector<std::string>& row, size_t) {
+        for (size_t c = 0; c < row.size(); ++c)
+            if (numeric[c] && !row[c].empty() && !RowExport::isNumber(row[c])) numeric[c] = false;
+    });
     return numeric;
+}
+
+std::vector<bool> numericColumns(const CsvTable& table) {
+    return numericColumns(CsvSource::table(table));
+}
+
+// Invalid UTF-8 in a cell (a renderer string from a broken driver) is replaced, not fatal.
+std::string dumpJson(const OrderedJson& value, int indent = -1) {
+    return value.dump(indent, ' ', false, OrderedJson::error_handler_t::replace);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -253,30 +262,67 @@ bool RowExport::isIdentifierColumn(const std::string& column) {
                        [&](const std::string& suffix) { return endsWith(column, suffix); });
 }
 
+bool RowExport::isJsonNumberLiteral(const std::string& cell) {
+    return isJsonNumberLiteralText(cell);
+}
+
 bool RowExport::isNumber(const std::string& cell) {
-    return isJsonNumberLiteral(cell) && parseDouble(cell).has_value();
+    return isJsonNumberLiteralText(cell) && parseDouble(cell).has_value();
 }
 
 // Typing is per column, not per cell: a column that is numeric in one row and text in another would
 // make every consumer check the type of each value.
 std::string RowExport::toJson(const CsvTable& table) {
-    std::vector<bool> numeric = numericColumns(table);
-    OrderedJson rows = OrderedJson::array();
-    for (const auto& row : table.rows) {
-        OrderedJson object = OrderedJson::object();
-        for (size_t c = 0; c < table.header.size(); ++c) {
+    std::string out;
+    writeJson(CsvSource::table(table), [&](std::string_view text) { out += text; });
+    return out;
+}
+
+// The text nlohmann's dump(2) gives for {"columns": [...], "rows": [...]}, written a row at a time: each
+// row object is dumped on its own and indented to its place.
+void RowExport::writeJson(const CsvSource& source, const TextSink& sink) {
+    const std::vector<std::string>& header = source.header();
+    const std::vector<bool> numeric = numericColumns(source);
+    std::vector<std::string> keys;
+    for (const std::string& name : header) keys.push_back(dumpJson(OrderedJson(name)));
+    std::string text = "{\n  \"columns\": [";
+    for (size_t c = 0; c < keys.size(); ++c) text += (c ? ",\n    " : "\n    ") + keys[c];
+    text += keys.empty() ? "],\n  \"rows\": [" : "\n  ],\n  \"rows\": [";
+    sink(text);
+    bool first = true;
+    source.forEachRow([&](const std::vector<std::string>& row, size_t) {
+        std::string out = first ? "\n    {" : ",\n    {";
+        for (size_t c = 0; c < header.size(); ++c) {
             const std::string& cell = row[c];
-            object[table.header[c]] = cell.empty() ? OrderedJson(nullptr)
-                                      : numeric[c] ? numberValue(cell)
-                                                   : OrderedJson(cell);
+            out += (c ? ",\n      " : "\n      ") + keys[c] + ": " +
+                   (cell.empty() ? std::string("null")
+                    : numeric[c] ? dumpJson(numberValue(cell))
+                                 : dumpJson(OrderedJson(cell)));
         }
-        rows.push_back(std::move(object));
+        out += header.empty() ? "}" : "\n    }";
+        first = false;
+        sink(out);
+    });
+    sink(first ? "]\n}\n" : "\n  ]\n}\n");
+}
+
+void RowExport::write(const CsvSource& source, RowFormat format, const TextSink& sink) {
+    switch (format) {
+    case RowFormat::Csv:
+        sink(CsvWriter::line(source.header()));
+        source.forEachRow([&](const std::vector<std::string>& row, size_t) { sink(CsvWriter::line(row)); });
+        return;
+    case RowFormat::Json:
+        return writeJson(source, sink);
+    case RowFormat::GoogleBenchmark:
+        return DashboardExport::writeGoogleBenchmark(source, sink);
+    case RowFormat::GithubBenchmark:
+        return DashboardExport::writeGithubActionBenchmark(source, sink);
+    case RowFormat::Markdown:
+    case RowFormat::Console:
+        break;
     }
-    OrderedJson out = OrderedJson::object();
-    out["columns"] = table.header;
-    out["rows"] = std::move(rows);
-    // Invalid UTF-8 in a cell (a renderer string from a broken driver) is replaced, not fatal.
-    return out.dump(kJsonIndent, ' ', false, OrderedJson::error_handler_t::replace) + "\n";
+    throw std::invalid_argument("RowExport::write: Markdown and the console are not streamed");
 }
 
 std::string RowExport::toMarkdown(const CsvTable& table, bool allColumns) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/lib/output/CsvSource.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "core/NameTable.h"
 
@@ -34,6 +35,10 @@ public:
     /// RowFormat::Console is not a text export (ConsoleReport prints it); asking for it throws
     /// std::invalid_argument, a caller's bug.
     static std::string format(const CsvTable& table, RowFormat format);
+    /// The same streamed: csv, json and the dashboard formats go to `sink` a row at a time, reading
+    /// `source` once or twice and holding one row (Markdown needs every row for its column widths and
+    /// is built in memory). The text is the same as format()'s.
+    static void write(const CsvSource& source, RowFormat format, const TextSink& sink);
 
     /// RFC 4180 text exactly as CsvWriter writes files (header line + rows, LF line ends); it is
     /// CsvWriter::serialize.
@@ -49,6 +54,8 @@ public:
     ///   integers (64 bit; a larger one becomes a double); "1.2500" is written as 1.25, "1e5" as 100000.0;
     /// - identifier columns (see isIdentifierColumn) and every other column: strings.
     static std::string toJson(const CsvTable& table);
+    /// toJson streamed: one pass types the columns, the next writes the rows one at a time.
+    static void writeJson(const CsvSource& source, const TextSink& sink);
 
     /// A GitHub-flavoured Markdown table for people. The columns considered are markdownColumns() that
     /// the table has, in that order, or with allColumns every column of the table in header order.
@@ -86,6 +93,8 @@ public:
 
     /// True when `cell` is a number by toJson's rule (JSON number literal with a finite value).
     static bool isNumber(const std::string& cell);
+    /// True when `cell` follows the JSON number grammar (no "inf", "nan", leading zeros, ".5", "1.").
+    static bool isJsonNumberLiteral(const std::string& cell);
 };
 
 } // namespace sb
