@@ -72,16 +72,11 @@ void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
     // Depth pass: casters only, depth clamped, with the bias of glPolygonOffset(slope, constant), no colour.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    std::string depthKey = "cascaded-depth|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                           std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    std::string depthKey = "cascaded-depth" + VulkanDepthMapSet::biasKey(p);
     GraphicsPipelineDesc depth =
         scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
     depth.depthClamp = true;
-    depth.depthBias = true;
-    depth.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-    depth.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-    depth.colourAttachments = 0;
-    depth.renderPass = mMaps.pass();
+    mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 
     // Lighting pass: the GL form's defines, permutation for permutation.

@@ -160,15 +160,9 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     // Depth passes: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    const std::string bias = "|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                             std::to_string(p.getFloat(P::kBiasConstant)) + "|";
-    auto depthState = [&](GraphicsPipelineDesc& d) {
-        d.depthBias = true;
-        d.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-        d.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-        d.colourAttachments = 0;
-        d.renderPass = mFlat.pass(); // compatible with mCubes' pass
-    };
+    const std::string bias = VulkanDepthMapSet::biasKey(p);
+    // mFlat's render pass, compatible with mCubes' (the same depth attachment).
+    auto depthState = [&](GraphicsPipelineDesc& d) { mFlat.depthPipeline(d, p); };
     std::string faceKey = "cubemap-depth" + bias;
     GraphicsPipelineDesc face =
         scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, faceKey);

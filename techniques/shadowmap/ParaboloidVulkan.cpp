@@ -145,17 +145,12 @@ void ParaboloidVulkan::createDepthPipelines(const VulkanCompileContext& ctx) {
     const PropertySet& p = properties();
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    const std::string bias = "|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                             std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    const std::string bias = VulkanDepthMapSet::biasKey(p);
     auto depth = [&](const char* name, const char* vertex, const char* geometry) {
         std::string key = std::string(name) + bias;
         GraphicsPipelineDesc d =
             scenePipeline(ctx, vertex, "shadowmap/depth.frag", base, mDepthLayout, key, geometry);
-        d.depthBias = true;
-        d.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-        d.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-        d.colourAttachments = 0;
-        d.renderPass = mMaps.pass();
+        mMaps.depthPipeline(d, p);
         return ctx.pipelines.get(key, d);
     };
     mFlatDepth = depth("paraboloid-flat-depth", "shadowmap/depth.vert", "");

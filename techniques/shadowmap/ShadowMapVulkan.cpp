@@ -114,15 +114,10 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    std::string depthKey = "shadowmap-depth|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                           std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    std::string depthKey = "shadowmap-depth" + VulkanDepthMapSet::biasKey(p);
     GraphicsPipelineDesc depth =
         scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
-    depth.depthBias = true;
-    depth.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-    depth.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-    depth.colourAttachments = 0;
-    depth.renderPass = mMaps.pass();
+    mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 
     // Lighting pass: the declaration's defines, the GL form's permutation for permutation.

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "techniques/PropertySet.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "vk/VulkanContext.h"
 
@@ -80,6 +82,19 @@ VkSampler VulkanDepthMapSet::addSampler(bool compare) {
 
 void VulkanDepthMapSet::createSlots(VulkanContext& context, VkDeviceSize bytes, uint32_t count) {
     mSlots = UniformSlots(context, bytes, count);
+}
+
+void VulkanDepthMapSet::depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const {
+    desc.depthBias = true;
+    desc.depthBiasSlope = float(properties.getFloat(ShadowMapProperties::kBiasSlope));
+    desc.depthBiasConstant = float(properties.getFloat(ShadowMapProperties::kBiasConstant));
+    desc.colourAttachments = 0;
+    desc.renderPass = mPass;
+}
+
+std::string VulkanDepthMapSet::biasKey(const PropertySet& properties) {
+    return "|bias=" + std::to_string(properties.getFloat(ShadowMapProperties::kBiasSlope)) + "," +
+           std::to_string(properties.getFloat(ShadowMapProperties::kBiasConstant)) + "|";
 }
 
 void VulkanDepthMapSet::begin(VkCommandBuffer cmd, size_t index) const {

@@ -6,16 +6,19 @@
 // lighting pass reads it through, and the depth pass's dynamic uniform slots (UniformSlots). Everything
 // is released with the set.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "vk/GraphicsPipeline.h"
 #include "vk/LayerPasses.h"
 #include "vk/UniformSlots.h"
 #include "vk/VulkanImage.h"
 
 namespace sb {
 
+class PropertySet;
 class VulkanContext;
 
 class VulkanDepthMapSet {
@@ -46,6 +49,11 @@ public:
     VkImageView view() const { return mImage.view(); } ///< every layer, as the lighting pass samples them
     VkRenderPass pass() const { return mPass; }
     uint32_t size() const { return mSize; }
+    /// Makes `desc` a depth pass into these maps: no colour, the set's render pass, and the depth bias
+    /// of glPolygonOffset(bias_slope, bias_constant) from `properties` (ShadowMapProperties).
+    void depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const;
+    /// The pipeline-cache key of that bias, "|bias=slope,constant|", appended to the pass's name.
+    static std::string biasKey(const PropertySet& properties);
     /// Begins the render pass over framebuffer `index`, which clears its layers to the far plane, with
     /// the viewport and scissor of the whole map.
     void begin(VkCommandBuffer cmd, size_t index) const;
