@@ -474,4 +474,9 @@ void VulkanContext::submit(VkCommandBuffer cmd, VkFence fence) {
     check(vkQueueSubmit(mQueue, 1, &info, fence), "vkQueueSubmit");
 }
 
+uint32_t VulkanContext::uniformStride(VkDeviceSize bytes) const {
+    const VkDeviceSize align = mProperties.limits.minUniformBufferOffsetAlignment;
+    return uint32_t((bytes + align - 1) / align * align);
+}
+
 } // namespace sb

@@ -61,6 +61,9 @@ public:
     VkCommandPool commandPool() const { return mCommandPool; }
     const VulkanDeviceInfo& info() const { return mInfo; }
     const VkPhysicalDeviceProperties& properties() const { return mProperties; }
+    /// `bytes` rounded up to minUniformBufferOffsetAlignment: the stride of consecutive slots of a
+    /// dynamic uniform buffer, each bound at its own offset.
+    uint32_t uniformStride(VkDeviceSize bytes) const;
     /// Nanoseconds per timestamp tick; 0 when the queue writes no timestamps (timestampValidBits 0).
     double timestampPeriodNs() const { return mTimestampPeriodNs; }
     /// Whether depthClamp (volume's closed far cap) and the other features used were enabled.

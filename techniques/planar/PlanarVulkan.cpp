@@ -191,8 +191,7 @@ void PlanarVulkan::compile(const VulkanCompileContext& ctx) {
 
     // Room for every plane and light: moving lights change which flattenings exist, never their number
     // beyond this.
-    const VkDeviceSize align = ctx.context.properties().limits.minUniformBufferOffsetAlignment;
-    mStride = uint32_t((sizeof(FlatteningRecord) + align - 1) / align * align);
+    mStride = ctx.context.uniformStride(sizeof(FlatteningRecord));
     const size_t capacity = std::max<size_t>(1, mPlanes.size() * kMaxLights);
     mFlattenings = VulkanBuffer(ctx.context, capacity * mStride, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mFlattenings.map(), 0, capacity * mStride);

@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "shading/ShaderLimits.h"
 #include "techniques/vulkan/ScenePass.h"
+#include "vk/LayerPasses.h"
 
 namespace sb {
 
@@ -80,73 +81,19 @@ void ProjectiveVulkan::createTextures(VulkanContext& context, uint32_t layers) {
         transitionImage(cmd, mArray.image(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, layers);
     });
-    createRenderPass();
-    for (uint32_t i = 0; i < layers; ++i) {
-        VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        const VkImageView view = mArray.layerView(i);
-        info.renderPass = mTexturePass;
-        info.attachmentCount = 1;
-        info.pAttachments = &view;
-        info.width = info.height = uint32_t(mResolution);
-        info.layers = 1;
-        VkFramebuffer fb = VK_NULL_HANDLE;
-        VulkanContext::check(vkCreateFramebuffer(mDevice, &info, nullptr, &fb),
-                             "vkCreateFramebuffer (projective)");
-        mFramebuffers.push_back(fb);
-    }
-}
-
-void ProjectiveVulkan::createRenderPass() {
     // One colour attachment cleared to white (lit) and left for the lighting pass to sample.
-    VkAttachmentDescription a{};
-    a.format = VK_FORMAT_R8_UNORM;
-    a.samples = VK_SAMPLE_COUNT_1_BIT;
-    a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    a.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription sub{};
-    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    sub.colorAttachmentCount = 1;
-    sub.pColorAttachments = &ref;
-    // Before: the previous frame's lighting pass read the layer (write after read). After: this
-    // frame's lighting pass reads what the silhouette wrote.
-    VkSubpassDependency deps[2]{};
-    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    deps[0].dstSubpass = 0;
-    deps[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[0].srcAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[1].srcSubpass = 0;
-    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &a;
-    info.subpassCount = 1;
-    info.pSubpasses = &sub;
-    info.dependencyCount = 2;
-    info.pDependencies = deps;
-    VulkanContext::check(vkCreateRenderPass(mDevice, &info, nullptr, &mTexturePass),
-                         "vkCreateRenderPass (projective)");
+    mTexturePass =
+        LayerPasses::colourPass(mDevice, VK_FORMAT_R8_UNORM, VK_ATTACHMENT_LOAD_OP_CLEAR, "projective");
+    for (uint32_t i = 0; i < layers; ++i)
+        mFramebuffers.push_back(LayerPasses::framebuffer(mDevice, mTexturePass, mArray.layerView(i),
+                                                         uint32_t(mResolution), 1, "projective"));
 }
 
 void ProjectiveVulkan::createDescriptors(VulkanContext& context, uint32_t layers) {
     // Bilinear lookups; outside the projector's frustum no caster was drawn: a white (lit) border.
-    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    s.magFilter = s.minFilter = VK_FILTER_LINEAR;
-    s.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    s.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
-    s.maxLod = 0.0f;
-    VulkanContext::check(vkCreateSampler(mDevice, &s, nullptr, &mSampler), "vkCreateSampler (projective)");
+    LayerPasses::Sampling border;
+    border.whiteBorder = true;
+    mSampler = LayerPasses::sampler(mDevice, border, "projective");
 
     using D = DescriptorSets;
     mSets = DescriptorSets(
@@ -155,8 +102,7 @@ void ProjectiveVulkan::createDescriptors(VulkanContext& context, uint32_t layers
          {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT),
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "projective");
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mStride = uint32_t((sizeof(glm::mat4) + align - 1) / align * align);
+    mStride = context.uniformStride(sizeof(glm::mat4));
     mProjectors = VulkanBuffer(context, VkDeviceSize(mStride) * layers, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     mMatrices = VulkanBuffer(context, sizeof(glm::mat4) * layers, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mProjectors.map(), 0, size_t(mStride) * layers);

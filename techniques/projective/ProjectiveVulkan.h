@@ -41,7 +41,6 @@ public:
 private:
     void release();
     void createTextures(VulkanContext& context, uint32_t layers);
-    void createRenderPass();
     void createDescriptors(VulkanContext& context, uint32_t layers);
     void writeMatrices(); ///< the projectors' and texture matrices of mPlan into their buffers
     void buildPipelines(const VulkanCompileContext& ctx);

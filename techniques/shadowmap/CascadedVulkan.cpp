@@ -6,7 +6,6 @@
 #include "techniques/shadowmap/Cascaded.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -32,19 +31,12 @@ CascadedVulkan::~CascadedVulkan() {
 
 void CascadedVulkan::release() {
     if (!mDevice) return;
-    for (VkFramebuffer f : mFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
-    mFramebuffers.clear();
-    vkDestroyRenderPass(mDevice, mDepthPass, nullptr);
-    vkDestroySampler(mDevice, mSampler, nullptr);
     vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
     vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
-    mDepthPass = VK_NULL_HANDLE;
-    mSampler = VK_NULL_HANDLE;
     mSets = DescriptorSets();
     mDepthLayout = mLightingLayout = VK_NULL_HANDLE;
     mDepthPipeline = VK_NULL_HANDLE; // owned by the pipeline cache
-    mMaps = VulkanImage();
-    mSlotMatrices = VulkanBuffer();
+    mMaps = VulkanDepthMapSet();
     mLightingBlock = VulkanBuffer();
 }
 
@@ -52,18 +44,10 @@ void CascadedVulkan::setScene(const Scene& scene) {
     mPlan.setScene(scene, int(properties().getInt(Cascaded::kCascades)));
 }
 
-void CascadedVulkan::createMaps(VulkanContext& context) {
-    const VkFormat format = VulkanDepthMaps::format(context.physicalDevice());
-    mMaps = VulkanDepthMaps::image(context, format, uint32_t(mSize), uint32_t(mSlots), false);
-    mDepthPass = VulkanDepthMaps::renderPass(mDevice, format);
-    for (int i = 0; i < mSlots; ++i)
-        mFramebuffers.push_back(
-            VulkanDepthMaps::framebuffer(mDevice, mDepthPass, mMaps.layerView(uint32_t(i)), uint32_t(mSize)));
-}
-
 void CascadedVulkan::createDescriptors(VulkanContext& context) {
     // As DepthLayers on GL: hardware compare (LEQUAL) with LINEAR, the four comparison results filtered.
-    mSampler = VulkanDepthMaps::sampler(mDevice, true);
+    const VkSampler sampler = mMaps.addSampler(true);
+    mMaps.createSlots(context, sizeof(glm::mat4), uint32_t(mSlots));
     // Set 1 of the depth pass: the slot's matrix, one dynamic slot per slot (LightPass). Set 1 of the
     // lighting pass: CascadedBlock and the map array.
     using D = DescriptorSets;
@@ -73,20 +57,14 @@ void CascadedVulkan::createDescriptors(VulkanContext& context) {
          {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "cascaded");
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mSlotStride = uint32_t((sizeof(glm::mat4) + align - 1) / align * align);
-    mSlotMatrices = VulkanBuffer(context, VkDeviceSize(mSlotStride) * uint32_t(mSlots),
-                                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    std::memset(mSlotMatrices.map(), 0, size_t(mSlotStride) * size_t(mSlots));
     const BlockLayout block{uint32_t(mSlots)};
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mSlotMatrices.buffer(),
-                      sizeof(glm::mat4));
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mMaps.slots().buffer(),
+                      mMaps.slots().bytes());
     mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
                       block.size);
-    mSets.writeImage(kLightingSet, 1, mSampler, mMaps.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeImage(kLightingSet, 1, sampler, mMaps.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
 }
 
 void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
@@ -94,16 +72,11 @@ void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
     // Depth pass: casters only, depth clamped, with the bias of glPolygonOffset(slope, constant), no colour.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    std::string depthKey = "cascaded-depth|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                           std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    std::string depthKey = "cascaded-depth" + VulkanDepthMapSet::biasKey(p);
     GraphicsPipelineDesc depth =
         scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
     depth.depthClamp = true;
-    depth.depthBias = true;
-    depth.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-    depth.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-    depth.colourAttachments = 0;
-    depth.renderPass = mDepthPass;
+    mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 
     // Lighting pass: the GL form's defines, permutation for permutation.
@@ -127,7 +100,7 @@ void CascadedVulkan::compile(const VulkanCompileContext& ctx) {
                     ExitCode::Unsupported);
     mSize = int(properties().getInt(P::kResolution));
     mSlots = mPlan.slotCount();
-    createMaps(ctx.context);
+    mMaps = VulkanDepthMapSet(ctx.context, uint32_t(mSize), uint32_t(mSlots), uint32_t(mSlots));
     createDescriptors(ctx.context);
     createPipelines(ctx);
 }
@@ -136,25 +109,11 @@ void CascadedVulkan::drawMap(VulkanFrameContext& ctx, size_t slot) {
     // The slot's matrix: Vulkan's depth range, no flip (VulkanFrameBlock::depthFromGl). The previous
     // frame's fence has been waited for, so no slot is in flight.
     const glm::mat4 m = VulkanFrameBlock::depthFromGl() * mPlan.slotViewProj()[slot];
-    std::memcpy(static_cast<char*>(mSlotMatrices.map()) + size_t(mSlotStride) * slot, &m, sizeof m);
-    VkClearValue clear{};
-    clear.depthStencil = {1.0f, 0};
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = mDepthPass;
-    begin.framebuffer = mFramebuffers[slot];
-    begin.renderArea.extent = {uint32_t(mSize), uint32_t(mSize)};
-    begin.clearValueCount = 1;
-    begin.pClearValues = &clear;
-    vkCmdBeginRenderPass(ctx.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {uint32_t(mSize), uint32_t(mSize)}};
-    vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
-    vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
+    mMaps.slots().write(slot, &m, sizeof m);
+    mMaps.begin(ctx.cmd, slot);
     vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthPipeline);
     ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
-    const uint32_t offset = mSlotStride * uint32_t(slot);
-    const VkDescriptorSet set = mSets.set(kDepthSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &set, 1, &offset);
+    mMaps.slots().bind(ctx.cmd, mDepthLayout, mSets.set(kDepthSet), slot);
     ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
     vkCmdEndRenderPass(ctx.cmd);
 }

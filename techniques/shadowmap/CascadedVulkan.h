@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "techniques/shadowmap/CascadedMaps.h"
+#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
-#include "vk/VulkanImage.h"
 
 namespace sb {
 
@@ -34,7 +34,6 @@ public:
 
 private:
     void release();
-    void createMaps(VulkanContext& context);
     void createDescriptors(VulkanContext& context);
     void createPipelines(const VulkanCompileContext& ctx);
     void renderDepth(VulkanFrameContext& ctx);
@@ -42,16 +41,11 @@ private:
     void writeLightingBlock();
 
     VkDevice mDevice = VK_NULL_HANDLE;
-    CascadedMaps mPlan;         ///< lights, slots, fits and the depth pass's plan (both APIs')
-    std::vector<uint8_t> mKeep; ///< the depth pass's mask, reused per map
-    int mSize = 0, mSlots = 0;  ///< as compiled
-    VulkanImage mMaps;
-    std::vector<VkFramebuffer> mFramebuffers; ///< per layer (slot)
-    VkRenderPass mDepthPass = VK_NULL_HANDLE;
-    VkSampler mSampler = VK_NULL_HANDLE;
-    VulkanBuffer mSlotMatrices; ///< LightPass slots, one per slot
-    uint32_t mSlotStride = 0;
-    VulkanBuffer mLightingBlock;                             ///< CascadedBlock
+    CascadedMaps mPlan;          ///< lights, slots, fits and the depth pass's plan (both APIs')
+    std::vector<uint8_t> mKeep;  ///< the depth pass's mask, reused per map
+    int mSize = 0, mSlots = 0;   ///< as compiled
+    VulkanDepthMapSet mMaps;     ///< a layer and a LightPass slot per slot
+    VulkanBuffer mLightingBlock; ///< CascadedBlock
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;

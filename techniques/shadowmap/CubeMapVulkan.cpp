@@ -8,7 +8,6 @@
 #include "techniques/shadowmap/CubeMap.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -39,26 +38,13 @@ CubeMapVulkan::~CubeMapVulkan() {
 
 void CubeMapVulkan::release() {
     if (!mDevice) return;
-    for (VkFramebuffer f : mFlatFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
-    for (VkFramebuffer f : mFaceFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
-    mFlatFramebuffers.clear();
-    mFaceFramebuffers.clear();
-    vkDestroyFramebuffer(mDevice, mLayeredFramebuffer, nullptr);
-    vkDestroyImageView(mDevice, mCubesLayers, nullptr);
-    vkDestroyRenderPass(mDevice, mDepthPass, nullptr);
-    vkDestroySampler(mDevice, mSampler, nullptr);
     vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
     vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
-    mLayeredFramebuffer = VK_NULL_HANDLE;
-    mCubesLayers = VK_NULL_HANDLE;
-    mDepthPass = VK_NULL_HANDLE;
-    mSampler = VK_NULL_HANDLE;
     mSets = DescriptorSets();
     mDepthLayout = mLightingLayout = VK_NULL_HANDLE;
     mFaceDepthPipeline = mLayeredDepthPipeline = VK_NULL_HANDLE; // owned by the pipeline cache
-    mCubes = VulkanImage();
-    mFlat = VulkanImage();
-    mPassSlots = VulkanBuffer();
+    mCubes = VulkanDepthMapSet();
+    mFlat = VulkanDepthMapSet();
     mLightingBlock = VulkanBuffer();
 }
 
@@ -72,39 +58,22 @@ void CubeMapVulkan::setScene(const Scene& scene) {
     mOmniCulling.setScene(scene);
 }
 
-VkFramebuffer CubeMapVulkan::createFramebuffer(VkImageView view, uint32_t layers) {
-    return VulkanDepthMaps::framebuffer(mDevice, mDepthPass, view, uint32_t(mSize), layers);
-}
-
 void CubeMapVulkan::createMaps(VulkanContext& context) {
-    const VkFormat format = VulkanDepthMaps::format(context.physicalDevice());
     // A kind the scene lacks gets a 1 x 1 stand-in (its lookups are compiled out, FLAT_MAPS/OMNI_MAPS).
     const uint32_t cubeLayers = uint32_t(CubeFaces::kFaces * std::max(1, mCubeCount));
-    mCubes = VulkanDepthMaps::image(context, format, mCubeCount > 0 ? uint32_t(mSize) : 1u, cubeLayers, true);
-    mFlat = VulkanDepthMaps::image(context, format, mFlatCount > 0 ? uint32_t(mSize) : 1u,
-                                   uint32_t(std::max(1, mFlatCount)), false);
-    mDepthPass = VulkanDepthMaps::renderPass(mDevice, format);
-    for (int i = 0; i < mFlatCount; ++i)
-        mFlatFramebuffers.push_back(createFramebuffer(mFlat.layerView(uint32_t(i)), 1));
-    if (mCubeCount == 0) return;
-    if (mLayered) {
-        VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        info.image = mCubes.image();
-        info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        info.format = format;
-        info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, cubeLayers};
-        VulkanContext::check(vkCreateImageView(mDevice, &info, nullptr, &mCubesLayers),
-                             "vkCreateImageView (cubemap layers)");
-        mLayeredFramebuffer = createFramebuffer(mCubesLayers, cubeLayers);
-    } else {
-        for (uint32_t layer = 0; layer < cubeLayers; ++layer)
-            mFaceFramebuffers.push_back(createFramebuffer(mCubes.layerView(layer), 1));
-    }
+    const uint32_t cubeSize = mCubeCount > 0 ? uint32_t(mSize) : 1u;
+    const uint32_t faces = mCubeCount > 0 && !mLayered ? cubeLayers : 0u; // six-pass: one per layer-face
+    mCubes = VulkanDepthMapSet(context, cubeSize, cubeLayers, faces, true);
+    if (mCubeCount > 0 && mLayered) mCubes.addLayeredFramebuffer();
+    mFlat = VulkanDepthMapSet(context, mFlatCount > 0 ? uint32_t(mSize) : 1u,
+                              uint32_t(std::max(1, mFlatCount)), uint32_t(mFlatCount));
 }
 
 void CubeMapVulkan::createDescriptors(VulkanContext& context) {
     // As DepthLayers on GL: hardware compare (LEQUAL) with LINEAR, the four comparison results filtered.
-    mSampler = VulkanDepthMaps::sampler(mDevice, true);
+    const VkSampler sampler = mFlat.addSampler(true);
+    mFlat.createSlots(context, kCubePassBytes,
+                      uint32_t(std::max(1, mFlatCount + (CubeFaces::kFaces + 1) * mCubeCount)));
     // Set 1 of the depth passes: a dynamic slot per pass (CubePass, whose first matrix is LightPass).
     // Set 1 of the lighting pass: the lights' block, the flat maps and the cube maps.
     using D = DescriptorSets;
@@ -118,22 +87,16 @@ void CubeMapVulkan::createDescriptors(VulkanContext& context) {
           D::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "cubemap");
 
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mSlotStride = uint32_t((kCubePassBytes + align - 1) / align * align);
-    const uint32_t slots = uint32_t(std::max(1, mFlatCount + (CubeFaces::kFaces + 1) * mCubeCount));
-    mPassSlots = VulkanBuffer(context, VkDeviceSize(mSlotStride) * slots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    std::memset(mPassSlots.map(), 0, size_t(mSlotStride) * slots);
     const BlockLayout block{uint32_t(mLights.shaderLightCount())};
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
 
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mPassSlots.buffer(),
-                      kCubePassBytes);
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mFlat.slots().buffer(),
+                      mFlat.slots().bytes());
     mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
                       block.size);
-    mSets.writeImage(kLightingSet, 1, mSampler, mFlat.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
-    mSets.writeImage(kLightingSet, 2, mSampler, mCubes.view(),
+    mSets.writeImage(kLightingSet, 1, sampler, mFlat.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeImage(kLightingSet, 2, sampler, mCubes.view(),
                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
 }
 
@@ -156,20 +119,20 @@ void CubeMapVulkan::writeBlocks() {
     std::memcpy(base + block.ranges, ranges.data(), 16 * size_t(n));
 
     // The depth passes' matrices: Vulkan's depth range, no flip (VulkanFrameBlock::depthFromGl).
-    char* slots = static_cast<char*>(mPassSlots.map());
+    const UniformSlots& slots = mFlat.slots();
     const glm::mat4 z = VulkanFrameBlock::depthFromGl();
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
         const glm::mat4 m = z * o.viewProj;
-        std::memcpy(slots + size_t(mSlotStride) * flatSlot(o.index), &m, sizeof m);
+        slots.write(flatSlot(o.index), &m, sizeof m);
     }
     for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
         glm::mat4 faces[CubeFaces::kFaces];
         for (int f = 0; f < CubeFaces::kFaces; ++f) {
             faces[f] = z * mCubeLights[cube].faces.viewProjection(f);
-            std::memcpy(slots + size_t(mSlotStride) * faceSlot(cube, f), &faces[f], sizeof(glm::mat4));
+            slots.write(faceSlot(cube, f), &faces[f], sizeof(glm::mat4));
         }
-        char* layered = slots + size_t(mSlotStride) * layeredSlot(cube);
+        char* layered = slots.at(layeredSlot(cube));
         std::memcpy(layered, faces, kFaceMatricesBytes);
         const int32_t layerBase = CubeFaces::kFaces * int32_t(cube);
         std::memcpy(layered + kFaceMatricesBytes, &layerBase, sizeof layerBase);
@@ -197,15 +160,9 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     // Depth passes: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    const std::string bias = "|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                             std::to_string(p.getFloat(P::kBiasConstant)) + "|";
-    auto depthState = [&](GraphicsPipelineDesc& d) {
-        d.depthBias = true;
-        d.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-        d.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-        d.colourAttachments = 0;
-        d.renderPass = mDepthPass;
-    };
+    const std::string bias = VulkanDepthMapSet::biasKey(p);
+    // mFlat's render pass, compatible with mCubes' (the same depth attachment).
+    auto depthState = [&](GraphicsPipelineDesc& d) { mFlat.depthPipeline(d, p); };
     std::string faceKey = "cubemap-depth" + bias;
     GraphicsPipelineDesc face =
         scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, faceKey);
@@ -233,35 +190,22 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     setPermutationKey(key);
 }
 
-void CubeMapVulkan::beginDepthPass(VulkanFrameContext& ctx, VkFramebuffer framebuffer, VkPipeline pipeline) {
-    VkClearValue clear{};
-    clear.depthStencil = {1.0f, 0};
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = mDepthPass;
-    begin.framebuffer = framebuffer;
-    begin.renderArea.extent = {uint32_t(mSize), uint32_t(mSize)};
-    begin.clearValueCount = 1;
-    begin.pClearValues = &clear;
-    vkCmdBeginRenderPass(ctx.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {uint32_t(mSize), uint32_t(mSize)}};
-    vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
-    vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
+void CubeMapVulkan::beginDepthPass(VulkanFrameContext& ctx, const VulkanDepthMapSet& maps, size_t framebuffer,
+                                   VkPipeline pipeline) {
+    maps.begin(ctx.cmd, framebuffer);
     vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
 }
 
 void CubeMapVulkan::bindSlot(VulkanFrameContext& ctx, uint32_t slot) {
-    const uint32_t offset = mSlotStride * slot;
-    const VkDescriptorSet set = mSets.set(kDepthSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &set, 1, &offset);
+    mFlat.slots().bind(ctx.cmd, mDepthLayout, mSets.set(kDepthSet), slot);
 }
 
 void CubeMapVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
     // As the GL form's renderOmniFlatMaps: each flat map cleared, its casters culled against its frustum.
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
-        beginDepthPass(ctx, mFlatFramebuffers[size_t(o.index)], mFaceDepthPipeline);
+        beginDepthPass(ctx, mFlat, size_t(o.index), mFaceDepthPipeline);
         bindSlot(ctx, flatSlot(o.index));
         mCulled += mLights.cullFlatCasters(o, mCulling, mKeep);
         ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
@@ -271,7 +215,7 @@ void CubeMapVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
 
 void CubeMapVulkan::renderCubesLayered(VulkanFrameContext& ctx) {
     // Every cube in the array belongs to a light that casts: the render pass clears them all.
-    beginDepthPass(ctx, mLayeredFramebuffer, mLayeredDepthPipeline);
+    beginDepthPass(ctx, mCubes, 0, mLayeredDepthPipeline); // the one framebuffer over all
     for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
         const Cube& c = mCubeLights[cube];
         const size_t kept = mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
@@ -289,8 +233,7 @@ void CubeMapVulkan::renderCubesSixPass(VulkanFrameContext& ctx) {
         const Cube& c = mCubeLights[cube];
         mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
         for (int f = 0; f < CubeFaces::kFaces; ++f) {
-            beginDepthPass(ctx, mFaceFramebuffers[size_t(CubeFaces::kFaces * int(cube) + f)],
-                           mFaceDepthPipeline);
+            beginDepthPass(ctx, mCubes, size_t(CubeFaces::kFaces * int(cube) + f), mFaceDepthPipeline);
             mCulling.cull(c.faces.viewProjection(f), DrawSet::Casters, CullPlanes::All, mKeep);
             size_t kept = 0;
             for (size_t i = 0; i < mKeep.size(); ++i) kept += (mKeep[i] &= mRange[i]) ? 1 : 0;

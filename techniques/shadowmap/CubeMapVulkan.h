@@ -32,10 +32,10 @@
 #include "techniques/shadowmap/CubeFaces.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
+#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
-#include "vk/VulkanImage.h"
 
 namespace sb {
 
@@ -51,10 +51,10 @@ public:
 private:
     void release();
     void createMaps(VulkanContext& context);
-    VkFramebuffer createFramebuffer(VkImageView view, uint32_t layers);
     void createDescriptors(VulkanContext& context);
     void writeBlocks();
-    void beginDepthPass(VulkanFrameContext& ctx, VkFramebuffer framebuffer, VkPipeline pipeline);
+    void beginDepthPass(VulkanFrameContext& ctx, const VulkanDepthMapSet& maps, size_t framebuffer,
+                        VkPipeline pipeline);
     void bindSlot(VulkanFrameContext& ctx, uint32_t slot);
     void renderDepth(VulkanFrameContext& ctx);
     void renderFlatMaps(VulkanFrameContext& ctx);
@@ -84,14 +84,11 @@ private:
     size_t mCulled = 0;
     int mFacesRendered = 0;
 
-    VulkanImage mCubes, mFlat;
-    VkImageView mCubesLayers = VK_NULL_HANDLE; ///< 2D array view of every layer-face: the layered target
-    VkRenderPass mDepthPass = VK_NULL_HANDLE;
-    std::vector<VkFramebuffer> mFlatFramebuffers, mFaceFramebuffers; ///< per layer
-    VkFramebuffer mLayeredFramebuffer = VK_NULL_HANDLE;
-    VkSampler mSampler = VK_NULL_HANDLE;
-    VulkanBuffer mPassSlots; ///< CubePass-sized slots (LightPass reads the first matrix)
-    uint32_t mSlotStride = 0;
+    /// The cubes: a framebuffer per layer-face (six-pass), or one over them all (layered).
+    VulkanDepthMapSet mCubes;
+    /// The flat maps, a framebuffer per layer, and every depth pass's CubePass-sized slots (LightPass
+    /// reads the first matrix).
+    VulkanDepthMapSet mFlat;
     VulkanBuffer mLightingBlock;                             ///< CubeMapBlock
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;

@@ -7,7 +7,6 @@
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/Paraboloid.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -44,19 +43,12 @@ ParaboloidVulkan::~ParaboloidVulkan() {
 
 void ParaboloidVulkan::release() {
     if (!mDevice) return;
-    for (VkFramebuffer f : mFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
-    mFramebuffers.clear();
-    vkDestroyRenderPass(mDevice, mDepthPass, nullptr);
-    vkDestroySampler(mDevice, mSampler, nullptr);
     vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
     vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
-    mDepthPass = VK_NULL_HANDLE;
-    mSampler = VK_NULL_HANDLE;
     mSets = DescriptorSets();
     mDepthLayout = mLightingLayout = VK_NULL_HANDLE;
     mFlatDepth = mParaboloidDepth = mSplitDepth = VK_NULL_HANDLE; // owned by the pipeline cache
-    mMaps = VulkanImage();
-    mPassSlots = VulkanBuffer();
+    mMaps = VulkanDepthMapSet();
     mLightingBlock = VulkanBuffer();
 }
 
@@ -86,20 +78,10 @@ void ParaboloidVulkan::checkFeatures(const VulkanContext& context) const {
         refuse("geometryShader", "split=true's splitting stage; split=false projects per vertex only");
 }
 
-void ParaboloidVulkan::createMaps(VulkanContext& context) {
-    const VkFormat format = VulkanDepthMaps::format(context.physicalDevice());
-    // No shadowed light: a 1 x 1 stand-in (its lookups are compiled out, FLAT_MAPS/OMNI_MAPS).
-    mMaps = VulkanDepthMaps::image(context, format, mLayers > 0 ? uint32_t(mSize) : 1u,
-                                   uint32_t(std::max(1, mLayers)), false);
-    mDepthPass = VulkanDepthMaps::renderPass(mDevice, format);
-    for (int i = 0; i < mLayers; ++i)
-        mFramebuffers.push_back(
-            VulkanDepthMaps::framebuffer(mDevice, mDepthPass, mMaps.layerView(uint32_t(i)), uint32_t(mSize)));
-}
-
 void ParaboloidVulkan::createDescriptors(VulkanContext& context) {
     // As DepthLayers on GL: hardware compare (LEQUAL) with LINEAR, the four comparison results filtered.
-    mSampler = VulkanDepthMaps::sampler(mDevice, true);
+    const VkSampler sampler = mMaps.addSampler(true);
+    mMaps.createSlots(context, kSlotBytes, uint32_t(std::max(1, mFlatCount + 2 * mOmniCount)));
     // Set 1 of the depth passes: a dynamic slot per pass (LightPass or ParaboloidPass). Set 1 of the
     // lighting pass: the lights' block and the map array.
     using D = DescriptorSets;
@@ -111,21 +93,15 @@ void ParaboloidVulkan::createDescriptors(VulkanContext& context) {
                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT),
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "paraboloid");
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mSlotStride = uint32_t((kSlotBytes + align - 1) / align * align);
-    const uint32_t slots = uint32_t(std::max(1, mFlatCount + 2 * mOmniCount));
-    mPassSlots = VulkanBuffer(context, VkDeviceSize(mSlotStride) * slots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    std::memset(mPassSlots.map(), 0, size_t(mSlotStride) * slots);
     const BlockLayout block{uint32_t(mLights.shaderLightCount())};
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
 
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mPassSlots.buffer(),
-                      kSlotBytes);
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mMaps.slots().buffer(),
+                      mMaps.slots().bytes());
     mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
                       block.size);
-    mSets.writeImage(kLightingSet, 1, mSampler, mMaps.view(),
-                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mSets.writeImage(kLightingSet, 1, sampler, mMaps.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
 }
 
 void ParaboloidVulkan::writeBlocks() {
@@ -147,18 +123,18 @@ void ParaboloidVulkan::writeBlocks() {
 
     // The depth passes' slots: flat maps' matrices in Vulkan's depth range, no flip
     // (VulkanFrameBlock::depthFromGl); the halves' data as GL's uniforms (the shader converts z).
-    char* slots = static_cast<char*>(mPassSlots.map());
+    const UniformSlots& slots = mMaps.slots();
     const glm::mat4 z = VulkanFrameBlock::depthFromGl();
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind == OmniMapKind::Flat && o.index < mFlatCount) {
             const glm::mat4 m = z * o.viewProj;
-            std::memcpy(slots + size_t(mSlotStride) * flatSlot(o.index), &m, sizeof m);
+            slots.write(flatSlot(o.index), &m, sizeof m);
         } else if (o.kind == OmniMapKind::Omni && o.index < mOmniCount) {
             for (int half = 0; half < 2; ++half) {
                 const ParaboloidPass pass{glm::vec4(o.point.position, float(half)),
                                           glm::vec2(o.point.nearZ, o.point.farZ), mMaxSegmentAngle,
                                           mBeyondRim};
-                std::memcpy(slots + size_t(mSlotStride) * halfSlot(o.index, half), &pass, sizeof pass);
+                slots.write(halfSlot(o.index, half), &pass, sizeof pass);
             }
         }
     }
@@ -169,17 +145,12 @@ void ParaboloidVulkan::createDepthPipelines(const VulkanCompileContext& ctx) {
     const PropertySet& p = properties();
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    const std::string bias = "|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                             std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    const std::string bias = VulkanDepthMapSet::biasKey(p);
     auto depth = [&](const char* name, const char* vertex, const char* geometry) {
         std::string key = std::string(name) + bias;
         GraphicsPipelineDesc d =
             scenePipeline(ctx, vertex, "shadowmap/depth.frag", base, mDepthLayout, key, geometry);
-        d.depthBias = true;
-        d.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-        d.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-        d.colourAttachments = 0;
-        d.renderPass = mDepthPass;
+        mMaps.depthPipeline(d, p);
         return ctx.pipelines.get(key, d);
     };
     mFlatDepth = depth("paraboloid-flat-depth", "shadowmap/depth.vert", "");
@@ -201,7 +172,9 @@ void ParaboloidVulkan::compile(const VulkanCompileContext& ctx) {
     mLayers = flatBase() + mFlatCount;
     mMaxSegmentAngle = ParaboloidSplitting::maxSegmentAngle(mSize);
     mBeyondRim = Paraboloid::beyondRim(mSize, int(p.getInt(P::kPcf)));
-    createMaps(ctx.context);
+    // No shadowed light: a 1 x 1 stand-in (its lookups are compiled out, FLAT_MAPS/OMNI_MAPS).
+    mMaps = VulkanDepthMapSet(ctx.context, mLayers > 0 ? uint32_t(mSize) : 1u, uint32_t(std::max(1, mLayers)),
+                              uint32_t(mLayers));
     createDescriptors(ctx.context);
     writeBlocks();
     createDepthPipelines(ctx);
@@ -218,34 +191,16 @@ void ParaboloidVulkan::compile(const VulkanCompileContext& ctx) {
     setPermutationKey(depthKey + "|" + depthKey + "|" + depthKey + "|" + definesKey(lit));
 }
 
-void ParaboloidVulkan::beginLayer(VulkanFrameContext& ctx, int layer) {
-    VkClearValue clear{};
-    clear.depthStencil = {1.0f, 0};
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = mDepthPass;
-    begin.framebuffer = mFramebuffers[size_t(layer)];
-    begin.renderArea.extent = {uint32_t(mSize), uint32_t(mSize)};
-    begin.clearValueCount = 1;
-    begin.pClearValues = &clear;
-    vkCmdBeginRenderPass(ctx.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {uint32_t(mSize), uint32_t(mSize)}};
-    vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
-    vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
-}
-
 void ParaboloidVulkan::bindSlot(VulkanFrameContext& ctx, uint32_t slot) {
     ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
-    const uint32_t offset = mSlotStride * slot;
-    const VkDescriptorSet set = mSets.set(kDepthSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &set, 1, &offset);
+    mMaps.slots().bind(ctx.cmd, mDepthLayout, mSets.set(kDepthSet), slot);
 }
 
 void ParaboloidVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
     // As OmniLightsGL's renderOmniFlatMaps: each flat map cleared, its casters culled against its frustum.
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Flat || o.index >= mFlatCount) continue;
-        beginLayer(ctx, flatBase() + o.index);
+        mMaps.begin(ctx.cmd, size_t(flatBase() + o.index));
         vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mFlatDepth);
         bindSlot(ctx, flatSlot(o.index));
         mCulled += mLights.cullFlatCasters(o, mCulling, mKeep);
@@ -273,7 +228,7 @@ void ParaboloidVulkan::renderHemispheres(VulkanFrameContext& ctx) {
     for (const OmniLight& o : mLights.lights()) {
         if (o.kind != OmniMapKind::Omni || o.index >= mOmniCount) continue;
         for (int half = 0; half < 2; ++half) {
-            beginLayer(ctx, 2 * o.index + half); // cleared, as DepthLayers::beginLayer
+            mMaps.begin(ctx.cmd, size_t(2 * o.index + half)); // cleared, as DepthLayers::beginLayer
             const size_t kept = mOmniCulling.cullHemisphere(o.point.position, o.point.farZ,
                                                             Paraboloid::hemisphereAxis(half), mKeep);
             mCulled += mOmniCulling.casters() - kept;

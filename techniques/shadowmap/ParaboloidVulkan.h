@@ -28,10 +28,10 @@
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/shadowmap/ParaboloidSplitting.h"
+#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
-#include "vk/VulkanImage.h"
 
 namespace sb {
 
@@ -50,11 +50,9 @@ public:
 private:
     void release();
     void checkFeatures(const VulkanContext& context) const;
-    void createMaps(VulkanContext& context);
     void createDescriptors(VulkanContext& context);
     void createDepthPipelines(const VulkanCompileContext& ctx);
     void writeBlocks();
-    void beginLayer(VulkanFrameContext& ctx, int layer);
     void bindSlot(VulkanFrameContext& ctx, uint32_t slot);
     void renderDepth(VulkanFrameContext& ctx);
     void renderFlatMaps(VulkanFrameContext& ctx);
@@ -79,13 +77,8 @@ private:
     size_t mCulled = 0, mSplitDrawn = 0;
     int mHemispheresRendered = 0;
 
-    VulkanImage mMaps;
-    std::vector<VkFramebuffer> mFramebuffers; ///< per layer
-    VkRenderPass mDepthPass = VK_NULL_HANDLE;
-    VkSampler mSampler = VK_NULL_HANDLE;
-    VulkanBuffer mPassSlots; ///< LightPass or ParaboloidPass slots
-    uint32_t mSlotStride = 0;
-    VulkanBuffer mLightingBlock;                             ///< omni_lighting.glsl's block
+    VulkanDepthMapSet mMaps;     ///< the layers, and LightPass or ParaboloidPass slots
+    VulkanBuffer mLightingBlock; ///< omni_lighting.glsl's block
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;

@@ -6,7 +6,6 @@
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -23,20 +22,14 @@ struct BlockLayout {
     uint32_t light, search, blockerKernel, filterKernel, taps, size;
 };
 
-/// The search's and the filter's sampler: clamped to an opaque white border (depth 1, no caster outside
-/// the map, as GL's border colour), nearest raw depths or a linear LEQUAL comparison.
-VkSampler createSampler(VkDevice device, bool compare) {
-    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    s.magFilter = s.minFilter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-    s.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    s.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
-    s.compareEnable = compare ? VK_TRUE : VK_FALSE;
-    s.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    s.maxLod = 0.0f;
-    VkSampler sampler = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateSampler(device, &s, nullptr, &sampler), "vkCreateSampler (pcss)");
-    return sampler;
+/// The search's and the filter's sampling: clamped to an opaque white border (depth 1, no caster
+/// outside the map, as GL's border colour), nearest raw depths or a linear LEQUAL comparison.
+LayerPasses::Sampling sampling(bool compare) {
+    LayerPasses::Sampling s;
+    s.filter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    s.whiteBorder = true;
+    s.compare = compare;
+    return s;
 }
 } // namespace
 
@@ -48,18 +41,11 @@ PcssVulkan::~PcssVulkan() {
 
 void PcssVulkan::release() {
     if (!mDevice) return;
-    for (VkFramebuffer f : mFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
-    mFramebuffers.clear();
-    vkDestroyRenderPass(mDevice, mDepthPass, nullptr);
-    vkDestroySampler(mDevice, mSearchSampler, nullptr);
-    vkDestroySampler(mDevice, mCompareSampler, nullptr);
     vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
     vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
-    mDepthPass = VK_NULL_HANDLE;
-    mSearchSampler = mCompareSampler = VK_NULL_HANDLE;
     mSets = DescriptorSets();
     mDepthLayout = mLightingLayout = VK_NULL_HANDLE;
-    mMaps = VulkanImage();
+    mMaps = VulkanDepthMapSet();
 }
 
 void PcssVulkan::setScene(const Scene& scene) {
@@ -80,18 +66,10 @@ void PcssVulkan::fitLightSizes(const Scene& scene) {
                                             float(properties().getFloat(Pcss::kLightSize))));
 }
 
-void PcssVulkan::createMaps(VulkanContext& context) {
-    const VkFormat format = VulkanDepthMaps::format(context.physicalDevice());
-    mMaps = VulkanDepthMaps::image(context, format, uint32_t(mSize), uint32_t(mLayers), false);
-    mDepthPass = VulkanDepthMaps::renderPass(mDevice, format);
-    for (int i = 0; i < mLayers; ++i)
-        mFramebuffers.push_back(
-            VulkanDepthMaps::framebuffer(mDevice, mDepthPass, mMaps.layerView(uint32_t(i)), uint32_t(mSize)));
-}
-
 void PcssVulkan::createDescriptors(VulkanContext& context) {
-    mSearchSampler = createSampler(mDevice, false);
-    mCompareSampler = createSampler(mDevice, true);
+    const VkSampler search = mMaps.addSampler(sampling(false), "pcss");
+    const VkSampler compare = mMaps.addSampler(sampling(true), "pcss");
+    mMaps.createSlots(context, sizeof(glm::mat4), uint32_t(mLayers));
     // Set 1 of the depth pass: the light's matrix, one dynamic slot per light (LightPass). Set 1 of the
     // lighting pass: the block and the map through each sampler.
     using D = DescriptorSets;
@@ -103,20 +81,16 @@ void PcssVulkan::createDescriptors(VulkanContext& context) {
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
           D::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         "pcss");
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mLightStride = uint32_t((sizeof(glm::mat4) + align - 1) / align * align);
-    mLightPass = VulkanBuffer(context, VkDeviceSize(mLightStride) * uint32_t(mLayers),
-                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     const BlockLayout block{uint32_t(mLayers)};
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mLightPass.buffer(),
-                      sizeof(glm::mat4));
+    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mMaps.slots().buffer(),
+                      mMaps.slots().bytes());
     mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
                       block.size);
     const VkImageLayout layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
-    mSets.writeImage(kLightingSet, 1, mSearchSampler, mMaps.view(), layout);
-    mSets.writeImage(kLightingSet, 2, mCompareSampler, mMaps.view(), layout);
+    mSets.writeImage(kLightingSet, 1, search, mMaps.view(), layout);
+    mSets.writeImage(kLightingSet, 2, compare, mMaps.view(), layout);
 }
 
 void PcssVulkan::writeBlocks() {
@@ -138,10 +112,9 @@ void PcssVulkan::writeBlocks() {
     const glm::ivec2 taps(int(mBlockerKernel.size()), int(mFilterKernel.size()));
     std::memcpy(base + block.taps, &taps, sizeof taps);
     // The depth pass's light matrices: Vulkan's depth range, no flip (VulkanFrameBlock::depthFromGl).
-    char* lights = static_cast<char*>(mLightPass.map());
     for (size_t i = 0; i < mLights.viewProj().size() && i < size_t(mLayers); ++i) {
         const glm::mat4 m = VulkanFrameBlock::depthFromGl() * mLights.viewProj()[i];
-        std::memcpy(lights + mLightStride * i, &m, sizeof m);
+        mMaps.slots().write(i, &m, sizeof m);
     }
 }
 
@@ -151,7 +124,7 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     const PropertySet& p = properties();
     mLayers = std::max<int>(1, int(mLights.size()));
     mSize = int(p.getInt(P::kResolution));
-    createMaps(ctx.context);
+    mMaps = VulkanDepthMapSet(ctx.context, uint32_t(mSize), uint32_t(mLayers), uint32_t(mLayers));
     createDescriptors(ctx.context);
     mBlockerKernel = PoissonDisk::generate(int(p.getInt(Pcss::kBlockerTaps)));
     mFilterKernel = PoissonDisk::generate(int(p.getInt(Pcss::kFilterTaps)), Pcss::filterSeed());
@@ -161,15 +134,10 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    std::string depthKey = "pcss-depth|bias=" + std::to_string(p.getFloat(P::kBiasSlope)) + "," +
-                           std::to_string(p.getFloat(P::kBiasConstant)) + "|";
+    std::string depthKey = "pcss-depth" + VulkanDepthMapSet::biasKey(p);
     GraphicsPipelineDesc depth =
         scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
-    depth.depthBias = true;
-    depth.depthBiasSlope = float(p.getFloat(P::kBiasSlope));
-    depth.depthBiasConstant = float(p.getFloat(P::kBiasConstant));
-    depth.colourAttachments = 0;
-    depth.renderPass = mDepthPass;
+    mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 
     // Lighting pass: the GL form's defines.
@@ -186,28 +154,14 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
 
 void PcssVulkan::renderDepth(VulkanFrameContext& ctx) {
     mCulled = 0;
-    VkClearValue clear{};
-    clear.depthStencil = {1.0f, 0};
-    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {uint32_t(mSize), uint32_t(mSize)}};
     const VkDescriptorSet depthSet = mSets.set(kDepthSet);
     for (size_t i = 0; i < mLights.viewProj().size(); ++i) {
         if (!mLights.castsShadow(i)) continue;
         mCulled += mLights.cullCasters(i, mCulling, mKeep, nullptr);
-        VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-        begin.renderPass = mDepthPass;
-        begin.framebuffer = mFramebuffers[i];
-        begin.renderArea.extent = {uint32_t(mSize), uint32_t(mSize)};
-        begin.clearValueCount = 1;
-        begin.pClearValues = &clear;
-        vkCmdBeginRenderPass(ctx.cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-        vkCmdSetViewport(ctx.cmd, 0, 1, &viewport);
-        vkCmdSetScissor(ctx.cmd, 0, 1, &scissor);
+        mMaps.begin(ctx.cmd, i);
         vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthPipeline);
         ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
-        const uint32_t offset = mLightStride * uint32_t(i);
-        vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthLayout, 1, 1, &depthSet, 1,
-                                &offset);
+        mMaps.slots().bind(ctx.cmd, mDepthLayout, depthSet, i);
         ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }

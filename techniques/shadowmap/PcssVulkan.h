@@ -17,10 +17,10 @@
 #include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
+#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
-#include "vk/VulkanImage.h"
 
 namespace sb {
 
@@ -37,7 +37,6 @@ public:
 
 private:
     void release();
-    void createMaps(VulkanContext& context);
     void createDescriptors(VulkanContext& context);
     void fitLightSizes(const Scene& scene); ///< mParams for the current fits and light_size
     void writeBlocks();                     ///< the lighting block and the depth pass's light slots
@@ -50,12 +49,7 @@ private:
     std::vector<uint8_t> mKeep;
     size_t mCulled = 0;
     int mSize = 0, mLayers = 0;
-    VulkanImage mMaps;
-    std::vector<VkFramebuffer> mFramebuffers; ///< per layer
-    VkRenderPass mDepthPass = VK_NULL_HANDLE;
-    VkSampler mSearchSampler = VK_NULL_HANDLE, mCompareSampler = VK_NULL_HANDLE;
-    VulkanBuffer mLightPass; ///< LightPass slots, one per light
-    uint32_t mLightStride = 0;
+    VulkanDepthMapSet mMaps;                                 ///< a layer and a LightPass slot per light
     VulkanBuffer mLightingBlock;                             ///< pcss.frag's ShadowMapBlock
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;

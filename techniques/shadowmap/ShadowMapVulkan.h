@@ -15,10 +15,10 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
-#include "vk/VulkanImage.h"
 
 namespace sb {
 
@@ -34,7 +34,6 @@ public:
 
 private:
     void release();
-    void createMaps(VulkanContext& context, int size, int layers);
     void createDescriptors(VulkanContext& context);
     void fitTexels(const Scene& scene);
     void writeLightingBlock(float targetHeight);
@@ -46,12 +45,7 @@ private:
     std::vector<uint8_t> mKeep;
     size_t mCulled = 0;
     int mSize = 0, mLayers = 0;
-    VulkanImage mMaps;
-    std::vector<VkFramebuffer> mFramebuffers; ///< per layer
-    VkRenderPass mDepthPass = VK_NULL_HANDLE;
-    VkSampler mSampler = VK_NULL_HANDLE;
-    VulkanBuffer mLightPass; ///< LightPass slots, one per light
-    uint32_t mLightStride = 0;
+    VulkanDepthMapSet mMaps;                                 ///< a layer and a LightPass slot per light
     VulkanBuffer mLightingBlock;                             ///< ShadowMapBlock
     static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
     DescriptorSets mSets;

@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/VulkanDepthMaps.h"
 
+#include "vk/LayerPasses.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
@@ -84,29 +85,14 @@ VkRenderPass VulkanDepthMaps::renderPass(VkDevice device, VkFormat format) {
 
 VkFramebuffer VulkanDepthMaps::framebuffer(VkDevice device, VkRenderPass pass, VkImageView view,
                                            uint32_t size, uint32_t layers) {
-    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    info.renderPass = pass;
-    info.attachmentCount = 1;
-    info.pAttachments = &view;
-    info.width = info.height = size;
-    info.layers = layers;
-    VkFramebuffer fb = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateFramebuffer(device, &info, nullptr, &fb),
-                         "vkCreateFramebuffer (shadow map)");
-    return fb;
+    return LayerPasses::framebuffer(device, pass, view, size, layers, "shadow map");
 }
 
 VkSampler VulkanDepthMaps::sampler(VkDevice device, bool compare) {
-    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    s.magFilter = s.minFilter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-    s.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    s.compareEnable = compare ? VK_TRUE : VK_FALSE;
-    s.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    s.maxLod = 0.0f;
-    VkSampler sampler = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateSampler(device, &s, nullptr, &sampler), "vkCreateSampler (shadow map)");
-    return sampler;
+    LayerPasses::Sampling s;
+    s.filter = compare ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+    s.compare = compare;
+    return LayerPasses::sampler(device, s, "shadow map");
 }
 
 } // namespace sb

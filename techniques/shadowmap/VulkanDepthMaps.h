@@ -1,8 +1,8 @@
 #pragma once
-// The depth maps of the shadow-map family on Vulkan (techniques/shadowmap/DepthLayers.h on GL), shared
-// by ShadowMapVulkan and CubeMapVulkan: the map format, an image of layers cleared to "lit", the render
-// pass a depth layer is drawn with, a layer's framebuffer, and the sampler the lighting pass compares
-// through.
+// The depth maps of the shadow-map family on Vulkan (techniques/shadowmap/DepthLayers.h on GL), put
+// together by VulkanDepthMapSet (the moment maps take the format): the map format, an image of layers
+// cleared to "lit", the render pass a depth layer is drawn with, a layer's framebuffer, and the sampler
+// the lighting pass compares through.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>

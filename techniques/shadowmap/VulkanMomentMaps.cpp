@@ -6,6 +6,7 @@
 #include "scenes/ShadowWork.h"
 #include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
+#include "vk/LayerPasses.h"
 
 namespace sb {
 
@@ -148,12 +149,7 @@ void VulkanMomentMaps::createImages(VulkanContext& context) {
 
 void VulkanMomentMaps::createDescriptors(VulkanContext& context) {
     // Bilinear, clamp to edge, as GL's texture parameters.
-    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    s.magFilter = s.minFilter = VK_FILTER_LINEAR;
-    s.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    s.maxLod = 0.0f;
-    VulkanContext::check(vkCreateSampler(mDevice, &s, nullptr, &mSampler), "vkCreateSampler (moments)");
+    mSampler = LayerPasses::sampler(mDevice, LayerPasses::Sampling{}, "moments");
     using D = DescriptorSets;
     const VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     mSets = DescriptorSets(
@@ -162,8 +158,7 @@ void VulkanMomentMaps::createDescriptors(VulkanContext& context) {
          {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, both),
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
         mOwner.c_str());
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mLightStride = uint32_t((kLightPassBytes + align - 1) / align * align);
+    mLightStride = context.uniformStride(kLightPassBytes);
     mLightPass = VulkanBuffer(context, VkDeviceSize(mLightStride) * uint32_t(mLayers),
                               VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightPass.map(), 0, size_t(mLightStride) * uint32_t(mLayers));

@@ -23,8 +23,7 @@ glm::mat4 VulkanFrameBlock::depthFromGl() {
 }
 
 VulkanFrameBlock::VulkanFrameBlock(VulkanContext& context) : mDevice(context.device()) {
-    const VkDeviceSize align = context.properties().limits.minUniformBufferOffsetAlignment;
-    mStride = uint32_t((sizeof(FrameUniformData) + align - 1) / align * align);
+    mStride = context.uniformStride(sizeof(FrameUniformData));
     mBuffer = VulkanBuffer(context, VkDeviceSize(mStride) * kSlots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 
     mSets =

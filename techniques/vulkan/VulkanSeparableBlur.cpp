@@ -7,68 +7,11 @@
 #include "techniques/GaussianKernel.h"
 #include "techniques/vulkan/VulkanPipelineCache.h"
 #include "vk/GraphicsPipeline.h"
+#include "vk/LayerPasses.h"
 #include "vk/ShaderModuleCache.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
-
-namespace {
-/// One colour attachment of `format`, overwritten whole (its old contents not loaded), left
-/// SHADER_READ_ONLY for the next pass that samples it; with the dependencies on the reads before it
-/// (the source a previous pass sampled) and the reads after it.
-VkRenderPass createPass(VkDevice device, VkFormat format) {
-    VkAttachmentDescription a{};
-    a.format = format;
-    a.samples = VK_SAMPLE_COUNT_1_BIT;
-    a.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    a.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription sub{};
-    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    sub.colorAttachmentCount = 1;
-    sub.pColorAttachments = &ref;
-    VkSubpassDependency deps[2]{};
-    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    deps[0].dstSubpass = 0;
-    deps[0].srcStageMask =
-        VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[1].srcSubpass = 0;
-    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &a;
-    info.subpassCount = 1;
-    info.pSubpasses = &sub;
-    info.dependencyCount = 2;
-    info.pDependencies = deps;
-    VkRenderPass pass = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass (blur)");
-    return pass;
-}
-
-VkFramebuffer createFramebuffer(VkDevice device, VkRenderPass pass, VkImageView view, uint32_t size) {
-    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    info.renderPass = pass;
-    info.attachmentCount = 1;
-    info.pAttachments = &view;
-    info.width = info.height = size;
-    info.layers = 1;
-    VkFramebuffer fb = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateFramebuffer(device, &info, nullptr, &fb), "vkCreateFramebuffer (blur)");
-    return fb;
-}
-} // namespace
 
 VulkanSeparableBlur::~VulkanSeparableBlur() {
     release();
@@ -99,19 +42,21 @@ void VulkanSeparableBlur::createTargets(VulkanContext& context, VulkanImage& arr
     d.format = mSettings.format;
     d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     mIntermediate = VulkanImage(context, d);
-    mPass = createPass(mDevice, mSettings.format);
-    mIntermediateFramebuffer = createFramebuffer(mDevice, mPass, mIntermediate.view(), size);
+    // Each pass overwrites its target whole: its old contents are not loaded.
+    mPass = LayerPasses::colourPass(mDevice, mSettings.format, VK_ATTACHMENT_LOAD_OP_DONT_CARE, "blur");
+    mIntermediateFramebuffer =
+        LayerPasses::framebuffer(mDevice, mPass, mIntermediate.view(), size, 1, "blur");
     for (uint32_t i = 0; i < array.desc().layers; ++i)
-        mLayerFramebuffers.push_back(createFramebuffer(mDevice, mPass, array.layerView(i), size));
+        mLayerFramebuffers.push_back(
+            LayerPasses::framebuffer(mDevice, mPass, array.layerView(i), size, 1, "blur"));
 }
 
 void VulkanSeparableBlur::createDescriptors(VulkanContext& context, VulkanImage& array,
                                             const std::vector<float>& weights) {
     // Both passes read with texelFetch: the sampler's filter is never used.
-    VkSamplerCreateInfo s{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    s.magFilter = s.minFilter = VK_FILTER_NEAREST;
-    s.addressModeU = s.addressModeV = s.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    VulkanContext::check(vkCreateSampler(mDevice, &s, nullptr, &mSampler), "vkCreateSampler (blur)");
+    LayerPasses::Sampling nearest;
+    nearest.filter = VK_FILTER_NEAREST;
+    mSampler = LayerPasses::sampler(mDevice, nearest, "blur");
     using D = DescriptorSets;
     const D::Bindings bindings = {
         D::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),

@@ -1,0 +1,116 @@
+#include "techniques/shadowmap/VulkanDepthMapSet.h"
+
+#include <utility>
+
+#include "techniques/PropertySet.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/shadowmap/VulkanDepthMaps.h"
+#include "vk/VulkanContext.h"
+
+namespace sb {
+
+VulkanDepthMapSet::VulkanDepthMapSet(VulkanContext& context, uint32_t size, uint32_t layers, uint32_t drawn,
+                                     bool cube)
+    : mDevice(context.device()), mSize(size), mLayers(layers),
+      mFormat(VulkanDepthMaps::format(context.physicalDevice())) {
+    mImage = VulkanDepthMaps::image(context, mFormat, size, layers, cube);
+    mPass = VulkanDepthMaps::renderPass(mDevice, mFormat);
+    for (uint32_t i = 0; i < drawn; ++i)
+        mFramebuffers.push_back(VulkanDepthMaps::framebuffer(mDevice, mPass, mImage.layerView(i), size));
+}
+
+VulkanDepthMapSet::~VulkanDepthMapSet() {
+    release();
+}
+
+VulkanDepthMapSet::VulkanDepthMapSet(VulkanDepthMapSet&& other) noexcept {
+    *this = std::move(other);
+}
+
+VulkanDepthMapSet& VulkanDepthMapSet::operator=(VulkanDepthMapSet&& other) noexcept {
+    if (this == &other) return *this;
+    release();
+    mDevice = std::exchange(other.mDevice, VK_NULL_HANDLE);
+    mSize = other.mSize;
+    mLayers = other.mLayers;
+    mFormat = other.mFormat;
+    mImage = std::move(other.mImage);
+    mPass = std::exchange(other.mPass, VK_NULL_HANDLE);
+    mFramebuffers = std::exchange(other.mFramebuffers, {});
+    mLayersView = std::exchange(other.mLayersView, VK_NULL_HANDLE);
+    mSamplers = std::exchange(other.mSamplers, {});
+    mSlots = std::move(other.mSlots);
+    return *this;
+}
+
+void VulkanDepthMapSet::release() {
+    if (!mDevice) return;
+    for (VkFramebuffer f : mFramebuffers) vkDestroyFramebuffer(mDevice, f, nullptr);
+    for (VkSampler s : mSamplers) vkDestroySampler(mDevice, s, nullptr);
+    vkDestroyImageView(mDevice, mLayersView, nullptr);
+    vkDestroyRenderPass(mDevice, mPass, nullptr);
+    mFramebuffers.clear();
+    mSamplers.clear();
+    mLayersView = VK_NULL_HANDLE;
+    mPass = VK_NULL_HANDLE;
+    mSlots = UniformSlots();
+    mImage = VulkanImage();
+    mDevice = VK_NULL_HANDLE;
+}
+
+size_t VulkanDepthMapSet::addLayeredFramebuffer() {
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = mImage.image();
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    info.format = mFormat;
+    info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, mLayers};
+    VulkanContext::check(vkCreateImageView(mDevice, &info, nullptr, &mLayersView),
+                         "vkCreateImageView (depth map layers)");
+    mFramebuffers.push_back(VulkanDepthMaps::framebuffer(mDevice, mPass, mLayersView, mSize, mLayers));
+    return mFramebuffers.size() - 1;
+}
+
+VkSampler VulkanDepthMapSet::addSampler(const LayerPasses::Sampling& sampling, const char* what) {
+    mSamplers.push_back(LayerPasses::sampler(mDevice, sampling, what));
+    return mSamplers.back();
+}
+
+VkSampler VulkanDepthMapSet::addSampler(bool compare) {
+    mSamplers.push_back(VulkanDepthMaps::sampler(mDevice, compare));
+    return mSamplers.back();
+}
+
+void VulkanDepthMapSet::createSlots(VulkanContext& context, VkDeviceSize bytes, uint32_t count) {
+    mSlots = UniformSlots(context, bytes, count);
+}
+
+void VulkanDepthMapSet::depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const {
+    desc.depthBias = true;
+    desc.depthBiasSlope = float(properties.getFloat(ShadowMapProperties::kBiasSlope));
+    desc.depthBiasConstant = float(properties.getFloat(ShadowMapProperties::kBiasConstant));
+    desc.colourAttachments = 0;
+    desc.renderPass = mPass;
+}
+
+std::string VulkanDepthMapSet::biasKey(const PropertySet& properties) {
+    return "|bias=" + std::to_string(properties.getFloat(ShadowMapProperties::kBiasSlope)) + "," +
+           std::to_string(properties.getFloat(ShadowMapProperties::kBiasConstant)) + "|";
+}
+
+void VulkanDepthMapSet::begin(VkCommandBuffer cmd, size_t index) const {
+    VkClearValue clear{};
+    clear.depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    info.renderPass = mPass;
+    info.framebuffer = mFramebuffers[index];
+    info.renderArea.extent = {mSize, mSize};
+    info.clearValueCount = 1;
+    info.pClearValues = &clear;
+    vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
+    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {mSize, mSize}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+} // namespace sb
