@@ -167,7 +167,9 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "write every shader stage as compiled to DIR/technique/program/permutation/stage.ext");
     app.add_flag("--no-timer-check", raw.noTimerCheck,
                  "skip the GPU-timer trust calibration (verdict: unchecked)");
-    app.add_option("--max-memory-gib", raw.maxMemoryGiB, "refuse scenes estimated above this memory")
+    app.add_option(
+           "--max-memory-gib", raw.maxMemoryGiB,
+           "refuse a run whose estimated memory (scene, model file, frame targets, technique) exceeds this")
         ->capture_default_str();
     app.add_flag("-q,--quiet", c.quiet, "print only the table");
     app.add_flag("--strict-effects", c.strictEffects,
