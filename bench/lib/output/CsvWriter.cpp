@@ -206,6 +206,12 @@ CsvTable CsvWriter::readTable(CsvReader& reader, const std::function<bool(const 
             kept.push_back(i);
             table.header.push_back(header[i]);
         }
+    // A header none of whose columns is wanted keeps its first: the table still reads as a table of
+    // other columns (compare then says it is no result table), not as an empty file.
+    if (kept.empty() && !header.empty()) {
+        kept.push_back(0);
+        table.header.push_back(header[0]);
+    }
     std::vector<std::string> record;
     while (reader.next(record)) {
         if (record.size() != header.size())

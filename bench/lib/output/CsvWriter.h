@@ -4,9 +4,9 @@
 // (bench/lib/output/AtomicFile.h) only the header is read. When every new row's columns are in it and no
 // cell holds a line break, the rows are appended in place (one write at the end, fsync; cells of the
 // header's other columns empty): a crash then leaves the old rows whole plus at most a partial last line,
-// which the next append cuts and readers skip with a warning (bench/lib/output/CsvReader.h). Rows with new columns
-// widen the header (the union of old and new columns, in first-seen order; cells of missing columns stay
-// empty) and the file is rewritten, streamed row by row, through a temp file, fsync and rename: a crash
+// which the next append cuts and readers skip with a warning (bench/lib/output/CsvReader.h). Rows with new
+// columns widen the header (the union of old and new columns, in first-seen order; cells of missing columns
+// stay empty) and the file is rewritten, streamed row by row, through a temp file, fsync and rename: a crash
 // then leaves either the old or the new file. Two processes appending to one file both keep their rows.
 // Quoting follows RFC 4180 (fields with , " CR LF are quoted, quotes doubled).
 #include <algorithm>
@@ -49,7 +49,8 @@ public:
     /// Parses a CSV file written by appendRows (RFC 4180). Throws on a missing file, a device or ragged
     /// rows (a FIFO is read to its end).
     static CsvTable read(const std::string& path);
-    /// The same keeping only the columns `keep` accepts (compare needs a few of many columns).
+    /// The same keeping only the columns `keep` accepts (compare needs a few of many columns); a header
+    /// none of whose columns it accepts keeps its first, so the file never reads as empty.
     static CsvTable read(const std::string& path, const std::function<bool(const std::string&)>& keep);
     /// The rest of `reader` as a table (header first), keeping the columns `keep` accepts.
     static CsvTable readTable(CsvReader& reader, const std::function<bool(const std::string&)>& keep);
