@@ -57,13 +57,6 @@ std::string numberList(int from, int n) {
     return list;
 }
 
-/// `command` for `sh -c '...'`.
-std::string shellQuoted(const std::string& command) {
-    std::string q = "'";
-    for (char ch : command) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-}
-
 /// A setup that writes one file into the scratch folder.
 std::function<bool(const std::string&)> file(const std::string& name, std::string text) {
     return [name, text](const std::string& dir) {
@@ -392,7 +385,7 @@ TEST(BadInputCli, EveryClassOfBadInputIsOneLineAndExitTwoAndLosesNothing) {
         std::string command = "cd " + dir + " && " + SB_BENCH_BINARY + " " + args + appended + " 2>" + err +
                               (c.closeStdout ? " >&-" : " >/dev/null");
         // A hung run (the FIFO case before the fix) is a failure, not a hang of the suite.
-        const int code = test::runCommand("timeout 60 sh -c " + shellQuoted(command)).exitCode;
+        const int code = test::runCommand("timeout 60 sh -c " + test::shellQuoted(command)).exitCode;
         ++tried;
         const std::vector<std::string> stderrLines = lines(test::readFile(err));
         bool ok = true;

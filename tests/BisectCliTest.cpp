@@ -25,17 +25,11 @@ void PrintTo(const BadBisect& c, std::ostream* os) {
 
 class BisectCli : public ::testing::TestWithParam<BadBisect> {};
 
-std::string shellQuoted(const std::string& s) {
-    std::string q = "'";
-    for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-}
-
 } // namespace
 
 TEST_P(BisectCli, RefusesWithExitTwoAndOneLine) {
     const BadBisect& c = GetParam();
-    const std::string src = shellQuoted(test::sourceDir());
+    const std::string src = test::shellQuoted(test::sourceDir());
     const auto r = test::runCommand(std::string(test::benchBinary()) + " bisect " + c.args + " --repo " +
                                     src + " --suite " + src + "/results/ci/suite.json");
     EXPECT_EQ(r.exitCode, 2) << r.output;
@@ -50,12 +44,12 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BadBisect{"unknown_commit", "no-such-commit-0f3e HEAD -c none_aircraft",
                                 "unknown commit 'no-such-commit-0f3e'"},
                       BadBisect{"good_not_ancestor",
-                                "HEAD $(git -C " + shellQuoted(test::sourceDir()) +
+                                "HEAD $(git -C " + test::shellQuoted(test::sourceDir()) +
                                     " rev-list --max-parents=0 HEAD | head -1) -c none_aircraft",
                                 "is not an ancestor"},
                       BadBisect{"same_commit", "HEAD HEAD -c none_aircraft", "same commit"},
                       BadBisect{"no_such_config",
-                                "$(git -C " + shellQuoted(test::sourceDir()) +
+                                "$(git -C " + test::shellQuoted(test::sourceDir()) +
                                     " rev-list --max-parents=0 HEAD | head -1) HEAD -c no_such_config",
                                 "no configuration 'no_such_config'"}),
     [](const ::testing::TestParamInfo<BadBisect>& p) { return std::string(p.param.name); });

@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <string>
@@ -41,6 +42,29 @@ protected:
         for (const auto& e : fs::directory_iterator(mDir)) out.push_back(e.path().filename().string());
         std::sort(out.begin(), out.end());
         return out;
+    }
+    /// Forks a writer that calls `append(0)`, `append(1)`, ... until it is killed; once its first append
+    /// is complete (it says so through a pipe, so a slow start is never killed before any write), waits
+    /// `delay` and sends SIGKILL. False when the writer never completed an append.
+    static bool killWriterMidway(const std::function<void(int)>& append, useconds_t delay) {
+        int ready[2];
+        if (::pipe(ready) != 0) return false;
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            ::close(ready[0]);
+            for (int i = 0;; ++i) {
+                append(i);
+                if (i == 0 && (::write(ready[1], "x", 1) != 1 || ::close(ready[1]) != 0)) ::_exit(1);
+            }
+        }
+        ::close(ready[1]);
+        char byte = 0;
+        const bool started = ::read(ready[0], &byte, 1) == 1;
+        ::close(ready[0]);
+        if (started) ::usleep(delay);
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+        return started;
     }
     /// Forks `writers` processes; writer w appends `rows` rows one call at a time, each naming
     /// (writer, seq) and, for odd writers, an extra column (so header merges race too). Returns the
@@ -121,23 +145,11 @@ TEST_F(CsvConcurrencyTest, KilledWritersNeverPileUpTempFiles) {
     // would test nothing (CI once killed the first writer before the file existed).
     CsvWriter::appendRows(mPath, {{{"a", "seed"}}});
     for (int k = 0; k < 10; ++k) {
-        int ready[2];
-        ASSERT_EQ(::pipe(ready), 0) << std::strerror(errno);
-        pid_t pid = ::fork();
-        if (pid == 0) {
-            ::close(ready[0]);
-            for (int i = 0;; ++i) {
+        const bool started = killWriterMidway(
+            [&](int i) {
                 CsvWriter::appendRows(mPath, {{{"a", std::to_string(i)}}});
-                if (i == 0 && (::write(ready[1], "x", 1) != 1 || ::close(ready[1]) != 0)) ::_exit(1);
-            }
-        }
-        ::close(ready[1]);
-        char byte = 0;
-        const bool started = ::read(ready[0], &byte, 1) == 1;
-        ::close(ready[0]);
-        if (started) ::usleep(useconds_t(300 + 700 * k));
-        ::kill(pid, SIGKILL);
-        ::waitpid(pid, nullptr, 0);
+            },
+            useconds_t(300 + 700 * k));
         ASSERT_TRUE(started) << "writer " << k << " never completed an append";
         EXPECT_LE(names().size(), 2u);
         const CsvTable table = CsvWriter::read(mPath); // never truncated: it parses
@@ -160,24 +172,12 @@ TEST_F(CsvConcurrencyTest, KilledInPlaceAppendsLoseNoRowAndKeepNoPartialRow) {
     CsvWriter::appendRows(mPath, {{{"a", "seed"}, {"b", "0"}}});
     int partial = 0;
     for (int k = 0; k < 6; ++k) {
-        int ready[2];
-        ASSERT_EQ(::pipe(ready), 0) << std::strerror(errno);
-        pid_t pid = ::fork();
-        if (pid == 0) {
-            ::close(ready[0]);
-            for (int i = 0;; ++i) {
+        const bool started = killWriterMidway(
+            [&](int i) {
                 CsvWriter::appendRows(mPath,
                                       {{{"a", std::to_string(k) + "-" + std::to_string(i)}, {"b", big}}});
-                if (i == 0 && (::write(ready[1], "x", 1) != 1 || ::close(ready[1]) != 0)) ::_exit(1);
-            }
-        }
-        ::close(ready[1]);
-        char byte = 0;
-        const bool started = ::read(ready[0], &byte, 1) == 1;
-        ::close(ready[0]);
-        if (started) ::usleep(useconds_t(2000 + 3000 * k));
-        ::kill(pid, SIGKILL);
-        ::waitpid(pid, nullptr, 0);
+            },
+            useconds_t(2000 + 3000 * k));
         ASSERT_TRUE(started) << "writer " << k << " never completed an append";
         const std::string text = test::readFile(mPath);
         partial += !text.empty() && text.back() != '\n';

@@ -30,6 +30,7 @@
 
 namespace fs = std::filesystem;
 using sb::test::runCommand;
+using sb::test::shellQuoted;
 
 namespace {
 
@@ -154,14 +155,8 @@ fs::path makeCheckout(const fs::path& root, const std::string& name) {
     return dir;
 }
 
-std::string shellQuote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
 std::string gitStatus(const fs::path& root) {
-    return runCommand("git -C " + shellQuote(root.string()) + " status --porcelain --untracked-files=all")
+    return runCommand("git -C " + shellQuoted(root.string()) + " status --porcelain --untracked-files=all")
         .output;
 }
 
@@ -283,9 +278,9 @@ TEST(DocsCommandsCli, TheShortCommandsRunAsWritten) {
         for (const auto& c : commands) {
             if (notRunEntry(c.text) || !isShort(c.text)) continue;
             const auto t0 = std::chrono::steady_clock::now();
-            const auto r = runCommand("cd " + shellQuote(dir.string()) + " && PATH=" + shellQuote(path) +
+            const auto r = runCommand("cd " + shellQuoted(dir.string()) + " && PATH=" + shellQuoted(path) +
                                       ":\"$PATH\" timeout " + std::to_string(kCommandLimitS) + " bash -c " +
-                                      shellQuote(c.text) + " </dev/null");
+                                      shellQuoted(c.text) + " </dev/null");
             const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             std::cout << file << ":" << c.line << "  " << s << " s  " << c.text << "\n";
             EXPECT_EQ(r.exitCode, 0) << file << ":" << c.line << ": `" << c.text << "` failed:\n" << r.output;

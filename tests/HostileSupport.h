@@ -18,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "TestSupport.h"
+
 namespace sb::test {
 
 /// A folder on a disk with no room left. Commands meant to run "on" that disk go through wrap().
@@ -48,7 +50,7 @@ public:
     /// not to a file, which the limit would refuse too.
     std::string wrap(const std::string& command) const {
         if (mMounted) return command;
-        return "sh -c " + quoted("trap '' XFSZ; ulimit -f 0; " + command);
+        return "sh -c " + shellQuoted("trap '' XFSZ; ulimit -f 0; " + command);
     }
     /// Creates `name` in the folder with `text` before the disk is "full" (a CSV written earlier):
     /// on the tmpfs the filler is shrunk to make room and grown again afterwards.
@@ -69,11 +71,6 @@ private:
         while (std::fwrite(block, 1, 1, f) == 1 && std::fflush(f) == 0) {
         }
         std::fclose(f);
-    }
-    static std::string quoted(const std::string& s) {
-        std::string q = "'";
-        for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-        return q + "'";
     }
 
     std::string mDir;

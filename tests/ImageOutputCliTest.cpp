@@ -23,13 +23,6 @@ namespace {
 const std::string kQuick = " --scene sphere_plane --size 32x32 --frames 1 --warmup 0 --no-timer-check -q";
 const std::string kPreCsv = "technique,wall_ms_median\nnone,1.5\n";
 
-/// `command` for `sh -c '...'`.
-std::string shellQuoted(const std::string& command) {
-    std::string q = "'";
-    for (char ch : command) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-}
-
 /// A real 2x1 PNG's bytes: the older image that must survive a failed replacement.
 std::string oldPngBytes(const std::string& scratch) {
     const uint8_t grey[2] = {7, 200};
@@ -53,7 +46,7 @@ std::map<std::string, std::string> filesUnder(const std::string& dir) {
 std::pair<int, std::vector<std::string>> runOnDisk(const test::FullDisk& disk, std::string args) {
     for (size_t at; (at = args.find("{dir}")) != std::string::npos;) args.replace(at, 5, disk.dir());
     const std::string inner = std::string(SB_BENCH_BINARY) + " " + args + " 2>&1 >/dev/null";
-    const test::CommandResult r = test::runCommand("sh -c " + shellQuoted(disk.wrap(inner)));
+    const test::CommandResult r = test::runCommand("sh -c " + test::shellQuoted(disk.wrap(inner)));
     std::vector<std::string> lines;
     size_t start = 0;
     for (size_t nl; (nl = r.output.find('\n', start)) != std::string::npos; start = nl + 1)

@@ -77,6 +77,13 @@ inline CommandResult runCommand(const std::string& command) {
     return r;
 }
 
+/// `s` as one word for /bin/sh: single-quoted, each ' written as '\''.
+inline std::string shellQuoted(const std::string& s) {
+    std::string q = "'";
+    for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+}
+
 /// Every row of the CSV at `path`, column name -> cell (a missing cell is the empty string).
 inline std::vector<std::map<std::string, std::string>> csvRowMaps(const std::string& path) {
     const CsvTable t = CsvWriter::read(path);
