@@ -8,14 +8,23 @@
 #   --bench      the quick start (scripts/bench.sh): the bench group of packages and the bench
 #                program alone. It leaves SHADOWBENCH_BUILD_TESTS as the folder has it, so after a
 #                full build it neither drops the tests nor rebuilds anything but bench.
+#   --without-unit-tests
+#                as with no option, but the unit label's test programs are not built: scripts/test.sh's
+#                whole run builds and runs them under the sanitizers instead (scripts/sanitize.sh),
+#                so compiling them here too would only repeat about 150 s of CPU
 # Other arguments go to cmake's configure step.
-# Usage: bash scripts/build.sh [--bench] [cmake configure arguments]
+# Usage: bash scripts/build.sh [--bench | --without-unit-tests] [cmake configure arguments]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bench_only=0
+without_unit=0
 args=()
 for a in "$@"; do
-  if [ "$a" = --bench ]; then bench_only=1; else args+=("$a"); fi
+  case "$a" in
+    --bench) bench_only=1 ;;
+    --without-unit-tests) without_unit=1 ;;
+    *) args+=("$a") ;;
+  esac
 done
 if [ "$bench_only" = 1 ]; then
   bash "$root/scripts/install-deps.sh" bench
@@ -26,4 +35,13 @@ else
   targets=()
 fi
 (cd "$root" && cmake --preset release "${args[@]}" >/dev/null)
+if [ "$bench_only" = 0 ] && [ "$without_unit" = 1 ]; then
+  # Every top-level target but the unit label's test programs: the programs, the files they read, the
+  # manual page, and the test programs of the other labels (tests/CMakeLists.txt writes each test
+  # target's label to build/tests/TestLabels.txt when it configures).
+  targets=(--target bench handloop handshadow sb_runtime_files sb_man_and_completion)
+  while read -r name label; do
+    [ "$label" = unit ] || targets+=("$name")
+  done <"$root/build/tests/TestLabels.txt"
+fi
 cmake --build "$root/build" --parallel "$(nproc)" "${targets[@]}"

@@ -109,7 +109,10 @@ install_driver() {
   local pinned=()
   for p in "${DRIVER_DEBS[@]}"; do pinned+=("$p=$DRIVER_VERSION"); done
   for p in "${DRM_DEBS[@]}"; do pinned+=("$p=$DRM_VERSION"); done
-  if ! apt-cache show "mesa-vulkan-drivers=$DRIVER_VERSION" >/dev/null 2>&1; then
+  # apt-cache show exits 0 for a version it does not know as long as it knows the package (bookworm
+  # carries mesa-vulkan-drivers 22.3.6), so ask whether it printed the record: on a fresh machine the
+  # suite just added has no package lists yet.
+  if ! apt-cache show "mesa-vulkan-drivers=$DRIVER_VERSION" 2>/dev/null | grep -q '^Package:'; then
     as_root apt-get update -qq
   fi
   echo "install-deps: downloading Mesa $DRIVER_VERSION (${DRIVER_DEBS[*]}; ${DRM_DEBS[*]} $DRM_VERSION) into $prefix"
