@@ -126,18 +126,19 @@ std::vector<ShardGap> ShardGaps::compute(const std::vector<RowPlace>& rows, cons
     const bool trusted = groupsRise(groups) && std::all_of(rows.begin(), rows.end(), [&](const RowPlace& r) {
                              return !r.group || shardOf(*r.group) == r.shard;
                          });
-    const std::optional<size_t> size = trusted ? uniformGroupSize(rows, configs) : std::nullopt;
+    // 0: no one group size fits the rows.
+    const size_t size = trusted ? uniformGroupSize(rows, configs).value_or(0) : 0;
     size_t pieces = 0;
     for (const auto& [first, last] : missing) {
-        if (size) {
+        if (size > 0) {
             // One piece per group the gap crosses, each under its group's shard.
             for (size_t start = first; start <= last;) {
                 if (pieces == kMaxPieces) {
                     table.missing(0, start, last);
                     break;
                 }
-                const size_t group = start / *size;
-                const size_t end = std::min(last, (group + 1) * *size - 1);
+                const size_t group = start / size;
+                const size_t end = std::min(last, (group + 1) * size - 1);
                 table.missing(shardOf(group), start, end);
                 ++pieces;
                 start = end + 1;
