@@ -1,7 +1,10 @@
 // `bench merge` (bench/lib/output/CsvMerge.h): shard CSVs of one sweep joined into one file, sorted by
 // config_index with the union of the headers, and every way inputs can fail to fit together refused
-// with a message naming the file. Expected files are written out by hand and compared exactly; every
-// refusal also checks that nothing was written (no output, no temporary file).
+// with a message naming the file, rows of different measurements (commit, CPU model, driver, renderer)
+// among them; what is missing or failed listed under the shard that runs it, checked against the split
+// worked out by hand and against SweepPlan's own. Expected files are written out by hand and compared
+// exactly; every refusal and incomplete merge also checks that nothing was written (no output, no
+// temporary file).
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
