@@ -329,6 +329,32 @@ std::vector<BadInput> table() {
          file("latin.csv", "status,scene,frames,wall_ms_median\nok,caf\xE9,3,1.5\n"),
          false,
          true},
+        // Merges: the shards of one sweep measured on two CPU models, or built from two commits.
+        {"merge of two CPU models",
+         "merge -o {dir}/all.csv {dir}/a.csv {dir}/b.csv",
+         {"cpu_model 'AMD EPYC 7B13' in '{dir}/a.csv:2' but 'Intel Xeon' in '{dir}/b.csv:2'",
+          "--allow-mixed"},
+         2,
+         [](const std::string& dir) {
+             const std::string header = "sweep_id,sweep_configs,config_index,shard,status,cpu_model\n";
+             test::writeFile(dir + "/a.csv", header + "s1,2,0,1/2,ok,AMD EPYC 7B13\n");
+             test::writeFile(dir + "/b.csv", header + "s1,2,1,2/2,ok,Intel Xeon\n");
+             return true;
+         },
+         false,
+         true},
+        {"merge of two commits",
+         "merge -o {dir}/all.csv {dir}/a.csv {dir}/b.csv",
+         {"git_commit 'fd7aef0' in '{dir}/a.csv:2' but 'c2b2495' in '{dir}/b.csv:2'", "--allow-mixed"},
+         2,
+         [](const std::string& dir) {
+             const std::string header = "sweep_id,sweep_configs,config_index,shard,status,git_commit\n";
+             test::writeFile(dir + "/a.csv", header + "s1,2,0,1/2,ok,fd7aef0\n");
+             test::writeFile(dir + "/b.csv", header + "s1,2,1,2/2,ok,c2b2495\n");
+             return true;
+         },
+         false,
+         true},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

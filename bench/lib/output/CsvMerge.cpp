@@ -1,6 +1,7 @@
 #include "bench/lib/output/CsvMerge.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <filesystem>
 #include <map>
@@ -17,7 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kMaxListedMissing = 10; // ranges of missing indices named in the message
 // The sweep refuses more than --max-configs rows (10000 unless raised); a trillion rows at a millisecond
 // each would take 30 years, so a larger sweep_configs is a damaged cell, not a sweep.
 constexpr size_t kMaxSweepConfigs = 1000000000000;
@@ -44,6 +44,12 @@ struct Input {
     SweepColumns columns{};
     std::vector<size_t> lines; ///< the line each row starts on, for messages
 };
+
+std::optional<size_t> optionalColumn(const Input& in, const char* column) {
+    auto it = std::find(in.table.header.begin(), in.table.header.end(), column);
+    if (it == in.table.header.end()) return std::nullopt;
+    return size_t(it - in.table.header.begin());
+}
 
 size_t countNewlines(const std::vector<std::string>& cells) {
     size_t n = 0;
@@ -157,6 +163,7 @@ public:
 
     std::string sweepId() const { return mId ? mId->value : ""; }
     size_t configs() const { return mConfigs ? *parseCount(mConfigs->value) : 0; }
+    size_t shardCount() const { return mShardCount ? *parseCount(mShardCount->value) : 0; }
     const std::map<size_t, std::string>& seenIndices() const { return mWhere; }
 
 private:
@@ -220,19 +227,18 @@ std::vector<std::pair<size_t, size_t>> missingRanges(const SweepCheck& check, si
     return ranges;
 }
 
-std::string rangeText(const std::pair<size_t, size_t>& r) {
-    return r.first == r.second ? std::to_string(r.first)
-                               : std::to_string(r.first) + "-" + std::to_string(r.second);
-}
-
-std::string incompleteMessage(const MergeReport& report) {
-    std::string list;
-    for (size_t i = 0; i < report.missing.size() && i < kMaxListedMissing; ++i)
-        list += (i ? ", " : "") + rangeText(report.missing[i]);
-    if (report.missing.size() > kMaxListedMissing) list += ", ...";
-    return "incomplete: " + std::to_string(report.missingCount) + " of " + std::to_string(report.configs) +
-           " configurations missing (indices " + list +
-           "); rerun the shards that wrote them, or pass --allow-incomplete";
+// The facts only: whether they refuse the merge or warn beside a written one is the caller's to say.
+std::string incompleteText(const MergeReport& report) {
+    std::string text;
+    if (report.missingCount)
+        text = std::to_string(report.missingCount) + " of " + std::to_string(report.configs) +
+               " configurations missing (indices " + ShardGaps::rangesText(report.missing) + ")";
+    if (report.failedRows)
+        text += (text.empty() ? std::to_string(report.failedRows) + " of " + std::to_string(report.configs) +
+                                    " configurations"
+                              : ", " + std::to_string(report.failedRows)) +
+                " failed (indices " + ShardGaps::rangesText(report.failed) + ")";
+    return text;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -272,12 +278,115 @@ CsvTable mergedTable(const std::vector<Input>& inputs) {
     return out;
 }
 
-size_t countFailedRows(const CsvTable& table) {
-    auto status = std::find(table.header.begin(), table.header.end(), col::kStatus);
-    size_t column = size_t(status - table.header.begin());
-    return size_t(std::count_if(table.rows.begin(), table.rows.end(), [&](const auto& row) {
-        return column == table.header.size() || row[column] != col::kStatusOk;
-    }));
+// ---------------------------------------------------------------------------------------------------
+// Outcomes
+
+// Failed unless known to be ok or unsupported: a file without `status` says of no row that it is ok.
+bool rowFailed(const std::vector<std::string>& row, std::optional<size_t> status) {
+    return !status || (row[*status] != col::kStatusOk && row[*status] != col::kStatusUnsupported);
+}
+
+/// Every row's index, group, shard and outcome, for ShardGaps; counts the unsupported rows on the way.
+std::vector<RowPlace> rowPlaces(const std::vector<Input>& inputs, size_t& unsupported) {
+    std::vector<RowPlace> places;
+    unsupported = 0;
+    for (const Input& in : inputs) {
+        const std::optional<size_t> group = optionalColumn(in, col::kConfigGroup);
+        const std::optional<size_t> status = optionalColumn(in, col::kStatus);
+        for (const auto& row : in.table.rows) {
+            RowPlace p;
+            p.index = *parseCount(row[in.columns.index]); // checked by SweepCheck
+            p.group = group ? parseCount(row[*group]) : std::nullopt;
+            p.shard = parseShard(row[in.columns.shard])->index;
+            p.failed = rowFailed(row, status);
+            unsupported += status && row[*status] == col::kStatusUnsupported;
+            places.push_back(p);
+        }
+    }
+    return places;
+}
+
+IndexRanges failedRanges(const std::vector<RowPlace>& places) {
+    std::vector<size_t> indices;
+    for (const RowPlace& p : places)
+        if (p.failed) indices.push_back(p.index);
+    std::sort(indices.begin(), indices.end());
+    IndexRanges ranges;
+    for (size_t i : indices) {
+        if (!ranges.empty() && ranges.back().second + 1 == i)
+            ranges.back().second = i;
+        else
+            ranges.emplace_back(i, i);
+    }
+    return ranges;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Part files
+
+/// A file name with a shard number in it, split around the number: "out/part" + "3" + ".csv".
+struct NameTemplate {
+    std::string before, after;
+    bool operator==(const NameTemplate&) const = default;
+};
+
+/// `path` split around `number` where that number appears in the file name exactly once as a whole
+/// number (not part of a longer run of digits): "run10-part3.csv" with 3 gives "run10-part" and ".csv".
+std::optional<NameTemplate> nameTemplate(const std::string& path, size_t number) {
+    const std::string digits = std::to_string(number);
+    const size_t nameStart = path.size() - fs::path(path).filename().string().size();
+    std::optional<NameTemplate> found;
+    for (size_t i = nameStart; i < path.size();) {
+        if (!std::isdigit(static_cast<unsigned char>(path[i]))) {
+            ++i;
+            continue;
+        }
+        size_t end = i;
+        while (end < path.size() && std::isdigit(static_cast<unsigned char>(path[end]))) ++end;
+        if (path.compare(i, end - i, digits) == 0 && end - i == digits.size()) {
+            if (found) return std::nullopt; // twice: which one is the shard's is not known
+            found = NameTemplate{path.substr(0, i), path.substr(end)};
+        }
+        i = end;
+    }
+    return found;
+}
+
+/// The shard every row of `in` belongs to; nullopt for an empty input or one of several shards.
+std::optional<size_t> onlyShard(const Input& in) {
+    std::optional<size_t> shard;
+    for (const auto& row : in.table.rows) {
+        const size_t i = parseShard(row[in.columns.shard])->index;
+        if (shard && *shard != i) return std::nullopt;
+        shard = i;
+    }
+    return shard;
+}
+
+// A shard that lacks something is rerun into its own part file: the input holding its rows, or, when
+// no input does (the shard never wrote a row), the name the other part files share with the shard's
+// number in it, if they all share one.
+void fillPartFiles(const std::vector<Input>& inputs, std::vector<ShardGap>& gaps) {
+    std::map<size_t, std::string> byShard;
+    std::optional<NameTemplate> shared;
+    bool oneTemplate = true;
+    for (const Input& in : inputs) {
+        const std::optional<size_t> shard = onlyShard(in);
+        if (!shard) continue;
+        byShard.emplace(*shard, in.path);
+        const std::optional<NameTemplate> t = nameTemplate(in.path, *shard);
+        if (!t || (shared && !(*shared == *t))) oneTemplate = false;
+        if (t && !shared) shared = t;
+    }
+    for (ShardGap& gap : gaps) {
+        if (gap.shard == 0) continue;
+        const auto known = byShard.find(gap.shard);
+        gap.partFileIsInput = known != byShard.end();
+        if (gap.partFileIsInput)
+            gap.partFile = known->second;
+        else if (shared && oneTemplate)
+            gap.partFile = shared->before + std::to_string(gap.shard) + shared->after;
+    }
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -312,11 +421,35 @@ VerdictTally tallyVerdicts(const std::vector<Input>& inputs) {
 }
 
 void checkVerdicts(const VerdictTally& tally, const MergeOptions& options) {
-    if (tally.counts.size() < 2 || options.allowMixedTimer) return;
+    if (tally.counts.size() < 2 || options.allowMixedTimer || options.allowMixed) return;
     fail("rows measured under different GPU-timer verdicts: " + inQuotes(tally.counts[0].first) + " in " +
          inQuotes(tally.firstWhere[0]) + " but " + inQuotes(tally.counts[1].first) + " in " +
          inQuotes(tally.firstWhere[1]) +
-         "; rerun the shards on one kind of machine, or pass --allow-mixed-timer to merge them anyway");
+         "; rerun the shards on one kind of machine, or pass --allow-mixed-timer (or --allow-mixed) to merge "
+         "them anyway");
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Identity
+
+/// The sweep_name of the first row that has one.
+std::string firstSweepName(const std::vector<Input>& inputs) {
+    for (const Input& in : inputs)
+        if (const std::optional<size_t> c = optionalColumn(in, col::kSweepName))
+            for (const auto& row : in.table.rows)
+                if (!row[*c].empty()) return row[*c];
+    return "";
+}
+
+/// Refuses rows of different measurements unless told to mix them; returns the mixtures it let through.
+std::vector<Mixture> checkIdentity(const std::vector<Input>& inputs, const MergeOptions& options,
+                                   std::optional<size_t>& hosts) {
+    MeasurementIdentity identity;
+    for (const Input& in : inputs) identity.add(in.table, in.path, in.lines);
+    hosts = identity.hosts();
+    std::vector<Mixture> mixtures = identity.mixtures();
+    if (!mixtures.empty() && !options.allowMixed) fail(MeasurementIdentity::refusal(mixtures));
+    return mixtures;
 }
 
 } // namespace
@@ -336,17 +469,26 @@ MergeReport CsvMerge::merge(const std::vector<std::string>& inputs, const std::s
     MergeReport report;
     report.files = files.size();
     report.sweepId = check.sweepId();
+    report.sweepName = firstSweepName(files);
     report.configs = check.configs();
+    report.shardCount = check.shardCount();
     report.missing = missingRanges(check, report.missingCount);
-    if (report.missingCount && !options.allowIncomplete) fail(incompleteMessage(report));
     const VerdictTally verdicts = tallyVerdicts(files);
     checkVerdicts(verdicts, options);
     report.timerVerdicts = verdicts.counts;
+    report.mixtures = checkIdentity(files, options, report.hosts);
 
-    CsvTable table = mergedTable(files);
-    report.rows = table.rows.size();
-    report.failedRows = countFailedRows(table);
-    CsvWriter::writeTable(output, table);
+    const std::vector<RowPlace> places = rowPlaces(files, report.unsupportedRows);
+    report.rows = places.size();
+    report.failed = failedRanges(places);
+    for (const auto& [first, last] : report.failed) report.failedRows += last - first + 1;
+    report.incomplete = incompleteText(report);
+    report.gaps = ShardGaps::compute(places, report.missing, report.configs, report.shardCount);
+    fillPartFiles(files, report.gaps);
+    if (!report.incomplete.empty() && !options.allowIncomplete) return report; // nothing written
+
+    CsvWriter::writeTable(output, mergedTable(files));
+    report.written = true;
     return report;
 }
 
