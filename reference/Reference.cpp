@@ -14,7 +14,7 @@ namespace {
 std::vector<PropertyDesc> declareProperties() {
     return {
         integer(Reference::kSamples, "64", 1, 4096, "area-light samples per pixel (stratified)"),
-        integer(Reference::kThreads, "0", 0, 256, "tracing threads, 0 = all"),
+        integer(Reference::kThreads, "0", 0, 256, "tracing threads, 0 = the CPUs the process was given"),
         flag(Reference::kHard, "false", "treat area lights as points"),
     };
 }

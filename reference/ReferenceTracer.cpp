@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "core/CpuAllocation.h"
 #include "core/Error.h"
 #include "reference/LightSampler.h"
 
@@ -272,6 +273,10 @@ float ReferenceTracer::originEpsilon(const glm::vec3& p) {
     return std::max(kAbsolute, kRelative * m);
 }
 
+int ReferenceTracer::threadCount(int requested) {
+    return requested > 0 ? requested : allocatedCpuCount();
+}
+
 glm::vec3 ReferenceTracer::seenNormalAt(const GBuffer& gbuffer, size_t pixel) const {
     return gbuffer.seenNormal(pixel,
                               mEmbree.geometricNormal(gbuffer.instance(pixel), gbuffer.primitive[pixel]));
@@ -297,8 +302,7 @@ VisibilityImage ReferenceTracer::trace(const GBuffer& gbuffer, int light, const 
     job.castsShadows = mScene.lights[size_t(light)].castsShadows;
     job.out = &image;
 
-    int threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
-    threads = std::max(1, threads);
+    const int threads = threadCount(options.threads);
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> workers;
     for (int t = 1; t < threads; ++t) workers.emplace_back([&job] { job.work(); });

@@ -45,7 +45,7 @@ class ReferenceTracer {
 public:
     struct Options {
         int softSamples = 64;   ///< per pixel for area lights; rounded up to a square (stratified grid)
-        int threads = 0;        ///< 0 = std::thread::hardware_concurrency()
+        int threads = 0;        ///< 0 = the CPUs the process was given (threadCount)
         uint32_t seed = 1;      ///< jitter of the strata (same seed, same image)
         bool forceHard = false; ///< treat area lights as their centre point
     };
@@ -63,6 +63,10 @@ public:
     /// on float precision) with an absolute floor for points near the origin:
     /// max(1e-4, 2^-18 * max|p_i|), i.e. 32 float ulps of the largest coordinate (the why in the .cpp).
     static float originEpsilon(const glm::vec3& p);
+    /// The threads trace() runs for Options::threads = `requested`: `requested` when above 0, else the
+    /// CPUs of the process's affinity mask (core/CpuAllocation.h), never the node's: a Slurm task or a
+    /// `taskset` pins the process to its share, and more threads than that only take turns on it.
+    static int threadCount(int requested);
 
 private:
     const Scene& mScene;

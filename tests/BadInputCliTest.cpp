@@ -355,6 +355,8 @@ std::vector<BadInput> table() {
          },
          false,
          true},
+        // A sweep's --retry-failed continues a sweep: alone it is refused.
+        {"sweep retry-failed without resume", "sweep -t none --retry-failed", {"--retry-failed", "--resume"}},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

@@ -391,3 +391,24 @@ TEST_F(CsvWriterTest, HeaderMergeIsLinearInTheColumns) {
     const double small = timeOf(10000), large = timeOf(100000);
     EXPECT_LT(large / small, 35.0) << "10^4 columns: " << small << " s, 10^5: " << large << " s";
 }
+
+TEST_F(CsvWriterTest, ReplaceRowsDropsTheAcceptedRowsAndAppendsInOneRewrite) {
+    // A sweep's retry: the failed row of configuration 1 goes, the new row (with a new column) comes,
+    // every other row stays as it was, in its place; the filter sees the file's header and the cells.
+    writeFile(mPath, "index,status\n0,ok\n1,failed\n2,failed\n");
+    const ino_t inode = statOf(mPath).st_ino;
+    CsvWriter::replaceRows(
+        mPath,
+        [](const std::vector<std::string>& header, const std::vector<std::string>& cells) {
+            EXPECT_EQ(header, (std::vector<std::string>{"index", "status"}));
+            return cells[0] == "1" && cells[1] == "failed";
+        },
+        {{{"index", "1"}, {"status", "ok"}, {"wall", "2.5"}}});
+    EXPECT_EQ(readFile(mPath), "index,status,wall\n0,ok,\n2,failed,\n1,ok,2.5\n");
+    EXPECT_NE(statOf(mPath).st_ino, inode) << "a rewrite through the temp file and rename";
+    EXPECT_TRUE(strayFiles().empty());
+    // Nothing to add is nothing done: rows never leave the file without their replacement.
+    CsvWriter::replaceRows(
+        mPath, [](const std::vector<std::string>&, const std::vector<std::string>&) { return true; }, {});
+    EXPECT_EQ(readFile(mPath), "index,status,wall\n0,ok,\n2,failed,\n1,ok,2.5\n");
+}

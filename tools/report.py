@@ -64,7 +64,7 @@ KEY_COLUMNS = [
 # What a row says about the machine and build that measured it.
 ENVIRONMENT_COLUMNS = [
     "api", "api_version", "renderer", "gl_version", "gl_vendor", "backend", "device", "cpu_model", "hw_threads",
-    "lp_num_threads", "git_commit", "timestamp",
+    "lp_num_threads", "host", "slurm_job_id", "slurm_array_task_id", "git_commit", "timestamp",
 ]
 WIDE = 14  # a table with more columns than this shows the key ones, the rest under "all columns"
 

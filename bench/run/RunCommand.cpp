@@ -133,6 +133,7 @@ Refusal refusal(const std::string& technique, const std::string& properties, con
              {col::kProperties, properties},
              {col::kRepeat, std::to_string(round)},
              {col::kBaseline, baseline}};
+    for (auto& column : env.placeColumns()) r.row.push_back(std::move(column));
     for (auto& column : ResultRow::effectColumns(coverage)) r.row.push_back(std::move(column));
     return r;
 }

@@ -29,16 +29,27 @@ Examples:
   bench sweep sweeps/submission.json --csv sub.csv
   bench sweep -t shadowmap:resolution=512,1024,2048 --submit retained,immediate --csv r.csv
   bench sweep sweeps/submission.json --csv sub.csv --resume         continue an interrupted sweep
+  bench sweep sweeps/submission.json --csv sub.csv --resume --retry-failed
+                                                    continue it and run the failed configurations again
   bench sweep sweeps/submission.json --shard 2/4 --csv part2.csv     one of four slices
+  bench sweep sweeps/submission.json --shard 2/4 --csv part2.csv --resume --retry-failed
+                                                    a requeued Slurm task: its slice, failures retried
   parallel bench sweep s.json --shard {}/2 --csv part{}.csv ::: 1 2 && bench merge -o all.csv part1.csv part2.csv
   bench sweep s.json --dry-run                                       list the configurations only
 
-Exit codes: 0 ok, 1 some configurations failed (rows with status=failed say why), 2 bad input,
-130 interrupted (run the same command with --resume to continue).)";
+One process writes a shard of a --csv at a time: it holds the lock <csv>.shard-<i>-of-<N>.lock for
+the whole run (removed at the end; one left by a process that died blocks nothing), and a second run of
+the same shard is refused with the holder's host, pid, Slurm job and start time. Rows record where they
+ran: host, slurm_job_id, slurm_array_task_id, and hw_threads, the CPUs the process was given.
+
+Exit codes: 0 ok, 1 some configurations failed (rows with status=failed say why) or another process is
+writing this shard of --csv (nothing written), 2 bad input (also: --retry-failed without --resume, a
+--csv of another sweep, or --resume of a file written with another --shard split, e.g. 1/4 rows
+resumed as --shard 1/2), 130 interrupted (run the same command with --resume to continue).)";
 
 struct SweepCli {
     std::string file, csv, shard = "1/1", format = "console", name, mode;
-    bool resume = false, dryRun = false, noProgress = false, qualitySweep = false;
+    bool resume = false, retryFailed = false, dryRun = false, noProgress = false, qualitySweep = false;
     std::optional<int64_t> maxConfigs; ///< set only when given: no typed value means "the default"
     std::string driver;                ///< acted on by BenchApp (the process already runs on it)
     SweepOptions axes;
@@ -62,6 +73,8 @@ int SweepCommand::main(int argc, char** argv) {
         "--max-configs", [&cli](int64_t limit) { cli.maxConfigs = limit; },
         "refuse sweeps of more configurations (rows) than this (default 10000)");
     app.add_flag("--resume", cli.resume, "continue the sweep in --csv, skipping the rows it already has");
+    app.add_flag("--retry-failed", cli.retryFailed,
+                 "with --resume: run the configurations whose rows failed again, replacing those rows");
     app.add_option("--shard", cli.shard, "run slice i of N (i/N) of the combinations")->capture_default_str();
     app.add_flag("--dry-run", cli.dryRun, "print the configurations and exit");
     app.add_flag("--no-progress", cli.noProgress, "no progress bar on stderr");
@@ -69,6 +82,10 @@ int SweepCommand::main(int argc, char** argv) {
                    "stdout at the end: " + rowFormatChoices() + " (this shard's rows)")
         ->capture_default_str();
     if (int code = parseCli(app, argc, argv, "bench sweep"); code >= 0) return code;
+    // Retrying is a way of continuing a sweep: without --resume the file's rows would be refused anyway.
+    if (cli.retryFailed && !cli.resume)
+        throw Error("--retry-failed needs --resume: it runs the failed configurations of the sweep in --csv "
+                    "again; add --resume");
 
     const RowFormat format = parseRowFormat(cli.format);
     if (format != RowFormat::Console) StandardStreams::requireStdout("--format " + cli.format);
@@ -99,6 +116,7 @@ int SweepCommand::main(int argc, char** argv) {
     SweepRunOptions options;
     options.csvPath = cli.csv;
     options.resume = cli.resume;
+    options.retryFailed = cli.retryFailed;
     options.shard = shard;
     options.shardCount = shardCount;
     options.progress = !cli.noProgress;

@@ -9,7 +9,8 @@ namespace sb {
 class SweepCommand {
 public:
     /// argv[0] is "sweep". Returns the exit code: 0 all rows ok, 1 some configurations failed (their
-    /// rows say why), 2 bad input, 130 interrupted (continue with --resume).
+    /// rows say why) or another process runs this shard of --csv, 2 bad input, 130 interrupted
+    /// (continue with --resume).
     static int main(int argc, char** argv);
 };
 

@@ -89,10 +89,12 @@ bool fitsInPlace(const std::vector<CsvRow>& rows, const ColumnIndex& index) {
     return true;
 }
 
-// The rewrite, streamed: the old rows go through one at a time, widened with empty cells for the new
-// columns (which come last), then the new rows.
+// The rewrite, streamed: the old rows go through one at a time (less those `drop` accepts, when given),
+// widened with empty cells for the new columns (which come last), then the new rows.
 void rewriteWidened(AtomicFile& file, CsvReader& reader, std::vector<std::string> header,
-                    const std::vector<CsvRow>& rows, const std::string& path) {
+                    const std::vector<CsvRow>& rows, const std::string& path,
+                    const CsvWriter::RowFilter* drop = nullptr) {
+    const std::vector<std::string> oldHeader = drop ? header : std::vector<std::string>();
     const size_t oldWidth = header.size();
     ColumnIndex index = indexOf(header);
     widenHeader(header, index, rows);
@@ -104,6 +106,7 @@ void rewriteWidened(AtomicFile& file, CsvReader& reader, std::vector<std::string
         if (record.size() != oldWidth)
             reader.fail(reader.line(), "row has " + std::to_string(record.size()) +
                                            " fields but the header has " + std::to_string(oldWidth));
+        if (drop && (*drop)(oldHeader, record)) continue;
         record.resize(header.size());
         appendLine(text, record);
         file.write(text);
@@ -112,6 +115,13 @@ void rewriteWidened(AtomicFile& file, CsvReader& reader, std::vector<std::string
     for (const CsvRow& row : rows) appendLine(text, cellsOf(row, index, header.size(), path));
     file.write(text);
     file.commit();
+}
+
+/// A partial last line (a writer killed while appending it) is cut before anything is added after it.
+void cutPartialLine(AtomicFile& file, const std::string& path) {
+    if (off_t cut = file.cutPartialLastLine())
+        std::cerr << "bench: warning: " << path << ": cut a partial last line of " << cut
+                  << " bytes (left by a writer killed while appending it)\n";
 }
 
 } // namespace
@@ -153,9 +163,7 @@ std::string CsvWriter::quote(const std::string& field) {
 void CsvWriter::appendRows(const std::string& path, const std::vector<CsvRow>& rows) {
     if (rows.empty()) return; // nothing to add, and no header to create a new file with
     AtomicFile file(path, "CSV");
-    if (off_t cut = file.cutPartialLastLine())
-        std::cerr << "bench: warning: " << path << ": cut a partial last line of " << cut
-                  << " bytes (left by a writer killed while appending it)\n";
+    cutPartialLine(file, path);
     CsvReader reader(file.fd(), path);
     // A corrupt header is an error (BadInput, naming file and line), never silently replaced.
     std::vector<std::string> header = reader.header();
@@ -165,6 +173,16 @@ void CsvWriter::appendRows(const std::string& path, const std::vector<CsvRow>& r
     std::string text;
     for (const CsvRow& row : rows) appendLine(text, cellsOf(row, index, header.size(), path));
     file.appendInPlace(text);
+}
+
+// Always the rewrite: rows leave the file, which no append in place can do.
+void CsvWriter::replaceRows(const std::string& path, const RowFilter& drop, const std::vector<CsvRow>& rows) {
+    if (rows.empty()) return; // nothing replaces the dropped rows: never a removal alone
+    AtomicFile file(path, "CSV");
+    cutPartialLine(file, path);
+    CsvReader reader(file.fd(), path);
+    std::vector<std::string> header = reader.header();
+    rewriteWidened(file, reader, std::move(header), rows, path, &drop);
 }
 
 // A ragged table would be written without complaint but could not be read back, so it is refused

@@ -43,6 +43,14 @@ public:
     /// the OS error when the directory is missing or unwritable, BadInput when the path is empty or names
     /// a device, FIFO, socket or directory; the original file is then untouched.
     static void appendRows(const std::string& path, const std::vector<CsvRow>& rows);
+    /// Which existing rows replaceRows removes: called with the file's header and one row's cells.
+    using RowFilter =
+        std::function<bool(const std::vector<std::string>& header, const std::vector<std::string>& cells)>;
+    /// Appends `rows` as appendRows does and, in the same rewrite under the same lock, removes the rows
+    /// already in the file that `drop` accepts: the file is streamed through the temp file, fsync and
+    /// rename, so a reader or a crash sees either the old rows or the new ones, never both and never
+    /// neither (a sweep's failed row and the row of its retry). Throws like appendRows.
+    static void replaceRows(const std::string& path, const RowFilter& drop, const std::vector<CsvRow>& rows);
     /// Checks up front that `path` can be written (a regular file or nothing, directory exists and is
     /// writable), so a bad --csv fails before minutes of measuring. Throws sb::Error(BadInput).
     static void checkWritable(const std::string& path);

@@ -1,12 +1,14 @@
 #include "bench/lib/rows/Environment.h"
 
+#include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/rows/BuildInfo.h"
+#include "core/CpuAllocation.h"
 
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
-#include <thread>
+#include <unistd.h>
 
 namespace sb {
 
@@ -27,6 +29,7 @@ std::string readCpuModel() {
         }
     return "unknown";
 }
+
 } // namespace
 
 std::string Environment::nowIso8601() {
@@ -38,6 +41,12 @@ std::string Environment::nowIso8601() {
     return buf;
 }
 
+std::string Environment::hostName() {
+    char name[256] = {}; // above HOST_NAME_MAX (64 on Linux); one byte kept for the terminator
+    if (::gethostname(name, sizeof name - 1) != 0 || !name[0]) return "unknown";
+    return name;
+}
+
 Environment Environment::capture() {
     Environment e;
     e.timestamp = nowIso8601();
@@ -45,9 +54,17 @@ Environment Environment::capture() {
     // checkout or edit after the build must not relabel rows measured with the old code.
     e.gitCommit = BuildInfo::commit();
     e.cpuModel = readCpuModel();
-    e.hardwareThreads = int(std::thread::hardware_concurrency());
+    // The allocation's CPUs, not the node's: a Slurm task on 4 CPUs of a 64-CPU node measured with
+    // 4, and a row that said 64 would describe a machine the run never had.
+    e.hardwareThreads = allocatedCpuCount();
     if (const char* lp = std::getenv("LP_NUM_THREADS")) e.lpNumThreads = lp;
+    e.host = hostName();
+    e.slurm = SlurmTask::fromEnvironment();
     return e;
+}
+
+CsvRow Environment::placeColumns() const {
+    return {{col::kHost, host}, {col::kSlurmJobId, slurm.job()}, {col::kSlurmArrayTaskId, slurm.arrayTaskId}};
 }
 
 } // namespace sb

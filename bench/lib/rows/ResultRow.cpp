@@ -109,13 +109,17 @@ CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environmen
         {col::kCpuModel, env.cpuModel},
         {col::kHwThreads, std::to_string(env.hardwareThreads)},
         {col::kLpNumThreads, env.lpNumThreads},
-        {col::kScene, scene.name},
-        {col::kSceneHash, h.contentHash},
-        {col::kSceneTriangles, std::to_string(scene.totalTriangles())},
-        {col::kTechnique, r.technique},
-        {col::kProperties, r.properties},
-        {col::kPermutation, r.permutation},
     };
+    const CsvRow place = env.placeColumns();
+    row.insert(row.end(), place.begin(), place.end());
+    row.insert(row.end(), {
+                              {col::kScene, scene.name},
+                              {col::kSceneHash, h.contentHash},
+                              {col::kSceneTriangles, std::to_string(scene.totalTriangles())},
+                              {col::kTechnique, r.technique},
+                              {col::kProperties, r.properties},
+                              {col::kPermutation, r.permutation},
+                          });
     for (auto& column : effectColumns(coverage)) row.push_back(std::move(column));
     row.emplace_back(col::kPassesSkipped, skippedText(r.loads.skipped));
     CsvRow rest{

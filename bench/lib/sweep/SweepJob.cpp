@@ -36,6 +36,7 @@ void SweepJob::save(const std::string& path) const {
     if (timer)
         j["timer"] = {{"checked", timer->checked}, {"trusted", timer->trusted}, {"reason", timer->reason}};
     for (const auto& [round, wall] : baselineWalls) j["baseline_walls"].push_back({round, wall});
+    j["replaces_failed"] = replacesFailed;
     for (const PlannedRow& r : rows)
         j["rows"].push_back({{"index", r.index}, {"technique", r.technique}, {"round", r.round}});
     std::ofstream out(path);
@@ -64,6 +65,7 @@ SweepJob SweepJob::load(const std::string& path) {
         if (j.contains("baseline_walls"))
             for (const auto& bw : j["baseline_walls"])
                 job.baselineWalls[bw.at(0).get<int>()] = bw.at(1).get<double>();
+        if (j.contains("replaces_failed")) job.replacesFailed = j["replaces_failed"].get<std::set<size_t>>();
         for (const auto& r : j.at("rows"))
             job.rows.push_back({r.at("index").get<size_t>(), r.at("technique").get<std::string>(),
                                 r.at("round").get<int>()});

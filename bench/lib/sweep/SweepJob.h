@@ -8,6 +8,7 @@
 // A worker that dies without "done" or "failed" for the configuration it began has crashed in it.
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct SweepJob {
     /// Wall medians of baseline rows measured by an earlier worker (--resume, a respawn after a
     /// failure), per round, so the rows of those rounds still get their ratio.
     std::map<int, double> baselineWalls;
+    /// The config indices whose failed row in the CSV this job's row replaces (--retry-failed).
+    std::set<size_t> replacesFailed;
 
     void save(const std::string& path) const;
     static SweepJob load(const std::string& path);

@@ -42,6 +42,7 @@ void SweepReport::printSummary(std::ostream& os, const SweepPlan& plan, const Sw
     os << ": " << s.planned << " configurations, " << s.ok << " measured, " << s.failed << " failed";
     if (s.unsupported) os << ", " << s.unsupported << " unsupported here (skipped)";
     if (s.alreadyDone) os << ", " << s.alreadyDone << " done before";
+    if (s.retried) os << ", " << s.retried << " failed before and run again";
     os << "\n";
     if (s.timer) os << "GPU timer " << s.timer->label() << ": " << s.timer->reason << "\n";
     if (s.failed || s.unsupported) {

@@ -15,7 +15,9 @@
 #include "bench/lib/rows/Environment.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/InterruptGuard.h"
+#include "bench/lib/sweep/ShardLock.h"
 #include "bench/lib/sweep/SweepJob.h"
+#include "bench/lib/sweep/SweepRows.h"
 #include "core/Error.h"
 #include "gl/ProgramCache.h"
 #include "gl/backends/BackendRegistry.h"
@@ -49,13 +51,48 @@ std::string cell(const CsvTable& t, const std::vector<std::string>& row, const s
     return it == t.header.end() ? "" : row[size_t(it - t.header.begin())];
 }
 
-/// What the CSV already holds of this sweep: the config indices, and the wall medians of its ok rows.
+/// What the CSV already holds of this sweep: the config indices not to run again, the failed ones to
+/// run again (--retry-failed), and the wall medians of its ok rows.
 struct Done {
     std::set<size_t> indices;
+    std::set<size_t> failed;
     std::map<size_t, double> wallMs;
 };
 
-/// Throws when the file is another sweep's, or this one's without --resume.
+std::string shardText(const SweepRunOptions& options) {
+    return std::to_string(options.shard) + "/" + std::to_string(options.shardCount);
+}
+
+/// The N of a row's shard cell "i/N" ("" when the cell is not one).
+std::string splitOf(const std::string& shard) {
+    const size_t slash = shard.find('/');
+    return slash == std::string::npos ? "" : shard.substr(slash + 1);
+}
+
+[[noreturn]] void refuseOtherSweep(const SweepPlan& plan, const SweepRunOptions& options, const CsvTable& t,
+                                   const std::vector<std::string>& row) {
+    const std::string other = cell(t, row, col::kSweepId);
+    throw Error("--csv " + options.csvPath + " holds rows of " +
+                (other.empty() ? std::string("a run that is not a sweep")
+                               : "sweep " + other + " ('" + cell(t, row, col::kSweepName) + "')") +
+                ", not of this sweep " + plan.id() + " ('" + plan.name +
+                "'): the definition differs; write to another --csv");
+}
+
+// Shards of one split may share a file; a file of another split may not be continued: its groups were
+// dealt to shards by another N (SweepPlan::shard), so this shard's rows there are not this shard's work.
+void checkSplit(const SweepRunOptions& options, const CsvTable& t, const std::vector<std::string>& row) {
+    const std::string theirs = cell(t, row, col::kShard);
+    if (theirs.empty() || splitOf(theirs) == std::to_string(options.shardCount))
+        return; // empty: says nothing
+    throw Error("--csv " + options.csvPath + " holds rows of shard " + theirs + ", a split into " +
+                splitOf(theirs) + ", not of --shard " + shardText(options) + " (a split into " +
+                std::to_string(options.shardCount) +
+                "): a part file of another split cannot be continued; give the --shard it was written "
+                "with, or write to another --csv");
+}
+
+/// Throws when the file is another sweep's or another split's, or this one's without --resume.
 Done readDone(const SweepPlan& plan, const SweepRunOptions& options) {
     Done done;
     if (!std::filesystem::exists(options.csvPath)) return done;
@@ -63,18 +100,18 @@ Done readDone(const SweepPlan& plan, const SweepRunOptions& options) {
     if (t.rows.empty()) return done;
     const std::string id = plan.id();
     for (const auto& row : t.rows) {
-        const std::string other = cell(t, row, col::kSweepId);
-        if (other != id)
-            throw Error("--csv " + options.csvPath + " holds rows of " +
-                        (other.empty() ? std::string("a run that is not a sweep")
-                                       : "sweep " + other + " ('" + cell(t, row, col::kSweepName) + "')") +
-                        ", not of this sweep " + id + " ('" + plan.name +
-                        "'): the definition differs; write to another --csv");
+        if (cell(t, row, col::kSweepId) != id) refuseOtherSweep(plan, options, t, row);
+        checkSplit(options, t, row);
         const size_t index = size_t(std::stoull(cell(t, row, col::kConfigIndex)));
-        done.indices.insert(index);
-        if (cell(t, row, col::kStatus) == col::kStatusOk)
-            done.wallMs[index] = std::stod(cell(t, row, col::kWallMsMedian));
+        const std::string status = cell(t, row, col::kStatus);
+        if (options.retryFailed && status == col::kStatusFailed)
+            done.failed.insert(index);
+        else
+            done.indices.insert(index);
+        if (status == col::kStatusOk) done.wallMs[index] = std::stod(cell(t, row, col::kWallMsMedian));
     }
+    // A configuration with a row besides its failed one is done (no retry can make it one row again).
+    for (size_t index : done.indices) done.failed.erase(index);
     if (!options.resume)
         throw Error("--csv " + options.csvPath + " already holds " + std::to_string(t.rows.size()) +
                     " rows of this sweep: pass --resume to continue it, or write to another --csv");
@@ -115,11 +152,12 @@ std::string lastLine(const std::string& text) {
 /// Runs one group's pending rows, a fresh worker after each failure.
 class GroupRun {
 public:
+    /// `retrying`: the config indices whose failed row in the CSV a new row replaces (--retry-failed).
     GroupRun(const SweepPlan& plan, const SweepGroup& group, const SweepRunOptions& options,
              const std::optional<TimerVerdict>& timer, const std::string& jobDir, ProgressBar& bar,
-             SweepSummary& summary)
+             SweepSummary& summary, const std::set<size_t>& retrying)
         : mPlan(plan), mGroup(group), mOptions(options), mTimer(timer), mJobDir(jobDir), mBar(bar),
-          mSummary(summary), mVarying(plan.varyingColumns()) {}
+          mSummary(summary), mRetrying(retrying), mVarying(plan.varyingColumns()) {}
 
     /// `earlier`: wall medians of rows measured before (their baselines give later rows their ratios).
     void run(std::vector<PlannedRow> pending, const std::map<size_t, double>& earlier) {
@@ -160,6 +198,8 @@ private:
         job.timer = mTimer;
         job.rows = rows;
         job.baselineWalls = mBaselineWalls;
+        for (const PlannedRow& r : rows)
+            if (mRetrying.count(r.index)) job.replacesFailed.insert(r.index);
         const std::string jobPath = mJobDir + "/group-" + std::to_string(mGroup.index) + ".json";
         job.save(jobPath);
         Attempt a;
@@ -224,7 +264,9 @@ private:
         const bool unsupported = a.failure && a.failure->exitCode == int(ExitCode::Unsupported);
         const KeyValues tags = SweepRunner::sweepColumns(mPlan, mGroup, mOptions);
         std::vector<CsvRow> out;
+        bool replacing = false;
         for (const PlannedRow& r : rows) {
+            replacing = replacing || mRetrying.count(r.index) > 0;
             // What the measured row would have said about itself, as far as it is known without running.
             const TechniqueSpec spec = TechniqueSpec::parse(r.technique);
             const std::string props =
@@ -236,6 +278,8 @@ private:
                        {col::kTechnique, spec.name},
                        {col::kProperties, props},
                        {col::kTechniqueSpec, r.technique}};
+            const CsvRow place = env.placeColumns();
+            row.insert(row.end(), place.begin(), place.end());
             row.insert(row.end(), mGroup.columns.begin(), mGroup.columns.end());
             row.insert(row.end(), {{col::kRepeat, std::to_string(r.round)},
                                    {col::kBaseline, mGroup.techniques.front()},
@@ -245,7 +289,7 @@ private:
             ++(unsupported ? mSummary.unsupported : mSummary.failed);
             mBar.finished(label(mGroup, r, mVarying) + ": " + why, false);
         }
-        CsvWriter::appendRows(mOptions.csvPath, out);
+        SweepRows::write(mOptions.csvPath, out, replacing);
     }
 
     const SweepPlan& mPlan;
@@ -255,6 +299,7 @@ private:
     const std::string& mJobDir;
     ProgressBar& mBar;
     SweepSummary& mSummary;
+    const std::set<size_t>& mRetrying;
     const std::vector<std::string> mVarying; ///< what tells the groups apart in progress lines
     std::map<int, double> mBaselineWalls;    ///< per round, as far as measured
 };
@@ -267,13 +312,15 @@ KeyValues SweepRunner::sweepColumns(const SweepPlan& plan, const SweepGroup& gro
                  {col::kSweepName, plan.name},
                  {col::kSweepConfigs, std::to_string(plan.configCount())},
                  {col::kConfigGroup, std::to_string(group.index)},
-                 {col::kShard, std::to_string(options.shard) + "/" + std::to_string(options.shardCount)}};
+                 {col::kShard, shardText(options)}};
     kv.insert(kv.end(), group.tags.begin(), group.tags.end());
     return kv;
 }
 
 SweepSummary SweepRunner::run(const SweepPlan& plan, const SweepRunOptions& options) {
     CsvWriter::checkWritable(options.csvPath);
+    // Before the file is read: a second run of this shard must not even decide what is left to do.
+    const ShardLock lock(options.csvPath, options.shard, options.shardCount);
     const Done done = readDone(plan, options);
     SweepSummary summary;
     std::vector<std::pair<const SweepGroup*, std::vector<PlannedRow>>> work;
@@ -281,10 +328,12 @@ SweepSummary SweepRunner::run(const SweepPlan& plan, const SweepRunOptions& opti
         std::vector<PlannedRow> pending;
         for (const PlannedRow& r : g->rows) {
             ++summary.planned;
-            if (done.indices.count(r.index))
+            if (done.indices.count(r.index)) {
                 ++summary.alreadyDone;
-            else
+            } else {
                 pending.push_back(r);
+                summary.retried += done.failed.count(r.index);
+            }
         }
         if (!pending.empty()) work.emplace_back(g, std::move(pending));
     }
@@ -293,7 +342,7 @@ SweepSummary SweepRunner::run(const SweepPlan& plan, const SweepRunOptions& opti
     TempDirectory jobs;
     ProgressBar bar(stderr, summary.planned, summary.alreadyDone, options.progress);
     for (auto& [group, pending] : work) {
-        GroupRun(plan, *group, options, summary.timer, jobs.path(), bar, summary)
+        GroupRun(plan, *group, options, summary.timer, jobs.path(), bar, summary, done.failed)
             .run(std::move(pending), done.wallMs);
         if (InterruptGuard::flag()) break;
     }

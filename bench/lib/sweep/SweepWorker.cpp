@@ -12,6 +12,7 @@
 #include "bench/lib/options/RunOptions.h"
 #include "bench/lib/output/ResultColumns.h"
 #include "bench/lib/sweep/SweepJob.h"
+#include "bench/lib/sweep/SweepRows.h"
 #include "core/Error.h"
 #include "gl/DebugOutput.h"
 #include "registry/TechniqueRegistry.h"
@@ -85,7 +86,7 @@ void runRows(const SweepJob& job, const RunConfig& config, size_t& current) {
         m.row.emplace_back(col::kTechniqueSpec, row.technique);
         m.row.emplace_back(col::kConfigIndex, std::to_string(row.index));
         m.row.insert(m.row.end(), job.tags.begin(), job.tags.end());
-        CsvWriter::appendRows(job.csvPath, {m.row});
+        SweepRows::write(job.csvPath, {m.row}, job.replacesFailed.count(row.index) > 0);
         std::cout << WorkerMessage::done(row.index, m.run.wall.median) << std::endl;
     }
 }
