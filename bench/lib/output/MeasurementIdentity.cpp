@@ -20,9 +20,6 @@ constexpr IdentityColumn kIdentity[] = {{col::kGitCommit, false},
                                         {col::kRenderer, true},
                                         {col::kDriverVersion, true}};
 
-// The row's host name, Environment's `host` column. Rows written before it existed lack it.
-constexpr const char* kHostColumn = "host";
-
 // A column of fifty commits is listed by its first values; the count says how many more.
 constexpr size_t kMaxListedValues = 4;
 
@@ -57,7 +54,8 @@ std::string Mixture::label() const {
 void MeasurementIdentity::add(const CsvTable& table, const std::string& path,
                               const std::vector<size_t>& lines) {
     const std::optional<size_t> api = columnOf(table, col::kApi);
-    const std::optional<size_t> host = columnOf(table, kHostColumn);
+    // Rows written before the host column existed lack it: they name no host.
+    const std::optional<size_t> host = columnOf(table, col::kHost);
     mHostColumn = mHostColumn || host.has_value();
     for (const IdentityColumn& identity : kIdentity) {
         const std::optional<size_t> c = columnOf(table, identity.name);
