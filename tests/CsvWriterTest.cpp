@@ -397,13 +397,12 @@ TEST_F(CsvWriterTest, ReplaceRowsDropsTheAcceptedRowsAndAppendsInOneRewrite) {
     // every other row stays as it was, in its place; the filter sees the file's header and the cells.
     writeFile(mPath, "index,status\n0,ok\n1,failed\n2,failed\n");
     const ino_t inode = statOf(mPath).st_ino;
-    CsvWriter::replaceRows(
-        mPath,
-        [](const std::vector<std::string>& header, const std::vector<std::string>& cells) {
-            EXPECT_EQ(header, (std::vector<std::string>{"index", "status"}));
-            return cells[0] == "1" && cells[1] == "failed";
-        },
-        {{{"index", "1"}, {"status", "ok"}, {"wall", "2.5"}}});
+    CsvWriter::replaceRows(mPath,
+                           [](const std::vector<std::string>& header, const std::vector<std::string>& cells) {
+                               EXPECT_EQ(header, (std::vector<std::string>{"index", "status"}));
+                               return cells[0] == "1" && cells[1] == "failed";
+                           },
+                           {{{"index", "1"}, {"status", "ok"}, {"wall", "2.5"}}});
     EXPECT_EQ(readFile(mPath), "index,status,wall\n0,ok,\n2,failed,\n1,ok,2.5\n");
     EXPECT_NE(statOf(mPath).st_ino, inode) << "a rewrite through the temp file and rename";
     EXPECT_TRUE(strayFiles().empty());
