@@ -10,8 +10,13 @@
 #          <drivers>/mesa-25.0.7 (<drivers>: $SHADOWBENCH_DRIVERS_DIR, else /opt/shadowbench/drivers),
 #          for `bench --driver mesa-25.0.7` (core/DriverTable.h); adds the suite to apt's sources if
 #          missing. About 24 MB downloaded, 119 MB unpacked, 12-19 s
-#   test   everything: bench, plot, driver, and what the test suite, the sanitizer build and the fuzzers
-#          drive (quick start 2, scripts/test.sh); the default
+#   slurm  Slurm 22.05 (slurmctld, slurmd, the client commands) and munge: a real single-node cluster
+#          started by hand, without systemd, by tools/slurm/cluster.sh (the launcher's test,
+#          tests/JobArraySlurmTest.cpp, and trying scripts/slurm-sweep.sbatch). The packages' own
+#          services are not used; where an init system starts them, they keep to their default ports
+#          and sockets, apart from the test's cluster
+#   test   everything: bench, plot, driver, slurm, and what the test suite, the sanitizer build and the
+#          fuzzers drive (quick start 2, scripts/test.sh); the default
 # Idempotent: packages already present are skipped and a complete driver prefix is kept, so it costs
 # ~1 s on a provisioned machine. Needs root (apt-get). Usage: bash scripts/install-deps.sh [GROUP]...
 set -euo pipefail
@@ -32,6 +37,11 @@ BENCH=(
 PLOT=(
   # tools/plot.py and tools/report.py run with /usr/bin/python3
   python3 python3-matplotlib python3-pandas
+)
+SLURM=(
+  # slurm-wlm: slurmctld, slurmd and slurm-client (sbatch, scontrol, squeue, scancel, sinfo); munge
+  # comes with slurmd, named here because tools/slurm/cluster.sh starts munged itself
+  slurm-wlm munge
 )
 TEST=(
   # lld: the linker of every build once present (CMakeLists.txt says why)
@@ -153,8 +163,9 @@ for group in "$@"; do
     bench) PACKAGES+=("${BENCH[@]}") ;;
     plot) PACKAGES+=("${PLOT[@]}") ;;
     driver) WANT_DRIVER=1 ;;
-    test) PACKAGES+=("${BENCH[@]}" "${PLOT[@]}" "${TEST[@]}"); WANT_DRIVER=1 ;;
-    *) echo "install-deps: unknown group '$group' (bench, plot, driver or test)" >&2; exit 2 ;;
+    slurm) PACKAGES+=("${SLURM[@]}") ;;
+    test) PACKAGES+=("${BENCH[@]}" "${PLOT[@]}" "${SLURM[@]}" "${TEST[@]}"); WANT_DRIVER=1 ;;
+    *) echo "install-deps: unknown group '$group' (bench, plot, driver, slurm or test)" >&2; exit 2 ;;
   esac
 done
 

@@ -68,6 +68,9 @@ const std::vector<NotRun> kNotRun = {
     {"build/bench merge", "needs the shards of a sweep (SweepCliTest)"},
     {"parallel ", "a sharded sweep under GNU parallel (SweepCliTest)"},
     {"sbatch ", "a Slurm cluster"},
+    {"bash scripts/slurm-submit.sh", "a Slurm cluster (JobArraySlurmTest runs it on one)"},
+    {"bash tools/slurm/cluster.sh", "starts Slurm's daemons as root (JobArraySlurmTest, label slurm)"},
+    {"export SLURM_CONF=", "names the cluster tools/slurm/cluster.sh started"},
     {"build/handloop", "alternates a hundred frame pairs (HandShadowCliTest runs it short)"},
 };
 
