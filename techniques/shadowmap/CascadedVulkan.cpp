@@ -69,12 +69,13 @@ void CascadedVulkan::createDescriptors(VulkanContext& context) {
 
 void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
     const PropertySet& p = properties();
-    // Depth pass: casters only, depth clamped, with the bias of glPolygonOffset(slope, constant), no colour.
+    // Depth pass: casters only, depth clamped, with the bias of glPolygonOffset(slope, constant), no colour,
+    // no fragment stage.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     std::string depthKey = "cascaded-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth =
-        scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
+    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+                                               base, mDepthLayout, depthKey);
     depth.depthClamp = true;
     mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);

@@ -157,22 +157,23 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     createDescriptors(ctx.context);
     writeBlocks();
 
-    // Depth passes: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
+    // Depth passes: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour, no
+    // fragment stage.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     const std::string bias = VulkanDepthMapSet::biasKey(p);
     // mFlat's render pass, compatible with mCubes' (the same depth attachment).
     auto depthState = [&](GraphicsPipelineDesc& d) { mFlat.depthPipeline(d, p); };
     std::string faceKey = "cubemap-depth" + bias;
-    GraphicsPipelineDesc face =
-        scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, faceKey);
+    GraphicsPipelineDesc face = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+                                              base, mDepthLayout, faceKey);
     depthState(face);
     mFaceDepthPipeline = ctx.pipelines.get(faceKey, face);
     if (mLayered) {
         std::string layeredKey = "cubemap-layered-depth" + bias;
         GraphicsPipelineDesc layered =
-            scenePipeline(ctx, "shadowmap/cube_depth.vert", "shadowmap/depth.frag", base, mDepthLayout,
-                          layeredKey, "shadowmap/cube_depth.geom");
+            scenePipeline(ctx, "shadowmap/cube_depth.vert", VulkanDepthMapSet::kDepthFragment, base,
+                          mDepthLayout, layeredKey, "shadowmap/cube_depth.geom");
         depthState(layered);
         mLayeredDepthPipeline = ctx.pipelines.get(layeredKey, layered);
     }

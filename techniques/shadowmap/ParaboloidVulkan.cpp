@@ -141,7 +141,7 @@ void ParaboloidVulkan::writeBlocks() {
 }
 
 void ParaboloidVulkan::createDepthPipelines(const VulkanCompileContext& ctx) {
-    // Casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
+    // Casters only, depth with the bias of glPolygonOffset(slope, constant), no colour, no fragment stage.
     const PropertySet& p = properties();
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
@@ -149,7 +149,7 @@ void ParaboloidVulkan::createDepthPipelines(const VulkanCompileContext& ctx) {
     auto depth = [&](const char* name, const char* vertex, const char* geometry) {
         std::string key = std::string(name) + bias;
         GraphicsPipelineDesc d =
-            scenePipeline(ctx, vertex, "shadowmap/depth.frag", base, mDepthLayout, key, geometry);
+            scenePipeline(ctx, vertex, VulkanDepthMapSet::kDepthFragment, base, mDepthLayout, key, geometry);
         mMaps.depthPipeline(d, p);
         return ctx.pipelines.get(key, d);
     };

@@ -131,12 +131,13 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     fitLightSizes(ctx.scene);
     writeBlocks();
 
-    // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
+    // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour, no
+    // fragment stage.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     std::string depthKey = "pcss-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth =
-        scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
+    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+                                               base, mDepthLayout, depthKey);
     mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 

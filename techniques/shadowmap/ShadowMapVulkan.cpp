@@ -111,12 +111,13 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     mMaps = VulkanDepthMapSet(ctx.context, uint32_t(mSize), uint32_t(mLayers), uint32_t(mLayers));
     createDescriptors(ctx.context);
 
-    // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour.
+    // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour, no
+    // fragment stage.
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     std::string depthKey = "shadowmap-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth =
-        scenePipeline(ctx, "shadowmap/depth.vert", "shadowmap/depth.frag", base, mDepthLayout, depthKey);
+    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+                                               base, mDepthLayout, depthKey);
     mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 

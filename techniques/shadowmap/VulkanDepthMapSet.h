@@ -49,6 +49,12 @@ public:
     VkImageView view() const { return mImage.view(); } ///< every layer, as the lighting pass samples them
     VkRenderPass pass() const { return mPass; }
     uint32_t size() const { return mSize; }
+    /// The fragment stage of every depth pass into these maps: none. The pipeline writes depth only, so
+    /// it needs no fragment shader (legal in Vulkan: depth and the bias still apply); a GPU driver then
+    /// launches no fragment work at all. lavapipe binds an empty shader of its own in that case, so its
+    /// work and pipeline statistics are those of shadowmap/depth.frag, which the GL forms keep
+    /// (shaders/shadowmap/depth.frag says why).
+    static constexpr const char* kDepthFragment = "";
     /// Makes `desc` a depth pass into these maps: no colour, the set's render pass, and the depth bias
     /// of glPolygonOffset(bias_slope, bias_constant) from `properties` (ShadowMapProperties).
     void depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const;
