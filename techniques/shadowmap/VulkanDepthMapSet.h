@@ -49,11 +49,11 @@ public:
     VkImageView view() const { return mImage.view(); } ///< every layer, as the lighting pass samples them
     VkRenderPass pass() const { return mPass; }
     uint32_t size() const { return mSize; }
-    /// The fragment stage of every depth pass into these maps: none. The pipeline writes depth only, so
-    /// it needs no fragment shader (legal in Vulkan: depth and the bias still apply); a GPU driver then
-    /// launches no fragment work at all. lavapipe binds an empty shader of its own in that case, so its
-    /// work and pipeline statistics are those of shadowmap/depth.frag, which the GL forms keep
-    /// (shaders/shadowmap/depth.frag says why).
+    /// The fragment stage of every depth pass into these maps: none. The pipeline writes depth only, so it
+    /// needs no fragment shader (legal in Vulkan: the depth test, the write and the bias still apply), and
+    /// a GPU driver then has no fragment work to launch. lavapipe binds an empty shader of its own in that
+    /// case, so on it the work and the pipeline statistics are those of the GL forms' empty
+    /// shaders/shadowmap/depth.frag (which says why GL gains nothing from leaving it out either).
     static constexpr const char* kDepthFragment = "";
     /// Makes `desc` a depth pass into these maps: no colour, the set's render pass, and the depth bias
     /// of glPolygonOffset(bias_slope, bias_constant) from `properties` (ShadowMapProperties).
