@@ -17,8 +17,8 @@ enum class LightFitBounds {
     /// The casters' bounding box, the tightest of the three: the most texels per world unit and the
     /// largest share of the map covered (the fit before the choice existed, and the default).
     Casters,
-    /// A square around the casters' bounding sphere (centre and half-diagonal of their box): the same
-    /// map from every light direction, as a demo that sizes its light frustum to a model's bounding
+    /// A square around the casters' bounding sphere (centre and half-diagonal of their box): a map of the
+    /// same size from every light direction, as a demo that sizes its light frustum to a model's bounding
     /// sphere (glmark2's `shadow` scene) does.
     Sphere,
     /// The bounding box of every instance, receivers included: the loosest, a map that holds the whole

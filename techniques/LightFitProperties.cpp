@@ -10,7 +10,7 @@ PropertyDesc LightFitProperties::fit(const std::string& what, const std::string&
     return choice(kFit, "casters", std::move(names),
                   "what a directional light's " + what +
                       " frames: casters (their bounding box: the most texels per unit, the largest depth "
-                      "fill), sphere (a square around their bounding sphere, the same from every "
+                      "fill), sphere (a square around their bounding sphere, the same size from every "
                       "direction, as glmark2's shadow scene) or scene (every instance, receivers too: the "
                       "fewest texels per unit, the least fill); " +
                       otherLights);
