@@ -8,7 +8,37 @@
 
 namespace sb {
 
-glm::mat4 fitLightViewProjection(const Scene& scene, const Light& light) {
+const NameTable<Named<LightFitBounds>>& lightFitBoundsNames() {
+    static constexpr Named<LightFitBounds> kNames[] = {
+        {LightFitBounds::Casters, "casters"},
+        {LightFitBounds::Sphere, "sphere"},
+        {LightFitBounds::Scene, "scene"},
+    };
+    static constexpr NameTable kTable{kNames};
+    return kTable;
+}
+
+namespace {
+
+/// The x and y range (light view space) a directional map frames, before the margin.
+Aabb framedBounds(const Scene& scene, const Aabb& casters, const glm::mat4& view, LightFitBounds bounds) {
+    switch (bounds) {
+    case LightFitBounds::Sphere: {
+        // The view looks at the casters' centre, so the sphere is centred on the view's axis.
+        const float r = 0.5f * glm::length(casters.extent());
+        return Aabb{glm::vec3(-r, -r, 0.0f), glm::vec3(r, r, 0.0f)};
+    }
+    case LightFitBounds::Scene:
+        return transformBounds(scene.computeBounds(false), view);
+    case LightFitBounds::Casters:
+        break;
+    }
+    return transformBounds(casters, view); // only casters need to be in the map
+}
+
+} // namespace
+
+glm::mat4 fitLightViewProjection(const Scene& scene, const Light& light, const LightFit& fit) {
     Aabb all = scene.computeBounds(false);
     Aabb casters = scene.computeBounds(true);
     if (casters.empty()) casters = all;
@@ -17,9 +47,9 @@ glm::mat4 fitLightViewProjection(const Scene& scene, const Light& light) {
     glm::vec3 dir = glm::normalize(light.direction);
     if (light.type == LightType::Directional) {
         glm::mat4 view = glm::lookAt(center - dir * radius * 2.0f, center, anyPerpendicularUp(dir));
-        Aabb xy = transformBounds(casters, view); // only casters need to be in the map
-        Aabb z = transformBounds(all, view);      // but every receiver must be inside its depth range
-        glm::vec2 pad = 0.01f * glm::vec2(xy.extent()) + glm::vec2(1e-3f);
+        Aabb xy = framedBounds(scene, casters, view, fit.bounds);
+        Aabb z = transformBounds(all, view); // but every receiver must be inside its depth range
+        glm::vec2 pad = fit.margin * glm::vec2(xy.extent()) + glm::vec2(1e-3f);
         glm::mat4 proj = glm::ortho(xy.min.x - pad.x, xy.max.x + pad.x, xy.min.y - pad.y, xy.max.y + pad.y,
                                     -z.max.z - 1e-3f * radius, -z.min.z + 1e-3f * radius);
         return proj * view;

@@ -357,6 +357,12 @@ std::vector<BadInput> table() {
          true},
         // A sweep's --retry-failed continues a sweep: alone it is refused.
         {"sweep retry-failed without resume", "sweep -t none --retry-failed", {"--retry-failed", "--resume"}},
+        // The light fit of the flat maps: a fit that is not one of the choices, a negative margin.
+        {"light fit unknown", "-t shadowmap:fit=view", {"fit", "view", "casters", "sphere", "scene"}},
+        {"light fit of vsm unknown",
+         "-t vsm:fit=receivers",
+         {"fit", "receivers", "casters", "sphere", "scene"}},
+        {"light fit margin negative", "-t pcss:fit_margin=-0.5", {"fit_margin", "-0.5"}},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

@@ -1,7 +1,9 @@
 // The light cameras of scenes/LightFit (shadowmap's depth maps, projective's directional projector)
 // against the clip coordinates worked out by hand from the fit's definition: x and y framing the
 // casters with 1% + 1e-3 of padding, depth covering every instance with 1e-3 of the scene's radius,
-// and the spot's frustum between the scene's nearest and farthest points along the light's axis.
+// and the spot's frustum between the scene's nearest and farthest points along the light's axis. Then
+// each fit (casters, sphere, scene, and the margin) through the share of the map a sphere of radius 1
+// covers (scenes/MapCoverage), against its silhouette's area over the fitted square's, by hand.
 #include <cmath>
 #include <vector>
 
@@ -9,10 +11,15 @@
 #include <gtest/gtest.h>
 
 #include "scenes/LightFit.h"
+#include "scenes/MapCoverage.h"
+#include "scenes/MeshGenerators.h"
+#include "scenes/SceneLoader.h"
 
 using namespace sb;
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 // Clip coordinates of values ~1 from products of floats of magnitude ~100: a few ulps of the inputs.
 constexpr float kTol = 1e-4f;
@@ -143,4 +150,116 @@ TEST(LightFitTest, SpotInsideTheSceneKeepsItsNearPlanePositive) {
     EXPECT_NEAR(clip(m, {0, 1.0f - 0.006f, 0}).z, -1.0f, kTol);
     EXPECT_NEAR(clip(m, {0, -5, 0}).z, 1.0f, kTol);
     EXPECT_GT((m * glm::vec4(0, 0.5f, 0, 1)).w, 0.0f) << "a point just in front of the light is in front";
+}
+
+namespace {
+
+/// The sphere of scenes/data/sphere_plane.json (radius 1, tessellation 32: 32 rings of 64 segments,
+/// centred at (0, 3, 0)) over its 40 x 40 ground at y = 0, lit straight down.
+Scene sphereOverGround() {
+    Scene scene = SceneLoader::load("sphere_plane");
+    scene.lights[0].direction = {0, -1, 0};
+    return scene;
+}
+
+/// Straight down, the sphere's silhouette is its equator: a regular 64-gon inscribed in the unit
+/// circle, area (64 / 2) sin(2 pi / 64).
+const double kEquatorArea = 32.0 * std::sin(2.0 * kPi / 64.0);
+
+/// The share of a `resolution`^2 map that a convex region of `area` (world units^2) covers when the
+/// map's square side is `side` world units, and the counting's tolerance: a texel whose centre's side
+/// differs from its share of the region meets the region's boundary, and a convex curve meets at most
+/// its bounding box's perimeter in texels + 4 of them (`diameter` bounds the box's side).
+struct Expected {
+    double share, tolerance;
+};
+Expected expectedShare(double area, double diameter, double side, int resolution) {
+    const double texelsPerUnit = resolution / side;
+    return {area / (side * side), (4.0 * diameter * texelsPerUnit + 4.0) / (double(resolution) * resolution)};
+}
+
+double coveredShare(const Scene& scene, const LightFit& fit, int resolution) {
+    const MapCoverage c =
+        MapCoverage::count(scene, fitLightViewProjection(scene, scene.lights[0], fit), resolution);
+    EXPECT_EQ(c.texels, uint64_t(resolution) * uint64_t(resolution));
+    return double(c.covered) / double(c.texels);
+}
+
+} // namespace
+
+TEST(LightFitTest, CoverageCountsTheTexelCentresInsideAHandPlacedTriangle) {
+    // Clip space is world space (identity): window x = (x + 1) / 2 x 64. The right triangle with legs of
+    // n = 10 texels on the map's corner covers the centres (i + 0.5, j + 0.5) with i + j <= n - 1:
+    // n (n + 1) / 2 = 55 of them; drawn twice (both windings) they still count once.
+    const int res = 64, n = 10;
+    const float t = 2.0f * float(n) / float(res);
+    Scene scene;
+    Mesh mesh;
+    mesh.positions = {{-1, -1, 0}, {-1 + t, -1, 0}, {-1, -1 + t, 0}};
+    mesh.normals.assign(3, glm::vec3(0, 0, 1));
+    mesh.indices = {0, 1, 2, 0, 2, 1};
+    scene.meshes.push_back(mesh);
+    scene.instances.emplace_back();
+    scene.updateTransforms();
+    EXPECT_EQ(MapCoverage::count(scene, glm::mat4(1.0f), res).covered, uint64_t(n * (n + 1) / 2));
+    // A non-caster covers nothing, and a triangle behind the near plane (z < -w) is cut away.
+    scene.instances[0].castsShadow = false;
+    EXPECT_EQ(MapCoverage::count(scene, glm::mat4(1.0f), res).covered, 0u);
+    scene.instances[0].castsShadow = true;
+    for (glm::vec3& p : scene.meshes[0].positions) p.z = -2.0f;
+    EXPECT_EQ(MapCoverage::count(scene, glm::mat4(1.0f), res).covered, 0u);
+}
+
+TEST(LightFitTest, EachFitFramesTheSphereAsWorkedOutByHand) {
+    const Scene scene = sphereOverGround();
+    const int res = 4096;
+    struct Case {
+        const char* name;
+        LightFit fit;
+        double side; ///< the map's side in world units, from the fit's definition
+    };
+    // Casters: the sphere's box is 2 x 2 seen from above, + 1% + 1e-3 each side. Sphere: a square of
+    // half-width the box's half-diagonal sqrt(3), the same margin. Scene: the ground's 40 x 40.
+    // The margin: 0.5 each side doubles the casters' side, 0 leaves only the 1e-3.
+    const double sphere = 2.0 * std::sqrt(3.0);
+    const Case cases[] = {
+        {"casters", {LightFitBounds::Casters, 0.01f}, 2.0 * 1.02 + 2e-3},
+        {"sphere", {LightFitBounds::Sphere, 0.01f}, sphere * 1.02 + 2e-3},
+        {"scene", {LightFitBounds::Scene, 0.01f}, 40.0 * 1.02 + 2e-3},
+        {"casters, margin 0.5", {LightFitBounds::Casters, 0.5f}, 2.0 * 2.0 + 2e-3},
+        {"casters, margin 0", {LightFitBounds::Casters, 0.0f}, 2.0 + 2e-3},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        const Expected e = expectedShare(kEquatorArea, 2.0, c.side, res);
+        EXPECT_NEAR(coveredShare(scene, c.fit, res), e.share, e.tolerance);
+    }
+    // The default is the casters' box with today's margin: the fit before it was a choice.
+    EXPECT_EQ(fitLightViewProjection(scene, scene.lights[0]),
+              fitLightViewProjection(scene, scene.lights[0], {LightFitBounds::Casters, 0.01f}));
+    EXPECT_EQ(LightFit{}.bounds, LightFitBounds::Casters);
+    EXPECT_EQ(std::string(lightFitBoundsNames().choices()), "casters, sphere or scene");
+}
+
+TEST(LightFitTest, TheSphereFitFramesTheSameSquareUnderAnObliqueLight) {
+    // sphere_plane's own oblique light (0.3, -1, 0.2): the casters' box seen obliquely frames a larger
+    // map than from above, the sphere fit the same square from every direction. The silhouette is then
+    // no longer the equator: it lies between the discs of the polytope's inradius and of radius 1. The
+    // faces' vertices lie on the unit sphere within an angle of (pi / 64) sqrt(2) of each face's centre
+    // (a cell of 32 rings x 64 segments is pi / 32 on a side), so the inradius is at least
+    // cos(sqrt(2) pi / 64).
+    const Scene scene = SceneLoader::load("sphere_plane");
+    const int res = 4096;
+    const double side = 2.0 * std::sqrt(3.0) * 1.02 + 2e-3;
+    const double inradius = std::cos(std::sqrt(2.0) * kPi / 64.0);
+    const Expected lo = expectedShare(kPi * inradius * inradius, 2.0, side, res);
+    const Expected hi = expectedShare(kPi, 2.0, side, res);
+    const double share = coveredShare(scene, {LightFitBounds::Sphere, 0.01f}, res);
+    EXPECT_GE(share, lo.share - lo.tolerance);
+    EXPECT_LE(share, hi.share + hi.tolerance);
+    // The casters' fit frames the oblique box's outline, wider than its 2 x 2 from above: a smaller
+    // share than straight down, and still more than the sphere's square gives.
+    const double casters = coveredShare(scene, {}, res);
+    EXPECT_LT(casters, expectedShare(kEquatorArea, 2.0, 2.0 * 1.02 + 2e-3, res).share);
+    EXPECT_GT(casters, share);
 }

@@ -9,6 +9,7 @@
 #include "scenes/Math.h"
 #include "scenes/ShadowWork.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 
 namespace sb {
@@ -23,6 +24,8 @@ std::vector<PropertyDesc> declareProperties() {
         flag(Projective::kCull, "true",
              "leave out of each light's texture the casters whose shadow cannot reach the view (blur 0 only: "
              "a blurred edge reaches further)"),
+        LightFitProperties::fit("projector", "point and spot lights aim at the casters' bounding sphere"),
+        LightFitProperties::fitMargin(),
     };
 }
 
@@ -109,8 +112,9 @@ Projective::Projector Projective::aimAtReceivers(const Light& light, const Aabb&
     return p;
 }
 
-Projective::Projector Projective::computeProjector(const Scene& scene, const Light& light) {
-    if (light.type == LightType::Directional) return {fitLightViewProjection(scene, light), false};
+Projective::Projector Projective::computeProjector(const Scene& scene, const Light& light,
+                                                   const LightFit& fit) {
+    if (light.type == LightType::Directional) return {fitLightViewProjection(scene, light, fit), false};
     // Point and spot: a perspective projector at the light looking at the casters' bounding sphere.
     const Aabb casters = scene.computeBounds(true);
     const glm::vec3 centre = casters.center();
@@ -146,7 +150,8 @@ Projective::Projector Projective::computeProjector(const Scene& scene, const Lig
     return p;
 }
 
-Projective::Plan Projective::plan(const Scene& scene) {
+Projective::Plan Projective::plan(const Scene& scene, const PropertySet& properties) {
+    const LightFit fit = LightFitProperties::lightFit(properties);
     Plan p;
     p.receivers = receiverBounds(scene);
     // No casters, no light that casts, or no receiver: nothing to project, everything is lit (and the
@@ -164,7 +169,7 @@ Projective::Plan Projective::plan(const Scene& scene) {
             p.textureMatrix.push_back(bias);
             continue;
         }
-        const Projector projector = computeProjector(scene, scene.lights[i]);
+        const Projector projector = computeProjector(scene, scene.lights[i], fit);
         p.viewProj.push_back(projector.viewProj);
         p.textureMatrix.push_back(bias * projector.viewProj);
         p.clamped += projector.clamped;

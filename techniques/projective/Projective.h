@@ -9,7 +9,9 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/LightFit.h"
 #include "scenes/Scene.h"
+#include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/Technique.h"
 #include "techniques/TechniqueInfo.h"
@@ -33,8 +35,9 @@ struct Projective {
         glm::mat4 viewProj{1.0f};
         bool clamped = false;
     };
-    /// The projector of `light` for `scene` (whose casters must not be empty).
-    static Projector computeProjector(const Scene& scene, const Light& light);
+    /// The projector of `light` for `scene` (whose casters must not be empty); `fit` frames a
+    /// directional light's (point and spot lights aim at the casters' bounding sphere).
+    static Projector computeProjector(const Scene& scene, const Light& light, const LightFit& fit = {});
     /// A point or spot light's projector aimed at `receivers` (world bounds, not empty): from the
     /// light towards their centre, the half-angle to their farthest corner (at most
     /// kMaxHalfAngleDeg), far at their deepest corner.
@@ -49,7 +52,10 @@ struct Projective {
         const char* noProjector = nullptr;    ///< why the scene needs none (ShadowWork), or nullptr
         Aabb receivers;                       ///< the non-casters' bounds: where shadows can fall
     };
-    static Plan plan(const Scene& scene);
+    /// The plan of `scene`: a directional light's projector is the shadow map's light camera
+    /// (scenes/LightFit.h), framed as `properties`' `fit` and `fit_margin` ask
+    /// (techniques/LightFitProperties.h).
+    static Plan plan(const Scene& scene, const PropertySet& properties);
 
     /// The counters of a frame.
     static Counters counters(const SubmitStats& s, const Scene& scene, int resolution,

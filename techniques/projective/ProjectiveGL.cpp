@@ -25,7 +25,7 @@ ProjectiveGL::~ProjectiveGL() {
 
 void ProjectiveGL::setScene(const Scene& scene) {
     mCulling.setScene(scene);
-    const Projective::Plan plan = Projective::plan(scene);
+    const Projective::Plan plan = Projective::plan(scene, properties());
     mReceivers = plan.receivers;
     mViewProj = plan.viewProj;
     mTextureMatrix = plan.textureMatrix;

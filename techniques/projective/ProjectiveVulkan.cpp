@@ -40,7 +40,7 @@ void ProjectiveVulkan::release() {
 
 void ProjectiveVulkan::setScene(const Scene& scene) {
     mCulling.setScene(scene);
-    mPlan = Projective::plan(scene);
+    mPlan = Projective::plan(scene, properties());
 }
 
 void ProjectiveVulkan::sceneChanged(const Scene& scene, uint32_t) {

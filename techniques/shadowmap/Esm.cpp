@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/Esm.h"
 
+#include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
 
@@ -21,6 +22,8 @@ std::vector<PropertyDesc> declareProperties() {
              "blur's reach)"),
         real(Esm::kExponent, "160", 1, Esm::kMaxExponent,
              "c of exp(c (d_occ - t)) over linear depth in [0, 1]: larger is sharper towards contact"),
+        LightFitProperties::fit("map", "spot lights take their cone"),
+        LightFitProperties::fitMargin(),
     };
 }
 

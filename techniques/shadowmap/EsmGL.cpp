@@ -12,7 +12,7 @@ constexpr glm::vec4 kNoOccluder{1.0f, 0.0f, 0.0f, 0.0f};
 EsmGL::EsmGL() : GlTechnique(Esm::declaration()) {}
 
 void EsmGL::setScene(const Scene& scene) {
-    mMaps.fits().setScene(scene);
+    mMaps.fits().setScene(scene, properties());
 }
 
 void EsmGL::compile(const CompileContext& ctx) {

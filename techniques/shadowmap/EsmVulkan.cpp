@@ -5,7 +5,7 @@ namespace sb {
 EsmVulkan::EsmVulkan() : VulkanTechnique(Esm::declaration()) {}
 
 void EsmVulkan::setScene(const Scene& scene) {
-    mMaps.fits().setScene(scene);
+    mMaps.fits().setScene(scene, properties());
 }
 
 void EsmVulkan::compile(const VulkanCompileContext& ctx) {

@@ -6,7 +6,9 @@
 
 #include "scenes/LightFit.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/LightFitProperties.h"
 #include "techniques/PointLightRefusal.h"
+#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -16,10 +18,14 @@ const glm::mat4& FlatLightFits::textureBias() {
     return kBias;
 }
 
-void FlatLightFits::setScene(const Scene& scene, const std::string& technique) {
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const PropertySet& p) {
     mViewProj.clear();
     mShadowMatrix.clear();
     mCastsShadows.clear();
+    const LightFit fit = LightFitProperties::lightFit(p);
+    const int resolution = int(p.getInt(ShadowMapProperties::kResolution));
+    const bool recount = !(scene.motion && mCoverageCounted);
+    if (recount) mCoverage = {};
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
@@ -30,9 +36,11 @@ void FlatLightFits::setScene(const Scene& scene, const std::string& technique) {
             continue;
         }
         PointLightRefusal::refuse(l, i, technique);
-        mViewProj.push_back(fitLightViewProjection(scene, l));
+        mViewProj.push_back(fitLightViewProjection(scene, l, fit));
         mShadowMatrix.push_back(textureBias() * mViewProj.back());
+        if (recount) mCoverage += MapCoverage::count(scene, mViewProj.back(), resolution);
     }
+    mCoverageCounted = true;
 }
 
 float FlatLightFits::texelWorldSize(const glm::mat4& lightViewProj, int resolution) {

@@ -1,7 +1,8 @@
 #pragma once
 // The flat light cameras of `shadowmap` and `pcss`: per light of a scene (at most kMaxLights) the
 // orthographic (directional) or perspective (spot) camera fitted to the scene (scenes/LightFit.h,
-// Williams 1978), the shadow matrix that takes world positions to the map's [0, 1] texture space, and
+// Williams 1978) as the technique's `fit` and `fit_margin` ask, the share of the maps the casters cover
+// (scenes/MapCoverage.h), the shadow matrix that takes world positions to the map's [0, 1] texture space, and
 // their depth pass, one layer of a DepthLayers per light. Point lights need an omni map and are refused
 // here with the words every flat map uses (techniques/PointLightRefusal.h). Both members fit, render
 // and refuse alike; keeping it in one place keeps their maps, counters and messages identical.
@@ -12,8 +13,10 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
+#include "scenes/MapCoverage.h"
 #include "scenes/Scene.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/PropertySet.h"
 
 namespace sb {
 
@@ -38,12 +41,18 @@ public:
     static float farthestW(const glm::mat4& lightViewProj, const Aabb& bounds);
     /// Clip space to [0, 1] texture space: scale by one half, translate by one half.
     static const glm::mat4& textureBias();
-    /// Fits every light's camera (untimed: setScene), refusing point lights that cast shadows in
-    /// `technique`'s name (PointLightRefusal::refuse; a point light with "casts_shadows": false only
-    /// illuminates: its matrix is unused).
-    void setScene(const Scene& scene, const std::string& technique);
+    /// Fits every light's camera (untimed: setScene) with the fit `p` asks for (LightFitProperties::
+    /// lightFit), refusing point lights that cast shadows in `technique`'s name (PointLightRefusal::
+    /// refuse; a point light with "casts_shadows": false only illuminates: its matrix is unused), and
+    /// counts the texels the casters cover in maps of `p`'s resolution. A scene in motion calls this in
+    /// every timed frame (Technique::sceneChanged): there the coverage is counted once, at the pose the
+    /// run was prepared at, so that the count's CPU work stays out of the measured frames.
+    void setScene(const Scene& scene, const std::string& technique, const PropertySet& p);
 
     size_t size() const { return mViewProj.size(); }
+    /// The shadowed lights' maps together: texels the casters cover, and all their texels
+    /// (counter_map_covered_pct).
+    const MapCoverage& coverage() const { return mCoverage; }
     /// The lights that cast shadows (their layers are rendered): the texel counters count these.
     size_t shadowed() const;
     const std::vector<glm::mat4>& viewProj() const { return mViewProj; }           ///< per light
@@ -62,6 +71,8 @@ private:
     std::vector<glm::mat4> mViewProj;
     std::vector<glm::mat4> mShadowMatrix;
     std::vector<uint8_t> mCastsShadows; ///< per light
+    MapCoverage mCoverage;
+    bool mCoverageCounted = false; ///< a scene in motion counts once (setScene)
 };
 
 } // namespace sb

@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
+#include "techniques/LightFitProperties.h"
 #include "techniques/PointLightRefusal.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 
@@ -111,7 +112,12 @@ size_t MomentMapFits::shadowedLights() const {
     return size_t(std::count(mCastsShadows.begin(), mCastsShadows.end(), uint8_t(1)));
 }
 
-void MomentMapFits::setScene(const Scene& scene) {
+void MomentMapFits::setScene(const Scene& scene, const PropertySet& p) {
+    mFit = LightFitProperties::lightFit(p);
+    fitLights(scene);
+}
+
+void MomentMapFits::fitLights(const Scene& scene) {
     mFitted.clear();
     mCastsShadows.clear();
     mDirectional.clear();
@@ -127,7 +133,7 @@ void MomentMapFits::setScene(const Scene& scene) {
             continue;
         }
         PointLightRefusal::refuse(l, i, mOwner);
-        mFitted.push_back(fitLightViewProjection(scene, l));
+        mFitted.push_back(fitLightViewProjection(scene, l, mFit));
         mDirectional.push_back(l.type == LightType::Directional);
         mLightPosition.push_back(l.position);
     }
@@ -143,7 +149,7 @@ void MomentMapFits::setScene(const Scene& scene) {
 
 void MomentMapFits::sceneChanged(const Scene& scene) {
     const int resolution = mFitResolution, margin = mMarginTexels;
-    setScene(scene);
+    fitLights(scene);
     if (resolution > 0) fit(scene, resolution, margin);
 }
 
@@ -178,6 +184,11 @@ void MomentMapFits::fit(const Scene& scene, int resolution, int marginTexels) {
     }
     mFitResolution = resolution;
     mMarginTexels = marginTexels;
+    if (scene.motion && mCoverageCounted) return;
+    mCoverage = {};
+    for (size_t i = 0; i < mViewProj.size(); ++i)
+        if (castsShadow(i)) mCoverage += MapCoverage::count(scene, mViewProj[i], resolution);
+    mCoverageCounted = true;
 }
 
 MomentMapFits::LightDraws MomentMapFits::cull(size_t light, const Scene& scene,
@@ -209,7 +220,8 @@ Counters MomentMapFits::counters(const SubmitStats& s, int resolution, double bl
             {"shadow_map_texels", res * res * double(shadowedLights())},
             {"lights_unshadowed", double(lights() - shadowedLights())},
             {"blur_texels", blurTexels},
-            {"casters_culled", double(culled)}};
+            {"casters_culled", double(culled)},
+            {"map_covered_pct", mCoverage.percent()}};
 }
 
 } // namespace sb

@@ -12,7 +12,10 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
+#include "scenes/LightFit.h"
+#include "scenes/MapCoverage.h"
 #include "scenes/Scene.h"
+#include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
 
@@ -22,13 +25,16 @@ class MomentMapFits {
 public:
     explicit MomentMapFits(std::string owner) : mOwner(std::move(owner)) {}
 
-    /// Fits a light camera per light (at most kMaxLights, scenes/LightFit.h); throws Error(Unsupported)
-    /// naming the omni techniques for a point light.
-    void setScene(const Scene& scene);
+    /// Fits a light camera per light (at most kMaxLights, scenes/LightFit.h) with the fit `p` asks for
+    /// (its `fit` and `fit_margin`, LightFitProperties::lightFit); throws Error(Unsupported) naming the
+    /// omni techniques for a point light.
+    void setScene(const Scene& scene, const PropertySet& p);
     /// A scene in motion moved: the light fits again, then the maps fitted as the last fit() did.
     void sceneChanged(const Scene& scene);
-    /// The light cameras for maps of `resolution` texels with a border of `marginTexels`, and the depth
-    /// parameters for them. Cheap when nothing changed. A margin above a quarter of the resolution is
+    /// The light cameras for maps of `resolution` texels with a border of `marginTexels`, the depth
+    /// parameters for them and the texels the casters cover (coverage(); of a scene in motion counted
+    /// once, at the pose the run was prepared at: FlatLightFits::setScene says why). Cheap when nothing
+    /// changed. A margin above a quarter of the resolution is
     /// refused (Error(BadInput)): the casters would keep less than half the map.
     void fit(const Scene& scene, int resolution, int marginTexels);
 
@@ -68,11 +74,17 @@ public:
     /// bias * viewProj per light: what common/scene.vert projects the receivers with.
     const std::vector<glm::mat4>& shadowMatrices() const { return mShadowMatrix; }
 
+    /// The shadowed lights' maps together: texels the casters cover, and all their texels.
+    const MapCoverage& coverage() const { return mCoverage; }
+
     /// The frame's counters on either API: draw_calls, triangles, shadow_map_texels, lights_unshadowed,
-    /// blur_texels, casters_culled.
+    /// blur_texels, casters_culled, map_covered_pct.
     Counters counters(const SubmitStats& s, int resolution, double blurTexels, size_t culled) const;
 
 private:
+    /// setScene's work with the fit already read (mFit): what a scene in motion repeats.
+    void fitLights(const Scene& scene);
+
     std::string mOwner;                 ///< technique name, for error messages
     std::vector<glm::mat4> mFitted;     ///< per light: scenes/LightFit.h's camera, before the margin
     std::vector<uint8_t> mCastsShadows; ///< per light
@@ -85,6 +97,9 @@ private:
     std::vector<glm::mat4> mViewProj, mShadowMatrix;
     std::vector<glm::vec4> mDepthPlane, mDepthPoint;
     InstanceCulling mCulling;
+    LightFit mFit;
+    MapCoverage mCoverage;
+    bool mCoverageCounted = false; ///< a scene in motion counts once
 };
 
 } // namespace sb

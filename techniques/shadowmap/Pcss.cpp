@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
@@ -58,6 +59,8 @@ std::vector<PropertyDesc> declareProperties() {
              "unit depth (2 tan of the angular radius) for directional lights"),
         P::biasConstant("glPolygonOffset units of the depth pass"),
         P::biasSlope("glPolygonOffset factor of the depth pass"),
+        LightFitProperties::fit("map", "spot lights take their cone"),
+        LightFitProperties::fitMargin(),
     };
 }
 
@@ -126,8 +129,9 @@ glm::vec4 Pcss::searchVector(const LightParams& lp) {
     return {lp.extent, lp.nearestCaster, 0.0f};
 }
 
-Counters Pcss::counters(const SubmitStats& s, int mapSize, size_t lights, size_t shadowed, size_t culled,
+Counters Pcss::counters(const SubmitStats& s, int mapSize, const FlatLightFits& fits, size_t culled,
                         size_t blockerTaps, size_t filterTaps, const std::vector<LightParams>& params) {
+    const size_t lights = fits.size(), shadowed = fits.shadowed();
     double defaulted = 0.0;
     for (const LightParams& lp : params) defaulted += lp.defaulted ? 1.0 : 0.0;
     return {{"draw_calls", double(s.drawCalls)},
@@ -138,7 +142,8 @@ Counters Pcss::counters(const SubmitStats& s, int mapSize, size_t lights, size_t
             {"blocker_taps", double(blockerTaps)},
             {"filter_taps", double(filterTaps)},
             {"light_size", params.empty() ? 0.0 : double(params[0].size)},
-            {"light_size_defaulted", defaulted}};
+            {"light_size_defaulted", defaulted},
+            {"map_covered_pct", fits.coverage().percent()}};
 }
 
 uint64_t Pcss::filterSeed() {

@@ -10,6 +10,7 @@
 #include "scenes/Scene.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
+#include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 
@@ -45,8 +46,9 @@ struct Pcss {
     static glm::vec4 lightVector(const LightParams& lp);
     static glm::vec4 searchVector(const LightParams& lp);
     /// The frame's counters on either API: draw_calls and triangles of `s`, the maps' texels, unshadowed
-    /// lights, culled casters, the kernels' taps, light 0's size and the lights given the default size.
-    static Counters counters(const SubmitStats& s, int mapSize, size_t lights, size_t shadowed, size_t culled,
+    /// lights (of `fits`), culled casters, the kernels' taps, light 0's size, the lights given the
+    /// default size and the share of the maps the casters cover (FlatLightFits::coverage).
+    static Counters counters(const SubmitStats& s, int mapSize, const FlatLightFits& fits, size_t culled,
                              size_t blockerTaps, size_t filterTaps, const std::vector<LightParams>& params);
     /// The filter's Poisson disk differs from the search's: its seed (techniques/shadowmap/PoissonDisk.h).
     static uint64_t filterSeed();

@@ -36,7 +36,7 @@ PcssGL::~PcssGL() {
 }
 
 void PcssGL::setScene(const Scene& scene) {
-    mLights.setScene(scene, "pcss");
+    mLights.setScene(scene, "pcss", properties());
     mCulling.setScene(scene);
 }
 
@@ -135,8 +135,8 @@ void PcssGL::renderLighting(FrameContext& ctx) {
 void PcssGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
-    mCounters = Pcss::counters(s, mMaps.size(), mLights.size(), mLights.shadowed(), mCulled,
-                               mBlockerKernel.size(), mFilterKernel.size(), mParams);
+    mCounters = Pcss::counters(s, mMaps.size(), mLights, mCulled, mBlockerKernel.size(), mFilterKernel.size(),
+                               mParams);
 }
 
 } // namespace sb

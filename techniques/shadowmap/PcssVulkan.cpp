@@ -49,7 +49,7 @@ void PcssVulkan::release() {
 }
 
 void PcssVulkan::setScene(const Scene& scene) {
-    mLights.setScene(scene, "pcss");
+    mLights.setScene(scene, "pcss", properties());
     mCulling.setScene(scene);
 }
 
@@ -172,8 +172,8 @@ void PcssVulkan::execute(VulkanFrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); },
         [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
-    mCounters = Pcss::counters(s, mSize, mLights.size(), mLights.shadowed(), mCulled, mBlockerKernel.size(),
-                               mFilterKernel.size(), mParams);
+    mCounters =
+        Pcss::counters(s, mSize, mLights, mCulled, mBlockerKernel.size(), mFilterKernel.size(), mParams);
 }
 
 } // namespace sb

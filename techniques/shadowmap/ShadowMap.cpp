@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scenes/Math.h"
+#include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
@@ -58,6 +59,8 @@ std::vector<PropertyDesc> declareProperties() {
         flag(ShadowMap::kCull, "true",
              "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
              "filter's footprint)"),
+        LightFitProperties::fit("map", "spot lights take their cone"),
+        LightFitProperties::fitMargin(),
     };
 }
 
@@ -133,7 +136,8 @@ Defines ShadowMap::lightingDefines(Defines lit, const PropertySet& p, int layers
 Counters ShadowMap::counters(const SubmitStats& s, int mapSize, const FlatLightFits& lights, size_t culled) {
     return DepthLightingFrame::counters(s, double(mapSize) * mapSize * double(lights.shadowed()),
                                         {{"lights_unshadowed", double(lights.size() - lights.shadowed())},
-                                         {"casters_culled", double(culled)}});
+                                         {"casters_culled", double(culled)},
+                                         {"map_covered_pct", lights.coverage().percent()}});
 }
 
 } // namespace sb

@@ -31,7 +31,7 @@ constexpr GLint kKernelLocation = 20; // uKernel[64]
 ShadowMapGL::ShadowMapGL() : GlTechnique(ShadowMap::declaration()) {}
 
 void ShadowMapGL::setScene(const Scene& scene) {
-    mLights.setScene(scene, "shadowmap");
+    mLights.setScene(scene, "shadowmap", properties());
     mCulling.setScene(scene);
 }
 

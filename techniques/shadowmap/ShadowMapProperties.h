@@ -1,10 +1,11 @@
 #pragma once
 // The knobs every depth-map member of the family has (`shadowmap`, `pcss`, `cascaded`, `cubemap`,
 // `paraboloid`): the map's resolution, the depth pass's glPolygonOffset bias (constant and slope-scaled)
-// and the PCF kernel width. One name and one maker each, so the members cannot drift apart in what a
-// knob is called or which range it takes; each member passes its own default or description where its
-// map differs (a cube face, a cascade, a paraboloid half), the shared wording otherwise; and the sweeps
-// of the knobs whose sweeps are the same.
+// and the PCF kernel width. (The flat maps' light fit, `fit` and `fit_margin`, is
+// techniques/LightFitProperties.h: `projective` shares it.) One name and one maker each, so the members
+// cannot drift apart in what a knob is called or which range it takes; each member passes its own default or
+// description where its map differs (a cube face, a cascade, a paraboloid half), the shared wording
+// otherwise; and the sweeps of the knobs whose sweeps are the same.
 #include <string>
 
 #include "techniques/Property.h"

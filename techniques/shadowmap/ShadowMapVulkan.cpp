@@ -41,7 +41,7 @@ void ShadowMapVulkan::release() {
 }
 
 void ShadowMapVulkan::setScene(const Scene& scene) {
-    mLights.setScene(scene, "shadowmap");
+    mLights.setScene(scene, "shadowmap", properties());
     mCulling.setScene(scene);
 }
 

@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/Vsm.h"
 
+#include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/shadowmap/ShadowMapProperties.h"
 
@@ -27,6 +28,8 @@ std::vector<PropertyDesc> declareProperties() {
              "0.78% of pixels at 0 and 0.2, 0 at 0.5; a plate 0.3 above the ground 4.7% at 0, 4.2% at "
              "0.2, 2.9% at 0.5, 0 only at 0.9; aircraft's false shadow 0.25% at 0.2, 0.58% at 0.5 "
              "(techniques/shadowmap/README.md)"),
+        LightFitProperties::fit("map", "spot lights take their cone"),
+        LightFitProperties::fitMargin(),
     };
 }
 

@@ -13,7 +13,7 @@ constexpr glm::vec4 kNoOccluder{1.0f, 1.0f, 0.0f, 0.0f};
 VsmGL::VsmGL() : GlTechnique(Vsm::declaration()) {}
 
 void VsmGL::setScene(const Scene& scene) {
-    mMaps.fits().setScene(scene);
+    mMaps.fits().setScene(scene, properties());
 }
 
 void VsmGL::compile(const CompileContext& ctx) {

@@ -5,7 +5,7 @@ namespace sb {
 VsmVulkan::VsmVulkan() : VulkanTechnique(Vsm::declaration()) {}
 
 void VsmVulkan::setScene(const Scene& scene) {
-    mMaps.fits().setScene(scene);
+    mMaps.fits().setScene(scene, properties());
 }
 
 void VsmVulkan::compile(const VulkanCompileContext& ctx) {
