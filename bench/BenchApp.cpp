@@ -15,6 +15,7 @@
 #include "bench/explain/ExplainCommand.h"
 #include "bench/export/ExportCommand.h"
 #include "bench/figures/FiguresCommand.h"
+#include "bench/floors/FloorsCommand.h"
 #include "bench/golden/GoldenCommand.h"
 #include "bench/lib/harness/MeasuredHarness.h"
 #include "bench/lib/options/BashCompletion.h"
@@ -89,6 +90,10 @@ constexpr Mode kModes[] = {
      "what the scene asks for, what each technique delivers of it, the\n"
      "permutation it compiles and the passes one frame runs or skips",
      ExplainCommand::main},
+    {"floors", "bench floors [options]",
+     "each pass of each technique against its floor: the least a pass of\n"
+     "its kind does for the same output and fragments (times, instructions)",
+     FloorsCommand::main},
     {"bisect", "bench bisect GOOD BAD -c CONFIG",
      "the first commit of GOOD..BAD where a configuration's exact work,\n"
      "instructions per frame or image changed (builds in a worktree)",
@@ -126,6 +131,7 @@ constexpr const char* kExamples = R"(Examples:
   bench sweep -t none -t shadowmap -n 1,50,100,200 --csv inst.csv
   bench bottleneck -t none -t shadowmap -n 100 --csv bn.csv
   bench explain -t planar --scene aircraft         effects asked for and delivered, passes run
+  bench floors -t shadowmap -t volume              each pass against the least a pass of its kind does
   bench report out/                                the CSVs, figures and images of out/ as one HTML page
   bench export r.csv --format gbench -o r.json     Google Benchmark JSON for dashboards
   bench --version                                  version, the commit it was built from, build type)";

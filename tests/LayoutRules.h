@@ -114,6 +114,8 @@ inline const std::vector<Layer>& layers() {
         {"bench/explain",
          lib({"output", "options", "statistics", "harness", "rows", "measure", "select"}),
          {}},
+        // Each pass against its floor: the harness's census and frames, callgrind's dumps read back.
+        {"bench/floors", lib({"output", "options", "statistics", "callgrind", "harness", "select"}), {}},
         {"bench/merge", lib({"output", "options"}), {}},
         {"bench/export", lib({"output", "options"}), {}},
         {"bench/sweep", lib({"output", "options", "sweep"}), {}},
@@ -132,8 +134,9 @@ inline const std::vector<Layer>& layers() {
         // The dispatcher: every subcommand and the libraries.
         {"bench",
          plus(lib({"output", "options", "statistics", "harness", "rows", "measure", "sweep"}),
-              {"bench/run", "bench/explain", "bench/merge", "bench/export", "bench/sweep", "bench/bottleneck",
-               "bench/figures", "bench/golden", "bench/ci", "bench/compare", "bench/report", "bench/bisect"}),
+              {"bench/run", "bench/explain", "bench/floors", "bench/merge", "bench/export", "bench/sweep",
+               "bench/bottleneck", "bench/figures", "bench/golden", "bench/ci", "bench/compare",
+               "bench/report", "bench/bisect"}),
          {"common"}},
         // The comparison programs. handloop runs bench's harness beside a hand-written loop;
         // handshadow is the other end of a comparison and shares no harness code: the scene model only.

@@ -49,6 +49,9 @@ public:
     FrameTargets& targets() { return *mTargets; }
     Submitter& submitter() { return *mSubmitter; }
     ProgramCache& programs() { return mPrograms; }
+    /// The pass timer the techniques' frames go through: `bench floors` sets an observer on it around
+    /// frames of its own (bench/floors/PassProbe.h); the measured frames never carry one.
+    PassTimer& passTimer() { return *mPassTimer; }
     RowSource rowSource() const override;
 
     const TimerVerdict& calibrateTimer() override;
