@@ -2,7 +2,7 @@
 // wrong input, 3 naming `bash scripts/install-deps.sh perf` for a missing tool), its arithmetic and its
 // same-driver check against a stand-in glmark2 (a shell script printing glmark2's two result lines), and,
 // where the perf group is installed, one real round on each driver. The stand-in runs everywhere: CI does
-// not install glmark2. About 10 s with glmark2 installed (two real rounds at 128^2), 4 s without.
+// not install glmark2. About 8 s with glmark2 installed (two real rounds at 128^2), 3 s without.
 #include <cmath>
 #include <filesystem>
 #include <regex>
