@@ -15,6 +15,9 @@
 #          tests/JobArraySlurmTest.cpp, and trying scripts/slurm-sweep.sbatch). The packages' own
 #          services are not used; where an init system starts them, they keep to their default ports
 #          and sockets, apart from the test's cluster
+#   perf   the peer comparison with glmark2's shadow scene (results/perf/README.md,
+#          tools/perf/glmark2-compare.sh): glmark2 and its models, Xvfb for it, apitrace to trace and replay
+#          it, valgrind to count its instructions; not part of test (CI does not run the comparison)
 #   test   everything: bench, plot, driver, slurm, and what the test suite, the sanitizer build and the
 #          fuzzers drive (quick start 2, scripts/test.sh); the default
 # Idempotent: packages already present are skipped and a complete driver prefix is kept, so it costs
@@ -42,6 +45,20 @@ SLURM=(
   # slurm-wlm: slurmctld, slurmd and slurm-client (sbatch, scontrol, squeue, scancel, sinfo); munge
   # comes with slurmd, named here because tools/slurm/cluster.sh starts munged itself
   slurm-wlm munge
+)
+PERF=(
+  # glmark2 (the X11 build: it renders off-screen under Xvfb) and its models (horse.3ds, which
+  # results/perf/horse.json names)
+  glmark2-x11 glmark2-data
+  # Xvfb and xvfb-run (which needs xauth) for glmark2's X display
+  xvfb xauth
+  # apitrace traces glmark2 and glretrace replays it (apitrace-tracers: the wrapper libraries `apitrace
+  # trace` preloads; python3-pil: apitrace's image tools)
+  apitrace apitrace-tracers python3-pil
+  # instructions per frame of both programs (callgrind, callgrind_annotate)
+  valgrind
+  # the comparison script's ratios and its parsing of bench's CSV
+  bc python3
 )
 TEST=(
   # lld: the linker of every build once present (CMakeLists.txt says why)
@@ -164,8 +181,9 @@ for group in "$@"; do
     plot) PACKAGES+=("${PLOT[@]}") ;;
     driver) WANT_DRIVER=1 ;;
     slurm) PACKAGES+=("${SLURM[@]}") ;;
+    perf) PACKAGES+=("${PERF[@]}") ;;
     test) PACKAGES+=("${BENCH[@]}" "${PLOT[@]}" "${SLURM[@]}" "${TEST[@]}"); WANT_DRIVER=1 ;;
-    *) echo "install-deps: unknown group '$group' (bench, plot, driver, slurm or test)" >&2; exit 2 ;;
+    *) echo "install-deps: unknown group '$group' (bench, plot, driver, slurm, perf or test)" >&2; exit 2 ;;
   esac
 done
 
