@@ -72,6 +72,9 @@ const std::vector<NotRun> kNotRun = {
     {"bash tools/slurm/cluster.sh", "starts Slurm's daemons as root (JobArraySlurmTest, label slurm)"},
     {"export SLURM_CONF=", "names the cluster tools/slurm/cluster.sh started"},
     {"build/handloop", "alternates a hundred frame pairs (HandShadowCliTest runs it short)"},
+    {"bash scripts/install-deps.sh", "installs packages as root (the test command installs its groups)"},
+    {"tools/perf/glmark2-compare.sh",
+     "alternates glmark2 and bench for minutes (Glmark2CompareCliTest runs one round)"},
 };
 
 constexpr int kCommandLimitS = 60;
