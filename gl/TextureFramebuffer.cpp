@@ -22,17 +22,6 @@ const char* statusName(GLenum status) {
     return kStatuses.name(status, "unknown framebuffer status");
 }
 
-GLuint createTexture(GLenum format, int width, int height) {
-    GLuint texture = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-    glTextureStorage2D(texture, 1, format, width, height);
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return texture;
-}
-
 constexpr Named<GLenum> kFormatNames[] = {
     {GL_RGBA8, "RGBA8"},
     {GL_RGBA16F, "RGBA16F"},
@@ -46,6 +35,17 @@ std::string formatName(GLenum f) {
     return e ? e->name : "format 0x" + std::to_string(f);
 }
 } // namespace
+
+GLuint createTexture(GLenum format, int width, int height) {
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, format, width, height);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
 
 TextureFramebuffer::TextureFramebuffer(const std::string& what, int width, int height,
                                        const std::vector<GLenum>& colorFormats)

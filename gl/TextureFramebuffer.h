@@ -9,6 +9,10 @@
 
 namespace sb {
 
+/// An immutable single-level 2D texture of `format`, NEAREST-filtered and clamped to its edge: a
+/// render target read texel-exactly (this class's attachments, the floor passes of bench/floors/).
+GLuint createTexture(GLenum format, int width, int height);
+
 class TextureFramebuffer {
 public:
     /// Throws sb::Error(ExitCode::Unsupported) naming `what`, the size, the formats and the status

@@ -43,7 +43,9 @@ void fillConvex(const std::vector<glm::dvec2>& poly, int resolution, std::vector
     const int rowHi = int(std::clamp(std::floor(yhi - 0.5), -1.0, lastRow));
     for (int row = rowLo; row <= rowHi; ++row) {
         const double y = row + 0.5;
-        double xlo = -0.5, xhi = resolution - 0.5; // the row's centres, all of them
+        // The row's texel centres, 0.5 to resolution - 0.5, all of them: an edge beyond the map's left
+        // side must leave the first texel at 0 (-0.5 made it -1, a write before the row).
+        double xlo = 0.5, xhi = resolution - 0.5;
         bool empty = false;
         for (size_t k = 0; k < n && !empty; ++k) {
             const glm::dvec2& p = poly[k];

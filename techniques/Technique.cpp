@@ -1,5 +1,9 @@
 #include "techniques/Technique.h"
 
+#include <string>
+
+#include "shading/ShaderLimits.h"
+
 namespace sb {
 
 Technique::Technique(TechniqueInfo info)
@@ -9,10 +13,38 @@ void Technique::sceneChanged(const Scene& scene, uint32_t) {
     setScene(scene);
 }
 
-void addShadowExceptionDefines(const Scene& scene, Defines& defines) {
+namespace {
+
+/// One bit per light of `scene` (at most kMaxLights) for which `has` is true, as a GLSL uint literal.
+template <typename Predicate>
+std::string lightMask(const Scene& scene, Predicate has) {
+    uint32_t mask = 0;
+    for (size_t i = 0; i < scene.lights.size() && i < size_t(kMaxLights); ++i)
+        if (has(scene.lights[i])) mask |= 1u << i;
+    return std::to_string(mask) + "u";
+}
+
+} // namespace
+
+void addLightKindDefines(const Scene& scene, Defines& defines) {
+    defines["SB_STATIC_LIGHTS"] = "";
+    defines["SB_POSITIONAL_LIGHTS"] =
+        lightMask(scene, [](const Light& l) { return l.type != LightType::Directional; });
+    defines["SB_SPOT_LIGHTS"] = lightMask(scene, [](const Light& l) { return l.type == LightType::Spot; });
+    defines["SB_RANGED_LIGHTS"] =
+        lightMask(scene, [](const Light& l) { return l.type != LightType::Directional && l.range > 0.0f; });
+}
+
+Defines withLightKinds(Defines defines, const Scene& scene) {
+    addLightKindDefines(scene, defines);
+    return defines;
+}
+
+void addSceneDefines(const Scene& scene, Defines& defines) {
     if (scene.hasNonReceivers()) defines["SB_NON_RECEIVERS"] = "";
     if (const uint32_t mask = scene.shadowlessLightMask())
         defines["SB_SHADOWLESS_LIGHTS"] = std::to_string(mask) + "u";
+    addLightKindDefines(scene, defines);
 }
 
 } // namespace sb

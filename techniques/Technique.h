@@ -59,10 +59,20 @@ private:
     std::string mPermutationKey;
 };
 
-/// The defines a scene's shadow exceptions add to every scene-drawing program, on either API, each only
-/// where the scene has one (common/lighting.glsl, shadowApplies): SB_NON_RECEIVERS when an instance
-/// receives no shadow (the instance's sign carries it), SB_SHADOWLESS_LIGHTS=<mask> when a light casts
-/// none. A scene without exceptions adds nothing, so its programs stay what they were.
-void addShadowExceptionDefines(const Scene& scene, Defines& defines);
+/// The defines a scene adds to every scene-drawing program, on either API (common/lighting.glsl):
+/// - its shadow exceptions, each only where the scene has one: SB_NON_RECEIVERS when an instance
+///   receives no shadow (the instance's sign carries it), SB_SHADOWLESS_LIGHTS=<mask> when a light casts
+///   none (shadowApplies);
+/// - its lights' kinds, a bit per light index: SB_POSITIONAL_LIGHTS (point or spot), SB_SPOT_LIGHTS and
+///   SB_RANGED_LIGHTS (a positional light with a range), under SB_STATIC_LIGHTS. A light's kind and range
+///   are fixed once the scene is loaded (motion moves lights, it does not change them), and llvmpipe runs
+///   both sides of a branch on a uniform under a mask: known at compile time, a directional light's
+///   fragments skip the distance, range and cone terms they would discard.
+void addSceneDefines(const Scene& scene, Defines& defines);
+/// The light kinds alone (the second item above), for programs that take no shadow exceptions (the
+/// lit passes of `none`, `blob`, `planar`, `projective` and `volume`, which apply their own).
+void addLightKindDefines(const Scene& scene, Defines& defines);
+/// `defines` with the light kinds of `scene` added (addLightKindDefines).
+Defines withLightKinds(Defines defines, const Scene& scene);
 
 } // namespace sb

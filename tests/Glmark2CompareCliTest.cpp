@@ -151,7 +151,7 @@ TEST(Glmark2Compare, RealRoundOnEachDriver) {
     const std::string dir = test::freshTestDir("glmark2cmp");
     const bool second = std::filesystem::exists("/opt/shadowbench/drivers/mesa-25.0.7") ||
                         std::getenv("SHADOWBENCH_DRIVERS_DIR") != nullptr;
-    for (const std::string driver : {std::string("system"), std::string("mesa-25.0.7")}) {
+    for (const std::string& driver : {std::string("system"), std::string("mesa-25.0.7")}) {
         if (driver != "system" && !second) continue;
         auto r = runCommand("bash " + script() + " --rounds 1 --size 128 --duration 1 --frames 5 --driver " +
                             driver + " --build " + buildDir());
@@ -159,7 +159,8 @@ TEST(Glmark2Compare, RealRoundOnEachDriver) {
         std::smatch m;
         ASSERT_TRUE(std::regex_search(r.output, m, std::regex(R"(per round: median ([0-9.]+))"))) << r.output;
         EXPECT_GT(std::stod(m[1]), 0.0) << r.output;
-        if (driver == "mesa-25.0.7")
+        if (driver == "mesa-25.0.7") {
             EXPECT_NE(r.output.find("driver version (both): Mesa 25.0.7"), std::string::npos) << r.output;
+        }
     }
 }

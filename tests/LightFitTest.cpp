@@ -210,6 +210,24 @@ TEST(LightFitTest, CoverageCountsTheTexelCentresInsideAHandPlacedTriangle) {
     EXPECT_EQ(MapCoverage::count(scene, glm::mat4(1.0f), res).covered, 0u);
 }
 
+TEST(LightFitTest, CoverageOfATriangleBeyondEveryEdgeIsTheWholeMapAndStaysInside) {
+    // A triangle reaching past all four sides of the map covers every texel centre: exactly res^2. Its
+    // rows start left of the map; the count must clip them at texel 0 (under the sanitizers a write
+    // before the first row's start is a heap-buffer-overflow).
+    const int res = 16;
+    Scene scene;
+    Mesh mesh;
+    mesh.positions = {{-3, -3, 0}, {5, -3, 0}, {-3, 5, 0}};
+    mesh.normals.assign(3, glm::vec3(0, 0, 1));
+    mesh.indices = {0, 1, 2};
+    scene.meshes.push_back(mesh);
+    scene.instances.emplace_back();
+    scene.updateTransforms();
+    const MapCoverage c = MapCoverage::count(scene, glm::mat4(1.0f), res);
+    EXPECT_EQ(c.covered, uint64_t(res * res));
+    EXPECT_EQ(c.texels, uint64_t(res * res));
+}
+
 TEST(LightFitTest, EachFitFramesTheSphereAsWorkedOutByHand) {
     const Scene scene = sphereOverGround();
     const int res = 4096;

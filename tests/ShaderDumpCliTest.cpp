@@ -28,7 +28,9 @@ TEST(DumpShaders, WritesTheAssembledStages) {
     std::vector<std::string> found;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
         if (entry.is_regular_file()) found.push_back(entry.path().string());
-    const std::string fragment = program + "HW_COMPARE,LIGHT_COUNT,PCF_SIZE=3,SHADOW_MAP/fragment.frag";
+    const std::string fragment =
+        program + "HW_COMPARE,LIGHT_COUNT,PCF_SIZE=3,SB_POSITIONAL_LIGHTS=0u,SB_RANGED_LIGHTS=0u,"
+                  "SB_SPOT_LIGHTS=0u,SB_STATIC_LIGHTS,SHADOW_MAP/fragment.frag";
     ASSERT_TRUE(std::filesystem::exists(fragment)) << ::testing::PrintToString(found);
     const std::string text = test::readFile(fragment);
     EXPECT_EQ(text.rfind("#version 450 compatibility\n", 0), 0u);

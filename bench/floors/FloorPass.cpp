@@ -4,6 +4,7 @@
 
 #include "bench/floors/FloorLayout.h"
 #include "core/Error.h"
+#include "gl/TextureFramebuffer.h"
 #include "techniques/gl/FrameState.h"
 
 namespace sb {
@@ -60,15 +61,6 @@ bool integerFormat(GLenum f) {
            f == GL_R8UI || f == GL_R16UI || f == GL_RGBA8UI;
 }
 
-GLuint texture(GLenum format, int width, int height) {
-    GLuint t = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &t);
-    glTextureStorage2D(t, 1, format, width, height);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return t;
-}
-
 } // namespace
 
 FloorPass::FloorPass(const PassTarget& like, PassKind kind)
@@ -114,7 +106,7 @@ void FloorPass::createTarget(const PassTarget& like) {
     std::vector<GLenum> buffers;
     if (colour)
         for (size_t i = 0; i < like.colourFormats.size(); ++i) {
-            mColours.push_back(texture(like.colourFormats[i], mWidth, mHeight));
+            mColours.push_back(createTexture(like.colourFormats[i], mWidth, mHeight));
             const GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
             glNamedFramebufferTexture(mFbo, attachment, mColours.back(), 0);
             buffers.push_back(attachment);
@@ -125,13 +117,13 @@ void FloorPass::createTarget(const PassTarget& like) {
         glNamedFramebufferDrawBuffers(mFbo, GLsizei(buffers.size()), buffers.data());
     glNamedFramebufferReadBuffer(mFbo, buffers.empty() ? GL_NONE : buffers[0]);
     if (like.depthFormat != GL_NONE) {
-        mDepth = texture(like.depthFormat, mWidth, mHeight);
+        mDepth = createTexture(like.depthFormat, mWidth, mHeight);
         mStencil = like.stencil;
         glNamedFramebufferTexture(mFbo, like.stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                                   mDepth, 0);
     }
     if (mKind == PassKind::Filtered && !like.colourFormats.empty())
-        mSource = texture(like.colourFormats[0], mWidth, mHeight);
+        mSource = createTexture(like.colourFormats[0], mWidth, mHeight);
     const GLenum status = glCheckNamedFramebufferStatus(mFbo, GL_DRAW_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw Error("floor pass: a target like " + like.text() + " is incomplete (status " +

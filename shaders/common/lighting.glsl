@@ -1,9 +1,39 @@
 // Direct lighting without shadows: Lambert diffuse with spot cone and range falloff. Techniques
 // multiply each light's term by their visibility (1 lit, 0 shadowed).
 
+// Light i's kind. Under SB_STATIC_LIGHTS the scene's lights are compile-time bits (addSceneDefines in
+// techniques/Technique.h): llvmpipe runs both sides of a branch on a uniform under a mask, so a
+// directional light's fragments would otherwise pay for the distance, range and cone terms too.
+// Without it (a program compiled without the scene's defines) the uniforms say, as frame.glsl packs them.
+bool lightBit(uint mask, int i) { return ((mask >> uint(i)) & 1u) != 0u; }
+
+bool isPositional(int i) {
+#ifdef SB_STATIC_LIGHTS
+    return lightBit(SB_POSITIONAL_LIGHTS, i);
+#else
+    return uLightPos[i].w != 0.0;
+#endif
+}
+
+bool isSpot(int i) {
+#ifdef SB_STATIC_LIGHTS
+    return lightBit(SB_SPOT_LIGHTS, i);
+#else
+    return uLightPos[i].w == 2.0;
+#endif
+}
+
+bool isRanged(int i) {
+#ifdef SB_STATIC_LIGHTS
+    return lightBit(SB_RANGED_LIGHTS, i);
+#else
+    return uLightPos[i].w != 0.0 && uLightColor[i].w > 0.0;
+#endif
+}
+
 // Unit vector from the surface towards light i.
 vec3 toLight(int i, vec3 worldPos) {
-    if (uLightPos[i].w == 0.0) return -uLightDir[i].xyz;
+    if (!isPositional(i)) return -uLightDir[i].xyz;
     return normalize(uLightPos[i].xyz - worldPos);
 }
 
@@ -12,16 +42,13 @@ vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
     vec3 l = toLight(i, worldPos);
     float ndotl = max(dot(n, l), 0.0);
     float atten = 1.0;
-    if (uLightPos[i].w != 0.0) {
-        float range = uLightColor[i].w;
-        if (range > 0.0) {
-            float d = length(uLightPos[i].xyz - worldPos);
-            atten = clamp(1.0 - d / range, 0.0, 1.0);
-        }
-        if (uLightPos[i].w == 2.0) {
-            float c = dot(-l, uLightDir[i].xyz);
-            atten *= smoothstep(uLightDir[i].w, uLightParams[i].x, c);
-        }
+    if (isRanged(i)) {
+        float d = length(uLightPos[i].xyz - worldPos);
+        atten = clamp(1.0 - d / uLightColor[i].w, 0.0, 1.0);
+    }
+    if (isSpot(i)) {
+        float c = dot(-l, uLightDir[i].xyz);
+        atten *= smoothstep(uLightDir[i].w, uLightParams[i].x, c);
     }
     return uLightColor[i].rgb * (ndotl * atten);
 }

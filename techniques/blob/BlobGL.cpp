@@ -45,7 +45,7 @@ void BlobGL::setScene(const Scene& scene) {
 }
 
 void BlobGL::compile(const CompileContext& ctx) {
-    Defines lit = ctx.submitter.defines();
+    Defines lit = withLightKinds(ctx.submitter.defines(), ctx.scene);
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);
     mReceiver.compile(ctx.programs);

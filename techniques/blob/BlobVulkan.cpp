@@ -62,7 +62,7 @@ void BlobVulkan::compile(const VulkanCompileContext& ctx) {
     reserve(0);
     mLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
 
-    Defines lit = ctx.submitter.defines();
+    Defines lit = withLightKinds(ctx.submitter.defines(), ctx.scene);
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     std::string litKey = "blob-lit|";
     mLit.build(ctx.pipelines, litKey,

@@ -28,7 +28,7 @@ struct CompileContext {
     const Context& context;
 
     /// What every scene-drawing program is compiled with: the submitter's defines and the scene's
-    /// shadow exceptions (addShadowExceptionDefines).
+    /// shadow exceptions and light kinds (addSceneDefines).
     Defines defines() const;
 };
 

@@ -9,7 +9,7 @@ NoneGL::NoneGL() : GlTechnique(None::declaration()) {}
 void NoneGL::setScene(const Scene&) {}
 
 void NoneGL::compile(const CompileContext& ctx) {
-    Defines defines = ctx.submitter.defines();
+    Defines defines = withLightKinds(ctx.submitter.defines(), ctx.scene);
     defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     mProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, defines);
     setPermutationKey(mProgram->key());

@@ -17,7 +17,7 @@ NoneVulkan::~NoneVulkan() {
 void NoneVulkan::compile(const VulkanCompileContext& ctx) {
     mDevice = ctx.context.device();
     if (!mLayout) mLayout = createScenePipelineLayout(ctx);
-    Defines defines = ctx.submitter.defines();
+    Defines defines = withLightKinds(ctx.submitter.defines(), ctx.scene);
     defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     std::string key;
     GraphicsPipelineDesc desc =

@@ -83,7 +83,7 @@ void PlanarGL::compile(const CompileContext& ctx) {
     mDarkness = float(p.getFloat(Planar::kDarkness));
     mProjections = Planar::projections(mPlanes, ctx.scene, mGuards);
 
-    Defines base = ctx.submitter.defines();
+    Defines base = withLightKinds(ctx.submitter.defines(), ctx.scene);
     Defines lit = base;
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     mLitProgram = &ctx.programs.get({"common/scene.vert", "common/lit.frag", ""}, lit);

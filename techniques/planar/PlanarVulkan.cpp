@@ -123,7 +123,7 @@ void PlanarVulkan::writeFlattenings() {
 }
 
 void PlanarVulkan::buildPipelines(const VulkanCompileContext& ctx) {
-    Defines lit = ctx.submitter.defines();
+    Defines lit = withLightKinds(ctx.submitter.defines(), ctx.scene);
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     std::string litKey = "planar-lit|";
     mLit.build(ctx.pipelines, litKey,

@@ -81,7 +81,7 @@ void ProjectiveGL::compile(const CompileContext& ctx) {
     mBlurRadius = int(p.getInt(Projective::kBlur));
     mCull = p.getBool(Projective::kCull) && mBlurRadius == 0;
 
-    const Defines base = ctx.submitter.defines();
+    const Defines base = withLightKinds(ctx.submitter.defines(), ctx.scene);
     std::string key;
     // Casters (and, without projectors, everything): lit and unshadowed, as `none` draws them.
     Defines lit = base;

@@ -116,7 +116,7 @@ void ProjectiveVulkan::createDescriptors(VulkanContext& context, uint32_t layers
 }
 
 void ProjectiveVulkan::buildPipelines(const VulkanCompileContext& ctx) {
-    const Defines base = ctx.submitter.defines();
+    const Defines base = withLightKinds(ctx.submitter.defines(), ctx.scene);
     // Casters (and, without projectors, everything): lit and unshadowed, as `none` draws them.
     Defines lit = base;
     lit["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));

@@ -53,7 +53,7 @@ void VolumeGL::compile(const CompileContext& ctx) {
         throw Error("volume: depth_bounds needs GL_EXT_depth_bounds_test, which '" + ctx.context.renderer +
                         "' does not expose: unsupported here, skipped (run without depth_bounds=true)",
                     ExitCode::Unsupported);
-    Defines scene = ctx.submitter.defines();
+    Defines scene = withLightKinds(ctx.submitter.defines(), ctx.scene);
     mAmbientProgram = &ctx.programs.get({"common/scene.vert", "volume/ambient.frag", ""}, scene);
     mLightProgram = &ctx.programs.get({"common/scene.vert", "volume/light.frag", ""}, scene);
     Defines volume;

@@ -135,7 +135,7 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     const bool clamp = settings.far == VolumePlanner::Far::DepthClamp;
     const std::string state =
         std::string("|clamp=") + (clamp ? "1" : "0") + "|bounds=" + (mDepthBounds ? "1" : "0") + "|";
-    const Defines scene = ctx.submitter.defines();
+    const Defines scene = withLightKinds(ctx.submitter.defines(), ctx.scene);
 
     // Ambient: GL's default state (depth LESS with writes), the visibility target written.
     std::string key = "volume-ambient" + state;

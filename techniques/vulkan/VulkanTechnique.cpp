@@ -4,7 +4,7 @@ namespace sb {
 
 Defines VulkanCompileContext::defines() const {
     Defines d = submitter.defines();
-    addShadowExceptionDefines(scene, d);
+    addSceneDefines(scene, d);
     return d;
 }
 

@@ -35,8 +35,8 @@ struct VulkanCompileContext {
     VulkanTargets& targets;
     VulkanFrameBlock& frame;
     VulkanPipelineCache& pipelines;
-    /// As the GL CompileContext's: the submitter's defines and the scene's shadow exceptions
-    /// (addShadowExceptionDefines).
+    /// As the GL CompileContext's: the submitter's defines and the scene's shadow exceptions and
+    /// light kinds (addSceneDefines).
     Defines defines() const;
 };
 
