@@ -30,6 +30,27 @@ InstanceMask Submitter::narrowToScope(InstanceMask keep) {
     return mScoped;
 }
 
+void Submitter::setCullView(const CullView* view) {
+    // GL's window y runs up: the matrix alone says which winding is front.
+    mBackFaceCulled = mBackFaceCuller.setView(view, false);
+    setCullFace(false);
+    if (mBackFaceCulled) {
+        glFrontFace(mBackFaceCuller.frontCounterClockwise() ? GL_CCW : GL_CW);
+        glCullFace(GL_BACK);
+        mStats.glCalls += 2;
+    }
+}
+
+void Submitter::setCullFace(bool on) {
+    if (on == mCullFaceOn) return;
+    mCullFaceOn = on;
+    if (on)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
+    mStats.glCalls += 1;
+}
+
 void Submitter::setInstanceUniforms(const Instance& inst) {
     // Fixed locations (layout(location=...) in common/instance.glsl): no glGetUniformLocation per draw.
     glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(inst.model));
