@@ -64,14 +64,15 @@ bool frontFaceCounterClockwise(const glm::mat4& viewProj, bool framebufferYDown)
     // Not det(viewProj): a GL projection flips z (negative determinant) and keeps the winding. Instead,
     // a triangle counter-clockwise in normalised device coordinates (x right, y up) is taken back to
     // world space; it is a front face there when its normal points towards the viewpoint, i.e. along
-    // the ray from the far plane towards the near plane.
+    // the ray from deeper points towards the near plane.
     const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProj));
     auto unproject = [&](double x, double y, double z) {
         const glm::dvec4 p = inverse * glm::dvec4(x, y, z, 1.0);
         return glm::dvec3(p) / p.w;
     };
     const glm::dvec3 a = unproject(0.0, 0.0, 0.0), b = unproject(0.5, 0.0, 0.0), c = unproject(0.0, 0.5, 0.0);
-    const glm::dvec3 towardsViewpoint = unproject(0.0, 0.0, -1.0) - unproject(0.0, 0.0, 1.0);
+    // From mid-depth to the near plane: finite also for an infinite far plane (volume's projection).
+    const glm::dvec3 towardsViewpoint = unproject(0.0, 0.0, -1.0) - unproject(0.0, 0.0, 0.5);
     const bool ccwIsFront = glm::dot(glm::cross(b - a, c - a), towardsViewpoint) > 0.0;
     // Vulkan counts the winding in framebuffer coordinates, whose y runs down: the same triangle the
     // other way round.

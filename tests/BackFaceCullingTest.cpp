@@ -86,6 +86,10 @@ TEST(BackFaceCulling, MirroredMatrixTurnsTheFrontFace) {
     EXPECT_TRUE(frontFaceCounterClockwise(handOrtho(), false));
     const glm::mat4 mirrored = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1)) * camera(5.0f, 1.0f);
     EXPECT_FALSE(frontFaceCounterClockwise(mirrored, false));
+    // An infinite far plane (volume's projection): the test stays finite.
+    const glm::mat4 infinite = glm::infinitePerspective(glm::radians(60.0f), 1.0f, 0.5f) *
+                               glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+    EXPECT_TRUE(frontFaceCounterClockwise(infinite, false));
     // A y-down framebuffer (Vulkan) counts the same triangle the other way round.
     EXPECT_FALSE(frontFaceCounterClockwise(camera(5.0f, 1.0f), true));
     EXPECT_TRUE(frontFaceCounterClockwise(mirrored, true));

@@ -6,6 +6,8 @@
 // (GL_ARB_pipeline_statistics_query) where a closed caster is drawn. The camera inside a closed box and
 // a near plane cutting a closed mesh are the cases where culling would show: the rule draws both faces
 // there, and the images are equal too.
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -47,14 +49,21 @@ Frame render(const std::string& technique, const std::string& scene, const std::
     return f;
 }
 
-/// Pixels whose colour or visibility differ at all (the tolerance is 0: bit-identical).
-size_t differingPixels(const Frame& a, const Frame& b) {
+/// Pixels whose colour or visibility differ at all (the tolerance is 0: bit-identical); `where` gets
+/// the first one and its values, for the failure message.
+size_t differingPixels(const Frame& a, const Frame& b, std::string* where = nullptr) {
     size_t n = 0;
     for (size_t p = 0; p < a.color.size() / 4; ++p) {
         bool differs = false;
         for (size_t c = 0; c < 4; ++c)
             differs |= a.color[p * 4 + c] != b.color[p * 4 + c] ||
                        a.visibility[p * 4 + c] != b.visibility[p * 4 + c];
+        if (differs && n == 0 && where) {
+            *where = "first at pixel " + std::to_string(p % kSize) + "," + std::to_string(p / kSize) +
+                     ": colour " + std::to_string(a.color[p * 4]) + "/" + std::to_string(b.color[p * 4]) +
+                     ", visibility " + std::to_string(a.visibility[p * 4]) + "/" +
+                     std::to_string(b.visibility[p * 4]);
+        }
         n += differs ? 1 : 0;
     }
     return n;
@@ -65,6 +74,12 @@ struct Case {
     const char* scene;
     const char* camera;
     SubmitMode submit = SubmitMode::Retained;
+    /// The map's raw depths are averaged (pcss's blocker search) under a slope-scaled polygon offset:
+    /// at a silhouette texel the steeper face gets the larger offset, so the back face drawn with both
+    /// may have won the texel by less than the offset. The colour stays bit-identical; visibility may
+    /// move by at most 2e-3 on at most 0.2 % of pixels (measured: one pixel of 9216 by 4.9e-4).
+    /// With bias_slope=0 the same technique is bit-identical (a row below).
+    bool slopeBiasedRawDepth = false;
 };
 void PrintTo(const Case& c, std::ostream* os) {
     *os << c.technique << "/" << c.scene << "/" << c.camera << "/" << submitModeName(c.submit);
@@ -78,7 +93,22 @@ TEST_P(BackFacesImages, CullEqualsDraw) {
     const Frame culled = render(c.technique, c.scene, c.camera, BackFaces::Cull, c.submit);
     ASSERT_EQ(drawn.color.size(), culled.color.size());
     ASSERT_EQ(drawn.visibility.size(), culled.visibility.size());
-    EXPECT_EQ(differingPixels(drawn, culled), 0u) << "of " << drawn.color.size() / 4;
+    std::string where;
+    if (!c.slopeBiasedRawDepth) {
+        EXPECT_EQ(differingPixels(drawn, culled, &where), 0u)
+            << "of " << drawn.color.size() / 4 << "; " << where;
+    } else {
+        EXPECT_EQ(drawn.color, culled.color);
+        size_t moved = 0;
+        float largest = 0.0f;
+        for (size_t i = 0; i < drawn.visibility.size(); ++i) {
+            const float d = std::abs(drawn.visibility[i] - culled.visibility[i]);
+            largest = std::max(largest, d);
+            moved += d > 0.0f ? 1 : 0;
+        }
+        EXPECT_LE(largest, 2e-3f);
+        EXPECT_LE(moved, drawn.visibility.size() / 500);
+    }
     // Culling never adds work (equal where the view sees no closed instance from outside).
     EXPECT_LE(culled.fragments, drawn.fragments);
 }
@@ -95,7 +125,9 @@ const Case kCases[] = {
     {"shadowmap", "aircraft", "mid", SubmitMode::Instanced},
     {"shadowmap", "aircraft", "mid", SubmitMode::Immediate},
     {"shadowmap", "aircraft", "mid", SubmitMode::DisplayList},
-    {"pcss", "sphere_plane", "mid"},
+    {"pcss", "sphere_plane", "mid", SubmitMode::Retained, true},
+    {"pcss:bias_slope=0", "sphere_plane", "mid"},
+    {"shadowmap:bias_slope=0", "sphere_plane", "mid"},
     {"vsm", "sphere_plane", "mid"},
     {"esm", "sphere_plane", "mid"},
     {"cascaded", "aircraft", "mid"},
@@ -117,7 +149,7 @@ std::string boxScene(const std::string& name, const std::string& camera) {
     const std::string dir = test::freshTestDir("backfaces");
     const std::string path = dir + "/" + name + ".json";
     test::writeFile(path, R"({"name": ")" + name + R"(",
-  "meshes": [{"name": "room", "generator": "box", "half_extent": 3, "tessellation": 2},
+  "meshes": [{"name": "room", "generator": "box", "half_extent": [3, 3, 3], "tessellation": 2},
              {"name": "ball", "generator": "sphere", "radius": 0.8, "tessellation": 16}],
   "instances": [{"mesh": "room", "color": [0.7, 0.7, 0.6]},
                 {"mesh": "ball", "position": [0.5, -2, 0], "color": [0.8, 0.3, 0.3]}],
@@ -161,8 +193,9 @@ TEST(BackFacesWork, FewerFragmentsWithAClosedCaster) {
     for (size_t i = 0; i < drawn.passFragments.size(); ++i) {
         SCOPED_TRACE(drawn.passFragments[i].first);
         EXPECT_EQ(drawn.passFragments[i].first, culled.passFragments[i].first);
-        if (drawn.passFragments[i].first == "depth" || drawn.passFragments[i].first == "lighting")
+        if (drawn.passFragments[i].first == "depth" || drawn.passFragments[i].first == "lighting") {
             EXPECT_LT(culled.passFragments[i].second, drawn.passFragments[i].second);
+        }
     }
     EXPECT_LT(culled.fragments, drawn.fragments);
 }

@@ -34,10 +34,13 @@ void Submitter::setCullView(const CullView* view) {
     // GL's window y runs up: the matrix alone says which winding is front.
     mBackFaceCulled = mBackFaceCuller.setView(view, false);
     setCullFace(false);
-    if (mBackFaceCulled) {
-        glFrontFace(mBackFaceCuller.frontCounterClockwise() ? GL_CCW : GL_CW);
-        glCullFace(GL_BACK);
-        mStats.glCalls += 2;
+    // GL_CW only while a mirroring view culls: the front face also picks two-sided stencil's faces
+    // (volume's marks), which expect the default.
+    const bool clockwise = mBackFaceCulled && !mBackFaceCuller.frontCounterClockwise();
+    if (clockwise != mFrontClockwise) {
+        glFrontFace(clockwise ? GL_CW : GL_CCW);
+        mFrontClockwise = clockwise;
+        mStats.glCalls += 1;
     }
 }
 

@@ -120,7 +120,8 @@ private:
     BackFaces mBackFaces = BackFaces::Cull;
     BackFaceCuller mBackFaceCuller;
     size_t mBackFaceCulled = 0;
-    bool mCullFaceOn = false; ///< GL_CULL_FACE as this submitter last set it
+    bool mCullFaceOn = false;     ///< GL_CULL_FACE as this submitter last set it
+    bool mFrontClockwise = false; ///< glFrontFace(GL_CW) set by this submitter (GL_CCW otherwise)
 };
 
 /// Sets a pass's cull view (Submitter::setCullView) for the scope's lifetime and restores none (both
