@@ -226,11 +226,12 @@ void ProjectiveVulkan::renderLighting(VulkanFrameContext& ctx) {
     ctx.targets.beginPass(cmd);
     ctx.frame.bind(cmd, mLightingLayout, ctx.frameOffset);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLit.get(ctx.targets));
-    ctx.submitter.draw(cmd, mLightingLayout, DrawSet::Casters);
+    const CullView camera = cameraCullView(ctx);
+    ctx.submitter.drawCulled(cmd, mLightingLayout, DrawSet::Casters, camera, true);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mProjective.get(ctx.targets));
     const VkDescriptorSet set = mSets.set(kLightingSet);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0, nullptr);
-    ctx.submitter.draw(cmd, mLightingLayout, DrawSet::NonCasters);
+    ctx.submitter.drawCulled(cmd, mLightingLayout, DrawSet::NonCasters, camera, true);
     vkCmdEndRenderPass(cmd);
 }
 

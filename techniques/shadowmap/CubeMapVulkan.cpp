@@ -209,7 +209,7 @@ void CubeMapVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
         beginDepthPass(ctx, mFlat, size_t(o.index), mFaceDepthPipeline);
         bindSlot(ctx, flatSlot(o.index));
         mCulled += mLights.cullFlatCasters(o, mCulling, mKeep);
-        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters, {o.viewProj, false}, false, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }
 }
@@ -241,7 +241,9 @@ void CubeMapVulkan::renderCubesSixPass(VulkanFrameContext& ctx) {
             mCulled += mCulling.count(DrawSet::Casters) - kept;
             if (kept > 0) { // else the cleared face is the answer: nothing casts into it
                 bindSlot(ctx, faceSlot(cube, f));
-                ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+                // Each face's own view decides, and its handedness sets the front face.
+                ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters,
+                                         {c.faces.viewProjection(f), false}, false, mKeep);
                 ++mFacesRendered;
             }
             vkCmdEndRenderPass(ctx.cmd);

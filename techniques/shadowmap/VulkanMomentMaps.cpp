@@ -267,7 +267,9 @@ void VulkanMomentMaps::renderLayer(VulkanFrameContext& ctx, size_t light,
         }
         // The nearest caster per texel, over whatever the background left.
         vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mCasterPipeline);
-        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        // The nearest caster may lose closed casters' back faces; the background above keeps both.
+        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters,
+                                 {mFits.viewProjections()[light], false}, false, mKeep);
     }
     vkCmdEndRenderPass(ctx.cmd);
 }

@@ -8,6 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "scenes/BackFaceCulling.h"
 #include "shading/Defines.h"
 #include "techniques/vulkan/VulkanPipelineCache.h"
 #include "vk/GraphicsPipeline.h"
@@ -29,6 +30,10 @@ GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::s
                                    const std::string& fragment, const Defines& defines,
                                    VkPipelineLayout layout, std::string& key,
                                    const std::string& geometry = "");
+
+/// The camera's view for back-face culling (VulkanSubmitter::setCullView, with clipFlipsY: the frame
+/// block's clip space flips y): GL's matrix of the pass that draws the visible scene.
+CullView cameraCullView(const VulkanFrameContext& ctx);
 
 /// The lit pass over every mesh into the frame targets, as none's, shadowmap's and cubemap's lighting
 /// passes draw it: begins the targets' render pass, binds `pipeline` (the variant for this frame's
