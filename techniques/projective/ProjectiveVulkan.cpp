@@ -137,7 +137,8 @@ void ProjectiveVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     texture.depthTest = false;
     texture.depthWrite = false;
     texture.renderPass = mTexturePass;
-    mTexturePipeline = ctx.pipelines.get(textureKey, texture);
+    texture.dynamicCull = false; // drawn with both faces on Vulkan (GL culls closed casters here)
+    mTexturePipeline = ctx.pipelines.get(textureKey + "|both-faces", texture);
 
     Defines projective = ctx.defines(); // its lookups follow the scene's exceptions
     projective["SHADOW_MAP"] = "";      // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world

@@ -175,7 +175,9 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
             scenePipeline(ctx, "shadowmap/cube_depth.vert", VulkanDepthMapSet::kDepthFragment, base,
                           mDepthLayout, layeredKey, "shadowmap/cube_depth.geom");
         depthState(layered);
-        mLayeredDepthPipeline = ctx.pipelines.get(layeredKey, layered);
+        // One draw for six faces: drawn with both faces, fixed.
+        layered.dynamicCull = false;
+        mLayeredDepthPipeline = ctx.pipelines.get(layeredKey + "|both-faces", layered);
     }
 
     // Lighting pass: the GL technique's defines, permutation for permutation.

@@ -203,7 +203,9 @@ void VulkanMomentMaps::createPipelines(const VulkanCompileContext& ctx) {
     depth.renderPass = mPass;
     mCasterPipeline = ctx.pipelines.get(depthKey + "|less", depth);
     depth.depthCompare = VK_COMPARE_OP_GREATER;
-    mBackgroundPipeline = ctx.pipelines.get(depthKey + "|greater", depth);
+    // The farthest surface: both faces, fixed (a closed mesh's farthest surface is a back face).
+    depth.dynamicCull = false;
+    mBackgroundPipeline = ctx.pipelines.get(depthKey + "|greater|both-faces", depth);
 
     Defines lit = mSettings.lightingDefines;
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world

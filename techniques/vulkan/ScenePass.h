@@ -22,7 +22,9 @@ struct VulkanFrameContext;
 VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
                                            const std::vector<VkDescriptorSetLayout>& sets = {});
 
-/// A pipeline drawing the scene with `vertex`, `fragment` and an optional `geometry` stage (files under
+/// A pipeline drawing the scene with `vertex`, `fragment` and an optional `geometry` stage (cull mode
+/// and front face dynamic where the device allows: its draws must then be under a cull view,
+/// VulkanSubmitter::setCullView; a pass drawn without one sets dynamicCull false) (files under
 /// shaders/) compiled with `defines` (and dumped as one program under --dump-shaders), the submitter's
 /// vertex input and `layout`. `key` gets the shader files and defines appended: the pipeline cache's key
 /// for the shaders part.

@@ -91,7 +91,8 @@ void VulkanSubmitter::bindMesh(VkCommandBuffer cmd, uint32_t mesh) {
 void VulkanSubmitter::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
                            const VulkanPush& push) {
     if (!mScope.empty()) keep = narrowToScope(keep);
-    if (mDynamicCull) {
+    const bool dynamic = mDynamicCull && mViewSet;
+    if (dynamic) {
         // Dynamic state is lost when a pipeline without it was bound since: set it at every draw.
         vkCmdSetFrontFace(cmd, mBackFaceCuller.frontCounterClockwise() ? VK_FRONT_FACE_COUNTER_CLOCKWISE
                                                                        : VK_FRONT_FACE_CLOCKWISE);
@@ -108,6 +109,7 @@ void VulkanSubmitter::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet
 void VulkanSubmitter::setCullView(const CullView* view, bool clipFlipsY) {
     // Vulkan counts winding with y running down the framebuffer; a y-flipped clip space undoes that.
     mBackFaceCuller.setView(view, !clipFlipsY);
+    mViewSet = view && mDynamicCull;
 }
 
 void VulkanSubmitter::setCullMode(VkCommandBuffer cmd, bool cull) {
@@ -130,7 +132,7 @@ void VulkanSubmitter::drawRetained(VkCommandBuffer cmd, VkPipelineLayout layout,
         const Instance& inst = mScene->instances[i];
         if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         if (inst.mesh != bound) bindMesh(cmd, bound = inst.mesh);
-        if (mDynamicCull) setCullMode(cmd, mBackFaceCuller.culls(i));
+        if (mViewSet) setCullMode(cmd, mBackFaceCuller.culls(i));
         push.model = inst.model;
         push.colorId = glm::vec4(inst.color, shadowSignedId(inst));
         vkCmdPushConstants(cmd, layout, kPushStages, 0, sizeof push, &push);
@@ -157,7 +159,7 @@ void VulkanSubmitter::drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout
         // A run splits where the view's back-face decision changes.
         mPlan.forEachKeptRun(b, keep, mBackFaceCuller.decisions(),
                              [&](uint32_t first, uint32_t instances, bool cull) {
-                                 if (mDynamicCull) setCullMode(cmd, cull);
+                                 if (mViewSet) setCullMode(cmd, cull);
                                  vkCmdDrawIndexed(cmd, count, instances, 0, 0, first);
                                  mStats.drawCalls += 1;
                                  mStats.triangles += uint64_t(count / 3) * instances;

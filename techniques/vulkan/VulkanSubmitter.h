@@ -57,7 +57,9 @@ public:
     /// mesh it cannot see inside is drawn with VK_CULL_MODE_BACK_BIT. `clipFlipsY`: the pass's clip
     /// space is GL's with y flipped (the camera's frame block, VulkanFrameBlock::clipFromGl), else
     /// GL's y as is (the maps' depthFromGl); with Vulkan's y-down framebuffer that decides the front
-    /// face. `view` holds GL's matrix. nullptr: both faces.
+    /// face. `view` holds GL's matrix. nullptr: both faces. Dynamic cull commands are recorded only
+    /// while a view is set, so every pipeline drawn under a view must take them dynamically (the scene
+    /// pipelines, ScenePass.h) and every one drawn without must not (VUID-vkCmdDrawIndexed-None-02859).
     void setCullView(const CullView* view, bool clipFlipsY);
     /// draw() under `view`, then none again.
     void drawCulled(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, const CullView& view,
@@ -119,7 +121,8 @@ private:
     BackFaces mBackFaces = BackFaces::Cull;
     BackFaceCuller mBackFaceCuller;
     bool mDynamicCull = false;
-    bool mCullOn = false; ///< the cull mode last recorded in this draw
+    bool mCullOn = false;  ///< the cull mode last recorded in this draw
+    bool mViewSet = false; ///< a cull view is set: the bound pipeline takes cull mode dynamically
 };
 
 } // namespace sb
