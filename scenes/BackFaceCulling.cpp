@@ -41,10 +41,16 @@ bool projectionCentre(const glm::mat4& viewProj, glm::vec3& centre) {
 }
 
 bool mayCullBackFaces(const Aabb& box, const CullView& view) {
-    if (box.empty()) return false;
     glm::vec3 eye;
-    if (projectionCentre(view.viewProj, eye)) {
-        // Strictly outside, by a margin of a millionth of the box's size: a centre on the box's face
+    const bool perspective = projectionCentre(view.viewProj, eye);
+    return mayCullBackFaces(box, view, perspective ? &eye : nullptr);
+}
+
+bool mayCullBackFaces(const Aabb& box, const CullView& view, const glm::vec3* centre) {
+    if (box.empty()) return false;
+    if (centre) {
+        const glm::vec3& eye = *centre;
+        // Strictly outside, by a millionth of the corners' magnitudes: a centre on the box's face
         // may lie on the mesh itself.
         const glm::vec3 margin = 1e-6f * (glm::abs(box.min) + glm::abs(box.max)) + 1e-12f;
         const bool inside = glm::all(glm::greaterThanEqual(eye, box.min - margin)) &&
@@ -105,8 +111,10 @@ size_t BackFaceCuller::setView(const CullView* view, bool framebufferYDown) {
     mAny = false;
     if (!view) return 0;
     mFrontCcw = frontFaceCounterClockwise(view->viewProj, framebufferYDown);
+    glm::vec3 eye;
+    const glm::vec3* centre = projectionCentre(view->viewProj, eye) ? &eye : nullptr;
     for (uint32_t i : mCandidates) {
-        const uint8_t cull = mayCullBackFaces(mBounds.bounds()[i], *view) ? 1 : 0;
+        const uint8_t cull = mayCullBackFaces(mBounds.bounds()[i], *view, centre) ? 1 : 0;
         mCulled[i] = cull;
         culled += cull;
     }

@@ -43,6 +43,9 @@ struct CullView {
 /// (the instance's mesh must be closed: the caller checks Mesh::closed first). Costs at most 8 corner
 /// transforms. False for an empty box.
 bool mayCullBackFaces(const Aabb& box, const CullView& view);
+/// The same with the view's projection centre given (projectionCentre; nullptr: a parallel
+/// projection), so that a pass over many instances finds it once.
+bool mayCullBackFaces(const Aabb& box, const CullView& view, const glm::vec3* centre);
 
 /// The projection centre of `viewProj` in world space: the point whose clip x, y and w are 0. Returns
 /// false for a parallel projection (the centre lies at infinity).
