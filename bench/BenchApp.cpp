@@ -118,6 +118,7 @@ constexpr const char* kExamples = R"(Examples:
   bench -t none -t shadowmap --instances 200       baseline and technique side by side
   bench -t shadowmap:resolution=4096:pcf=3         properties inline (see --list for every knob)
   bench --submit immediate --frames 20             the CPU-bound submission path of the thesis
+  bench -t shadowmap --back-faces draw             every face drawn (the default culls closed meshes' backs)
   bench --scene teapot --camera near --scale 10    fill-bound variant
   bench --csv results.csv --samples frames.csv     append a row per technique, keep per-frame samples
   bench --screenshot out.png --visibility vis.png  images of the last frame

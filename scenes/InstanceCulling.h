@@ -66,6 +66,8 @@ public:
                          std::vector<uint8_t>& keep) const;
     /// Instances' world bounds are read again (a scene in motion moved its casters).
     void instancesMoved(const Scene& scene) { setScene(scene); }
+    /// World-space bounds per instance (indexed like Scene::instances), as of setScene.
+    const std::vector<Aabb>& bounds() const { return mBounds; }
 
     /// True if the box may reach the clip volume of `viewProj`: not all 8 corners outside one plane.
     static bool mayReach(const Aabb& box, const glm::mat4& viewProj, CullPlanes planes);

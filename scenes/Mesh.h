@@ -64,6 +64,12 @@ struct Mesh {
     /// box or cylinder to each instance (ShadowProxy::fit). Declared and empty: the mesh has none.
     std::vector<ShadowProxy> proxies;
     bool proxiesDeclared = false;
+    /// Back faces of this mesh are never seen from outside it: an oriented, outward-wound surface
+    /// without boundary (scenes/ClosedMesh.h), computed at load, or asserted by the scene file's
+    /// "closed". Only then may a pass cull its back faces (scenes/BackFaceCulling.h). False (the
+    /// default for meshes built in code): both faces are drawn.
+    bool closed = false;
+    bool closedDeclared = false; ///< `closed` came from the scene file (it then enters the content hash)
 
     size_t vertexCount() const { return positions.size(); }
     size_t triangleCount() const { return indices.size() / 3; }

@@ -67,8 +67,8 @@ Mesh lantern(const JsonReader& m, int tess) {
 } // namespace
 
 const std::vector<std::string_view>& MeshGeneratorTable::commonKeys() {
-    static const std::vector<std::string_view> kKeys = {"name", "generator", "shadow_planes", "proxies",
-                                                        "tessellation"};
+    static const std::vector<std::string_view> kKeys = {"name",    "generator",    "shadow_planes",
+                                                        "proxies", "tessellation", "closed"};
     return kKeys;
 }
 

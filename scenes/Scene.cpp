@@ -150,6 +150,9 @@ std::string Scene::computeContentHash() const {
         h.vector(mesh.positions);
         h.vector(mesh.normals);
         h.vector(mesh.indices);
+        // A computed closedness follows from the geometry; only a declared one adds (the hashes of
+        // scenes without "closed" stay as they were).
+        if (mesh.closedDeclared) h.value(mesh.closed ? 1 : 2);
     }
     h.value(uint64_t(instances.size()));
     for (const auto& instance : instances) hashInstance(h, instance);

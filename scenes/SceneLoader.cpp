@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "core/SplitMix64.h"
 #include "core/Suggestion.h"
 #include "scenes/BuiltinShadowPlanes.h"
+#include "scenes/ClosedMesh.h"
 #include "scenes/Math.h"
 #include "scenes/MeshGeneratorTable.h"
 #include "scenes/ModelLoader.h"
@@ -199,7 +201,7 @@ void checkModelMemory(const Context& ctx, const std::string& path) {
 /// A "file" mesh's objects (scenes/ModelLoader.h), errors located at its "file" key (so they name the
 /// scene file, the JSON path and the model file).
 std::vector<Mesh> loadModelObjects(const Context& ctx, const JsonReader& m) {
-    m.requireObject({"name", "file", "up", "shadow_planes", "proxies"});
+    m.requireObject({"name", "file", "up", "shadow_planes", "proxies", "closed"});
     std::optional<ModelUp> up;
     if (m.has("up")) {
         up = parseModelUp(m["up"].string());
@@ -475,6 +477,15 @@ void parseMesh(Context& ctx, const JsonReader& m) {
         for (const auto& e : m["proxies"].elements()) mesh.proxies.push_back(parseProxy(e));
     }
     if (name == ctx.replacedMesh) replaceWithModel(ctx, meshes);
+    // Whether back faces may ever be culled (scenes/BackFaceCulling.h): computed from the final
+    // geometry, or asserted by the file ("closed": true for a mesh whose back faces are never seen,
+    // as a demo assumes of an open model; false to keep both faces of a closed one).
+    const std::optional<bool> closed =
+        m.has("closed") ? std::optional<bool>(m["closed"].boolean()) : std::nullopt;
+    for (Mesh& object : meshes) {
+        object.closed = closed ? *closed : isClosedMesh(object);
+        object.closedDeclared = closed.has_value();
+    }
     for (const Mesh& object : meshes)
         if (const Aabb b = object.computeBounds(); !withinBound(b))
             m.error("mesh " + JsonReader::excerpt(object.name) + ": " + beyondBound(b) + " in object space");

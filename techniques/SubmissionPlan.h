@@ -77,6 +77,10 @@ public:
     /// instance of the run's draw). A batch with no kept record makes no call.
     template <class RunFn>
     void forEachKeptRun(const Batch& batch, InstanceMask keep, RunFn&& run) const;
+    /// As above, and a run also ends where `split` (indexed like Scene::instances; empty: all 0)
+    /// changes: run(first, count, value) gets the run's split value (a pass's back-face decisions).
+    template <class RunFn>
+    void forEachKeptRun(const Batch& batch, InstanceMask keep, InstanceMask split, RunFn&& run) const;
 
 private:
     std::vector<InstanceRecord> mRecords;
@@ -86,15 +90,24 @@ private:
 
 template <class RunFn>
 void SubmissionPlan::forEachKeptRun(const Batch& batch, InstanceMask keep, RunFn&& run) const {
+    forEachKeptRun(batch, keep, InstanceMask{},
+                   [&](uint32_t first, uint32_t count, bool) { run(first, count); });
+}
+
+template <class RunFn>
+void SubmissionPlan::forEachKeptRun(const Batch& batch, InstanceMask keep, InstanceMask split,
+                                    RunFn&& run) const {
     // Inline: it runs per batch and pass inside the timed frame.
+    auto value = [&](uint32_t r) { return !split.empty() && split[mRecordInstance[r]] != 0; };
     for (uint32_t r = batch.first, end = batch.first + batch.count; r < end;) {
         if (!keptBy(keep, mRecordInstance[r])) {
             ++r;
             continue;
         }
+        const bool v = value(r);
         uint32_t runEnd = r + 1;
-        while (runEnd < end && keptBy(keep, mRecordInstance[runEnd])) ++runEnd;
-        run(r, runEnd - r);
+        while (runEnd < end && keptBy(keep, mRecordInstance[runEnd]) && value(runEnd) == v) ++runEnd;
+        run(r, runEnd - r, v);
         r = runEnd;
     }
 }

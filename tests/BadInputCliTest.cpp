@@ -394,6 +394,14 @@ std::vector<BadInput> table() {
          false,
          true},
         {"floors of an unknown technique", "floors -t shadowmapp", {"shadowmapp"}, 2, nullptr, false, true},
+        // Back-face culling: the scene file's per-mesh "closed" and the run option.
+        {"mesh closed not a boolean",
+         "--scene {dir}/closed.json",
+         {"closed.json", "/meshes/0/closed", "true or false"},
+         2,
+         file("closed.json", R"({"meshes": [{"name": "ball", "generator": "sphere", "closed": "yes"}],
+  "instances": [{"mesh": "ball"}], "cameras": [{"name": "far", "eye": [0, 20, 30]}]})")},
+        {"--back-faces of an unknown value", "--back-faces maybe", {"--back-faces maybe", "cull or draw"}, 2},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

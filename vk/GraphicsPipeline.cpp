@@ -97,6 +97,10 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     std::vector<VkDynamicState> dynamics = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     if (desc.dynamicStencilReference) dynamics.push_back(VK_DYNAMIC_STATE_STENCIL_REFERENCE);
     if (desc.depthBounds) dynamics.push_back(VK_DYNAMIC_STATE_DEPTH_BOUNDS);
+    if (desc.dynamicCull) {
+        dynamics.push_back(VK_DYNAMIC_STATE_CULL_MODE);
+        dynamics.push_back(VK_DYNAMIC_STATE_FRONT_FACE);
+    }
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = uint32_t(dynamics.size());
     dynamic.pDynamicStates = dynamics.data();

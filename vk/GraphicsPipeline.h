@@ -39,6 +39,10 @@ struct GraphicsPipelineDesc {
     /// The stencil reference is dynamic (vkCmdSetStencilReference before each draw): a pass that marks
     /// with a fresh value per draw, as glStencilFunc(..., ref, ...) does between draws on GL.
     bool dynamicStencilReference = false;
+    /// Cull mode and front face are dynamic (vkCmdSetCullMode, vkCmdSetFrontFace; core in Vulkan 1.3):
+    /// the scene pipelines, whose draws the submitter culls per instance (scenes/BackFaceCulling.h).
+    /// `cull` and `frontFace` above are then ignored; whoever draws must set both.
+    bool dynamicCull = false;
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
 };

@@ -62,7 +62,7 @@ void BlobGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     ctx.passes.begin("lighting");
     mLitProgram->use();
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
 
     ctx.passes.begin("blobs");
     fitAll(ctx.scene);

@@ -12,7 +12,7 @@ void DisplayListSubmitter::release() {
     mListCount = 0;
 }
 
-void DisplayListSubmitter::upload(const Scene& scene) {
+void DisplayListSubmitter::uploadMode(const Scene& scene) {
     release();
     mScene = &scene;
     mListCount = GLsizei(scene.meshes.size());
@@ -33,6 +33,7 @@ void DisplayListSubmitter::drawKept(DrawSet set, InstanceMask keep) {
     for (size_t i = 0; i < mScene->instances.size(); ++i) {
         const Instance& inst = mScene->instances[i];
         if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
+        cullFor(i);
         setInstanceUniforms(inst);
         glCallList(mFirstList + inst.mesh);
         mStats.drawCalls += 1;

@@ -14,7 +14,7 @@ class DisplayListSubmitter final : public Submitter {
 public:
     ~DisplayListSubmitter() override;
     SubmitMode mode() const override { return SubmitMode::DisplayList; }
-    void upload(const Scene& scene) override;
+    void uploadMode(const Scene& scene) override;
 
 private:
     void drawKept(DrawSet set, InstanceMask keep) override;

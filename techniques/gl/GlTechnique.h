@@ -45,6 +45,12 @@ struct FrameContext {
     const FrameUniforms* frameBlock = nullptr;
 };
 
+/// The camera's view for back-face culling (Submitter::setCullView, scenes/BackFaceCulling.h): what
+/// every pass that draws the visible scene with the harness's camera passes.
+inline CullView cameraCullView(const FrameContext& ctx) {
+    return {ctx.proj * ctx.view, false};
+}
+
 class GlTechnique : public Technique {
 public:
     using Technique::Technique;

@@ -4,7 +4,7 @@
 
 namespace sb {
 
-void ImmediateSubmitter::upload(const Scene& scene) {
+void ImmediateSubmitter::uploadMode(const Scene& scene) {
     mScene = &scene;
 }
 
@@ -15,6 +15,7 @@ void ImmediateSubmitter::drawKept(DrawSet set, InstanceMask keep) {
         const Instance& inst = mScene->instances[i];
         if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         const Mesh& mesh = mScene->meshes[inst.mesh];
+        cullFor(i);
         setInstanceUniforms(inst);
         emitImmediate(mesh);
         mStats.drawCalls += 1;

@@ -19,7 +19,7 @@ namespace sb {
 class ImmediateSubmitter final : public Submitter {
 public:
     SubmitMode mode() const override { return SubmitMode::Immediate; }
-    void upload(const Scene& scene) override;
+    void uploadMode(const Scene& scene) override;
 
 private:
     void drawKept(DrawSet set, InstanceMask keep) override;

@@ -15,7 +15,7 @@ void InstancedSubmitter::release() {
     mInstanceBuffer = 0;
 }
 
-void InstancedSubmitter::upload(const Scene& scene) {
+void InstancedSubmitter::uploadMode(const Scene& scene) {
     release();
     mBuffers.upload(scene);
     // One buffer holding, per draw set and mesh, that set's instances contiguously.
@@ -30,7 +30,7 @@ void InstancedSubmitter::upload(const Scene& scene) {
     for (size_t m = 0; m < scene.meshes.size(); ++m) attachInstances(mBuffers.vao(m), mInstanceBuffer);
 }
 
-void InstancedSubmitter::instancesMoved(const Scene& scene) {
+void InstancedSubmitter::instancesMovedMode(const Scene& scene) {
     // Every record again, in upload order (an instance appears once per draw set it is in): one upload
     // of the whole buffer, what an application streaming its instance transforms does.
     mPlan.instancesMoved(scene);
@@ -66,14 +66,17 @@ void InstancedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
         // The kept records of the batch as runs: the instance buffer stays as uploaded, a culled
         // instance splits its batch instead of costing an upload. The mesh is bound at its first run.
         bool bound = false;
-        mPlan.forEachKeptRun(b, keep, [&](uint32_t first, uint32_t count) {
-            if (!bound) {
-                glBindVertexArray(mBuffers.vao(b.mesh));
-                mStats.glCalls += 1;
-                bound = true;
-            }
-            drawRun(b, first, count);
-        });
+        // A run splits where the view's back-face decision changes (scenes/BackFaceCulling.h).
+        mPlan.forEachKeptRun(b, keep, backFaceCuller().decisions(),
+                             [&](uint32_t first, uint32_t count, bool cull) {
+                                 if (!bound) {
+                                     glBindVertexArray(mBuffers.vao(b.mesh));
+                                     mStats.glCalls += 1;
+                                     bound = true;
+                                 }
+                                 setCullFace(cull);
+                                 drawRun(b, first, count);
+                             });
     }
     glBindVertexArray(0);
     mStats.glCalls += 1;

@@ -13,8 +13,8 @@ class InstancedSubmitter final : public Submitter {
 public:
     ~InstancedSubmitter() override;
     SubmitMode mode() const override { return SubmitMode::Instanced; }
-    void upload(const Scene& scene) override;
-    void instancesMoved(const Scene& scene) override;
+    void uploadMode(const Scene& scene) override;
+    void instancesMovedMode(const Scene& scene) override;
     Defines defines() const override { return {{"SB_INSTANCED", ""}}; }
 
     /// Binds `buffer` (InstanceRecords, techniques/SubmissionPlan.h) to `vao` at binding 1 with divisor

@@ -4,7 +4,7 @@
 
 namespace sb {
 
-void RetainedSubmitter::upload(const Scene& scene) {
+void RetainedSubmitter::uploadMode(const Scene& scene) {
     mScene = &scene;
     mBuffers.upload(scene);
     mOrder = instancesByMesh(scene);
@@ -20,6 +20,7 @@ void RetainedSubmitter::drawKept(DrawSet set, InstanceMask keep) {
             boundMesh = inst.mesh;
             mStats.glCalls += 1;
         }
+        cullFor(i);
         setInstanceUniforms(inst);
         glDrawElements(GL_TRIANGLES, mBuffers.indexCount(inst.mesh), GL_UNSIGNED_INT, nullptr);
         mStats.drawCalls += 1;

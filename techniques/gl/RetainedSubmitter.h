@@ -11,7 +11,7 @@ namespace sb {
 class RetainedSubmitter final : public Submitter {
 public:
     SubmitMode mode() const override { return SubmitMode::Retained; }
-    void upload(const Scene& scene) override;
+    void uploadMode(const Scene& scene) override;
 
 private:
     void drawKept(DrawSet set, InstanceMask keep) override;

@@ -30,6 +30,30 @@ InstanceMask Submitter::narrowToScope(InstanceMask keep) {
     return mScoped;
 }
 
+void Submitter::setCullView(const CullView* view) {
+    // GL's window y runs up: the matrix alone says which winding is front.
+    mBackFaceCulled = mBackFaceCuller.setView(view, false);
+    setCullFace(false);
+    // GL_CW only while a mirroring view culls: the front face also picks two-sided stencil's faces
+    // (volume's marks), which expect the default.
+    const bool clockwise = mBackFaceCulled && !mBackFaceCuller.frontCounterClockwise();
+    if (clockwise != mFrontClockwise) {
+        glFrontFace(clockwise ? GL_CW : GL_CCW);
+        mFrontClockwise = clockwise;
+        mStats.glCalls += 1;
+    }
+}
+
+void Submitter::setCullFace(bool on) {
+    if (on == mCullFaceOn) return;
+    mCullFaceOn = on;
+    if (on)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
+    mStats.glCalls += 1;
+}
+
 void Submitter::setInstanceUniforms(const Instance& inst) {
     // Fixed locations (layout(location=...) in common/instance.glsl): no glGetUniformLocation per draw.
     glUniformMatrix4fv(0, 1, GL_FALSE, glm::value_ptr(inst.model));

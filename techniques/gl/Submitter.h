@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "gl/ProgramCache.h"
+#include "scenes/BackFaceCulling.h"
 #include "scenes/DrawSet.h"
 #include "scenes/Scene.h"
 #include "techniques/Submission.h"
@@ -30,12 +31,35 @@ public:
     static std::unique_ptr<Submitter> create(SubmitMode mode);
 
     virtual SubmitMode mode() const = 0;
-    /// Untimed preparation for a scene: buffers, display lists, instance buffers, draw orders.
-    /// Must be called with a current context; may be called again for a new scene.
-    virtual void upload(const Scene& scene) = 0;
+    /// Untimed preparation for a scene: buffers, display lists, instance buffers, draw orders, and the
+    /// back-face candidates (scenes/BackFaceCulling.h). Must be called with a current context; may be
+    /// called again for a new scene.
+    void upload(const Scene& scene) {
+        mBackFaceCuller.setScene(scene, mBackFaces);
+        uploadMode(scene);
+    }
     /// A scene in motion moved instances (their model matrices): modes that keep per-instance data on
     /// the GPU (instanced) upload it again; the others read it at each draw. Inside the timed frame.
-    virtual void instancesMoved(const Scene&) {}
+    void instancesMoved(const Scene& scene) {
+        mBackFaceCuller.instancesMoved(scene);
+        instancesMovedMode(scene);
+    }
+    /// The run's --back-faces (scenes/BackFaceCulling.h), before upload: Draw never culls.
+    void setBackFaces(BackFaces mode) { mBackFaces = mode; }
+    /// The view of the pass that draws next, for back-face culling: each instance of a closed mesh that
+    /// view cannot see inside (mayCullBackFaces) is drawn with GL_CULL_FACE on and glFrontFace set for
+    /// the view's handedness. nullptr (the default; what BackFaceScope restores): both faces, for
+    /// passes off the linear path (a paraboloid warp, planar's flattening, shadow volumes). Inside the
+    /// timed frame: 8 corner transforms per instance of a closed mesh. Leaves GL_CULL_FACE off.
+    void setCullView(const CullView* view);
+    /// draw(set, keep) under `view` (setCullView), then none again: a pass with one draw.
+    void drawCulled(DrawSet set, const CullView& view, InstanceMask keep = {}) {
+        setCullView(&view);
+        draw(set, keep);
+        setCullView(nullptr);
+    }
+    /// Instances the current view draws culled (the last setCullView's count).
+    size_t backFaceCulledInstances() const { return mBackFaceCulled; }
     /// Draws every instance of `set` with the currently bound program.
     void draw(DrawSet set) { draw(set, InstanceMask{}); }
     /// Draws the instances of `set` that `keep` keeps. Culled instances cost no GL call; instanced
@@ -46,6 +70,7 @@ public:
             drawKept(set, keep);
         else
             drawKept(set, narrowToScope(keep));
+        setCullFace(false); // what the technique draws next itself sees both faces
     }
     /// Restricts every draw to the instances `scope` keeps (indexed like Scene::instances) until it is
     /// cleared with an empty mask. A hybrid technique (techniques/hybrid/) sets it while one of its
@@ -68,8 +93,14 @@ public:
     SubmitStats lifetimeStats() const { return mLifetime + mStats; }
 
 protected:
+    virtual void uploadMode(const Scene& scene) = 0;
+    virtual void instancesMovedMode(const Scene&) {}
     /// The mode's draw of the instances of `set` that `keep` keeps (empty: all of them).
     virtual void drawKept(DrawSet set, InstanceMask keep) = 0;
+    /// GL_CULL_FACE as the current view decides for `instance` (a GL call only on a change).
+    void cullFor(size_t instance) { setCullFace(mBackFaceCuller.culls(instance)); }
+    void setCullFace(bool on);
+    const BackFaceCuller& backFaceCuller() const { return mBackFaceCuller; }
     /// Sets the per-instance uniforms (locations 0 and 4) of the bound program.
     static void setInstanceUniforms(const Instance& inst);
     /// glBegin/glEnd stream of a mesh, one glVertexAttrib call per attribute and vertex (normal, then
@@ -86,6 +117,26 @@ private:
     SubmitStats mLifetime;
     InstanceMask mScope;
     std::vector<uint8_t> mScoped;
+    BackFaces mBackFaces = BackFaces::Cull;
+    BackFaceCuller mBackFaceCuller;
+    size_t mBackFaceCulled = 0;
+    bool mCullFaceOn = false;     ///< GL_CULL_FACE as this submitter last set it
+    bool mFrontClockwise = false; ///< glFrontFace(GL_CW) set by this submitter (GL_CCW otherwise)
+};
+
+/// Sets a pass's cull view (Submitter::setCullView) for the scope's lifetime and restores none (both
+/// faces, GL_CULL_FACE off) at its end.
+class BackFaceScope {
+public:
+    BackFaceScope(Submitter& submitter, const CullView& view) : mSubmitter(submitter) {
+        mSubmitter.setCullView(&view);
+    }
+    ~BackFaceScope() { mSubmitter.setCullView(nullptr); }
+    BackFaceScope(const BackFaceScope&) = delete;
+    BackFaceScope& operator=(const BackFaceScope&) = delete;
+
+private:
+    Submitter& mSubmitter;
 };
 
 } // namespace sb

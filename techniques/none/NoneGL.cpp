@@ -19,7 +19,7 @@ void NoneGL::execute(FrameContext& ctx) {
     ctx.passes.begin("lighting");
     ctx.submitter.resetStats();
     mProgram->use();
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     const SubmitStats& s = ctx.submitter.stats();
     mCounters = {{"draw_calls", double(s.drawCalls)}, {"triangles", double(s.triangles)}};
 }

@@ -185,7 +185,7 @@ void OccluderGL::execute(FrameContext& ctx) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWorldPlaneBinding, mWorldPlaneBuffer);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCandidateBinding, mCandidateBuffer);
     }
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
     mCounters = mPlan.counters(ctx.scene, ctx.submitter.stats(), mResolution, mLayers);
 }

@@ -142,7 +142,7 @@ void PlanarGL::execute(FrameContext& ctx) {
     ctx.submitter.resetStats();
     ctx.passes.begin("lighting");
     mLitProgram->use();
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx)); // the flattened casters below: both faces
 
     if (mProjections.empty()) {
         const char* reason = ShadowWork::noneNeeded(ctx.scene);

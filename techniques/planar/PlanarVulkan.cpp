@@ -151,6 +151,8 @@ void PlanarVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     GraphicsPipelineDesc d =
         scenePipeline(ctx, "planar/shadow.vert", "planar/shadow.frag", shadow, mLayout, shadowKey);
     shadowState(d);
+    d.dynamicCull = false; // the flattened casters: both faces, fixed
+    shadowKey += "|both-faces";
     mShadow.build(ctx.pipelines, shadowKey, d, ctx.targets);
     std::string key = definesKey(lit) + "|" + definesKey(shadow) + state;
 
@@ -162,6 +164,8 @@ void PlanarVulkan::buildPipelines(const VulkanCompileContext& ctx) {
             scenePipeline(ctx, "planar/shadow.vert", "planar/shadow.frag", proxy, mLayout, proxyKey);
         proxyInput(p);
         shadowState(p);
+        p.dynamicCull = false;
+        proxyKey += "|both-faces";
         mProxy.build(ctx.pipelines, proxyKey, p, ctx.targets);
         key += "|proxy";
     }

@@ -122,14 +122,16 @@ void ProjectiveGL::renderTexture(FrameContext& ctx) {
         glBindFramebuffer(GL_FRAMEBUFFER, mFbos[i]);
         glClearBufferfv(GL_COLOR, 0, white);
         glUniformMatrix4fv(kMatrixLocation, 1, GL_FALSE, glm::value_ptr(mViewProj[i]));
+        // A silhouette with no depth test: a closed caster's front faces cover what it covers.
+        const CullView lightView{mViewProj[i], false};
         if (!mCull) {
-            ctx.submitter.draw(DrawSet::Casters);
+            ctx.submitter.drawCulled(DrawSet::Casters, lightView);
             continue;
         }
         // A caster whose shadow misses the view puts no texel where a visible receiver looks it up.
         const size_t kept = mCulling.cullShadows(ctx.scene.lights[i], mReceivers, camera, mKeep);
         mCulled += mCulling.count(DrawSet::Casters) - kept;
-        if (kept) ctx.submitter.draw(DrawSet::Casters, mKeep);
+        if (kept) ctx.submitter.drawCulled(DrawSet::Casters, lightView, mKeep);
     }
     glEnable(GL_DEPTH_TEST);
 }
@@ -142,6 +144,7 @@ int ProjectiveGL::renderBlur(FrameContext&) {
 void ProjectiveGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLitProgram->use();
+    const BackFaceScope culling(ctx.submitter, cameraCullView(ctx));
     if (mViewProj.empty()) {
         ctx.submitter.draw(DrawSet::All); // nothing casts: every instance lit
         return;

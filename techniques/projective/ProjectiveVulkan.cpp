@@ -137,7 +137,8 @@ void ProjectiveVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     texture.depthTest = false;
     texture.depthWrite = false;
     texture.renderPass = mTexturePass;
-    mTexturePipeline = ctx.pipelines.get(textureKey, texture);
+    texture.dynamicCull = false; // drawn with both faces on Vulkan (GL culls closed casters here)
+    mTexturePipeline = ctx.pipelines.get(textureKey + "|both-faces", texture);
 
     Defines projective = ctx.defines(); // its lookups follow the scene's exceptions
     projective["SHADOW_MAP"] = "";      // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
@@ -226,11 +227,12 @@ void ProjectiveVulkan::renderLighting(VulkanFrameContext& ctx) {
     ctx.targets.beginPass(cmd);
     ctx.frame.bind(cmd, mLightingLayout, ctx.frameOffset);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLit.get(ctx.targets));
-    ctx.submitter.draw(cmd, mLightingLayout, DrawSet::Casters);
+    const CullView camera = cameraCullView(ctx);
+    ctx.submitter.drawCulled(cmd, mLightingLayout, DrawSet::Casters, camera, true);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mProjective.get(ctx.targets));
     const VkDescriptorSet set = mSets.set(kLightingSet);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0, nullptr);
-    ctx.submitter.draw(cmd, mLightingLayout, DrawSet::NonCasters);
+    ctx.submitter.drawCulled(cmd, mLightingLayout, DrawSet::NonCasters, camera, true);
     vkCmdEndRenderPass(cmd);
 }
 

@@ -86,7 +86,7 @@ void ProxyGL::execute(FrameContext& ctx) {
         glUniform1i(kCountLocation, u.count);
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProxyBinding, mProxyBuffer);
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     mCounters = mPlan.counters(ctx.submitter.stats());
 }
 

@@ -48,7 +48,8 @@ void CascadedGL::renderDepth(FrameContext& ctx) {
     mPlan.planDepth(mKeep, [&](size_t slot) {
         mMaps.beginLayer(int(slot));
         glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(mPlan.slotViewProj()[slot]));
-        ctx.submitter.draw(DrawSet::Casters, mKeep);
+        // Clamped depth: a near side cutting a caster does not open it.
+        ctx.submitter.drawCulled(DrawSet::Casters, {mPlan.slotViewProj()[slot], true}, mKeep);
     });
     glDisable(GL_DEPTH_CLAMP);
 }
@@ -65,7 +66,7 @@ void CascadedGL::renderLighting(FrameContext& ctx) {
                        glm::value_ptr(mPlan.slotShadow()[0]));
     glUniform1iv(kSlotLayerLocation, GLsizei(mPlan.slotLayer().size()), mPlan.slotLayer().data());
     glBindTextureUnit(0, mMaps.texture());
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
 }
 

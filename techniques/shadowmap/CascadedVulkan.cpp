@@ -115,7 +115,9 @@ void CascadedVulkan::drawMap(VulkanFrameContext& ctx, size_t slot) {
     vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthPipeline);
     ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
     mMaps.slots().bind(ctx.cmd, mDepthLayout, mSets.set(kDepthSet), slot);
-    ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+    // Clamped depth: a near side cutting a caster does not open it.
+    ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters, {mPlan.slotViewProj()[slot], true},
+                             false, mKeep);
     vkCmdEndRenderPass(ctx.cmd);
 }
 

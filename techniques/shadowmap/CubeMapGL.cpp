@@ -85,7 +85,8 @@ void CubeMapGL::renderCubesSixPass(FrameContext& ctx) {
             mCulled += mCulling.count(DrawSet::Casters) - kept;
             if (kept == 0) continue; // the cleared face is the answer: nothing casts into it
             glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(faces.viewProjection(f)));
-            ctx.submitter.draw(DrawSet::Casters, mKeep);
+            // Each face's own view decides, and its handedness sets the front face (faces may mirror).
+            ctx.submitter.drawCulled(DrawSet::Casters, {faces.viewProjection(f), false}, mKeep);
             ++mFacesRendered;
         }
     }
@@ -115,7 +116,7 @@ void CubeMapGL::renderLighting(FrameContext& ctx) {
     if (!mFlat.empty()) glBindTextureUnit(kFlatUnit, mFlat.texture());
     if (!mCubes.empty()) glBindTextureUnit(kCubeUnit, mCubes.texture());
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // bilinear footprints and PCF taps cross face edges
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glBindTextureUnit(kFlatUnit, 0);
     glBindTextureUnit(kCubeUnit, 0);

@@ -175,7 +175,9 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
             scenePipeline(ctx, "shadowmap/cube_depth.vert", VulkanDepthMapSet::kDepthFragment, base,
                           mDepthLayout, layeredKey, "shadowmap/cube_depth.geom");
         depthState(layered);
-        mLayeredDepthPipeline = ctx.pipelines.get(layeredKey, layered);
+        // One draw for six faces: drawn with both faces, fixed.
+        layered.dynamicCull = false;
+        mLayeredDepthPipeline = ctx.pipelines.get(layeredKey + "|both-faces", layered);
     }
 
     // Lighting pass: the GL technique's defines, permutation for permutation.
@@ -209,7 +211,7 @@ void CubeMapVulkan::renderFlatMaps(VulkanFrameContext& ctx) {
         beginDepthPass(ctx, mFlat, size_t(o.index), mFaceDepthPipeline);
         bindSlot(ctx, flatSlot(o.index));
         mCulled += mLights.cullFlatCasters(o, mCulling, mKeep);
-        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters, {o.viewProj, false}, false, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }
 }
@@ -241,7 +243,9 @@ void CubeMapVulkan::renderCubesSixPass(VulkanFrameContext& ctx) {
             mCulled += mCulling.count(DrawSet::Casters) - kept;
             if (kept > 0) { // else the cleared face is the answer: nothing casts into it
                 bindSlot(ctx, faceSlot(cube, f));
-                ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+                // Each face's own view decides, and its handedness sets the front face.
+                ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters,
+                                         {c.faces.viewProjection(f), false}, false, mKeep);
                 ++mFacesRendered;
             }
             vkCmdEndRenderPass(ctx.cmd);

@@ -87,7 +87,9 @@ void FilterableShadowMaps::render(FrameContext& ctx, const Program& program, con
         }
         // The nearest caster per texel, over whatever the background left.
         glClearBufferfv(GL_DEPTH, 0, &farthest);
-        ctx.submitter.draw(DrawSet::Casters, mKeep);
+        // The nearest caster per texel may lose closed casters' back faces; the background above keeps
+        // both (the farthest surface of a closed mesh is a back face).
+        ctx.submitter.drawCulled(DrawSet::Casters, {mFits.viewProjections()[i], false}, mKeep);
     }
 }
 
@@ -124,7 +126,7 @@ Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& dep
     setLightingUniforms();
     setUniforms();
     glBindTextureUnit(0, texture());
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
     return mFits.counters(ctx.submitter.stats(), resolution(), blurTexels, castersCulled());
 }

@@ -28,7 +28,8 @@ size_t renderFlatDepth(const FlatLightFits& lights, Submitter& submitter, const 
             continue;
         }
         culled += lights.cullCasters(i, culling, keep, view);
-        submitter.draw(DrawSet::Casters, keep);
+        // The nearest caster per texel: back faces of closed casters can go (scenes/BackFaceCulling.h).
+        submitter.drawCulled(DrawSet::Casters, {lights.viewProj()[i], false}, keep);
     }
     return culled;
 }

@@ -30,7 +30,7 @@ size_t renderOmniFlatMaps(const OmniLightSet& lights, Submitter& submitter, cons
         layers.beginLayer(flatBase + o.index);
         glUniformMatrix4fv(kShadowMatrixLocation, 1, GL_FALSE, glm::value_ptr(o.viewProj));
         culled += lights.cullFlatCasters(o, culling, keep);
-        submitter.draw(DrawSet::Casters, keep);
+        submitter.drawCulled(DrawSet::Casters, {o.viewProj, false}, keep);
     }
     return culled;
 }

@@ -53,6 +53,8 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
                       mLighting->key());
 }
 
+// The depth passes draw both faces: the paraboloid warp in the vertex stage is not a linear projection,
+// so a closed caster's back faces may cover texels its front faces miss (scenes/BackFaceCulling.h).
 void ParaboloidGL::drawHemisphere(FrameContext& ctx, const glm::vec4& light) {
     if (mSplit &&
         mSplitting.partition(glm::vec3(light), mMaxSegmentAngle, mKeep, mKeepPlain, mKeepSplit) > 0) {
@@ -110,7 +112,7 @@ void ParaboloidGL::renderLighting(FrameContext& ctx) {
     mLighting->use();
     setOmniLightingUniforms(mLights, flatBase(), 2);
     if (!mMaps.empty()) glBindTextureUnit(kMapUnit, mMaps.texture());
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glBindTextureUnit(kMapUnit, 0);
 }
 

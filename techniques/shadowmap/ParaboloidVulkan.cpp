@@ -151,7 +151,9 @@ void ParaboloidVulkan::createDepthPipelines(const VulkanCompileContext& ctx) {
         GraphicsPipelineDesc d =
             scenePipeline(ctx, vertex, VulkanDepthMapSet::kDepthFragment, base, mDepthLayout, key, geometry);
         mMaps.depthPipeline(d, p);
-        return ctx.pipelines.get(key, d);
+        // Both faces, fixed: the warp is not a linear projection (scenes/BackFaceCulling.h).
+        d.dynamicCull = false;
+        return ctx.pipelines.get(key + "|both-faces", d);
     };
     mFlatDepth = depth("paraboloid-flat-depth", "shadowmap/depth.vert", "");
     mParaboloidDepth = depth("paraboloid-depth", "shadowmap/paraboloid_depth.vert", "");

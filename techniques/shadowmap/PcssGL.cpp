@@ -125,7 +125,7 @@ void PcssGL::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(kCompareUnit, mMaps.texture());
     glBindSampler(kSearchUnit, mSearchSampler);
     glBindSampler(kCompareUnit, mCompareSampler);
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glBindSampler(kSearchUnit, 0);
     glBindSampler(kCompareUnit, 0);
     glBindTextureUnit(kSearchUnit, 0);

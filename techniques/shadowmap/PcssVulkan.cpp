@@ -163,7 +163,8 @@ void PcssVulkan::renderDepth(VulkanFrameContext& ctx) {
         vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthPipeline);
         ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
         mMaps.slots().bind(ctx.cmd, mDepthLayout, depthSet, i);
-        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters, {mLights.viewProj()[i], false},
+                                 false, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }
 }

@@ -99,7 +99,7 @@ void ShadowMapGL::renderLighting(FrameContext& ctx) {
         glUniform2fv(kKernelLocation, GLsizei(mKernel.size()), glm::value_ptr(mKernel[0]));
     }
     glBindTextureUnit(0, mMaps.texture());
-    ctx.submitter.draw(DrawSet::All);
+    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
 }
 

@@ -146,7 +146,9 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
         vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthPipeline);
         ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
         mMaps.slots().bind(ctx.cmd, mDepthLayout, mSets.set(kDepthSet), i);
-        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        // The nearest caster per texel: closed casters' back faces can go (scenes/BackFaceCulling.h).
+        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters, {mLights.viewProj()[i], false},
+                                 false, mKeep);
         vkCmdEndRenderPass(ctx.cmd);
     }
 }

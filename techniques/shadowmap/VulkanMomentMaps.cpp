@@ -203,7 +203,9 @@ void VulkanMomentMaps::createPipelines(const VulkanCompileContext& ctx) {
     depth.renderPass = mPass;
     mCasterPipeline = ctx.pipelines.get(depthKey + "|less", depth);
     depth.depthCompare = VK_COMPARE_OP_GREATER;
-    mBackgroundPipeline = ctx.pipelines.get(depthKey + "|greater", depth);
+    // The farthest surface: both faces, fixed (a closed mesh's farthest surface is a back face).
+    depth.dynamicCull = false;
+    mBackgroundPipeline = ctx.pipelines.get(depthKey + "|greater|both-faces", depth);
 
     Defines lit = mSettings.lightingDefines;
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
@@ -267,7 +269,9 @@ void VulkanMomentMaps::renderLayer(VulkanFrameContext& ctx, size_t light,
         }
         // The nearest caster per texel, over whatever the background left.
         vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mCasterPipeline);
-        ctx.submitter.draw(ctx.cmd, mDepthLayout, DrawSet::Casters, mKeep);
+        // The nearest caster may lose closed casters' back faces; the background above keeps both.
+        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters,
+                                 {mFits.viewProjections()[light], false}, false, mKeep);
     }
     vkCmdEndRenderPass(ctx.cmd);
 }

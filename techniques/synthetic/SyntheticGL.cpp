@@ -39,7 +39,7 @@ void SyntheticGL::execute(FrameContext& ctx) {
     if (mScene) {
         mScene->use();
         glUniform1i(kVertexIterationsLocation, int(properties().getInt(Synthetic::kVertexIterations)));
-        ctx.submitter.draw(DrawSet::All);
+        ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
     }
     ctx.passes.begin("fill");
     if (mFill) {

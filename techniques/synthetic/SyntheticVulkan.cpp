@@ -48,7 +48,7 @@ void SyntheticVulkan::recordScene(VulkanFrameContext& ctx) {
     ctx.frame.bind(ctx.cmd, mLayout, ctx.frameOffset);
     VulkanPush push;
     push.ints.x = mVertexIterations;
-    ctx.submitter.draw(ctx.cmd, mLayout, DrawSet::All, {}, push);
+    ctx.submitter.drawCulled(ctx.cmd, mLayout, DrawSet::All, cameraCullView(ctx), true, {}, push);
     vkCmdEndRenderPass(ctx.cmd);
 }
 

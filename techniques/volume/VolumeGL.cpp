@@ -202,6 +202,10 @@ void VolumeGL::execute(FrameContext& ctx) {
     // The scene passes must use the same projection as the volumes: this technique's own frame block.
     mFrameUniforms->upload(computeFrameUniforms(*mScene, ctx.view, proj, ctx.eye));
     if (settings.far == VolumePlanner::Far::DepthClamp) glEnable(GL_DEPTH_CLAMP);
+    // The ambient and light passes cull alike (one view for both): the light passes' GL_EQUAL finds the
+    // surfaces the ambient pass left. The volumes themselves are not the submitter's: both faces.
+    const CullView sceneView{proj * ctx.view, false};
+    const BackFaceScope culling(ctx.submitter, sceneView);
 
     const int lights = std::min<int>(int(mScene->lights.size()), kMaxLights);
     for (int i = 0; i < lights; ++i)

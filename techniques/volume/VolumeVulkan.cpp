@@ -446,6 +446,10 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
 
     // Outside the passes' render passes: the queries are reset before the marking passes reuse them.
     readStencilQueries(ctx.cmd);
+    // The ambient and light passes cull alike (one view for both): the light passes' EQUAL test finds
+    // the surfaces the ambient pass left. The volumes are not the submitter's: both faces.
+    const CullView sceneView{proj * ctx.view, false};
+    ctx.submitter.setCullView(&sceneView, true);
     ctx.passes.begin("ambient");
     renderAmbient(ctx, frame);
     for (int i = 0; i < lights; ++i) {
@@ -461,6 +465,7 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
         ctx.passes.begin("lighting");
         renderLight(ctx, frame, i, scissor);
     }
+    ctx.submitter.setCullView(nullptr, true);
     ++mQueryFrame;
     mCounters = mPlanner.counters(stats, ctx.submitter.stats(),
                                   mSamples ? std::optional<double>(mStencilSamples) : std::nullopt);

@@ -22,9 +22,16 @@ GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::s
     d.bindings = ctx.submitter.bindings();
     d.attributes = ctx.submitter.attributes();
     d.layout = layout;
+    // The submitter sets cull mode and front face per pass and instance (VulkanSubmitter::setCullView).
+    d.dynamicCull = ctx.submitter.dynamicCull();
+    key += d.dynamicCull ? "cull-dynamic+" : "";
     key +=
         vertex + "+" + fragment + "[" + definesKey(defines) + "]" + (geometry.empty() ? "" : "+" + geometry);
     return d;
+}
+
+CullView cameraCullView(const VulkanFrameContext& ctx) {
+    return {ctx.proj * ctx.view, false};
 }
 
 void drawLitScene(VulkanFrameContext& ctx, const ScenePipeline& pipeline, VkPipelineLayout layout,
@@ -34,7 +41,7 @@ void drawLitScene(VulkanFrameContext& ctx, const ScenePipeline& pipeline, VkPipe
     ctx.frame.bind(ctx.cmd, layout, ctx.frameOffset);
     if (set != VK_NULL_HANDLE)
         vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
-    ctx.submitter.draw(ctx.cmd, layout, DrawSet::All);
+    ctx.submitter.drawCulled(ctx.cmd, layout, DrawSet::All, cameraCullView(ctx), true);
     vkCmdEndRenderPass(ctx.cmd);
 }
 

@@ -8,6 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "scenes/BackFaceCulling.h"
 #include "shading/Defines.h"
 #include "techniques/vulkan/VulkanPipelineCache.h"
 #include "vk/GraphicsPipeline.h"
@@ -21,7 +22,9 @@ struct VulkanFrameContext;
 VkPipelineLayout createScenePipelineLayout(const VulkanCompileContext& ctx,
                                            const std::vector<VkDescriptorSetLayout>& sets = {});
 
-/// A pipeline drawing the scene with `vertex`, `fragment` and an optional `geometry` stage (files under
+/// A pipeline drawing the scene with `vertex`, `fragment` and an optional `geometry` stage (cull mode
+/// and front face dynamic where the device allows: its draws must then be under a cull view,
+/// VulkanSubmitter::setCullView; a pass drawn without one sets dynamicCull false) (files under
 /// shaders/) compiled with `defines` (and dumped as one program under --dump-shaders), the submitter's
 /// vertex input and `layout`. `key` gets the shader files and defines appended: the pipeline cache's key
 /// for the shaders part.
@@ -29,6 +32,10 @@ GraphicsPipelineDesc scenePipeline(const VulkanCompileContext& ctx, const std::s
                                    const std::string& fragment, const Defines& defines,
                                    VkPipelineLayout layout, std::string& key,
                                    const std::string& geometry = "");
+
+/// The camera's view for back-face culling (VulkanSubmitter::setCullView, with clipFlipsY: the frame
+/// block's clip space flips y): GL's matrix of the pass that draws the visible scene.
+CullView cameraCullView(const VulkanFrameContext& ctx);
 
 /// The lit pass over every mesh into the frame targets, as none's, shadowmap's and cubemap's lighting
 /// passes draw it: begins the targets' render pass, binds `pipeline` (the variant for this frame's

@@ -1,7 +1,9 @@
 #include "techniques/vulkan/VulkanSubmitter.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "core/Error.h"
 #include "vk/VulkanContext.h"
@@ -14,10 +16,17 @@ VulkanSubmitter::VulkanSubmitter(VulkanContext& context, SubmitMode mode) : mCon
                         " is GL-only (glBegin/glEnd and display lists have no Vulkan form); on Vulkan use "
                         "--submit retained or --submit instanced",
                     ExitCode::Unsupported);
+    // Dynamic cull mode is core in 1.3; the device's version is "major.minor.patch".
+    const std::string& v = context.info().apiVersion;
+    const int major = std::atoi(v.c_str());
+    const size_t dot = v.find('.');
+    const int minor = dot == std::string::npos ? 0 : std::atoi(v.c_str() + dot + 1);
+    mDynamicCull = major > 1 || (major == 1 && minor >= 3);
 }
 
 void VulkanSubmitter::upload(const Scene& scene) {
     mScene = &scene;
+    mBackFaceCuller.setScene(scene, mDynamicCull ? mBackFaces : BackFaces::Draw);
     mMeshes.clear();
     for (const Mesh& mesh : scene.meshes) {
         const std::vector<glm::vec3> interleaved = interleavedVertices(mesh);
@@ -41,6 +50,7 @@ void VulkanSubmitter::upload(const Scene& scene) {
 }
 
 void VulkanSubmitter::instancesMoved(const Scene& scene) {
+    mBackFaceCuller.instancesMoved(scene);
     if (mMode != SubmitMode::Instanced) return;
     mPlan.instancesMoved(scene);
     const std::vector<InstanceRecord>& records = mPlan.records();
@@ -81,10 +91,32 @@ void VulkanSubmitter::bindMesh(VkCommandBuffer cmd, uint32_t mesh) {
 void VulkanSubmitter::draw(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
                            const VulkanPush& push) {
     if (!mScope.empty()) keep = narrowToScope(keep);
+    const bool dynamic = mDynamicCull && mViewSet;
+    if (dynamic) {
+        // Dynamic state is lost when a pipeline without it was bound since: set it at every draw.
+        vkCmdSetFrontFace(cmd, mBackFaceCuller.frontCounterClockwise() ? VK_FRONT_FACE_COUNTER_CLOCKWISE
+                                                                       : VK_FRONT_FACE_CLOCKWISE);
+        vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);
+        mCullOn = false;
+        mStats.glCalls += 2;
+    }
     if (mMode == SubmitMode::Instanced)
         drawInstanced(cmd, layout, set, keep, push);
     else
         drawRetained(cmd, layout, set, keep, push);
+}
+
+void VulkanSubmitter::setCullView(const CullView* view, bool clipFlipsY) {
+    // Vulkan counts winding with y running down the framebuffer; a y-flipped clip space undoes that.
+    mBackFaceCuller.setView(view, !clipFlipsY);
+    mViewSet = view && mDynamicCull;
+}
+
+void VulkanSubmitter::setCullMode(VkCommandBuffer cmd, bool cull) {
+    if (cull == mCullOn) return;
+    vkCmdSetCullMode(cmd, cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE);
+    mCullOn = cull;
+    mStats.glCalls += 1;
 }
 
 InstanceMask VulkanSubmitter::narrowToScope(InstanceMask keep) {
@@ -100,6 +132,7 @@ void VulkanSubmitter::drawRetained(VkCommandBuffer cmd, VkPipelineLayout layout,
         const Instance& inst = mScene->instances[i];
         if (!inDrawSet(inst, set) || !keptBy(keep, i)) continue;
         if (inst.mesh != bound) bindMesh(cmd, bound = inst.mesh);
+        if (mViewSet) setCullMode(cmd, mBackFaceCuller.culls(i));
         push.model = inst.model;
         push.colorId = glm::vec4(inst.color, shadowSignedId(inst));
         vkCmdPushConstants(cmd, layout, kPushStages, 0, sizeof push, &push);
@@ -123,13 +156,16 @@ void VulkanSubmitter::drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout
         bindMesh(cmd, b.mesh);
         const uint32_t count = mMeshes[b.mesh].indexCount;
         // Each run of consecutive kept records is one draw (firstInstance selects the run).
-        mPlan.forEachKeptRun(b, keep, [&](uint32_t first, uint32_t instances) {
-            vkCmdDrawIndexed(cmd, count, instances, 0, 0, first);
-            mStats.drawCalls += 1;
-            mStats.triangles += uint64_t(count / 3) * instances;
-            mStats.instances += instances;
-            mStats.glCalls += 1;
-        });
+        // A run splits where the view's back-face decision changes.
+        mPlan.forEachKeptRun(b, keep, mBackFaceCuller.decisions(),
+                             [&](uint32_t first, uint32_t instances, bool cull) {
+                                 if (mViewSet) setCullMode(cmd, cull);
+                                 vkCmdDrawIndexed(cmd, count, instances, 0, 0, first);
+                                 mStats.drawCalls += 1;
+                                 mStats.triangles += uint64_t(count / 3) * instances;
+                                 mStats.instances += instances;
+                                 mStats.glCalls += 1;
+                             });
     }
 }
 

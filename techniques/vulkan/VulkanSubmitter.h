@@ -19,6 +19,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
+#include "scenes/BackFaceCulling.h"
 #include "scenes/Scene.h"
 #include "shading/Defines.h"
 #include "techniques/Submission.h"
@@ -44,8 +45,29 @@ public:
     /// Throws sb::Error(Unsupported) for the GL-only modes.
     VulkanSubmitter(VulkanContext& context, SubmitMode mode);
     SubmitMode mode() const { return mMode; }
-    /// Untimed: buffers for the scene's meshes and, instanced, its instance records.
+    /// Untimed: buffers for the scene's meshes and, instanced, its instance records; the back-face
+    /// candidates (scenes/BackFaceCulling.h).
     void upload(const Scene& scene);
+    /// The run's --back-faces, before upload: Draw never culls.
+    void setBackFaces(BackFaces mode) { mBackFaces = mode; }
+    /// Whether scene pipelines take cull mode and front face as dynamic state (the device has Vulkan
+    /// 1.3, as lavapipe of Mesa 22.3.6 and 25.0.7 have); without it nothing is culled.
+    bool dynamicCull() const { return mDynamicCull; }
+    /// As Submitter::setCullView on GL: the view of the pass that draws next; each instance of a closed
+    /// mesh it cannot see inside is drawn with VK_CULL_MODE_BACK_BIT. `clipFlipsY`: the pass's clip
+    /// space is GL's with y flipped (the camera's frame block, VulkanFrameBlock::clipFromGl), else
+    /// GL's y as is (the maps' depthFromGl); with Vulkan's y-down framebuffer that decides the front
+    /// face. `view` holds GL's matrix. nullptr: both faces. Dynamic cull commands are recorded only
+    /// while a view is set, so every pipeline drawn under a view must take them dynamically (the scene
+    /// pipelines, ScenePass.h) and every one drawn without must not (VUID-vkCmdDrawIndexed-None-02859).
+    void setCullView(const CullView* view, bool clipFlipsY);
+    /// draw() under `view`, then none again.
+    void drawCulled(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, const CullView& view,
+                    bool clipFlipsY, InstanceMask keep = {}, const VulkanPush& push = {}) {
+        setCullView(&view, clipFlipsY);
+        draw(cmd, layout, set, keep, push);
+        setCullView(nullptr, clipFlipsY);
+    }
     /// A scene in motion moved instances: instanced mode rewrites its records (host-visible, in place).
     void instancesMoved(const Scene& scene);
     /// SB_INSTANCED for instanced.
@@ -81,6 +103,8 @@ private:
     void drawInstanced(VkCommandBuffer cmd, VkPipelineLayout layout, DrawSet set, InstanceMask keep,
                        const VulkanPush& push);
     void bindMesh(VkCommandBuffer cmd, uint32_t mesh);
+    /// Cull mode for the next draws (a command only on a change since the draw began).
+    void setCullMode(VkCommandBuffer cmd, bool cull);
     /// `keep` narrowed to the view scope (in mScoped).
     InstanceMask narrowToScope(InstanceMask keep);
 
@@ -94,6 +118,11 @@ private:
     SubmitStats mStats, mLifetime;
     InstanceMask mScope;          ///< empty: no view scope
     std::vector<uint8_t> mScoped; ///< the last narrowed mask
+    BackFaces mBackFaces = BackFaces::Cull;
+    BackFaceCuller mBackFaceCuller;
+    bool mDynamicCull = false;
+    bool mCullOn = false;  ///< the cull mode last recorded in this draw
+    bool mViewSet = false; ///< a cull view is set: the bound pipeline takes cull mode dynamically
 };
 
 } // namespace sb

@@ -20,6 +20,7 @@ Harness::Harness(const RunConfig& config) : MeasuredHarness(config, true) {
     DebugOutput::install();
     mTargets = std::make_unique<FrameTargets>(config.width, config.height);
     mSubmitter = Submitter::create(config.submit);
+    mSubmitter->setBackFaces(config.backFaces);
     mSubmitter->upload(scene());
     mFrameUniforms = std::make_unique<FrameUniforms>();
     mRing = std::make_unique<TimerQueryRing>(4, 16);

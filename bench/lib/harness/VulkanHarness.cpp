@@ -24,6 +24,7 @@ VulkanHarness::VulkanHarness(const RunConfig& config) : MeasuredHarness(config, 
     mPipelines = std::make_unique<VulkanPipelineCache>(*mContext);
     mFrameBlock = std::make_unique<VulkanFrameBlock>(*mContext);
     mSubmitter = std::make_unique<VulkanSubmitter>(*mContext, config.submit);
+    mSubmitter->setBackFaces(config.backFaces);
     mSubmitter->upload(scene());
     mShaders->setDumpDirectory(config.dumpShadersPath);
     if (mContext->timestampPeriodNs() > 0.0)

@@ -29,6 +29,7 @@ std::string words(const std::string& commaList) {
 std::vector<std::pair<std::string, std::string>> fixedValues() {
     return {{"--api", "gl vulkan"},
             {"--submit", submitModes().list(" ")},
+            {"--back-faces", "cull draw"},
             {"--light", lightTypeNames().list(" ")},
             {"--format", rowFormats().list(" ")},
             {"--backend", words(backendNames())},

@@ -23,6 +23,9 @@ struct RunConfig {
     std::string camera = "far";
     int width = 1024, height = 1024;
     SubmitMode submit = SubmitMode::Retained;
+    /// --back-faces: cull the back faces of closed meshes where the image cannot change
+    /// (scenes/BackFaceCulling.h), or draw them all (the before/after comparison).
+    BackFaces backFaces = BackFaces::Cull;
     int frames = 50;      ///< measured frames (ignored when seconds > 0)
     double seconds = 0.0; ///< measure for this long instead (at least kMinFrames frames)
     int warmup = 5;       ///< discarded frames (shader JIT on llvmpipe costs up to ~100 ms early on)

@@ -89,6 +89,7 @@ constexpr int kMaxDeviceIndex = 1023;
 struct RawOptions {
     std::vector<std::string> techniques;
     std::string size = "1024x1024", submit = "retained", backend = "auto", light, format = "console";
+    std::string backFaces = "cull";
     std::string api = "gl", driver;
     std::optional<int> instances, tess, pathFrames, gpu, vkDevice;
     std::optional<int64_t> seed;
@@ -141,6 +142,10 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                 "a scene in motion: frames per pass along its path (default: the scene's)");
     app.add_option("--size", raw.size, "render target WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--submit", raw.submit, "submission: " + submitModes().list())->capture_default_str();
+    app.add_option("--back-faces", raw.backFaces,
+                   "cull or draw: cull the back faces of closed meshes where the image cannot change, or "
+                   "draw every face (before/after comparisons)")
+        ->capture_default_str();
     app.add_option("--frames", c.frames, "measured frames")->capture_default_str();
     app.add_option("--seconds", c.seconds, "measure for this many seconds instead of --frames");
     app.add_option("--warmup", c.warmup, "discarded warm-up frames")->capture_default_str();
@@ -227,6 +232,9 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
     auto mode = parseSubmitMode(raw.submit);
     if (!mode) throw Error("--submit " + raw.submit + ": expected " + submitModes().choices());
     c.submit = *mode;
+    const std::optional<BackFaces> backFaces = parseBackFaces(raw.backFaces);
+    if (!backFaces) throw Error("--back-faces " + raw.backFaces + ": expected cull or draw");
+    c.backFaces = *backFaces;
     c.context.backend = raw.window ? Backend::Glfw : parseBackend(raw.backend);
     c.context.visibleWindow = raw.window;
     c.context.width = c.width;

@@ -72,6 +72,8 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kSeed, "", ColumnType::Text, kEveryRun, "`--seed`, or `default`"},
     {col::kModel, "", ColumnType::Text, kEveryRun, "`--model` path, or empty"},
     {col::kSubmit, "", ColumnType::Text, kEveryRun, "submission mode"},
+    {col::kBackFaces, "", ColumnType::Text, kEveryRun,
+     "`--back-faces`: `cull` (back faces of closed meshes culled where the image cannot change) or `draw`"},
     {col::kCamera, "", ColumnType::Text, kEveryRun, "camera preset"},
     {col::kWidth, "px", ColumnType::Integer, kEveryRun, "render target width"},
     {col::kHeight, "px", ColumnType::Integer, kEveryRun, "render target height"},

@@ -131,6 +131,7 @@ CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environmen
         {col::kSeed, c.sceneOptions.seed ? std::to_string(*c.sceneOptions.seed) : "default"},
         {col::kModel, c.sceneOptions.modelPath},
         {col::kSubmit, submitModeName(c.submit)},
+        {col::kBackFaces, backFacesName(c.backFaces)},
         {col::kCamera, c.camera},
         {col::kWidth, std::to_string(c.width)},
         {col::kHeight, std::to_string(c.height)},
