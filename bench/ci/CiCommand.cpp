@@ -138,6 +138,7 @@ CsvTable baselineColumns(const CsvTable& rows) {
                                                    col::kScene,
                                                    col::kInstances,
                                                    col::kSubmit,
+                                                   col::kBackFaces,
                                                    col::kWidth,
                                                    col::kHeight,
                                                    col::kLights};

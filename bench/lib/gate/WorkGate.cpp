@@ -16,7 +16,7 @@ namespace {
 const std::vector<std::string> kKeyColumns = {
     col::kTechnique,    col::kProperties, col::kScene,  col::kInstances, col::kScale,
     col::kTessellation, col::kTessFactor, col::kSeed,   col::kModel,     col::kSubmit,
-    col::kCamera,       col::kWidth,      col::kHeight, col::kLights};
+    col::kCamera,       col::kWidth,      col::kHeight, col::kLights,    col::kBackFaces};
 
 /// The rows of one configuration in one table.
 struct ConfigRows {
@@ -250,7 +250,12 @@ LayerCell WorkComparison::cell(const std::string& config) const {
 
 std::string WorkGate::configKey(const CsvTable& table, const std::vector<std::string>& row) {
     std::string key;
-    for (const std::string& c : kKeyColumns) key += (key.empty() ? "" : " ") + c + "=" + table.cell(row, c);
+    for (const std::string& c : kKeyColumns) {
+        std::string value = table.cell(row, c);
+        // Rows written before `--back-faces` existed drew every back face.
+        if (c == col::kBackFaces && value.empty()) value = "draw";
+        key += (key.empty() ? "" : " ") + c + "=" + value;
+    }
     return key;
 }
 
