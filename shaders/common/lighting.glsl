@@ -59,8 +59,8 @@ vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
 // (CompileContext::defines): otherwise this is the constant true and costs nothing.
 // SB_NON_RECEIVER_DRAWS: the program draws only instances that receive no shadow (a technique that
 // draws its receivers and its non-receivers apart, ShadowMap::drawsNonReceiversApart), so no shadow
-// applies and the lookup is compiled out. llvmpipe runs both sides of the branch on colorId.w under a
-// mask, so a non-receiver's fragments would otherwise pay for the whole lookup they discard.
+// applies and the lookup is compiled out. llvmpipe (Mesa 22.3.6) runs the lookup under the mask of the
+// branch on colorId.w, so a non-receiver's fragments would otherwise pay for the lookup they discard.
 bool lightCastsShadows(int i) {
 #ifdef SB_SHADOWLESS_LIGHTS
     return ((uint(SB_SHADOWLESS_LIGHTS) >> uint(i)) & 1u) == 0u;
