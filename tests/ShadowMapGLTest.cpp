@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "NonReceiverScene.h"
 #include "RenderedFrame.h"
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
@@ -132,33 +133,6 @@ TEST(ShadowMapGL, SpotLightShadowsTheGroundUnderTheSphere) {
     EXPECT_EQ(wrong, 0);
 }
 
-// A scene whose non-receiver (a ball over the floor, "receives_shadow": false) is listed after the
-// receiver, meshes and instances alike: the lighting pass draws it apart with a program that has no
-// lookup (ShadowMap::drawsNonReceiversApart). Listed first, the draw order would change, so one program
-// draws both: the control, which is what every scene got before. Directional light: the ball's shadow
-// falls on the floor, and the ball (which casts) would shadow itself if it received.
-std::string nonReceiverScene(bool receiverFirst) {
-    const std::string floorMesh = R"({"name": "floor", "generator": "plane", "size": 10, "tessellation": 4})";
-    const std::string ballMesh =
-        R"({"name": "ball", "generator": "sphere", "radius": 0.7, "tessellation": 24})";
-    const std::string floor =
-        R"({"mesh": "floor", "position": [0, 0, 0], "color": [0.5, 0.5, 0.5], "casts_shadow": false})";
-    const std::string ball =
-        R"({"mesh": "ball", "position": [0, 2, 0], "color": [0.3, 0.4, 0.6], "receives_shadow": false})";
-    const std::string name = receiverFirst ? "receiver_first" : "non_receiver_first";
-    const std::string path = test::freshTestDir("shadowmap_" + name) + "/scene.json";
-    test::writeFile(
-        path,
-        R"({"name": ")" + name + R"(", "meshes": [)" +
-            (receiverFirst ? floorMesh + ", " + ballMesh : ballMesh + ", " + floorMesh) +
-            R"(], "instances": [)" + (receiverFirst ? floor + ", " + ball : ball + ", " + floor) +
-            R"(], "lights": [{"type": "directional", "direction": [0.4, -1, 0.2]}], "ambient": [0.2, 0.2, 0.2],
-  "effects": ["hard_shadows"],
-  "cameras": [{"name": "view", "eye": [0.5, 9, 0.001], "target": [0.5, 0, 0], "up": [0, 0, -1], "fov": 40,
-               "near": 0.5, "far": 50}]})");
-    return path;
-}
-
 /// Whether the program that drew the frame's last draw samples the shadow map: its sampler is an
 /// active uniform only where the compiled code reads it.
 bool lastProgramReadsTheMap() {
@@ -171,14 +145,14 @@ bool lastProgramReadsTheMap() {
 TEST(ShadowMapGL, NonReceiversDrawnLastSkipTheLookupWithTheSameImage) {
     for (SubmitMode mode : kAllSubmitModes) {
         SCOPED_TRACE(submitModeName(mode));
-        Harness apart(test::quickConfig(nonReceiverScene(true), "view", 128, mode));
+        Harness apart(test::quickConfig(test::nonReceiverScene(true), "view", 128, mode));
         ShadowMapGL split;
         const test::RenderedFrame f = test::renderOnce(apart, split);
         // The exact measure of the saving: the non-receiver's program has no lookup left.
         EXPECT_FALSE(lastProgramReadsTheMap()) << split.permutationKey();
         EXPECT_NE(f.permutation.find("SB_NON_RECEIVER_DRAWS"), std::string::npos) << f.permutation;
 
-        Harness together(test::quickConfig(nonReceiverScene(false), "view", 128, mode));
+        Harness together(test::quickConfig(test::nonReceiverScene(false), "view", 128, mode));
         ShadowMapGL one;
         const test::RenderedFrame control = test::renderOnce(together, one);
         EXPECT_TRUE(lastProgramReadsTheMap()) << "the control's one program looks the map up";
