@@ -110,15 +110,19 @@ Axis propertyAxis(const PropertyDesc& p) {
 }
 
 /// The shadow exceptions a scene file can declare (CompileContext::defines), applied to the scene's
-/// first instance or light: the built-in scenes declare none.
+/// first instance or light: the built-in scenes declare none. A non-receiver listed last is drawn apart
+/// by techniques that can keep the draw order that way (ShadowMap::drawsNonReceiversApart), with
+/// programs of their own.
 constexpr const char* kNonReceiver = "first_instance_receives_none";
+constexpr const char* kLastNonReceiver = "last_instance_receives_none";
 constexpr const char* kUnshadowedLight = "first_light_casts_none";
 constexpr size_t kSceneAxes = 5;
 
 /// The scene-side axes: built-in scenes, submission modes, light types, effect toggles, exceptions.
 std::vector<Axis> sceneAxes() {
     Axis scene{"scene", {}}, submit{"submit", {submitModeName(SubmitMode::Retained)}}, light{"light", {""}},
-        effects{"effects", {""}}, exceptions{"exceptions", {"", kNonReceiver, kUnshadowedLight}};
+        effects{"effects", {""}},
+        exceptions{"exceptions", {"", kNonReceiver, kLastNonReceiver, kUnshadowedLight}};
     for (const std::string& s : SceneLoader::listBuiltinScenes()) addUnique(scene.values, s);
     for (const auto& m : submitModes().entries()) addUnique(submit.values, m.name);
     for (const auto& l : lightTypeNames().entries()) addUnique(light.values, l.name);
@@ -147,6 +151,8 @@ public:
             scene.effects ^= EffectMask(*parseEffect(toggle));
         const std::string exception = valueOf(c, axes[4]);
         if (exception == kNonReceiver && !scene.instances.empty()) scene.instances[0].receivesShadow = false;
+        if (exception == kLastNonReceiver && !scene.instances.empty())
+            scene.instances.back().receivesShadow = false;
         if (exception == kUnshadowedLight && !scene.lights.empty()) scene.lights[0].castsShadows = false;
         std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(technique);
         for (size_t i = kSceneAxes; i < axes.size(); ++i)

@@ -2,9 +2,12 @@
 // (tests/SphereShadowJudge.h, which tests/ShadowMapVkTest.cpp runs on Vulkan as well).
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "NonReceiverScene.h"
+#include "RenderedFrame.h"
 #include "SphereShadowJudge.h"
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
@@ -128,6 +131,48 @@ TEST(ShadowMapGL, SpotLightShadowsTheGroundUnderTheSphere) {
     }
     EXPECT_GT(checked, 1000);
     EXPECT_EQ(wrong, 0);
+}
+
+/// Whether the program that drew the frame's last draw samples the shadow map: its sampler is an
+/// active uniform only where the compiled code reads it.
+bool lastProgramReadsTheMap() {
+    GLint program = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    EXPECT_NE(program, 0);
+    return glGetUniformLocation(GLuint(program), "uShadowMap") != -1;
+}
+
+TEST(ShadowMapGL, NonReceiversDrawnLastSkipTheLookupWithTheSameImage) {
+    for (SubmitMode mode : kAllSubmitModes) {
+        SCOPED_TRACE(submitModeName(mode));
+        Harness apart(test::quickConfig(test::nonReceiverScene(true), "view", 128, mode));
+        ShadowMapGL split;
+        const test::RenderedFrame f = test::renderOnce(apart, split);
+        // The exact measure of the saving: the non-receiver's program has no lookup left.
+        EXPECT_FALSE(lastProgramReadsTheMap()) << split.permutationKey();
+        EXPECT_NE(f.permutation.find("SB_NON_RECEIVER_DRAWS"), std::string::npos) << f.permutation;
+
+        Harness together(test::quickConfig(test::nonReceiverScene(false), "view", 128, mode));
+        ShadowMapGL one;
+        const test::RenderedFrame control = test::renderOnce(together, one);
+        EXPECT_TRUE(lastProgramReadsTheMap()) << "the control's one program looks the map up";
+        EXPECT_EQ(control.permutation.find("SB_NON_RECEIVER_DRAWS"), std::string::npos);
+
+        // The same image, bit for bit: the same draws in the same order, the same arithmetic per pixel.
+        EXPECT_TRUE(f.colour == control.colour);
+        EXPECT_TRUE(f.visibility == control.visibility);
+        // Not vacuous: the floor is shadowed somewhere, the ball (y > 1.3 on its upper half) nowhere.
+        size_t floorShadowed = 0, ball = 0, ballShadowed = 0;
+        for (size_t i = 0; i < f.world.size(); ++i) {
+            if (f.world[i].w == 0.0f) continue;
+            const float v = f.visibility[4 * i];
+            if (std::abs(f.world[i].y) < 1e-3f) floorShadowed += v < 0.5f;
+            if (f.world[i].y > 1.3f) ++ball, ballShadowed += v != 1.0f;
+        }
+        EXPECT_GT(floorShadowed, 100u);
+        EXPECT_GT(ball, 100u);
+        EXPECT_EQ(ballShadowed, 0u);
+    }
 }
 
 } // namespace

@@ -125,23 +125,11 @@ GateLayer judgeWork(const WorkComparison& w, GateReport& report, const std::stri
 /// includes the driver on both APIs (Vulkan rows name it in gl_vendor only), so that layer A can tell a
 /// head on another driver from one on the baseline's.
 CsvTable baselineColumns(const CsvTable& rows) {
-    static const std::vector<std::string> kKeep = {col::kCiConfig,
-                                                   col::kStatus,
-                                                   col::kApi,
-                                                   col::kRenderer,
-                                                   col::kGlVersion,
-                                                   col::kGlVendor,
-                                                   col::kDriver,
-                                                   col::kDriverVersion,
-                                                   col::kTechnique,
-                                                   col::kProperties,
-                                                   col::kScene,
-                                                   col::kInstances,
-                                                   col::kSubmit,
-                                                   col::kBackFaces,
-                                                   col::kWidth,
-                                                   col::kHeight,
-                                                   col::kLights};
+    static const std::vector<std::string> kKeep = {
+        col::kCiConfig, col::kStatus,    col::kApi,           col::kRenderer,  col::kGlVersion,
+        col::kGlVendor, col::kDriver,    col::kDriverVersion, col::kTechnique, col::kProperties,
+        col::kScene,    col::kInstances, col::kSubmit,        col::kBackFaces, col::kWidth,
+        col::kHeight,   col::kLights};
     std::vector<size_t> keep;
     for (size_t c = 0; c < rows.header.size(); ++c)
         if (std::find(kKeep.begin(), kKeep.end(), rows.header[c]) != kKeep.end() ||

@@ -57,6 +57,10 @@ vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
 // light that casts none (SB_SHADOWLESS_LIGHTS, a bit per light) nor on an instance that receives none
 // (SB_NON_RECEIVERS: its id is negative). Both are compile-time, set only for scenes that have them
 // (CompileContext::defines): otherwise this is the constant true and costs nothing.
+// SB_NON_RECEIVER_DRAWS: the program draws only instances that receive no shadow (a technique that
+// draws its receivers and its non-receivers apart, ShadowMap::drawsNonReceiversApart), so no shadow
+// applies and the lookup is compiled out. llvmpipe (Mesa 22.3.6) runs the lookup under the mask of the
+// branch on colorId.w, so a non-receiver's fragments would otherwise pay for the lookup they discard.
 bool lightCastsShadows(int i) {
 #ifdef SB_SHADOWLESS_LIGHTS
     return ((uint(SB_SHADOWLESS_LIGHTS) >> uint(i)) & 1u) == 0u;
@@ -66,7 +70,9 @@ bool lightCastsShadows(int i) {
 }
 
 bool shadowApplies(int i, vec4 colorId) {
-#ifdef SB_NON_RECEIVERS
+#if defined(SB_NON_RECEIVER_DRAWS)
+    return false;
+#elif defined(SB_NON_RECEIVERS)
     return lightCastsShadows(i) && colorId.w > 0.0;
 #else
     return lightCastsShadows(i);

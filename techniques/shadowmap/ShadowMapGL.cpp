@@ -60,8 +60,16 @@ void ShadowMapGL::compile(const CompileContext& ctx) {
     mNormalOffset = float(p.getFloat(ShadowMap::kNormalOffset));
     mCull = p.getBool(ShadowMap::kCull);
     fitTexels(ctx.scene);
-    mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/lighting.frag", ""}, lit);
-    setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
+    const ShaderSources lighting{"common/scene.vert", "shadowmap/lighting.frag", ""};
+    mNonReceiverProgram = nullptr;
+    if (ShadowMap::drawsNonReceiversApart(ctx.scene, ctx.submitter.mode())) {
+        mLightingProgram = &ctx.programs.get(lighting, ShadowMap::splitReceiverDefines(lit, true));
+        mNonReceiverProgram = &ctx.programs.get(lighting, ShadowMap::splitReceiverDefines(lit, false));
+    } else {
+        mLightingProgram = &ctx.programs.get(lighting, lit);
+    }
+    setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key() +
+                      (mNonReceiverProgram ? "|" + mNonReceiverProgram->key() : ""));
 }
 
 void ShadowMapGL::sceneChanged(const Scene& scene, uint32_t) {
@@ -99,7 +107,14 @@ void ShadowMapGL::renderLighting(FrameContext& ctx) {
         glUniform2fv(kKernelLocation, GLsizei(mKernel.size()), glm::value_ptr(mKernel[0]));
     }
     glBindTextureUnit(0, mMaps.texture());
-    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
+    const CullView view = cameraCullView(ctx);
+    if (mNonReceiverProgram) {
+        ctx.submitter.drawCulled(DrawSet::Receivers, view);
+        mNonReceiverProgram->use(); // reads neither the map nor the shadow matrices: nothing to set
+        ctx.submitter.drawCulled(DrawSet::NonReceivers, view);
+    } else {
+        ctx.submitter.drawCulled(DrawSet::All, view);
+    }
     glBindTextureUnit(0, 0);
 }
 

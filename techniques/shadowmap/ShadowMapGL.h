@@ -66,6 +66,9 @@ private:
     ViewCull mView;                 ///< for mCull: the lights, the receivers, the margins
     const Program* mDepthProgram = nullptr;
     const Program* mLightingProgram = nullptr;
+    /// The non-receivers' lighting program when they are drawn apart (ShadowMap::drawsNonReceiversApart;
+    /// mLightingProgram then draws the receivers), else null.
+    const Program* mNonReceiverProgram = nullptr;
     Counters mCounters;
 };
 

@@ -129,11 +129,22 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     fitTexels(ctx.scene);
     writeLightingBlock(float(ctx.targets.height()));
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    mSplit = ShadowMap::drawsNonReceiversApart(ctx.scene, ctx.submitter.mode());
+    const Defines receivers = mSplit ? ShadowMap::splitReceiverDefines(lit, true) : lit;
     std::string litKey = "shadowmap-lighting|";
-    GraphicsPipelineDesc lighting =
-        scenePipeline(ctx, "common/scene.vert", "shadowmap/lighting.frag", lit, mLightingLayout, litKey);
+    GraphicsPipelineDesc lighting = scenePipeline(ctx, "common/scene.vert", "shadowmap/lighting.frag",
+                                                  receivers, mLightingLayout, litKey);
     mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
-    setPermutationKey(definesKey(base) + "|" + definesKey(lit));
+    std::string permutation = definesKey(base) + "|" + definesKey(receivers);
+    if (mSplit) {
+        const Defines nonReceivers = ShadowMap::splitReceiverDefines(lit, false);
+        std::string key = "shadowmap-lighting|";
+        GraphicsPipelineDesc desc = scenePipeline(ctx, "common/scene.vert", "shadowmap/lighting.frag",
+                                                  nonReceivers, mLightingLayout, key);
+        mNonReceiverPipeline.build(ctx.pipelines, key, desc, ctx.targets);
+        permutation += "|" + definesKey(nonReceivers);
+    }
+    setPermutationKey(permutation);
 }
 
 void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
@@ -153,10 +164,28 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
     }
 }
 
+void ShadowMapVulkan::renderLighting(VulkanFrameContext& ctx) {
+    if (!mSplit) {
+        drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
+        return;
+    }
+    // drawLitScene's pass with two draws: the pipelines share the layout, so set 1 stays bound.
+    ctx.targets.beginPass(ctx.cmd);
+    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingPipeline.get(ctx.targets));
+    ctx.frame.bind(ctx.cmd, mLightingLayout, ctx.frameOffset);
+    const VkDescriptorSet set = mSets.set(kLightingSet);
+    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0,
+                            nullptr);
+    const CullView view = cameraCullView(ctx);
+    ctx.submitter.drawCulled(ctx.cmd, mLightingLayout, DrawSet::Receivers, view, true);
+    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mNonReceiverPipeline.get(ctx.targets));
+    ctx.submitter.drawCulled(ctx.cmd, mLightingLayout, DrawSet::NonReceivers, view, true);
+    vkCmdEndRenderPass(ctx.cmd);
+}
+
 void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); },
-        [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
     mCounters = ShadowMap::counters(s, mSize, mLights, mCulled);
 }
 

@@ -38,6 +38,8 @@ private:
     void fitTexels(const Scene& scene);
     void writeLightingBlock(float targetHeight);
     void renderDepth(VulkanFrameContext& ctx);
+    /// drawLitScene's pass, with the non-receivers drawn apart where mSplit says so.
+    void renderLighting(VulkanFrameContext& ctx);
 
     VkDevice mDevice = VK_NULL_HANDLE;
     FlatLightFits mLights;
@@ -52,6 +54,9 @@ private:
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mDepthPipeline = VK_NULL_HANDLE;
     ScenePipeline mLightingPipeline;
+    /// ShadowMap::drawsNonReceiversApart: mLightingPipeline draws the receivers, this the non-receivers.
+    ScenePipeline mNonReceiverPipeline;
+    bool mSplit = false;
 
     std::vector<glm::vec2> mKernel;
     std::vector<float> mTexelWorld;
