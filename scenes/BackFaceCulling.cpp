@@ -88,20 +88,34 @@ bool frontFaceCounterClockwise(const glm::mat4& viewProj, bool framebufferYDown)
 void BackFaceCuller::setScene(const Scene& scene, BackFaces mode) {
     mMode = mode;
     mBounds.setScene(scene);
+    mClosed.clear();
     mCandidates.clear();
     mCulled.assign(scene.instances.size(), 0);
     mAny = false;
     if (mode == BackFaces::Draw) return;
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
-        if (inst.mesh >= scene.meshes.size() || !scene.meshes[inst.mesh].closed) continue;
-        if (glm::determinant(glm::mat3(inst.model)) <= 0.0f) continue; // mirrored: fronts turn clockwise
-        mCandidates.push_back(uint32_t(i));
+        if (inst.mesh < scene.meshes.size() && scene.meshes[inst.mesh].closed) mClosed.push_back(uint32_t(i));
     }
+    findCandidates(scene);
 }
 
 void BackFaceCuller::instancesMoved(const Scene& scene) {
-    setScene(scene, mMode);
+    if (mCulled.size() != scene.instances.size()) {
+        setScene(scene, mMode);
+        return;
+    }
+    mBounds.instancesMoved(scene);
+    findCandidates(scene);
+}
+
+void BackFaceCuller::findCandidates(const Scene& scene) {
+    for (uint32_t i : mCandidates) mCulled[i] = 0; // no stale decision for an instance that left the list
+    mAny = false;
+    mCandidates.clear(); // keeps its capacity: no allocation inside the timed frame
+    for (uint32_t i : mClosed)
+        if (glm::determinant(glm::mat3(scene.instances[i].model)) > 0.0f) // mirrored: fronts turn clockwise
+            mCandidates.push_back(i);
 }
 
 size_t BackFaceCuller::setView(const CullView* view, bool framebufferYDown) {

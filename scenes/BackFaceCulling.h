@@ -58,14 +58,15 @@ bool projectionCentre(const glm::mat4& viewProj, glm::vec3& centre);
 bool frontFaceCounterClockwise(const glm::mat4& viewProj, bool framebufferYDown);
 
 /// The per-instance decisions of one pass, shared by the GL and Vulkan submitters: which instances the
-/// current pass draws with back faces culled. Candidates (untimed, at setScene): instances of closed
-/// meshes whose model matrix does not mirror (a mirroring model turns its front faces clockwise).
+/// current pass draws with back faces culled. Candidates (at setScene, again when instances move): instances
+/// of closed meshes whose model matrix does not mirror (a mirroring model turns its front faces clockwise).
 /// setView (inside the timed frame) tests only the candidates, 8 corner transforms each.
 class BackFaceCuller {
 public:
     /// `mode` Draw: nothing is ever culled (setView leaves every decision 0).
     void setScene(const Scene& scene, BackFaces mode);
-    /// Instances' world bounds are read again (a scene in motion moved them).
+    /// Instances' world bounds and mirroring follow their model matrices again (a scene in motion
+    /// moved them): inside the timed frame, so no vertex is read (InstanceCulling::instancesMoved).
     void instancesMoved(const Scene& scene);
     /// Decides every instance for the pass `view`; nullptr: a pass that never culls (a warp, a
     /// flattening, shadow volumes, anything not on the linear path). Returns how many are culled.
@@ -78,9 +79,13 @@ public:
     bool frontCounterClockwise() const { return mFrontCcw; }
 
 private:
+    /// The instances of mClosed whose model matrix does not mirror, into mCandidates.
+    void findCandidates(const Scene& scene);
+
     BackFaces mMode = BackFaces::Cull;
     InstanceCulling mBounds;           ///< world bounds per instance
-    std::vector<uint32_t> mCandidates; ///< instance indices
+    std::vector<uint32_t> mClosed;     ///< instances of closed meshes (the mesh never changes)
+    std::vector<uint32_t> mCandidates; ///< of mClosed, those whose model does not mirror
     std::vector<uint8_t> mCulled;
     bool mAny = false;
     bool mFrontCcw = true;

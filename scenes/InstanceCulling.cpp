@@ -10,13 +10,24 @@ namespace sb {
 
 void InstanceCulling::setScene(const Scene& scene) {
     mScene = &scene;
-    mBounds.clear();
+    mMeshBounds.clear();
+    for (const Mesh& mesh : scene.meshes) mMeshBounds.push_back(mesh.computeBounds());
+    mBounds.assign(scene.instances.size(), Aabb{});
     mSetCount.fill(0);
-    for (const Instance& inst : scene.instances) {
-        mBounds.push_back(inst.mesh < scene.meshes.size()
-                              ? transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model)
-                              : Aabb{});
+    for (const Instance& inst : scene.instances)
         for (size_t s = 0; s < kDrawSetCount; ++s) mSetCount[s] += inDrawSet(inst, DrawSet(s)) ? 1 : 0;
+    instancesMoved(scene);
+}
+
+void InstanceCulling::instancesMoved(const Scene& scene) {
+    if (mMeshBounds.size() != scene.meshes.size() || mBounds.size() != scene.instances.size()) {
+        setScene(scene);
+        return;
+    }
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        mBounds[i] =
+            inst.mesh < mMeshBounds.size() ? transformBounds(mMeshBounds[inst.mesh], inst.model) : Aabb{};
     }
 }
 

@@ -35,9 +35,9 @@ struct ViewReach {
 
 class InstanceCulling {
 public:
-    /// World-space bounds of every instance and the size of each DrawSet (untimed: at setScene). Keeps
-    /// a pointer to `scene` for the sets' membership, as the Submitter's upload does: it must outlive
-    /// the culls.
+    /// Each mesh's model-space bounds (one pass over its vertices), every instance's world-space bounds
+    /// and the size of each DrawSet (untimed: at setScene). Keeps a pointer to `scene` for the sets'
+    /// membership, as the Submitter's upload does: it must outlive the culls.
     void setScene(const Scene& scene);
 
     /// Fills `keep` (one entry per instance) with 1 for each instance of `set` whose bounds may reach
@@ -64,8 +64,11 @@ public:
     /// kept.
     size_t cullFlattened(const glm::mat4& flatten, const glm::mat4& viewProj, bool divided,
                          std::vector<uint8_t>& keep) const;
-    /// Instances' world bounds are read again (a scene in motion moved its casters).
-    void instancesMoved(const Scene& scene) { setScene(scene); }
+    /// Instances' world bounds follow their model matrices again (a scene in motion moved its casters).
+    /// Inside the timed frame, so it transforms the meshes' bounds kept at setScene (8 corners per
+    /// instance) instead of reading every vertex again; a scene whose meshes or instances changed in
+    /// number is set up again.
+    void instancesMoved(const Scene& scene);
     /// World-space bounds per instance (indexed like Scene::instances), as of setScene.
     const std::vector<Aabb>& bounds() const { return mBounds; }
 
@@ -83,7 +86,8 @@ public:
 
 private:
     const Scene* mScene = nullptr;
-    std::vector<Aabb> mBounds; ///< per instance, world space
+    std::vector<Aabb> mMeshBounds; ///< per mesh, model space (motion moves instances, not vertices)
+    std::vector<Aabb> mBounds;     ///< per instance, world space
     std::array<size_t, kDrawSetCount> mSetCount{};
 };
 

@@ -5,10 +5,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "HandOrtho.h"
 #include "scenes/BackFaceCulling.h"
 #include "scenes/MeshGenerators.h"
 
 using namespace sb;
+using sb::test::handOrtho;
 
 namespace {
 
@@ -23,17 +25,6 @@ Aabb box(glm::vec3 lo, glm::vec3 hi) {
 glm::mat4 camera(float eyeZ, float near) {
     return glm::perspective(glm::radians(90.0f), 1.0f, near, 20.0f) *
            glm::lookAt(glm::vec3(0, 0, eyeZ), glm::vec3(0, 0, eyeZ - 1.0f), glm::vec3(0, 1, 0));
-}
-
-// glm::ortho(-2, 2, -2, 2, 1, 9) by its definition: x' = x / 2, y' = y / 2, z' = -(z + 5) / 4, w = 1.
-glm::mat4 handOrtho() {
-    glm::mat4 m(0.0f); // column-major: m[column][row]
-    m[0][0] = 0.5f;
-    m[1][1] = 0.5f;
-    m[2][2] = -0.25f;
-    m[3][2] = -1.25f;
-    m[3][3] = 1.0f;
-    return m;
 }
 
 const Aabb kUnitBox = box({-1, -1, -1}, {1, 1, 1});
@@ -118,4 +109,30 @@ TEST(BackFaceCulling, CullerDecidesClosedUnmirroredInstancesOnly) {
     EXPECT_FALSE(culler.culls(0));
     culler.setScene(s, BackFaces::Draw);
     EXPECT_EQ(culler.setView(&view, false), 0u);
+}
+
+// A scene in motion: the culler follows the instances' new places and mirroring without setScene.
+TEST(BackFaceCulling, CullerFollowsMovedInstances) {
+    Scene s;
+    s.meshes = {MeshGenerators::box(glm::vec3(1.0f), 1)};
+    s.meshes[0].closed = true;
+    Instance a, b;
+    b.model = glm::translate(glm::mat4(1.0f), glm::vec3(2, 0, 0));
+    s.instances = {a, b};
+    BackFaceCuller culler;
+    culler.setScene(s, BackFaces::Cull);
+    const CullView view{camera(5.0f, 0.5f), false};
+    EXPECT_EQ(culler.decisions().size(), 2u);
+    EXPECT_EQ(culler.setView(&view, false), 2u);
+    // a moves around the eye (both faces drawn from inside), b is mirrored (its fronts turn clockwise).
+    s.instances[0].model = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 5));
+    s.instances[1].model = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1));
+    culler.instancesMoved(s);
+    EXPECT_EQ(culler.setView(&view, false), 0u);
+    EXPECT_EQ(culler.decisions(), (std::vector<uint8_t>{0, 0}));
+    // And back: both culled again.
+    s.instances[0].model = glm::mat4(1.0f);
+    s.instances[1].model = glm::translate(glm::mat4(1.0f), glm::vec3(2, 0, 0));
+    culler.instancesMoved(s);
+    EXPECT_EQ(culler.setView(&view, false), 2u);
 }

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "BackFacesFrame.h"
 #include "TestSupport.h"
 #include "bench/lib/harness/Harness.h"
 #include "registry/TechniqueRegistry.h"
@@ -23,12 +24,7 @@ namespace {
 
 constexpr int kSize = 96;
 
-struct Frame {
-    std::vector<unsigned char> color;
-    std::vector<float> visibility;
-    uint64_t fragments = 0; ///< fragment-shader invocations of the whole census frame
-    std::vector<std::pair<std::string, uint64_t>> passFragments;
-};
+using Frame = test::BackFacesFrame;
 
 Frame render(const std::string& technique, const std::string& scene, const std::string& camera,
              BackFaces backFaces, SubmitMode submit = SubmitMode::Retained) {
@@ -38,15 +34,7 @@ Frame render(const std::string& technique, const std::string& scene, const std::
     Harness h(cfg);
     auto t = TechniqueRegistry::create(TechniqueSpec::parse(technique));
     h.prepare(*t);
-    Frame f;
-    const FrameLoads loads = h.measureLoads(*t);
-    for (const auto& [pass, work] : loads.passes)
-        if (work.pipeline) f.passFragments.emplace_back(pass, work.pipeline->fragmentShaderInvocations);
-    if (loads.pipeline) f.fragments = loads.pipeline->fragmentShaderInvocations;
-    h.renderFrame(*t);
-    f.color = h.targets().readColorRGBA8();
-    f.visibility = h.targets().readVisibilityRGBA32F();
-    return f;
+    return test::captureBackFacesFrame(h, *t);
 }
 
 /// Pixels whose colour or visibility differ at all (the tolerance is 0: bit-identical); `where` gets

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "BackFacesFrame.h"
 #include "TestSupport.h"
 #include "bench/lib/harness/VulkanHarness.h"
 #include "registry/TechniqueRegistry.h"
@@ -19,11 +20,7 @@ namespace {
 
 constexpr int kSize = 96;
 
-struct Frame {
-    std::vector<unsigned char> color;
-    std::vector<float> visibility;
-    std::vector<std::pair<std::string, uint64_t>> passFragments;
-};
+using Frame = test::BackFacesFrame;
 
 Frame render(const std::string& technique, const std::string& scene, BackFaces backFaces, SubmitMode submit) {
     RunConfig cfg = test::quickConfig(scene, "mid", kSize, submit);
@@ -34,14 +31,7 @@ Frame render(const std::string& technique, const std::string& scene, BackFaces b
     VulkanHarness h(cfg);
     auto t = TechniqueRegistry::createVulkan(TechniqueSpec::parse(technique));
     h.prepare(*t);
-    Frame f;
-    const FrameLoads loads = h.measureLoads(*t);
-    for (const auto& [pass, work] : loads.passes)
-        if (work.pipeline) f.passFragments.emplace_back(pass, work.pipeline->fragmentShaderInvocations);
-    h.renderFrame(*t);
-    f.color = h.targets().readColorRGBA8();
-    f.visibility = h.targets().readVisibilityRGBA32F();
-    return f;
+    return test::captureBackFacesFrame(h, *t);
 }
 
 struct Case {

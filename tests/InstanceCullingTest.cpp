@@ -2,22 +2,13 @@
 // by hand (x, y in [-2, 2], depth along -z from 1 to 9), so each verdict follows from the planes alone.
 #include <gtest/gtest.h>
 
+#include "HandOrtho.h"
 #include "scenes/InstanceCulling.h"
 
 using namespace sb;
+using sb::test::handOrtho;
 
 namespace {
-
-// glm::ortho(-2, 2, -2, 2, 1, 9) by its definition: x' = x / 2, y' = y / 2, z' = -(z + 5) / 4, w = 1.
-glm::mat4 handOrtho() {
-    glm::mat4 m(0.0f); // column-major: m[column][row]
-    m[0][0] = 0.5f;
-    m[1][1] = 0.5f;
-    m[2][2] = -0.25f;
-    m[3][2] = -1.25f;
-    m[3][3] = 1.0f;
-    return m;
-}
 
 Aabb box(glm::vec3 lo, glm::vec3 hi) {
     Aabb b;
@@ -72,6 +63,42 @@ TEST(InstanceCulling, MaskFollowsTheDrawSetAndTheFrustum) {
     EXPECT_EQ(culling.count(DrawSet::Casters), 2u);
     EXPECT_EQ(culling.cull(handOrtho(), DrawSet::All, CullPlanes::All, keep), 2u);
     EXPECT_EQ(keep, (std::vector<uint8_t>{1, 0, 1}));
+}
+
+// A scene in motion: instancesMoved moves each instance's bounds with its model matrix (the mesh's
+// model-space bounds [-0.5, 0.5]^3 translated, computed by hand), and the culls follow.
+TEST(InstanceCulling, MovedInstancesTakeTheirNewBounds) {
+    Scene scene;
+    Mesh m;
+    m.positions = {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}};
+    m.normals.assign(3, glm::vec3(0, 1, 0));
+    m.indices = {0, 1, 2};
+    scene.meshes.push_back(m);
+    Instance inst;
+    inst.position = glm::vec3(0, 0, -5);
+    scene.instances.push_back(inst);
+    scene.updateTransforms();
+    InstanceCulling culling;
+    culling.setScene(scene);
+    std::vector<uint8_t> keep;
+    EXPECT_EQ(culling.cull(handOrtho(), DrawSet::All, CullPlanes::All, keep), 1u);
+
+    scene.instances[0].position = glm::vec3(3, 0, -5); // wholly right of x = 2
+    scene.updateTransforms();
+    culling.instancesMoved(scene);
+    const Aabb& b = culling.bounds()[0];
+    EXPECT_FLOAT_EQ(b.min.x, 2.5f);
+    EXPECT_FLOAT_EQ(b.max.x, 3.5f);
+    EXPECT_FLOAT_EQ(b.min.z, -5.5f);
+    EXPECT_FLOAT_EQ(b.max.z, -4.5f);
+    EXPECT_EQ(culling.cull(handOrtho(), DrawSet::All, CullPlanes::All, keep), 0u);
+
+    // An instance added since setScene: set up again, not read past the end.
+    scene.instances.push_back(inst);
+    scene.updateTransforms();
+    culling.instancesMoved(scene);
+    EXPECT_EQ(culling.bounds().size(), 2u);
+    EXPECT_EQ(culling.cull(handOrtho(), DrawSet::All, CullPlanes::All, keep), 1u);
 }
 
 namespace {
