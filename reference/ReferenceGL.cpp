@@ -32,6 +32,7 @@ void ReferenceGL::compile(const CompileContext& ctx) {
     const Program& gbuffer = ctx.programs.get({"reference/gbuffer.vert", "reference/gbuffer.frag", ""}, base);
     Defines shade = base;
     shade["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    addLightingRateDefines(ctx.scene, shade); // shaded as the techniques it is compared with
     mShadeProgram = &ctx.programs.get({"common/scene.vert", "reference/shade.frag", ""}, shade);
     setPermutationKey(gbuffer.key() + "|" + mShadeProgram->key());
 }

@@ -82,6 +82,7 @@ void ReferenceVulkan::compile(const VulkanCompileContext& ctx) {
     ensureTargets(ctx);
     Defines shade = ctx.submitter.defines();
     shade["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
+    addLightingRateDefines(ctx.scene, shade); // shaded as the techniques it is compared with
     std::string key;
     GraphicsPipelineDesc desc =
         scenePipeline(ctx, "common/scene.vert", "reference/shade.frag", shade, mLayout, key);

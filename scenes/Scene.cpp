@@ -162,6 +162,8 @@ std::string Scene::computeContentHash() const {
     for (const auto& camera : cameras) hashCamera(h, camera);
     h.value(effects);
     h.value(ambient);
+    // Only a scene lit per vertex adds to the hash, so scenes lit per fragment keep theirs.
+    if (lighting == LightingRate::Vertex) h.string("lighting=vertex");
     // Only a scene in motion adds to the hash, so static scenes keep the hash they always had.
     if (motion) h.string(motion->canonical());
     return h.hex();

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "core/NameTable.h"
+#include "scenes/LightingRate.h"
 #include "scenes/Mesh.h"
 
 namespace sb {
@@ -118,6 +119,8 @@ struct Scene {
     std::vector<CameraPreset> cameras;
     EffectMask effects = uint32_t(Effect::HardShadows);
     glm::vec3 ambient{0.15f};
+    /// Where the lit passes evaluate the lights: the file's "lighting", replaced by `--lighting`.
+    LightingRate lighting = LightingRate::Fragment;
     /// The scene file's "motion" (scenes/Motion.h), or null for a static scene. Shared: copies of a
     /// scene (the harness keeps one at rest) move along the same paths.
     std::shared_ptr<const Motion> motion;

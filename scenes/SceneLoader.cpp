@@ -642,6 +642,12 @@ void parseLayout(Context& ctx, const JsonReader& layout) {
 
 // ---- lights, cameras, effects ---------------------------------------------------------------------
 
+LightingRate lightingRate(const JsonReader& r) {
+    const auto rate = parseLightingRate(r.string());
+    if (!rate) r.fail("one of " + lightingRateNames().list());
+    return *rate;
+}
+
 LightType lightType(const JsonReader& r) {
     const auto type = parseLightType(r.string());
     if (!type) r.fail("one of " + lightTypeNames().list());
@@ -1029,7 +1035,7 @@ void countReferences(Context& ctx, const JsonReader& root) {
 
 void parseDocument(Context& ctx, const JsonReader& root) {
     root.requireObject({"name", "description", "meshes", "instances", "layout", "lights", "cameras",
-                        "effects", "ambient", "motion"});
+                        "effects", "ambient", "lighting", "motion"});
     if (root.has("name")) ctx.scene.name = root["name"].string();
     if (root.has("description")) root["description"].string();
     checkOptionsApply(ctx, root.has("layout"));
@@ -1064,6 +1070,7 @@ void parseDocument(Context& ctx, const JsonReader& root) {
         for (const auto& c : root["cameras"].elements()) parseCamera(ctx, c);
     if (root.has("effects")) ctx.scene.effects = parseEffects(root["effects"]);
     if (root.has("ambient")) ctx.scene.ambient = root["ambient"].vec3();
+    if (root.has("lighting")) ctx.scene.lighting = lightingRate(root["lighting"]);
     if (root.has("motion")) parseMotion(ctx, root["motion"]);
 }
 
@@ -1115,6 +1122,7 @@ Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceN
     ctx.scene.sourcePath = sourceName;
     parseDocument(ctx, JsonReader(doc, sourceName));
     if (options.lightType) overrideLightType(ctx.scene, *options.lightType);
+    if (options.lighting) ctx.scene.lighting = *options.lighting;
     if (ctx.scene.motion && ctx.scene.motion->sun) placeSun(ctx.scene);
     return std::move(ctx.scene);
 }

@@ -13,10 +13,13 @@
 //   "lights": [ {"type": "directional", "direction": [-0.4,-1,-0.3]} ],
 //   "cameras": [ {"name": "far", "eye": [0,90,140], "target": [0,0,0], "fov": 45} ],
 //   "effects": ["hard_shadows", "self_shadowing"],
-//   "ambient": [0.15, 0.15, 0.15]
+//   "ambient": [0.15, 0.15, 0.15],
+//   "lighting": "fragment"
 // }
 // Details:
 // - "description": free text, ignored. Files may contain // comments.
+// - "lighting": "fragment" (default) or "vertex": where the lit passes evaluate the lights
+//   (scenes/LightingRate.h); SceneOptions::lighting (`--lighting`) replaces it.
 // - meshes: exactly one of "generator" or "file". A model file (scenes/ModelLoader.h) comes out Y-up;
 //   "up" ("x", "-x", "y", "-y", "z", "-z") names the file's up axis where the file does not (a Z-up 3DS
 //   export: "up": "z"). Each object of a multi-object file becomes its own mesh "<name>:<object>",

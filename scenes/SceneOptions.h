@@ -17,8 +17,9 @@ struct SceneOptions {
     /// minimum (--tess-factor F): the bottleneck study's vertex-load knob, which keeps each mesh's own
     /// proportions where one --tess N would not.
     float tessellationFactor = 1.0f;
-    std::optional<LightType> lightType; ///< replaces the type of every light (--light TYPE)
-    std::string modelPath;              ///< replaces the layout mesh with a model file (--model PATH)
+    std::optional<LightType> lightType;   ///< replaces the type of every light (--light TYPE)
+    std::optional<LightingRate> lighting; ///< replaces the scene's "lighting" (--lighting RATE)
+    std::string modelPath;                ///< replaces the layout mesh with a model file (--model PATH)
     /// Refuse scenes whose estimated GPU+CPU memory exceeds this many bytes (absurd --instances).
     uint64_t memoryLimitBytes = 8ull << 30;
 };

@@ -1,5 +1,6 @@
 #include "techniques/Technique.h"
 
+#include <algorithm>
 #include <string>
 
 #include "shading/ShaderLimits.h"
@@ -33,6 +34,13 @@ void addLightKindDefines(const Scene& scene, Defines& defines) {
     defines["SB_SPOT_LIGHTS"] = lightMask(scene, [](const Light& l) { return l.type == LightType::Spot; });
     defines["SB_RANGED_LIGHTS"] =
         lightMask(scene, [](const Light& l) { return l.type != LightType::Directional && l.range > 0.0f; });
+    addLightingRateDefines(scene, defines);
+}
+
+void addLightingRateDefines(const Scene& scene, Defines& defines) {
+    if (scene.lighting != LightingRate::Vertex) return;
+    defines["SB_VERTEX_LIGHTING"] = "";
+    defines["SB_LIGHT_TERMS"] = std::to_string(std::clamp<int>(int(scene.lights.size()), 1, kMaxLights));
 }
 
 Defines withLightKinds(Defines defines, const Scene& scene) {

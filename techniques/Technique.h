@@ -67,10 +67,16 @@ private:
 ///   SB_RANGED_LIGHTS (a positional light with a range), under SB_STATIC_LIGHTS. A light's kind and range
 ///   are fixed once the scene is loaded (motion moves lights, it does not change them), and llvmpipe runs
 ///   both sides of a branch on a uniform under a mask: known at compile time, a directional light's
-///   fragments skip the distance, range and cone terms they would discard.
+///   fragments skip the distance, range and cone terms they would discard;
+/// - its lighting rate (addLightingRateDefines).
 void addSceneDefines(const Scene& scene, Defines& defines);
-/// The light kinds alone (the second item above), for programs that take no shadow exceptions (the
-/// lit passes of `none`, `blob`, `planar`, `projective` and `volume`, which apply their own).
+/// A scene lit per vertex (Scene::lighting, scenes/LightingRate.h): SB_VERTEX_LIGHTING and
+/// SB_LIGHT_TERMS=<its light count, 1 to kMaxLights>, so that common/lighting.glsl's lightTerm reads the
+/// terms the vertex stage wrote (writeVertexLighting). Nothing for a scene lit per fragment. Part of
+/// addLightKindDefines; the reference's shading pass, which takes no light kinds, adds it alone.
+void addLightingRateDefines(const Scene& scene, Defines& defines);
+/// The light kinds and the lighting rate (the last two items above), for programs that take no shadow
+/// exceptions (the lit passes of `none`, `blob`, `planar`, `projective` and `volume`, which apply their own).
 void addLightKindDefines(const Scene& scene, Defines& defines);
 /// `defines` with the light kinds of `scene` added (addLightKindDefines).
 Defines withLightKinds(Defines defines, const Scene& scene);

@@ -402,6 +402,14 @@ std::vector<BadInput> table() {
          file("closed.json", R"({"meshes": [{"name": "ball", "generator": "sphere", "closed": "yes"}],
   "instances": [{"mesh": "ball"}], "cameras": [{"name": "far", "eye": [0, 20, 30]}]})")},
         {"--back-faces of an unknown value", "--back-faces maybe", {"--back-faces maybe", "cull or draw"}, 2},
+        // The lighting rate: the scene file's key and the run option.
+        {"lighting of an unknown rate",
+         "--scene {dir}/lighting.json",
+         {"lighting.json", "/lighting", "fragment, vertex"},
+         2,
+         file("lighting.json", R"({"meshes": [{"name": "ball", "generator": "sphere"}], "lighting": "pixel",
+  "instances": [{"mesh": "ball"}], "cameras": [{"name": "far", "eye": [0, 20, 30]}]})")},
+        {"--lighting of an unknown rate", "--lighting phong", {"--lighting phong", "fragment or vertex"}, 2},
         // Sweeps: refused before anything is measured.
         {"sweep of a million",
          "sweep -t shadowmap:resolution=" + numberList(17, 100) + " -n " + numberList(1, 100) + " --scale " +

@@ -336,6 +336,29 @@ TEST(SceneLoaderTest, ContentHashChangesWithContentOnly) {
     EXPECT_NE(seeded.computeContentHash(), a.computeContentHash());
 }
 
+// "lighting" (scenes/LightingRate.h): fragment unless the file or --lighting says vertex; a scene lit per
+// vertex hashes differently (its image differs), one lit per fragment keeps the hash it had before the
+// key existed (the same as the file without it).
+TEST(SceneLoaderTest, LightingRateFromTheFileAndTheOption) {
+    const Scene plain = SceneLoader::parse(sceneJson(), "a.json");
+    EXPECT_EQ(plain.lighting, LightingRate::Fragment);
+    const Scene fragment = SceneLoader::parse(sceneJson("", R"(, "lighting": "fragment")"), "a.json");
+    EXPECT_EQ(fragment.computeContentHash(), plain.computeContentHash());
+    const Scene vertex = SceneLoader::parse(sceneJson("", R"(, "lighting": "vertex")"), "a.json");
+    EXPECT_EQ(vertex.lighting, LightingRate::Vertex);
+    EXPECT_NE(vertex.computeContentHash(), plain.computeContentHash());
+    SceneOptions perFragment;
+    perFragment.lighting = LightingRate::Fragment;
+    EXPECT_EQ(SceneLoader::parse(sceneJson("", R"(, "lighting": "vertex")"), "a.json", perFragment).lighting,
+              LightingRate::Fragment);
+    SceneOptions perVertex;
+    perVertex.lighting = LightingRate::Vertex;
+    EXPECT_EQ(SceneLoader::parse(sceneJson(), "a.json", perVertex).computeContentHash(),
+              vertex.computeContentHash());
+    EXPECT_TRUE(contains(errorOf(sceneJson("", R"(, "lighting": "gouraud")")),
+                         "/lighting: expected one of fragment, vertex"));
+}
+
 TEST(SceneLoaderTest, BuiltinScenesLoadWithTheFourCameras) {
     const auto names = SceneLoader::listBuiltinScenes();
     for (const char* name :

@@ -129,7 +129,7 @@ CsvTable baselineColumns(const CsvTable& rows) {
         col::kCiConfig, col::kStatus,    col::kApi,           col::kRenderer,  col::kGlVersion,
         col::kGlVendor, col::kDriver,    col::kDriverVersion, col::kTechnique, col::kProperties,
         col::kScene,    col::kInstances, col::kSubmit,        col::kBackFaces, col::kWidth,
-        col::kHeight,   col::kLights};
+        col::kHeight,   col::kLights,    col::kLighting};
     std::vector<size_t> keep;
     for (size_t c = 0; c < rows.header.size(); ++c)
         if (std::find(kKeep.begin(), kKeep.end(), rows.header[c]) != kKeep.end() ||

@@ -1,6 +1,7 @@
 // `blob`: the ellipse's soft profile removes its light from the ground. Blending (BlobTechnique):
 // colour = dst - src (reverse subtract), visibility = dst * src.
 #include "common/frame.glsl"
+#define SB_NO_LIGHT_TERMS // the blob darkens the ground at this fragment (lightTermAt), not a surface of its own
 #include "common/lighting.glsl"
 
 in vec2 vCorner;
@@ -26,7 +27,7 @@ void main() {
     float profile = softness > 0.0 ? 1.0 - smoothstep(1.0 - softness, 1.0, r) : (r <= 1.0 ? 1.0 : 0.0);
     float alpha = vParams.x * profile;
     int light = int(vParams.y);
-    oColor = vec4(alpha * uAlbedo * lightTerm(light, vWorld, uPlane.xyz), 0.0);
+    oColor = vec4(alpha * uAlbedo * lightTermAt(light, vWorld, uPlane.xyz), 0.0);
     vec4 v = vec4(1.0);
     v[light] = 1.0 - alpha;
     oVisibility = v;

@@ -37,10 +37,8 @@ vec3 toLight(int i, vec3 worldPos) {
     return normalize(uLightPos[i].xyz - worldPos);
 }
 
-// Unshadowed irradiance factor of light i at a surface point with unit normal n.
-vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
-    vec3 l = toLight(i, worldPos);
-    float ndotl = max(dot(n, l), 0.0);
+// Light i's distance and cone falloff at worldPos, for the unit vector l towards it.
+float lightFalloff(int i, vec3 worldPos, vec3 l) {
     float atten = 1.0;
     if (isRanged(i)) {
         float d = length(uLightPos[i].xyz - worldPos);
@@ -50,8 +48,54 @@ vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
         float c = dot(-l, uLightDir[i].xyz);
         atten *= smoothstep(uLightDir[i].w, uLightParams[i].x, c);
     }
-    return uLightColor[i].rgb * (ndotl * atten);
+    return atten;
 }
+
+// Unshadowed irradiance factor of light i at the surface point worldPos with unit normal n, evaluated
+// there: what the lit passes use per fragment, and what the shadow passes that darken a receiver from
+// another primitive (planar, blob) use at the receiver's point.
+vec3 lightTermAt(int i, vec3 worldPos, vec3 n) {
+    vec3 l = toLight(i, worldPos);
+    float ndotl = max(dot(n, l), 0.0);
+    return uLightColor[i].rgb * (ndotl * lightFalloff(i, worldPos, l));
+}
+
+// `--lighting vertex` (SB_VERTEX_LIGHTING, RunConfig::lighting): Gouraud shading. The vertex stage
+// evaluates each light at the vertex, writeVertexLighting, and the fragment stage interpolates
+// (colour x falloff, n.l) per light: glmark2's and many mobile engines' model, a different image wherever the
+// term is not affine across a triangle (point and spot lights, curved meshes). n.l is interpolated with
+// its sign and clamped per fragment, so a triangle that turns away from the light fades where n.l
+// crosses 0 instead of at its vertices; a back face (drawn only where culling cannot hide it) takes
+// -n.l, as the per-fragment path flips its normal. SB_LIGHT_TERMS is the scene's light count (at most
+// 4, addLightKindDefines). A stage that shades no surface of its own (planar's and blob's shadow
+// polygons darken a receiver from another primitive, lightTermAt) defines SB_NO_LIGHT_TERMS before the
+// include: its vertex stage writes no terms, so its fragment stage declares none. Vulkan numbers the
+// varyings in declaration order (vk/ShaderModuleCache.cpp), so every stage that declares vLightTerms
+// includes this file before its other varyings: the terms come first on both sides.
+#if defined(SB_VERTEX_LIGHTING) && !defined(SB_NO_LIGHT_TERMS)
+#ifdef SB_VERTEX_SHADER
+out vec4 vLightTerms[SB_LIGHT_TERMS]; // rgb: colour times lightFalloff; a: n.l with its sign
+void writeVertexLighting(vec3 worldPos, vec3 n) {
+    for (int i = 0; i < SB_LIGHT_TERMS; ++i) {
+        vec3 l = toLight(i, worldPos);
+        vLightTerms[i] = vec4(uLightColor[i].rgb * lightFalloff(i, worldPos, l), dot(n, l));
+    }
+}
+#else
+in vec4 vLightTerms[SB_LIGHT_TERMS];
+#endif
+#endif
+
+// Light i's unshadowed term for the lit surface being shaded: evaluated at this fragment, or under
+// SB_VERTEX_LIGHTING interpolated from the vertices (worldPos and n are then unused).
+#if defined(SB_VERTEX_LIGHTING) && !defined(SB_NO_LIGHT_TERMS) && defined(SB_FRAGMENT_SHADER)
+vec3 lightTerm(int i, vec3 worldPos, vec3 n) {
+    float ndotl = gl_FrontFacing ? vLightTerms[i].a : -vLightTerms[i].a;
+    return vLightTerms[i].rgb * max(ndotl, 0.0);
+}
+#else
+vec3 lightTerm(int i, vec3 worldPos, vec3 n) { return lightTermAt(i, worldPos, n); }
+#endif
 
 // Whether light i's shadow applies to a fragment of the instance with colour-and-id `colorId`: not for a
 // light that casts none (SB_SHADOWLESS_LIGHTS, a bit per light) nor on an instance that receives none

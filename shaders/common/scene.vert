@@ -1,6 +1,10 @@
-// Vertex stage shared by the lit passes of `none` and `shadowmap`: world position, normal, colour.
+// Vertex stage shared by the lit passes of most techniques: world position, normal, colour, and under
+// SB_VERTEX_LIGHTING (`--lighting vertex`) each light's term at the vertex (common/lighting.glsl).
+// Every fragment stage it feeds includes common/lighting.glsl before its own varyings, so that on
+// Vulkan, which numbers varyings in declaration order, the terms come first on both sides.
 #include "common/frame.glsl"
 #include "common/instance.glsl"
+#include "common/lighting.glsl"
 
 out vec3 vWorldPos;
 out vec3 vNormal;
@@ -25,6 +29,9 @@ void main() {
     vColorId = instanceColorId();
 #ifdef SHADOW_MAP
     for (int i = 0; i < LIGHT_COUNT; ++i) vShadowCoord[i] = uShadowMatrix[i] * world;
+#endif
+#ifdef SB_VERTEX_LIGHTING
+    writeVertexLighting(world.xyz, normalize(vNormal));
 #endif
     gl_Position = uViewProj * world;
 }

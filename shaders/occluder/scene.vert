@@ -110,6 +110,9 @@ void main() {
     vNormal = mat3(model) * aNormal;
     vColorId = instanceColorId();
     gl_Position = uViewProj * world;
+#ifdef SB_VERTEX_LIGHTING
+    writeVertexLighting(world.xyz, normalize(vNormal)); // common/lighting.glsl, `--lighting vertex`
+#endif
 
     OccluderInstance inst = uInstances[int(abs(vColorId.w)) - 1];
     int first = int(inst.planes.x), count = min(int(inst.planes.y), PLANE_COUNT);

@@ -1,6 +1,7 @@
 // `planar` shadow polygons: remove light LIGHT (uniform) from the receiver where a flattened occluder
 // lands. Blending (PlanarTechnique): colour = dst - src (reverse subtract), visibility = dst * src.
 #include "common/frame.glsl"
+#define SB_NO_LIGHT_TERMS // the flattened occluder darkens the receiver at this fragment (lightTermAt), not a surface of its own
 #include "common/lighting.glsl"
 
 in vec4 vFlat;
@@ -25,7 +26,7 @@ layout(location = 1) out vec4 oVisibility;
 void main() {
     int light = int(uAlbedoLight.w);
     vec3 p = vFlat.xyz / vFlat.w;
-    oColor = vec4(uDarkness * uAlbedoLight.rgb * lightTerm(light, p, uPlane.xyz), 0.0);
+    oColor = vec4(uDarkness * uAlbedoLight.rgb * lightTermAt(light, p, uPlane.xyz), 0.0);
     vec4 v = vec4(1.0);
     v[light] = 1.0 - uDarkness;
     oVisibility = v;

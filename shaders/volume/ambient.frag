@@ -3,6 +3,10 @@
 // adds 1 where the stencil count is 0), and 1 where it will not (outside its scissor rectangle or
 // depth bounds: beyond the light's range nothing is shadowed, the range is a lighting term).
 #include "common/frame.glsl"
+// Not for its light terms (ambient only): common/scene.vert feeds this stage, and under `--lighting
+// vertex` its first varyings are the terms (common/lighting.glsl), which Vulkan numbers by declaration
+// order: declared here as well, the varyings below keep the vertex stage's locations.
+#include "common/lighting.glsl"
 
 in vec3 vWorldPos;
 in vec3 vNormal;

@@ -26,6 +26,8 @@ Options:
   --frames N        measured frames of each bench run (after 5 warm-up frames) [100]
   --build DIR       the build folder holding bench [build]
   --technique T     bench's technique and properties [shadowmap]; resolution=2N is appended
+  --lighting R      bench's --lighting: fragment (shadowbench's image) or vertex (glmark2's model:
+                    its horse is lit per vertex) [the scene's: fragment]
   -h, --help        this text
 
 Exit codes: 0 done, 2 wrong input, 3 a tool, the model or the driver is missing, 1 a run failed.
@@ -35,6 +37,7 @@ Examples:
   tools/perf/glmark2-compare.sh --rounds 5 --driver mesa-25.0.7     # both programs on Mesa 25.0.7
   tools/perf/glmark2-compare.sh --rounds 3 --size 512 --duration 3 --frames 50   # a quick look
   tools/perf/glmark2-compare.sh --build build-glmark --technique shadowmap:pcf=1   # another build, a knob
+  tools/perf/glmark2-compare.sh --rounds 5 --lighting vertex        # bench lit per vertex, as glmark2 lights
 EOF
 }
 
@@ -45,10 +48,11 @@ die() { # die CODE MESSAGE
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 rounds=5 size=1024 driver=system duration=5 frames=100 build="${BUILD:-$root/build}" technique=shadowmap
+lighting=()
 while [ $# -gt 0 ]; do
     case "$1" in
     -h | --help) usage; exit 0 ;;
-    --rounds | --size | --driver | --duration | --frames | --build | --technique)
+    --rounds | --size | --driver | --duration | --frames | --build | --technique | --lighting)
         [ $# -ge 2 ] || die 2 "$1: expected a value (see --help)"
         case "$1" in
         --rounds) rounds=$2 ;;
@@ -58,6 +62,7 @@ while [ $# -gt 0 ]; do
         --frames) frames=$2 ;;
         --build) build=$2 ;;
         --technique) technique=$2 ;;
+        --lighting) lighting=(--lighting "$2") ;;
         esac
         shift 2 ;;
     *) die 2 "unknown option '$1' (see --help)" ;;
@@ -123,7 +128,7 @@ run_glmark2() {
 # One bench run: prints "<wall mean ms> <wall median ms> <Mesa version>".
 run_bench() {
     local csv=$tmp/bench.csv
-    if ! "$build/bench" --driver "$driver" -t "$technique:resolution=$((2 * size))" --scene "$scene" \
+    if ! "$build/bench" --driver "$driver" -t "$technique:resolution=$((2 * size))" --scene "$scene" "${lighting[@]}" \
         --camera glmark2 --size "${size}x${size}" --frames "$frames" --warmup 5 --no-timer-check \
         --format csv -q >"$csv" 2>"$tmp/bench.err"; then
         tail -n 5 "$tmp/bench.err" >&2

@@ -14,9 +14,9 @@ namespace {
 
 /// The columns that define a configuration when there is no ci_config (ResultRow's names).
 const std::vector<std::string> kKeyColumns = {
-    col::kTechnique,    col::kProperties, col::kScene,  col::kInstances, col::kScale,
-    col::kTessellation, col::kTessFactor, col::kSeed,   col::kModel,     col::kSubmit,
-    col::kCamera,       col::kWidth,      col::kHeight, col::kLights,    col::kBackFaces};
+    col::kTechnique,  col::kProperties, col::kScene,     col::kInstances, col::kScale,  col::kTessellation,
+    col::kTessFactor, col::kSeed,       col::kModel,     col::kSubmit,    col::kCamera, col::kWidth,
+    col::kHeight,     col::kLights,     col::kBackFaces, col::kLighting};
 
 /// The rows of one configuration in one table.
 struct ConfigRows {
@@ -254,6 +254,8 @@ std::string WorkGate::configKey(const CsvTable& table, const std::vector<std::st
         std::string value = table.cell(row, c);
         // Rows written before `--back-faces` existed drew every back face.
         if (c == col::kBackFaces && value.empty()) value = "draw";
+        // Rows written before the lighting rate was a choice lit per fragment.
+        if (c == col::kLighting && value.empty()) value = "fragment";
         key += (key.empty() ? "" : " ") + c + "=" + value;
     }
     return key;

@@ -31,6 +31,7 @@ std::vector<std::pair<std::string, std::string>> fixedValues() {
             {"--submit", submitModes().list(" ")},
             {"--back-faces", "cull draw"},
             {"--light", lightTypeNames().list(" ")},
+            {"--lighting", lightingRateNames().list(" ")},
             {"--format", rowFormats().list(" ")},
             {"--backend", words(backendNames())},
             {"--camera", "far mid near top path"},

@@ -88,7 +88,8 @@ constexpr int kMaxDeviceIndex = 1023;
 /// type (-1, 0) is mistaken for "not given".
 struct RawOptions {
     std::vector<std::string> techniques;
-    std::string size = "1024x1024", submit = "retained", backend = "auto", light, format = "console";
+    std::string size = "1024x1024", submit = "retained", backend = "auto", light, lighting,
+                format = "console";
     std::string backFaces = "cull";
     std::string api = "gl", driver;
     std::optional<int> instances, tess, pathFrames, gpu, vkDevice;
@@ -132,6 +133,10 @@ void addOptions(CLI::App& app, RunConfig& c, RawOptions& raw, bool& listOnly) {
                    "multiply every generated mesh's tessellation (0.5: vertex load down)")
         ->capture_default_str();
     app.add_option("--light", raw.light, "replace every light's type: " + lightTypeNames().list());
+    app.add_option("--lighting", raw.lighting,
+                   "where the lit passes evaluate the lights: fragment or vertex (interpolated, Gouraud: "
+                   "glmark2's model, a different image under point and spot lights) (default: the scene's, "
+                   "else fragment; CSV column lighting)");
     app.add_option("--camera", c.camera,
                    "camera preset: far, mid, near, top (path: a moving scene's camera path)")
         ->capture_default_str();
@@ -256,6 +261,11 @@ void applyOptions(const RawOptions& raw, RunConfig& c) {
         auto t = lightTypeNames().parse(raw.light);
         if (!t) throw Error("--light " + raw.light + ": expected " + lightTypeNames().choices());
         c.sceneOptions.lightType = *t;
+    }
+    if (!raw.lighting.empty()) {
+        const std::optional<LightingRate> rate = parseLightingRate(raw.lighting);
+        if (!rate) throw Error("--lighting " + raw.lighting + ": expected " + lightingRateNames().choices());
+        c.sceneOptions.lighting = *rate;
     }
     if (!(c.sceneOptions.tessellationFactor >= 0.05f && c.sceneOptions.tessellationFactor <= 20.0f))
         throw Error("--tess-factor: expected a number in [0.05, 20]");

@@ -95,6 +95,7 @@ inline constexpr const char* kSeed = "seed";
 inline constexpr const char* kModel = "model";
 inline constexpr const char* kSubmit = "submit";
 inline constexpr const char* kBackFaces = "back_faces";
+inline constexpr const char* kLighting = "lighting";
 inline constexpr const char* kCamera = "camera";
 inline constexpr const char* kWidth = "width";
 inline constexpr const char* kHeight = "height";

@@ -132,6 +132,7 @@ CsvRow ResultRow::build(const RowSource& h, const RunResult& r, const Environmen
         {col::kModel, c.sceneOptions.modelPath},
         {col::kSubmit, submitModeName(c.submit)},
         {col::kBackFaces, backFacesName(c.backFaces)},
+        {col::kLighting, lightingRateName(scene.lighting)},
         {col::kCamera, c.camera},
         {col::kWidth, std::to_string(c.width)},
         {col::kHeight, std::to_string(c.height)},
