@@ -89,4 +89,18 @@ TEST(BackFacesVkWork, FewerFragmentsWithAClosedCaster) {
     }
 }
 
+// projective's silhouette texture, as on GL: the closed sphere's back faces are culled there too.
+TEST(BackFacesVkWork, ProjectiveTextureShadesFewerFragments) {
+    const Frame drawn = render("projective", "sphere_plane", BackFaces::Draw, SubmitMode::Retained);
+    const Frame culled = render("projective", "sphere_plane", BackFaces::Cull, SubmitMode::Retained);
+    ASSERT_EQ(drawn.passFragments.size(), culled.passFragments.size());
+    bool found = false;
+    for (size_t i = 0; i < drawn.passFragments.size(); ++i)
+        if (drawn.passFragments[i].first == "texture") {
+            found = true;
+            EXPECT_LT(culled.passFragments[i].second, drawn.passFragments[i].second);
+        }
+    EXPECT_TRUE(found) << "projective declares a texture pass";
+}
+
 } // namespace

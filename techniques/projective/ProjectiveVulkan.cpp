@@ -137,8 +137,7 @@ void ProjectiveVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     texture.depthTest = false;
     texture.depthWrite = false;
     texture.renderPass = mTexturePass;
-    texture.dynamicCull = false; // drawn with both faces on Vulkan (GL culls closed casters here)
-    mTexturePipeline = ctx.pipelines.get(textureKey + "|both-faces", texture);
+    mTexturePipeline = ctx.pipelines.get(textureKey, texture);
 
     Defines projective = ctx.defines(); // its lookups follow the scene's exceptions
     projective["SHADOW_MAP"] = "";      // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
@@ -203,8 +202,10 @@ void ProjectiveVulkan::renderTexture(VulkanFrameContext& ctx) {
             const uint32_t offset = mStride * uint32_t(i);
             vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mTextureLayout, 1, 1, &set, 1,
                                     &offset);
-            ctx.submitter.draw(ctx.cmd, mTextureLayout, DrawSet::Casters,
-                               mCull ? InstanceMask(mKeep) : InstanceMask{});
+            // A silhouette with no depth test: a closed caster's front faces cover what it covers
+            // (scenes/BackFaceCulling.h). The projector's clip space is GL's, unflipped (depthFromGl).
+            ctx.submitter.drawCulled(ctx.cmd, mTextureLayout, DrawSet::Casters, {mPlan.viewProj[i], false},
+                                     false, mCull ? InstanceMask(mKeep) : InstanceMask{});
         }
         vkCmdEndRenderPass(ctx.cmd);
     }
