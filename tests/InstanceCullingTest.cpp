@@ -17,6 +17,15 @@ Aabb box(glm::vec3 lo, glm::vec3 hi) {
     return b;
 }
 
+/// A mesh whose bounds are [-0.5, 0.5]^3 (three corners of the cube, one triangle): all the culls read.
+Mesh unitBoxMesh() {
+    Mesh m;
+    m.positions = {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}};
+    m.normals.assign(3, glm::vec3(0, 1, 0));
+    m.indices = {0, 1, 2};
+    return m;
+}
+
 } // namespace
 
 TEST(InstanceCulling, BoxesInsideOutsideAndStraddling) {
@@ -41,11 +50,7 @@ TEST(InstanceCulling, BoxesInsideOutsideAndStraddling) {
 
 TEST(InstanceCulling, MaskFollowsTheDrawSetAndTheFrustum) {
     Scene scene;
-    Mesh m;
-    m.positions = {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}};
-    m.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
-    m.indices = {0, 1, 2};
-    scene.meshes.push_back(m);
+    scene.meshes.push_back(unitBoxMesh());
     for (glm::vec3 p : {glm::vec3(0, 0, -5), glm::vec3(10, 0, -5), glm::vec3(0, 0, -5)}) {
         Instance inst;
         inst.position = p;
@@ -69,11 +74,7 @@ TEST(InstanceCulling, MaskFollowsTheDrawSetAndTheFrustum) {
 // model-space bounds [-0.5, 0.5]^3 translated, computed by hand), and the culls follow.
 TEST(InstanceCulling, MovedInstancesTakeTheirNewBounds) {
     Scene scene;
-    Mesh m;
-    m.positions = {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}};
-    m.normals.assign(3, glm::vec3(0, 1, 0));
-    m.indices = {0, 1, 2};
-    scene.meshes.push_back(m);
+    scene.meshes.push_back(unitBoxMesh());
     Instance inst;
     inst.position = glm::vec3(0, 0, -5);
     scene.instances.push_back(inst);
@@ -106,11 +107,7 @@ namespace {
 /// A scene of one ground (casts nothing) and unit boxes at `centres` (cast), for the shadow culls.
 Scene boxes(const std::vector<glm::vec3>& centres) {
     Scene s;
-    Mesh cube;
-    cube.positions = {{-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}};
-    cube.normals.assign(3, glm::vec3(0, 1, 0));
-    cube.indices = {0, 1, 2};
-    s.meshes.push_back(cube);
+    s.meshes.push_back(unitBoxMesh());
     Instance ground;
     ground.castsShadow = false;
     s.instances.push_back(ground);

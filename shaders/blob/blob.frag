@@ -1,7 +1,8 @@
 // `blob`: the ellipse's soft profile removes its light from the ground. Blending (BlobTechnique):
 // colour = dst - src (reverse subtract), visibility = dst * src.
 #include "common/frame.glsl"
-#define SB_NO_LIGHT_TERMS // the blob darkens the ground at this fragment (lightTermAt), not a surface of its own
+// The blob darkens the ground at this fragment (lightTermAt): no surface of its own.
+#define SB_NO_LIGHT_TERMS
 #include "common/lighting.glsl"
 
 in vec2 vCorner;

@@ -60,10 +60,10 @@ vec3 lightTermAt(int i, vec3 worldPos, vec3 n) {
     return uLightColor[i].rgb * (ndotl * lightFalloff(i, worldPos, l));
 }
 
-// `--lighting vertex` (SB_VERTEX_LIGHTING, RunConfig::lighting): Gouraud shading. The vertex stage
+// `--lighting vertex` (SB_VERTEX_LIGHTING, Scene::lighting): Gouraud shading. The vertex stage
 // evaluates each light at the vertex, writeVertexLighting, and the fragment stage interpolates
-// (colour x falloff, n.l) per light: glmark2's and many mobile engines' model, a different image wherever the
-// term is not affine across a triangle (point and spot lights, curved meshes). n.l is interpolated with
+// (colour x falloff, n.l) per light: glmark2's and many mobile engines' model, a different image
+// wherever the term is not affine across a triangle (point and spot lights, curved meshes). n.l is interpolated with
 // its sign and clamped per fragment, so a triangle that turns away from the light fades where n.l
 // crosses 0 instead of at its vertices; a back face (drawn only where culling cannot hide it) takes
 // -n.l, as the per-fragment path flips its normal. SB_LIGHT_TERMS is the scene's light count (at most

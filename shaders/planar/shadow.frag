@@ -1,7 +1,8 @@
 // `planar` shadow polygons: remove light LIGHT (uniform) from the receiver where a flattened occluder
 // lands. Blending (PlanarTechnique): colour = dst - src (reverse subtract), visibility = dst * src.
 #include "common/frame.glsl"
-#define SB_NO_LIGHT_TERMS // the flattened occluder darkens the receiver at this fragment (lightTermAt), not a surface of its own
+// The flattened occluder darkens the receiver at this fragment (lightTermAt): no surface of its own.
+#define SB_NO_LIGHT_TERMS
 #include "common/lighting.glsl"
 
 in vec4 vFlat;

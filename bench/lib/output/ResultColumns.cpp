@@ -75,9 +75,8 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kBackFaces, "", ColumnType::Text, kEveryRun,
      "`--back-faces`: `cull` (back faces of closed meshes culled where the image cannot change) or `draw`"},
     {col::kLighting, "", ColumnType::Text, kEveryRun,
-     "where the lit passes evaluate the lights: `fragment` or `vertex` (Gouraud), the scene's \"lighting\" "
-     "or "
-     "`--lighting`"},
+     "where the lit passes evaluate the lights: `fragment` or `vertex` (Gouraud), the scene's "
+     "\"lighting\" or `--lighting`"},
     {col::kCamera, "", ColumnType::Text, kEveryRun, "camera preset"},
     {col::kWidth, "px", ColumnType::Integer, kEveryRun, "render target width"},
     {col::kHeight, "px", ColumnType::Integer, kEveryRun, "render target height"},
