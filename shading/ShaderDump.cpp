@@ -11,6 +11,7 @@ namespace sb {
 namespace {
 
 constexpr const char* kUntagged = "untagged";
+constexpr size_t kLongPermutation = 200;
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
     std::error_code error;
@@ -55,9 +56,13 @@ std::vector<std::string> ShaderDump::takeLog() {
 
 std::string ShaderDump::path(const std::string& label, const ShaderSources& sources, const Defines& defines,
                              ShaderStage stage) {
-    const std::string permutation = definesKey(defines);
-    return (label.empty() ? kUntagged : label) + "/" + sources.programName() + "/" +
-           (permutation.empty() ? "default" : permutation) + "/" + stageFileName(stage);
+    std::string permutation = definesKey(defines);
+    if (permutation.empty()) permutation = "default";
+    // A folder name's limit is 255 bytes: a longer key keeps its head and ends with its hash.
+    if (permutation.size() > kLongPermutation)
+        permutation = permutation.substr(0, kLongPermutation - 17) + "~" + hash64(permutation);
+    return (label.empty() ? kUntagged : label) + "/" + sources.programName() + "/" + permutation + "/" +
+           stageFileName(stage);
 }
 
 } // namespace sb

@@ -21,6 +21,16 @@ struct FrameUniformData {
     glm::vec4 lightParams[kMaxLights];
 };
 
+/// What the block says of a light that no motion changes (scenes/Scene.h: motion moves lights, it does
+/// not change them): colour x intensity (rgb) and range (w, 0 = unlimited); cos of the cone's outer and
+/// inner half-angles (x, y; a directional or point light's are unused). One computation for the block and
+/// for the compile-time constants the lit passes take instead (addLightKindDefines, techniques/Technique.h).
+struct LightConstants {
+    glm::vec4 colorRange;
+    glm::vec2 coneCos;
+};
+LightConstants lightConstants(const Light& light);
+
 /// The block from the camera matrices (GL conventions) and the scene's lights (at most kMaxLights).
 FrameUniformData computeFrameUniforms(const Scene& scene, const glm::mat4& view, const glm::mat4& proj,
                                       const glm::vec3& eye);

@@ -1,9 +1,11 @@
 #include "techniques/Technique.h"
 
 #include <algorithm>
+#include <charconv>
 #include <string>
 
 #include "shading/ShaderLimits.h"
+#include "techniques/FrameBlock.h"
 
 namespace sb {
 
@@ -25,10 +27,52 @@ std::string lightMask(const Scene& scene, Predicate has) {
     return std::to_string(mask) + "u";
 }
 
+/// `v` as a GLSL float literal that parses back to the identical float (to_chars' shortest round trip),
+/// with a decimal point where to_chars writes none ("0" -> "0.0").
+std::string glslFloat(float v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    std::string text(buf, r.ptr);
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";
+    return text;
+}
+
+/// A GLSL vecN constant of `v`'s N floats; one argument where they are all equal (a grey ambient, a zero
+/// padding), so that the common case stays short in the permutation key.
+template <int N>
+std::string glslVec(const glm::vec<N, float>& v) {
+    bool same = true;
+    for (int k = 1; k < N; ++k) same = same && v[k] == v[0];
+    std::string text = "vec" + std::to_string(N) + "(" + glslFloat(v[0]);
+    for (int k = 1; k < N && !same; ++k) text += "," + glslFloat(v[k]);
+    return text + ")";
+}
+
+/// A GLSL array constant of kMaxLights vecN, light i's `of(light)` at index i and zeros past the scene's
+/// lights.
+template <int N, typename Of>
+std::string lightArray(const Scene& scene, Of of) {
+    std::string text = "vec" + std::to_string(N) + "[" + std::to_string(kMaxLights) + "](";
+    for (int i = 0; i < kMaxLights; ++i) {
+        const glm::vec<N, float> v = size_t(i) < scene.lights.size()
+                                         ? of(lightConstants(scene.lights[size_t(i)]))
+                                         : glm::vec<N, float>(0.0f);
+        text += (i ? "," : "") + glslVec<N>(v);
+    }
+    return text + ")";
+}
+
 } // namespace
+
+std::string ambientDefine(const glm::vec3& ambient) {
+    return glslVec<3>(ambient);
+}
 
 void addLightKindDefines(const Scene& scene, Defines& defines) {
     defines["SB_STATIC_LIGHTS"] = "";
+    defines["SB_AMBIENT"] = ambientDefine(scene.ambient);
+    defines["SB_LIGHT_COLORS"] = lightArray<4>(scene, [](const LightConstants& c) { return c.colorRange; });
+    defines["SB_LIGHT_CONES"] = lightArray<2>(scene, [](const LightConstants& c) { return c.coneCos; });
     defines["SB_POSITIONAL_LIGHTS"] =
         lightMask(scene, [](const Light& l) { return l.type != LightType::Directional; });
     defines["SB_SPOT_LIGHTS"] = lightMask(scene, [](const Light& l) { return l.type == LightType::Spot; });

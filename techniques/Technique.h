@@ -68,6 +68,11 @@ private:
 ///   are fixed once the scene is loaded (motion moves lights, it does not change them), and llvmpipe runs
 ///   both sides of a branch on a uniform under a mask: known at compile time, a directional light's
 ///   fragments skip the distance, range and cone terms they would discard;
+/// - under SB_STATIC_LIGHTS too, what is fixed once the scene is loaded, as constants: its ambient light,
+///   SB_AMBIENT=<vec3> (ambientDefine), and each light's colour and range, SB_LIGHT_COLORS=<vec4[4]>, and
+///   cone, SB_LIGHT_CONES=<vec2[4]> (techniques/FrameBlock.h, lightConstants). A constant costs the
+///   fragment stage nothing where a uniform read does not (common/lighting.glsl); the lights' positions
+///   and directions, which motion changes, stay uniforms;
 /// - its lighting rate (addLightingRateDefines).
 void addSceneDefines(const Scene& scene, Defines& defines);
 /// A scene lit per vertex (Scene::lighting, scenes/LightingRate.h): SB_VERTEX_LIGHTING and
@@ -75,8 +80,12 @@ void addSceneDefines(const Scene& scene, Defines& defines);
 /// terms the vertex stage wrote (writeVertexLighting). Nothing for a scene lit per fragment. Part of
 /// addLightKindDefines; the reference's shading pass, which takes no light kinds, adds it alone.
 void addLightingRateDefines(const Scene& scene, Defines& defines);
-/// The light kinds and the lighting rate (the last two items above), for programs that take no shadow
-/// exceptions (the lit passes of `none`, `blob`, `planar`, `projective` and `volume`, which apply their own).
+/// SB_AMBIENT's value for an ambient colour: "vec3(0.15)" for a grey, "vec3(0.1,0.2,0.3)" otherwise, each
+/// float written so that it parses back to the identical float (the uniform's value, bit for bit).
+std::string ambientDefine(const glm::vec3& ambient);
+/// The light kinds, the scene's constants and the lighting rate (the last three items above), for programs
+/// that take no shadow exceptions (the lit passes of `none`, `blob`, `planar`, `projective` and `volume`,
+/// which apply their own).
 void addLightKindDefines(const Scene& scene, Defines& defines);
 /// `defines` with the light kinds of `scene` added (addLightKindDefines).
 Defines withLightKinds(Defines defines, const Scene& scene);

@@ -105,11 +105,12 @@ TEST(EffectsCli, ExplainPrintsTheMasksPermutationAndPassesOfOneFrame) {
               std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find("effects requested  hard_shadows\n"), std::string::npos) << r.output;
-    EXPECT_NE(
-        r.output.find(
-            "permutation        |HW_COMPARE,LIGHT_COUNT,PCF_SIZE,SB_POSITIONAL_LIGHTS=0u,SB_RANGED_LIGHTS=0u,"
-            "SB_SPOT_LIGHTS=0u,SB_STATIC_LIGHTS,SHADOW_MAP"),
-        std::string::npos)
+    EXPECT_NE(r.output.find(
+                  "permutation        "
+                  "|HW_COMPARE,LIGHT_COUNT,PCF_SIZE,SB_AMBIENT=vec3(0.15),SB_LIGHT_COLORS=#53566dcb9c73b8ff,"
+                  "SB_LIGHT_CONES=#45f3d0dc922a31db,SB_POSITIONAL_LIGHTS=0u,SB_RANGED_LIGHTS=0u,"
+                  "SB_SPOT_LIGHTS=0u,SB_STATIC_LIGHTS,SHADOW_MAP"),
+              std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find("depth     ran  1 draws, " + std::to_string(casterTriangles) + " triangles"),
               std::string::npos)

@@ -1,7 +1,8 @@
 #pragma once
-// The scenes and closed forms of the lighting-rate tests on both APIs (tests/LightingRateGLTest.cpp,
+// The scenes and closed forms of the lighting tests on both APIs (tests/LightingRateGLTest.cpp,
 // tests/LightingRateVkTest.cpp): `--lighting vertex` evaluates each light at the vertices and
-// interpolates (scenes/LightingRate.h).
+// interpolates (scenes/LightingRate.h); every lit pass adds the scene's ambient, a compile-time constant
+// (SB_AMBIENT, techniques/Technique.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -79,6 +80,40 @@ void expectPointOverQuad(const char* technique, Render render) {
         }
     EXPECT_NEAR(fragment.color[(size_t(c) * kLightingSize + size_t(c)) * 4], pointOverQuadValue(1.0), 2.0)
         << technique;
+}
+
+/// Whether `technique` shades with the scene's lights and ambient: all but `synthetic`, whose workloads
+/// draw flat colours (shaders/synthetic).
+inline bool shadesWithTheScenesLights(const std::string& technique) {
+    return technique != "synthetic";
+}
+
+/// One floor quad lit by nothing but the ambient (its only light shines from below, n.l = -1 on the
+/// floor's upper face), a colour that is not grey and an albedo that is not either, so that each channel
+/// of SB_AMBIENT's three-argument form is checked: the floor is 255 x albedo x ambient per channel.
+inline std::string ambientOnlyScene() {
+    const std::string path = freshTestDir("ambient") + "/ambient_only.json";
+    writeFile(path, R"({"name": "ambient_only",
+  "meshes": [{"name": "floor", "generator": "plane", "size": 4, "tessellation": 1}],
+  "instances": [{"mesh": "floor", "position": [0, 0, 0], "casts_shadow": false, "color": [0.8, 0.6, 0.4]}],
+  "lights": [{"type": "directional", "direction": [0, 1, 0], "color": [1, 1, 1], "intensity": 1}],
+  "cameras": [{"name": "down", "eye": [0, 3, 0.5], "target": [0, 0, 0], "fov": 60}],
+  "ambient": [0.1, 0.3, 0.7]})");
+    return path;
+}
+
+/// ambientOnlyScene's floor, rendered by `technique`: 255 x (0.8 x 0.1, 0.6 x 0.3, 0.4 x 0.7) = (20.4, 45.9,
+/// 71.4) at every pixel around the centre (tolerance 1: the 8-bit store's rounding, none of the three is
+/// near a half).
+inline void expectAmbientOnly(const std::string& technique, const LitImage& image) {
+    const double expected[3] = {255.0 * 0.8 * 0.1, 255.0 * 0.6 * 0.3, 255.0 * 0.4 * 0.7};
+    const int c = kLightingSize / 2;
+    for (int dy = -8; dy <= 8; dy += 8)
+        for (int dx = -8; dx <= 8; dx += 8)
+            for (int k = 0; k < 3; ++k)
+                EXPECT_NEAR(image.color[(size_t(c + dy) * kLightingSize + size_t(c + dx)) * 4 + size_t(k)],
+                            expected[k], 1.0)
+                    << technique << " channel " << k << " at " << dx << "," << dy;
 }
 
 } // namespace sb::test

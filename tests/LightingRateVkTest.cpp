@@ -35,6 +35,12 @@ TEST_P(LightingRateVkEveryTechnique, VertexEqualsFragmentWhereTheTermIsAffine) {
                                 render(GetParam(), "city", "mid", LightingRate::Vertex));
 }
 
+TEST_P(LightingRateVkEveryTechnique, AmbientIsTheScenesColour) {
+    if (!test::shadesWithTheScenesLights(GetParam())) GTEST_SKIP() << GetParam() << " draws flat colours";
+    test::expectAmbientOnly(GetParam(),
+                            render(GetParam(), test::ambientOnlyScene(), "down", LightingRate::Fragment));
+}
+
 INSTANTIATE_TEST_SUITE_P(AllTechniques, LightingRateVkEveryTechnique,
                          ::testing::ValuesIn(TechniqueRegistry::namesOn(Api::Vulkan)),
                          [](const auto& info) { return info.param; });

@@ -9,6 +9,7 @@
 #include "gl/Context.h"
 #include "gl/ProgramCache.h"
 #include "gl/backends/BackendRegistry.h"
+#include "shading/ShaderDump.h"
 
 namespace sb {
 namespace {
@@ -42,6 +43,36 @@ TEST(DefinesKeyTest, SortedCommaSeparatedWithOneOmitted) {
     EXPECT_EQ(definesKey({}), "");
     EXPECT_EQ(definesKey({{"SB_INSTANCED", ""}, {"PCF_SIZE", "3"}, {"A_FLAG", "1"}}),
               "A_FLAG,PCF_SIZE=3,SB_INSTANCED");
+}
+
+// A value past kLongDefineValue characters is keyed by its 64-bit FNV-1a (the hash below computed
+// independently, with Python); up to that length it is written out.
+TEST(DefinesKeyTest, LongValuesAreHashed) {
+    EXPECT_EQ(definesKey({{"SB_LIGHT_COLORS", "vec4[4](vec4(1.0),vec4(0.0))"}}),
+              "SB_LIGHT_COLORS=#a4300e2f19d5af15");
+    const std::string longest(kLongDefineValue, 'x');
+    EXPECT_EQ(definesKey({{"A", longest}}), "A=" + longest);
+}
+
+// A permutation past 200 characters names its dump folder by its head and its hash (a file name's limit
+// is 255 bytes): two keys that share the head still get folders of their own.
+TEST(ShaderDumpPath, LongPermutationFitsAFileName) {
+    Defines a, b;
+    for (int i = 0; i < 12; ++i) a["SB_A_RATHER_LONG_DEFINE_NAME_" + std::to_string(i)] = "";
+    b = a;
+    b["ZZ_LAST"] = "";
+    const ShaderSources sources{"x.vert", "x.frag", ""};
+    const auto folder = [&](const Defines& d) {
+        const std::string p = ShaderDump::path("t", sources, d, ShaderStage::Fragment);
+        const size_t end = p.rfind('/');
+        return p.substr(p.rfind('/', end - 1) + 1, end - p.rfind('/', end - 1) - 1);
+    };
+    ASSERT_GT(definesKey(a).size(), 200u);
+    EXPECT_EQ(folder(a).size(), 200u);
+    EXPECT_EQ(folder(a).substr(0, 183), definesKey(a).substr(0, 183));
+    EXPECT_EQ(folder(a).substr(183), "~" + hash64(definesKey(a)));
+    EXPECT_NE(folder(a), folder(b));
+    EXPECT_EQ(folder({{"PCF_SIZE", "3"}}), "PCF_SIZE=3");
 }
 
 TEST_F(ProgramCacheGLTest, SecondGetIsACacheHit) {

@@ -29,12 +29,15 @@ TEST(DumpShaders, WritesTheAssembledStages) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
         if (entry.is_regular_file()) found.push_back(entry.path().string());
     const std::string fragment =
-        program + "HW_COMPARE,LIGHT_COUNT,PCF_SIZE=3,SB_POSITIONAL_LIGHTS=0u,SB_RANGED_LIGHTS=0u,"
+        program + "HW_COMPARE,LIGHT_COUNT,PCF_SIZE=3,SB_AMBIENT=vec3(0.15),SB_LIGHT_COLORS=#53566dcb9c73b8ff,"
+                  "SB_LIGHT_CONES=#45f3d0dc922a31db,SB_POSITIONAL_LIGHTS=0u,SB_RANGED_LIGHTS=0u,"
                   "SB_SPOT_LIGHTS=0u,SB_STATIC_LIGHTS,SHADOW_MAP/fragment.frag";
     ASSERT_TRUE(std::filesystem::exists(fragment)) << ::testing::PrintToString(found);
     const std::string text = test::readFile(fragment);
     EXPECT_EQ(text.rfind("#version 450 compatibility\n", 0), 0u);
     EXPECT_NE(text.find("#define PCF_SIZE 3\n"), std::string::npos);
+    // The key hashes the light constants (shading/Defines.h); the dumped source spells them out.
+    EXPECT_NE(text.find("#define SB_LIGHT_COLORS vec4[4](vec4("), std::string::npos);
     EXPECT_NE(text.find("#define SB_FRAGMENT_SHADER 1\n"), std::string::npos);
     EXPECT_EQ(text.find("#include"), std::string::npos) << "includes must be expanded";
     EXPECT_EQ(test::runCommand("glslangValidator '" + fragment + "'").exitCode, 0);

@@ -7,6 +7,21 @@
 // Without it (a program compiled without the scene's defines) the uniforms say, as frame.glsl packs them.
 bool lightBit(uint mask, int i) { return ((mask >> uint(i)) & 1u) != 0u; }
 
+// Light i's colour x intensity (rgb) and range (w, 0 = unlimited), and the cosines of its cone's outer and
+// inner half-angles (x, y). Under SB_STATIC_LIGHTS compile-time constants (SB_LIGHT_COLORS, SB_LIGHT_CONES:
+// techniques/FrameBlock.h, lightConstants): they are fixed once the scene is loaded, and a uniform read
+// costs a fragment stage of llvmpipe far more than a constant (ambientLight below). The positions and
+// directions, which motion changes, stay uniforms.
+#ifdef SB_STATIC_LIGHTS
+const vec4 kLightColorRange[4] = SB_LIGHT_COLORS;
+const vec2 kLightConeCos[4] = SB_LIGHT_CONES;
+vec4 lightColorRange(int i) { return kLightColorRange[i]; }
+vec2 lightConeCos(int i) { return kLightConeCos[i]; }
+#else
+vec4 lightColorRange(int i) { return uLightColor[i]; }
+vec2 lightConeCos(int i) { return vec2(uLightDir[i].w, uLightParams[i].x); }
+#endif
+
 bool isPositional(int i) {
 #ifdef SB_STATIC_LIGHTS
     return lightBit(SB_POSITIONAL_LIGHTS, i);
@@ -27,7 +42,21 @@ bool isRanged(int i) {
 #ifdef SB_STATIC_LIGHTS
     return lightBit(SB_RANGED_LIGHTS, i);
 #else
-    return uLightPos[i].w != 0.0 && uLightColor[i].w > 0.0;
+    return uLightPos[i].w != 0.0 && lightColorRange(i).w > 0.0;
+#endif
+}
+
+// The scene's ambient light, added unshadowed by every lit pass. Under SB_AMBIENT (the scene's, fixed once
+// it is loaded: addLightKindDefines in techniques/Technique.h) a compile-time constant, which a black
+// ambient removes altogether. On llvmpipe a uniform costs a fragment stage far more than one load: on
+// Mesa 22.3 a vec3 read costs about 8 instructions per fragment, what reading it lane by lane would
+// (results/perf/README.md, "Constants where the scene fixes them"). Without SB_AMBIENT (a program
+// compiled without the scene's defines) the uniform says.
+vec3 ambientLight() {
+#ifdef SB_AMBIENT
+    return SB_AMBIENT;
+#else
+    return uAmbient.rgb;
 #endif
 }
 
@@ -42,11 +71,11 @@ float lightFalloff(int i, vec3 worldPos, vec3 l) {
     float atten = 1.0;
     if (isRanged(i)) {
         float d = length(uLightPos[i].xyz - worldPos);
-        atten = clamp(1.0 - d / uLightColor[i].w, 0.0, 1.0);
+        atten = clamp(1.0 - d / lightColorRange(i).w, 0.0, 1.0);
     }
     if (isSpot(i)) {
         float c = dot(-l, uLightDir[i].xyz);
-        atten *= smoothstep(uLightDir[i].w, uLightParams[i].x, c);
+        atten *= smoothstep(lightConeCos(i).x, lightConeCos(i).y, c);
     }
     return atten;
 }
@@ -57,7 +86,7 @@ float lightFalloff(int i, vec3 worldPos, vec3 l) {
 vec3 lightTermAt(int i, vec3 worldPos, vec3 n) {
     vec3 l = toLight(i, worldPos);
     float ndotl = max(dot(n, l), 0.0);
-    return uLightColor[i].rgb * (ndotl * lightFalloff(i, worldPos, l));
+    return lightColorRange(i).rgb * (ndotl * lightFalloff(i, worldPos, l));
 }
 
 // `--lighting vertex` (SB_VERTEX_LIGHTING, Scene::lighting): Gouraud shading. The vertex stage
@@ -78,7 +107,7 @@ out vec4 vLightTerms[SB_LIGHT_TERMS]; // rgb: colour times lightFalloff; a: n.l 
 void writeVertexLighting(vec3 worldPos, vec3 n) {
     for (int i = 0; i < SB_LIGHT_TERMS; ++i) {
         vec3 l = toLight(i, worldPos);
-        vLightTerms[i] = vec4(uLightColor[i].rgb * lightFalloff(i, worldPos, l), dot(n, l));
+        vLightTerms[i] = vec4(lightColorRange(i).rgb * lightFalloff(i, worldPos, l), dot(n, l));
     }
 }
 #else

@@ -12,7 +12,7 @@ layout(location = 1) out vec4 oVisibility;
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 light = uAmbient.rgb;
+    vec3 light = ambientLight();
     for (int i = 0; i < LIGHT_COUNT; ++i) light += lightTerm(i, vWorldPos, n);
     oColor = vec4(vColorId.rgb * light, 1.0);
     oVisibility = vec4(1.0);

@@ -77,7 +77,7 @@ float othersVisibility(int light) {
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 light = uAmbient.rgb;
+    vec3 light = ambientLight();
     vec4 visibility = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         float v = 1.0;

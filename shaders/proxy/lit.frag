@@ -325,7 +325,7 @@ void applyProxy(int index, int self, vec3 receiverNormal, inout Accum acc) {
     acc.ambient *= 1.0 - clamp(shadow, 0.0, 1.0);
 #ifdef PROXY_BLEED
     float bleed = attenuation(dist, uBleed);
-    acc.bleed += bleed * p.reflective.rgb * uAmbient.rgb;
+    acc.bleed += bleed * p.reflective.rgb * ambientLight();
 #endif
 #ifdef PROXY_MODULATE
     // Section 1.5: the direction the shadow is cast along is the one from the closest surface point to
@@ -343,14 +343,14 @@ void applyProxy(int index, int self, vec3 receiverNormal, inout Accum acc) {
         acc.visibility[i] *= 1.0 - clamp(shadow * lobe, 0.0, 1.0);
 #ifdef PROXY_BLEED
         // ... and the bleeding towards it, the same with the normal reversed.
-        acc.bleed += bleed * max(clamp(dot(-travel, n), uShading.w, 1.0), 0.0) * p.diffuse.rgb * uLightColor[i].rgb;
+        acc.bleed += bleed * max(clamp(dot(-travel, n), uShading.w, 1.0), 0.0) * p.diffuse.rgb * lightColorRange(i).rgb;
 #endif
     }
 #else
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         acc.visibility[i] *= 1.0 - clamp(shadow, 0.0, 1.0);
 #ifdef PROXY_BLEED
-        acc.bleed += bleed * p.diffuse.rgb * uLightColor[i].rgb;
+        acc.bleed += bleed * p.diffuse.rgb * lightColorRange(i).rgb;
 #endif
     }
 #endif
@@ -390,7 +390,7 @@ void main() {
     for (int i = 0; i < LIGHT_COUNT; ++i)
         if (!shadowApplies(i, vColorId)) acc.visibility[i] = 1.0;
 #endif
-    vec3 light = uAmbient.rgb * acc.ambient;
+    vec3 light = ambientLight() * acc.ambient;
     for (int i = 0; i < LIGHT_COUNT; ++i) light += acc.visibility[i] * lightTerm(i, vWorldPos, n);
 #ifdef PROXY_BLEED
     light += acc.bleed;

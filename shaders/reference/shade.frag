@@ -24,7 +24,7 @@ void main() {
     vec4 vis = mix(traced, vec4(1.0), lessThan(traced, vec4(0.0)));
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 light = uAmbient.rgb;
+    vec3 light = ambientLight();
     for (int i = 0; i < LIGHT_COUNT; ++i) light += vis[i] * lightTerm(i, vWorldPos, n);
     oColor = vec4(vColorId.rgb * light, 1.0);
     oVisibility = vis;

@@ -80,7 +80,7 @@ void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
     float viewDepth = -(uView * vec4(vWorldPos, 1.0)).z;
-    vec3 light = uAmbient.rgb;
+    vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vis[i] = shadowApplies(i, vColorId) ? visibility(i, vWorldPos, viewDepth) : 1.0;

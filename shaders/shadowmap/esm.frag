@@ -58,7 +58,7 @@ float visibility(int layer, vec4 coord) {
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 light = uAmbient.rgb;
+    vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vis[i] = shadowApplies(i, vColorId) ? visibility(i, vShadowCoord[i]) : 1.0;

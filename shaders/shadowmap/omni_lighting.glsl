@@ -69,7 +69,7 @@ float lightVisibility(int i) {
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
-    vec3 light = uAmbient.rgb;
+    vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vis[i] = shadowApplies(i, vColorId) ? lightVisibility(i) : 1.0;

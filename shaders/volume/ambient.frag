@@ -39,6 +39,6 @@ float unshadowed(int i) {
 }
 
 void main() {
-    oColor = vec4(vColorId.rgb * uAmbient.rgb, 1.0);
+    oColor = vec4(vColorId.rgb * ambientLight(), 1.0);
     oVisibility = vec4(unshadowed(0), unshadowed(1), unshadowed(2), unshadowed(3));
 }

@@ -52,7 +52,7 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kProperties, "", ColumnType::Text, kEveryRun,
      "every property, canonical `k=v:k=v` (re-run with `-t technique:<this>`)"},
     {col::kPermutation, "", ColumnType::Text, kEveryRun,
-     "shader permutation keys (sorted defines) of the programs used"},
+     "shader permutation keys (sorted defines, a long value as #hash) of the programs used"},
     {col::kEffectsRequested, "", ColumnType::Text, kEveryRun,
      "the scene's `effects`, `+`-joined (`hard_shadows+self_shadowing`; `none` for an empty list)"},
     {col::kEffectsDelivered, "", ColumnType::Text, kEveryRun,
