@@ -11,7 +11,7 @@ namespace sb {
 namespace {
 
 constexpr const char* kUntagged = "untagged";
-constexpr size_t kLongPermutation = 200;
+constexpr size_t kLongPermutation = 255; // a file name's limit in bytes
 
 void writeText(const std::filesystem::path& path, const std::string& text) {
     std::error_code error;
@@ -58,7 +58,7 @@ std::string ShaderDump::path(const std::string& label, const ShaderSources& sour
                              ShaderStage stage) {
     std::string permutation = definesKey(defines);
     if (permutation.empty()) permutation = "default";
-    // A folder name's limit is 255 bytes: a longer key keeps its head and ends with its hash.
+    // A longer key keeps its head and ends with its hash, within the limit.
     if (permutation.size() > kLongPermutation)
         permutation = permutation.substr(0, kLongPermutation - 17) + "~" + hash64(permutation);
     return (label.empty() ? kUntagged : label) + "/" + sources.programName() + "/" + permutation + "/" +

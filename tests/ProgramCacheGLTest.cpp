@@ -54,11 +54,11 @@ TEST(DefinesKeyTest, LongValuesAreHashed) {
     EXPECT_EQ(definesKey({{"A", longest}}), "A=" + longest);
 }
 
-// A permutation past 200 characters names its dump folder by its head and its hash (a file name's limit
-// is 255 bytes): two keys that share the head still get folders of their own.
+// A permutation past 255 characters (a file name's limit) names its dump folder by its head and its
+// hash: two keys that share the head still get folders of their own.
 TEST(ShaderDumpPath, LongPermutationFitsAFileName) {
     Defines a, b;
-    for (int i = 0; i < 12; ++i) a["SB_A_RATHER_LONG_DEFINE_NAME_" + std::to_string(i)] = "";
+    for (int i = 0; i < 16; ++i) a["SB_A_RATHER_LONG_DEFINE_NAME_" + std::to_string(i)] = "";
     b = a;
     b["ZZ_LAST"] = "";
     const ShaderSources sources{"x.vert", "x.frag", ""};
@@ -67,10 +67,10 @@ TEST(ShaderDumpPath, LongPermutationFitsAFileName) {
         const size_t end = p.rfind('/');
         return p.substr(p.rfind('/', end - 1) + 1, end - p.rfind('/', end - 1) - 1);
     };
-    ASSERT_GT(definesKey(a).size(), 200u);
-    EXPECT_EQ(folder(a).size(), 200u);
-    EXPECT_EQ(folder(a).substr(0, 183), definesKey(a).substr(0, 183));
-    EXPECT_EQ(folder(a).substr(183), "~" + hash64(definesKey(a)));
+    ASSERT_GT(definesKey(a).size(), 255u);
+    EXPECT_EQ(folder(a).size(), 255u);
+    EXPECT_EQ(folder(a).substr(0, 238), definesKey(a).substr(0, 238));
+    EXPECT_EQ(folder(a).substr(238), "~" + hash64(definesKey(a)));
     EXPECT_NE(folder(a), folder(b));
     EXPECT_EQ(folder({{"PCF_SIZE", "3"}}), "PCF_SIZE=3");
 }
