@@ -1,19 +1,13 @@
 #include "shading/Defines.h"
 
-#include <cstdint>
-#include <cstdio>
+#include "core/Fnv1a.h"
 
 namespace sb {
 
 std::string hash64(const std::string& text) {
-    uint64_t h = 14695981039346656037ull;
-    for (unsigned char c : text) {
-        h ^= c;
-        h *= 1099511628211ull;
-    }
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
+    Fnv1a h;
+    h.bytes(text.data(), text.size());
+    return h.hex();
 }
 
 std::string definesKey(const Defines& d) {

@@ -9,7 +9,7 @@ namespace sb {
 
 /// Sorted NAME -> VALUE list; the key of a permutation. VALUE "" means "#define NAME 1".
 using Defines = std::map<std::string, std::string>;
-/// 64-bit FNV-1a of `text` as 16 hex digits: the short name of a long key.
+/// 64-bit FNV-1a of `text`'s bytes as 16 hex digits (core/Fnv1a.h): the short name of a long key.
 std::string hash64(const std::string& text);
 /// Values longer than this are written into definesKey as '#' and their 64-bit FNV-1a hash.
 constexpr size_t kLongDefineValue = 24;

@@ -4,10 +4,9 @@
 //   DIR/<label>/<program>/<permutation>/<stage>.<ext>
 // label: the technique being compiled (setLabel); program: ShaderSources::programName(); permutation:
 // definesKey ("default" when empty; past 255 characters, a file name's limit, its first 238, '~' and the
-// whole key's hash64); stage and ext: shading/ShaderStage.h's file
-// names. The path names the source exactly (files, defines and stage determine it), so the two APIs'
-// dumps of one configuration differ only in what the API's version line and `#ifdef VULKAN` blocks make
-// of the same files.
+// whole key's hash64); stage and ext: shading/ShaderStage.h's file names. The path names the source
+// exactly (files, defines and stage determine it), so the two APIs' dumps of one configuration differ only
+// in what the API's version line and `#ifdef VULKAN` blocks make of the same files.
 #include <functional>
 #include <set>
 #include <string>
