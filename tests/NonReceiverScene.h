@@ -1,6 +1,7 @@
 #pragma once
-// The scene of the tests of ShadowMap::drawsNonReceiversApart on both APIs (tests/ShadowMapGLTest.cpp,
-// tests/ShadowMapVkTest.cpp): a floor that receives and a ball over it that receives no shadow.
+// The scene of the tests of ReceiverSplit::drawsApart (techniques/ReceiverSplit.h) on both APIs
+// (tests/ShadowMapGLTest.cpp, tests/ShadowMapVkTest.cpp): a floor that receives and a ball over it that
+// receives no shadow.
 #include <string>
 
 #include "TestSupport.h"
@@ -9,7 +10,7 @@ namespace sb::test {
 
 // A scene whose non-receiver (a ball over the floor, "receives_shadow": false) is listed after the
 // receiver, meshes and instances alike: the lighting pass draws it apart with a program that has no
-// lookup (ShadowMap::drawsNonReceiversApart). Listed first, the draw order would change, so one program
+// lookup (ReceiverSplit::drawsApart). Listed first, the draw order would change, so one program
 // draws both: the control, which is what every scene got before. Directional light: the ball's shadow
 // falls on the floor, and the ball (which casts) would shadow itself if it received.
 inline std::string nonReceiverScene(bool receiverFirst) {

@@ -111,8 +111,8 @@ Axis propertyAxis(const PropertyDesc& p) {
 
 /// The shadow exceptions a scene file can declare (CompileContext::defines), applied to the scene's
 /// first instance or light: the built-in scenes declare none. A non-receiver listed last is drawn apart
-/// by techniques that can keep the draw order that way (ShadowMap::drawsNonReceiversApart), with
-/// programs of their own.
+/// by techniques that can keep the draw order that way (ReceiverSplit::drawsApart,
+/// techniques/ReceiverSplit.h), with programs of their own.
 constexpr const char* kNonReceiver = "first_instance_receives_none";
 constexpr const char* kLastNonReceiver = "last_instance_receives_none";
 constexpr const char* kUnshadowedLight = "first_light_casts_none";

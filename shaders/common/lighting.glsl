@@ -131,7 +131,7 @@ vec3 lightTerm(int i, vec3 worldPos, vec3 n) { return lightTermAt(i, worldPos, n
 // (SB_NON_RECEIVERS: its id is negative). Both are compile-time, set only for scenes that have them
 // (CompileContext::defines): otherwise this is the constant true and costs nothing.
 // SB_NON_RECEIVER_DRAWS: the program draws only instances that receive no shadow (a technique that
-// draws its receivers and its non-receivers apart, ShadowMap::drawsNonReceiversApart), so no shadow
+// draws its receivers and its non-receivers apart, techniques/ReceiverSplit.h), so no shadow
 // applies and the lookup is compiled out. llvmpipe (Mesa 22.3.6) runs the lookup under the mask of the
 // branch on colorId.w, so a non-receiver's fragments would otherwise pay for the lookup they discard.
 bool lightCastsShadows(int i) {

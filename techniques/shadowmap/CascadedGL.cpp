@@ -34,8 +34,9 @@ void CascadedGL::compile(const CompileContext& ctx) {
     mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
-    mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/cascaded_lighting.frag", ""}, lit);
-    setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
+    setPermutationKey(
+        mDepthProgram->key() + "|" +
+        mLighting.compile(ctx, {"common/scene.vert", "shadowmap/cascaded_lighting.frag", ""}, lit));
 }
 
 void CascadedGL::renderDepth(FrameContext& ctx) {
@@ -56,7 +57,7 @@ void CascadedGL::renderDepth(FrameContext& ctx) {
 
 void CascadedGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
-    mLightingProgram->use();
+    mLighting.program().use();
     const CascadedMaps::SplitValues v = mPlan.splitValues(properties());
     glUniform4fv(kSplitFarLocation, 1, glm::value_ptr(v.splitFar));
     glUniform4fv(kBandStartLocation, 1, glm::value_ptr(v.bandStart));
@@ -66,7 +67,7 @@ void CascadedGL::renderLighting(FrameContext& ctx) {
                        glm::value_ptr(mPlan.slotShadow()[0]));
     glUniform1iv(kSlotLayerLocation, GLsizei(mPlan.slotLayer().size()), mPlan.slotLayer().data());
     glBindTextureUnit(0, mMaps.texture());
-    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
+    mLighting.draw(ctx.submitter, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
 }
 

@@ -36,6 +36,7 @@
 #include <glm/glm.hpp>
 
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/Cascaded.h"
 #include "techniques/shadowmap/CascadedMaps.h"
@@ -64,7 +65,7 @@ private:
     DepthLayers mMaps{"cascaded"}; ///< GL_TEXTURE_2D_ARRAY, one layer per slot
     std::vector<uint8_t> mKeep;    ///< the depth pass's mask, reused per map
     const Program* mDepthProgram = nullptr;
-    const Program* mLightingProgram = nullptr;
+    LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

@@ -84,11 +84,10 @@ void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
-    std::string litKey = "cascaded-lighting|";
-    GraphicsPipelineDesc lighting = scenePipeline(
-        ctx, "common/scene.vert", "shadowmap/cascaded_lighting.frag", lit, mLightingLayout, litKey);
-    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
-    setPermutationKey(definesKey(base) + "|" + definesKey(lit));
+    const std::string litPermutation =
+        mLighting.build(ctx, "common/scene.vert", "shadowmap/cascaded_lighting.frag", lit, mLightingLayout,
+                        "cascaded-lighting|");
+    setPermutationKey(definesKey(base) + "|" + litPermutation);
 }
 
 void CascadedVulkan::compile(const VulkanCompileContext& ctx) {
@@ -149,7 +148,7 @@ void CascadedVulkan::execute(VulkanFrameContext& ctx) {
         ctx, [&] { renderDepth(ctx); },
         [&] {
             writeLightingBlock();
-            drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
+            mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
         });
     mCounters = mPlan.counters(s, mSize, ctx.scene);
 }

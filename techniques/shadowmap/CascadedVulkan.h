@@ -17,6 +17,7 @@
 
 #include "techniques/shadowmap/CascadedMaps.h"
 #include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -50,7 +51,7 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mDepthPipeline = VK_NULL_HANDLE;
-    ScenePipeline mLightingPipeline;
+    LitPipelines mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

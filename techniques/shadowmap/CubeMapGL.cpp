@@ -49,8 +49,8 @@ void CubeMapGL::compile(const CompileContext& ctx) {
                              : nullptr;
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = CubeMap::lightingDefines(ctx.defines(), p, mLights);
-    mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/cube_lighting.frag", ""}, lit);
-    std::string key = mFaceDepth->key() + "|" + mLighting->key();
+    std::string key = mFaceDepth->key() + "|" +
+                      mLighting.compile(ctx, {"common/scene.vert", "shadowmap/cube_lighting.frag", ""}, lit);
     if (mLayeredDepth) key += "|layered:" + mLayeredDepth->key();
     setPermutationKey(key);
 }
@@ -111,12 +111,12 @@ void CubeMapGL::renderDepth(FrameContext& ctx) {
 
 void CubeMapGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
-    mLighting->use();
+    mLighting.program().use();
     setOmniLightingUniforms(mLights, 0, 1); // flat maps at their index, cubes by cube index
     if (!mFlat.empty()) glBindTextureUnit(kFlatUnit, mFlat.texture());
     if (!mCubes.empty()) glBindTextureUnit(kCubeUnit, mCubes.texture());
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // bilinear footprints and PCF taps cross face edges
-    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
+    mLighting.draw(ctx.submitter, cameraCullView(ctx));
     glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glBindTextureUnit(kFlatUnit, 0);
     glBindTextureUnit(kCubeUnit, 0);

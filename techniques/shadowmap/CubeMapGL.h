@@ -31,6 +31,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/CubeFaces.h"
 #include "techniques/shadowmap/CubeMap.h"
 #include "techniques/shadowmap/DepthLayers.h"
@@ -75,7 +76,7 @@ private:
     int mFacesRendered = 0;
     const Program* mFaceDepth = nullptr;    ///< flat maps and six-pass faces: shadowmap/depth.vert
     const Program* mLayeredDepth = nullptr; ///< cube_depth.vert + cube_depth.geom
-    const Program* mLighting = nullptr;
+    LitPrograms mLighting;                  ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

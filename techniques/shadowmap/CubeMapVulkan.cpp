@@ -184,11 +184,9 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = CubeMap::lightingDefines(ctx.defines(), p, mLights);
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
-    std::string litKey = "cubemap-lighting|";
-    GraphicsPipelineDesc lighting =
-        scenePipeline(ctx, "common/scene.vert", "shadowmap/cube_lighting.frag", lit, mLightingLayout, litKey);
-    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
-    std::string key = definesKey(base) + "|" + definesKey(lit);
+    const std::string litPermutation = mLighting.build(
+        ctx, "common/scene.vert", "shadowmap/cube_lighting.frag", lit, mLightingLayout, "cubemap-lighting|");
+    std::string key = definesKey(base) + "|" + litPermutation;
     if (mLayered) key += "|layered:" + definesKey(base);
     setPermutationKey(key);
 }
@@ -272,7 +270,7 @@ void CubeMapVulkan::execute(VulkanFrameContext& ctx) {
     mFacesRendered = 0;
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); },
-        [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
+        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet)); });
     mCounters = CubeMap::counters(s, mSize, mLights, mFacesRendered, mCulled);
 }
 

@@ -33,6 +33,7 @@
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -94,7 +95,7 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mFaceDepthPipeline = VK_NULL_HANDLE, mLayeredDepthPipeline = VK_NULL_HANDLE;
-    ScenePipeline mLightingPipeline;
+    LitPipelines mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

@@ -28,8 +28,8 @@ void EsmGL::compile(const CompileContext& ctx) {
     Defines lit = ctx.defines();
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
-    mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/esm.frag", ""}, lit);
-    std::string key = mDepthProgram->key() + "|" + mLightingProgram->key();
+    std::string key = mDepthProgram->key() + "|" +
+                      mLighting.compile(ctx, {"common/scene.vert", "shadowmap/esm.frag", ""}, lit);
     const std::string blur = mBlur.compile(ctx.programs, {.kernel = SeparableBlur::Kernel::TexelIntegral,
                                                           .size = int(p.getInt(Esm::kBlur)),
                                                           .mode = SeparableBlur::Mode::LogSpace,
@@ -42,7 +42,7 @@ void EsmGL::compile(const CompileContext& ctx) {
 }
 
 void EsmGL::execute(FrameContext& ctx) {
-    mCounters = mMaps.renderFrame(ctx, *mDepthProgram, kNoOccluder, mBlur, *mLightingProgram, [&] {
+    mCounters = mMaps.renderFrame(ctx, *mDepthProgram, kNoOccluder, mBlur, mLighting, [&] {
         glUniform1f(kExponentLocation, float(properties().getFloat(Esm::kExponent)));
     });
 }

@@ -31,6 +31,7 @@
 // wrong against shadowmap's 0.14%). Point lights need an omni map (`cubemap`, `paraboloid`): refused with
 // ExitCode::Unsupported.
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/gl/SeparableBlur.h"
 #include "techniques/shadowmap/Esm.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
@@ -54,7 +55,7 @@ private:
     FilterableShadowMaps mMaps{"esm"};
     SeparableBlur mBlur;
     const Program* mDepthProgram = nullptr;
-    const Program* mLightingProgram = nullptr;
+    LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

@@ -103,7 +103,7 @@ void FilterableShadowMaps::setLightingUniforms() const {
 }
 
 Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& depth, const glm::vec4& clear,
-                                           SeparableBlur& blur, const Program& lighting,
+                                           SeparableBlur& blur, const LitPrograms& lighting,
                                            const std::function<void()>& setUniforms) {
     ctx.submitter.resetStats();
     double blurTexels = 0.0;
@@ -122,11 +122,11 @@ Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& dep
     }
     ctx.passes.begin("lighting");
     ctx.targets.bind();
-    lighting.use();
+    lighting.program().use();
     setLightingUniforms();
     setUniforms();
     glBindTextureUnit(0, texture());
-    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
+    lighting.draw(ctx.submitter, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
     return mFits.counters(ctx.submitter.stats(), resolution(), blurTexels, castersCulled());
 }

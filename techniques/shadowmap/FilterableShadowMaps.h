@@ -59,6 +59,7 @@
 #include <glm/glm.hpp>
 
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/gl/SeparableBlur.h"
 #include "techniques/shadowmap/MomentMapFits.h"
 
@@ -99,10 +100,11 @@ public:
     /// One frame of a moment technique (`vsm`, `esm`, which differ only in programs, blur mode and the
     /// lighting's own uniforms): resets the submit stats; pass "depth", render() with `depth` and
     /// `clear`; pass "blur", `blur` over the layers a caster reached; pass "lighting", the frame targets
-    /// bound, `lighting` used, setLightingUniforms(), `setUniforms` for the technique's own, the maps on
-    /// unit 0, everything drawn. Returns the frame's counters (MomentMapFits::counters).
+    /// bound, `lighting`'s program used, setLightingUniforms(), `setUniforms` for the technique's own,
+    /// the maps on unit 0, everything drawn (LitPrograms::draw). Returns the frame's counters
+    /// (MomentMapFits::counters).
     Counters renderFrame(FrameContext& ctx, const Program& depth, const glm::vec4& clear, SeparableBlur& blur,
-                         const Program& lighting, const std::function<void()>& setUniforms);
+                         const LitPrograms& lighting, const std::function<void()>& setUniforms);
 
     int layers() const { return mLayers; }
     int resolution() const { return mResolution; }

@@ -48,9 +48,10 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
     mBeyondRim = Paraboloid::beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = Paraboloid::lightingDefines(ctx.defines(), p, mLights);
-    mLighting = &ctx.programs.get({"common/scene.vert", "shadowmap/paraboloid_lighting.frag", ""}, lit);
+    const std::string litKey =
+        mLighting.compile(ctx, {"common/scene.vert", "shadowmap/paraboloid_lighting.frag", ""}, lit);
     setPermutationKey(mFlatDepth->key() + "|" + mParaboloidDepth->key() + "|" + mSplitDepth->key() + "|" +
-                      mLighting->key());
+                      litKey);
 }
 
 // The depth passes draw both faces: the paraboloid warp in the vertex stage is not a linear projection,
@@ -109,10 +110,10 @@ void ParaboloidGL::renderDepth(FrameContext& ctx) {
 
 void ParaboloidGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
-    mLighting->use();
+    mLighting.program().use();
     setOmniLightingUniforms(mLights, flatBase(), 2);
     if (!mMaps.empty()) glBindTextureUnit(kMapUnit, mMaps.texture());
-    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
+    mLighting.draw(ctx.submitter, cameraCullView(ctx));
     glBindTextureUnit(kMapUnit, 0);
 }
 

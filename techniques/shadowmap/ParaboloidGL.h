@@ -44,6 +44,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
@@ -84,7 +85,7 @@ private:
     const Program* mParaboloidDepth = nullptr; ///< paraboloid_depth.vert
     const Program* mSplitDepth = nullptr;      ///< cube_depth.vert + paraboloid_split.geom
     bool mSplit = true;                        ///< property split: route wide casters through mSplitDepth
-    const Program* mLighting = nullptr;
+    LitPrograms mLighting;                     ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

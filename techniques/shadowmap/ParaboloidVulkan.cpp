@@ -185,12 +185,11 @@ void ParaboloidVulkan::compile(const VulkanCompileContext& ctx) {
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = Paraboloid::lightingDefines(ctx.defines(), p, mLights);
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
-    std::string litKey = "paraboloid-lighting|";
-    GraphicsPipelineDesc lighting = scenePipeline(
-        ctx, "common/scene.vert", "shadowmap/paraboloid_lighting.frag", lit, mLightingLayout, litKey);
-    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
+    const std::string litPermutation =
+        mLighting.build(ctx, "common/scene.vert", "shadowmap/paraboloid_lighting.frag", lit, mLightingLayout,
+                        "paraboloid-lighting|");
     const std::string depthKey = definesKey(ctx.submitter.defines());
-    setPermutationKey(depthKey + "|" + depthKey + "|" + depthKey + "|" + definesKey(lit));
+    setPermutationKey(depthKey + "|" + depthKey + "|" + depthKey + "|" + litPermutation);
 }
 
 void ParaboloidVulkan::bindSlot(VulkanFrameContext& ctx, uint32_t slot) {
@@ -256,7 +255,7 @@ void ParaboloidVulkan::execute(VulkanFrameContext& ctx) {
     mHemispheresRendered = 0;
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); },
-        [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
+        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet)); });
     mCounters = Paraboloid::counters(s, mLayers > 0 ? mSize : 0, mLayers, mLights, mHemispheresRendered,
                                      mCulled, mSplitDrawn);
 }

@@ -29,6 +29,7 @@
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/shadowmap/ParaboloidSplitting.h"
 #include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -83,7 +84,7 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mFlatDepth = VK_NULL_HANDLE, mParaboloidDepth = VK_NULL_HANDLE, mSplitDepth = VK_NULL_HANDLE;
-    ScenePipeline mLightingPipeline;
+    LitPipelines mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

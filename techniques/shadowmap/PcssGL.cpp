@@ -88,8 +88,8 @@ void PcssGL::compile(const CompileContext& ctx) {
     Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(layers);
-    mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/pcss.frag", ""}, lit);
-    setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key());
+    setPermutationKey(mDepthProgram->key() + "|" +
+                      mLighting.compile(ctx, {"common/scene.vert", "shadowmap/pcss.frag", ""}, lit));
 }
 
 void PcssGL::renderDepth(FrameContext& ctx) {
@@ -117,7 +117,7 @@ void PcssGL::uploadLightUniforms() const {
 
 void PcssGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
-    mLightingProgram->use();
+    mLighting.program().use();
     setFlatShadowMatrices(mLights);
     uploadLightUniforms();
     // One texture, two samplers: raw depths for the blocker search, comparison for the filter.
@@ -125,7 +125,7 @@ void PcssGL::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(kCompareUnit, mMaps.texture());
     glBindSampler(kSearchUnit, mSearchSampler);
     glBindSampler(kCompareUnit, mCompareSampler);
-    ctx.submitter.drawCulled(DrawSet::All, cameraCullView(ctx));
+    mLighting.draw(ctx.submitter, cameraCullView(ctx));
     glBindSampler(kSearchUnit, 0);
     glBindSampler(kCompareUnit, 0);
     glBindTextureUnit(kSearchUnit, 0);

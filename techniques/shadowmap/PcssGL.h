@@ -40,6 +40,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
@@ -77,7 +78,7 @@ private:
     std::vector<uint8_t> mKeep; ///< the depth pass's mask, reused per light
     size_t mCulled = 0;         ///< casters culled over all lights, last frame
     const Program* mDepthProgram = nullptr;
-    const Program* mLightingProgram = nullptr;
+    LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

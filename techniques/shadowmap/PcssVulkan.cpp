@@ -146,11 +146,9 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLayers);
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
-    std::string litKey = "pcss-lighting|";
-    GraphicsPipelineDesc lighting =
-        scenePipeline(ctx, "common/scene.vert", "shadowmap/pcss.frag", lit, mLightingLayout, litKey);
-    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
-    setPermutationKey(definesKey(base) + "|" + definesKey(lit));
+    const std::string litPermutation = mLighting.build(ctx, "common/scene.vert", "shadowmap/pcss.frag", lit,
+                                                       mLightingLayout, "pcss-lighting|");
+    setPermutationKey(definesKey(base) + "|" + litPermutation);
 }
 
 void PcssVulkan::renderDepth(VulkanFrameContext& ctx) {
@@ -172,7 +170,7 @@ void PcssVulkan::renderDepth(VulkanFrameContext& ctx) {
 void PcssVulkan::execute(VulkanFrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); },
-        [&] { drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet)); });
+        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet)); });
     mCounters =
         Pcss::counters(s, mSize, mLights, mCulled, mBlockerKernel.size(), mFilterKernel.size(), mParams);
 }

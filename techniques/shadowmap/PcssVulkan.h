@@ -18,6 +18,7 @@
 #include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
 #include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -55,7 +56,7 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mDepthPipeline = VK_NULL_HANDLE;
-    ScenePipeline mLightingPipeline;
+    LitPipelines mLighting; ///< the lighting pass (non-receivers apart where they can be)
     std::vector<glm::vec2> mBlockerKernel, mFilterKernel; ///< unit-disk Poisson taps
     Counters mCounters;
 };

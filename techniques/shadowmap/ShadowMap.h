@@ -29,15 +29,6 @@ struct ShadowMap {
     /// program is the one before these knobs existed; the non-grid kernels take their taps as uniforms and
     /// ignore pcf, so neither `taps` nor `pcf` multiplies their programs.
     static Defines lightingDefines(Defines scene, const PropertySet& p, int layers);
-    /// Whether the lighting pass draws the scene's receivers and its non-receivers with two programs, the
-    /// second without the lookup (SB_NON_RECEIVER_DRAWS, shaders/common/lighting.glsl): when the scene has
-    /// both, and drawing every receiver before every non-receiver keeps the order of DrawSet::All's draws
-    /// in submission mode `mode` (scene order; for instanced draws mesh by mesh, scene order within a
-    /// mesh), so that a depth tie between the two resolves as with one program and the image is the same.
-    static bool drawsNonReceiversApart(const Scene& scene, SubmitMode mode);
-    /// The defines of one of those two programs: `lit` (lightingDefines of a scene with non-receivers)
-    /// for the receivers alone (no per-fragment receiver test) or for the non-receivers alone.
-    static Defines splitReceiverDefines(Defines lit, bool receivers);
     /// The kernel's tap offsets in texels for `p` (empty: the grid kernel, pcf x pcf, a define).
     static std::vector<glm::vec2> kernelOffsets(const PropertySet& p);
     /// Per light, the world size of a map texel at w = 1 (`texelWorld`), and `view`'s receivers and

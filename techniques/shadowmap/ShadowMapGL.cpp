@@ -61,15 +61,7 @@ void ShadowMapGL::compile(const CompileContext& ctx) {
     mCull = p.getBool(ShadowMap::kCull);
     fitTexels(ctx.scene);
     const ShaderSources lighting{"common/scene.vert", "shadowmap/lighting.frag", ""};
-    mNonReceiverProgram = nullptr;
-    if (ShadowMap::drawsNonReceiversApart(ctx.scene, ctx.submitter.mode())) {
-        mLightingProgram = &ctx.programs.get(lighting, ShadowMap::splitReceiverDefines(lit, true));
-        mNonReceiverProgram = &ctx.programs.get(lighting, ShadowMap::splitReceiverDefines(lit, false));
-    } else {
-        mLightingProgram = &ctx.programs.get(lighting, lit);
-    }
-    setPermutationKey(mDepthProgram->key() + "|" + mLightingProgram->key() +
-                      (mNonReceiverProgram ? "|" + mNonReceiverProgram->key() : ""));
+    setPermutationKey(mDepthProgram->key() + "|" + mLighting.compile(ctx, lighting, lit));
 }
 
 void ShadowMapGL::sceneChanged(const Scene& scene, uint32_t) {
@@ -96,7 +88,7 @@ void ShadowMapGL::renderDepth(FrameContext& ctx) {
 
 void ShadowMapGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
-    mLightingProgram->use();
+    mLighting.program().use();
     setFlatShadowMatrices(mLights);
     if (mNormalOffset > 0.0f) {
         glUniform1fv(kTexelWorldLocation, GLsizei(mTexelWorld.size()), mTexelWorld.data());
@@ -107,14 +99,7 @@ void ShadowMapGL::renderLighting(FrameContext& ctx) {
         glUniform2fv(kKernelLocation, GLsizei(mKernel.size()), glm::value_ptr(mKernel[0]));
     }
     glBindTextureUnit(0, mMaps.texture());
-    const CullView view = cameraCullView(ctx);
-    if (mNonReceiverProgram) {
-        ctx.submitter.drawCulled(DrawSet::Receivers, view);
-        mNonReceiverProgram->use(); // reads neither the map nor the shadow matrices: nothing to set
-        ctx.submitter.drawCulled(DrawSet::NonReceivers, view);
-    } else {
-        ctx.submitter.drawCulled(DrawSet::All, view);
-    }
+    mLighting.draw(ctx.submitter, cameraCullView(ctx));
     glBindTextureUnit(0, 0);
 }
 

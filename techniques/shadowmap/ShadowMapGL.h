@@ -31,6 +31,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/ShadowMap.h"
@@ -65,10 +66,7 @@ private:
     bool mCull = true;              ///< leave out casters whose shadow cannot reach the view
     ViewCull mView;                 ///< for mCull: the lights, the receivers, the margins
     const Program* mDepthProgram = nullptr;
-    const Program* mLightingProgram = nullptr;
-    /// The non-receivers' lighting program when they are drawn apart (ShadowMap::drawsNonReceiversApart;
-    /// mLightingProgram then draws the receivers), else null.
-    const Program* mNonReceiverProgram = nullptr;
+    LitPrograms mLighting; ///< the lighting pass's programs (non-receivers apart where they can be)
     Counters mCounters;
 };
 

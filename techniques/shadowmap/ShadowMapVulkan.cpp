@@ -129,22 +129,9 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     fitTexels(ctx.scene);
     writeLightingBlock(float(ctx.targets.height()));
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
-    mSplit = ShadowMap::drawsNonReceiversApart(ctx.scene, ctx.submitter.mode());
-    const Defines receivers = mSplit ? ShadowMap::splitReceiverDefines(lit, true) : lit;
-    std::string litKey = "shadowmap-lighting|";
-    GraphicsPipelineDesc lighting = scenePipeline(ctx, "common/scene.vert", "shadowmap/lighting.frag",
-                                                  receivers, mLightingLayout, litKey);
-    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
-    std::string permutation = definesKey(base) + "|" + definesKey(receivers);
-    if (mSplit) {
-        const Defines nonReceivers = ShadowMap::splitReceiverDefines(lit, false);
-        std::string key = "shadowmap-lighting|";
-        GraphicsPipelineDesc desc = scenePipeline(ctx, "common/scene.vert", "shadowmap/lighting.frag",
-                                                  nonReceivers, mLightingLayout, key);
-        mNonReceiverPipeline.build(ctx.pipelines, key, desc, ctx.targets);
-        permutation += "|" + definesKey(nonReceivers);
-    }
-    setPermutationKey(permutation);
+    setPermutationKey(definesKey(base) + "|" +
+                      mLighting.build(ctx, "common/scene.vert", "shadowmap/lighting.frag", lit,
+                                      mLightingLayout, "shadowmap-lighting|"));
 }
 
 void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
@@ -165,22 +152,7 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
 }
 
 void ShadowMapVulkan::renderLighting(VulkanFrameContext& ctx) {
-    if (!mSplit) {
-        drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
-        return;
-    }
-    // drawLitScene's pass with two draws: the pipelines share the layout, so set 1 stays bound.
-    ctx.targets.beginPass(ctx.cmd);
-    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingPipeline.get(ctx.targets));
-    ctx.frame.bind(ctx.cmd, mLightingLayout, ctx.frameOffset);
-    const VkDescriptorSet set = mSets.set(kLightingSet);
-    vkCmdBindDescriptorSets(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLightingLayout, 1, 1, &set, 0,
-                            nullptr);
-    const CullView view = cameraCullView(ctx);
-    ctx.submitter.drawCulled(ctx.cmd, mLightingLayout, DrawSet::Receivers, view, true);
-    vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mNonReceiverPipeline.get(ctx.targets));
-    ctx.submitter.drawCulled(ctx.cmd, mLightingLayout, DrawSet::NonReceivers, view, true);
-    vkCmdEndRenderPass(ctx.cmd);
+    mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
 }
 
 void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {

@@ -16,6 +16,7 @@
 #include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -38,7 +39,7 @@ private:
     void fitTexels(const Scene& scene);
     void writeLightingBlock(float targetHeight);
     void renderDepth(VulkanFrameContext& ctx);
-    /// drawLitScene's pass, with the non-receivers drawn apart where mSplit says so.
+    /// The lit pass (LitPipelines::draw: the non-receivers apart where they can be).
     void renderLighting(VulkanFrameContext& ctx);
 
     VkDevice mDevice = VK_NULL_HANDLE;
@@ -53,10 +54,7 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mDepthPipeline = VK_NULL_HANDLE;
-    ScenePipeline mLightingPipeline;
-    /// ShadowMap::drawsNonReceiversApart: mLightingPipeline draws the receivers, this the non-receivers.
-    ScenePipeline mNonReceiverPipeline;
-    bool mSplit = false;
+    LitPipelines mLighting;
 
     std::vector<glm::vec2> mKernel;
     std::vector<float> mTexelWorld;

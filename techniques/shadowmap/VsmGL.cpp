@@ -30,8 +30,8 @@ void VsmGL::compile(const CompileContext& ctx) {
     Defines lit = ctx.defines();
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
-    mLightingProgram = &ctx.programs.get({"common/scene.vert", "shadowmap/vsm.frag", ""}, lit);
-    std::string key = mDepthProgram->key() + "|" + mLightingProgram->key();
+    std::string key = mDepthProgram->key() + "|" +
+                      mLighting.compile(ctx, {"common/scene.vert", "shadowmap/vsm.frag", ""}, lit);
     const std::string blur = mBlur.compile(ctx.programs, {.kernel = SeparableBlur::Kernel::TexelIntegral,
                                                           .size = int(p.getInt(Vsm::kBlur)),
                                                           .mode = SeparableBlur::Mode::Linear,
@@ -43,7 +43,7 @@ void VsmGL::compile(const CompileContext& ctx) {
 }
 
 void VsmGL::execute(FrameContext& ctx) {
-    mCounters = mMaps.renderFrame(ctx, *mDepthProgram, kNoOccluder, mBlur, *mLightingProgram, [&] {
+    mCounters = mMaps.renderFrame(ctx, *mDepthProgram, kNoOccluder, mBlur, mLighting, [&] {
         const PropertySet& p = properties();
         glUniform1f(kMinVarianceLocation, float(p.getFloat(Vsm::kMinVariance)));
         glUniform1f(kBleedReductionLocation, float(p.getFloat(Vsm::kBleedReduction)));

@@ -31,6 +31,7 @@
 // against shadowmap's 0.14% at 2048 (0.26% at 1024); the accuracy sweep walks 256..4096.
 // Point lights need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/LitPrograms.h"
 #include "techniques/gl/SeparableBlur.h"
 #include "techniques/shadowmap/FilterableShadowMaps.h"
 #include "techniques/shadowmap/Vsm.h"
@@ -54,7 +55,7 @@ private:
     FilterableShadowMaps mMaps{"vsm"};
     SeparableBlur mBlur;
     const Program* mDepthProgram = nullptr;
-    const Program* mLightingProgram = nullptr;
+    LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;
 };
 

@@ -211,11 +211,9 @@ void VulkanMomentMaps::createPipelines(const VulkanCompileContext& ctx) {
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mLayers);
     mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
-    std::string litKey = mOwner + "-lighting|";
-    GraphicsPipelineDesc lighting =
-        scenePipeline(ctx, "common/scene.vert", mSettings.lightingFragment, lit, mLightingLayout, litKey);
-    mLightingPipeline.build(ctx.pipelines, litKey, lighting, ctx.targets);
-    mKey = definesKey(mSettings.depthDefines) + "|" + definesKey(lit);
+    const std::string litPermutation = mLighting.build(ctx, "common/scene.vert", mSettings.lightingFragment,
+                                                       lit, mLightingLayout, mOwner + "-lighting|");
+    mKey = definesKey(mSettings.depthDefines) + "|" + litPermutation;
 }
 
 std::string VulkanMomentMaps::compile(const VulkanCompileContext& ctx, const Settings& settings) {
@@ -308,7 +306,7 @@ Counters VulkanMomentMaps::renderFrame(VulkanFrameContext& ctx) {
         }
     }
     ctx.passes.begin("lighting");
-    drawLitScene(ctx, mLightingPipeline, mLightingLayout, mSets.set(kLightingSet));
+    mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
     return mFits.counters(ctx.submitter.stats(), mSettings.resolution, blurTexels, mCulled);
 }
 

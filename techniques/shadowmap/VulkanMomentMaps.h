@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "techniques/shadowmap/MomentMapFits.h"
+#include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanSeparableBlur.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
@@ -85,7 +86,7 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mCasterPipeline = VK_NULL_HANDLE, mBackgroundPipeline = VK_NULL_HANDLE;
-    ScenePipeline mLightingPipeline;
+    LitPipelines mLighting; ///< the lighting pass (non-receivers apart where they can be)
     std::string mKey;
     VulkanSeparableBlur mBlur;
     std::vector<uint8_t> mKeep, mKeepBackground, mHasCasters;
