@@ -11,7 +11,7 @@ namespace sb {
 void InstanceCulling::setScene(const Scene& scene) {
     mScene = &scene;
     mMeshBounds.clear();
-    for (const Mesh& mesh : scene.meshes) mMeshBounds.push_back(mesh.computeBounds());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds.push_back(scene.meshBoundsOf(m));
     mBounds.assign(scene.instances.size(), Aabb{});
     mSetCount.fill(0);
     for (const Instance& inst : scene.instances)

@@ -132,9 +132,18 @@ Aabb Scene::computeBounds(bool castersOnly) const {
     for (const auto& instance : instances) {
         if (castersOnly && !instance.castsShadow) continue;
         if (instance.mesh >= meshes.size()) continue;
-        bounds.extend(transformBounds(meshes[instance.mesh].computeBounds(), instance.model));
+        bounds.extend(transformBounds(meshBoundsOf(instance.mesh), instance.model));
     }
     return bounds;
+}
+
+Aabb Scene::meshBoundsOf(size_t mesh) const {
+    return meshBounds.size() == meshes.size() ? meshBounds[mesh] : meshes[mesh].computeBounds();
+}
+
+void Scene::cacheMeshBounds() {
+    meshBounds.clear();
+    for (const Mesh& mesh : meshes) meshBounds.push_back(mesh.computeBounds());
 }
 
 const CameraPreset* Scene::findCamera(const std::string& cameraName) const {

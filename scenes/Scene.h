@@ -124,11 +124,21 @@ struct Scene {
     /// The scene file's "motion" (scenes/Motion.h), or null for a static scene. Shared: copies of a
     /// scene (the harness keeps one at rest) move along the same paths.
     std::shared_ptr<const Motion> motion;
+    /// Each mesh's model-space bounds, filled at load (SceneLoader: cacheMeshBounds) because meshes never
+    /// change afterwards; motion moves instances, not vertices. Then every bounds query of a frame in
+    /// motion (light fits, culling) transforms 8 corners per instance instead of reading every vertex.
+    /// Empty, or not one per mesh (a scene built or extended in code): meshBoundsOf reads the vertices.
+    /// Code that edits a loaded mesh's vertices clears it.
+    std::vector<Aabb> meshBounds;
 
     /// Recomputes Instance::model and objectId from position/rotation/scale.
     void updateTransforms();
     /// World-space bounds of all instances (or only casters).
     Aabb computeBounds(bool castersOnly = false) const;
+    /// Mesh `mesh`'s model-space bounds: meshBounds's entry where it holds one per mesh, else computed.
+    Aabb meshBoundsOf(size_t mesh) const;
+    /// Fills meshBounds from the meshes' vertices.
+    void cacheMeshBounds();
     const CameraPreset* findCamera(const std::string& name) const;
     /// Hash over everything that changes an image (geometry, instances, lights, cameras, motion), hex
     /// string. Of a scene in motion, hash the scene at rest (the harness's Harness::contentHash()).

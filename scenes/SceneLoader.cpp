@@ -1124,6 +1124,7 @@ Scene SceneLoader::parse(const std::string& jsonText, const std::string& sourceN
     if (options.lightType) overrideLightType(ctx.scene, *options.lightType);
     if (options.lighting) ctx.scene.lighting = *options.lighting;
     if (ctx.scene.motion && ctx.scene.motion->sun) placeSun(ctx.scene);
+    ctx.scene.cacheMeshBounds();
     return std::move(ctx.scene);
 }
 

@@ -38,7 +38,7 @@ void BlobGL::setScene(const Scene& scene) {
                   << "' has no ground plane (a planar instance facing up that receives and casts no shadow): "
                      "nothing is shadowed\n";
     mMeshBounds.clear();
-    for (const Mesh& m : scene.meshes) mMeshBounds.push_back(m.computeBounds());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds.push_back(scene.meshBoundsOf(m));
     mReceiver.upload(mGround ? std::vector<ReceiverPlane>{*mGround} : std::vector<ReceiverPlane>{});
     glCreateVertexArrays(1, &mEmptyVao);
     glCreateBuffers(1, &mBlobBuffer);

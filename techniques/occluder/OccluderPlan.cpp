@@ -46,7 +46,7 @@ std::vector<glm::vec3> lightsInObjectSpace(const Scene& scene, uint32_t mesh) {
     for (const Instance& inst : scene.instances)
         if (inst.mesh == mesh) instances.push_back(&inst);
     const size_t step = std::max<size_t>(1, (instances.size() + 7) / 8);
-    const Aabb bounds = scene.meshes[mesh].computeBounds();
+    const Aabb bounds = scene.meshBoundsOf(mesh);
     const glm::vec3 centre = bounds.center();
     std::vector<glm::vec3> out;
     for (size_t i = 0; i < instances.size(); i += step) {

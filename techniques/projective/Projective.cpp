@@ -57,7 +57,7 @@ Aabb receiverBounds(const Scene& scene) {
     Aabb bounds;
     for (const Instance& inst : scene.instances)
         if (!inst.castsShadow && inst.mesh < scene.meshes.size())
-            bounds.extend(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+            bounds.extend(transformBounds(scene.meshBoundsOf(inst.mesh), inst.model));
     return bounds;
 }
 

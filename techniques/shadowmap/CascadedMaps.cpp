@@ -51,7 +51,7 @@ void CascadedMaps::setScene(const Scene& scene, int cascades) {
     mReceivers.clear();
     for (const Instance& inst : scene.instances)
         if (inst.receivesShadow && inst.mesh < scene.meshes.size())
-            mReceivers.push_back(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+            mReceivers.push_back(transformBounds(scene.meshBoundsOf(inst.mesh), inst.model));
     mSlotViewProj.assign(size_t(slotCount()), glm::mat4(1.0f));
     mSlotShadow.assign(size_t(slotCount()), glm::mat4(1.0f));
     mSlotLayer.assign(size_t(slotCount()), 0);

@@ -68,7 +68,7 @@ std::vector<glm::dvec3> cornersInFrustum(const Scene& scene, const glm::mat4& vi
     std::vector<glm::dvec3> out;
     for (const Instance& inst : scene.instances) {
         if (inst.mesh >= scene.meshes.size()) continue;
-        const Aabb box = transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model);
+        const Aabb box = transformBounds(scene.meshBoundsOf(inst.mesh), inst.model);
         if (box.empty()) continue;
         const std::vector<glm::dvec3> c = clippedCorners(box, viewProj);
         out.insert(out.end(), c.begin(), c.end());
@@ -141,7 +141,7 @@ void MomentMapFits::fitLights(const Scene& scene) {
     mReceiverBounds = Aabb{};
     for (const Instance& inst : scene.instances)
         if (inst.receivesShadow && inst.mesh < scene.meshes.size())
-            mReceiverBounds.extend(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+            mReceiverBounds.extend(transformBounds(scene.meshBoundsOf(inst.mesh), inst.model));
     mViewProj.clear(); // fit() makes them
     mMarginTexels = -1;
     mFitResolution = 0;

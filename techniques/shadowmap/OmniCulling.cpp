@@ -20,8 +20,7 @@ void OmniCulling::setScene(const Scene& scene) {
     mCasts.clear();
     for (const Instance& inst : scene.instances) {
         const bool valid = inst.mesh < scene.meshes.size();
-        mBounds.push_back(valid ? transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model)
-                                : Aabb{});
+        mBounds.push_back(valid ? transformBounds(scene.meshBoundsOf(inst.mesh), inst.model) : Aabb{});
         mCasts.push_back(valid && inst.castsShadow ? 1 : 0);
     }
     mCasters = size_t(std::count(mCasts.begin(), mCasts.end(), uint8_t(1)));

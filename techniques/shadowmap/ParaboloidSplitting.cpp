@@ -44,8 +44,7 @@ void ParaboloidSplitting::setScene(const Scene& scene) {
     mLongestEdge.clear();
     for (const Instance& inst : scene.instances) {
         const bool valid = inst.mesh < scene.meshes.size();
-        mBounds.push_back(valid ? transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model)
-                                : Aabb{});
+        mBounds.push_back(valid ? transformBounds(scene.meshBoundsOf(inst.mesh), inst.model) : Aabb{});
         mLongestEdge.push_back(valid ? mMeshLongestEdge[inst.mesh] * largestScale(inst.model) : 0.0f);
     }
 }

@@ -28,7 +28,7 @@ PointLightFit PointLightFit::fit(const Scene& scene, const Light& light) {
     f.nearZ = std::min(1e-3f * radius, 1e-2f * f.farZ);
     for (const Instance& inst : scene.instances) {
         if (!inst.castsShadow || inst.mesh >= scene.meshes.size()) continue;
-        const Aabb box = transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model);
+        const Aabb box = transformBounds(scene.meshBoundsOf(inst.mesh), inst.model);
         if (distanceToBox(light.position, box) < f.farZ) {
             f.castsShadow = true;
             break;

@@ -112,7 +112,7 @@ void ShadowMap::fitTexels(const Scene& scene, const FlatLightFits& lights, int m
     view.reach.receivers = Aabb{};
     for (const Instance& inst : scene.instances)
         if (inst.receivesShadow && inst.mesh < scene.meshes.size())
-            view.reach.receivers.extend(transformBounds(scene.meshes[inst.mesh].computeBounds(), inst.model));
+            view.reach.receivers.extend(transformBounds(scene.meshBoundsOf(inst.mesh), inst.model));
     view.margins.clear();
     for (size_t i = 0; i < lights.viewProj().size(); ++i)
         view.margins.push_back(texels * texelWorld[i] *

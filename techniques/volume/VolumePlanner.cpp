@@ -125,7 +125,7 @@ void VolumePlanner::checkClosed(const Scene& scene) const {
 void VolumePlanner::setScene(const Scene& scene) {
     mHasNonReceivers = scene.hasNonReceivers();
     mMeshBounds.resize(scene.meshes.size());
-    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds[m] = scene.meshes[m].computeBounds();
+    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds[m] = scene.meshBoundsOf(m);
     placeCasters(scene);
 }
 
