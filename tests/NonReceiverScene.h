@@ -35,4 +35,15 @@ inline std::string nonReceiverScene(bool receiverFirst) {
     return path;
 }
 
+// Every member of the family whose lighting pass looks its map up per fragment, as the tests of the split
+// on both APIs run it (techniques/ReceiverSplit.h). Small maps: the image's equality is what is tested,
+// not the shadow's accuracy.
+inline const char* const kNonReceiverSplitSpecs[] = {"shadowmap",
+                                                     "pcss:resolution=512",
+                                                     "cubemap:resolution=256",
+                                                     "paraboloid:resolution=512",
+                                                     "cascaded:resolution=512",
+                                                     "vsm:resolution=512",
+                                                     "esm:resolution=512"};
+
 } // namespace sb::test

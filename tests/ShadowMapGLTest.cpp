@@ -158,18 +158,9 @@ int lastProgramSamplers() {
 }
 
 // Every member of the family whose lighting pass looks its map up per fragment draws the non-receivers
-// apart (techniques/ReceiverSplit.h, techniques/gl/LitPrograms.h). Small maps: the image's
-// equality is what is tested, not the shadow's accuracy.
-const char* const kSplitSpecs[] = {"shadowmap",
-                                   "pcss:resolution=512",
-                                   "cubemap:resolution=256",
-                                   "paraboloid:resolution=512",
-                                   "cascaded:resolution=512",
-                                   "vsm:resolution=512",
-                                   "esm:resolution=512"};
-
+// apart (techniques/ReceiverSplit.h, techniques/gl/LitPrograms.h).
 TEST(ShadowMapGL, NonReceiversDrawnLastSkipTheLookupWithTheSameImage) {
-    for (const char* spec : kSplitSpecs) {
+    for (const char* spec : test::kNonReceiverSplitSpecs) {
         // shadowmap in every mode; the others where the draw order differs (scene order, mesh by mesh).
         const bool all = std::string(spec) == "shadowmap";
         for (SubmitMode mode : kAllSubmitModes) {

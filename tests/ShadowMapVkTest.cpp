@@ -80,16 +80,9 @@ INSTANTIATE_TEST_SUITE_P(Volume, VolumeSphereShadowVulkan, ::testing::ValuesIn(k
 // The non-receivers drawn apart on Vulkan by every member of the family whose lighting pass looks its
 // map up per fragment (tests/ShadowMapGLTest.cpp has the GL form and the exact measure): the pipeline
 // without the lookup is used, and the image equals the one-pipeline control's, bit for bit, in both
-// Vulkan submission modes. Small maps: the image's equality is what is tested.
+// Vulkan submission modes.
 TEST(ShadowMapVulkan, NonReceiversDrawnLastGiveTheSameImage) {
-    const char* const specs[] = {"shadowmap",
-                                 "pcss:resolution=512",
-                                 "cubemap:resolution=256",
-                                 "paraboloid:resolution=512",
-                                 "cascaded:resolution=512",
-                                 "vsm:resolution=512",
-                                 "esm:resolution=512"};
-    for (const char* spec : specs)
+    for (const char* spec : test::kNonReceiverSplitSpecs)
         for (SubmitMode mode : {SubmitMode::Retained, SubmitMode::Instanced}) {
             SCOPED_TRACE(std::string(spec) + " " + submitModeName(mode));
             test::VulkanFrame apart(test::quickConfig(test::nonReceiverScene(true), "view", 128, mode), spec);
