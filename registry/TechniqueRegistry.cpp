@@ -42,9 +42,12 @@ namespace sb {
 
 namespace {
 
-/// What a hybrid's role may name: every shadow technique, not the judge, the workloads or itself.
+/// What a hybrid's role may name: every shadow technique, not the judge, the workloads or itself, and
+/// only one with a form on both APIs: the hybrid's declaration, its roles' choices included, is the same
+/// on both.
 bool isHybridPart(const std::string& name) {
-    return name != "hybrid" && name != "reference" && name != "synthetic";
+    return name != "hybrid" && name != "reference" && name != "synthetic" &&
+           TechniqueRegistry::has(name, Api::GL) && TechniqueRegistry::has(name, Api::Vulkan);
 }
 
 std::vector<std::string> partNames() {
@@ -150,7 +153,23 @@ std::unique_ptr<Technique> TechniqueRegistry::create(const TechniqueSpec& spec, 
 }
 
 std::unique_ptr<GlTechnique> TechniqueRegistry::create(const std::string& name) {
-    return entryOf(name).gl();
+    const Entry& e = entryOf(name);
+    if (!e.gl)
+        throw Error(e.glRefusal ? std::string(e.glRefusal)
+                                : name + " has no GL form; run it with --api vulkan",
+                    ExitCode::Unsupported);
+    return e.gl();
+}
+
+std::unique_ptr<Technique> TechniqueRegistry::describe(const TechniqueSpec& spec) {
+    const Entry& e = entryOf(spec.name);
+    std::unique_ptr<Technique> t;
+    if (e.gl)
+        t = e.gl();
+    else
+        t = e.vulkan();
+    apply(*t, spec);
+    return t;
 }
 
 std::unique_ptr<GlTechnique> TechniqueRegistry::create(const TechniqueSpec& spec) {
