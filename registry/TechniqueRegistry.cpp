@@ -19,6 +19,8 @@
 #include "techniques/projective/ProjectiveVulkan.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/proxy/ProxyVulkan.h"
+#include "techniques/raytraced/RayTraced.h"
+#include "techniques/raytraced/RayTracedVulkan.h"
 #include "techniques/shadowmap/CascadedGL.h"
 #include "techniques/shadowmap/CascadedVulkan.h"
 #include "techniques/shadowmap/CubeMapGL.h"
@@ -98,6 +100,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); },
          [] { return std::unique_ptr<VulkanTechnique>(new HybridVulkan(createVulkanPart, partNames())); }},
+        // Ray queries are Vulkan's: no GL form.
+        {"raytraced", nullptr, vulkan<RayTracedVulkan>, RayTraced::kGlRefusal},
         {"reference", gl<ReferenceGL>, vulkan<ReferenceVulkan>},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", gl<SyntheticGL>, vulkan<SyntheticVulkan>},
