@@ -1,6 +1,7 @@
 #pragma once
-// The hard-case table (tests/hard/HardCaseTest.cpp runs it on GL, tests/hard/HardCaseVkTest.cpp the rows
-// of techniques with a Vulkan form on Vulkan): scenes and viewpoints where shadow techniques are known
+// The hard-case table (tests/hard/HardCaseTest.cpp runs the rows of techniques with a GL form on GL,
+// tests/hard/HardCaseVkTest.cpp those with a Vulkan form on Vulkan; a row that names a driver runs in a
+// child process on it, tests/SecondDriver.h): scenes and viewpoints where shadow techniques are known
 // to break, each judged against the exact Embree reference at the same pixels with bounds that must hold.
 // Every technique adds its rows here. Bounds are the measured values on Mesa llvmpipe with headroom, and
 // each says why that number; NaN/Inf/out-of-range counts must be zero everywhere.
@@ -36,6 +37,10 @@ struct HardCase {
     /// shadow at all (visibility 1 on the same judged samples) by at most this much, the project's rule
     /// for approximations (bench/golden/AccuracyBounds.cpp) held on a scene the matrix does not have.
     double maxRmseOverNone = -1.0;
+    /// A driver of the driver table (core/DriverTable.h) the row runs on, for a technique whose form
+    /// needs a capability only that driver offers; null: the driver the test process runs on. The test
+    /// runs such a row in a child process on that driver (tests/SecondDriver.h).
+    const char* driver = nullptr;
 };
 
 inline void PrintTo(const HardCase& c, std::ostream* os) {
