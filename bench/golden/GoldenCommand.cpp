@@ -367,9 +367,8 @@ under the cell (bench/golden/GoldenDiff.h).)");
                         " (known: " + join(known, ", ") + ")");
     cli.matrix.techniques = techniques;
     for (const std::string& t : cli.matrix.techniques)
-        if (t != AutoResolver::kName && !TechniqueRegistry::has(t, Api::GL) &&
-            !TechniqueRegistry::has(t, Api::Vulkan))
-            TechniqueRegistry::create(t); // names it: unknown, with the known names
+        if (t != AutoResolver::kName)
+            TechniqueRegistry::describe(TechniqueSpec{t, {}}); // names it if unknown
     if (cli.dir.empty()) cli.dir = defaultGoldenDir();
     std::error_code ec; // --check reads the goldens; --update may write a new folder
     if (!cli.update && !std::filesystem::is_directory(cli.dir, ec))
