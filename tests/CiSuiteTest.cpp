@@ -62,6 +62,47 @@ TEST(CiSuiteTest, WrongSuitesAreRefusedNamingWhere) {
     expectRefused(R"({"name": "s", "configs": [{"name": "a", "bound": "gpu", "args": ["-t", "none"]}]})",
                   "not one of cpu, vertex, fill, balanced");
     expectRefused(R"({"name": "s", "config": []})", "config");
+    expectRefused(R"({"name": "s", "configs": [{"name": "a", "args": ["-t", "none"], "drivers": ["mesa-9"],
+                                                "why": "w"}]})",
+                  "/configs/0/drivers: \"mesa-9\" is not a driver of the driver table (system, mesa-25.0.7)");
+    expectRefused(
+        R"({"name": "s", "configs": [{"name": "a", "args": ["-t", "none"], "drivers": ["mesa-25.0.7"]}]})",
+        "says why the others cannot run it");
+    expectRefused(R"({"name": "s", "configs": [{"name": "a", "args": ["-t", "none"], "why": "w"}]})",
+                  "no \"drivers\" name those that can");
+}
+
+// A configuration bound to a driver runs where every side's driver is one of its drivers; --driver-bound
+// keeps only the bound ones; the committed suite's bound configurations each name a driver of the table
+// and say why.
+TEST(CiSuiteTest, DriverBoundConfigurationsRunOnTheirDriversOnly) {
+    const std::string path = test::freshTestDir("cisuite") + "/suite.json";
+    test::writeFile(path, R"({"name": "s", "configs": [
+        {"name": "a", "args": ["-t", "none"]},
+        {"name": "rt", "args": ["--api", "vulkan", "-t", "none"], "drivers": ["mesa-25.0.7"],
+         "why": "VK_KHR_ray_query: the system's lavapipe lacks it"}],
+        "instructions": {"configs": ["a", "rt"]}})");
+    const CiSuite s = CiSuite::load(path);
+    auto names = [](const std::vector<const CiConfig*>& configs) {
+        std::vector<std::string> out;
+        for (const CiConfig* c : configs) out.push_back(c->name);
+        return out;
+    };
+    using V = std::vector<std::string>;
+    EXPECT_EQ(names(s.selectOn({}, {}, {"system"}, false)), V{"a"});
+    EXPECT_EQ(names(s.selectOn({}, {}, {"mesa-25.0.7"}, false)), (V{"a", "rt"}));
+    EXPECT_EQ(names(s.selectOn(s.instructions, {}, {"mesa-25.0.7"}, true)), V{"rt"});
+    EXPECT_EQ(names(s.selectOn({}, {}, {"system", "mesa-25.0.7"}, false)), V{"a"}); // an A/B of the two
+    EXPECT_TRUE(s.selectOn({}, {}, {"system"}, true).empty());
+    EXPECT_EQ(s.config("rt").notRunReason(),
+              "runs on mesa-25.0.7 only: VK_KHR_ray_query: the system's lavapipe lacks it");
+
+    const CiSuite committed = CiSuite::load(std::string(SB_SOURCE_DIR) + "/results/ci/suite.json");
+    for (const CiConfig& c : committed.configs)
+        if (!c.drivers.empty()) {
+            EXPECT_FALSE(c.why.empty()) << c.name;
+            EXPECT_FALSE(c.runsOn("system")) << c.name << ": bound to drivers that include the system's";
+        }
 }
 
 } // namespace

@@ -12,6 +12,7 @@
 #include "bench/lib/output/ProgressBar.h"
 #include "bench/lib/sweep/ChildProcess.h"
 #include "bench/lib/sweep/InterruptGuard.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 
@@ -87,6 +88,12 @@ std::pair<CiSuite, CiConfig> configuration(const BisectOptions& o) {
         if (path.empty()) throw Error("cannot find results/ci/suite.json (give --suite)", ExitCode::BadInput);
         CiSuite suite = CiSuite::load(path);
         CiConfig config = suite.config(o.config);
+        // A configuration bound to other drivers cannot run here, at any commit: said before any build.
+        if (!config.runsOn(DriverTable::current()))
+            throw Error("bisect -c " + o.config + ": not on the driver " + DriverTable::current() + ", it " +
+                            config.notRunReason() + " (bench --driver " + config.drivers.front() +
+                            " bisect ...)",
+                        ExitCode::Unsupported);
         return {suite, config};
     }
     CiSuite suite;

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <optional>
 
+#include "bench/lib/gate/BaselineUpdate.h"
 #include "bench/lib/gate/CiSuite.h"
 #include "bench/lib/gate/GateReport.h"
 #include "bench/lib/gate/InstructionLayer.h"
@@ -39,7 +40,12 @@ constexpr const char* kFooter = R"(Examples:
   bench ci --base-env LP_NUM_THREADS=2 --head-env LP_NUM_THREADS=1 --layers A,C   a threads A/B
   bench ci --base-driver system --head-driver mesa-25.0.7 --layers A   a driver A/B
   bench --driver mesa-25.0.7 ci --quick          the gate on another driver, against baseline/mesa-25.0.7/
+  bench --driver mesa-25.0.7 ci --layers B --driver-bound   layer B of what only that driver can run
   SHADOWBENCH_INJECT=extra_fullscreen_pass bench ci --layers A   the proof: a known regression
+
+A configuration the suite binds to drivers ("drivers": a technique whose form needs what only they
+offer) runs on those only; elsewhere the report says it was not run and why.
+--update of some configurations (--configs, --driver-bound) keeps the baseline's other rows.
 
 Layers: A exact work per pass (any increase fails; a decrease passes and asks for --update; across two
 drivers the application's work must match exactly and the driver's is reported with both values),
@@ -47,10 +53,13 @@ B instructions per frame under valgrind (fails beyond max(0.5%, the A/A pair)), 
 interleaved with an A/A control (fails beyond max(5%, the control's noise) at p < alpha).
 Exit codes: 0 pass, 1 a gating layer failed, 2 bad input, 3 the machine lacks what a layer needs.)";
 
+/// The cell of a configuration bound to drivers this run is not on (CiConfig::drivers).
+constexpr const char* kNotRun = "NOT RUN";
+
 struct CiOptions {
     std::string suitePath, baselineDir, outDir = "ci-out";
     std::string layers = "A,B,C", advisory;
-    bool update = false, quick = false;
+    bool update = false, quick = false, driverBound = false;
     std::vector<std::string> configs, baseEnv, headEnv;
     std::string baseBench, headBench;
     std::string driver, baseDriver, headDriver; ///< --driver is acted on by BenchApp
@@ -116,7 +125,8 @@ CsvTable workRows(const CiSuite& suite, const std::vector<const CiConfig*>& conf
 /// Layer A's verdict, details and each configuration's cell (WorkGate.h: nothing uncompared reads PASS;
 /// across drivers the application's work is judged and the driver's reported).
 GateLayer judgeWork(const WorkComparison& w, GateReport& report, const std::string& baseName) {
-    for (GateConfigRow& row : report.rows) row.work = w.cell(row.config);
+    for (GateConfigRow& row : report.rows)
+        if (row.work.verdict != kNotRun) row.work = w.cell(row.config);
     return WorkGate::layer(w, baseName);
 }
 
@@ -204,6 +214,9 @@ int CiCommand::main(int argc, char** argv) {
     app.add_flag("--update", o.update,
                  "rewrite the baseline from this build (layers A and B) instead of judging");
     app.add_option("--configs", o.configs, "only these configurations (comma-separated)")->delimiter(',');
+    app.add_flag("--driver-bound", o.driverBound,
+                 "only the configurations the suite binds to the driver this run is on (its \"drivers\"): "
+                 "what no other driver can run");
     app.add_option("--base-bench", o.baseBench, "the base build's bench binary (measured now, interleaved)");
     app.add_option("--head-bench", o.headBench, "the head's bench binary (default: this one)");
     app.add_option("--base-env", o.baseEnv, "NAME=VALUE for the base's runs (repeatable)");
@@ -255,6 +268,24 @@ int CiCommand::main(int argc, char** argv) {
                       sideEnvironment(o.baseDriver, o.baseEnv, "--base-env")};
     if (o.update && base)
         throw Error("--update writes the head's baseline; it takes no --base-bench/--base-env/--base-driver");
+    // The drivers the runs are on: a configuration bound to drivers runs only where every side can run it.
+    std::vector<std::string> drivers{headDriver};
+    if (base)
+        drivers.push_back(o.baseDriver.empty() ? DriverTable::current()
+                                               : DriverTable::resolve(o.baseDriver).name);
+    for (const std::string& name : o.configs)
+        for (const std::string& d : drivers)
+            if (!suite.config(name).runsOn(d))
+                throw Error("--configs " + name + ": not on the driver " + d + ", it " +
+                                suite.config(name).notRunReason() + " (run it with bench --driver " +
+                                suite.config(name).drivers.front() + " ci)",
+                            ExitCode::Unsupported);
+    auto select = [&](const CiLayerRuns& layer) {
+        return suite.selectOn(layer, o.configs, drivers, o.driverBound);
+    };
+    if (o.driverBound && select({}).empty())
+        throw Error("--driver-bound: no configuration of " + suite.path + " is bound to the driver " +
+                    headDriver);
     // A missing committed baseline is bad input, said before the suite runs rather than after it.
     if (!o.update && !base && hasLayer(o.layers, 'A') && !fs::exists(baselineWork))
         throw Error("no committed baseline " + baselineWork + " (write one with bench ci --update" +
@@ -270,8 +301,20 @@ int CiCommand::main(int argc, char** argv) {
     report.about.push_back("head: " + head.describe() + " " + head.bench);
     report.about.push_back(base ? "base: " + base->describe() + " " + base->bench + ", measured now"
                                 : "base: the committed baseline " + baselineDir);
-    for (const CiConfig* c : suite.select({}, o.configs))
-        report.rows.push_back({c->name, c->bound, {}, {}, {}});
+    const std::vector<const CiConfig*> runs = select({});
+    for (const CiConfig* c : suite.select({}, o.configs)) {
+        if (std::find(runs.begin(), runs.end(), c) != runs.end()) {
+            report.rows.push_back({c->name, c->bound, {}, {}, {}});
+            continue;
+        }
+        // A configuration another driver is to run: listed with why, never a silent gap.
+        for (const std::string& d : drivers)
+            if (!c->runsOn(d)) {
+                report.rows.push_back({c->name, c->bound, {"not run on the driver " + d, kNotRun}, {}, {}});
+                report.about.push_back(c->name + " not run on the driver " + d + ": " + c->notRunReason());
+                break;
+            }
+    }
     auto row = [&](const std::string& name) -> GateConfigRow& {
         for (GateConfigRow& r : report.rows)
             if (r.config == name) return r;
@@ -285,14 +328,21 @@ int CiCommand::main(int argc, char** argv) {
     std::vector<std::pair<std::string, std::string>> baselineFiles; ///< path, text
     std::vector<std::string> baselineNotes;
     if (hasLayer(o.layers, 'A')) {
-        const auto configs = suite.select(suite.work, o.configs);
+        const auto configs = select(suite.work);
         const CsvTable headRows = workRows(suite, configs, head);
         dashboardRows = headRows;
         writeRows((fs::path(o.outDir) / "work.csv").string(), headRows);
         if (o.update) {
-            baselineFiles.emplace_back(baselineWork, CsvWriter::serialize(baselineColumns(headRows)));
+            const CsvTable fresh = baselineColumns(headRows);
+            const CsvTable merged = fs::exists(baselineWork)
+                                        ? BaselineUpdate::work(CsvWriter::read(baselineWork), fresh,
+                                                               suite.selectOn(suite.work, {}, drivers, false))
+                                        : fresh;
+            baselineFiles.emplace_back(baselineWork, CsvWriter::serialize(merged));
             baselineNotes.push_back("ci: layer A baseline rewritten: " + baselineWork + " (" +
-                                    std::to_string(headRows.rows.size()) + " configurations)");
+                                    std::to_string(headRows.rows.size()) + " configurations measured, " +
+                                    std::to_string(merged.rows.size() - fresh.rows.size()) +
+                                    " kept as they were)");
         } else {
             const CsvTable baseRows =
                 base ? workRows(suite, configs, *base) : onlyConfigs(CsvWriter::read(baselineWork), configs);
@@ -304,21 +354,26 @@ int CiCommand::main(int argc, char** argv) {
         }
     }
     if (hasLayer(o.layers, 'B')) {
-        const auto configs = suite.select(suite.instructions, o.configs);
+        const auto configs = select(suite.instructions);
         const std::string recordPath = (fs::path(baselineDir) / "instructions.json").string();
         if (!configs.empty()) {
             nlohmann::json committed;
-            if (!o.update && !base && fs::exists(recordPath))
+            if (!base && fs::exists(recordPath))
                 committed = JsonReader::parse(Paths::readTextFile(recordPath), recordPath);
-            InstructionLayerResult r = InstructionLayer::run(suite, configs, base, head, committed,
-                                                             (fs::path(o.outDir) / "callgrind").string());
+            InstructionLayerResult r =
+                InstructionLayer::run(suite, configs, base, head, o.update ? nlohmann::json() : committed,
+                                      (fs::path(o.outDir) / "callgrind").string());
             CsvWriter::writeText((fs::path(o.outDir) / "instructions.json").string(),
                                  r.record.dump(2) + "\n");
             joinInstructions(dashboardRows, r.record);
             if (o.update) {
-                baselineFiles.emplace_back(recordPath, r.record.dump(2) + "\n");
+                const nlohmann::json record = BaselineUpdate::instructions(
+                    committed, r.record, suite.selectOn(suite.instructions, {}, drivers, false), recordPath);
+                baselineFiles.emplace_back(recordPath, record.dump(2) + "\n");
                 baselineNotes.push_back("ci: layer B baseline rewritten: " + recordPath + " (" +
-                                        std::to_string(configs.size()) + " configurations)");
+                                        std::to_string(configs.size()) + " configurations counted, " +
+                                        std::to_string(record["configs"].size() - configs.size()) +
+                                        " kept as they were)");
             } else {
                 r.layer.advisory = hasLayer(o.advisory, 'B');
                 for (const auto& [name, cell] : r.cells) row(name).instructions = cell;
@@ -327,7 +382,7 @@ int CiCommand::main(int argc, char** argv) {
         }
     }
     if (hasLayer(o.layers, 'C') && !o.update) {
-        const auto configs = suite.select(suite.wall, o.configs);
+        const auto configs = select(suite.wall);
         if (!configs.empty()) {
             WallLayerResult r = WallLayer::run(suite, configs, base, head, o.wall);
             r.layer.advisory = hasLayer(o.advisory, 'C');

@@ -25,6 +25,10 @@ constexpr TechniqueRule kRules[] = {
     {"shadowmap", Rule::Map},
     {"volume", Rule::Exact},
     {"reference", Rule::Exact},
+    // Ray-traced shadows (hard mode, its default): a ray per sample towards the light, as the reference
+    // traces, so exact like it: off the edge band only where the rasterised sample and the reference's
+    // G-buffer sample sit a hair apart.
+    {"raytraced", Rule::Exact},
     {"occluder", Rule::Approximate},
     {"proxy", Rule::SoftApproximate},
     {"planar", Rule::Approximate},

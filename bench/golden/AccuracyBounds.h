@@ -1,7 +1,8 @@
 #pragma once
 // The accuracy bound of every matrix cell, derived from the Embree answer of that cell and from what the
 // technique can achieve, never from the technique's own result. One rule per technique:
-//   exact        (volume, reference): visibility is exact up to rasterisation, so off the 1-px band
+//   exact        (volume, reference, raytraced): visibility is exact up to rasterisation, so off the 1-px
+//   band
 //                around reference shadow edges only a sliver may differ;
 //   map          (shadowmap and its family: cubemap, paraboloid, cascaded, pcss, vsm, esm): exact up to
 //                the map's texels, bias and filter width, a little more off the edge band;

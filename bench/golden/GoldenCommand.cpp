@@ -11,6 +11,7 @@
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
+#include "bench/golden/MatrixPage.h"
 #include "bench/golden/MatrixProgress.h"
 #include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/options/CliParse.h"
@@ -58,6 +59,10 @@ std::map<std::string, AccuracyBound> readBounds(const std::string& dir) {
 /// What --check prints of one cell: failures always, passes and details with --verbose.
 std::string describeVerdict(const GoldenCli& cli, const CellVerdict& v) {
     std::ostringstream out;
+    if (!v.notRun.empty()) { // always said: a cell this driver cannot run is not checked here
+        out << v.cell << ": not run: " << v.notRun << "\n";
+        return out.str();
+    }
     if (!v.unsupported.empty() && v.passed()) {
         if (cli.verbose) out << v.cell << ": unsupported: " << v.unsupported << "\n";
         return out.str();
@@ -79,7 +84,7 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     // Checked before the first scene renders: a folder that cannot take the pictures fails in
     // milliseconds, not after the matrix.
     AccuracyImages::prepareDirectory(cli.diffDir, "--diff-dir");
-    size_t checked = 0, unsupported = 0, failed = 0;
+    size_t checked = 0, unsupported = 0, failed = 0, notRun = 0;
     std::vector<CellVerdict> verdicts; // of the scene rendering now, judged as each cell finishes
     std::map<std::string, Image8> goldens;
     MatrixProgress run(
@@ -95,7 +100,8 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
         for (const CellVerdict& v : verdicts) {
             const bool skipped = !v.unsupported.empty() && v.passed();
             unsupported += skipped;
-            checked += !skipped;
+            notRun += !v.notRun.empty();
+            checked += !skipped && v.notRun.empty();
             failed += !v.passed();
             text += describeVerdict(cli, v);
         }
@@ -106,7 +112,8 @@ int runCheck(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     }
     run.finish();
     std::cout << "golden check: " << checked << " cells checked, " << failed << " failed, " << unsupported
-              << " unsupported (--verbose lists them) against " << cli.dir << " on the driver "
+              << " unsupported (--verbose lists them), " << notRun
+              << " not run on this driver (listed above) against " << cli.dir << " on the driver "
               << DriverTable::current() << "\n";
     return failed ? int(ExitCode::Failure) : 0;
 }
@@ -134,43 +141,63 @@ void updateGolden(const std::string& path, const Image8& image) {
     std::cout << path << ": " << what << "\n";
 }
 
-/// One line of MATRIX.md: the retained cell's accuracy and bound, how many modes pass every check.
+/// The cell a technique's row and golden come from (GoldenMatrix::goldenCellOf; the GL retained cell
+/// itself when the scene's cells lack it).
+const MatrixCell& goldenCell(const std::vector<MatrixCell>& cells, const MatrixCell& glRetained) {
+    const MatrixCell* cell = GoldenMatrix::goldenCellOf(cells, glRetained);
+    return cell ? *cell : glRetained;
+}
+
+/// " on the driver NAME" where the update runs on a driver other than the system's.
+std::string driverNote() {
+    const std::string driver = DriverTable::current();
+    return driver == "system" ? "" : " on the driver " + driver;
+}
+
+/// How many of a technique's cells of one API ran and passed every check, or why they did not run.
+std::string modesText(const std::vector<CellVerdict>& verdicts, const std::vector<MatrixCell>& cells,
+                      const std::string& technique, bool vulkan) {
+    size_t modes = 0, passed = 0;
+    std::string why;
+    for (size_t i = 0; i < cells.size(); ++i) {
+        if (cells[i].technique != technique || cells[i].vulkan() != vulkan) continue;
+        if (!cells[i].unsupported.empty()) {
+            why = cells[i].unsupported;
+            continue;
+        }
+        ++modes;
+        passed += verdicts[i].passed() && cells[i].ran();
+    }
+    return modes ? std::to_string(passed) + "/" + std::to_string(modes) + " pass"
+                 : "unsupported (" + why + ")";
+}
+
+/// One line of MATRIX.md: the golden cell's accuracy and bound, how many modes of each API pass every
+/// check. "" for a golden cell this driver cannot run: its row is the page's as it was (MatrixPage).
 std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vector<MatrixCell>& cells,
-                      const MatrixCell& retained) {
+                      const MatrixCell& glRetained) {
+    const MatrixCell& golden = goldenCell(cells, glRetained);
+    if (golden.refusal == MatrixCell::Refusal::Driver) return "";
     std::ostringstream row;
-    row << "| " << retained.technique << " | " << retained.scene << " | ";
-    if (retained.autoPick)
-        row << "chose " << retained.autoPick->spec.substr(0, retained.autoPick->spec.find(':')) << ", ";
-    if (!retained.unsupported.empty()) {
-        row << "unsupported | " << retained.unsupported << " |";
+    row << "| " << golden.technique << " | " << golden.scene << " | ";
+    if (golden.autoPick)
+        row << "chose " << golden.autoPick->spec.substr(0, golden.autoPick->spec.find(':')) << ", ";
+    if (!golden.unsupported.empty()) {
+        row << "unsupported | " << golden.unsupported << " |";
         return row.str();
     }
-    size_t modes = 0, passed = 0, vulkanModes = 0, vulkanPassed = 0;
-    std::string vulkanWhy;
-    for (size_t i = 0; i < cells.size(); ++i) {
-        if (cells[i].technique != retained.technique) continue;
-        const bool ok = verdicts[i].passed() && cells[i].ran();
-        if (!cells[i].vulkan()) {
-            ++modes;
-            passed += ok;
-        } else if (!cells[i].unsupported.empty()) {
-            vulkanWhy = cells[i].unsupported;
-        } else {
-            ++vulkanModes;
-            vulkanPassed += ok;
-        }
-    }
-    row << passed << "/" << modes << " pass; Vulkan "
-        << (vulkanModes ? std::to_string(vulkanPassed) + "/" + std::to_string(vulkanModes) + " pass"
-                        : "unsupported (" + vulkanWhy + ")")
-        << " | ";
-    for (size_t l = 0; l < retained.lights.size(); ++l) {
-        const AccuracyBound b = AccuracyBounds::derive(retained, l);
+    if (glRetained.refusal == MatrixCell::Refusal::NoForm)
+        row << "no GL form (" << glRetained.unsupported << ")";
+    else
+        row << modesText(verdicts, cells, golden.technique, false);
+    row << "; Vulkan " << modesText(verdicts, cells, golden.technique, true) << driverNote() << " | ";
+    for (size_t l = 0; l < golden.lights.size(); ++l) {
+        const AccuracyBound b = AccuracyBounds::derive(golden, l);
         std::ostringstream value;
         value.precision(3);
         if (l) value << "; ";
         if (b.judged())
-            value << b.metric << " " << b.measured(retained.lights[l]) << " <= " << b.max << " (" << b.rule
+            value << b.metric << " " << b.measured(golden.lights[l]) << " <= " << b.max << " (" << b.rule
                   << ")";
         else
             value << "not judged";
@@ -180,13 +207,21 @@ std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vecto
     return row.str();
 }
 
-/// Writes the retained cells' goldens and returns their bounds with the measured values.
+/// The row of a technique whose golden cell this driver cannot run and that the page has no row of yet.
+std::string notRunRow(const MatrixCell& golden) {
+    return "| " + golden.technique + " | " + golden.scene + " | not run on the driver " +
+           DriverTable::current() + " (" + golden.unsupported + "): bench golden --update --technique " +
+           golden.technique + " on a driver that has it writes this row | - |";
+}
+
+/// Writes the golden cells' goldens and returns their bounds with the measured values. A golden cell
+/// this driver cannot run keeps its goldens and bounds: they are judged where it runs.
 void writeGoldens(const GoldenCli& cli, const std::vector<MatrixCell>& cells,
                   std::map<std::string, std::pair<AccuracyBound, double>>& fresh) {
     for (const MatrixCell& cell : cells) {
         // An `auto` cell has no golden of its own: it is held to the chosen technique's.
-        if (cell.mode != SubmitMode::Retained || !cell.failure.empty() ||
-            cell.technique == AutoResolver::kName || cell.vulkan())
+        if (!cell.failure.empty() || cell.technique == AutoResolver::kName ||
+            GoldenMatrix::goldenCellOf(cells, cell) != &cell || cell.refusal == MatrixCell::Refusal::Driver)
             continue;
         const std::string vis = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "visibility");
         const std::string col = MatrixCheck::goldenPath(cli.dir, cell.scene, cell.technique, "colour");
@@ -206,54 +241,39 @@ void writeGoldens(const GoldenCli& cli, const std::vector<MatrixCell>& cells,
 
 void writeBounds(const std::string& dir,
                  const std::map<std::string, std::pair<AccuracyBound, double>>& fresh) {
-    std::map<std::string, AccuracyBound> kept = readBounds(dir); // cells of scenes not rendered this time
+    // The cells not rendered this time as they were (their value as measured when last written), the
+    // fresh ones replacing theirs: one map, so the file stays sorted by cell whatever was updated.
+    std::map<std::string, std::pair<AccuracyBound, double>> all;
+    for (const auto& [name, b] : readBounds(dir)) all[name] = {b, b.recorded};
+    for (const auto& [name, entry] : fresh) all[name] = entry;
     std::vector<AccuracyBound> bounds;
     std::vector<double> measured;
-    for (const auto& [name, entry] : fresh) kept.erase(name);
-    for (const auto& [name, b] : kept) {
-        bounds.push_back(b);
-        measured.push_back(b.recorded); // as measured when it was last written
-    }
-    for (const auto& [name, entry] : fresh) {
+    for (const auto& [name, entry] : all) {
         bounds.push_back(entry.first);
         measured.push_back(entry.second);
     }
     CsvWriter::writeText(dir + "/bounds.json", AccuracyBounds::toJson(bounds, measured));
 }
 
-std::string matrixHeader(int size) {
-    return "# The technique x submission x scene matrix\n\nWritten by `bench golden --update` "
-           "(bench/golden/); "
-           "checked by `bench golden --check` and tests/MatrixGLTest.cpp. Each row is one technique on one "
-           "built-in scene at " +
-           std::to_string(size) + "x" + std::to_string(size) +
-           ", its camera `mid` where the scene has one. *modes*: the submission modes whose cell passes "
-           "every "
-           "check (image equal to retained's and to the golden, accuracy within the bound), then the Vulkan "
-           "axis: the technique on Vulkan (lavapipe) in retained and instanced submission, each image held "
-           "to "
-           "the GL retained cell's and to the same golden, the retained one to the same bound, with the "
-           "validation layer on (immediate and display lists are GL's own); *accuracy*: the "
-           "retained cell against the Embree reference, per light, and its bound (rules in "
-           "bench/golden/AccuracyBounds.h). An unsupported cell gives the technique's reason.\n\n"
-           "| technique | scene | modes | accuracy |\n|---|---|---|---|\n";
+/// The exception lines of a golden cell: its lights held to an exception instead of their rule.
+std::vector<std::string> exceptionLines(const MatrixCell& golden) {
+    std::vector<std::string> out;
+    if (!golden.ran() || golden.autoPick) return out;
+    for (size_t l = 0; l < golden.lights.size(); ++l) {
+        const AccuracyBound b = AccuracyBounds::derive(golden, l);
+        if (b.rule == "exception") out.push_back("- `" + b.cell + "`: " + b.why);
+    }
+    return out;
 }
 
-/// The cells held to an exception instead of their rule, each with its reason.
-std::string exceptionList(const std::vector<std::vector<MatrixCell>>& rendered) {
-    std::string out;
-    for (const std::vector<MatrixCell>& cells : rendered)
-        for (const MatrixCell& cell : cells) {
-            if (cell.mode != SubmitMode::Retained || !cell.ran() || cell.autoPick || cell.vulkan()) continue;
-            for (size_t l = 0; l < cell.lights.size(); ++l) {
-                const AccuracyBound b = AccuracyBounds::derive(cell, l);
-                if (b.rule == "exception") out += "- `" + b.cell + "`: " + b.why + "\n";
-            }
-        }
-    return out.empty() ? "" : "\n## Exceptions\n\n" + out;
+/// The techniques of the page's rows, in the matrix's order: the registry's, then `auto`.
+std::vector<std::string> pageTechniques() {
+    std::vector<std::string> out = TechniqueRegistry::names();
+    out.push_back(AutoResolver::kName);
+    return out;
 }
 
-int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool wholeMatrix) {
+int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes) {
     std::map<std::string, std::pair<AccuracyBound, double>> fresh;
     std::vector<std::vector<MatrixCell>> rendered;
     // The cells are judged after the goldens are written; while rendering, a cell that threw is a failure.
@@ -269,8 +289,9 @@ int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool
     // The update is checked like any other run: a cell that fails (a mode that differs from retained,
     // an accuracy outside its rule) is printed and makes the exit code 1, goldens written or not.
     const std::map<std::string, AccuracyBound> bounds = readBounds(cli.dir);
-    std::string rows;
-    size_t failed = 0, written = 0;
+    const std::string pagePath = cli.dir + "/MATRIX.md";
+    MatrixPage page = MatrixPage::read(pagePath);
+    size_t failed = 0, written = 0, kept = 0;
     for (const std::vector<MatrixCell>& cells : rendered) {
         const std::vector<CellVerdict> verdicts = MatrixCheck::check(cells, cli.dir, bounds);
         for (size_t i = 0; i < cells.size(); ++i) {
@@ -279,17 +300,25 @@ int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes, bool
                 std::cout << verdicts[i].cell << ": FAILED\n";
                 for (const std::string& f : verdicts[i].failures) std::cout << "  " << f << "\n";
             }
-            if (cells[i].mode != SubmitMode::Retained || cells[i].vulkan()) continue;
-            rows += matrixRow(verdicts, cells, cells[i]) + "\n";
-            written += cells[i].ran();
+            if (cells[i].mode != SubmitMode::Retained || cells[i].vulkan()) continue; // one row a technique
+            const MatrixCell& golden = goldenCell(cells, cells[i]);
+            const std::string row = matrixRow(verdicts, cells, cells[i]);
+            if (!row.empty()) {
+                page.set(golden.technique, golden.scene, row, exceptionLines(golden));
+                written += golden.ran();
+            } else if (page.has(golden.technique, golden.scene)) {
+                ++kept;
+            } else {
+                page.set(golden.technique, golden.scene, notRunRow(golden), {});
+            }
         }
     }
-    if (wholeMatrix)
-        CsvWriter::writeText(cli.dir + "/MATRIX.md",
-                             matrixHeader(cli.matrix.size) + rows + exceptionList(rendered));
+    CsvWriter::writeText(pagePath,
+                         page.text(cli.matrix.size, GoldenMatrix::builtinScenes(), pageTechniques()));
     std::cout << "golden update: " << written << " technique x scene goldens in " << cli.dir
-              << (wholeMatrix ? " (and MATRIX.md)" : " (MATRIX.md is written only for the whole matrix)")
-              << "; " << failed << " cells fail their checks\n";
+              << " and their rows of MATRIX.md (" << kept
+              << " rows of cells this driver cannot run kept as they were); " << failed
+              << " cells fail their checks\n";
     return failed ? int(ExitCode::Failure) : 0;
 }
 
@@ -324,6 +353,9 @@ under the cell (bench/golden/GoldenDiff.h).)");
                    "matches its golden into this folder (default: shadowbench-golden-diff in the temporary "
                    "directory)");
     app.add_flag("-v,--verbose", cli.verbose, "print every cell, its comparisons and unsupported cells");
+    app.add_flag("--strict-driver", cli.matrix.strictDriver,
+                 "a cell whose form needs a capability this driver lacks fails (default: it is listed as "
+                 "not run here); for the check on the driver that is to run it");
     std::string driver; // acted on by BenchApp: the process already runs on it
     DriverOption::add(app, driver);
     if (int code = parseCli(app, argc, argv, "bench golden"); code >= 0) return code;
@@ -344,7 +376,7 @@ under the cell (bench/golden/GoldenDiff.h).)");
     if (cli.update && !cli.diffDir.empty())
         throw Error("--diff-dir belongs to --check (see bench golden --help)");
     if (cli.diffDir.empty()) cli.diffDir = defaultDiffDir();
-    if (cli.update) return runUpdate(cli, chosen, scenes.empty() && techniques.empty());
+    if (cli.update) return runUpdate(cli, chosen);
     return runCheck(cli, chosen);
 }
 

@@ -14,6 +14,7 @@
 #include "bench/lib/measure/AccuracyEvaluator.h"
 #include "bench/lib/select/AutoResolver.h"
 #include "bench/lib/select/Calibration.h"
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/Paths.h"
 #include "registry/TechniqueRegistry.h"
@@ -32,6 +33,44 @@ constexpr SubmitMode kVulkanModes[] = {SubmitMode::Retained, SubmitMode::Instanc
 
 std::string cellName(const std::string& technique, const std::string& scene, SubmitMode mode, bool vulkan) {
     return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan ? "/vulkan" : "");
+}
+
+/// Why `technique` has no form on `api`, in the registry's words (its refusal names the APIs that have
+/// one, or a reason of the technique's own).
+std::string noFormReason(const std::string& technique, Api api) {
+    try {
+        TechniqueRegistry::create(TechniqueSpec{technique, {}}, api);
+    } catch (const Error& e) {
+        return e.what();
+    } catch (const std::exception&) { // a registry row without the form and without words for it
+    }
+    return technique + " has no " + apiName(api) + " form";
+}
+
+/// The refusal of a form whose capabilities this driver lacks (`missing`: the form's own words, naming
+/// the capability and the device), or "" when it has them all.
+std::string driverRefusal(const std::string& missing) {
+    return missing.empty() ? "" : "not on the driver " + DriverTable::current() + ": " + missing;
+}
+
+/// Marks `cell` as one this driver cannot run (`refused`: driverRefusal's words), or fails it with
+/// MatrixOptions::strictDriver. False when `refused` is empty: the cell is to be rendered.
+bool refusedByDriver(MatrixCell& cell, const std::string& refused, const MatrixOptions& options) {
+    if (refused.empty()) return false;
+    if (options.strictDriver) {
+        cell.failure = refused + " (--strict-driver: this driver is the one to run it)";
+    } else {
+        cell.unsupported = refused;
+        cell.refusal = MatrixCell::Refusal::Driver;
+    }
+    return true;
+}
+
+/// Whether any of `techniques` has a GL form (`auto` resolves among them on GL).
+bool anyGlForm(const std::vector<std::string>& techniques) {
+    return std::any_of(techniques.begin(), techniques.end(), [](const std::string& t) {
+        return t == AutoResolver::kName || TechniqueRegistry::has(t, Api::GL);
+    });
 }
 
 /// Renders one cell with its stderr captured, telling the observer before and after.
@@ -130,14 +169,16 @@ MatrixCell renderCell(Harness& harness, AccuracyEvaluator& evaluator, const std:
     cell.technique = cellName;
     cell.scene = scene;
     cell.mode = harness.config().submit;
-    std::unique_ptr<GlTechnique> technique;
+    std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(spec);
+    if (refusedByDriver(cell, driverRefusal(technique->checkCapabilities(harness.context())), options))
+        return cell;
     harness.seekPath(0); // a scene in motion starts each cell at rest
     try {
-        technique = TechniqueRegistry::create(spec); // a technique without a GL form: its refusal
         harness.prepare(*technique);
     } catch (const Error& e) {
         if (e.code() != ExitCode::Unsupported) throw;
         cell.unsupported = e.what();
+        cell.refusal = MatrixCell::Refusal::Scene;
         return cell;
     }
     if (harness.moving())
@@ -202,6 +243,7 @@ MatrixCell renderAutoCell(Harness& harness, AccuracyEvaluator& evaluator, std::o
         cell.scene = scene;
         cell.mode = harness.config().submit;
         cell.unsupported = refusal;
+        cell.refusal = MatrixCell::Refusal::Scene;
         return cell;
     }
     MatrixCell cell =
@@ -212,13 +254,14 @@ MatrixCell renderAutoCell(Harness& harness, AccuracyEvaluator& evaluator, std::o
 }
 
 MatrixCell unsupportedCell(const std::string& technique, const std::string& scene, SubmitMode mode,
-                           const std::string& api, const std::string& why) {
+                           const std::string& api, const std::string& why, MatrixCell::Refusal refusal) {
     MatrixCell cell;
     cell.technique = technique;
     cell.scene = scene;
     cell.mode = mode;
     cell.api = api;
     cell.unsupported = why;
+    cell.refusal = refusal;
     return cell;
 }
 
@@ -236,12 +279,14 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     std::unique_ptr<VulkanTechnique> t =
         TechniqueRegistry::createVulkan(spec ? *spec : TechniqueSpec{technique, {}});
     const size_t errorsBefore = vulkan.context().validationErrors();
+    if (refusedByDriver(cell, driverRefusal(t->checkCapabilities(vulkan.context())), options)) return cell;
     vulkan.seekPath(0); // a scene in motion starts each cell at rest
     try {
         vulkan.prepare(*t);
     } catch (const Error& e) {
         if (e.code() != ExitCode::Unsupported) throw;
         cell.unsupported = e.what();
+        cell.refusal = MatrixCell::Refusal::Scene;
         return cell;
     }
     if (vulkan.moving())
@@ -277,7 +322,9 @@ MatrixCell vulkanAutoCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator, s
             refusal = e.what();
         }
     }
-    if (!pick) return unsupportedCell(AutoResolver::kName, scene, mode, "vulkan", refusal);
+    if (!pick)
+        return unsupportedCell(AutoResolver::kName, scene, mode, "vulkan", refusal,
+                               MatrixCell::Refusal::Scene);
     const TechniqueSpec chosen = TechniqueSpec::parse(pick->spec);
     MatrixCell cell = renderVulkanCell(vulkan, evaluator, chosen.name, scene, options, &chosen);
     cell.technique = AutoResolver::kName;
@@ -292,15 +339,20 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
                       const std::string& technique, const std::string& scene, SubmitMode mode,
                       const MatrixOptions& options, std::optional<AutoPick>& autoPick,
                       std::string& autoRefusal) {
-    if (!vulkan) return unsupportedCell(technique, scene, mode, "vulkan", refusal);
+    if (technique != AutoResolver::kName && !TechniqueRegistry::hasVulkan(technique))
+        return unsupportedCell(technique, scene, mode, "vulkan", noFormReason(technique, Api::Vulkan),
+                               MatrixCell::Refusal::NoForm);
+    if (!vulkan) { // no Vulkan device on this driver at all
+        MatrixCell cell = unsupportedCell(technique, scene, mode, "vulkan", "", MatrixCell::Refusal::None);
+        refusedByDriver(cell, driverRefusal(refusal), options);
+        return cell;
+    }
     if (technique == AutoResolver::kName)
         return vulkanAutoCell(*vulkan, *evaluator, autoPick, autoRefusal, scene, mode, options);
-    if (!TechniqueRegistry::hasVulkan(technique))
-        return unsupportedCell(technique, scene, mode, "vulkan", technique + " has no Vulkan form yet");
     try {
         return renderVulkanCell(*vulkan, *evaluator, technique, scene, options);
     } catch (const std::exception& e) {
-        MatrixCell failed = unsupportedCell(technique, scene, mode, "vulkan", "");
+        MatrixCell failed = unsupportedCell(technique, scene, mode, "vulkan", "", MatrixCell::Refusal::None);
         failed.failure = e.what();
         return failed;
     }
@@ -346,6 +398,19 @@ std::string MatrixCell::name() const {
     return cellName(technique, scene, mode, vulkan());
 }
 
+const MatrixCell* GoldenMatrix::goldenCellOf(const std::vector<MatrixCell>& cells, const MatrixCell& cell) {
+    auto retained = [&](bool vulkan) -> const MatrixCell* {
+        for (const MatrixCell& c : cells)
+            if (c.technique == cell.technique && c.scene == cell.scene && c.mode == SubmitMode::Retained &&
+                c.vulkan() == vulkan)
+                return &c;
+        return nullptr;
+    };
+    const MatrixCell* gl = retained(false);
+    if (gl && gl->refusal != MatrixCell::Refusal::NoForm) return gl;
+    return gl ? retained(true) : nullptr;
+}
+
 std::vector<std::string> GoldenMatrix::builtinScenes() {
     std::vector<std::string> scenes;
     const std::string probe = Paths::findResource("scenes/data/aircraft.json");
@@ -380,13 +445,20 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
     std::vector<MatrixCell> cells;
     std::optional<AutoPick> pick; // -t auto's choice, resolved on the retained harness (the first)
     std::string refusal;          // or why nothing qualifies
+    const bool glForms = anyGlForm(techniques); // else no GL harness: every GL cell is a NoForm cell
     for (SubmitMode mode : modesRetainedFirst()) {
         RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
         if (loaded.motion) config.pathFrames = kPathFrames;
-        Harness harness(config);
-        AccuracyEvaluator evaluator(harness);
+        std::unique_ptr<Harness> harnessOwner = glForms ? std::make_unique<Harness>(config) : nullptr;
+        std::unique_ptr<AccuracyEvaluator> evaluatorOwner =
+            glForms ? std::make_unique<AccuracyEvaluator>(*harnessOwner) : nullptr;
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, false), observer, [&] {
+                if (technique != AutoResolver::kName && !TechniqueRegistry::has(technique, Api::GL))
+                    return unsupportedCell(technique, scene, mode, "gl", noFormReason(technique, Api::GL),
+                                           MatrixCell::Refusal::NoForm);
+                Harness& harness = *harnessOwner;
+                AccuracyEvaluator& evaluator = *evaluatorOwner;
                 try {
                     if (technique == AutoResolver::kName)
                         return renderAutoCell(harness, evaluator, pick, refusal, scene, options);

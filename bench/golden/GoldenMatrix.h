@@ -4,7 +4,9 @@
 // (aircraft_day) is rendered at frame 5 of an 8-frame path, reached frame by frame. Each cell yields the
 // images that are compared with the retained mode and with the committed golden, and its accuracy
 // against the Embree reference per light. A cell a technique cannot handle is kept with the reason the
-// technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently.
+// technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently, and with
+// the kind of refusal (MatrixCell::Refusal): the technique refuses the scene, has no form on the cell's
+// API, or the driver lacks a capability the form needs (judged on a driver that has it, listed here).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -37,6 +39,14 @@ struct AutoPick {
 };
 
 struct MatrixCell {
+    /// Why a cell did not run, when it did not (`unsupported` says it in words). The kinds are judged
+    /// differently (bench/golden/MatrixCheck.h).
+    enum class Refusal {
+        None,   ///< it ran, or threw (`failure`)
+        Scene,  ///< the technique cannot handle this scene (a light type): its golden cell has no golden
+        NoForm, ///< the technique has no form on this cell's API: its golden is its other API's cell
+        Driver, ///< the driver lacks a capability the form needs: checked on a driver that has it
+    };
     std::string technique, scene;
     std::optional<AutoPick> autoPick; ///< the `auto` cell: its choice
     /// The technique whose golden and bound hold the cell: the chosen one for `auto`.
@@ -47,9 +57,10 @@ struct MatrixCell {
     std::string api = "gl";
     bool vulkan() const { return api == "vulkan"; }
     std::string unsupported; ///< non-empty: the technique refused this scene, and why
-    std::string failure;     ///< non-empty: the cell threw while rendering (a defect, not a refusal)
-    Image8 visibility;       ///< light i in channel i (one channel for one light, else RGB)
-    Image8 colour;           ///< RGB
+    Refusal refusal = Refusal::None;
+    std::string failure; ///< non-empty: the cell threw while rendering (a defect, not a refusal)
+    Image8 visibility;   ///< light i in channel i (one channel for one light, else RGB)
+    Image8 colour;       ///< RGB
     std::vector<float> visibilityFloat; ///< the raw read-back of the lights' channels, for the mode check
     std::vector<CellAccuracy> lights;
     NumericSanity sanity; ///< over the whole visibility read-back
@@ -79,6 +90,9 @@ struct MatrixOptions {
     /// golden and bound, and to auto's rule, which reads the effects and the judged error), so two
     /// rounds, the fewest the every-round comparison takes, do; `bench -t auto` times five.
     int autoRounds = 2;
+    /// A cell whose form needs a capability this driver lacks fails (instead of being listed as not run
+    /// here): for the check on the driver that is to run it, so that losing the capability is seen.
+    bool strictDriver = false;
 };
 
 class GoldenMatrix {
@@ -89,6 +103,11 @@ public:
     /// size), else its first camera.
     static std::string cameraFor(const std::string& scene);
     static std::string cameraFor(const Scene& scene);
+    /// The cell that holds `cell`'s technique to its golden and bound on `cell`'s scene, among `cells`:
+    /// the GL retained cell, or the Vulkan retained cell for a technique with no GL form (it exists on
+    /// Vulkan only). Every other cell of the technique is compared with it. Null when it is not among
+    /// `cells` (yet: a scene's cells render GL first, each API retained first).
+    static const MatrixCell* goldenCellOf(const std::vector<MatrixCell>& cells, const MatrixCell& cell);
     /// Every cell of one scene, retained mode first (the others are compared with it), then the other
     /// modes in their table order; techniques in registry order, then `auto`: -t auto resolved on the
     /// retained harness (a fresh calibration at the matrix's size, 10% bound) and its choice rendered in
@@ -96,7 +115,10 @@ public:
     /// Then the Vulkan axis: every technique in Vulkan's two submission modes (retained, instanced),
     /// rendered with the validation layer on (a validation error fails the cell) and judged against the
     /// GL retained harness's reference; a technique without a Vulkan form, `auto` and a scene in motion
-    /// are unsupported cells with their reason.
+    /// are unsupported cells with their reason. A technique without a GL form has unsupported GL cells
+    /// (Refusal::NoForm, the registry's reason) and no GL harness is made for a scene none of whose
+    /// techniques has one. A Vulkan form whose capabilities this driver lacks is a Refusal::Driver cell
+    /// naming what is missing and the driver, or a failed cell with MatrixOptions::strictDriver.
     /// Each cell's stderr is captured into MatrixCell::warnings.
     static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options,
                                                const MatrixObserver& observer = {});

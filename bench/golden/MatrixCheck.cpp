@@ -30,31 +30,25 @@ ImageDiffResult compareVisibility(const std::vector<float>& expected, const std:
     return r;
 }
 
-const MatrixCell* retainedOf(const std::vector<MatrixCell>& cells, const MatrixCell& cell) {
-    for (const MatrixCell& c : cells)
-        if (c.technique == cell.technique && c.scene == cell.scene && c.mode == SubmitMode::Retained &&
-            !c.vulkan())
-            return &c;
-    return nullptr;
-}
-
 void checkModes(const std::vector<MatrixCell>& cells, const MatrixCell& cell, CellVerdict& v) {
-    // Every other mode, and every Vulkan cell, against the GL retained cell of the technique.
-    if (cell.mode == SubmitMode::Retained && !cell.vulkan()) return;
-    const MatrixCell* retained = retainedOf(cells, cell);
+    // Every other mode, and every other API's cell, against the technique's golden cell (GL retained,
+    // or Vulkan retained for a technique with no GL form).
+    const MatrixCell* retained = GoldenMatrix::goldenCellOf(cells, cell);
+    if (retained == &cell) return;
     // -t auto on Vulkan chooses among the Vulkan forms by Vulkan's measurements: where it chose another
     // technique than GL's auto, the images differ by design and its own golden holds it (checkGolden).
     if (retained && cell.vulkan() && cell.judgedAs() != retained->judgedAs()) return;
+    const std::string against = retained && retained->vulkan() ? "Vulkan retained" : "retained";
     if (!retained || !retained->ran()) {
-        v.failures.push_back("runs in this mode but not in retained mode");
+        v.failures.push_back("runs in this mode but not in " + against + " mode");
         return;
     }
     const ImageDiffResult vis = compareVisibility(retained->visibilityFloat, cell.visibilityFloat);
     const ImageDiffResult col =
         ImageDiff::compare(retained->colour, cell.colour, MatrixCheck::kModeTolerance);
     const std::string visText =
-        "visibility vs retained: " + vis.describe({3, MatrixCheck::kModeTolerance.maxFailingFraction});
-    const std::string colText = "colour vs retained: " + col.describe(MatrixCheck::kModeTolerance);
+        "visibility vs " + against + ": " + vis.describe({3, MatrixCheck::kModeTolerance.maxFailingFraction});
+    const std::string colText = "colour vs " + against + ": " + col.describe(MatrixCheck::kModeTolerance);
     (vis.passes(MatrixCheck::kModeTolerance) ? v.details : v.failures).push_back(visText);
     (col.passes(MatrixCheck::kModeTolerance) ? v.details : v.failures).push_back(colText);
 }
@@ -162,9 +156,12 @@ CellVerdict MatrixCheck::checkCell(const std::vector<MatrixCell>& cells, size_t 
     v.cell = cell.name();
     if (!cell.failure.empty()) {
         v.failures.push_back("threw: " + cell.failure);
+    } else if (cell.refusal == MatrixCell::Refusal::Driver) {
+        v.notRun = cell.unsupported; // judged where the driver has what the form needs
     } else if (!cell.unsupported.empty()) {
         v.unsupported = cell.unsupported;
-        if (cell.mode == SubmitMode::Retained && !cell.autoPick && !cell.vulkan() &&
+        if (cell.refusal == MatrixCell::Refusal::Scene && !cell.autoPick &&
+            GoldenMatrix::goldenCellOf(cells, cell) == &cell &&
             std::filesystem::exists(goldenPath(goldenDir, cell.scene, cell.technique, "visibility")))
             v.failures.push_back("refuses the scene but has a golden: " + cell.unsupported);
     } else {

@@ -1,13 +1,19 @@
 #pragma once
 // Judges the cells of the matrix (GoldenMatrix) three ways:
-//   (a) every submission mode's visibility and colour equal the retained mode's (the mode must never
-//       change the image), within kModeTolerance;
-//   (b) the retained image equals the committed golden (results/goldens/<scene>/<technique>.*.png),
-//       within kGoldenTolerance, and a cell that refuses its scene has no golden (so a technique that
+//   (a) every submission mode's visibility and colour equal the golden cell's (GoldenMatrix::goldenCellOf:
+//       the GL retained cell, or the Vulkan retained cell of a technique with no GL form; the mode and
+//       the API must never change the image), within kModeTolerance;
+//   (b) the image equals the committed golden (results/goldens/<scene>/<technique>.*.png), within
+//       kGoldenTolerance, and a golden cell that refuses its scene has no golden (so a technique that
 //       starts refusing a scene is seen, as is one that stops);
 //   (c) every light's accuracy against the Embree reference stays within the committed bound
 //       (results/goldens/bounds.json), which itself must be no looser than the rule (AccuracyBounds).
 // The numeric sanity of the visibility read-back (NaN, Inf, out of [0, 1]) must be zero everywhere.
+// A cell this driver cannot run (MatrixCell::Refusal::Driver: a capability its form needs is missing) is
+// judged by nothing here, neither passed nor unsupported: its verdict says that it was not run on this
+// driver and why, and `bench golden --check` and MatrixGLTest print it for every such cell. Its golden
+// and bound stay (they are judged on the driver that has the capability: the second driver's matrix
+// test in tests/CMakeLists.txt, with --strict-driver).
 #include <map>
 #include <string>
 #include <vector>
@@ -30,6 +36,7 @@ struct GoldenChange {
 struct CellVerdict {
     std::string cell;                  ///< technique/scene/mode
     std::string unsupported;           ///< the technique's reason, when it refused the scene
+    std::string notRun;                ///< why this driver cannot run the cell (Refusal::Driver)
     std::vector<std::string> failures; ///< one line per broken check
     std::vector<std::string> details;  ///< what was compared and by how much (for --verbose)
     std::vector<GoldenChange> changed; ///< images that no longer match their golden (a subset of failures)

@@ -6,6 +6,9 @@
 // first row of each technique: their perturbed frames (8 more frames, about half a row's time) run the
 // evaluator's code that every API shares, and each technique's Vulkan form answers a shifted camera and
 // a turned light in its first row as in the others; GL judges them on every row (HardCaseTest.cpp).
+// A row that names a driver (a technique whose Vulkan form needs a capability only that driver's lavapipe
+// offers) runs in a child process of this test on that driver (tests/SecondDriver.h); a failure there
+// names the row and prints what the child's test printed.
 #include <string>
 #include <vector>
 
@@ -13,6 +16,7 @@
 
 #include "HardCaseBounds.h"
 #include "HardCases.h"
+#include "SecondDriver.h"
 #include "TestSupport.h"
 #include "VulkanFrame.h"
 #include "bench/lib/harness/VulkanHarness.h"
@@ -42,6 +46,7 @@ class HardCasesVulkan : public ::testing::TestWithParam<test::HardCase> {};
 
 TEST_P(HardCasesVulkan, BoundsHold) {
     const test::HardCase& c = GetParam();
+    if (c.driver && !test::runsOnDriver(c.driver)) return test::runThisTestOnDriver(c.driver, c.name);
     RunConfig cfg = test::quickConfig(test::hardCaseScene(c), c.camera, c.size);
     test::VulkanFrame vulkan(cfg, c.technique);
     AccuracyEvaluator evaluator(vulkan.harness());

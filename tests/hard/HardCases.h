@@ -1,6 +1,7 @@
 #pragma once
-// The hard-case table (tests/hard/HardCaseTest.cpp runs it on GL, tests/hard/HardCaseVkTest.cpp the rows
-// of techniques with a Vulkan form on Vulkan): scenes and viewpoints where shadow techniques are known
+// The hard-case table (tests/hard/HardCaseTest.cpp runs the rows of techniques with a GL form on GL,
+// tests/hard/HardCaseVkTest.cpp those with a Vulkan form on Vulkan; a row that names a driver runs in a
+// child process on it, tests/SecondDriver.h): scenes and viewpoints where shadow techniques are known
 // to break, each judged against the exact Embree reference at the same pixels with bounds that must hold.
 // Every technique adds its rows here. Bounds are the measured values on Mesa llvmpipe with headroom, and
 // each says why that number; NaN/Inf/out-of-range counts must be zero everywhere.
@@ -36,6 +37,10 @@ struct HardCase {
     /// shadow at all (visibility 1 on the same judged samples) by at most this much, the project's rule
     /// for approximations (bench/golden/AccuracyBounds.cpp) held on a scene the matrix does not have.
     double maxRmseOverNone = -1.0;
+    /// A driver of the driver table (core/DriverTable.h) the row runs on, for a technique whose form
+    /// needs a capability only that driver offers; null: the driver the test process runs on. The test
+    /// runs such a row in a child process on that driver (tests/SecondDriver.h).
+    const char* driver = nullptr;
 };
 
 inline void PrintTo(const HardCase& c, std::ostream* os) {
@@ -572,6 +577,68 @@ inline const HardCase kHardCases[] = {
      "moves the 0.5 crossing into the shadow, more at larger c"},
     {"moments_vsm_teapot_near", "scenes/data/teapot.json", "near", "vsm", 384, 2.4, 1.6, 3, 6, 3,
      "(0.795%, 0.526% off the edge, false shadow 0.205%; 0.59/2.00/0.70): the same close-up with VSM"},
+    // Ray-traced shadows (`raytraced`, hard mode: Ray Tracing Gems ch. 13), Vulkan only, on the driver whose
+    // lavapipe has VK_KHR_ray_query (Mesa 25.0.7; each row runs in a child process there,
+    // tests/SecondDriver.h). One ray per sample towards the light, as the reference traces, so the bounds
+    // are the exact techniques' (volume's rows): the edge band's few samples, nothing off it. Measured
+    // 2026-12-07 on lavapipe 25.0.7 in parentheses (wrong %, off the edge band; camera gain / light gain /
+    // flicker on the first row, which judges the technique's stability).
+    {"raytraced_baseline", "baseline", "top", "raytraced:mode=hard", 384, 0.05, 0.01, 3, 3, 3,
+     "(0%, 0%; 1.00 (25/25) / 1.00 (2/2) / 1.00): the sphere's shadow sample for sample as the reference "
+     "traces it, and as stable",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_grazing_80", "grazing_80", "side", "raytraced:mode=hard", 384, 0.05, 0.01, 5, 5, 5,
+     "(0%, 0%): the ground 80 degrees from the sun, every sample facing it judged: the ray origin's offset "
+     "(Waechter and Binder, Ray Tracing Gems ch. 6) keeps the ground from shadowing itself (no acne)",
+     0.0f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_grazing_89_9", "grazing_89_9", "side", "raytraced:mode=hard", 384, 0.05, 0.01, 5, 5, 5,
+     "(0%, 0%): n.L = 0.0017 on the ground, rays almost along it: no acne, no lost shadow", 0.0f, 0.0, 100.0,
+     -1.0, "mesa-25.0.7"},
+    {"raytraced_contact_point_sun_top", "contact_point_sun", "top", "raytraced:mode=hard", 384, 0.05, 0.01, 5,
+     5, 5,
+     "(0%, 0%): a box and a sphere touching the ground under a point-like sun: an origin lifted too far "
+     "would pass under the blockers' feet and leak light at the contact; none does",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_contact_point_sun_low", "contact_point_sun", "low", "raytraced:mode=hard", 384, 0.05, 0.01, 5,
+     5, 5, "(0%, 0%): the same from low beside the sphere, its contact point and the box's foot in view",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_contact_soft_sun", "pcss_contact", "top", "raytraced:mode=hard", 384, 0.2, 0.025, 5, 5, 5,
+     "(0.066%, 0.0069% = 10 samples off the edge band, false shadow 0.059%): pcss_contact's 5 degree sun is "
+     "a soft reference, and the 0.5 threshold judges where its penumbra's middle lies, which near the "
+     "contact lines is not where the one ray towards the sun's centre puts the hard edge; under the same "
+     "scene's point-like sun (the rows above) it is 0 and 0, so this is hard against soft, not an error of "
+     "either side; bounded with ~3x headroom so it cannot grow",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_thin_poles", "proxy_grazing_poles", "top", "raytraced:mode=hard", 192, 0.05, 0.01, 5, 5, 5,
+     "(0%, 0%): thin poles under a sun 10 degrees up, their shadows lines 17 units long and 0.1 wide: "
+     "every one there, whole",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_light_in_shell", "scenes/data/jack_o_lantern.json", "mid", "raytraced:mode=hard", 384, 0.05,
+     0.01, 5, 5, 5,
+     "(0.0049%, 0%): a point light inside a closed genus-3 shell: only the holes' projections are lit; rays "
+     "stop 2^-12 short of the light as the reference's do, so the bulb at the light does not shadow",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_camera_in_caster", "volume_camera_in_caster", "in_box", "raytraced:mode=hard", 96, 0.05, 0.01,
+     5, 5, 5,
+     "(0%, 0%): the eye inside a closed box: its inner walls are seen from inside (back faces), judged "
+     "from that side, and in shadow",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_large_coordinates", "large_coordinates", "top", "raytraced:mode=hard", 384, 0.8, 0.5, 5, 5, 5,
+     "(0.268%, 0.164% off the edge band, false shadow 0.249%; the same sphere over its ground at the "
+     "origin, raytraced_baseline, is 0 and 0). The reference is what is wrong here: its rays start "
+     "2^-18 |p|_max along the normal (reference/ReferenceTracer.cpp, originEpsilon), 0.38 units at 1e5, so "
+     "a ground ray starts 0.38 above the ground and passes the sphere 0.14 units off the true line. "
+     "Measured by visibility at 384^2: raytraced at 1e5 differs from raytraced at the origin in 52 pixels "
+     "(the 7.8 mm float spacing at the edge), the reference at 1e5 from the reference at the origin in "
+     "409 (its shadow 2329 pixels against 2646); with the reference's offset taken per coordinate (32 ulps "
+     "of each coordinate, Waechter and Binder's rule) this row measured 0.004% and 0% off the edge band "
+     "(shadowmap's 0.039% / 0.025%). Bounded at ~3x until the reference is fixed",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_degenerate_triangle", "degenerate_triangle", "top", "raytraced:mode=hard", 384, 0.05, 0.01, 5,
+     5, 5,
+     "(0%, 0%): a zero-area triangle in a caster's bottom-level structure: it covers no sample, stops no "
+     "ray and puts no NaN in the image",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
 };
 
 /// The scene file of a row: tests/hard/scenes/<scene>.json, or a path from the source root.

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <set>
 
+#include "core/DriverTable.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Paths.h"
+#include "core/Strings.h"
 
 namespace sb {
 
@@ -37,6 +39,22 @@ CiLayerRuns layer(const JsonReader& r, bool wall) {
     return out;
 }
 
+/// A configuration bound to drivers names drivers of the table, at least one, and says why.
+void checkDrivers(const CiConfig& config, const std::string& where) {
+    if (config.drivers.empty() && config.why.empty()) return;
+    if (config.drivers.empty())
+        throw Error(where +
+                    "/why: says why other drivers cannot run it, but no \"drivers\" name those that can");
+    if (config.why.empty())
+        throw Error(where +
+                    "/drivers: a configuration bound to drivers says why the others cannot run it (\"why\")");
+    const std::vector<std::string> known = DriverTable::names();
+    for (const std::string& d : config.drivers)
+        if (std::find(known.begin(), known.end(), d) == known.end())
+            throw Error(where + "/drivers: " + JsonReader::excerpt(d) +
+                        " is not a driver of the driver table (" + join(known, ", ") + ")");
+}
+
 int techniqueCount(const std::vector<std::string>& args) {
     int n = 0;
     for (const std::string& a : args)
@@ -56,10 +74,13 @@ CiSuite CiSuite::load(const std::string& path) {
     if (root.has("args")) s.args = strings(root["args"]);
     std::set<std::string> names;
     for (const JsonReader& c : root["configs"].elements(true)) {
-        c.requireObject({"name", "bound", "args"});
+        c.requireObject({"name", "bound", "args", "drivers", "why"});
         CiConfig config{c["name"].string(), c.has("bound") ? c["bound"].string() : "balanced",
-                        strings(c["args"])};
+                        strings(c["args"]),
+                        c.has("drivers") ? strings(c["drivers"]) : std::vector<std::string>{},
+                        c.has("why") ? c["why"].string() : ""};
         auto where = path + ": " + c.path();
+        checkDrivers(config, where);
         if (!validName(config.name))
             throw Error(where + "/name: '" + JsonReader::excerpt(config.name) +
                         "' is not a name of [a-z0-9_] characters");
@@ -87,6 +108,16 @@ CiSuite CiSuite::load(const std::string& path) {
     return s;
 }
 
+bool CiConfig::runsOn(const std::string& driver) const {
+    return drivers.empty() || std::find(drivers.begin(), drivers.end(), driver) != drivers.end();
+}
+
+std::string CiConfig::notRunReason() const {
+    std::string names;
+    for (const std::string& d : drivers) names += (names.empty() ? "" : ", ") + d;
+    return "runs on " + names + " only: " + why;
+}
+
 const CiConfig& CiSuite::config(const std::string& wanted) const {
     for (const CiConfig& c : configs)
         if (c.name == wanted) return c;
@@ -103,6 +134,18 @@ std::vector<const CiConfig*> CiSuite::select(const CiLayerRuns& layer,
         const bool asked = only.empty() || std::find(only.begin(), only.end(), c.name) != only.end();
         if (inLayer && asked) out.push_back(&c);
     }
+    return out;
+}
+
+std::vector<const CiConfig*> CiSuite::selectOn(const CiLayerRuns& layer, const std::vector<std::string>& only,
+                                               const std::vector<std::string>& drivers,
+                                               bool boundOnly) const {
+    std::vector<const CiConfig*> out = select(layer, only);
+    std::erase_if(out, [&](const CiConfig* c) {
+        for (const std::string& d : drivers)
+            if (!c->runsOn(d) || (boundOnly && c->drivers.empty())) return true;
+        return false;
+    });
     return out;
 }
 

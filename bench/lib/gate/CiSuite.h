@@ -11,10 +11,17 @@
 //    "wall": {"frames": 10, "warmup": 3, "rounds": 9, "control": "none_aircraft",
 //             "configs": ["none_aircraft"]},                                      layer C
 //    "configs": [{"name": "none_aircraft", "bound": "balanced",
-//                 "args": ["-t", "none", "--instances", "50"]}]}
+//                 "args": ["-t", "none", "--instances", "50"]},
+//                {"name": "raytraced_vulkan", "args": ["--api", "vulkan", "-t", "raytraced"],
+//                 "drivers": ["mesa-25.0.7"],
+//                 "why": "VK_KHR_ray_query: the system's lavapipe (Mesa 22.3.6) lacks it"}]}
 //
 // "bound" says which stage the configuration is meant to load (cpu, vertex, fill, balanced); it is
-// reported, not measured here (bench bottleneck measures it).
+// reported, not measured here (bench bottleneck measures it). "drivers" (names of core/DriverTable.h)
+// binds a configuration to the drivers that can run it, for a technique whose form needs a capability
+// only they offer, and "why" says what the others lack: on another driver every layer leaves it out and
+// the report says so and why, and its baseline rows live in those drivers' baselines only
+// (results/ci/baseline/<driver>/).
 #include <string>
 #include <vector>
 
@@ -24,6 +31,12 @@ struct CiConfig {
     std::string name;  ///< [a-z0-9_]+, unique
     std::string bound; ///< cpu | vertex | fill | balanced
     std::vector<std::string> args;
+    std::vector<std::string> drivers; ///< the drivers it runs on; empty: every driver
+    std::string why;                  ///< with `drivers`: what the other drivers lack
+    /// Whether the configuration runs on `driver` (a driver table name, as DriverTable::current()).
+    bool runsOn(const std::string& driver) const;
+    /// Why it does not run on `driver`: "runs on mesa-25.0.7 only: <why>".
+    std::string notRunReason() const;
 };
 
 struct CiLayerRuns {
@@ -49,6 +62,10 @@ struct CiSuite {
     /// The configurations a layer runs, in the suite's order, restricted to `only` when non-empty
     /// (an unknown name in `only` is bad input).
     std::vector<const CiConfig*> select(const CiLayerRuns& layer, const std::vector<std::string>& only) const;
+    /// select() restricted to the configurations that run on every one of `drivers` (the head's, and the
+    /// base's in an A/B); with `boundOnly`, to those whose `drivers` name them (what only they can run).
+    std::vector<const CiConfig*> selectOn(const CiLayerRuns& layer, const std::vector<std::string>& only,
+                                          const std::vector<std::string>& drivers, bool boundOnly) const;
 };
 
 } // namespace sb

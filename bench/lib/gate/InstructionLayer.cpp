@@ -18,12 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Measured {
-    TechniqueInstructions counts;
-    Fingerprint fingerprint;
-};
-
-Measured measureOne(const CiSuite& suite, const CiConfig& c, const CiSide& side, const std::string& dir) {
+InstructionSample measureOne(const CiSuite& suite, const CiConfig& c, const CiSide& side,
+                             const std::string& dir) {
     InstructionCount::Options o;
     o.bench = side.bench;
     o.benchArgs = SuiteRunner::benchArgs(suite, c, suite.instructions.frames, suite.instructions.warmup);
@@ -36,8 +32,8 @@ Measured measureOne(const CiSuite& suite, const CiConfig& c, const CiSide& side,
             Fingerprint::capture(run.rows[0], InstructionCount::valgrindVersion(), o.environment)};
 }
 
-Measured measure(const CiSuite& suite, const CiConfig& c, const CiSide& side, const std::string& dir,
-                 ProgressBar& bar) {
+InstructionSample measure(const CiSuite& suite, const CiConfig& c, const CiSide& side, const std::string& dir,
+                          ProgressBar& bar) {
     return bar.step("instructions " + c.name + " (" + side.describe() + ", under valgrind)",
                     [&] { return measureOne(suite, c, side, dir); });
 }
@@ -99,11 +95,8 @@ std::string categoryChanges(const TechniqueInstructions& base, const TechniqueIn
 /// differ in the driver and the variables the sides set, nothing else. Seen: Mesa 25.0.7's EGL does not
 /// load under the pinned LD_BIND_NOW=1, so its side fell back to the osmesa backend and would have been
 /// compared with 22.3.6 on egl-surfaceless.
-std::string abMismatch(const Fingerprint& base, const Fingerprint& head, const CiSide& baseSide,
-                       const CiSide& headSide) {
-    std::set<std::string> tested;
-    for (const CiSide* side : {&baseSide, &headSide})
-        for (const auto& [k, v] : side->env) tested.insert(k);
+std::string abMismatch(const Fingerprint& base, const Fingerprint& head,
+                       const std::set<std::string>& tested) {
     const std::vector<std::string> besides = base.differencesBesidesDriver(head, tested);
     if (besides.empty()) return "";
     std::string list;
@@ -121,107 +114,146 @@ std::string abMismatch(const Fingerprint& base, const Fingerprint& head, const C
            "code paths";
 }
 
+std::string listed(const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& i : items) out += (out.empty() ? "" : ", ") + i;
+    return out;
+}
+
+/// Why configuration `i` is not compared ("" when it is): its base's fingerprint differs from its head's.
+/// `invalidAB` is set when the sides of a measured base differ beyond the driver (a failure, not the
+/// instrument's limit).
+std::string fingerprintMismatch(const InstructionInputs& in, size_t i, std::vector<std::string>& details,
+                                bool& invalidAB) {
+    const Fingerprint& head = in.heads[i].fingerprint;
+    const Fingerprint& base = in.bases[i]->fingerprint;
+    const std::vector<std::string> differences = base.differences(head);
+    if (differences.empty()) return "";
+    if (!in.measuredBase)
+        return "the baseline was counted on another machine or toolchain (" + listed(differences) +
+               "): instructions are compared on one fingerprint only";
+    details.push_back(in.configs[i] + ": base and head fingerprints differ in: " + listed(differences));
+    const std::string mismatch = abMismatch(base, head, in.tested);
+    invalidAB |= !mismatch.empty();
+    return mismatch;
+}
+
 } // namespace
 
-InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
-                                             const std::vector<const CiConfig*>& configs,
-                                             const std::optional<CiSide>& base, const CiSide& head,
-                                             const nlohmann::json& baseline, const std::string& workDir) {
+std::optional<InstructionSample> InstructionLayer::committed(const nlohmann::json& record,
+                                                             const std::string& config) {
+    if (record.is_null() || !record.contains("configs") || !record["configs"].contains(config)) return {};
+    const nlohmann::json& entry = record["configs"][config];
+    const nlohmann::json& fingerprint =
+        entry.contains("fingerprint") ? entry["fingerprint"] : record.at("fingerprint");
+    return InstructionSample{TechniqueInstructions::fromJson(entry, "the instruction baseline, " + config),
+                             Fingerprint::fromJson(fingerprint, "the instruction baseline, " + config)};
+}
+
+InstructionLayerResult InstructionLayer::judge(const InstructionInputs& in) {
     InstructionLayerResult out;
     out.layer.name = "B: instructions per frame";
     out.layer.ran = true;
-    if (!InstructionCount::valgrindAvailable())
-        throw Error(
-            "layer B needs valgrind (scripts/install-deps.sh installs it); run --layers A,C without it",
-            ExitCode::Unsupported);
-    std::vector<Measured> heads;
-    // Every configuration on the head, the A/A pair's second run, and with a base each on the base.
-    ProgressBar bar(stderr, configs.size() * (base ? 2 : 1) + 1, 0);
-    for (const CiConfig* c : configs) heads.push_back(measure(suite, *c, head, workDir + "/" + c->name, bar));
-    // The A/A pair: the first configuration again, in the same job.
-    const Measured again =
-        measure(suite, *configs.front(), head, workDir + "/" + configs.front()->name + "_again", bar);
-    const double aa = std::abs(again.counts.irPerFrame / heads.front().counts.irPerFrame - 1.0);
+    const double aa = std::abs(in.again.counts.irPerFrame / in.heads.front().counts.irPerFrame - 1.0);
     const bool unstable = aa > kUnstableAbove;
     const double threshold = std::max(kFloor, aa);
     char aaText[160];
     std::snprintf(aaText, sizeof aaText,
                   "A/A pair (%s twice): %.3g relative difference of Ir per frame (limit %.0e); threshold %s",
-                  configs.front()->name.c_str(), aa, kUnstableAbove, pct(threshold).c_str());
+                  in.configs.front().c_str(), aa, kUnstableAbove, pct(threshold).c_str());
     out.layer.details.push_back(aaText);
-    out.record["fingerprint"] = heads.front().fingerprint.toJson();
-    for (size_t i = 0; i < configs.size(); ++i)
-        out.record["configs"][configs[i]->name] = heads[i].counts.toJson(60);
-
-    std::optional<Fingerprint> baseFingerprint;
-    std::vector<std::optional<TechniqueInstructions>> bases(configs.size());
-    if (base) {
-        for (size_t i = 0; i < configs.size(); ++i) {
-            const Measured m =
-                measure(suite, *configs[i], *base, workDir + "/" + configs[i]->name + "_base", bar);
-            bases[i] = m.counts;
-            baseFingerprint = m.fingerprint;
-        }
-    } else if (!baseline.is_null()) {
-        baseFingerprint = Fingerprint::fromJson(baseline.at("fingerprint"), "the instruction baseline");
-        for (size_t i = 0; i < configs.size(); ++i)
-            if (baseline.contains("configs") && baseline["configs"].contains(configs[i]->name))
-                bases[i] = TechniqueInstructions::fromJson(baseline["configs"][configs[i]->name],
-                                                           "the instruction baseline, " + configs[i]->name);
+    // The record: the first configuration's fingerprint for the whole, and each configuration's own where
+    // it differs (another API, a configuration counted in a job of its own).
+    out.record["fingerprint"] = in.heads.front().fingerprint.toJson();
+    for (size_t i = 0; i < in.configs.size(); ++i) {
+        out.record["configs"][in.configs[i]] = in.heads[i].counts.toJson(60);
+        if (!in.heads[i].fingerprint.differences(in.heads.front().fingerprint).empty())
+            out.record["configs"][in.configs[i]]["fingerprint"] = in.heads[i].fingerprint.toJson();
     }
-    bar.close();
-    std::string noVerdict;
-    bool invalidAB = false; // base and head differ beyond the driver: not the instrument's doing
+
+    std::string noVerdict; // of the whole layer
     if (unstable)
         noVerdict = "instrument unstable: the A/A pair disagrees by more than " + pct(kUnstableAbove);
-    if (!baseFingerprint) noVerdict = "no instruction baseline yet (bench ci --update writes one)";
-    const auto differences = baseFingerprint ? baseFingerprint->differences(heads.front().fingerprint)
-                                             : std::vector<std::string>{};
-    if (!differences.empty()) {
-        std::string list;
-        for (const std::string& d : differences) list += (list.empty() ? "" : ", ") + d;
-        if (base) out.layer.details.push_back("base and head fingerprints differ in: " + list);
-        if (base && noVerdict.empty())
-            noVerdict = abMismatch(*baseFingerprint, heads.front().fingerprint, *base, head);
-        invalidAB = base && !noVerdict.empty() && !unstable;
-        if (!base && noVerdict.empty())
-            noVerdict = "the baseline was counted on another machine or toolchain (" + list +
-                        "): instructions are compared on one fingerprint only";
-    }
-    bool failed = false;
-    for (size_t i = 0; i < configs.size(); ++i) {
+    if (!in.measuredBase && !in.haveRecord)
+        noVerdict = "no instruction baseline yet (bench ci --update writes one)";
+    bool failed = false, invalidAB = false;
+    size_t compared = 0;
+    std::vector<std::string> notCompared;
+    for (size_t i = 0; i < in.configs.size(); ++i) {
         LayerCell cell;
-        const TechniqueInstructions& h = heads[i].counts;
+        const TechniqueInstructions& h = in.heads[i].counts;
         char perFrame[64];
         std::snprintf(perFrame, sizeof perFrame, "%.4g Ir/frame", h.irPerFrame);
-        if (!noVerdict.empty()) {
+        const std::string mismatch =
+            noVerdict.empty() && in.bases[i] ? fingerprintMismatch(in, i, out.layer.details, invalidAB) : "";
+        if (!noVerdict.empty() || !mismatch.empty()) {
             cell = {perFrame, "NO VERDICT"};
-        } else if (!bases[i]) {
+            if (!mismatch.empty()) notCompared.push_back(in.configs[i] + ": " + mismatch);
+        } else if (!in.bases[i]) {
             // Not compared, and the record could have held it: like a configuration missing from layer A's
             // baseline, a failure with its reason rather than a silent gap.
             cell = {std::string(perFrame) + "; not in the instruction baseline", "FAIL"};
             failed = true;
-            out.layer.details.push_back(configs[i]->name +
+            out.layer.details.push_back(in.configs[i] +
                                         ": not in the instruction baseline (add it with bench ci --update)");
         } else {
-            const InstructionDiff d =
-                InstructionDiff::compare(*bases[i], base ? h : cutLike(h, *bases[i]), 5);
+            ++compared;
+            const TechniqueInstructions& b = in.bases[i]->counts;
+            const InstructionDiff d = InstructionDiff::compare(b, in.measuredBase ? h : cutLike(h, b), 5);
             const double change = d.relativeChange();
             const bool fail = change > threshold;
             failed |= fail;
             cell = {pct(change) + ", " + perFrame, fail ? "FAIL" : "PASS"};
-            out.layer.details.push_back(
-                configs[i]->name + ": " + pct(change) + " Ir per frame; by where (Ir/frame): " +
-                categoryChanges(*bases[i], h) + "; top functions: " + topChanges(d, 5));
+            out.layer.details.push_back(in.configs[i] + ": " + pct(change) +
+                                        " Ir per frame; by where (Ir/frame): " + categoryChanges(b, h) +
+                                        "; top functions: " + topChanges(d, 5));
         }
-        out.cells.emplace_back(configs[i]->name, cell);
+        out.cells.emplace_back(in.configs[i], cell);
     }
+    // A layer that compared nothing gives no verdict, with every reason; one that compared some judges
+    // those, and the others' cells say NO VERDICT with their reasons listed.
+    if (noVerdict.empty() && compared == 0 && !failed && !notCompared.empty())
+        noVerdict = listed(notCompared);
+    else
+        for (const std::string& n : notCompared) out.layer.details.push_back("not compared: " + n);
     if (!noVerdict.empty()) out.layer.details.push_back("no verdict: " + noVerdict);
-    out.layer.verdict = !noVerdict.empty() ? "NO VERDICT" : failed ? "FAIL" : "PASS";
+    out.layer.verdict = failed ? "FAIL" : !noVerdict.empty() || invalidAB ? "NO VERDICT" : "PASS";
     // The instrument's reasons (unstable, no record, another machine's record) are reported, never an
     // alarm (GateReport.h); an A/B whose sides differ beyond the driver compared nothing and fails.
-    out.layer.declined = !noVerdict.empty() && !invalidAB;
+    out.layer.declined = out.layer.verdict == "NO VERDICT" && !invalidAB;
     return out;
+}
+
+InstructionLayerResult InstructionLayer::run(const CiSuite& suite,
+                                             const std::vector<const CiConfig*>& configs,
+                                             const std::optional<CiSide>& base, const CiSide& head,
+                                             const nlohmann::json& baseline, const std::string& workDir) {
+    if (!InstructionCount::valgrindAvailable())
+        throw Error(
+            "layer B needs valgrind (scripts/install-deps.sh installs it); run --layers A,C without it",
+            ExitCode::Unsupported);
+    InstructionInputs in;
+    // Every configuration on the head, the A/A pair's second run, and with a base each on the base.
+    ProgressBar bar(stderr, configs.size() * (base ? 2 : 1) + 1, 0);
+    for (const CiConfig* c : configs) {
+        in.configs.push_back(c->name);
+        in.heads.push_back(measure(suite, *c, head, workDir + "/" + c->name, bar));
+    }
+    // The A/A pair: the first configuration again, in the same job.
+    in.again = measure(suite, *configs.front(), head, workDir + "/" + configs.front()->name + "_again", bar);
+    in.bases.resize(configs.size());
+    if (base) {
+        in.measuredBase = true;
+        for (const CiSide* side : {&*base, &head})
+            for (const auto& [k, v] : side->env) in.tested.insert(k);
+        for (size_t i = 0; i < configs.size(); ++i)
+            in.bases[i] = measure(suite, *configs[i], *base, workDir + "/" + configs[i]->name + "_base", bar);
+    } else if (!baseline.is_null()) {
+        in.haveRecord = true;
+        for (size_t i = 0; i < configs.size(); ++i) in.bases[i] = committed(baseline, configs[i]->name);
+    }
+    bar.close();
+    return judge(in);
 }
 
 } // namespace sb
