@@ -28,7 +28,6 @@
 
 namespace sb::test {
 
-
 inline constexpr const char* kSecondDriver = "mesa-25.0.7";
 inline constexpr const char* kSecondDriverInstall = "bash scripts/install-deps.sh driver";
 
@@ -48,7 +47,6 @@ inline bool driversRequired() {
     const char* v = std::getenv("SHADOWBENCH_REQUIRE_DRIVERS");
     return v && std::string(v) == "1";
 }
-
 
 /// Whether this process runs on `driver` (a name of the driver table).
 inline bool runsOnDriver(const std::string& driver) {
@@ -76,8 +74,7 @@ inline void runThisTestOnDriver(const std::string& driver, const std::string& ca
     try {
         resolved = DriverTable::resolve(driver);
     } catch (const Error& e) {
-        if (driversRequired())
-            FAIL() << caseName << " needs the driver " << driver << ": " << e.what();
+        if (driversRequired()) FAIL() << caseName << " needs the driver " << driver << ": " << e.what();
         GTEST_SKIP() << caseName << " needs the driver " << driver << ": " << e.what();
     }
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
