@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -136,7 +136,7 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     std::string depthKey = "pcss-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+    GraphicsPipelineDesc depth = scenePipeline(ctx, "common/depth.vert", VulkanDepthMapSet::kDepthFragment,
                                                base, mDepthLayout, depthKey);
     mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);

@@ -1,7 +1,7 @@
 #pragma once
 // `pcss` on Vulkan: PcssGL's two passes (techniques/shadowmap/PcssGL.h has the method) with the same
 // declaration, properties, light fits (FlatLightFits), per-light parameters and Poisson kernels
-// (Pcss::lightParams, PoissonDisk), caster culling and shaders (shadowmap/depth.vert, common/scene.vert,
+// (Pcss::lightParams, PoissonDisk), caster culling and shaders (common/depth.vert, common/scene.vert,
 // shadowmap/pcss.frag, their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
 // Depth pass: as ShadowMapVulkan's, one layer per shadowed light of an X8_D24 depth array (GL's 24-bit
@@ -15,10 +15,10 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
-#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"

@@ -5,9 +5,9 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMap.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -116,7 +116,7 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     std::string depthKey = "shadowmap-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+    GraphicsPipelineDesc depth = scenePipeline(ctx, "common/depth.vert", VulkanDepthMapSet::kDepthFragment,
                                                base, mDepthLayout, depthKey);
     mMaps.depthPipeline(depth, p);
     mDepthPipeline = ctx.pipelines.get(depthKey, depth);

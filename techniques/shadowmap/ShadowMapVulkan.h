@@ -1,6 +1,6 @@
 #pragma once
 // `shadowmap` on Vulkan: ShadowMapGL's two passes with the same declaration, properties, light
-// fits (FlatLightFits), caster culling and shaders (shadowmap/depth.vert, common/scene.vert,
+// fits (FlatLightFits), caster culling and shaders (common/depth.vert, common/scene.vert,
 // shadowmap/lighting.frag, their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
 // Depth pass: one layer per shadowed light of a depth array image (X8_D24, the GL map's 24-bit depth,
@@ -14,9 +14,9 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
-#include "techniques/shadowmap/FlatLightFits.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"

@@ -1,10 +1,10 @@
 #pragma once
 // The depth maps one Vulkan form of the shadow-map family renders and samples, and what goes with them
 // (ShadowMapVulkan, PcssVulkan, CascadedVulkan, ParaboloidVulkan; CubeMapVulkan holds two, its cubes
-// and its flat maps): the image of layers (VulkanDepthMaps::image), the render pass a layer is drawn
-// with, a framebuffer per drawn layer (or one over all of them for a layered pass), the samplers the
-// lighting pass reads it through, and the depth pass's dynamic uniform slots (UniformSlots). Everything
-// is released with the set.
+// and its flat maps; a technique outside the family that needs a light's depth map): the image of
+// layers (VulkanDepthMaps::image), the render pass a layer is drawn with, a framebuffer per drawn layer
+// (or one over all of them for a layered pass), the samplers the lighting pass reads it through, and the
+// depth pass's dynamic uniform slots (UniformSlots). Everything is released with the set.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,7 +53,7 @@ public:
     /// needs no fragment shader (legal in Vulkan: the depth test, the write and the bias still apply), and
     /// a GPU driver then has no fragment work to launch. lavapipe binds an empty shader of its own in that
     /// case, so on it the work and the pipeline statistics are those of the GL forms' empty
-    /// shaders/shadowmap/depth.frag (which says why GL gains nothing from leaving it out either).
+    /// shaders/common/depth.frag (which says why GL gains nothing from leaving it out either).
     static constexpr const char* kDepthFragment = "";
     /// Makes `desc` a depth pass into these maps: no colour, the set's render pass, and the depth bias
     /// of glPolygonOffset(bias_slope, bias_constant) from `properties` (ShadowMapProperties).

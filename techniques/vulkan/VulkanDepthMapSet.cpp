@@ -1,10 +1,10 @@
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 
 #include <utility>
 
 #include "techniques/PropertySet.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
+#include "techniques/ShadowMapProperties.h"
+#include "techniques/vulkan/VulkanDepthMaps.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {

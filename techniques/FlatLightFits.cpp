@@ -1,4 +1,4 @@
-#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/FlatLightFits.h"
 
 #include <algorithm>
 
@@ -8,7 +8,7 @@
 #include "shading/ShaderLimits.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/PointLightRefusal.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -18,7 +18,8 @@ const glm::mat4& FlatLightFits::textureBias() {
     return kBias;
 }
 
-void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const PropertySet& p) {
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const PropertySet& p,
+                             PointLights points) {
     mViewProj.clear();
     mShadowMatrix.clear();
     mCastsShadows.clear();
@@ -29,8 +30,9 @@ void FlatLightFits::setScene(const Scene& scene, const std::string& technique, c
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
-        mCastsShadows.push_back(l.castsShadows);
-        if (!l.castsShadows) { // lit, never looked up: no fit (a point light has none)
+        const bool unmapped = points == PointLights::Unmapped && l.type == LightType::Point;
+        mCastsShadows.push_back(l.castsShadows && !unmapped);
+        if (!mCastsShadows.back()) { // no map, never looked up: no fit (a point light has none)
             mViewProj.emplace_back(1.0f);
             mShadowMatrix.push_back(textureBias());
             continue;
