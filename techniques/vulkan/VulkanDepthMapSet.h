@@ -49,6 +49,7 @@ public:
     VkImageView view() const { return mImage.view(); } ///< every layer, as the lighting pass samples them
     VkRenderPass pass() const { return mPass; }
     uint32_t size() const { return mSize; }
+    uint32_t layers() const { return mLayers; }
     /// The fragment stage of every depth pass into these maps: none. The pipeline writes depth only, so it
     /// needs no fragment shader (legal in Vulkan: the depth test, the write and the bias still apply), and
     /// a GPU driver then has no fragment work to launch. lavapipe binds an empty shader of its own in that
@@ -56,9 +57,12 @@ public:
     /// shaders/common/depth.frag (which says why GL gains nothing from leaving it out either).
     static constexpr const char* kDepthFragment = "";
     /// Makes `desc` a depth pass into these maps: no colour, the set's render pass, and the depth bias
-    /// of glPolygonOffset(bias_slope, bias_constant) from `properties` (ShadowMapProperties).
+    /// of glPolygonOffset(biasSlope, biasConstant).
+    void depthPipeline(GraphicsPipelineDesc& desc, double biasSlope, double biasConstant) const;
+    /// The same with bias_slope and bias_constant from `properties` (ShadowMapProperties).
     void depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const;
     /// The pipeline-cache key of that bias, "|bias=slope,constant|", appended to the pass's name.
+    static std::string biasKey(double biasSlope, double biasConstant);
     static std::string biasKey(const PropertySet& properties);
     /// Begins the render pass over framebuffer `index`, which clears its layers to the far plane, with
     /// the viewport and scissor of the whole map.
