@@ -20,11 +20,15 @@ const glm::mat4& FlatLightFits::textureBias() {
 
 void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const PropertySet& p,
                              PointLights points) {
+    setScene(scene, technique, LightFitProperties::lightFit(p),
+             int(p.getInt(ShadowMapProperties::kResolution)), points);
+}
+
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const LightFit& fit,
+                             int resolution, PointLights points) {
     mViewProj.clear();
     mShadowMatrix.clear();
     mCastsShadows.clear();
-    const LightFit fit = LightFitProperties::lightFit(p);
-    const int resolution = int(p.getInt(ShadowMapProperties::kResolution));
     const bool recount = !(scene.motion && mCoverageCounted);
     if (recount) mCoverage = {};
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
+#include "scenes/LightFit.h"
 #include "scenes/MapCoverage.h"
 #include "scenes/Scene.h"
 #include "shading/ShaderLimits.h"
@@ -58,6 +59,9 @@ public:
     /// frames.
     void setScene(const Scene& scene, const std::string& technique, const PropertySet& p,
                   PointLights points = PointLights::Refuse);
+    /// The same for a technique without the fit's knobs: `fit` and maps of `resolution` texels.
+    void setScene(const Scene& scene, const std::string& technique, const LightFit& fit, int resolution,
+                  PointLights points);
 
     size_t size() const { return mViewProj.size(); }
     /// The shadowed lights' maps together: texels the casters cover, and all their texels
