@@ -15,7 +15,7 @@
 //     on opposite sides of 0.5. The rule (techniques/raytraced/GuidedRays.h) is wrong only at sub-texel
 //     gaps and casters, contacts within the margin and concave radii under a texel: measured 0 pixels on
 //     every built-in scene at this size, and at most 1 judged sample (0.007 %) against the Embree
-//     reference at 128x128 (techniques/raytraced/README.md); a broken rule (a sign, a slope, a texel
+//     reference at 128x128 (results/raytraced/README.md); a broken rule (a sign, a slope, a texel
 //     offset) disagrees on hundreds;
 //   - the second guided run has the same counters and byte-identical visibility images.
 // And a closed form: a casting plane under a low sun, nothing else, shadows none of itself, so guided
