@@ -22,12 +22,13 @@ using sb::test::runCommand;
 namespace {
 
 constexpr const char* kSecond = sb::test::kSecondDriver;
-constexpr const char* kInstall = sb::test::kSecondDriverInstall;
 const std::string kTiny = " -t none --scene sphere_plane --size 32x32 --frames 1 --warmup 0 --no-timer-check";
 
 std::string bench() {
     return SB_BENCH_BINARY;
 }
+
+using sb::test::driversDirectory;
 
 /// The upstream version dpkg installed `package` at ("22.3.6" of "22.3.6-1+deb12u2"), "" without dpkg.
 std::string debianUpstreamVersion(const std::string& package) {
@@ -135,7 +136,7 @@ TEST(DriverCli, NamedDriverNotInstalledSaysHowToInstallIt) {
         runCommand("SHADOWBENCH_DRIVERS_DIR=" + empty + " " + bench() + " --driver " + kSecond + kTiny);
     EXPECT_EQ(r.exitCode, 3) << r.output;
     EXPECT_EQ(lineCount(r.output), 1) << r.output;
-    EXPECT_NE(r.output.find(kInstall), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(sb::test::kSecondDriverInstall), std::string::npos) << r.output;
 }
 
 TEST(DriverCli, UnloadablePrefixIsRefusedInOneLineOnEachApi) {

@@ -1,12 +1,12 @@
 #pragma once
-// The second driver of the tests (core/DriverTable.h, docs/USAGE.md "Drivers"): Mesa 25.0.7, the one
-// whose lavapipe offers ray queries. Whether it is installed where the program looks for it, and the
-// skip a test that needs it takes: where it is missing the test skips, naming the command that installs
-// it, unless SHADOWBENCH_REQUIRE_DRIVERS=1 (CI: scripts/test.sh installs the driver and sets it), where
-// it fails instead. One home for what tests/DriverCliTest.cpp and the ray-traced tests ask.
+// The second driver of the driver table (core/DriverTable.h: mesa-25.0.7, what `bench --driver mesa-25.0.7`
+// runs on) as the CLI tests that need it see it: whether it is installed, and the skip (or, where CI
+// requires the drivers, the failure) of a test that needs it and does not find it.
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace sb::test {
 
@@ -23,7 +23,8 @@ inline bool secondDriverInstalled() {
     return std::filesystem::exists(driversDirectory() / kSecondDriver / "etc/lvp_icd.json");
 }
 
-/// CI sets SHADOWBENCH_REQUIRE_DRIVERS=1: there a missing driver fails instead of skipping.
+/// CI (scripts/test.sh installs the driver) sets SHADOWBENCH_REQUIRE_DRIVERS=1: there a missing driver
+/// fails instead of skipping.
 inline bool driversRequired() {
     const char* v = std::getenv("SHADOWBENCH_REQUIRE_DRIVERS");
     return v && std::string(v) == "1";
@@ -31,13 +32,14 @@ inline bool driversRequired() {
 
 } // namespace sb::test
 
-/// At the top of a test that needs the second driver: skips (or, under SHADOWBENCH_REQUIRE_DRIVERS=1,
-/// fails) where it is not installed.
+/// At the top of a test that needs the second driver: skips it, naming the install command, where the
+/// driver is not installed (fails where SHADOWBENCH_REQUIRE_DRIVERS=1).
 #define REQUIRE_SECOND_DRIVER()                                                                              \
-    if (!sb::test::secondDriverInstalled()) {                                                                \
-        if (sb::test::driversRequired())                                                                     \
-            FAIL() << sb::test::kSecondDriver                                                                \
-                   << " is not installed; install it with: " << sb::test::kSecondDriverInstall;              \
-        GTEST_SKIP() << sb::test::kSecondDriver << " is not installed in " << sb::test::driversDirectory()   \
-                     << "; install it with: " << sb::test::kSecondDriverInstall;                             \
+    if (!::sb::test::secondDriverInstalled()) {                                                              \
+        if (::sb::test::driversRequired())                                                                   \
+            FAIL() << ::sb::test::kSecondDriver                                                              \
+                   << " is not installed; install it with: " << ::sb::test::kSecondDriverInstall;            \
+        GTEST_SKIP() << ::sb::test::kSecondDriver << " is not installed in "                                 \
+                     << ::sb::test::driversDirectory()                                                       \
+                     << "; install it with: " << ::sb::test::kSecondDriverInstall;                           \
     }
