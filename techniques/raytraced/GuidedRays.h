@@ -3,7 +3,7 @@
 // shadows of AMD's FidelityFX SDK (the Hybrid Shadows sample, whose FidelityFX Classifier rejects the
 // pixels a shadow map shows lit, and those it shows shadowed, before a ray is spent on them) and Boksansky,
 // Wimmer and Bittner, "Ray Traced Shadows: Maintaining Real-Time Frame Rates" (Ray Tracing Gems, ch. 13,
-// section 13.4, adaptive sampling: rays where the shadow changes, few where it does not). Unrelated to the
+// its section on adaptive sampling: rays where the shadow changes, few where it does not). Unrelated to the
 // `hybrid` technique, which splits a frame by object. The API-neutral half: knobs, defines, counters; the
 // maps and their pass are techniques/raytraced/GuideMapsVulkan.h, the test shaders/raytraced/guided.glsl.
 //
