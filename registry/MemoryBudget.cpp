@@ -21,9 +21,10 @@ uint64_t MemoryBudget::targetBytes(int width, int height) {
 }
 
 ResourceEstimate MemoryBudget::techniqueBytes(const TechniqueSpec& spec, const ResourceInputs& in) {
-    if (!TechniqueRegistry::has(spec.name, Api::GL)) return {};
-    // The GL form is only constructed (no context): its declaration and the spec's checked properties.
-    const std::unique_ptr<GlTechnique> technique = TechniqueRegistry::create(spec);
+    if (!TechniqueRegistry::has(spec.name, Api::GL) && !TechniqueRegistry::hasVulkan(spec.name)) return {};
+    // A form is only constructed (no context, no device): its declaration and the spec's checked
+    // properties (the GL form, else the Vulkan form of a technique that has no other: raytraced).
+    const std::unique_ptr<Technique> technique = TechniqueRegistry::describe(spec);
     const ResourceDeclaration& declared = technique->info().resources;
     return declared ? declared(technique->properties(), in) : ResourceEstimate{};
 }

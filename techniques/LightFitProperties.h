@@ -1,7 +1,7 @@
 #pragma once
 // The light fit's two knobs (scenes/LightFit.h), one name, maker and reading for every technique whose
 // directional light camera is that fit: the flat maps of the shadow-map family (`shadowmap`, `pcss`,
-// `vsm`, `esm`, through techniques/shadowmap/ShadowMapProperties.h) and `projective`'s projector. It
+// `vsm`, `esm`, through techniques/ShadowMapProperties.h) and `projective`'s projector. It
 // lives below the technique folders because no technique folder includes another.
 #include <string>
 

@@ -1,9 +1,9 @@
 // The depth passes of the shadow-map family on Vulkan are pipelines without a fragment stage
-// (techniques/shadowmap/VulkanDepthMapSet.h, kDepthFragment): they write depth only, so a driver need not
+// (techniques/vulkan/VulkanDepthMapSet.h, kDepthFragment): they write depth only, so a driver need not
 // launch any fragment work for them. Observed through `--dump-shaders` (shading/ShaderDump.h), which writes
 // every stage a technique's compile hands to the compiler, one folder per program: a depth program's folder
 // must hold its vertex (and geometry) stage and no fragment stage. (The GL forms keep the empty
-// shaders/shadowmap/depth.frag: on Mesa a GL program without it draws exactly the same work, as that file
+// shaders/common/depth.frag: on Mesa a GL program without it draws exactly the same work, as that file
 // says, so there is nothing to pin there.)
 #include <filesystem>
 #include <map>

@@ -46,6 +46,16 @@ TEST(MemoryLimitCli, ATechniqueOverTheLimitIsRefusedBeforeItAllocates) {
     EXPECT_LT(double(r.peakRssKiB) / kMiB, 150.0) << r.output;
 }
 
+// A technique with a Vulkan form only (raytraced: GL has no ray queries) is estimated from that form:
+// guided's one depth map per light, 8192^2 x 4 B = 256 MiB for sphere_plane's one light, worked out by
+// hand. Refused before any device exists, so the system driver, which has no ray queries, will do.
+TEST(MemoryLimitCli, AVulkanOnlyTechniqueOverTheLimitIsRefusedToo) {
+    const auto r = sb::test::runCommand(kBench + " --api vulkan -t raytraced:mode=guided:resolution=8192" +
+                                        kQuick + " --max-memory-gib 0.1");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("technique 256.0 MiB"), std::string::npos) << r.output;
+}
+
 TEST(MemoryLimitCli, AnAcceptedTechniquesEstimateIsWhatItTakes) {
     // The estimate as bench states it: the refusal's line under a limit just below it.
     const sb::test::PeakResult refused =

@@ -23,8 +23,8 @@
 #include "registry/TechniqueRegistry.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/gl/SeparableBlur.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 using namespace sb;
 

@@ -2,7 +2,7 @@
 // The pieces of a pass that renders into one layer of an image array and of the pass that samples it:
 // a colour render pass over one attachment, a framebuffer of one view, and the samplers such layers are
 // read through. Used by the techniques' Vulkan forms (the blur of techniques/vulkan/VulkanSeparableBlur,
-// projective's texture, the shadow-map family's maps in techniques/shadowmap/VulkanDepthMaps).
+// projective's texture, the depth maps of techniques/vulkan/VulkanDepthMaps).
 #include <cstdint>
 
 #include <vulkan/vulkan.h>

@@ -14,6 +14,8 @@
 //   RT_MODE_HARD  one ray towards the light's centre: to a point or spot light's position, stopping
 //                 2^-12 of the distance short of it (as the reference does, so geometry at the light,
 //                 a lantern's bulb, does not occlude), or against a directional light's direction.
+//   RT_MODE_GUIDED  hard's ray only where the light's depth map is unsure (raytraced/guided.glsl); the
+//                 decisions taken without a ray are counted in uDecided.
 #extension GL_EXT_ray_query : require
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
@@ -70,7 +72,7 @@ bool lightArrives(int i, vec3 p, vec3 n, out vec3 towards, out float reach) {
     return lightFalloff(i, p, towards) > 0.0;
 }
 
-#ifdef RT_MODE_HARD
+#if defined(RT_MODE_HARD) || defined(RT_MODE_GUIDED)
 // One ray from the offset origin to the light's centre: 1 lit, 0 shadowed.
 float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, float reach, inout uint rays) {
     vec3 o = offsetRayOrigin(p, n);
@@ -80,6 +82,10 @@ float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, float reach, inout ui
     float len = length(d);
     return occluded(o, d / len, len * kShortOfLight) ? 0.0 : 1.0;
 }
+#endif
+
+#ifdef RT_MODE_GUIDED
+#include "raytraced/guided.glsl"
 #endif
 
 void main() {
@@ -95,10 +101,17 @@ void main() {
         if (!lightArrives(i, vWorldPos, ng, towards, reach))
             vis[i] = 0.0;
         else if (shadowApplies(i, vColorId))
+#ifdef RT_MODE_GUIDED
+            vis[i] = guidedOrTraced(i, vWorldPos, ng, towards, reach, rays);
+#else
             vis[i] = traceVisibility(i, vWorldPos, ng, towards, reach, rays);
+#endif
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     if (rays > 0u) atomicAdd(uRayCount, rays);
+#ifdef RT_MODE_GUIDED
+    if (gGuideDecided > 0u) atomicAdd(uDecided, gGuideDecided);
+#endif
     oColor = vec4(vColorId.rgb * light, 1.0);
     oVisibility = vis;
 }

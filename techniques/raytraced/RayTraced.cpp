@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "techniques/Property.h"
+#include "techniques/raytraced/GuidedRays.h"
 
 namespace sb {
 
@@ -10,6 +11,7 @@ namespace {
 
 constexpr RayTraced::ModeEntry kModes[] = {
     {RayTraced::Mode::Hard, "hard", "RT_MODE_HARD"},
+    {RayTraced::Mode::Guided, "guided", "RT_MODE_GUIDED"},
 };
 constexpr NameTable kModeNames{kModes};
 
@@ -21,10 +23,13 @@ std::vector<std::string> modeChoices() {
 
 /// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
 std::vector<PropertyDesc> declareProperties() {
-    return {
+    std::vector<PropertyDesc> out = {
         choice(RayTraced::kMode, "hard", modeChoices(),
-               "hard: one ray per fragment and light towards its centre (1 lit, 0 shadowed)"),
+               "hard: one ray per fragment and light towards its centre (1 lit, 0 shadowed); guided: hard's "
+               "rays only where a depth map of the light is unsure"),
     };
+    for (PropertyDesc& d : GuidedRays::properties()) out.push_back(std::move(d));
+    return out;
 }
 
 } // namespace
@@ -48,9 +53,17 @@ TechniqueInfo RayTraced::declaration() {
             .capabilities = {{Api::Vulkan, "VK_KHR_acceleration_structure", 1, 2,
                               "VK_KHR_acceleration_structure", hint},
                              {Api::Vulkan, "VK_KHR_ray_query", 1, 2, "VK_KHR_ray_query", hint}},
-            .passes = {"structures", "lighting"},
+            .passes = passes(Mode::Hard),
             .properties = declareProperties(),
-            .quality = {}};
+            .quality = {},
+            .resources = [](const PropertySet& p, const ResourceInputs& in) {
+                return mode(p) == Mode::Guided ? GuidedRays::resources(p, in) : ResourceEstimate{};
+            }};
+}
+
+std::vector<std::string> RayTraced::passes(Mode mode) {
+    if (mode == Mode::Guided) return {"structures", "depth", "lighting"};
+    return {"structures", "lighting"};
 }
 
 void RayTraced::addModeDefines(Mode mode, Defines& defines) {

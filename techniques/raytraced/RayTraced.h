@@ -12,9 +12,12 @@
 // Modes (property `mode`, one shader define each, all in shaders/raytraced/lighting.frag):
 //   hard  one ray per fragment and light towards the light's centre (its position, or against its
 //         direction), 1 lit, 0 shadowed: the exact hard shadow the Embree reference computes.
+//   guided  hard's rays only where a depth map of the light cannot decide (techniques/raytraced/
+//         GuidedRays.h: the rule and why it is conservative); a pass "depth" renders the maps.
 // An area light is traced at its centre in `hard` mode.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/NameTable.h"
 #include "shading/Defines.h"
@@ -33,7 +36,7 @@ struct RayTraced {
     /// Where the Vulkan extensions are found when the device lacks them (the capabilities' hint).
     static constexpr const char* kDriverHint = "the driver entry mesa-25.0.7 has them: --driver mesa-25.0.7";
 
-    enum class Mode { Hard };
+    enum class Mode { Hard, Guided };
     struct ModeEntry {
         Mode value;
         const char* name;   ///< the value of `mode`
@@ -44,6 +47,8 @@ struct RayTraced {
     static Mode mode(const PropertySet& properties);
 
     static TechniqueInfo declaration();
+    /// The passes of `mode`: structures and lighting; guided's depth maps between them.
+    static std::vector<std::string> passes(Mode mode);
     /// The mode's define (RT_MODE_HARD=1) added to `defines`.
     static void addModeDefines(Mode mode, Defines& defines);
 

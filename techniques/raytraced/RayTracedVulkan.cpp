@@ -7,13 +7,20 @@
 
 #include "core/Strings.h"
 #include "scenes/Motion.h"
+#include "scenes/ShadowWork.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/raytraced/GuidedRays.h"
 #include "techniques/raytraced/RayTraced.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
 
 RayTracedVulkan::RayTracedVulkan() : VulkanTechnique(RayTraced::declaration()) {}
+
+void RayTracedVulkan::propertiesApplied() {
+    mGuided = RayTraced::mode(properties()) == RayTraced::Mode::Guided;
+    mutableInfo().passes = RayTraced::passes(RayTraced::mode(properties()));
+}
 
 RayTracedVulkan::~RayTracedVulkan() {
     if (mLayout) vkDestroyPipelineLayout(mDevice, mLayout, nullptr);
@@ -30,12 +37,14 @@ std::string RayTracedVulkan::checkCapabilities(const VulkanContext& context) con
            context.info().name + ", Vulkan " + context.info().apiVersion + "); " + RayTraced::kDriverHint;
 }
 
-void RayTracedVulkan::setScene(const Scene&) {
+void RayTracedVulkan::setScene(const Scene& scene) {
     mStructures.reset();
     mRebuild = false;
+    if (mGuided) mGuide.setScene(scene, properties());
 }
 
 void RayTracedVulkan::sceneChanged(const Scene& scene, uint32_t changes) {
+    if (mGuided) mGuide.sceneChanged(scene, properties());
     if (!(changes & kCastersMoved) || !mStructures) return;
     mStructures->writeInstances(scene);
     mRebuild = true;
@@ -44,6 +53,7 @@ void RayTracedVulkan::sceneChanged(const Scene& scene, uint32_t changes) {
 void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
     mDevice = ctx.context.device();
     if (!mStructures) mStructures = std::make_unique<AccelerationStructures>(ctx.context, ctx.scene);
+    if (mGuided) mGuide.compile(ctx, properties()); // set 2's layout, before the pipeline layout
     if (!mRayCount) {
         mRayCount = VulkanBuffer(ctx.context, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         std::memset(mRayCount.map(), 0, sizeof(uint32_t));
@@ -54,7 +64,9 @@ void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
               D::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
             "raytraced");
         mSets.writeBuffer(0, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mRayCount.buffer(), sizeof(uint32_t));
-        mLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
+        std::vector<VkDescriptorSetLayout> sets{mSets.layout(0)};
+        if (mGuided) sets.push_back(mGuide.layout());
+        mLayout = createScenePipelineLayout(ctx, sets);
     }
     // The top level is rebuilt in place (same handle) when casters move: written once.
     mSets.writeAccelerationStructure(0, 0, mStructures->topLevel());
@@ -62,6 +74,7 @@ void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
     Defines defines = ctx.defines();
     defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
     RayTraced::addModeDefines(RayTraced::mode(properties()), defines);
+    if (mGuided) GuidedRays::addDefines(properties(), defines);
     defines["SB_EYE_RELATIVE_POSITION"] = "1"; // the geometric normal's derivatives (lighting.frag)
     std::string key;
     GraphicsPipelineDesc desc =
@@ -80,18 +93,33 @@ void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
     } else {
         ctx.passes.skip("structures", "nothing moved: the structures built before the first frame hold");
     }
+    if (mGuided) recordGuide(ctx);
     // The previous frame has finished (the harness waited for its fence) and this one has not started:
     // the host zeroes the counter the fragments add to.
     *static_cast<uint32_t*>(mRayCount.map()) = 0;
     ctx.passes.begin("lighting");
     ctx.submitter.resetStats();
+    if (mGuided) mGuide.bind(ctx.cmd, mLayout);
     drawLitScene(ctx, mPipeline, mLayout, mSets.set(0));
 }
 
 Counters RayTracedVulkan::counters() const {
     // Read after the frame's fence (the harness reads counters after the frame it waited for).
     const uint32_t rays = mRayCount ? *static_cast<const uint32_t*>(mRayCount.map()) : 0u;
-    return RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
+    Counters out = RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
+    if (mGuided)
+        for (auto& c : GuidedRays::counters(rays, mGuide.decided(), mGuide.mapTexels())) out.push_back(c);
+    return out;
+}
+
+void RayTracedVulkan::recordGuide(VulkanFrameContext& ctx) {
+    mGuide.resetCount();
+    if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+        ctx.passes.skip("depth", reason);
+        return;
+    }
+    ctx.passes.begin("depth");
+    mGuide.recordDepth(ctx);
 }
 
 } // namespace sb

@@ -25,9 +25,14 @@
 // VulkanContext enables for them (VulkanContext::rayQuery), and fragmentStoresAndAtomics for the counter.
 //
 // Counters: RayTraced::counters (structures_built, structure_bytes, rays_traced of the last frame).
+//
+// mode=guided (techniques/raytraced/GuidedRays.h): a pass "depth" between the two renders a depth map per
+// light (GuideMapsVulkan), which the lighting pass reads through set 2 to trace only the unsure rays;
+// GuidedRays::counters follow raytraced's.
 #include <memory>
 
 #include "techniques/raytraced/AccelerationStructures.h"
+#include "techniques/raytraced/GuideMapsVulkan.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -38,19 +43,25 @@ class RayTracedVulkan final : public VulkanTechnique {
 public:
     RayTracedVulkan();
     ~RayTracedVulkan() override;
+    /// The passes of the mode the properties chose (RayTraced::passes).
+    void propertiesApplied() override;
     /// The declaration's extensions, then the features VulkanContext enables with them and
     /// fragmentStoresAndAtomics: one line naming every one missing.
     std::string checkCapabilities(const VulkanContext& context) const override;
     /// Forgets the structures of a previous scene; compile() builds this one's.
     void setScene(const Scene& scene) override;
     /// Moving casters: their matrices go into the instance buffer now, and the frame rebuilds the top
-    /// level. Lights and the camera need nothing: the shader reads them from the frame block.
+    /// level. Lights and the camera need nothing: the shader reads them from the frame block (guided
+    /// refits its maps to whatever moved).
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override;
 
 private:
+    /// mode=guided: the pass "depth" (skipped where the scene needs no shadow), and the count zeroed.
+    void recordGuide(VulkanFrameContext& ctx);
+
     VkDevice mDevice = VK_NULL_HANDLE;
     std::unique_ptr<AccelerationStructures> mStructures;
     bool mRebuild = false;      ///< the casters moved since the last frame
@@ -59,6 +70,8 @@ private:
     DescriptorSets mSets;
     VkPipelineLayout mLayout = VK_NULL_HANDLE;
     ScenePipeline mPipeline;
+    bool mGuided = false; ///< mode=guided
+    GuideMapsVulkan mGuide;
 };
 
 } // namespace sb

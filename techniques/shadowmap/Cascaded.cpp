@@ -1,7 +1,7 @@
 #include "techniques/shadowmap/Cascaded.h"
 
 #include "techniques/Property.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 

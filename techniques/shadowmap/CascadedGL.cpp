@@ -2,15 +2,15 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-// Uniform locations: shadowmap/depth.vert's light matrix, and shadowmap/cascaded_lighting.frag's.
+// Uniform locations: common/depth.vert's light matrix, and shadowmap/cascaded_lighting.frag's.
 constexpr GLint kLightMatrixLocation = 8;
 constexpr GLint kSplitFarLocation = 10;
 constexpr GLint kBandStartLocation = 11;
@@ -31,7 +31,7 @@ void CascadedGL::compile(const CompileContext& ctx) {
     const PropertySet& p = properties();
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), mPlan.slotCount(), false);
     Defines base = ctx.submitter.defines();
-    mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
+    mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
     setPermutationKey(

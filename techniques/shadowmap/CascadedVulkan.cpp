@@ -3,9 +3,9 @@
 #include <cstring>
 
 #include "core/Error.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/Cascaded.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -74,7 +74,7 @@ void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
     mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
     std::string depthKey = "cascaded-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+    GraphicsPipelineDesc depth = scenePipeline(ctx, "common/depth.vert", VulkanDepthMapSet::kDepthFragment,
                                                base, mDepthLayout, depthKey);
     depth.depthClamp = true;
     mMaps.depthPipeline(depth, p);

@@ -1,7 +1,7 @@
 #pragma once
 // `cascaded` on Vulkan: CascadedGL's two passes with the same declaration, properties, lights, splits,
 // fits, shared and empty cascades, caster culling and counters (CascadedMaps, which both forms call)
-// and shaders (shadowmap/depth.vert, common/scene.vert, shadowmap/cascaded_lighting.frag, their
+// and shaders (common/depth.vert, common/scene.vert, shadowmap/cascaded_lighting.frag, their
 // `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
 // Depth pass: one layer per slot of a depth array image (X8_D24 as ShadowMapVulkan's maps, so
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "techniques/shadowmap/CascadedMaps.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"

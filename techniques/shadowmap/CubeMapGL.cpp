@@ -3,15 +3,15 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
 namespace {
 using P = ShadowMapProperties;
-constexpr GLint kLightMatrixLocation = 8;      // shadowmap/depth.vert
+constexpr GLint kLightMatrixLocation = 8;      // common/depth.vert
 constexpr GLint kFaceViewProjLocation = 12;    // shadowmap/cube_depth.geom
 constexpr GLint kLayerBaseLocation = 18;       // shadowmap/cube_depth.geom
 constexpr GLuint kFlatUnit = 0, kCubeUnit = 1; // shadowmap/omni_lighting.glsl, cube_lighting.frag
@@ -42,11 +42,11 @@ void CubeMapGL::compile(const CompileContext& ctx) {
     mFlat.allocate(GL_TEXTURE_2D_ARRAY, resolution, mLights.flatCount(), false);
 
     const Defines base = ctx.submitter.defines();
-    mFaceDepth = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
-    mLayeredDepth = mLayered ? &ctx.programs.get({"shadowmap/cube_depth.vert", "shadowmap/depth.frag",
-                                                  "shadowmap/cube_depth.geom"},
-                                                 base)
-                             : nullptr;
+    mFaceDepth = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    mLayeredDepth =
+        mLayered ? &ctx.programs.get(
+                       {"shadowmap/cube_depth.vert", "common/depth.frag", "shadowmap/cube_depth.geom"}, base)
+                 : nullptr;
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = CubeMap::lightingDefines(ctx.defines(), p, mLights);
     std::string key = mFaceDepth->key() + "|" +

@@ -74,7 +74,7 @@ private:
     bool mLayered = true; ///< what compile() chose (the property, where the context allows it)
     size_t mCulled = 0;
     int mFacesRendered = 0;
-    const Program* mFaceDepth = nullptr;    ///< flat maps and six-pass faces: shadowmap/depth.vert
+    const Program* mFaceDepth = nullptr;    ///< flat maps and six-pass faces: common/depth.vert
     const Program* mLayeredDepth = nullptr; ///< cube_depth.vert + cube_depth.geom
     LitPrograms mLighting;                  ///< the lighting pass (non-receivers apart where they can be)
     Counters mCounters;

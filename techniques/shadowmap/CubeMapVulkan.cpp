@@ -5,9 +5,9 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/CubeMap.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -24,7 +24,7 @@ struct BlockLayout {
 };
 
 /// cube_depth.geom's CubePass (std140): six face matrices and the cube's first layer; its first matrix
-/// is shadowmap/depth.vert's LightPass.
+/// is common/depth.vert's LightPass.
 constexpr uint32_t kFaceMatricesBytes = 6 * 64;
 constexpr uint32_t kCubePassBytes = kFaceMatricesBytes + 16;
 
@@ -165,7 +165,7 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     // mFlat's render pass, compatible with mCubes' (the same depth attachment).
     auto depthState = [&](GraphicsPipelineDesc& d) { mFlat.depthPipeline(d, p); };
     std::string faceKey = "cubemap-depth" + bias;
-    GraphicsPipelineDesc face = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
+    GraphicsPipelineDesc face = scenePipeline(ctx, "common/depth.vert", VulkanDepthMapSet::kDepthFragment,
                                               base, mDepthLayout, faceKey);
     depthState(face);
     mFaceDepthPipeline = ctx.pipelines.get(faceKey, face);

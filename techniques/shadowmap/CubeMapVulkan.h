@@ -1,7 +1,7 @@
 #pragma once
 // `cubemap` on Vulkan: CubeMapGL's two passes with the same declaration, properties, light
 // classification (OmniLightSet), cube faces (CubeFaces), caster culling (OmniCulling, InstanceCulling)
-// and shaders (shadowmap/depth.vert, cube_depth.vert + cube_depth.geom, common/scene.vert,
+// and shaders (common/depth.vert, cube_depth.vert + cube_depth.geom, common/scene.vert,
 // shadowmap/cube_lighting.frag with omni_lighting.glsl, their `#ifdef VULKAN` blocks), recorded into
 // the frame's command buffer.
 //
@@ -12,7 +12,7 @@
 //
 // Depth pass: flat maps and six-pass faces each a render pass of their own over one layer (it clears
 // that layer, as DepthLayers::beginLayer does), the light's or face's view-projection in a slot of a
-// dynamic uniform buffer (shadowmap/depth.vert's LightPass). Layered (`layered` = true, where the
+// dynamic uniform buffer (common/depth.vert's LightPass). Layered (`layered` = true, where the
 // device has geometry shaders): one render pass over every layer-face of the cube array (clearing all,
 // as DepthLayers::beginLayered), per cube its slot (cube_depth.geom's CubePass: the six face matrices
 // and the cube's first layer) and the casters within its range. Matrices are GL's times
@@ -32,8 +32,8 @@
 #include "techniques/shadowmap/CubeFaces.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"

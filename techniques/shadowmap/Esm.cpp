@@ -2,7 +2,7 @@
 
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 

@@ -5,7 +5,7 @@
 namespace sb {
 
 namespace {
-constexpr GLint kLightMatrixLocation = 8; // shadowmap/depth.vert; common/scene.vert's shadow matrices
+constexpr GLint kLightMatrixLocation = 8; // common/depth.vert; common/scene.vert's shadow matrices
 } // namespace
 
 void setFlatShadowMatrices(const FlatLightFits& lights) {

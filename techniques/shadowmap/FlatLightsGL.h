@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "scenes/InstanceCulling.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/gl/Submitter.h"
 #include "techniques/shadowmap/DepthLayers.h"
-#include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 
@@ -17,7 +17,7 @@ void setFlatShadowMatrices(const FlatLightFits& lights);
 
 /// The depth pass of every light of `lights` that casts shadows into layer i of `maps` (the depth program
 /// bound, DepthPassState set by the caller): clears the layer, sets the light's matrix (location 8,
-/// shadowmap/depth.vert) and draws the casters FlatLightFits::cullCasters keeps, or everything when
+/// common/depth.vert) and draws the casters FlatLightFits::cullCasters keeps, or everything when
 /// `drawAll` (the perf gate's injected regression, core/Injection.h). Returns the casters culled over all
 /// lights.
 size_t renderFlatDepth(const FlatLightFits& lights, Submitter& submitter, const InstanceCulling& culling,

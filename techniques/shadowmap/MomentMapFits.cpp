@@ -7,9 +7,9 @@
 #include "core/Error.h"
 #include "scenes/LightFit.h"
 #include "scenes/Math.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/PointLightRefusal.h"
-#include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 

@@ -6,7 +6,7 @@
 
 #include "scenes/LightFit.h"
 #include "shading/ShaderLimits.h"
-#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/FlatLightFits.h"
 
 namespace sb {
 

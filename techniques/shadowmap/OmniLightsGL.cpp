@@ -5,7 +5,7 @@
 namespace sb {
 
 namespace {
-constexpr GLint kShadowMatrixLocation = 8; // common/scene.vert, shadowmap/depth.vert
+constexpr GLint kShadowMatrixLocation = 8; // common/scene.vert, common/depth.vert
 constexpr GLint kMapLocation = 16;         // shadowmap/omni_lighting.glsl: ivec2 (kind, layer) per light
 constexpr GLint kDepthRangeLocation = 20;  // vec2 (near, far) per light
 } // namespace

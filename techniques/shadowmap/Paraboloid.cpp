@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "techniques/Property.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 

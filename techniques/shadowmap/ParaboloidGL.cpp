@@ -6,9 +6,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -36,13 +36,12 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), flatBase() + mLights.flatCount(),
                    false);
     const Defines base = ctx.submitter.defines();
-    mFlatDepth = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
-    mParaboloidDepth =
-        &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "shadowmap/depth.frag", ""}, base);
+    mFlatDepth = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    mParaboloidDepth = &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "common/depth.frag", ""}, base);
     // Compiled whether or not `split` uses it: the sources compile() selects stay the same for both
     // values, so the knob adds no shader permutation to build or test.
     mSplitDepth = &ctx.programs.get(
-        {"shadowmap/cube_depth.vert", "shadowmap/depth.frag", "shadowmap/paraboloid_split.geom"}, base);
+        {"shadowmap/cube_depth.vert", "common/depth.frag", "shadowmap/paraboloid_split.geom"}, base);
     mSplit = p.getBool(Paraboloid::kSplit);
     mMaxSegmentAngle = ParaboloidSplitting::maxSegmentAngle(int(p.getInt(P::kResolution)));
     mBeyondRim = Paraboloid::beyondRim(int(p.getInt(P::kResolution)), int(p.getInt(P::kPcf)));

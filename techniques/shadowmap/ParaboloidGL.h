@@ -81,7 +81,7 @@ private:
     float mMaxSegmentAngle = 0.0f;
     float mBeyondRim = 0.0f;
     int mHemispheresRendered = 0;
-    const Program* mFlatDepth = nullptr;       ///< shadowmap/depth.vert
+    const Program* mFlatDepth = nullptr;       ///< common/depth.vert
     const Program* mParaboloidDepth = nullptr; ///< paraboloid_depth.vert
     const Program* mSplitDepth = nullptr;      ///< cube_depth.vert + paraboloid_split.geom
     bool mSplit = true;                        ///< property split: route wide casters through mSplitDepth

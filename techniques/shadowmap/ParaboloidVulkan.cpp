@@ -4,9 +4,9 @@
 #include <cstring>
 
 #include "core/Error.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/Paraboloid.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -155,7 +155,7 @@ void ParaboloidVulkan::createDepthPipelines(const VulkanCompileContext& ctx) {
         d.dynamicCull = false;
         return ctx.pipelines.get(key + "|both-faces", d);
     };
-    mFlatDepth = depth("paraboloid-flat-depth", "shadowmap/depth.vert", "");
+    mFlatDepth = depth("paraboloid-flat-depth", "common/depth.vert", "");
     mParaboloidDepth = depth("paraboloid-depth", "shadowmap/paraboloid_depth.vert", "");
     if (mSplit)
         mSplitDepth =

@@ -1,7 +1,7 @@
 #pragma once
 // `paraboloid` on Vulkan: ParaboloidGL's two passes with the same declaration, properties, light
 // classification (OmniLightSet), hemisphere culling (OmniCulling, InstanceCulling), caster splitting
-// (ParaboloidSplitting) and shaders (shadowmap/depth.vert, paraboloid_depth.vert, cube_depth.vert +
+// (ParaboloidSplitting) and shaders (common/depth.vert, paraboloid_depth.vert, cube_depth.vert +
 // paraboloid_split.geom, common/scene.vert, shadowmap/paraboloid_lighting.frag with omni_lighting.glsl,
 // their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
@@ -28,8 +28,8 @@
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/shadowmap/ParaboloidSplitting.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"

@@ -5,8 +5,8 @@
 
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/PoissonDisk.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "scenes/Scene.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
-#include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 

@@ -8,10 +8,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
 #include "techniques/shadowmap/PoissonDisk.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -84,7 +84,7 @@ void PcssGL::compile(const CompileContext& ctx) {
     fitLightSizes(ctx.scene);
 
     Defines base = ctx.submitter.defines();
-    mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
+    mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
     Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(layers);

@@ -39,10 +39,10 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
-#include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
 
 namespace sb {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {
@@ -41,11 +41,10 @@ PcssVulkan::~PcssVulkan() {
 
 void PcssVulkan::release() {
     if (!mDevice) return;
-    vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
     vkDestroyPipelineLayout(mDevice, mLightingLayout, nullptr);
     mSets = DescriptorSets();
-    mDepthLayout = mLightingLayout = VK_NULL_HANDLE;
-    mMaps = VulkanDepthMapSet();
+    mLightingLayout = VK_NULL_HANDLE;
+    mDepth = VulkanFlatDepthPass();
 }
 
 void PcssVulkan::setScene(const Scene& scene) {
@@ -67,16 +66,13 @@ void PcssVulkan::fitLightSizes(const Scene& scene) {
 }
 
 void PcssVulkan::createDescriptors(VulkanContext& context) {
-    const VkSampler search = mMaps.addSampler(sampling(false), "pcss");
-    const VkSampler compare = mMaps.addSampler(sampling(true), "pcss");
-    mMaps.createSlots(context, sizeof(glm::mat4), uint32_t(mLayers));
-    // Set 1 of the depth pass: the light's matrix, one dynamic slot per light (LightPass). Set 1 of the
-    // lighting pass: the block and the map through each sampler.
+    const VkSampler search = mDepth.maps().addSampler(sampling(false), "pcss");
+    const VkSampler compare = mDepth.maps().addSampler(sampling(true), "pcss");
+    // Set 1 of the lighting pass: the block and the map through each sampler.
     using D = DescriptorSets;
     mSets = DescriptorSets(
         mDevice,
-        {{D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT)},
-         {D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+        {{D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT),
           D::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
           D::binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
@@ -84,13 +80,10 @@ void PcssVulkan::createDescriptors(VulkanContext& context) {
     const BlockLayout block{uint32_t(mLayers)};
     mLightingBlock = VulkanBuffer(context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mLightingBlock.map(), 0, block.size);
-    mSets.writeBuffer(kDepthSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mMaps.slots().buffer(),
-                      mMaps.slots().bytes());
-    mSets.writeBuffer(kLightingSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
-                      block.size);
+    mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(), block.size);
     const VkImageLayout layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
-    mSets.writeImage(kLightingSet, 1, search, mMaps.view(), layout);
-    mSets.writeImage(kLightingSet, 2, compare, mMaps.view(), layout);
+    mSets.writeImage(0, 1, search, mDepth.maps().view(), layout);
+    mSets.writeImage(0, 2, compare, mDepth.maps().view(), layout);
 }
 
 void PcssVulkan::writeBlocks() {
@@ -111,11 +104,7 @@ void PcssVulkan::writeBlocks() {
         std::memcpy(base + block.filterKernel + 16 * k, &mFilterKernel[k], sizeof(glm::vec2));
     const glm::ivec2 taps(int(mBlockerKernel.size()), int(mFilterKernel.size()));
     std::memcpy(base + block.taps, &taps, sizeof taps);
-    // The depth pass's light matrices: Vulkan's depth range, no flip (VulkanFrameBlock::depthFromGl).
-    for (size_t i = 0; i < mLights.viewProj().size() && i < size_t(mLayers); ++i) {
-        const glm::mat4 m = VulkanFrameBlock::depthFromGl() * mLights.viewProj()[i];
-        mMaps.slots().write(i, &m, sizeof m);
-    }
+    mDepth.writeLights(mLights);
 }
 
 void PcssVulkan::compile(const VulkanCompileContext& ctx) {
@@ -124,53 +113,31 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     const PropertySet& p = properties();
     mLayers = std::max<int>(1, int(mLights.size()));
     mSize = int(p.getInt(P::kResolution));
-    mMaps = VulkanDepthMapSet(ctx.context, uint32_t(mSize), uint32_t(mLayers), uint32_t(mLayers));
+    // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant).
+    mDepth = VulkanFlatDepthPass(ctx, "pcss", uint32_t(mSize), uint32_t(mLayers), p.getFloat(P::kBiasSlope),
+                                 p.getFloat(P::kBiasConstant));
     createDescriptors(ctx.context);
     mBlockerKernel = PoissonDisk::generate(int(p.getInt(Pcss::kBlockerTaps)));
     mFilterKernel = PoissonDisk::generate(int(p.getInt(Pcss::kFilterTaps)), Pcss::filterSeed());
     fitLightSizes(ctx.scene);
     writeBlocks();
 
-    // Depth pass: casters only, depth with the bias of glPolygonOffset(slope, constant), no colour, no
-    // fragment stage.
-    mDepthLayout = createScenePipelineLayout(ctx, {mSets.layout(kDepthSet)});
     const Defines base = ctx.submitter.defines();
-    std::string depthKey = "pcss-depth" + VulkanDepthMapSet::biasKey(p);
-    GraphicsPipelineDesc depth = scenePipeline(ctx, "shadowmap/depth.vert", VulkanDepthMapSet::kDepthFragment,
-                                               base, mDepthLayout, depthKey);
-    mMaps.depthPipeline(depth, p);
-    mDepthPipeline = ctx.pipelines.get(depthKey, depth);
 
     // Lighting pass: the GL form's defines.
     Defines lit = ctx.defines();
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLayers);
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
     const std::string litPermutation = mLighting.build(ctx, "common/scene.vert", "shadowmap/pcss.frag", lit,
                                                        mLightingLayout, "pcss-lighting|");
     setPermutationKey(definesKey(base) + "|" + litPermutation);
 }
 
-void PcssVulkan::renderDepth(VulkanFrameContext& ctx) {
-    mCulled = 0;
-    const VkDescriptorSet depthSet = mSets.set(kDepthSet);
-    for (size_t i = 0; i < mLights.viewProj().size(); ++i) {
-        if (!mLights.castsShadow(i)) continue;
-        mCulled += mLights.cullCasters(i, mCulling, mKeep, nullptr);
-        mMaps.begin(ctx.cmd, i);
-        vkCmdBindPipeline(ctx.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mDepthPipeline);
-        ctx.frame.bind(ctx.cmd, mDepthLayout, ctx.frameOffset);
-        mMaps.slots().bind(ctx.cmd, mDepthLayout, depthSet, i);
-        ctx.submitter.drawCulled(ctx.cmd, mDepthLayout, DrawSet::Casters, {mLights.viewProj()[i], false},
-                                 false, mKeep);
-        vkCmdEndRenderPass(ctx.cmd);
-    }
-}
-
 void PcssVulkan::execute(VulkanFrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); },
-        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet)); });
+        ctx, [&] { mCulled = mDepth.record(ctx, mLights, mCulling); },
+        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(0)); });
     mCounters =
         Pcss::counters(s, mSize, mLights, mCulled, mBlockerKernel.size(), mFilterKernel.size(), mParams);
 }

@@ -1,24 +1,24 @@
 #pragma once
 // `pcss` on Vulkan: PcssGL's two passes (techniques/shadowmap/PcssGL.h has the method) with the same
 // declaration, properties, light fits (FlatLightFits), per-light parameters and Poisson kernels
-// (Pcss::lightParams, PoissonDisk), caster culling and shaders (shadowmap/depth.vert, common/scene.vert,
+// (Pcss::lightParams, PoissonDisk), caster culling and shaders (common/depth.vert, common/scene.vert,
 // shadowmap/pcss.frag, their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
-// Depth pass: as ShadowMapVulkan's, one layer per shadowed light of an X8_D24 depth array (GL's 24-bit
-// map, so the polygon-offset bias means the same), the light's matrix from a dynamic uniform slot.
-// Lighting pass: the uniforms GL sets by location in one block (ShadowMapBlock of pcss.frag), and the one
-// map through two samplers as on GL: nearest without comparison for the blocker search, linear with a
-// LEQUAL comparison for the filter, both clamped to an opaque white border (depth 1: no caster outside
-// the map). Directional and spot lights; a point light is refused as on GL.
+// Depth pass: ShadowMapVulkan's (techniques/vulkan/VulkanFlatDepthPass.h), one layer per shadowed light of an
+// X8_D24 depth array (GL's 24-bit map, so the polygon-offset bias means the same), the light's matrix from a
+// dynamic uniform slot. Lighting pass: the uniforms GL sets by location in one block (ShadowMapBlock of
+// pcss.frag), and the one map through two samplers as on GL: nearest without comparison for the blocker
+// search, linear with a LEQUAL comparison for the filter, both clamped to an opaque white border (depth 1: no
+// caster outside the map). Directional and spot lights; a point light is refused as on GL.
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
-#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanFlatDepthPass.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -41,21 +41,17 @@ private:
     void createDescriptors(VulkanContext& context);
     void fitLightSizes(const Scene& scene); ///< mParams for the current fits and light_size
     void writeBlocks();                     ///< the lighting block and the depth pass's light slots
-    void renderDepth(VulkanFrameContext& ctx);
 
     VkDevice mDevice = VK_NULL_HANDLE;
     FlatLightFits mLights;
     std::vector<Pcss::LightParams> mParams;
     InstanceCulling mCulling;
-    std::vector<uint8_t> mKeep;
     size_t mCulled = 0;
     int mSize = 0, mLayers = 0;
-    VulkanDepthMapSet mMaps;                                 ///< a layer and a LightPass slot per light
-    VulkanBuffer mLightingBlock;                             ///< pcss.frag's ShadowMapBlock
-    static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
-    DescriptorSets mSets;
-    VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
-    VkPipeline mDepthPipeline = VK_NULL_HANDLE;
+    VulkanFlatDepthPass mDepth;  ///< the maps, a layer and a LightPass slot per light, and their pass
+    VulkanBuffer mLightingBlock; ///< pcss.frag's ShadowMapBlock
+    DescriptorSets mSets;        ///< the lighting pass's set 1
+    VkPipelineLayout mLightingLayout = VK_NULL_HANDLE;
     LitPipelines mLighting; ///< the lighting pass (non-receivers apart where they can be)
     std::vector<glm::vec2> mBlockerKernel, mFilterKernel; ///< unit-disk Poisson taps
     Counters mCounters;

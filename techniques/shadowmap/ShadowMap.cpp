@@ -6,9 +6,9 @@
 #include "scenes/Math.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 

@@ -7,10 +7,10 @@
 #include <glm/glm.hpp>
 
 #include "shading/Defines.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
-#include "techniques/shadowmap/FlatLightFits.h"
 
 namespace sb {
 

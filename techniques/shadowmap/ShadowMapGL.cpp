@@ -11,10 +11,10 @@
 
 #include "core/Injection.h"
 #include "scenes/Math.h"
+#include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
 #include "techniques/shadowmap/PoissonDisk.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -53,7 +53,7 @@ void ShadowMapGL::compile(const CompileContext& ctx) {
 
     mDrawAllIntoMap = injected(Injection::NoCasterCulling);
     Defines base = ctx.submitter.defines();
-    mDepthProgram = &ctx.programs.get({"shadowmap/depth.vert", "shadowmap/depth.frag", ""}, base);
+    mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = ShadowMap::lightingDefines(ctx.defines(), p, layers);
     mKernel = ShadowMap::kernelOffsets(p);

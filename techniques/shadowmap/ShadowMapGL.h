@@ -30,10 +30,10 @@
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
-#include "techniques/shadowmap/FlatLightFits.h"
 #include "techniques/shadowmap/ShadowMap.h"
 
 namespace sb {

@@ -1,22 +1,22 @@
 #pragma once
 // `shadowmap` on Vulkan: ShadowMapGL's two passes with the same declaration, properties, light
-// fits (FlatLightFits), caster culling and shaders (shadowmap/depth.vert, common/scene.vert,
+// fits (FlatLightFits), caster culling and shaders (common/depth.vert, common/scene.vert,
 // shadowmap/lighting.frag, their `#ifdef VULKAN` blocks), recorded into the frame's command buffer.
 //
 // Depth pass: one layer per shadowed light of a depth array image (X8_D24, the GL map's 24-bit depth,
 // so the same polygon-offset factors mean the same bias), each a render pass of its own that clears it,
 // the light's view-projection from a dynamic uniform buffer slot (LightPass), slope and constant depth
-// bias as glPolygonOffset(slope, constant). Lighting pass: the map through a depth-compare sampler
-// (hardware_compare) or a nearest one, and the uniforms GL sets by location in one block
-// (ShadowMapBlock). Directional and spot lights; a point light is refused as on GL.
+// bias as glPolygonOffset(slope, constant) (techniques/vulkan/VulkanFlatDepthPass.h). Lighting pass: the map
+// through a depth-compare sampler (hardware_compare) or a nearest one, and the uniforms GL sets by location
+// in one block (ShadowMapBlock). Directional and spot lights; a point light is refused as on GL.
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "scenes/InstanceCulling.h"
-#include "techniques/shadowmap/FlatLightFits.h"
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/FlatLightFits.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/VulkanFlatDepthPass.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
@@ -45,15 +45,12 @@ private:
     VkDevice mDevice = VK_NULL_HANDLE;
     FlatLightFits mLights;
     InstanceCulling mCulling;
-    std::vector<uint8_t> mKeep;
     size_t mCulled = 0;
     int mSize = 0, mLayers = 0;
-    VulkanDepthMapSet mMaps;                                 ///< a layer and a LightPass slot per light
-    VulkanBuffer mLightingBlock;                             ///< ShadowMapBlock
-    static constexpr size_t kDepthSet = 0, kLightingSet = 1; ///< in mSets
-    DescriptorSets mSets;
-    VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
-    VkPipeline mDepthPipeline = VK_NULL_HANDLE;
+    VulkanFlatDepthPass mDepth;  ///< the maps, a layer and a LightPass slot per light, and their pass
+    VulkanBuffer mLightingBlock; ///< ShadowMapBlock
+    DescriptorSets mSets;        ///< the lighting pass's set 1
+    VkPipelineLayout mLightingLayout = VK_NULL_HANDLE;
     LitPipelines mLighting;
 
     std::vector<glm::vec2> mKernel;

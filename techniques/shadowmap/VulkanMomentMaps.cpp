@@ -4,8 +4,8 @@
 #include <cstring>
 
 #include "scenes/ShadowWork.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
 #include "techniques/vulkan/ScenePass.h"
+#include "techniques/vulkan/VulkanDepthMaps.h"
 #include "vk/LayerPasses.h"
 
 namespace sb {

@@ -1,4 +1,4 @@
-#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/ShadowMapProperties.h"
 
 #include <utility>
 

@@ -1,10 +1,10 @@
-#include "techniques/shadowmap/VulkanDepthMapSet.h"
+#include "techniques/vulkan/VulkanDepthMapSet.h"
 
 #include <utility>
 
 #include "techniques/PropertySet.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
-#include "techniques/shadowmap/VulkanDepthMaps.h"
+#include "techniques/ShadowMapProperties.h"
+#include "techniques/vulkan/VulkanDepthMaps.h"
 #include "vk/VulkanContext.h"
 
 namespace sb {
@@ -84,17 +84,27 @@ void VulkanDepthMapSet::createSlots(VulkanContext& context, VkDeviceSize bytes, 
     mSlots = UniformSlots(context, bytes, count);
 }
 
-void VulkanDepthMapSet::depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const {
+void VulkanDepthMapSet::depthPipeline(GraphicsPipelineDesc& desc, double biasSlope,
+                                      double biasConstant) const {
     desc.depthBias = true;
-    desc.depthBiasSlope = float(properties.getFloat(ShadowMapProperties::kBiasSlope));
-    desc.depthBiasConstant = float(properties.getFloat(ShadowMapProperties::kBiasConstant));
+    desc.depthBiasSlope = float(biasSlope);
+    desc.depthBiasConstant = float(biasConstant);
     desc.colourAttachments = 0;
     desc.renderPass = mPass;
 }
 
+void VulkanDepthMapSet::depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const {
+    depthPipeline(desc, properties.getFloat(ShadowMapProperties::kBiasSlope),
+                  properties.getFloat(ShadowMapProperties::kBiasConstant));
+}
+
+std::string VulkanDepthMapSet::biasKey(double biasSlope, double biasConstant) {
+    return "|bias=" + std::to_string(biasSlope) + "," + std::to_string(biasConstant) + "|";
+}
+
 std::string VulkanDepthMapSet::biasKey(const PropertySet& properties) {
-    return "|bias=" + std::to_string(properties.getFloat(ShadowMapProperties::kBiasSlope)) + "," +
-           std::to_string(properties.getFloat(ShadowMapProperties::kBiasConstant)) + "|";
+    return biasKey(properties.getFloat(ShadowMapProperties::kBiasSlope),
+                   properties.getFloat(ShadowMapProperties::kBiasConstant));
 }
 
 void VulkanDepthMapSet::begin(VkCommandBuffer cmd, size_t index) const {

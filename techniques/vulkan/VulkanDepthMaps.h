@@ -2,7 +2,8 @@
 // The depth maps of the shadow-map family on Vulkan (techniques/shadowmap/DepthLayers.h on GL), put
 // together by VulkanDepthMapSet (the moment maps take the format): the map format, an image of layers
 // cleared to "lit", the render pass a depth layer is drawn with, a layer's framebuffer, and the sampler
-// the lighting pass compares through.
+// the lighting pass compares through. Below the technique folders, with VulkanDepthMapSet, so that a
+// technique outside the family renders its light depth maps with the same pieces.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>

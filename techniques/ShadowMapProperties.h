@@ -5,7 +5,10 @@
 // techniques/LightFitProperties.h: `projective` shares it.) One name and one maker each, so the members
 // cannot drift apart in what a knob is called or which range it takes; each member passes its own default or
 // description where its map differs (a cube face, a cascade, a paraboloid half), the shared wording
-// otherwise; and the sweeps of the knobs whose sweeps are the same.
+// otherwise; and the sweeps of the knobs whose sweeps are the same. It lives below the technique folders,
+// with the flat light fits (techniques/FlatLightFits.h) and the Vulkan depth maps
+// (techniques/vulkan/VulkanDepthMapSet.h) that read it, because a technique outside the family that
+// renders a light's depth map takes the same knobs and no technique folder includes another.
 #include <string>
 
 #include "techniques/Property.h"

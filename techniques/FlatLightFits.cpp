@@ -1,4 +1,4 @@
-#include "techniques/shadowmap/FlatLightFits.h"
+#include "techniques/FlatLightFits.h"
 
 #include <algorithm>
 
@@ -8,7 +8,7 @@
 #include "shading/ShaderLimits.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/PointLightRefusal.h"
-#include "techniques/shadowmap/ShadowMapProperties.h"
+#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 
@@ -18,19 +18,25 @@ const glm::mat4& FlatLightFits::textureBias() {
     return kBias;
 }
 
-void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const PropertySet& p) {
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const PropertySet& p,
+                             PointLights points) {
+    setScene(scene, technique, LightFitProperties::lightFit(p),
+             int(p.getInt(ShadowMapProperties::kResolution)), points);
+}
+
+void FlatLightFits::setScene(const Scene& scene, const std::string& technique, const LightFit& fit,
+                             int resolution, PointLights points) {
     mViewProj.clear();
     mShadowMatrix.clear();
     mCastsShadows.clear();
-    const LightFit fit = LightFitProperties::lightFit(p);
-    const int resolution = int(p.getInt(ShadowMapProperties::kResolution));
     const bool recount = !(scene.motion && mCoverageCounted);
     if (recount) mCoverage = {};
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
     for (size_t i = 0; i < count; ++i) {
         const Light& l = scene.lights[i];
-        mCastsShadows.push_back(l.castsShadows);
-        if (!l.castsShadows) { // lit, never looked up: no fit (a point light has none)
+        const bool unmapped = points == PointLights::Unmapped && l.type == LightType::Point;
+        mCastsShadows.push_back(l.castsShadows && !unmapped);
+        if (!mCastsShadows.back()) { // no map, never looked up: no fit (a point light has none)
             mViewProj.emplace_back(1.0f);
             mShadowMatrix.push_back(textureBias());
             continue;

@@ -1,4 +1,4 @@
-#include "techniques/shadowmap/VulkanDepthMaps.h"
+#include "techniques/vulkan/VulkanDepthMaps.h"
 
 #include "vk/LayerPasses.h"
 #include "vk/VulkanContext.h"

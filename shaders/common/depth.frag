@@ -8,5 +8,5 @@
 // 22.3's source, its fixed-function program) and does exactly the same work on both releases: the same
 // counts and the same instructions per frame within 0.001 % (bench ci's layers A and B,
 // shadowmap:resolution=2048 on the glmark2 horse at 1024x1024). The Vulkan forms leave the stage out
-// (techniques/shadowmap/VulkanDepthMapSet.h).
+// (techniques/vulkan/VulkanDepthMapSet.h).
 void main() {}

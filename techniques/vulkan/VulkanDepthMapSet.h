@@ -1,10 +1,10 @@
 #pragma once
 // The depth maps one Vulkan form of the shadow-map family renders and samples, and what goes with them
 // (ShadowMapVulkan, PcssVulkan, CascadedVulkan, ParaboloidVulkan; CubeMapVulkan holds two, its cubes
-// and its flat maps): the image of layers (VulkanDepthMaps::image), the render pass a layer is drawn
-// with, a framebuffer per drawn layer (or one over all of them for a layered pass), the samplers the
-// lighting pass reads it through, and the depth pass's dynamic uniform slots (UniformSlots). Everything
-// is released with the set.
+// and its flat maps; a technique outside the family that needs a light's depth map): the image of
+// layers (VulkanDepthMaps::image), the render pass a layer is drawn with, a framebuffer per drawn layer
+// (or one over all of them for a layered pass), the samplers the lighting pass reads it through, and the
+// depth pass's dynamic uniform slots (UniformSlots). Everything is released with the set.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -49,16 +49,20 @@ public:
     VkImageView view() const { return mImage.view(); } ///< every layer, as the lighting pass samples them
     VkRenderPass pass() const { return mPass; }
     uint32_t size() const { return mSize; }
+    uint32_t layers() const { return mLayers; }
     /// The fragment stage of every depth pass into these maps: none. The pipeline writes depth only, so it
     /// needs no fragment shader (legal in Vulkan: the depth test, the write and the bias still apply), and
     /// a GPU driver then has no fragment work to launch. lavapipe binds an empty shader of its own in that
     /// case, so on it the work and the pipeline statistics are those of the GL forms' empty
-    /// shaders/shadowmap/depth.frag (which says why GL gains nothing from leaving it out either).
+    /// shaders/common/depth.frag (which says why GL gains nothing from leaving it out either).
     static constexpr const char* kDepthFragment = "";
     /// Makes `desc` a depth pass into these maps: no colour, the set's render pass, and the depth bias
-    /// of glPolygonOffset(bias_slope, bias_constant) from `properties` (ShadowMapProperties).
+    /// of glPolygonOffset(biasSlope, biasConstant).
+    void depthPipeline(GraphicsPipelineDesc& desc, double biasSlope, double biasConstant) const;
+    /// The same with bias_slope and bias_constant from `properties` (ShadowMapProperties).
     void depthPipeline(GraphicsPipelineDesc& desc, const PropertySet& properties) const;
     /// The pipeline-cache key of that bias, "|bias=slope,constant|", appended to the pass's name.
+    static std::string biasKey(double biasSlope, double biasConstant);
     static std::string biasKey(const PropertySet& properties);
     /// Begins the render pass over framebuffer `index`, which clears its layers to the far plane, with
     /// the viewport and scissor of the whole map.
