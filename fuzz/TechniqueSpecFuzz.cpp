@@ -45,9 +45,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                           "TechniqueSpec '" + text + "' prints as '" + printed +
                               "', which parses differently");
 
-        const auto technique = sb::TechniqueRegistry::create(spec);
+        const auto technique = sb::TechniqueRegistry::describe(spec);
         const std::string canonical = technique->properties().toString();
-        const auto copy = sb::TechniqueRegistry::create(
+        const auto copy = sb::TechniqueRegistry::describe(
             sb::TechniqueSpec::parse(canonical.empty() ? spec.name : spec.name + ":" + canonical));
         sb::fuzz::require(copy->properties().toString() == canonical,
                           "properties of '" + text + "' print as '" + canonical + "', which applies as '" +

@@ -19,6 +19,8 @@
 #include "techniques/projective/ProjectiveVulkan.h"
 #include "techniques/proxy/ProxyGL.h"
 #include "techniques/proxy/ProxyVulkan.h"
+#include "techniques/raytraced/RayTraced.h"
+#include "techniques/raytraced/RayTracedVulkan.h"
 #include "techniques/shadowmap/CascadedGL.h"
 #include "techniques/shadowmap/CascadedVulkan.h"
 #include "techniques/shadowmap/CubeMapGL.h"
@@ -42,9 +44,12 @@ namespace sb {
 
 namespace {
 
-/// What a hybrid's role may name: every shadow technique, not the judge, the workloads or itself.
+/// What a hybrid's role may name: every shadow technique, not the judge, the workloads or itself, and
+/// only one with a form on both APIs: the hybrid's declaration, its roles' choices included, is the same
+/// on both.
 bool isHybridPart(const std::string& name) {
-    return name != "hybrid" && name != "reference" && name != "synthetic";
+    return name != "hybrid" && name != "reference" && name != "synthetic" &&
+           TechniqueRegistry::has(name, Api::GL) && TechniqueRegistry::has(name, Api::Vulkan);
 }
 
 std::vector<std::string> partNames() {
@@ -95,6 +100,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         // Two of the above in one frame, one per role (Coleman's conclusion): the registry makes its parts.
         {"hybrid", [] { return std::unique_ptr<GlTechnique>(new HybridGL(createPart, partNames())); },
          [] { return std::unique_ptr<VulkanTechnique>(new HybridVulkan(createVulkanPart, partNames())); }},
+        // Ray queries are Vulkan's: no GL form.
+        {"raytraced", nullptr, vulkan<RayTracedVulkan>, RayTraced::kGlRefusal},
         {"reference", gl<ReferenceGL>, vulkan<ReferenceVulkan>},
         // Not a shadow technique: the bottleneck study's calibration workloads.
         {"synthetic", gl<SyntheticGL>, vulkan<SyntheticVulkan>},
@@ -150,7 +157,23 @@ std::unique_ptr<Technique> TechniqueRegistry::create(const TechniqueSpec& spec, 
 }
 
 std::unique_ptr<GlTechnique> TechniqueRegistry::create(const std::string& name) {
-    return entryOf(name).gl();
+    const Entry& e = entryOf(name);
+    if (!e.gl)
+        throw Error(e.glRefusal ? std::string(e.glRefusal)
+                                : name + " has no GL form; run it with --api vulkan",
+                    ExitCode::Unsupported);
+    return e.gl();
+}
+
+std::unique_ptr<Technique> TechniqueRegistry::describe(const TechniqueSpec& spec) {
+    const Entry& e = entryOf(spec.name);
+    std::unique_ptr<Technique> t;
+    if (e.gl)
+        t = e.gl();
+    else
+        t = e.vulkan();
+    apply(*t, spec);
+    return t;
 }
 
 std::unique_ptr<GlTechnique> TechniqueRegistry::create(const TechniqueSpec& spec) {

@@ -28,6 +28,9 @@ struct Capability {
     int major = 0;    ///< version requirement (0 = none)
     int minor = 0;
     std::string extension; ///< extension requirement ("" = none)
+    /// Where it is found when the machine lacks it, added to the refusal ("" = nothing to add): "the
+    /// driver entry mesa-25.0.7 has them: --driver mesa-25.0.7".
+    std::string hint;
 };
 
 /// A quality knob and the values `bench accuracy --sweep` walks (accuracy against time).

@@ -126,7 +126,7 @@ TEST(ApitraceHandoff, RewritesOnlyTheGlxTracerEntry) {
     EXPECT_EQ(ApitraceHandoff::eglPreload(""), "");
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTechnique, Apitrace, ::testing::ValuesIn(TechniqueRegistry::names()),
+INSTANTIATE_TEST_SUITE_P(EveryTechnique, Apitrace, ::testing::ValuesIn(TechniqueRegistry::namesOn(Api::GL)),
                          [](const auto& param) { return param.param; });
 
 } // namespace

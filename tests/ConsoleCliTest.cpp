@@ -155,7 +155,7 @@ TEST(Console, ListSeparatesEveryPropertyCell) {
     const std::vector<std::string> text = lines(r.output);
     size_t checked = 0;
     for (const auto& entry : TechniqueRegistry::entries()) {
-        const auto technique = entry.gl();
+        const auto technique = TechniqueRegistry::describe(TechniqueSpec{entry.name, {}});
         // The technique's block: from its "<name>  <description>" line to the blank line after it
         // (several techniques declare a property of the same name).
         const std::string title = technique->info().name + "  ";

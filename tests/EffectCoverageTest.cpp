@@ -66,7 +66,7 @@ TEST(EffectCoverage, EveryShadowTechniqueOfTheRegistryDeclaresSomething) {
     // The baseline rule exempts a technique only by declaring nothing: every technique that draws shadows
     // must declare at least one effect, or it would silently escape the warning and --strict-effects.
     for (const auto& entry : TechniqueRegistry::entries()) {
-        const auto t = entry.gl();
+        const auto t = TechniqueRegistry::describe(TechniqueSpec{entry.name, {}});
         const std::string& name = t->info().name;
         if (name == "none" || name == "synthetic") continue;
         EXPECT_NE(t->info().effects, 0u) << name;

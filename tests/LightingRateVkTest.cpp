@@ -8,6 +8,7 @@
 
 #include "LightingRateScenes.h"
 #include "TestSupport.h"
+#include "VulkanFrame.h"
 #include "bench/lib/harness/VulkanHarness.h"
 #include "registry/TechniqueRegistry.h"
 
@@ -31,11 +32,15 @@ test::LitImage render(const std::string& technique, const std::string& scene, co
 class LightingRateVkEveryTechnique : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LightingRateVkEveryTechnique, VertexEqualsFragmentWhereTheTermIsAffine) {
+    if (const std::string refusal = test::vulkanRefusal(GetParam()); !refusal.empty())
+        GTEST_SKIP() << refusal;
     test::expectSameWhereAffine(render(GetParam(), "city", "mid", LightingRate::Fragment),
                                 render(GetParam(), "city", "mid", LightingRate::Vertex));
 }
 
 TEST_P(LightingRateVkEveryTechnique, AmbientIsTheScenesColour) {
+    if (const std::string refusal = test::vulkanRefusal(GetParam()); !refusal.empty())
+        GTEST_SKIP() << refusal;
     if (!test::shadesWithTheScenesLights(GetParam())) GTEST_SKIP() << GetParam() << " draws flat colours";
     test::expectAmbientOnly(GetParam(),
                             render(GetParam(), test::ambientOnlyScene(), "down", LightingRate::Fragment));

@@ -66,7 +66,7 @@ RunConfig config(const std::string& scene, const std::string& camera, SubmitMode
 /// are checked to be).
 std::vector<std::string> techniques() {
     std::vector<std::string> out;
-    for (const std::string& name : TechniqueRegistry::names())
+    for (const std::string& name : TechniqueRegistry::namesOn(Api::GL))
         if (name != "synthetic") out.push_back(name);
     return out;
 }

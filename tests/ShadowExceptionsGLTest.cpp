@@ -74,7 +74,7 @@ std::string specOf(const std::string& name) {
 
 std::vector<std::string> techniques() {
     std::vector<std::string> out;
-    for (const std::string& name : TechniqueRegistry::names())
+    for (const std::string& name : TechniqueRegistry::namesOn(Api::GL))
         if (name != "synthetic") out.push_back(name);
     return out;
 }

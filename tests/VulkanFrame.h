@@ -18,6 +18,14 @@
 
 namespace sb::test {
 
+/// "" where the default device (lavapipe of the driver this process runs on) has what the Vulkan form of
+/// technique `spec` needs, else its refusal: raytraced needs ray queries, which Mesa 22.3.6 lacks. A test
+/// run in-process on the system driver skips such a technique with this message.
+inline std::string vulkanRefusal(const std::string& spec) {
+    const VulkanContext context(VulkanOptions{});
+    return TechniqueRegistry::createVulkan(TechniqueSpec::parse(spec))->checkCapabilities(context);
+}
+
 class VulkanFrame {
 public:
     /// Runs `config` on Vulkan with the validation layer on (whatever its api and vulkan.validation

@@ -91,4 +91,19 @@ void DescriptorSets::writeImage(size_t i, uint32_t binding, VkSampler sampler, V
     vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
 }
 
+void DescriptorSets::writeAccelerationStructure(size_t i, uint32_t binding,
+                                                VkAccelerationStructureKHR structure) const {
+    VkWriteDescriptorSetAccelerationStructureKHR info{
+        VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+    info.accelerationStructureCount = 1;
+    info.pAccelerationStructures = &structure;
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.pNext = &info;
+    w.dstSet = mSets[i];
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+}
+
 } // namespace sb

@@ -1,7 +1,7 @@
 #pragma once
 // A technique's descriptor sets in one object: the set layouts it declares, one pool sized for exactly
 // those, and one set of each, allocated at construction and released together. What set 1 (and beyond)
-// of a pipeline layout holds: a pass's uniform blocks, a shadow map and its sampler.
+// of a pipeline layout holds: a pass's uniform blocks, a shadow map and its sampler, a ray query's scene.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -31,6 +31,9 @@ public:
     /// Points binding `binding` of set `i` at `view` through `sampler`, read in `layout`.
     void writeImage(size_t i, uint32_t binding, VkSampler sampler, VkImageView view,
                     VkImageLayout layout) const;
+
+    /// Points binding `binding` of set `i` at acceleration structure `structure` (a ray query's scene).
+    void writeAccelerationStructure(size_t i, uint32_t binding, VkAccelerationStructureKHR structure) const;
 
     /// One binding of `count` descriptors of `type`, seen by `stages`.
     static VkDescriptorSetLayoutBinding binding(uint32_t binding, VkDescriptorType type,

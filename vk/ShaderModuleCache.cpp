@@ -17,6 +17,20 @@ namespace sb {
 namespace {
 
 constexpr const char* kVersionLine = "#version 450\n";
+/// GL_EXT_ray_query exists from GLSL 460 on; a stage that enables it (shaders/raytraced/) is compiled
+/// as 460, every other stays 450, so their SPIR-V is the same as before ray queries came.
+constexpr const char* kRayQueryVersionLine = "#version 460\n";
+constexpr const char* kRayQueryExtension = "#extension GL_EXT_ray_query";
+
+/// The stage's source as compiled: `preprocessor`'s, its version raised to 460 where it enables ray queries.
+std::string assemble(ShaderPreprocessor& preprocessor, const std::string& file, const Defines& defines,
+                     ShaderStage stage) {
+    preprocessor.setVersionLine(kVersionLine);
+    std::string source = preprocessor.build(file, defines, stage);
+    if (source.find(kRayQueryExtension) != std::string::npos)
+        source.replace(0, std::string(kVersionLine).size(), kRayQueryVersionLine);
+    return source;
+}
 
 /// glslang's process-wide tables, built once (never finalized: they live until exit).
 void initializeGlslang() {
@@ -109,8 +123,7 @@ ShaderModules ShaderModuleCache::get(const ShaderSources& sources, const Defines
 std::string ShaderModuleCache::preprocess(const std::string& file, const Defines& defines,
                                           ShaderStage stage) const {
     ShaderPreprocessor preprocessor(mRoot);
-    preprocessor.setVersionLine(kVersionLine);
-    return preprocessor.build(file, defines, stage);
+    return assemble(preprocessor, file, defines, stage);
 }
 
 VkShaderModule ShaderModuleCache::get(const std::string& file, const Defines& defines, ShaderStage stage) {
@@ -118,8 +131,7 @@ VkShaderModule ShaderModuleCache::get(const std::string& file, const Defines& de
     if (auto it = mModules.find(key); it != mModules.end()) return it->second;
 
     ShaderPreprocessor preprocessor(mRoot);
-    preprocessor.setVersionLine(kVersionLine);
-    const std::string source = preprocessor.build(file, defines, stage);
+    const std::string source = assemble(preprocessor, file, defines, stage);
     std::vector<uint32_t> spirv;
     std::string log;
     ++mCompiles;

@@ -4,9 +4,11 @@
 // shading/ShaderPreprocessor (defines, stage define, #include expansion, #line mapping) with "#version 450"
 // instead of the compatibility profile; glslang targeting Vulkan predefines VULKAN, so a shader keeps
 // one source and puts its Vulkan-only layout (push constants, descriptor sets) in small `#ifdef VULKAN`
-// blocks. Compile errors throw sb::Error(Failure) naming the file and line as the GL cache does. With a
-// dump directory (bench --dump-shaders DIR) every stage handed out is written as compiled, in the GL
-// cache's layout (shading/ShaderDump.h).
+// blocks. A stage that enables GL_EXT_ray_query (`#extension GL_EXT_ray_query : require`, which needs
+// GLSL 460) is compiled as "#version 460"; every stage targets Vulkan 1.2 and SPIR-V 1.5, which ray queries
+// need (SPIR-V 1.4 or later). Compile errors throw sb::Error(Failure) naming the file and line as the GL
+// cache does. With a dump directory (bench --dump-shaders DIR) every stage handed out is written as compiled,
+// in the GL cache's layout (shading/ShaderDump.h).
 #include <map>
 #include <memory>
 #include <string>

@@ -38,11 +38,20 @@ void VulkanBuffer::allocate(VulkanContext& context, VkDeviceSize size, VkBufferU
     try {
         VkMemoryRequirements req{};
         vkGetBufferMemoryRequirements(mDevice, mBuffer, &req);
+        const bool addressed = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
+        VkMemoryAllocateFlagsInfo addressFlags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+        addressFlags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.pNext = addressed ? &addressFlags : nullptr;
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex = context.memoryType(req.memoryTypeBits, flags);
         VulkanContext::check(vkAllocateMemory(mDevice, &alloc, nullptr, &mMemory), "vkAllocateMemory");
         VulkanContext::check(vkBindBufferMemory(mDevice, mBuffer, mMemory, 0), "vkBindBufferMemory");
+        if (addressed) {
+            VkBufferDeviceAddressInfo where{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+            where.buffer = mBuffer;
+            mAddress = vkGetBufferDeviceAddress(mDevice, &where);
+        }
     } catch (...) {
         release();
         throw;
@@ -64,13 +73,14 @@ void VulkanBuffer::release() {
     mMemory = VK_NULL_HANDLE;
     mMapped = nullptr;
     mSize = 0;
+    mAddress = 0;
 }
 
 VulkanBuffer::VulkanBuffer(VulkanBuffer&& other) noexcept
     : mDevice(std::exchange(other.mDevice, VK_NULL_HANDLE)),
       mBuffer(std::exchange(other.mBuffer, VK_NULL_HANDLE)),
       mMemory(std::exchange(other.mMemory, VK_NULL_HANDLE)), mSize(std::exchange(other.mSize, 0)),
-      mMapped(std::exchange(other.mMapped, nullptr)) {}
+      mMapped(std::exchange(other.mMapped, nullptr)), mAddress(std::exchange(other.mAddress, 0)) {}
 
 VulkanBuffer& VulkanBuffer::operator=(VulkanBuffer&& other) noexcept {
     if (this != &other) {
@@ -80,6 +90,7 @@ VulkanBuffer& VulkanBuffer::operator=(VulkanBuffer&& other) noexcept {
         mMemory = std::exchange(other.mMemory, VK_NULL_HANDLE);
         mSize = std::exchange(other.mSize, 0);
         mMapped = std::exchange(other.mMapped, nullptr);
+        mAddress = std::exchange(other.mAddress, 0);
     }
     return *this;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // A VkBuffer with its own memory. Static data (vertices, indices, instances) is device-local and filled
 // through a staging copy (create with `data`); per-frame data (uniforms) is host-visible and coherent,
-// persistently mapped, written in place (map()).
+// persistently mapped, written in place (map()). A buffer whose usage includes
+// VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT (acceleration-structure inputs and storage, on a device with
+// VulkanContext::rayQuery) gets memory allocated for device addresses, and address() says where it is.
 #include <cstddef>
 #include <cstdint>
 
@@ -29,6 +31,8 @@ public:
     VkDeviceSize size() const { return mSize; }
     /// The mapping of a host-visible buffer (nullptr for a device-local one).
     void* map() const { return mMapped; }
+    /// The buffer's device address (vkGetBufferDeviceAddress); 0 unless its usage asked for one.
+    VkDeviceAddress address() const { return mAddress; }
     explicit operator bool() const { return mBuffer != VK_NULL_HANDLE; }
 
 private:
@@ -40,6 +44,7 @@ private:
     VkDeviceMemory mMemory = VK_NULL_HANDLE;
     VkDeviceSize mSize = 0;
     void* mMapped = nullptr;
+    VkDeviceAddress mAddress = 0;
 };
 
 } // namespace sb

@@ -354,6 +354,32 @@ void VulkanContext::pickDevice(int index) {
     for (const VkExtensionProperties& e : offered) mDeviceExtensions.emplace_back(e.extensionName);
 }
 
+std::vector<std::string> VulkanContext::missingRayQueryExtensions() const {
+    std::vector<std::string> missing;
+    for (const char* name : kRayQueryExtensions)
+        if (!hasDeviceExtension(name)) missing.emplace_back(name);
+    return missing;
+}
+
+bool VulkanContext::offersRayQuery() {
+    mMissingRayQueryFeatures.clear();
+    // The Vulkan 1.2 features structure (bufferDeviceAddress) exists from a 1.2 device on.
+    if (!missingRayQueryExtensions().empty() || mProperties.apiVersion < VK_API_VERSION_1_2) return false;
+    VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR structures{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+    structures.pNext = &rayQuery;
+    VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    vulkan12.pNext = &structures;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &vulkan12;
+    vkGetPhysicalDeviceFeatures2(mPhysical, &features);
+    if (!structures.accelerationStructure) mMissingRayQueryFeatures.emplace_back("accelerationStructure");
+    if (!rayQuery.rayQuery) mMissingRayQueryFeatures.emplace_back("rayQuery");
+    if (!vulkan12.bufferDeviceAddress) mMissingRayQueryFeatures.emplace_back("bufferDeviceAddress");
+    return mMissingRayQueryFeatures.empty();
+}
+
 bool VulkanContext::hasDeviceExtension(const std::string& name) const {
     return std::find(mDeviceExtensions.begin(), mDeviceExtensions.end(), name) != mDeviceExtensions.end();
 }
@@ -388,6 +414,9 @@ void VulkanContext::createDevice() {
     // (GL_SAMPLES_PASSED counts samples; a Vulkan occlusion query counts them only with the precise bit)
     enabled.depthBounds = available.depthBounds;
     enabled.occlusionQueryPrecise = available.occlusionQueryPrecise;
+    // raytraced's ray counter: one atomic add per fragment that traced (techniques/raytraced/)
+    enabled.fragmentStoresAndAtomics = available.fragmentStoresAndAtomics;
+    mFragmentStoresAndAtomics = available.fragmentStoresAndAtomics == VK_TRUE;
     mDepthBounds = available.depthBounds == VK_TRUE;
     mOcclusionQueryPrecise = available.occlusionQueryPrecise == VK_TRUE;
     mDepthClamp = available.depthClamp == VK_TRUE;
@@ -404,8 +433,30 @@ void VulkanContext::createDevice() {
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
     info.pEnabledFeatures = &enabled;
+    // Ray queries: the extensions and a features chain, only where the device offers all of them (with
+    // the chain, the core features travel in VkPhysicalDeviceFeatures2 instead of pEnabledFeatures).
+    mRayQuery = offersRayQuery();
+    VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR structures{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+    VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    if (mRayQuery) {
+        rayQuery.rayQuery = VK_TRUE;
+        structures.accelerationStructure = VK_TRUE;
+        structures.pNext = &rayQuery;
+        vulkan12.bufferDeviceAddress = VK_TRUE;
+        vulkan12.pNext = &structures;
+        features2.features = enabled;
+        features2.pNext = &vulkan12;
+        info.pNext = &features2;
+        info.pEnabledFeatures = nullptr;
+        info.enabledExtensionCount = uint32_t(kRayQueryExtensions.size());
+        info.ppEnabledExtensionNames = kRayQueryExtensions.data();
+    }
     check(vkCreateDevice(mPhysical, &info, nullptr, &mDevice), "vkCreateDevice");
     vkGetDeviceQueue(mDevice, mQueueFamily, 0, &mQueue);
+    if (mRayQuery) mRayQueryFunctions = RayQueryFunctions::load(mDevice);
 
     VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;

@@ -12,6 +12,13 @@
 // Errors: no Vulkan loader, no ICD or no device is ExitCode::Unsupported (the machine lacks it); an
 // index out of range is ExitCode::BadInput (the input is wrong), naming the devices there are.
 //
+// Ray queries (techniques/raytraced/): VK_KHR_acceleration_structure, VK_KHR_ray_query and
+// VK_KHR_deferred_host_operations (which acceleration structures require), with the features
+// accelerationStructure, rayQuery and bufferDeviceAddress (Vulkan 1.2's features), are enabled only where the
+// device offers every one of them (lavapipe of Mesa 25.0.7 does, 22.3.6 does not): a device without them
+// is created exactly as before, so no other technique runs on a device configured differently. rayQuery()
+// says whether they are on, and then rayQueryFunctions() holds the extension's entry points.
+//
 // Validation: with `validation` on, the Khronos validation layer (VK_LAYER_KHRONOS_validation) is enabled
 // and a VK_EXT_debug_utils messenger records every message of severity warning or error. Tests run with
 // it on and require validationErrors() == 0; timed runs leave it off (the layer's checks would be
@@ -23,6 +30,8 @@
 #include <vector>
 
 #include <vulkan/vulkan.h>
+
+#include "vk/RayQueryFunctions.h"
 
 namespace sb {
 
@@ -77,6 +86,18 @@ public:
     bool depthBounds() const { return mDepthBounds; }
     /// Occlusion queries that count samples, not only zero or non-zero (volume's stencil_samples_passed).
     bool occlusionQueryPrecise() const { return mOcclusionQueryPrecise; }
+    /// Fragment-stage stores and atomics (raytraced's exact ray counter).
+    bool fragmentStoresAndAtomics() const { return mFragmentStoresAndAtomics; }
+    /// Whether ray queries are on: the three extensions and three features above, all enabled.
+    bool rayQuery() const { return mRayQuery; }
+    /// The acceleration-structure entry points; every pointer is null unless rayQuery().
+    const RayQueryFunctions& rayQueryFunctions() const { return mRayQueryFunctions; }
+    /// The device extensions ray queries need (kRayQueryExtensions) that the physical device lacks, in
+    /// that order; empty where it offers them all.
+    std::vector<std::string> missingRayQueryExtensions() const;
+    /// The features ray queries need that the device lacks although it offers the extensions
+    /// ("accelerationStructure", "rayQuery", "bufferDeviceAddress"); empty where it has them all.
+    const std::vector<std::string>& missingRayQueryFeatures() const { return mMissingRayQueryFeatures; }
     /// Whether the physical device offers device extension `name` ("VK_KHR_ray_query").
     bool hasDeviceExtension(const std::string& name) const;
 
@@ -110,6 +131,9 @@ private:
     void createInstance(bool validation);
     void pickDevice(int index);
     void createDevice();
+    /// Whether the device offers every extension and feature of ray queries (fills
+    /// mMissingRayQueryFeatures); false without querying features where an extension is missing.
+    bool offersRayQuery();
     void destroy(); ///< releases whatever was created (the destructor, and a constructor that throws)
 
     VkInstance mInstance = VK_NULL_HANDLE;
@@ -128,6 +152,10 @@ private:
     bool mClipDistance = false;
     bool mDepthBounds = false;
     bool mOcclusionQueryPrecise = false;
+    bool mFragmentStoresAndAtomics = false;
+    bool mRayQuery = false;
+    RayQueryFunctions mRayQueryFunctions;
+    std::vector<std::string> mMissingRayQueryFeatures;
     std::vector<std::string> mMessages;
     size_t mErrors = 0;
     std::vector<std::string> mDeviceExtensions; ///< what the physical device offers (pickDevice)

@@ -96,7 +96,7 @@ Examples:
 /// without a Vulkan form is explained with that refusal, as one that refuses the configuration).
 struct Explained {
     std::unique_ptr<Technique> technique;
-    std::unique_ptr<Technique> described; ///< the GL form, for the header, where `technique` is null
+    std::unique_ptr<Technique> described; ///< another API's form, for the header, where `technique` is null
     std::string refusal;
     ExitCode code = ExitCode::Ok;
 };
@@ -114,7 +114,7 @@ std::vector<Explained> createTechniques(const RunConfig& config) {
             e.technique = TechniqueRegistry::create(spec, api);
         } catch (const Error& error) {
             if (error.code() != ExitCode::Unsupported) throw; // a typo fails before any frame
-            e.described = TechniqueRegistry::create(spec);
+            e.described = TechniqueRegistry::describe(spec);
             e.refusal = error.what();
             e.code = error.code();
         }

@@ -335,7 +335,8 @@ under the cell (bench/golden/GoldenDiff.h).)");
                         " (known: " + join(known, ", ") + ")");
     cli.matrix.techniques = techniques;
     for (const std::string& t : cli.matrix.techniques)
-        if (t != AutoResolver::kName) TechniqueRegistry::create(t); // names it if unknown
+        if (t != AutoResolver::kName)
+            TechniqueRegistry::describe(TechniqueSpec{t, {}}); // names it if unknown
     if (cli.dir.empty()) cli.dir = defaultGoldenDir();
     std::error_code ec; // --check reads the goldens; --update may write a new folder
     if (!cli.update && !std::filesystem::is_directory(cli.dir, ec))

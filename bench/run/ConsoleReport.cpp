@@ -145,17 +145,28 @@ void ConsoleReport::printAccuracyTable(std::ostream& os,
     table.print(os);
 }
 
+namespace {
+
+/// The APIs a technique runs on, and what the other one says when it has no form there.
+std::string apisText(const TechniqueRegistry::Entry& entry) {
+    if (!entry.gl) return "vulkan (no GL form: " + std::string(entry.glRefusal ? entry.glRefusal : "") + ")";
+    return entry.vulkan ? "gl, vulkan" : "gl (no Vulkan form: --api vulkan exits 3)";
+}
+
+} // namespace
+
 void ConsoleReport::printTechniqueList(std::ostream& os) {
     for (const auto& entry : TechniqueRegistry::entries()) {
-        auto t = entry.gl();
+        const auto t = TechniqueRegistry::describe(TechniqueSpec{entry.name, {}});
         const TechniqueInfo& info = t->info();
         os << info.name << "  " << info.description << "\n";
         os << "  effects:  " << effectsText(info.effects) << "\n";
         os << "  passes:   " << join(info.passes, ", ") << "\n";
-        os << "  apis:     "
-           << (TechniqueRegistry::hasVulkan(info.name) ? "gl, vulkan"
-                                                       : "gl (no Vulkan form: --api vulkan exits 3)")
-           << "\n";
+        os << "  apis:     " << apisText(entry) << "\n";
+        const std::vector<Capability> vulkanNeeds = info.capabilitiesOf(Api::Vulkan);
+        if (!vulkanNeeds.empty())
+            os << "  needs:    " << join(vulkanNeeds, ", ", [](const Capability& c) { return c.name; })
+               << " on Vulkan\n";
         if (!info.quality.empty())
             os << "  sweep:    " << join(info.quality, "; ", [](const QualityKnob& k) {
                 return k.property + " " + join(k.values, "/");

@@ -276,7 +276,7 @@ std::vector<std::string> imageLabels(const std::vector<Configured>& configured) 
     std::vector<RunImageNames::Configuration> run;
     for (const Configured& c : configured)
         run.push_back({c.spec.name, c.technique ? c.technique->properties()
-                                                : TechniqueRegistry::create(c.spec)->properties()});
+                                                : TechniqueRegistry::describe(c.spec)->properties()});
     return RunImageNames::labels(run);
 }
 
@@ -363,7 +363,7 @@ int runMeasured(const RunConfig& config, const std::string& imagesDir) {
             if (!configured[i].technique) {
                 if (!config.quiet)
                     log << "[" << done << "/" << total << "] " << specs[i].toString() << " ...";
-                refuse(i, specs[i].name, TechniqueRegistry::create(specs[i])->properties().toString(),
+                refuse(i, specs[i].name, TechniqueRegistry::describe(specs[i])->properties().toString(),
                        *configured[i].refused, EffectCoverage::of(harness.scene().effects, 0), round);
                 continue;
             }

@@ -9,6 +9,12 @@
 out vec3 vWorldPos;
 out vec3 vNormal;
 out vec4 vColorId;
+#ifdef SB_EYE_RELATIVE_POSITION
+// The world position minus the eye's, for a fragment stage that takes the triangle's plane from screen-space
+// derivatives (raytraced/lighting.frag): small numbers that keep their precision where world coordinates
+// are large (at 1e5 a float is 0.0078 apart, a quarter of a pixel's footprint there).
+out vec3 vEyeRelativePos;
+#endif
 #ifdef SHADOW_MAP
 #ifdef VULKAN
 // The head of shadowmap/lighting.frag's block (techniques/shadowmap/ShadowMapVulkan.h).
@@ -27,6 +33,9 @@ void main() {
     vWorldPos = world.xyz;
     vNormal = mat3(model) * aNormal;
     vColorId = instanceColorId();
+#ifdef SB_EYE_RELATIVE_POSITION
+    vEyeRelativePos = world.xyz - uEye.xyz;
+#endif
 #ifdef SHADOW_MAP
     for (int i = 0; i < LIGHT_COUNT; ++i) vShadowCoord[i] = uShadowMatrix[i] * world;
 #endif

@@ -1,5 +1,10 @@
 #include "techniques/vulkan/VulkanTechnique.h"
 
+#include <algorithm>
+#include <vector>
+
+#include "core/Strings.h"
+
 namespace sb {
 
 Defines VulkanCompileContext::defines() const {
@@ -9,17 +14,24 @@ Defines VulkanCompileContext::defines() const {
 }
 
 std::string VulkanTechnique::checkCapabilities(const VulkanContext& context) const {
+    std::vector<std::string> missing, hints;
     for (const Capability& cap : info().capabilitiesOf(Api::Vulkan)) {
         const uint32_t version = context.properties().apiVersion;
         const bool versionOk = VK_API_VERSION_MAJOR(version) > uint32_t(cap.major) ||
                                (VK_API_VERSION_MAJOR(version) == uint32_t(cap.major) &&
                                 VK_API_VERSION_MINOR(version) >= uint32_t(cap.minor));
         const bool extensionOk = cap.extension.empty() || context.hasDeviceExtension(cap.extension);
-        if (!versionOk || !extensionOk)
-            return name() + " needs " + cap.name + " (not available on " + context.info().name + ", Vulkan " +
-                   context.info().apiVersion + ")";
+        if (versionOk && extensionOk) continue;
+        missing.push_back(cap.name);
+        if (!cap.hint.empty() && std::find(hints.begin(), hints.end(), cap.hint) == hints.end())
+            hints.push_back(cap.hint);
     }
-    return "";
+    if (missing.empty()) return "";
+    // Every missing capability in one line, so that a user installs what is needed at once.
+    std::string line = name() + " needs " + join(missing, " and ") + " (not available on " +
+                       context.info().name + ", Vulkan " + context.info().apiVersion + ")";
+    for (const std::string& hint : hints) line += "; " + hint;
+    return line;
 }
 
 } // namespace sb

@@ -58,9 +58,10 @@ public:
     using Technique::Technique;
     Api api() const override { return Api::Vulkan; }
 
-    /// "" when the device has every Vulkan capability the declaration lists, else what is missing and
-    /// on which device.
-    std::string checkCapabilities(const VulkanContext& context) const;
+    /// "" when the device has every Vulkan capability the declaration lists, else one line naming every
+    /// missing one, the device, and the capabilities' hints. A form that needs more than the declaration
+    /// can say (a device feature) adds its own check.
+    virtual std::string checkCapabilities(const VulkanContext& context) const;
     /// Shader modules and pipelines for the current properties, scene and targets (both visibility
     /// variants of the render pass: the harness switches between them).
     virtual void compile(const VulkanCompileContext& ctx) = 0;

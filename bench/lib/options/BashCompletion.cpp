@@ -56,7 +56,9 @@ void tables(std::ostream& os, const std::vector<CliCommand>& commands) {
     os << "# The property keys of technique $1.\n_bench_properties() {\n    case \"$1\" in\n";
     for (const TechniqueRegistry::Entry& e : TechniqueRegistry::entries())
         os << "    " << e.name << ") echo '"
-           << join(e.gl()->info().properties, " ", [](const PropertyDesc& p) { return p.name; }) << "' ;;\n";
+           << join(TechniqueRegistry::describe(TechniqueSpec{e.name, {}})->info().properties, " ",
+                   [](const PropertyDesc& p) { return p.name; })
+           << "' ;;\n";
     os << "    esac\n}\n\n# The options of subcommand $1 ('' for the plain run).\n_bench_options() {\n"
           "    case \"$1\" in\n";
     for (const CliCommand& c : commands) os << "    '" << c.name << "') echo '" << optionWords(c) << "' ;;\n";

@@ -87,7 +87,8 @@ void techniques(std::ostream& os) {
           "Given with \\fB\\-t\\fR \\fIname\\fR[:\\fIproperty\\fR=\\fIvalue\\fR...]; "
           "\\fBbench \\-\\-list\\fR shows their effects and passes too.\n";
     for (const TechniqueRegistry::Entry& entry : TechniqueRegistry::entries()) {
-        const std::unique_ptr<GlTechnique> technique = entry.gl(); // owns the info below
+        const std::unique_ptr<Technique> technique =
+            TechniqueRegistry::describe(TechniqueSpec{entry.name, {}}); // owns the info below
         const TechniqueInfo& info = technique->info();
         os << ".TP\n" << bold(info.name) << "\n" << escape(info.description) << "\n";
         if (info.properties.empty()) continue;

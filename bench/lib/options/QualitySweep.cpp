@@ -7,14 +7,14 @@
 namespace sb {
 
 std::vector<TechniqueSpec> QualitySweep::expand(const TechniqueSpec& spec) {
-    auto base = TechniqueRegistry::create(spec); // validates the spec's own properties
+    auto base = TechniqueRegistry::describe(spec); // validates the spec's own properties
     std::vector<TechniqueSpec> out{spec};
     std::set<std::string> seen{base->properties().toString()};
     for (const QualityKnob& knob : base->info().quality)
         for (const std::string& value : knob.values) {
             TechniqueSpec variant = spec;
             variant.properties.emplace_back(knob.property, value); // later entries win
-            auto t = TechniqueRegistry::create(variant);
+            auto t = TechniqueRegistry::describe(variant);
             if (seen.insert(t->properties().toString()).second) out.push_back(variant);
         }
     return out;

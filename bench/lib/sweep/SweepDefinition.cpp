@@ -301,7 +301,7 @@ SweepPlan SweepDefinition::expand() const {
     std::vector<std::string> techniques;
     for (const std::string& t : orDefault(axes.techniques, std::string("shadowmap")))
         for (const std::string& spec : expandTechnique(t)) {
-            TechniqueRegistry::create(TechniqueSpec::parse(spec)); // names, knobs and ranges checked
+            TechniqueRegistry::describe(TechniqueSpec::parse(spec)); // names, knobs and ranges checked
             if (!qualitySweep) {
                 techniques.push_back(spec);
                 continue;

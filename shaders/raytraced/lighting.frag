@@ -1,0 +1,104 @@
+// `raytraced` lighting pass (techniques/raytraced/RayTracedVulkan.h): the scene lit as common/lit.frag
+// lights it, each light's term times its visibility, which rays traced from this fragment decide
+// (Boksansky, Wimmer and Bittner, "Ray Traced Shadows: Maintaining Real-Time Frame Rates", Ray Tracing
+// Gems ch. 13: the visible surface from the rasteriser, shadow rays from it towards the lights).
+// Vulkan only: GL has no ray queries.
+//
+// Per light i, in the Embree reference's order (reference/ReferenceTracer.h), with n the geometric normal
+// of the side the camera sees:
+//   no light arrives (n faces away from the light, or the point is outside a spot's cone or beyond a
+//   light's range): visibility 0, no ray;
+//   the light casts no shadow or the instance receives none (shadowApplies): 1, no ray;
+//   otherwise the mode's rays decide, each counted in uRayCount.
+// Modes (one define each, techniques/raytraced/RayTraced.h):
+//   RT_MODE_HARD  one ray towards the light's centre: to a point or spot light's position, stopping
+//                 2^-12 of the distance short of it (as the reference does, so geometry at the light,
+//                 a lantern's bulb, does not occlude), or against a directional light's direction.
+#extension GL_EXT_ray_query : require
+#include "common/frame.glsl"
+#include "common/lighting.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec4 vColorId;
+in vec3 vEyeRelativePos; // SB_EYE_RELATIVE_POSITION (common/scene.vert)
+layout(location = 0) out vec4 oColor;
+layout(location = 1) out vec4 oVisibility;
+
+// The ray counter below is a side effect: without this, the depth test would move after the shader and
+// hidden fragments would trace too. Early tests draw the same image (no discard, no depth written here).
+layout(early_fragment_tests) in;
+
+layout(set = 1, binding = 0) uniform accelerationStructureEXT uScene;
+// Rays this frame (the `rays_traced` counter), zeroed by the frame before the pass.
+layout(std430, set = 1, binding = 1) buffer RayCount {
+    uint uRayCount;
+};
+
+#include "raytraced/rays.glsl"
+
+// Directional lights: as far as the scene can reach (finite, as the ray query's limits ask).
+const float kFarAway = 1.0e30;
+// Rays towards a point stop this fraction of the distance short of it (reference/ReferenceTracer.cpp).
+const float kShortOfLight = 1.0 - 1.0 / 4096.0;
+
+// Unit geometric normal of the side the camera sees: the plane of the screen-space derivatives of the
+// position (every fragment of a triangle lies in its plane), turned towards the eye. Taken from the
+// eye-relative position, whose small coordinates keep the derivatives exact enough where the world's are
+// large. The shading normal where the derivatives are degenerate (a triangle seen edge-on covers no area).
+vec3 seenGeometricNormal(vec3 fromEye, vec3 shading) {
+    vec3 g = cross(dFdx(fromEye), dFdy(fromEye));
+    float len2 = dot(g, g);
+    if (!(len2 > 0.0)) return shading;
+    g *= inversesqrt(len2);
+    return dot(g, fromEye) > 0.0 ? -g : g;
+}
+
+// Whether light i reaches a point at p with normal n at all, the direction towards it and how far a
+// shadow ray may go (`reach`): the light's centre.
+bool lightArrives(int i, vec3 p, vec3 n, out vec3 towards, out float reach) {
+    if (isPositional(i)) {
+        vec3 d = uLightPos[i].xyz - p;
+        reach = length(d);
+        if (!(reach > 0.0)) return false;
+        towards = d / reach;
+    } else {
+        towards = -uLightDir[i].xyz;
+        reach = kFarAway;
+    }
+    if (!(dot(n, towards) > 0.0)) return false;
+    return lightFalloff(i, p, towards) > 0.0;
+}
+
+#ifdef RT_MODE_HARD
+// One ray from the offset origin to the light's centre: 1 lit, 0 shadowed.
+float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, float reach, inout uint rays) {
+    vec3 o = offsetRayOrigin(p, n);
+    ++rays;
+    if (!isPositional(i)) return occluded(o, towards, kFarAway) ? 0.0 : 1.0;
+    vec3 d = uLightPos[i].xyz - o;
+    float len = length(d);
+    return occluded(o, d / len, len * kShortOfLight) ? 0.0 : 1.0;
+}
+#endif
+
+void main() {
+    vec3 n = normalize(vNormal);
+    if (!gl_FrontFacing) n = -n;
+    vec3 ng = seenGeometricNormal(vEyeRelativePos, n); // before any branch: derivatives
+    vec3 light = ambientLight();
+    vec4 vis = vec4(1.0);
+    uint rays = 0u;
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
+        vec3 towards;
+        float reach;
+        if (!lightArrives(i, vWorldPos, ng, towards, reach))
+            vis[i] = 0.0;
+        else if (shadowApplies(i, vColorId))
+            vis[i] = traceVisibility(i, vWorldPos, ng, towards, reach, rays);
+        light += vis[i] * lightTerm(i, vWorldPos, n);
+    }
+    if (rays > 0u) atomicAdd(uRayCount, rays);
+    oColor = vec4(vColorId.rgb * light, 1.0);
+    oVisibility = vis;
+}

@@ -1,0 +1,69 @@
+#pragma once
+// The scene as a ray query sees it (VK_KHR_acceleration_structure): one bottom-level structure per mesh,
+// built once from the mesh's object-space vertices and indices, and one top-level structure over the
+// instances that cast a shadow, each placed by its model matrix. Which instances are in it follows the
+// Embree reference (reference/EmbreeScene.cpp): an instance with casts_shadow false stops no ray, so it
+// is left out of the top level; every other instance of a mesh with triangles is in it. Both faces of
+// every triangle stop rays (TRIANGLE_FACING_CULL_DISABLE, as Embree's default build), and every geometry
+// is opaque (no any-hit work).
+//
+// Built in the constructor (untimed, VulkanContext::submitNow): the bottom levels, then the top level.
+// A scene in motion moves its casters: writeInstances() puts their model matrices into the instance
+// buffer and recordTopLevelBuild() records the top level's rebuild into the frame's command buffer,
+// followed by the barrier that makes it visible to the fragment stage's ray queries, so the frame pays
+// for its structure as the other techniques pay for their maps. The bottom levels never change: motion
+// moves instances, not vertices (scenes/Motion.h).
+//
+// Needs VulkanContext::rayQuery().
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "scenes/Scene.h"
+#include "vk/AccelerationStructure.h"
+#include "vk/VulkanBuffer.h"
+#include "vk/VulkanContext.h"
+
+namespace sb {
+
+class AccelerationStructures {
+public:
+    /// Builds every structure of `scene` and waits. Throws sb::Error(Failure) when a Vulkan call fails.
+    AccelerationStructures(VulkanContext& context, const Scene& scene);
+    AccelerationStructures(const AccelerationStructures&) = delete;
+    AccelerationStructures& operator=(const AccelerationStructures&) = delete;
+
+    /// What the lighting pass's ray queries traverse (set 1, binding 0).
+    VkAccelerationStructureKHR topLevel() const { return mTopLevel.handle(); }
+    /// The storage of every structure, bottom levels and top level (the `structure_bytes` counter).
+    uint64_t bytes() const;
+    size_t bottomLevelCount() const;
+    /// The instances in the top level: the casters whose mesh has triangles.
+    uint32_t instanceCount() const { return uint32_t(mCasters.size()); }
+
+    /// Writes the casters' current model matrices into the instance buffer (a scene in motion moved
+    /// them); the next recordTopLevelBuild() builds over them. The previous frame must have finished
+    /// (the harness waits for each frame's fence).
+    void writeInstances(const Scene& scene);
+    /// Records the top level's build over the instance buffer into `cmd`, outside a render pass, and a
+    /// barrier from the build to the fragment shaders' ray queries.
+    void recordTopLevelBuild(VkCommandBuffer cmd);
+
+private:
+    /// Bottom levels of every mesh with triangles, built together (one scratch buffer).
+    void buildBottomLevels(const Scene& scene);
+    /// The top level's geometry over the instance buffer and its build sizes.
+    void createTopLevel();
+    void recordBottomLevelBuilds(VkCommandBuffer cmd, const std::vector<VulkanBuffer>& inputs);
+
+    VulkanContext& mContext;
+    VkDeviceSize mScratchAlignment = 1;
+    std::vector<AccelerationStructure> mBottomLevels; ///< per mesh; empty for a mesh without triangles
+    std::vector<size_t> mCasters; ///< scene instance index of each top-level instance, in buffer order
+    VulkanBuffer mInstances;      ///< host-visible VkAccelerationStructureInstanceKHR per caster
+    AccelerationStructure mTopLevel;
+    VulkanBuffer mTopLevelScratch;
+};
+
+} // namespace sb

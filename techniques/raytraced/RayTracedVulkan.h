@@ -1,0 +1,64 @@
+#pragma once
+// `raytraced` on Vulkan (techniques/vulkan/VulkanTechnique.h; the declaration is
+// techniques/raytraced/RayTraced.h). Its only form: GL has no ray queries.
+//
+// Passes of one frame:
+//   structures  a scene whose casters move: the top-level acceleration structure rebuilt over their new
+//               model matrices, recorded into the frame's command buffer (AccelerationStructures.h);
+//               skipped, with its reason, where nothing moved: the structures built before the first
+//               frame hold
+//   lighting    the scene drawn once through common/scene.vert and raytraced/lighting.frag, which
+//               traces each fragment's shadow rays with rayQueryEXT (terminate on first hit, opaque)
+//               and shades as common/lit.frag does, each light's term times its visibility
+// Set 1: binding 0 the top level, binding 1 the ray counter (a host-visible uint the frame's recording
+// zeroes and the fragments add to, one atomic add per fragment that traced).
+//
+// Self-intersection: a ray leaves the surface at the offset of Waechter and Binder, "A Fast and Robust
+// Method for Avoiding Self-Intersection" (Ray Tracing Gems, ch. 6): the interpolated position moved along
+// the geometric normal of the side the camera sees by 256 n_i units in the last place of each coordinate
+// (n_i / 65536 for a coordinate under 1/32 in magnitude): shaders/raytraced/rays.glsl, offsetRayOrigin.
+// The geometric normal is the plane of the position's screen-space derivatives, so the offset is the
+// triangle's, not the interpolated shading normal's. Rays to point and spot lights stop 2^-12 of the
+// distance short of the light, as the Embree reference's do.
+//
+// The device needs VK_KHR_acceleration_structure and VK_KHR_ray_query (the declaration) with the features
+// VulkanContext enables for them (VulkanContext::rayQuery), and fragmentStoresAndAtomics for the counter.
+//
+// Counters: RayTraced::counters (structures_built, structure_bytes, rays_traced of the last frame).
+#include <memory>
+
+#include "techniques/raytraced/AccelerationStructures.h"
+#include "techniques/vulkan/VulkanTechnique.h"
+#include "vk/DescriptorSets.h"
+#include "vk/VulkanBuffer.h"
+
+namespace sb {
+
+class RayTracedVulkan final : public VulkanTechnique {
+public:
+    RayTracedVulkan();
+    ~RayTracedVulkan() override;
+    /// The declaration's extensions, then the features VulkanContext enables with them and
+    /// fragmentStoresAndAtomics: one line naming every one missing.
+    std::string checkCapabilities(const VulkanContext& context) const override;
+    /// Forgets the structures of a previous scene; compile() builds this one's.
+    void setScene(const Scene& scene) override;
+    /// Moving casters: their matrices go into the instance buffer now, and the frame rebuilds the top
+    /// level. Lights and the camera need nothing: the shader reads them from the frame block.
+    void sceneChanged(const Scene& scene, uint32_t changes) override;
+    void compile(const VulkanCompileContext& ctx) override;
+    void execute(VulkanFrameContext& ctx) override;
+    Counters counters() const override;
+
+private:
+    VkDevice mDevice = VK_NULL_HANDLE;
+    std::unique_ptr<AccelerationStructures> mStructures;
+    bool mRebuild = false;      ///< the casters moved since the last frame
+    uint32_t mBuiltInFrame = 0; ///< structures built in the last frame
+    VulkanBuffer mRayCount;     ///< one uint, host-visible
+    DescriptorSets mSets;
+    VkPipelineLayout mLayout = VK_NULL_HANDLE;
+    ScenePipeline mPipeline;
+};
+
+} // namespace sb
