@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "SecondDriver.h"
 #include "TestSupport.h"
 
 namespace fs = std::filesystem;
@@ -20,37 +21,14 @@ using sb::test::runCommand;
 
 namespace {
 
-constexpr const char* kSecond = "mesa-25.0.7";
-constexpr const char* kInstall = "bash scripts/install-deps.sh driver";
+constexpr const char* kSecond = sb::test::kSecondDriver;
 const std::string kTiny = " -t none --scene sphere_plane --size 32x32 --frames 1 --warmup 0 --no-timer-check";
 
 std::string bench() {
     return SB_BENCH_BINARY;
 }
 
-/// Where named drivers live, as the program reads it.
-fs::path driversDirectory() {
-    const char* dir = std::getenv("SHADOWBENCH_DRIVERS_DIR");
-    return dir && *dir ? dir : "/opt/shadowbench/drivers";
-}
-
-bool secondInstalled() {
-    return fs::exists(driversDirectory() / kSecond / "etc/lvp_icd.json");
-}
-
-/// CI (scripts/test.sh installs the driver) sets SHADOWBENCH_REQUIRE_DRIVERS=1: there a missing driver
-/// fails instead of skipping.
-bool driversRequired() {
-    const char* v = std::getenv("SHADOWBENCH_REQUIRE_DRIVERS");
-    return v && std::string(v) == "1";
-}
-
-#define REQUIRE_SECOND_DRIVER()                                                                              \
-    if (!secondInstalled()) {                                                                                \
-        if (driversRequired()) FAIL() << kSecond << " is not installed; install it with: " << kInstall;      \
-        GTEST_SKIP() << kSecond << " is not installed in " << driversDirectory()                             \
-                     << "; install it with: " << kInstall;                                                   \
-    }
+using sb::test::driversDirectory;
 
 /// The upstream version dpkg installed `package` at ("22.3.6" of "22.3.6-1+deb12u2"), "" without dpkg.
 std::string debianUpstreamVersion(const std::string& package) {
@@ -158,7 +136,7 @@ TEST(DriverCli, NamedDriverNotInstalledSaysHowToInstallIt) {
         runCommand("SHADOWBENCH_DRIVERS_DIR=" + empty + " " + bench() + " --driver " + kSecond + kTiny);
     EXPECT_EQ(r.exitCode, 3) << r.output;
     EXPECT_EQ(lineCount(r.output), 1) << r.output;
-    EXPECT_NE(r.output.find(kInstall), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(sb::test::kSecondDriverInstall), std::string::npos) << r.output;
 }
 
 TEST(DriverCli, UnloadablePrefixIsRefusedInOneLineOnEachApi) {
