@@ -14,6 +14,16 @@
 //   RT_MODE_HARD  one ray towards the light's centre: to a point or spot light's position, stopping
 //                 2^-12 of the distance short of it (as the reference does, so geometry at the light,
 //                 a lantern's bulb, does not occlude), or against a directional light's direction.
+//   RT_MODE_SOFT  an area light (SB_EMITTERS, raytraced/emitter.glsl): RT_SIDE^2 rays from the offset
+//                 origin to the jittered strata of its emitter, as the reference's soft shadows
+//                 (reference/ReferenceTracer.cpp, softPixel): an emitter point on the emitter's dark
+//                 side or under the surface's horizon counts as not seen, without a ray; the others
+//                 are seen unless a ray to them (stopping 2^-12 short, as above) is occluded; the
+//                 visibility is the fraction seen of all RT_SIDE^2. Where the light's shadow does not
+//                 apply no ray is traced and every valid point above the horizon is seen (the
+//                 reference's rule, so near the horizon it is below 1). A delta light: as RT_MODE_HARD.
+//                 The strata's jitter depends on the pixel alone (emitter.glsl's sequence, frame 0): a
+//                 static scene draws the same frame every time.
 #extension GL_EXT_ray_query : require
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
@@ -70,15 +80,44 @@ bool lightArrives(int i, vec3 p, vec3 n, out vec3 towards, out float reach) {
     return lightFalloff(i, p, towards) > 0.0;
 }
 
-#ifdef RT_MODE_HARD
-// One ray from the offset origin to the light's centre: 1 lit, 0 shadowed.
-float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, float reach, inout uint rays) {
+// One ray from the offset origin to light i's centre (`towards` it, for a directional light): 1 lit,
+// 0 shadowed; 1 without a ray where its shadow does not apply.
+float traceCentre(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inout uint rays) {
+    if (!occludable) return 1.0;
     vec3 o = offsetRayOrigin(p, n);
     ++rays;
     if (!isPositional(i)) return occluded(o, towards, kFarAway) ? 0.0 : 1.0;
     vec3 d = uLightPos[i].xyz - o;
     float len = length(d);
     return occluded(o, d / len, len * kShortOfLight) ? 0.0 : 1.0;
+}
+
+#ifdef RT_MODE_HARD
+float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inout uint rays) {
+    return traceCentre(i, p, n, towards, occludable, rays);
+}
+#endif
+
+#ifdef RT_MODE_SOFT
+#include "raytraced/emitter.glsl"
+
+float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inout uint rays) {
+    vec4 emitter = lightEmitter(i);
+    if (emitterIsDelta(emitter)) return traceCentre(i, p, n, towards, occludable, rays);
+    vec3 o = offsetRayOrigin(p, n);
+    uint state = emitterSeed(uvec2(gl_FragCoord.xy), 0u);
+    int seen = 0;
+    for (int k = 0; k < RT_SIDE * RT_SIDE; ++k) {
+        EmitterSample s =
+            emitterSample(emitter, uLightPos[i].xyz, uLightDir[i].xyz, o, emitterStratum(k, RT_SIDE, state));
+        if (!s.valid || !(dot(n, s.direction) > 0.0)) continue; // sends no light here: not seen, no ray
+        if (occludable) {
+            ++rays;
+            if (occluded(o, s.direction, min(s.distance * kShortOfLight, kFarAway))) continue;
+        }
+        ++seen;
+    }
+    return float(seen) / float(RT_SIDE * RT_SIDE);
 }
 #endif
 
@@ -94,8 +133,8 @@ void main() {
         float reach;
         if (!lightArrives(i, vWorldPos, ng, towards, reach))
             vis[i] = 0.0;
-        else if (shadowApplies(i, vColorId))
-            vis[i] = traceVisibility(i, vWorldPos, ng, towards, reach, rays);
+        else
+            vis[i] = traceVisibility(i, vWorldPos, ng, towards, shadowApplies(i, vColorId), rays);
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     if (rays > 0u) atomicAdd(uRayCount, rays);

@@ -1,8 +1,11 @@
 #include "techniques/raytraced/RayTraced.h"
 
+#include <string>
 #include <vector>
 
+#include "scenes/EmitterGrid.h"
 #include "techniques/Property.h"
+#include "techniques/raytraced/LightEmitter.h"
 
 namespace sb {
 
@@ -10,6 +13,7 @@ namespace {
 
 constexpr RayTraced::ModeEntry kModes[] = {
     {RayTraced::Mode::Hard, "hard", "RT_MODE_HARD"},
+    {RayTraced::Mode::Soft, "soft", "RT_MODE_SOFT"},
 };
 constexpr NameTable kModeNames{kModes};
 
@@ -23,7 +27,12 @@ std::vector<std::string> modeChoices() {
 std::vector<PropertyDesc> declareProperties() {
     return {
         choice(RayTraced::kMode, "hard", modeChoices(),
-               "hard: one ray per fragment and light towards its centre (1 lit, 0 shadowed)"),
+               "hard: one ray per fragment and light towards its centre (1 lit, 0 shadowed); soft: `rays` "
+               "rays to stratified points of each area light's emitter, visibility the fraction unoccluded "
+               "(the Embree reference's soft visibility)"),
+        integer(RayTraced::kRays, "16", 1, RayTraced::kMaxRays,
+                "soft: rays per fragment and area light, rounded up to a square (side x side strata); a "
+                "light without extent gets one"),
     };
 }
 
@@ -38,13 +47,23 @@ RayTraced::Mode RayTraced::mode(const PropertySet& properties) {
     return *kModeNames.parse(properties.getEnum(kMode));
 }
 
+int RayTraced::raySide(const PropertySet& properties) {
+    return emitterGridSide(properties.getInt(kRays));
+}
+
+EffectMask RayTraced::effects(Mode mode) {
+    const EffectMask hard =
+        Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers | Effect::MultipleLights;
+    return mode == Mode::Soft ? hard | Effect::SoftShadows : hard;
+}
+
 TechniqueInfo RayTraced::declaration() {
     const char* hint = kDriverHint;
     return {.name = kName,
-            .description = "ray-traced shadows: a ray per fragment and light from the lighting pass "
-                           "(Boksansky, Wimmer and Bittner, Ray Tracing Gems ch. 13; Vulkan ray queries)",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
+            .description = "ray-traced shadows: a ray per fragment and light from the lighting pass, or "
+                           "mode=soft stratified rays over each area light (Boksansky, Wimmer and Bittner, "
+                           "Ray Tracing Gems ch. 13; Vulkan ray queries)",
+            .effects = effects(Mode::Hard),
             .capabilities = {{Api::Vulkan, "VK_KHR_acceleration_structure", 1, 2,
                               "VK_KHR_acceleration_structure", hint},
                              {Api::Vulkan, "VK_KHR_ray_query", 1, 2, "VK_KHR_ray_query", hint}},
@@ -53,8 +72,12 @@ TechniqueInfo RayTraced::declaration() {
             .quality = {}};
 }
 
-void RayTraced::addModeDefines(Mode mode, Defines& defines) {
-    defines[kModeNames.find(mode)->define] = "1";
+void RayTraced::addModeDefines(const PropertySet& properties, const Scene& scene, Defines& defines) {
+    const Mode m = mode(properties);
+    defines[kModeNames.find(m)->define] = "1";
+    if (m != Mode::Soft) return;
+    defines["RT_SIDE"] = std::to_string(raySide(properties));
+    addEmitterDefines(scene, defines);
 }
 
 Counters RayTraced::counters(uint32_t structuresBuilt, uint64_t structureBytes, uint64_t raysTraced) {

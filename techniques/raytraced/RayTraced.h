@@ -12,11 +12,18 @@
 // Modes (property `mode`, one shader define each, all in shaders/raytraced/lighting.frag):
 //   hard  one ray per fragment and light towards the light's centre (its position, or against its
 //         direction), 1 lit, 0 shadowed: the exact hard shadow the Embree reference computes.
+//   soft  area lights (a rect, disk or sphere emitter, the sun's angular disk): `rays` rays per fragment
+//         and light towards stratified points of the emitter (rounded up to a square, side x side
+//         strata: scenes/EmitterGrid.h), visibility the fraction unoccluded, each emitter mapped as the
+//         reference's reference/LightSampler maps it (shaders/raytraced/emitter.glsl): an unbiased
+//         estimate of the quantity the reference computes. A delta light (no extent) gets one ray, as in
+//         `hard`.
 // An area light is traced at its centre in `hard` mode.
 #include <cstdint>
 #include <string>
 
 #include "core/NameTable.h"
+#include "scenes/Scene.h"
 #include "shading/Defines.h"
 #include "techniques/PropertySet.h"
 #include "techniques/TechniqueInfo.h"
@@ -26,6 +33,9 @@ namespace sb {
 struct RayTraced {
     static constexpr const char* kName = "raytraced";
     static constexpr const char* kMode = "mode";
+    static constexpr const char* kRays = "rays";
+    /// `rays`' range: 256 is a 16 x 16 grid.
+    static constexpr int kMaxRays = 256;
     /// Why there is no GL form: the registry's one-line refusal of `-t raytraced` on GL.
     static constexpr const char* kGlRefusal =
         "GL has no ray queries: ray-traced shadows need VK_KHR_ray_query (use --api vulkan --driver "
@@ -33,7 +43,7 @@ struct RayTraced {
     /// Where the Vulkan extensions are found when the device lacks them (the capabilities' hint).
     static constexpr const char* kDriverHint = "the driver entry mesa-25.0.7 has them: --driver mesa-25.0.7";
 
-    enum class Mode { Hard };
+    enum class Mode { Hard, Soft };
     struct ModeEntry {
         Mode value;
         const char* name;   ///< the value of `mode`
@@ -43,9 +53,17 @@ struct RayTraced {
     /// The mode `properties` select.
     static Mode mode(const PropertySet& properties);
 
+    /// The side of the stratified grid `properties` ask for: `rays` rounded up to a square (16 -> 4,
+    /// 10 -> 4), as the reference rounds its samples (scenes/EmitterGrid.h).
+    static int raySide(const PropertySet& properties);
+
+    /// The declaration at the default mode (hard).
     static TechniqueInfo declaration();
-    /// The mode's define (RT_MODE_HARD=1) added to `defines`.
-    static void addModeDefines(Mode mode, Defines& defines);
+    /// What `mode` delivers: soft_shadows too in `soft`.
+    static EffectMask effects(Mode mode);
+    /// The defines of the mode `properties` select, for `scene`: RT_MODE_HARD=1, or RT_MODE_SOFT=1 with
+    /// RT_SIDE=<raySide> and the scene's emitters (SB_EMITTERS, techniques/raytraced/LightEmitter.h).
+    static void addModeDefines(const PropertySet& properties, const Scene& scene, Defines& defines);
 
     /// The counters of one frame, in this order:
     ///   structures_built  acceleration structures built or rebuilt inside the frame (the top level of a
@@ -53,7 +71,9 @@ struct RayTraced {
     ///                     before the first frame)
     ///   structure_bytes   the storage of every structure, bottom levels and top level
     ///   rays_traced       shadow rays the lighting pass traced: per shaded fragment, one per light that
-    ///                     reaches it and whose shadow applies; counted on the device, exact
+    ///                     reaches it and whose shadow applies (soft: per area light, one per stratum whose
+    ///                     emitter point is valid and above the surface's horizon); counted on the device,
+    ///                     exact
     static Counters counters(uint32_t structuresBuilt, uint64_t structureBytes, uint64_t raysTraced);
 };
 

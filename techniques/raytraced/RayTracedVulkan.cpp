@@ -41,6 +41,10 @@ void RayTracedVulkan::sceneChanged(const Scene& scene, uint32_t changes) {
     mRebuild = true;
 }
 
+void RayTracedVulkan::propertiesApplied() {
+    mutableInfo().effects = RayTraced::effects(RayTraced::mode(properties()));
+}
+
 void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
     mDevice = ctx.context.device();
     if (!mStructures) mStructures = std::make_unique<AccelerationStructures>(ctx.context, ctx.scene);
@@ -61,7 +65,7 @@ void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
 
     Defines defines = ctx.defines();
     defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
-    RayTraced::addModeDefines(RayTraced::mode(properties()), defines);
+    RayTraced::addModeDefines(properties(), ctx.scene, defines);
     defines["SB_EYE_RELATIVE_POSITION"] = "1"; // the geometric normal's derivatives (lighting.frag)
     std::string key;
     GraphicsPipelineDesc desc =

@@ -46,6 +46,8 @@ public:
     /// Moving casters: their matrices go into the instance buffer now, and the frame rebuilds the top
     /// level. Lights and the camera need nothing: the shader reads them from the frame block.
     void sceneChanged(const Scene& scene, uint32_t changes) override;
+    /// The effects follow the mode (RayTraced::effects): soft_shadows in `soft` only.
+    void propertiesApplied() override;
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override;
