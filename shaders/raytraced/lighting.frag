@@ -24,6 +24,12 @@
 //                 reference's rule, so near the horizon it is below 1). A delta light: as RT_MODE_HARD.
 //                 The strata's jitter depends on the pixel alone (emitter.glsl's sequence, frame 0): a
 //                 static scene draws the same frame every time.
+//   RT_TEMPORAL   (with RT_MODE_SOFT) the jitter is drawn afresh each frame (emitter.glsl's sequence at
+//                 frame uFrame) and the visibility shown is a moving average over frames, kept in uHistory
+//                 (a channel per light; layer uFrame & 1 written, the other read): the running mean of
+//                 the uHistoryFrames frames before and this one, the new frame weighing at least
+//                 RT_HISTORY_WEIGHT (techniques/raytraced/RayTraced.h). uHistoryFrames is 0 after the
+//                 camera or the scene moved (RayTracedVulkan): the history is not read then.
 #extension GL_EXT_ray_query : require
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
@@ -40,10 +46,16 @@ layout(location = 1) out vec4 oVisibility;
 layout(early_fragment_tests) in;
 
 layout(set = 1, binding = 0) uniform accelerationStructureEXT uScene;
-// Rays this frame (the `rays_traced` counter), zeroed by the frame before the pass.
-layout(std430, set = 1, binding = 1) buffer RayCount {
+// Rays this frame (the `rays_traced` counter), zeroed by the frame before the pass; the frame's index and
+// the frames the history holds (RT_TEMPORAL), written by the frame before the pass.
+layout(std430, set = 1, binding = 1) buffer FrameState {
     uint uRayCount;
+    uint uFrame;
+    uint uHistoryFrames;
 };
+#ifdef RT_TEMPORAL
+layout(set = 1, binding = 2, rgba32f) uniform image2DArray uHistory;
+#endif
 
 #include "raytraced/rays.glsl"
 
@@ -105,7 +117,11 @@ float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inou
     vec4 emitter = lightEmitter(i);
     if (emitterIsDelta(emitter)) return traceCentre(i, p, n, towards, occludable, rays);
     vec3 o = offsetRayOrigin(p, n);
+#ifdef RT_TEMPORAL
+    uint state = emitterSeed(uvec2(gl_FragCoord.xy), uFrame);
+#else
     uint state = emitterSeed(uvec2(gl_FragCoord.xy), 0u);
+#endif
     int seen = 0;
     for (int k = 0; k < RT_SIDE * RT_SIDE; ++k) {
         EmitterSample s =
@@ -121,11 +137,25 @@ float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inou
 }
 #endif
 
+#ifdef RT_TEMPORAL
+// This frame's visibility averaged with the history's, and stored for the next frame.
+vec4 accumulate(vec4 vis) {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    int written = int(uFrame & 1u);
+    vec4 mean = vis;
+    if (uHistoryFrames > 0u) {
+        float weight = max(1.0 / float(uHistoryFrames + 1u), RT_HISTORY_WEIGHT);
+        mean = mix(imageLoad(uHistory, ivec3(pixel, 1 - written)), vis, weight);
+    }
+    imageStore(uHistory, ivec3(pixel, written), mean);
+    return mean;
+}
+#endif
+
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
     vec3 ng = seenGeometricNormal(vEyeRelativePos, n); // before any branch: derivatives
-    vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     uint rays = 0u;
     for (int i = 0; i < LIGHT_COUNT; ++i) {
@@ -135,9 +165,13 @@ void main() {
             vis[i] = 0.0;
         else
             vis[i] = traceVisibility(i, vWorldPos, ng, towards, shadowApplies(i, vColorId), rays);
-        light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     if (rays > 0u) atomicAdd(uRayCount, rays);
+#ifdef RT_TEMPORAL
+    vis = accumulate(vis);
+#endif
+    vec3 light = ambientLight();
+    for (int i = 0; i < LIGHT_COUNT; ++i) light += vis[i] * lightTerm(i, vWorldPos, n);
     oColor = vec4(vColorId.rgb * light, 1.0);
     oVisibility = vis;
 }

@@ -1,9 +1,11 @@
 #include "techniques/raytraced/RayTraced.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "scenes/EmitterGrid.h"
+#include "shading/GlslLiteral.h"
 #include "techniques/Property.h"
 #include "techniques/raytraced/LightEmitter.h"
 
@@ -33,6 +35,9 @@ std::vector<PropertyDesc> declareProperties() {
         integer(RayTraced::kRays, "16", 1, RayTraced::kMaxRays,
                 "soft: rays per fragment and area light, rounded up to a square (side x side strata); a "
                 "light without extent gets one"),
+        flag(RayTraced::kTemporal, "false",
+             "soft: a fresh jitter every frame and the visibility averaged over frames in a history image "
+             "(exponential moving average; restarts when the camera or the scene moves)"),
     };
 }
 
@@ -45,6 +50,10 @@ const NameTable<RayTraced::ModeEntry>& RayTraced::modes() {
 RayTraced::Mode RayTraced::mode(const PropertySet& properties) {
     // The property's choices are the table's names, so the value always parses.
     return *kModeNames.parse(properties.getEnum(kMode));
+}
+
+bool RayTraced::temporal(const PropertySet& properties) {
+    return mode(properties) == Mode::Soft && properties.getBool(kTemporal);
 }
 
 int RayTraced::raySide(const PropertySet& properties) {
@@ -69,7 +78,15 @@ TechniqueInfo RayTraced::declaration() {
                              {Api::Vulkan, "VK_KHR_ray_query", 1, 2, "VK_KHR_ray_query", hint}},
             .passes = {"structures", "lighting"},
             .properties = declareProperties(),
-            .quality = {}};
+            .quality = {},
+            .resources = [](const PropertySet& p, const ResourceInputs& in) -> ResourceEstimate {
+                if (!temporal(p)) return {};
+                const uint64_t pixels = uint64_t(std::max(0, in.width)) * uint64_t(std::max(0, in.height));
+                return {pixels * kHistoryTexelBytes * kHistoryLayers,
+                        std::to_string(in.width) + "x" + std::to_string(in.height) + " pixels x (" +
+                            std::to_string(kHistoryTexelBytes) + " B x " + std::to_string(kHistoryLayers) +
+                            " layers of history)"};
+            }};
 }
 
 void RayTraced::addModeDefines(const PropertySet& properties, const Scene& scene, Defines& defines) {
@@ -78,6 +95,9 @@ void RayTraced::addModeDefines(const PropertySet& properties, const Scene& scene
     if (m != Mode::Soft) return;
     defines["RT_SIDE"] = std::to_string(raySide(properties));
     addEmitterDefines(scene, defines);
+    if (!temporal(properties)) return;
+    defines["RT_TEMPORAL"] = "1";
+    defines["RT_HISTORY_WEIGHT"] = glslFloat(kHistoryWeight);
 }
 
 Counters RayTraced::counters(uint32_t structuresBuilt, uint64_t structureBytes, uint64_t raysTraced) {

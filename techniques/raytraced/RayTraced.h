@@ -19,6 +19,12 @@
 //         estimate of the quantity the reference computes. A delta light (no extent) gets one ray, as in
 //         `hard`.
 // An area light is traced at its centre in `hard` mode.
+//
+// `temporal=true` (soft only): each frame draws a fresh jitter of the strata (the frame index enters the
+// sequence's seed) and the visibility shown is an exponential moving average over frames, kept in a
+// history image: a running mean over the first 1/kHistoryWeight frames, then a weight of kHistoryWeight
+// for the new frame. The history restarts whenever the camera or the scene moves (no reprojection: it
+// is an accumulation for still frames).
 #include <cstdint>
 #include <string>
 
@@ -34,6 +40,14 @@ struct RayTraced {
     static constexpr const char* kName = "raytraced";
     static constexpr const char* kMode = "mode";
     static constexpr const char* kRays = "rays";
+    static constexpr const char* kTemporal = "temporal";
+    /// temporal: the new frame's weight in the moving average once the running mean has reached it
+    /// (shaders/raytraced/lighting.frag, RT_HISTORY_WEIGHT): the average then spans ~1/0.1 = 10 frames.
+    static constexpr float kHistoryWeight = 0.1f;
+    /// temporal: the history's texel (RGBA32F, a channel per light) and its two layers (read the last
+    /// frame's, write this one's).
+    static constexpr uint64_t kHistoryTexelBytes = 16;
+    static constexpr uint64_t kHistoryLayers = 2;
     /// `rays`' range: 256 is a 16 x 16 grid.
     static constexpr int kMaxRays = 256;
     /// Why there is no GL form: the registry's one-line refusal of `-t raytraced` on GL.
@@ -52,6 +66,8 @@ struct RayTraced {
     static const NameTable<ModeEntry>& modes();
     /// The mode `properties` select.
     static Mode mode(const PropertySet& properties);
+    /// Whether `properties` accumulate over frames: temporal=true in soft mode (hard is exact already).
+    static bool temporal(const PropertySet& properties);
 
     /// The side of the stratified grid `properties` ask for: `rays` rounded up to a square (16 -> 4,
     /// 10 -> 4), as the reference rounds its samples (scenes/EmitterGrid.h).
@@ -62,7 +78,8 @@ struct RayTraced {
     /// What `mode` delivers: soft_shadows too in `soft`.
     static EffectMask effects(Mode mode);
     /// The defines of the mode `properties` select, for `scene`: RT_MODE_HARD=1, or RT_MODE_SOFT=1 with
-    /// RT_SIDE=<raySide> and the scene's emitters (SB_EMITTERS, techniques/raytraced/LightEmitter.h).
+    /// RT_SIDE=<raySide> and the scene's emitters (SB_EMITTERS, techniques/raytraced/LightEmitter.h), and
+    /// under temporal() RT_TEMPORAL=1 with RT_HISTORY_WEIGHT.
     static void addModeDefines(const PropertySet& properties, const Scene& scene, Defines& defines);
 
     /// The counters of one frame, in this order:
