@@ -6,6 +6,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "scenes/EmitterGrid.h"
 #include "scenes/Math.h"
 
 namespace sb {
@@ -147,9 +148,7 @@ LightSampler::Sample LightSampler::sampleCone(const glm::vec2& u) const {
 }
 
 int LightSampler::gridSide(int samples) {
-    int side = 1;
-    while (side * side < samples) ++side;
-    return side;
+    return emitterGridSide(samples);
 }
 
 glm::vec2 LightSampler::stratumPoint(int i, int j, int side, uint64_t& rng) {

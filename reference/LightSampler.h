@@ -43,7 +43,8 @@ public:
     /// The emitter sample for `u` in [0,1)^2 seen from `origin`.
     Sample sample(const glm::vec3& origin, const glm::vec2& u) const;
 
-    /// Side of the stratified grid for at least `samples` samples (rounded up to a square, >= 1).
+    /// Side of the stratified grid for at least `samples` samples (rounded up to a square, >= 1;
+    /// scenes/EmitterGrid.h, which the ray-traced soft shadows round by too).
     static int gridSide(int samples);
     /// Jittered point of stratum (i, j) of a side x side grid; `rng` is the per-pixel state.
     static glm::vec2 stratumPoint(int i, int j, int side, uint64_t& rng);

@@ -1,9 +1,10 @@
 #include "techniques/Technique.h"
 
 #include <algorithm>
-#include <charconv>
 #include <string>
+#include <vector>
 
+#include "shading/GlslLiteral.h"
 #include "shading/ShaderLimits.h"
 #include "techniques/FrameBlock.h"
 
@@ -27,39 +28,14 @@ std::string lightMask(const Scene& scene, Predicate has) {
     return std::to_string(mask) + "u";
 }
 
-/// `v` as a GLSL float literal that parses back to the identical float (to_chars' shortest round trip),
-/// with a decimal point where to_chars writes none ("0" -> "0.0").
-std::string glslFloat(float v) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    std::string text(buf, r.ptr);
-    if (text.find_first_of(".e") == std::string::npos) text += ".0";
-    return text;
-}
-
-/// A GLSL vecN constant of `v`'s N floats; one argument where they are all equal (a grey ambient, a zero
-/// padding), so that the common case stays short in the permutation key.
-template <int N>
-std::string glslVec(const glm::vec<N, float>& v) {
-    bool same = true;
-    for (int k = 1; k < N; ++k) same = same && v[k] == v[0];
-    std::string text = "vec" + std::to_string(N) + "(" + glslFloat(v[0]);
-    for (int k = 1; k < N && !same; ++k) text += "," + glslFloat(v[k]);
-    return text + ")";
-}
-
 /// A GLSL array constant of kMaxLights vecN, light i's `of(light)` at index i and zeros past the scene's
 /// lights.
 template <int N, typename Of>
 std::string lightArray(const Scene& scene, Of of) {
-    std::string text = "vec" + std::to_string(N) + "[" + std::to_string(kMaxLights) + "](";
-    for (int i = 0; i < kMaxLights; ++i) {
-        const glm::vec<N, float> v = size_t(i) < scene.lights.size()
-                                         ? of(lightConstants(scene.lights[size_t(i)]))
-                                         : glm::vec<N, float>(0.0f);
-        text += (i ? "," : "") + glslVec<N>(v);
-    }
-    return text + ")";
+    std::vector<glm::vec<N, float>> values(size_t(kMaxLights), glm::vec<N, float>(0.0f));
+    for (size_t i = 0; i < scene.lights.size() && i < values.size(); ++i)
+        values[i] = of(lightConstants(scene.lights[i]));
+    return glslVecArray<N>(values);
 }
 
 } // namespace

@@ -91,6 +91,17 @@ void DescriptorSets::writeImage(size_t i, uint32_t binding, VkSampler sampler, V
     vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
 }
 
+void DescriptorSets::writeStorageImage(size_t i, uint32_t binding, VkImageView view) const {
+    VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = mSets[i];
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    w.pImageInfo = &info;
+    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+}
+
 void DescriptorSets::writeAccelerationStructure(size_t i, uint32_t binding,
                                                 VkAccelerationStructureKHR structure) const {
     VkWriteDescriptorSetAccelerationStructureKHR info{

@@ -32,6 +32,9 @@ public:
     void writeImage(size_t i, uint32_t binding, VkSampler sampler, VkImageView view,
                     VkImageLayout layout) const;
 
+    /// Points binding `binding` of set `i` at the storage image `view`, in the general layout (a shader's
+    /// imageLoad and imageStore).
+    void writeStorageImage(size_t i, uint32_t binding, VkImageView view) const;
     /// Points binding `binding` of set `i` at acceleration structure `structure` (a ray query's scene).
     void writeAccelerationStructure(size_t i, uint32_t binding, VkAccelerationStructureKHR structure) const;
 

@@ -81,11 +81,11 @@ float guidedVisibility(int i, vec3 p, vec3 n, vec3 towards) {
 uint gGuideDecided = 0u;
 
 // The visibility of light i where its shadow is asked for: the map's decision, else hard's ray.
-float guidedOrTraced(int i, vec3 p, vec3 n, vec3 towards, float reach, inout uint rays) {
+float guidedOrTraced(int i, vec3 p, vec3 n, vec3 towards, inout uint rays) {
     float decided = guidedVisibility(i, p, n, towards);
     if (decided != kGuideUnsure) {
         ++gGuideDecided;
         return decided;
     }
-    return traceVisibility(i, p, n, towards, reach, rays);
+    return traceCentre(i, p, n, towards, true, rays);
 }

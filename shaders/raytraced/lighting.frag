@@ -14,6 +14,22 @@
 //   RT_MODE_HARD  one ray towards the light's centre: to a point or spot light's position, stopping
 //                 2^-12 of the distance short of it (as the reference does, so geometry at the light,
 //                 a lantern's bulb, does not occlude), or against a directional light's direction.
+//   RT_MODE_SOFT  an area light (SB_EMITTERS, raytraced/emitter.glsl): RT_SIDE^2 rays from the offset
+//                 origin to the jittered strata of its emitter, as the reference's soft shadows
+//                 (reference/ReferenceTracer.cpp, softPixel): an emitter point on the emitter's dark
+//                 side or under the surface's horizon counts as not seen, without a ray; the others
+//                 are seen unless a ray to them (stopping 2^-12 short, as above) is occluded; the
+//                 visibility is the fraction seen of all RT_SIDE^2. Where the light's shadow does not
+//                 apply no ray is traced and every valid point above the horizon is seen (the
+//                 reference's rule, so near the horizon it is below 1). A delta light: as RT_MODE_HARD.
+//                 The strata's jitter depends on the pixel alone (emitter.glsl's sequence, frame 0): a
+//                 static scene draws the same frame every time.
+//   RT_TEMPORAL   (with RT_MODE_SOFT) the jitter is drawn afresh each frame (emitter.glsl's sequence at
+//                 frame uFrame) and the visibility shown is a moving average over frames, kept in uHistory
+//                 (a channel per light; layer uFrame & 1 written, the other read): the running mean of
+//                 the uHistoryFrames frames before and this one, the new frame weighing at least
+//                 RT_HISTORY_WEIGHT (techniques/raytraced/RayTraced.h). uHistoryFrames is 0 after the
+//                 camera or the scene moved (RayTracedVulkan): the history is not read then.
 //   RT_MODE_GUIDED  hard's ray only where the light's depth map is unsure (raytraced/guided.glsl); the
 //                 decisions taken without a ray are counted in uDecided.
 #extension GL_EXT_ray_query : require
@@ -32,10 +48,16 @@ layout(location = 1) out vec4 oVisibility;
 layout(early_fragment_tests) in;
 
 layout(set = 1, binding = 0) uniform accelerationStructureEXT uScene;
-// Rays this frame (the `rays_traced` counter), zeroed by the frame before the pass.
-layout(std430, set = 1, binding = 1) buffer RayCount {
+// Rays this frame (the `rays_traced` counter), zeroed by the frame before the pass; the frame's index and
+// the frames the history holds (RT_TEMPORAL), written by the frame before the pass.
+layout(std430, set = 1, binding = 1) buffer FrameState {
     uint uRayCount;
+    uint uFrame;
+    uint uHistoryFrames;
 };
+#ifdef RT_TEMPORAL
+layout(set = 1, binding = 2, rgba32f) uniform image2DArray uHistory;
+#endif
 
 #include "raytraced/rays.glsl"
 
@@ -72,15 +94,63 @@ bool lightArrives(int i, vec3 p, vec3 n, out vec3 towards, out float reach) {
     return lightFalloff(i, p, towards) > 0.0;
 }
 
-#if defined(RT_MODE_HARD) || defined(RT_MODE_GUIDED)
-// One ray from the offset origin to the light's centre: 1 lit, 0 shadowed.
-float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, float reach, inout uint rays) {
+// One ray from the offset origin to light i's centre (`towards` it, for a directional light): 1 lit,
+// 0 shadowed; 1 without a ray where its shadow does not apply.
+float traceCentre(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inout uint rays) {
+    if (!occludable) return 1.0;
     vec3 o = offsetRayOrigin(p, n);
     ++rays;
     if (!isPositional(i)) return occluded(o, towards, kFarAway) ? 0.0 : 1.0;
     vec3 d = uLightPos[i].xyz - o;
     float len = length(d);
     return occluded(o, d / len, len * kShortOfLight) ? 0.0 : 1.0;
+}
+
+#ifdef RT_MODE_HARD
+float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inout uint rays) {
+    return traceCentre(i, p, n, towards, occludable, rays);
+}
+#endif
+
+#ifdef RT_MODE_SOFT
+#include "raytraced/emitter.glsl"
+
+float traceVisibility(int i, vec3 p, vec3 n, vec3 towards, bool occludable, inout uint rays) {
+    vec4 emitter = lightEmitter(i);
+    if (emitterIsDelta(emitter)) return traceCentre(i, p, n, towards, occludable, rays);
+    vec3 o = offsetRayOrigin(p, n);
+#ifdef RT_TEMPORAL
+    uint state = emitterSeed(uvec2(gl_FragCoord.xy), uFrame);
+#else
+    uint state = emitterSeed(uvec2(gl_FragCoord.xy), 0u);
+#endif
+    int seen = 0;
+    for (int k = 0; k < RT_SIDE * RT_SIDE; ++k) {
+        EmitterSample s =
+            emitterSample(emitter, uLightPos[i].xyz, uLightDir[i].xyz, o, emitterStratum(k, RT_SIDE, state));
+        if (!s.valid || !(dot(n, s.direction) > 0.0)) continue; // sends no light here: not seen, no ray
+        if (occludable) {
+            ++rays;
+            if (occluded(o, s.direction, min(s.distance * kShortOfLight, kFarAway))) continue;
+        }
+        ++seen;
+    }
+    return float(seen) / float(RT_SIDE * RT_SIDE);
+}
+#endif
+
+#ifdef RT_TEMPORAL
+// This frame's visibility averaged with the history's, and stored for the next frame.
+vec4 accumulate(vec4 vis) {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    int written = int(uFrame & 1u);
+    vec4 mean = vis;
+    if (uHistoryFrames > 0u) {
+        float weight = max(1.0 / float(uHistoryFrames + 1u), RT_HISTORY_WEIGHT);
+        mean = mix(imageLoad(uHistory, ivec3(pixel, 1 - written)), vis, weight);
+    }
+    imageStore(uHistory, ivec3(pixel, written), mean);
+    return mean;
 }
 #endif
 
@@ -92,7 +162,6 @@ void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;
     vec3 ng = seenGeometricNormal(vEyeRelativePos, n); // before any branch: derivatives
-    vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     uint rays = 0u;
     for (int i = 0; i < LIGHT_COUNT; ++i) {
@@ -100,18 +169,22 @@ void main() {
         float reach;
         if (!lightArrives(i, vWorldPos, ng, towards, reach))
             vis[i] = 0.0;
-        else if (shadowApplies(i, vColorId))
+        else
 #ifdef RT_MODE_GUIDED
-            vis[i] = guidedOrTraced(i, vWorldPos, ng, towards, reach, rays);
+            vis[i] = shadowApplies(i, vColorId) ? guidedOrTraced(i, vWorldPos, ng, towards, rays) : 1.0;
 #else
-            vis[i] = traceVisibility(i, vWorldPos, ng, towards, reach, rays);
+            vis[i] = traceVisibility(i, vWorldPos, ng, towards, shadowApplies(i, vColorId), rays);
 #endif
-        light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     if (rays > 0u) atomicAdd(uRayCount, rays);
 #ifdef RT_MODE_GUIDED
     if (gGuideDecided > 0u) atomicAdd(uDecided, gGuideDecided);
 #endif
+#ifdef RT_TEMPORAL
+    vis = accumulate(vis);
+#endif
+    vec3 light = ambientLight();
+    for (int i = 0; i < LIGHT_COUNT; ++i) light += vis[i] * lightTerm(i, vWorldPos, n);
     oColor = vec4(vColorId.rgb * light, 1.0);
     oVisibility = vis;
 }

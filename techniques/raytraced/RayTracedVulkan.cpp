@@ -15,11 +15,23 @@
 
 namespace sb {
 
+namespace {
+
+/// lighting.frag's FrameState: the ray counter, the frame's index, the frames the history holds.
+constexpr VkDeviceSize kFrameStateBytes = 3 * sizeof(uint32_t);
+/// Where the count of accumulated frames stops: past 1 / kHistoryWeight frames the weight no longer
+/// depends on it.
+constexpr uint32_t kMaxHistoryFrames = 1u << 20;
+
+} // namespace
+
 RayTracedVulkan::RayTracedVulkan() : VulkanTechnique(RayTraced::declaration()) {}
 
 void RayTracedVulkan::propertiesApplied() {
-    mGuided = RayTraced::mode(properties()) == RayTraced::Mode::Guided;
-    mutableInfo().passes = RayTraced::passes(RayTraced::mode(properties()));
+    const RayTraced::Mode mode = RayTraced::mode(properties());
+    mGuided = mode == RayTraced::Mode::Guided;
+    mutableInfo().passes = RayTraced::passes(mode);
+    mutableInfo().effects = RayTraced::effects(mode);
 }
 
 RayTracedVulkan::~RayTracedVulkan() {
@@ -45,6 +57,7 @@ void RayTracedVulkan::setScene(const Scene& scene) {
 
 void RayTracedVulkan::sceneChanged(const Scene& scene, uint32_t changes) {
     if (mGuided) mGuide.sceneChanged(scene, properties());
+    if (changes) mHistoryFrames = 0;
     if (!(changes & kCastersMoved) || !mStructures) return;
     mStructures->writeInstances(scene);
     mRebuild = true;
@@ -54,16 +67,19 @@ void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
     mDevice = ctx.context.device();
     if (!mStructures) mStructures = std::make_unique<AccelerationStructures>(ctx.context, ctx.scene);
     if (mGuided) mGuide.compile(ctx, properties()); // set 2's layout, before the pipeline layout
-    if (!mRayCount) {
-        mRayCount = VulkanBuffer(ctx.context, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        std::memset(mRayCount.map(), 0, sizeof(uint32_t));
+    if (!mFrameState) {
+        mFrameState = VulkanBuffer(ctx.context, kFrameStateBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        std::memset(mFrameState.map(), 0, kFrameStateBytes);
+        mTemporal = RayTraced::temporal(properties());
         using D = DescriptorSets;
-        mSets = DescriptorSets(
-            mDevice,
-            {{D::binding(0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, VK_SHADER_STAGE_FRAGMENT_BIT),
-              D::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
-            "raytraced");
-        mSets.writeBuffer(0, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mRayCount.buffer(), sizeof(uint32_t));
+        D::Bindings bindings = {
+            D::binding(0, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, VK_SHADER_STAGE_FRAGMENT_BIT),
+            D::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
+        if (mTemporal)
+            bindings.push_back(D::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT));
+        mSets = DescriptorSets(mDevice, {bindings}, "raytraced");
+        mSets.writeBuffer(0, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mFrameState.buffer(), kFrameStateBytes);
+        if (mTemporal) createHistory(ctx);
         std::vector<VkDescriptorSetLayout> sets{mSets.layout(0)};
         if (mGuided) sets.push_back(mGuide.layout());
         mLayout = createScenePipelineLayout(ctx, sets);
@@ -73,7 +89,7 @@ void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
 
     Defines defines = ctx.defines();
     defines["LIGHT_COUNT"] = std::to_string(std::clamp<int>(int(ctx.scene.lights.size()), 1, kMaxLights));
-    RayTraced::addModeDefines(RayTraced::mode(properties()), defines);
+    RayTraced::addModeDefines(properties(), ctx.scene, defines);
     if (mGuided) GuidedRays::addDefines(properties(), defines);
     defines["SB_EYE_RELATIVE_POSITION"] = "1"; // the geometric normal's derivatives (lighting.frag)
     std::string key;
@@ -81,6 +97,41 @@ void RayTracedVulkan::compile(const VulkanCompileContext& ctx) {
         scenePipeline(ctx, "common/scene.vert", "raytraced/lighting.frag", defines, mLayout, key);
     mPipeline.build(ctx.pipelines, key, desc, ctx.targets);
     setPermutationKey(definesKey(defines));
+}
+
+void RayTracedVulkan::createHistory(const VulkanCompileContext& ctx) {
+    VulkanImageDesc desc;
+    desc.width = uint32_t(ctx.targets.width());
+    desc.height = uint32_t(ctx.targets.height());
+    desc.layers = uint32_t(RayTraced::kHistoryLayers);
+    desc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    desc.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    mHistory = VulkanImage(ctx.context, desc);
+    ctx.context.submitNow([&](VkCommandBuffer cmd) {
+        transitionImage(cmd, mHistory.image(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_GENERAL, desc.layers);
+    });
+    mSets.writeStorageImage(0, 2, mHistory.view());
+    mHistoryFrames = 0;
+}
+
+void RayTracedVulkan::recordHistoryFrame(VulkanFrameContext& ctx) {
+    const glm::mat4 viewProj = ctx.proj * ctx.view;
+    if (viewProj != mHistoryViewProj) mHistoryFrames = 0; // another view: the history shows other surfaces
+    mHistoryViewProj = viewProj;
+    auto* state = static_cast<uint32_t*>(mFrameState.map());
+    state[1] = mFrame;
+    state[2] = mHistoryFrames;
+    // The last frame's fragments wrote the layer this one reads (and this one writes the other, which the
+    // frame before last read): their writes before this frame's reads and writes.
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(ctx.cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    ++mFrame;
+    mHistoryFrames = std::min(mHistoryFrames + 1, kMaxHistoryFrames);
 }
 
 void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
@@ -96,7 +147,8 @@ void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
     if (mGuided) recordGuide(ctx);
     // The previous frame has finished (the harness waited for its fence) and this one has not started:
     // the host zeroes the counter the fragments add to.
-    *static_cast<uint32_t*>(mRayCount.map()) = 0;
+    *static_cast<uint32_t*>(mFrameState.map()) = 0;
+    if (mTemporal) recordHistoryFrame(ctx);
     ctx.passes.begin("lighting");
     ctx.submitter.resetStats();
     if (mGuided) mGuide.bind(ctx.cmd, mLayout);
@@ -105,7 +157,7 @@ void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
 
 Counters RayTracedVulkan::counters() const {
     // Read after the frame's fence (the harness reads counters after the frame it waited for).
-    const uint32_t rays = mRayCount ? *static_cast<const uint32_t*>(mRayCount.map()) : 0u;
+    const uint32_t rays = mFrameState ? *static_cast<const uint32_t*>(mFrameState.map()) : 0u;
     Counters out = RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
     if (mGuided)
         for (auto& c : GuidedRays::counters(rays, mGuide.decided(), mGuide.mapTexels())) out.push_back(c);

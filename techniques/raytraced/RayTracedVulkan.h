@@ -10,8 +10,13 @@
 //   lighting    the scene drawn once through common/scene.vert and raytraced/lighting.frag, which
 //               traces each fragment's shadow rays with rayQueryEXT (terminate on first hit, opaque)
 //               and shades as common/lit.frag does, each light's term times its visibility
-// Set 1: binding 0 the top level, binding 1 the ray counter (a host-visible uint the frame's recording
-// zeroes and the fragments add to, one atomic add per fragment that traced).
+// Set 1: binding 0 the top level, binding 1 the frame's state (a host-visible buffer: the ray counter the
+// frame's recording zeroes and the fragments add to, one atomic add per fragment that traced; the frame's
+// index and the frames the history holds), binding 2 under temporal=true the history (RGBA32F, two
+// layers of the frame's size, general layout: a fragment reads the last frame's layer and writes this
+// frame's). A pixel's history is written by each fragment that passes the early depth test there, the
+// visible surface's last in primitive order; lavapipe shades a pixel's fragments in that order (a device
+// that does not would need a depth pre-pass or fragment-shader interlock for the same guarantee).
 //
 // Self-intersection: a ray leaves the surface at the offset of Waechter and Binder, "A Fast and Robust
 // Method for Avoiding Self-Intersection" (Ray Tracing Gems, ch. 6): the interpolated position moved along
@@ -36,6 +41,7 @@
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
 #include "vk/VulkanBuffer.h"
+#include "vk/VulkanImage.h"
 
 namespace sb {
 
@@ -43,7 +49,8 @@ class RayTracedVulkan final : public VulkanTechnique {
 public:
     RayTracedVulkan();
     ~RayTracedVulkan() override;
-    /// The passes of the mode the properties chose (RayTraced::passes).
+    /// The passes and effects of the mode the properties chose (RayTraced::passes, RayTraced::effects:
+    /// soft_shadows in `soft` only).
     void propertiesApplied() override;
     /// The declaration's extensions, then the features VulkanContext enables with them and
     /// fragmentStoresAndAtomics: one line naming every one missing.
@@ -52,7 +59,7 @@ public:
     void setScene(const Scene& scene) override;
     /// Moving casters: their matrices go into the instance buffer now, and the frame rebuilds the top
     /// level. Lights and the camera need nothing: the shader reads them from the frame block (guided
-    /// refits its maps to whatever moved).
+    /// refits its maps to whatever moved). Under temporal=true any change restarts the history.
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
@@ -61,12 +68,26 @@ public:
 private:
     /// mode=guided: the pass "depth" (skipped where the scene needs no shadow), and the count zeroed.
     void recordGuide(VulkanFrameContext& ctx);
+    /// temporal=true: the history image at the targets' size, in the general layout, bound at set 1
+    /// binding 2.
+    void createHistory(const VulkanCompileContext& ctx);
+    /// temporal=true, before the lighting pass: the frame's index and history count into the frame state
+    /// (the count restarts under a new camera), and the barrier after the last frame's history writes.
+    void recordHistoryFrame(VulkanFrameContext& ctx);
 
     VkDevice mDevice = VK_NULL_HANDLE;
     std::unique_ptr<AccelerationStructures> mStructures;
     bool mRebuild = false;      ///< the casters moved since the last frame
     uint32_t mBuiltInFrame = 0; ///< structures built in the last frame
-    VulkanBuffer mRayCount;     ///< one uint, host-visible
+    /// The frame's state, host-visible: the ray counter, the frame's index, the frames the history holds
+    /// (lighting.frag's FrameState).
+    VulkanBuffer mFrameState;
+    /// temporal=true: the history, the frame counter, the frames accumulated since the last restart and
+    /// the camera they were accumulated under (a new one restarts the history).
+    bool mTemporal = false;
+    VulkanImage mHistory;
+    uint32_t mFrame = 0, mHistoryFrames = 0;
+    glm::mat4 mHistoryViewProj{0.0f};
     DescriptorSets mSets;
     VkPipelineLayout mLayout = VK_NULL_HANDLE;
     ScenePipeline mPipeline;
