@@ -91,7 +91,13 @@ void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
 Counters RayTracedVulkan::counters() const {
     // Read after the frame's fence (the harness reads counters after the frame it waited for).
     const uint32_t rays = mRayCount ? *static_cast<const uint32_t*>(mRayCount.map()) : 0u;
-    return RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
+    Counters out = RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
+    if (mStructures) {
+        const Counters times =
+            RayTraced::buildTimes(mStructures->bottomLevelsBuildMs(), mStructures->topLevelBuildMs());
+        out.insert(out.end(), times.begin(), times.end());
+    }
+    return out;
 }
 
 } // namespace sb
