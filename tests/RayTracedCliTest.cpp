@@ -153,6 +153,12 @@ TEST(RayTracedCounters, RaysAreExactAndTheSameEveryRun) {
         EXPECT_EQ(number(row, "work_lighting_fragments"), double(kWidth * kHeight));
         EXPECT_GT(number(row, "counter_structure_bytes"), 0.0);
         EXPECT_EQ(number(row, "counter_structures_built"), 0.0) << "a static scene builds before its frames";
+        // The builds are timed inside the setup (setScene + compile), which setup_ms times around them.
+        const double bottom = number(row, "counter_bottom_levels_build_ms");
+        const double top = number(row, "counter_top_level_build_ms");
+        EXPECT_GT(bottom, 0.0);
+        EXPECT_GT(top, 0.0);
+        EXPECT_LT(bottom + top, number(row, "setup_ms"));
     }
     EXPECT_EQ(rays[0], 2.0 * kWidth * kHeight);
     EXPECT_EQ(rays[1], rays[0]);

@@ -146,6 +146,8 @@ TEST(WorkGateTest, EveryWorkColumnIsTheApplicationsOrTheDrivers) {
         {"counter_shadow_map_texels", WorkClass::Application},
         {"counter_casters_culled", WorkClass::Application},
         {"counter_rays_per_second_per_thread", WorkClass::None}, // a rate: time, not work
+        {"counter_top_level_build_ms", WorkClass::None},         // a time (raytraced's build)
+        {"counter_structure_bytes", WorkClass::Application},
         {"wall_ms_median", WorkClass::None},
         {"gl_version", WorkClass::None}};
     for (const auto& [column, cls] : expected) EXPECT_EQ(WorkColumns::classOf(column), cls) << column;

@@ -10,7 +10,8 @@ prints Markdown and writes diff-<config>.png beside the CSVs for the largest ima
   are split into the application's work (GL calls, draws, triangles and primitives submitted, the
   technique's own counters: what the harness asked for, so equal on every driver) and the driver's
   (vertex and fragment shader invocations, primitives out of the clipper, samples a query counted:
-  how the driver chose to do it). A rate (a counter per second) is time, and is left out.
+  how the driver chose to do it). A rate (a counter per second) or a time (a counter ending in _ms) is
+  time, and is left out.
 - ci-instructions/ and ci-wall/: bench ci with the two drivers as its sides, layer B (instructions per
   frame under callgrind: report.json, instructions.json) and layer C (wall time in interleaved rounds:
   report.json, wall.csv).
@@ -39,9 +40,9 @@ def fail(message):
 
 
 def kind(column):
-    """'application', 'driver', 'rate' or None (not a count) for a column of a result row."""
+    """'application', 'driver', 'rate' (a time) or None (not a count) for a column of a result row."""
     if column.startswith("counter_"):
-        if "_per_second" in column:
+        if "_per_second" in column or column.endswith("_ms"):
             return "rate"
         return "driver" if column in DRIVER_COUNTERS else "application"
     if not column.startswith(("work_", "load_")):

@@ -1,7 +1,9 @@
 #include "techniques/raytraced/AccelerationStructures.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
+#include <functional>
 
 namespace sb {
 
@@ -83,6 +85,13 @@ VkTransformMatrixKHR rowMajor3x4(const glm::mat4& m) {
     return t;
 }
 
+/// context.submitNow(record), returning its host wall time in ms (recording to the fence).
+double timedSubmit(VulkanContext& context, const std::function<void(VkCommandBuffer)>& record) {
+    const auto t0 = std::chrono::steady_clock::now();
+    context.submitNow(record);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
 } // namespace
 
 AccelerationStructures::AccelerationStructures(VulkanContext& context, const Scene& scene)
@@ -101,7 +110,7 @@ AccelerationStructures::AccelerationStructures(VulkanContext& context, const Sce
     buildBottomLevels(scene);
     writeInstances(scene);
     createTopLevel();
-    context.submitNow([&](VkCommandBuffer cmd) { recordTopLevelBuild(cmd); });
+    mTopLevelBuildMs = timedSubmit(context, [&](VkCommandBuffer cmd) { recordTopLevelBuild(cmd); });
 }
 
 void AccelerationStructures::buildBottomLevels(const Scene& scene) {
@@ -141,7 +150,7 @@ void AccelerationStructures::buildBottomLevels(const Scene& scene) {
         infos[i].scratchData.deviceAddress = base + scratchOffsets[i];
         rangePointers.push_back(&ranges[i]);
     }
-    mContext.submitNow([&](VkCommandBuffer cmd) {
+    mBottomLevelsBuildMs = timedSubmit(mContext, [&](VkCommandBuffer cmd) {
         mContext.rayQueryFunctions().cmdBuild(cmd, uint32_t(infos.size()), infos.data(),
                                               rangePointers.data());
         buildToBuildBarrier(cmd);

@@ -7,7 +7,10 @@
 // every triangle stop rays (TRIANGLE_FACING_CULL_DISABLE, as Embree's default build), and every geometry
 // is opaque (no any-hit work).
 //
-// Built in the constructor (untimed, VulkanContext::submitNow): the bottom levels, then the top level.
+// Built in the constructor (untimed for the frames, VulkanContext::submitNow): the bottom levels, then the
+// top level, each submission timed on the host from recording to its fence (bottomLevelsBuildMs,
+// topLevelBuildMs): on lavapipe the builds run on the CPU inside that wait, so the time is the build's
+// plus one submission's overhead. The harness's setup_ms holds them among the pipelines' compilation.
 // A scene in motion moves its casters: writeInstances() puts their model matrices into the instance
 // buffer and recordTopLevelBuild() records the top level's rebuild into the frame's command buffer,
 // followed by the barrier that makes it visible to the fragment stage's ray queries, so the frame pays
@@ -41,6 +44,12 @@ public:
     size_t bottomLevelCount() const;
     /// The instances in the top level: the casters whose mesh has triangles.
     uint32_t instanceCount() const { return uint32_t(mCasters.size()); }
+    /// Host wall time (ms) of the one submission that built every bottom level, recorded, submitted and
+    /// waited for (0 when no mesh has triangles).
+    double bottomLevelsBuildMs() const { return mBottomLevelsBuildMs; }
+    /// The same for the top level's first build: the build a frame whose casters moved repeats, over the
+    /// same instances with the same flags, inside its command buffer (where the host cannot time it alone).
+    double topLevelBuildMs() const { return mTopLevelBuildMs; }
 
     /// Writes the casters' current model matrices into the instance buffer (a scene in motion moved
     /// them); the next recordTopLevelBuild() builds over them. The previous frame must have finished
@@ -64,6 +73,8 @@ private:
     VulkanBuffer mInstances;      ///< host-visible VkAccelerationStructureInstanceKHR per caster
     AccelerationStructure mTopLevel;
     VulkanBuffer mTopLevelScratch;
+    double mBottomLevelsBuildMs = 0.0;
+    double mTopLevelBuildMs = 0.0;
 };
 
 } // namespace sb

@@ -120,4 +120,8 @@ Counters RayTraced::counters(uint32_t structuresBuilt, uint64_t structureBytes, 
             {"rays_traced", double(raysTraced)}};
 }
 
+Counters RayTraced::buildTimes(double bottomLevelsMs, double topLevelMs) {
+    return {{"bottom_levels_build_ms", bottomLevelsMs}, {"top_level_build_ms", topLevelMs}};
+}
+
 } // namespace sb

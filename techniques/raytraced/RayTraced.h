@@ -97,6 +97,13 @@ struct RayTraced {
     ///                     emitter point is valid and above the surface's horizon); counted on the device,
     ///                     exact
     static Counters counters(uint32_t structuresBuilt, uint64_t structureBytes, uint64_t raysTraced);
+    /// The structures' build times, measured once before the first frame (AccelerationStructures), in ms;
+    /// times, not work (their names end in _ms: the perf gate's exact-work layer leaves them out,
+    /// bench/lib/gate/WorkColumns.h):
+    ///   bottom_levels_build_ms  the one submission that builds every mesh's bottom level
+    ///   top_level_build_ms      the top level's build over the casters, which a frame whose casters
+    ///                           moved repeats inside its command buffer (the `structures` pass)
+    static Counters buildTimes(double bottomLevelsMs, double topLevelMs);
 };
 
 } // namespace sb

@@ -159,6 +159,11 @@ Counters RayTracedVulkan::counters() const {
     // Read after the frame's fence (the harness reads counters after the frame it waited for).
     const uint32_t rays = mFrameState ? *static_cast<const uint32_t*>(mFrameState.map()) : 0u;
     Counters out = RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
+    if (mStructures) {
+        const Counters times =
+            RayTraced::buildTimes(mStructures->bottomLevelsBuildMs(), mStructures->topLevelBuildMs());
+        out.insert(out.end(), times.begin(), times.end());
+    }
     if (mGuided)
         for (auto& c : GuidedRays::counters(rays, mGuide.decided(), mGuide.mapTexels())) out.push_back(c);
     return out;

@@ -29,7 +29,8 @@
 // The device needs VK_KHR_acceleration_structure and VK_KHR_ray_query (the declaration) with the features
 // VulkanContext enables for them (VulkanContext::rayQuery), and fragmentStoresAndAtomics for the counter.
 //
-// Counters: RayTraced::counters (structures_built, structure_bytes, rays_traced of the last frame).
+// Counters: RayTraced::counters (structures_built, structure_bytes, rays_traced of the last frame) and
+// RayTraced::buildTimes (bottom_levels_build_ms, top_level_build_ms: the builds before the first frame).
 //
 // mode=guided (techniques/raytraced/GuidedRays.h): a pass "depth" between the two renders a depth map per
 // light (GuideMapsVulkan), which the lighting pass reads through set 2 to trace only the unsure rays;

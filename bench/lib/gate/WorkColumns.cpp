@@ -26,7 +26,8 @@ WorkClass censusClass(const std::string& column) {
 
 WorkClass WorkColumns::classOf(const std::string& column) {
     if (column.find("per_second") != std::string::npos) return WorkClass::None;
-    if (startsWith(column, "counter_")) return WorkClass::Application;
+    if (startsWith(column, "counter_"))
+        return endsWith(column, "_ms") ? WorkClass::None : WorkClass::Application;
     // load_vertices is "_vertices" with the prefix's underscore: match the name with a leading '_'.
     if (startsWith(column, "load_") || startsWith(column, "work_")) return censusClass("_" + column);
     return WorkClass::None;

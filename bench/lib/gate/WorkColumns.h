@@ -26,7 +26,8 @@ enum class WorkClass {
 class WorkColumns {
 public:
     /// The class of a result column by its name (work_<pass>_<count>, load_<count>, counter_<name>).
-    /// A technique counter that is a rate (`..._per_second...`) measures time and is None.
+    /// A technique counter that is a rate (`..._per_second...`) or a time (`..._ms`, raytraced's build
+    /// times) measures time and is None.
     static WorkClass classOf(const std::string& column);
     /// classOf(column) != None.
     static bool isWork(const std::string& column) { return classOf(column) != WorkClass::None; }
