@@ -5,6 +5,9 @@
 #include <cstring>
 #include <functional>
 
+#include "scenes/Math.h"
+#include "scenes/MortonOrder.h"
+
 namespace sb {
 
 namespace {
@@ -102,6 +105,7 @@ AccelerationStructures::AccelerationStructures(VulkanContext& context, const Sce
             scene.meshes[inst.mesh].triangleCount() > 0)
             mCasters.push_back(i);
     }
+    orderCastersInSpace(scene);
     // One record at least: a scene without casters still builds a (empty) top level over a valid buffer.
     mInstances = VulkanBuffer(
         context, std::max<size_t>(1, mCasters.size()) * sizeof(VkAccelerationStructureInstanceKHR),
@@ -111,6 +115,19 @@ AccelerationStructures::AccelerationStructures(VulkanContext& context, const Sce
     writeInstances(scene);
     createTopLevel();
     mTopLevelBuildMs = timedSubmit(context, [&](VkCommandBuffer cmd) { recordTopLevelBuild(cmd); });
+}
+
+void AccelerationStructures::orderCastersInSpace(const Scene& scene) {
+    std::vector<glm::vec3> centres;
+    centres.reserve(mCasters.size());
+    for (size_t i : mCasters) {
+        const Instance& inst = scene.instances[i];
+        centres.push_back(transformBounds(scene.meshBoundsOf(inst.mesh), inst.model).center());
+    }
+    std::vector<size_t> ordered;
+    ordered.reserve(mCasters.size());
+    for (size_t k : mortonOrder(centres)) ordered.push_back(mCasters[k]);
+    mCasters = std::move(ordered);
 }
 
 void AccelerationStructures::buildBottomLevels(const Scene& scene) {
