@@ -16,8 +16,9 @@ build/bench ci --out "${SHADOWBENCH_GATE_OUT:-ci-out}" --advisory C "$@"
 
 # The second driver (bench --driver mesa-25.0.7; scripts/install-deps.sh driver installs it): layer A
 # against that driver's own baseline, results/ci/baseline/mesa-25.0.7/ (about 45 s on 2 cores), then
-# layer B of the configurations only that driver can run (the suite's "drivers": raytraced_vulkan, whose
-# instructions no other run counts; about 40 s, two runs under valgrind). Not installed, it fails naming
+# layer B of the configurations only that driver can run (the suite's "drivers": raytraced_vulkan,
+# raytraced_soft_vulkan and raytraced_guided_vulkan, whose instructions no other run counts; four runs
+# under valgrind, the first one twice as the A/A pair: 2 min 36 s on 2026-12-07 beside other builds). Not installed, it fails naming
 # the install command. SHADOWBENCH_GATE_SECOND_DRIVER=0 leaves it out.
 if [ "${SHADOWBENCH_GATE_SECOND_DRIVER:-1}" = 1 ]; then
   build/bench --driver mesa-25.0.7 ci --quick --out "${SHADOWBENCH_GATE_OUT:-ci-out}/mesa-25.0.7"

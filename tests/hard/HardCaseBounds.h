@@ -43,9 +43,10 @@ inline void expectNoWorseThanNoShadow(const HardCase& c, const AccuracyResult& r
 /// Prints one line of what `r` measured for row `c` (`api` after the row's name, e.g. " (Vulkan)"; the
 /// stability measures only when Judged) and holds `r` to the row's bounds: more than 1/20 of the pixels
 /// judged, no NaN, Inf or out-of-range value, error with and without the edge band, false shadow, the
-/// negative controls' lower bound, the RMSE against no shadow's where the row asks (`frame`: the
-/// evaluator's last frame) and, when `stability` is Judged, camera gain, light gain and flicker.
-/// Every bound's failure carries the row's `why`. Non-fatal (EXPECT): a row reports every bound it breaks.
+/// negative controls' lower bound, the RMSE against no shadow's and against its own bound where the row asks
+/// (`frame`: the evaluator's last frame) and, when `stability` is Judged, camera gain, light gain and
+/// flicker. Every bound's failure carries the row's `why`. Non-fatal (EXPECT): a row reports every bound it
+/// breaks.
 inline void expectHardCaseBounds(const HardCase& c, const AccuracyResult& r, HardCaseStability stability,
                                  const char* api = "", const AccuracyEvaluator::Sample* frame = nullptr) {
     const bool judged = stability == HardCaseStability::Judged;
@@ -71,6 +72,10 @@ inline void expectHardCaseBounds(const HardCase& c, const AccuracyResult& r, Har
     EXPECT_GE(r.hard.wrongNoEdgePct, c.minWrongNoEdgePct) << c.why;
     EXPECT_LE(r.hard.falseShadowPct, c.maxFalseShadowPct) << c.why;
     if (c.maxRmseOverNone >= 0.0) expectNoWorseThanNoShadow(c, r, frame);
+    if (c.maxRmse >= 0.0) {
+        std::cout << c.name << ": RMSE " << r.soft.rmse << "\n";
+        EXPECT_LE(r.soft.rmse, c.maxRmse) << c.why;
+    }
 }
 
 } // namespace sb::test
