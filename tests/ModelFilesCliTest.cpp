@@ -4,6 +4,7 @@
 // object its own caster) runs with every technique, and the row still counts the instances asked for.
 // Hostile files (a truncated PLY, a scene nested 100000 deep or holding 1e400) are bad input too:
 // exit 2 and one line, where they crashed (exit 139) or left as an unknown exception (exit 1).
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "SecondDriver.h"
 #include "TestSupport.h"
 #include "bench/lib/output/CsvWriter.h"
 
@@ -29,16 +31,33 @@ std::string bench(const std::string& args) {
     return std::string(SB_BENCH_BINARY) + " " + args;
 }
 
-/// The technique names `bench --list` prints, one at the start of each technique's block.
-std::vector<std::string> listedTechniques() {
+/// The techniques `bench --list` prints, one at the start of each technique's block, in its order, and
+/// whether the block's `apis:` line says it has no GL form ("apis: vulkan (no GL form: ...)").
+std::vector<std::pair<std::string, bool>> listedBlocks() {
     const auto r = runCommand(bench("--list"));
-    std::vector<std::string> names;
+    std::vector<std::pair<std::string, bool>> blocks;
     std::istringstream lines(r.output);
     static const std::regex head("^([a-z_]+)  \\S");
     for (std::string line; std::getline(lines, line);) {
         std::smatch m;
-        if (std::regex_search(line, m, head)) names.push_back(m[1]);
+        if (std::regex_search(line, m, head))
+            blocks.emplace_back(m[1], false);
+        else if (!blocks.empty() && line.find("  apis:") == 0 && line.find("no GL form") != std::string::npos)
+            blocks.back().second = true;
     }
+    return blocks;
+}
+
+std::vector<std::string> listedTechniques() {
+    std::vector<std::string> names;
+    for (const auto& [name, withoutGl] : listedBlocks()) names.push_back(name);
+    return names;
+}
+
+std::vector<std::string> techniquesWithoutGlForm() {
+    std::vector<std::string> names;
+    for (const auto& [name, withoutGl] : listedBlocks())
+        if (withoutGl) names.push_back(name);
     return names;
 }
 
@@ -49,6 +68,13 @@ std::string errorLine(const std::string& output) {
     return output.substr(at, output.find('\n', at) - at);
 }
 
+/// The options that run `t` on a form it has: a technique without a GL form runs on Vulkan on the second
+/// driver, whose lavapipe offers what the only such technique (raytraced) needs (tests/SecondDriver.h).
+std::string formOf(const std::string& t, const std::vector<std::string>& withoutGl) {
+    if (std::find(withoutGl.begin(), withoutGl.end(), t) == withoutGl.end()) return "";
+    return std::string(" --api vulkan --driver ") + test::kSecondDriver;
+}
+
 } // namespace
 
 TEST(ModelFilesCli, ListNamesEveryTechnique) {
@@ -57,7 +83,8 @@ TEST(ModelFilesCli, ListNamesEveryTechnique) {
     EXPECT_EQ(listedTechniques(),
               (std::vector<std::string>{"none", "shadowmap", "cubemap", "paraboloid", "cascaded", "pcss",
                                         "vsm", "esm", "volume", "occluder", "proxy", "planar", "projective",
-                                        "blob", "hybrid", "reference", "synthetic"}));
+                                        "blob", "hybrid", "raytraced", "reference", "synthetic"}));
+    EXPECT_EQ(techniquesWithoutGlForm(), std::vector<std::string>{"raytraced"});
 }
 
 TEST(ModelFilesCli, InfiniteVertexIsRefusedByEveryTechniqueOnEveryPath) {
@@ -79,9 +106,12 @@ TEST(ModelFilesCli, InfiniteVertexIsRefusedByEveryTechniqueOnEveryPath) {
 TEST(ModelFilesCli, EveryTechniqueRunsAMultiObjectModel) {
     if (!std::filesystem::exists(kRoom)) GTEST_SKIP() << kRoom << " not installed (scripts/install-deps.sh)";
     const std::string csv = test::freshDir("model-files-cli") + "/rows.csv";
+    const std::vector<std::string> withoutGl = techniquesWithoutGlForm();
+    if (!withoutGl.empty()) REQUIRE_SECOND_DRIVER();
     const std::vector<std::string> techniques = listedTechniques();
     for (const std::string& t : techniques) {
-        auto r = runCommand(bench("-t " + t + " --instances 3 --model " + kRoom + " --csv " + csv + kQuick));
+        auto r = runCommand(bench("-t " + t + formOf(t, withoutGl) + " --instances 3 --model " + kRoom +
+                                  " --csv " + csv + kQuick));
         EXPECT_EQ(r.exitCode, 0) << t << ": " << r.output;
     }
     // One row per technique, each counting the 3 instances asked for (not 3 x 9 object instances).
