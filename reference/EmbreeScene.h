@@ -18,7 +18,8 @@ public:
     /// What rays can hit: the occluders (instances that cast a shadow; the shadow rays' scene) or
     /// everything (primary rays, which must see a ground that casts nothing).
     enum class Hits { Casters, All };
-    /// Builds the BVH (RTC_BUILD_QUALITY_HIGH; the build is untimed precompute). Throws sb::Error
+    /// Builds the BVH for robust traversal (RTC_SCENE_FLAG_ROBUST: no hit lost at large coordinates;
+    /// the why in the .cpp; the build is untimed precompute). Throws sb::Error
     /// naming the instance and the Embree error when a device or geometry cannot be created, or when
     /// the scene has a non-finite vertex ("scene 'x': instance 12 (mesh 'f35') has a non-finite vertex").
     /// Every instance keeps its geometry ID and normals either way; with Hits::Casters the others are

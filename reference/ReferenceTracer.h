@@ -12,9 +12,10 @@
 // light (n.L <= 0, L towards the light's centre) are 0 (no direct light), and so are spot-light samples
 // outside the outer cone (no light arrives there; Light::range, an attenuation, is not applied). Soft:
 // emitter samples below the receiver's horizon count as not seen (see reference/LightSampler.h for what
-// "fraction of the light" means). Rays start at p + n * originEpsilon(p) on the seen side, where the
-// epsilon grows with |p| (a fixed one fails at |p| ~ 1e5). Rays go out in packets of 16 (rtcOccluded16) over
-// image tiles, on a thread pool.
+// "fraction of the light" means). Rays start at p + n * originEpsilon(p, n) on the seen side, where the
+// epsilon follows the float spacing of each of p's coordinates (a fixed one fails at |p| ~ 1e5; one from
+// the largest coordinate alone lifts a ground at y = 0 far off its plane there). Rays go out in packets of 16
+// (rtcOccluded16) over image tiles, on a thread pool.
 #include <cstdint>
 #include <vector>
 
@@ -59,10 +60,13 @@ public:
     /// negated where the G-buffer saw a back face (GBuffer::seenNormal). The tracer's rays start on this
     /// side, and the accuracy judge's n.L mask uses it.
     glm::vec3 seenNormalAt(const GBuffer& gbuffer, size_t pixel) const;
-    /// Ray-origin offset for a point: grows with the largest coordinate magnitude (relative epsilon
-    /// on float precision) with an absolute floor for points near the origin:
-    /// max(1e-4, 2^-18 * max|p_i|), i.e. 32 float ulps of the largest coordinate (the why in the .cpp).
-    static float originEpsilon(const glm::vec3& p);
+    /// Ray-origin offset along the unit normal `n` of a sample at `p`: 32 float spacings of each
+    /// coordinate, weighted by how far an error in that coordinate moves p off its plane, with an
+    /// absolute floor for points near the origin: max(1e-4, 32 * sum_i |n_i| spacing(p_i)), where
+    /// spacing(x) is the gap from |x| to the next float (the why, with measured numbers, in the .cpp).
+    /// 1e-4 wherever every coordinate is below 16; independent of how far p lies along a coordinate n
+    /// does not point in (a ground at y = 0 gets 1e-4 at x = z = 1e5 too).
+    static float originEpsilon(const glm::vec3& p, const glm::vec3& n);
     /// The threads trace() runs for Options::threads = `requested`: `requested` when above 0, else the
     /// CPUs of the process's affinity mask (core/CpuAllocation.h), never the node's: a Slurm task or a
     /// `taskset` pins the process to its share, and more threads than that only take turns on it.
