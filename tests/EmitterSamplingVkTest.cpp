@@ -17,11 +17,10 @@
 
 #include <glm/glm.hpp>
 
+#include "VkComputeKernel.h"
 #include "VkTestSupport.h"
 #include "reference/LightSampler.h"
 #include "techniques/raytraced/LightEmitter.h"
-#include "vk/DescriptorSets.h"
-#include "vk/ShaderModuleCache.h"
 #include "vk/VulkanBuffer.h"
 
 namespace sb {
@@ -53,13 +52,8 @@ constexpr uint32_t kLocalSize = 64; ///< emitter_sampling.comp's local_size_x
 class EmitterKernel {
 public:
     EmitterKernel(VulkanContext& context, const Scene& scene)
-        : mContext(context), mCache(context, SB_SOURCE_DIR),
-          mSets(
-              context.device(),
-              {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
-                DescriptorSets::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
-                DescriptorSets::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)}},
-              "emitter test"),
+        : mContext(context), mKernel(context, "tests/shaders/vk/emitter_sampling.comp", defines(scene), 3,
+                                     sizeof(Push), "emitter test"),
           mLights(context, 8 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
         auto* lights = static_cast<glm::vec4*>(mLights.map());
         for (size_t i = 0; i < 4; ++i) {
@@ -67,35 +61,7 @@ public:
             lights[i] = glm::vec4(l.position, 0.0f);
             lights[4 + i] = glm::vec4(glm::normalize(l.direction), 0.0f);
         }
-        Defines defines;
-        addEmitterDefines(scene, defines);
-        const VkShaderModule module =
-            mCache.get("tests/shaders/vk/emitter_sampling.comp", defines, ShaderStage::Compute);
-        const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
-        const VkDescriptorSetLayout setLayout = mSets.layout(0);
-        VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-        layout.setLayoutCount = 1;
-        layout.pSetLayouts = &setLayout;
-        layout.pushConstantRangeCount = 1;
-        layout.pPushConstantRanges = &range;
-        VulkanContext::check(vkCreatePipelineLayout(context.device(), &layout, nullptr, &mLayout),
-                             "vkCreatePipelineLayout");
-        VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-        info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-        info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        info.stage.module = module;
-        info.stage.pName = "main";
-        info.layout = mLayout;
-        VulkanContext::check(
-            vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &mPipeline),
-            "vkCreateComputePipelines");
     }
-    ~EmitterKernel() {
-        vkDestroyPipeline(mContext.device(), mPipeline, nullptr);
-        vkDestroyPipelineLayout(mContext.device(), mLayout, nullptr);
-    }
-    EmitterKernel(const EmitterKernel&) = delete;
-    EmitterKernel& operator=(const EmitterKernel&) = delete;
 
     /// Mode 0: one sample per case at the case's u.
     std::vector<GpuResult> sample(const std::vector<GpuCase>& cases) { return run(cases, 0, 1, 0); }
@@ -105,37 +71,26 @@ public:
     }
 
 private:
+    static Defines defines(const Scene& scene) {
+        Defines d;
+        addEmitterDefines(scene, d);
+        return d;
+    }
     std::vector<GpuResult> run(const std::vector<GpuCase>& cases, uint32_t mode, int side, uint32_t frame) {
         const size_t results = cases.size() * (mode == 0 ? 1 : size_t(side * side));
         VulkanBuffer in(mContext, cases.size() * sizeof(GpuCase), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         VulkanBuffer out(mContext, results * sizeof(GpuResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         std::copy(cases.begin(), cases.end(), static_cast<GpuCase*>(in.map()));
-        mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, in.buffer(), in.size());
-        mSets.writeBuffer(0, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mLights.buffer(), mLights.size());
-        mSets.writeBuffer(0, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, out.buffer(), out.size());
         const Push push{mode, uint32_t(cases.size()), side, frame};
-        mContext.submitNow([&](VkCommandBuffer cmd) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline);
-            const VkDescriptorSet set = mSets.set(0);
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, 0, 1, &set, 0, nullptr);
-            vkCmdPushConstants(cmd, mLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-            vkCmdDispatch(cmd, (uint32_t(cases.size()) + kLocalSize - 1) / kLocalSize, 1, 1);
-            VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-            toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                                 &toHost, 0, nullptr, 0, nullptr);
-        });
+        mKernel.dispatch({&in, &mLights, &out}, &push,
+                         (uint32_t(cases.size()) + kLocalSize - 1) / kLocalSize);
         const auto* data = static_cast<const GpuResult*>(out.map());
         return std::vector<GpuResult>(data, data + results);
     }
 
     VulkanContext& mContext;
-    ShaderModuleCache mCache; ///< rooted at the source tree: the fixture includes shaders/raytraced/
-    DescriptorSets mSets;
+    test::ComputeKernel mKernel; ///< emitter_sampling.comp, from the source tree's root
     VulkanBuffer mLights;
-    VkPipelineLayout mLayout = VK_NULL_HANDLE;
-    VkPipeline mPipeline = VK_NULL_HANDLE;
 };
 
 Light areaLight(LightType type, LightShape shape, glm::vec3 position, glm::vec3 direction, glm::vec2 size,

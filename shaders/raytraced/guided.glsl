@@ -14,9 +14,11 @@ layout(std140, set = 2, binding = 0) uniform GuidedBlock {
     vec4 uGuideParams;
 };
 layout(set = 2, binding = 1) uniform sampler2DArray uGuideMaps; // nearest depths, read by texelFetch
-// Pixel-lights the map decided this frame (the `rays_decided` counter), zeroed by the frame before the pass.
+// Pixel-lights the map decided this frame (the `rays_decided` counter: 64 bits in two words,
+// raytraced/count64.glsl), zeroed by the frame before the pass.
 layout(std430, set = 2, binding = 2) buffer GuidedCount {
     uint uDecided;
+    uint uDecidedHigh;
 };
 
 const float kGuideUnsure = -1.0;

@@ -48,10 +48,12 @@ layout(location = 1) out vec4 oVisibility;
 layout(early_fragment_tests) in;
 
 layout(set = 1, binding = 0) uniform accelerationStructureEXT uScene;
-// Rays this frame (the `rays_traced` counter), zeroed by the frame before the pass; the frame's index and
-// the frames the history holds (RT_TEMPORAL), written by the frame before the pass.
+// Rays this frame (the `rays_traced` counter: 64 bits in two words, raytraced/count64.glsl), zeroed by the
+// frame before the pass; the frame's index and the frames the history holds (RT_TEMPORAL), written by the
+// frame before the pass.
 layout(std430, set = 1, binding = 1) buffer FrameState {
     uint uRayCount;
+    uint uRayCountHigh;
     uint uFrame;
     uint uHistoryFrames;
 };
@@ -59,6 +61,7 @@ layout(std430, set = 1, binding = 1) buffer FrameState {
 layout(set = 1, binding = 2, rgba32f) uniform image2DArray uHistory;
 #endif
 
+#include "raytraced/count64.glsl"
 #include "raytraced/rays.glsl"
 
 // Directional lights: as far as the scene can reach (finite, as the ray query's limits ask).
@@ -176,9 +179,9 @@ void main() {
             vis[i] = traceVisibility(i, vWorldPos, ng, towards, shadowApplies(i, vColorId), rays);
 #endif
     }
-    if (rays > 0u) atomicAdd(uRayCount, rays);
+    if (rays > 0u) COUNT64_ADD(uRayCount, uRayCountHigh, rays);
 #ifdef RT_MODE_GUIDED
-    if (gGuideDecided > 0u) atomicAdd(uDecided, gGuideDecided);
+    if (gGuideDecided > 0u) COUNT64_ADD(uDecided, uDecidedHigh, gGuideDecided);
 #endif
 #ifdef RT_TEMPORAL
     vis = accumulate(vis);

@@ -8,6 +8,7 @@
 #include "scenes/LightFit.h"
 #include "shading/ShaderLimits.h"
 #include "techniques/ShadowMapProperties.h"
+#include "techniques/raytraced/DeviceCount.h"
 #include "techniques/raytraced/GuidedRays.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 
@@ -56,8 +57,8 @@ void GuideMapsVulkan::compile(const VulkanCompileContext& ctx, const PropertySet
     mBlock = VulkanBuffer(ctx.context, block.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(mBlock.map(), 0, block.size);
     writeBlock();
-    mDecided = VulkanBuffer(ctx.context, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    std::memset(mDecided.map(), 0, sizeof(uint32_t));
+    mDecided = VulkanBuffer(ctx.context, kDeviceCountBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    zeroDeviceCount(mDecided.map());
 
     using D = DescriptorSets;
     mSets = DescriptorSets(
@@ -68,7 +69,7 @@ void GuideMapsVulkan::compile(const VulkanCompileContext& ctx, const PropertySet
         "raytraced guided");
     mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mBlock.buffer(), block.size);
     mSets.writeImage(0, 1, nearest, mDepth.maps().view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
-    mSets.writeBuffer(0, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mDecided.buffer(), sizeof(uint32_t));
+    mSets.writeBuffer(0, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mDecided.buffer(), kDeviceCountBytes);
 }
 
 void GuideMapsVulkan::writeBlock() const {
@@ -92,7 +93,7 @@ void GuideMapsVulkan::recordDepth(VulkanFrameContext& ctx) {
 
 void GuideMapsVulkan::resetCount() const {
     // The previous frame has finished (the harness waited for its fence) and this one has not started.
-    if (mDecided) *static_cast<uint32_t*>(mDecided.map()) = 0;
+    if (mDecided) zeroDeviceCount(mDecided.map());
 }
 
 void GuideMapsVulkan::bind(VkCommandBuffer cmd, VkPipelineLayout layout) const {
@@ -101,7 +102,7 @@ void GuideMapsVulkan::bind(VkCommandBuffer cmd, VkPipelineLayout layout) const {
 }
 
 uint64_t GuideMapsVulkan::decided() const {
-    return mDecided ? *static_cast<const uint32_t*>(mDecided.map()) : 0u;
+    return mDecided ? readDeviceCount(mDecided.map()) : 0u;
 }
 
 double GuideMapsVulkan::mapTexels() const {

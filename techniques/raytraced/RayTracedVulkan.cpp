@@ -9,6 +9,7 @@
 #include "scenes/Motion.h"
 #include "scenes/ShadowWork.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/raytraced/DeviceCount.h"
 #include "techniques/raytraced/GuidedRays.h"
 #include "techniques/raytraced/RayTraced.h"
 #include "techniques/vulkan/ScenePass.h"
@@ -17,8 +18,11 @@ namespace sb {
 
 namespace {
 
-/// lighting.frag's FrameState: the ray counter, the frame's index, the frames the history holds.
-constexpr VkDeviceSize kFrameStateBytes = 3 * sizeof(uint32_t);
+/// lighting.frag's FrameState: the ray counter (two words), the frame's index, the frames the history
+/// holds.
+constexpr VkDeviceSize kFrameStateBytes = kDeviceCountBytes + 2 * sizeof(uint32_t);
+/// Where FrameState's frame index lies, in uint32_t words (after the count).
+constexpr size_t kFrameWord = kDeviceCountBytes / sizeof(uint32_t);
 /// Where the count of accumulated frames stops: past 1 / kHistoryWeight frames the weight no longer
 /// depends on it.
 constexpr uint32_t kMaxHistoryFrames = 1u << 20;
@@ -121,8 +125,8 @@ void RayTracedVulkan::recordHistoryFrame(VulkanFrameContext& ctx) {
     if (viewProj != mHistoryViewProj) mHistoryFrames = 0; // another view: the history shows other surfaces
     mHistoryViewProj = viewProj;
     auto* state = static_cast<uint32_t*>(mFrameState.map());
-    state[1] = mFrame;
-    state[2] = mHistoryFrames;
+    state[kFrameWord] = mFrame;
+    state[kFrameWord + 1] = mHistoryFrames;
     // The last frame's fragments wrote the layer this one reads (and this one writes the other, which the
     // frame before last read): their writes before this frame's reads and writes.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -147,7 +151,7 @@ void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
     if (mGuided) recordGuide(ctx);
     // The previous frame has finished (the harness waited for its fence) and this one has not started:
     // the host zeroes the counter the fragments add to.
-    *static_cast<uint32_t*>(mFrameState.map()) = 0;
+    zeroDeviceCount(mFrameState.map());
     if (mTemporal) recordHistoryFrame(ctx);
     ctx.passes.begin("lighting");
     ctx.submitter.resetStats();
@@ -157,7 +161,7 @@ void RayTracedVulkan::execute(VulkanFrameContext& ctx) {
 
 Counters RayTracedVulkan::counters() const {
     // Read after the frame's fence (the harness reads counters after the frame it waited for).
-    const uint32_t rays = mFrameState ? *static_cast<const uint32_t*>(mFrameState.map()) : 0u;
+    const uint64_t rays = mFrameState ? readDeviceCount(mFrameState.map()) : 0u;
     Counters out = RayTraced::counters(mBuiltInFrame, mStructures ? mStructures->bytes() : 0, rays);
     if (mStructures) {
         const Counters times =
