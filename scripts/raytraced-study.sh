@@ -23,7 +23,8 @@
 #   motion    aircraft_day in motion (the top level rebuilt every frame, the `structures` pass) at
 #             growing instance counts, none and raytraced side by side    motion.csv, motion_<n>.txt
 # Then tables.md (the README's tables) and figures (*.png) from /usr/bin/python3 tools/raytraced_summary.py.
-# machine.txt records the machine, the driver and the load (uptime) before and after every section.
+# machine.txt records the machine, the driver and the load (uptime) before and after every section (a run
+# of some sections appends its block to the earlier run's).
 set -euo pipefail
 
 usage() {
@@ -143,7 +144,13 @@ mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 echo "raytraced-study: writing into $out" >&2
 machine="$out/machine.txt"
+# A run of every section starts machine.txt afresh; a run of some appends its own block, so that the load
+# of the sections it leaves as they were stays recorded beside their CSVs.
+every=1
+for s in ${all_sections//,/ }; do wanted "$s" || every=0; done
+if [ "$every" -eq 1 ] || [ ! -s "$machine" ]; then : >"$machine"; else echo >>"$machine"; fi
 {
+    echo "sections: $sections_arg"
     echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
     echo "commit: $(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)"
     echo "cpu: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1) x $(nproc)"
@@ -151,7 +158,7 @@ machine="$out/machine.txt"
     echo "driver: $driver; raytraced modes: {${modes// /, }}"
     for s in "${skipped[@]}"; do echo "skipped: $s"; done
     echo "options: rounds $rounds, accuracy size $size, quick $quick"
-} >"$machine"
+} >>"$machine"
 load() { echo "$1: $(uptime | sed 's/.*load average/load average/')" >>"$machine"; }
 
 step=0

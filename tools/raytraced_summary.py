@@ -8,7 +8,9 @@ prints Markdown (the script keeps it as tables.md) and writes accuracy.png, soft
 rays.png beside the CSVs. Times are ratios within a round of one process (bench --repeat: the rows of
 round k share `repeat` = k), summarised as the median over the rounds with [min, max]; the few absolute
 times shown (build times, the ray fit's slope) are labelled as this machine's under its load.
-- accuracy_<scene>.csv, soft_<scene>.csv: bench accuracy rows (acc_* columns), every technique per round.
+- accuracy_<scene>.csv, soft_<scene>.csv: bench accuracy rows (acc_* columns), every technique per round;
+  where raytraced's modes hard and guided are both there, a line of what guided saves against hard
+  (unsure share, rays traced, time, and whether its error is hard's).
 - build.csv: one raytraced row per process, configurations (instances, tess_factor) in turn.
 - rays.csv: none and raytraced:mode=hard per round, per (instances, tess_factor, size).
 - order.csv: the same on generated grids of spheres (scenes/order_<side>_<sorted|shuffled>.json), two
@@ -24,7 +26,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.ticker import FormatStrFormatter, NullFormatter  # noqa: E402
+from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
@@ -110,8 +112,8 @@ def accuracy_tables(folder, kind):
               f"{first.width}x{first.height}, light {first.lights}, reference {first.acc_reference}, "
               f"{rows['round'].max()} rounds)\n")
         print(f"| technique | judged | wrong % | off edge % | RMSE | NaN/Inf/OOR | time vs {baseline} | "
-              f"time vs {RT_HARD} | rays traced |")
-        print("|---|---:|---:|---:|---:|---|---:|---:|---:|")
+              f"time vs {RT_HARD} | rays traced | unsure % |")
+        print("|---|---:|---:|---:|---:|---|---:|---:|---:|---:|")
         scene_summary = []
         for lab, group in rows.groupby("label", sort=False):
             r = group.iloc[0]
@@ -122,15 +124,48 @@ def accuracy_tables(folder, kind):
             rays = group.get("counter_rays_traced")
             rays_cell = f"{int(rays.iloc[0]):,}" if rays is not None and pd.notna(rays.iloc[0]) else ""
             rt_cell = spread(vs_rt[lab]) if lab in vs_rt else ""
+            unsure = group.get("counter_unsure_pct")
+            unsure_cell = f"{unsure.iloc[0]:.3g}" if unsure is not None and pd.notna(unsure.iloc[0]) else ""
             print(f"| {lab} | {int(r.acc_evaluated):,} | {pct(r.acc_wrong_pct)} | "
                   f"{pct(r.acc_wrong_no_edge_pct)} | {r.acc_rmse:.4f} | {int(r.acc_nan)}/{int(r.acc_inf)}/"
-                  f"{int(r.acc_out_of_range)} | {spread(vs_base[lab])} | {rt_cell} | {rays_cell} |")
+                  f"{int(r.acc_out_of_range)} | {spread(vs_base[lab])} | {rt_cell} | {rays_cell} | "
+                  f"{unsure_cell} |")
             scene_summary.append({"label": lab, "wrong": r.acc_wrong_pct, "rmse": r.acc_rmse, "bad": bad,
                                   "vs_rt": np.median(vs_rt[lab]) if lab in vs_rt else np.nan,
                                   "vs_base": np.median(vs_base[lab])})
         print()
+        guided_line(rows, vs_rt)
         summary[scene] = scene_summary
     return summary
+
+
+def guided_line(rows, vs_rt):
+    """What mode=guided saves against mode=hard on this scene: its unsure share, its rays over hard's and
+    its time over hard's, and whether its error equals hard's (the time ratio is "at equal error" only
+    then)."""
+    guided, hard = rows[rows.label == "raytraced guided"], rows[rows.label == RT_HARD]
+    if guided.empty or hard.empty or "counter_unsure_pct" not in rows:
+        return
+    g, h = guided.iloc[0], hard.iloc[0]
+    same = g.acc_wrong_pct == h.acc_wrong_pct and g.acc_rmse == h.acc_rmse
+    error = "the same error as hard" if same else \
+        f"error {pct(g.acc_wrong_pct)}% wrong, RMSE {g.acc_rmse:.4f} against hard's " \
+        f"{pct(h.acc_wrong_pct)}%, {h.acc_rmse:.4f}"
+    print(f"guided against hard: unsure {g.counter_unsure_pct:.3g}%, rays traced "
+          f"{int(g.counter_rays_traced):,} of {int(h.counter_rays_traced):,} "
+          f"({g.counter_rays_traced / h.counter_rays_traced:.3f}x), time "
+          f"{spread(vs_rt['raytraced guided'])}x hard's, {error}.\n")
+
+
+# The figures' markers: the other techniques in blue squares, raytraced's modes in colours of their own.
+MODE_STYLE = {"hard": ("o", "C3"), "soft": ("^", "C1"), "guided": ("D", "C2")}
+
+
+def short(lab):
+    """A figure's label: rt hard, s1 ... s64 for mode=soft's rays, guided."""
+    if lab.startswith("raytraced soft rays="):
+        return "s" + lab.rsplit("=", 1)[1]
+    return lab.replace("raytraced ", "rt " if lab == RT_HARD else "")
 
 
 def accuracy_figure(summary, metric, path, ylabel):
@@ -142,18 +177,23 @@ def accuracy_figure(summary, metric, path, ylabel):
         pts = [p for p in summary[scene] if np.isfinite(p["vs_rt"])]
         for p in pts:
             y = max(p[metric], ZERO_FLOOR) if metric == "wrong" else p[metric]
-            marker = "o" if p["label"].startswith("raytraced") else "s"
-            ax.plot(p["vs_rt"], y, marker, color="C3" if marker == "o" else "C0")
-            ax.annotate(p["label"].replace("raytraced ", "rt "), (p["vs_rt"], y), fontsize=7,
-                        xytext=(3, 3), textcoords="offset points")
+            mode = p["label"].split(" ")[1] if p["label"].startswith("raytraced ") else ""
+            marker, colour = MODE_STYLE.get(mode, ("s", "C0"))
+            ax.plot(p["vs_rt"], y, marker, color=colour, alpha=0.8)
+            ax.annotate(short(p["label"]), (p["vs_rt"], y), fontsize=6, xytext=(2, 3),
+                        textcoords="offset points", rotation=45 if mode == "soft" else 0)
         ax.set_xscale("log")
-        ax.set_xticks([0.1, 0.15, 0.2, 0.3, 0.5, 0.7, 1, 1.5, 2, 3, 5, 7, 10])
+        ax.set_xticks([0.1, 0.2, 0.3, 0.5, 0.7, 1, 1.5, 2, 3, 5, 7, 10, 20, 30, 50, 100])
         ax.xaxis.set_major_formatter(FormatStrFormatter("%g"))
         ax.xaxis.set_minor_formatter(NullFormatter())
         xs = [p["vs_rt"] for p in pts]
         ax.set_xlim(min(xs) / 1.3, max(xs) * 1.6)
+        ax.set_yscale("log")  # RMSE too: stratified rays' error falls as a power of their count
+        if metric != "wrong":  # a decade or two of RMSE: label 1, 2 and 5 of each
+            ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+            ax.yaxis.set_minor_formatter(NullFormatter())
+        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
         if metric == "wrong":
-            ax.set_yscale("log")
             ax.axhline(ZERO_FLOOR, color="grey", lw=0.5, ls=":")
         ax.set_title(scene, fontsize=9)
         ax.set_xlabel(f"frame time / {RT_HARD} (same round, median)", fontsize=7)
