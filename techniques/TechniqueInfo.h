@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scenes/Scene.h"
+#include "techniques/MatrixVariant.h"
 #include "techniques/Property.h"
 #include "techniques/ResourceEstimate.h"
 
@@ -55,6 +56,9 @@ struct TechniqueInfo {
     /// the run refuses a configuration over --max-memory-gib. Empty: nothing that grows with its
     /// properties or the frame (its buffers are the scene's size, which the scene's estimate counts).
     ResourceDeclaration resources;
+    /// Forms at other properties that the golden matrix judges in cells of their own, each with its
+    /// accuracy rule (techniques/MatrixVariant.h); empty for most: the default form's cells are its only.
+    std::vector<MatrixVariant> matrixVariants;
 
     /// The capabilities of `api`'s form.
     std::vector<Capability> capabilitiesOf(Api api) const;

@@ -173,4 +173,53 @@ TEST(GoldenFilesCli, AForgedHugeHeaderIsRefusedBeforeItsPixelsAreAllocated) {
     fs::remove_all(fs::path(dir).parent_path());
 }
 
+// A technique's variant (bench/golden/MatrixVariants.h) is chosen by its spec and refused by a driver as
+// its technique is. The system driver has no ray queries: raytraced:mode=soft's two Vulkan cells are said
+// not run (its GL cells have no form), a check passes, and an update there keeps the variant's goldens,
+// bounds and row of MATRIX.md as they were (they are written on mesa-25.0.7). A spec that is not one of
+// the technique's variants is bad input naming the forms it has.
+TEST(GoldenFilesCli, AVariantIsChosenByItsSpecAndKeptWhereItsDriverCannotRunIt) {
+    const std::string dir = goldenCopy(test::freshTestDir("goldenvariant") + "/goldens");
+    const fs::path from = fs::path(SB_SOURCE_DIR) / "results" / "goldens";
+    for (const char* name : {"sphere_plane/raytraced.mode=soft.visibility.png",
+                             "sphere_plane/raytraced.mode=soft.colour.png", "MATRIX.md"})
+        fs::copy_file(from / name, fs::path(dir) / name);
+    const std::string bounds = test::readFile(dir + "/bounds.json"),
+                      page = test::readFile(dir + "/MATRIX.md");
+    const std::string golden = test::readFile(dir + "/sphere_plane/raytraced.mode=soft.visibility.png");
+    ASSERT_NE(bounds.find("\"raytraced.mode=soft/sphere_plane/light0\""), std::string::npos);
+    ASSERT_NE(page.find("| raytraced.mode=soft | sphere_plane | no GL form"), std::string::npos);
+    const std::string cells = " --dir " + dir + " --scene sphere_plane --technique raytraced:mode=soft";
+
+    const auto check = test::runCommand(std::string(SB_BENCH_BINARY) + " golden --check" + cells);
+    EXPECT_EQ(check.exitCode, 0) << check.output;
+    for (const char* mode : {"retained", "instanced"}) {
+        const std::string notRun = std::string("raytraced:mode=soft/sphere_plane/") + mode +
+                                   "/vulkan: not run: not on the driver system: raytraced needs";
+        EXPECT_EQ(linesWith(check.output, notRun).size(), 1u) << check.output;
+    }
+    EXPECT_EQ(linesWith(check.output, "0 cells checked, 0 failed, 4 unsupported").size(), 1u) << check.output;
+    EXPECT_EQ(linesWith(check.output, "2 not run on this driver").size(), 1u) << check.output;
+
+    const auto update = test::runCommand(std::string(SB_BENCH_BINARY) + " golden --update" + cells);
+    EXPECT_EQ(update.exitCode, 0) << update.output;
+    EXPECT_EQ(linesWith(update.output, "(1 rows of cells this driver cannot run kept as they were)").size(),
+              1u)
+        << update.output;
+    EXPECT_EQ(test::readFile(dir + "/sphere_plane/raytraced.mode=soft.visibility.png"), golden);
+    EXPECT_EQ(test::readFile(dir + "/bounds.json"), bounds);
+    EXPECT_EQ(test::readFile(dir + "/MATRIX.md"), page);
+
+    const auto hard = test::runCommand(std::string(SB_BENCH_BINARY) + " golden --check --dir " + dir +
+                                       " --technique raytraced:mode=hard");
+    EXPECT_EQ(hard.exitCode, 2) << hard.output;
+    EXPECT_EQ(linesWith(hard.output, "bench: error: --technique raytraced:mode=hard: not a form the matrix "
+                                     "renders; raytraced's are raytraced, raytraced:mode=soft, "
+                                     "raytraced:mode=guided")
+                  .size(),
+              1u)
+        << hard.output;
+    fs::remove_all(fs::path(dir).parent_path());
+}
+
 } // namespace

@@ -18,6 +18,7 @@
 #include "bench/golden/GoldenImage.h"
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
+#include "bench/golden/MatrixVariants.h"
 #include "core/DriverTable.h"
 #include "registry/TechniqueRegistry.h"
 
@@ -34,9 +35,11 @@ class Matrix : public ::testing::TestWithParam<std::string> {};
 TEST_P(Matrix, EveryCellMatchesRetainedGoldenAndBound) {
     const std::string scene = GetParam();
     const std::vector<MatrixCell> cells = GoldenMatrix::renderScene(scene, MatrixOptions{});
-    // Every technique in every mode is a cell, and so is -t auto: none may be dropped on the way. The
-    // Vulkan axis adds each of them in Vulkan's two modes (retained, instanced), supported or not.
-    const size_t techniques = TechniqueRegistry::names().size() + 1;
+    // Every technique in every mode is a cell, and so is every variant a technique declares
+    // (bench/golden/MatrixVariants.h) and -t auto: none may be dropped on the way. The Vulkan axis adds
+    // each of them in Vulkan's two modes (retained, instanced), supported or not.
+    const size_t techniques = MatrixVariants::all().size() + 1;
+    EXPECT_GT(MatrixVariants::all().size(), TechniqueRegistry::names().size()); // raytraced's two
     ASSERT_EQ(cells.size(), techniques * (std::size(kAllSubmitModes) + 2));
     EXPECT_EQ(
         size_t(std::count_if(cells.begin(), cells.end(), [](const MatrixCell& c) { return c.vulkan(); })),

@@ -1,9 +1,11 @@
 #include "bench/golden/AccuracyBounds.h"
 
 #include <algorithm>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
+#include "bench/golden/MatrixVariants.h"
 #include "core/Error.h"
 #include "core/JsonReader.h"
 #include "core/Paths.h"
@@ -12,7 +14,7 @@ namespace sb {
 
 namespace {
 
-enum class Rule { Exact, Map, NoShadow, Approximate, SoftApproximate, NotJudged };
+using Rule = AccuracyRule; // techniques/MatrixVariant.h: a variant declares its own
 
 struct TechniqueRule {
     const char* technique;
@@ -95,26 +97,8 @@ Rule ruleOf(const std::string& technique) {
     return Rule::Approximate;
 }
 
-const char* ruleName(Rule r) {
-    switch (r) {
-    case Rule::Exact:
-        return "exact";
-    case Rule::Map:
-        return "map";
-    case Rule::NoShadow:
-        return "no_shadow";
-    case Rule::Approximate:
-        return "approximate";
-    case Rule::SoftApproximate:
-        return "soft_approximate";
-    case Rule::NotJudged:
-        return "not_judged";
-    }
-    return "?";
-}
-
 AccuracyBound softBound(const std::string& name, Rule rule, const CellAccuracy& a) {
-    AccuracyBound b{name, "rmse", a.noShadowRmse, 0.0, ruleName(rule), ""};
+    AccuracyBound b{name, "rmse", a.noShadowRmse, 0.0, accuracyRuleName(rule), ""};
     if (rule == Rule::NoShadow) {
         b.min = a.noShadowRmse - 1e-6;
         b.max = a.noShadowRmse + 1e-6;
@@ -139,7 +123,7 @@ AccuracyBound softBound(const std::string& name, Rule rule, const CellAccuracy& 
 }
 
 AccuracyBound hardBound(const std::string& name, Rule rule, const CellAccuracy& a) {
-    AccuracyBound b{name, "wrong_pct", a.noShadowPct, 0.0, ruleName(rule), ""};
+    AccuracyBound b{name, "wrong_pct", a.noShadowPct, 0.0, accuracyRuleName(rule), ""};
     switch (rule) {
     case Rule::Exact:
         b.metric = "wrong_no_edge_pct";
@@ -188,15 +172,23 @@ double AccuracyBound::measured(const CellAccuracy& a) const {
 }
 
 AccuracyBound AccuracyBounds::derive(const MatrixCell& cell, size_t light) {
-    // An `auto` cell is held to the bound of the technique it chose.
-    const std::string name = cell.judgedAs() + "/" + cell.scene + "/light" + std::to_string(light);
-    const Rule rule = ruleOf(cell.judgedAs());
+    // An `auto` cell is held to the bound of the technique it chose; a variant to the rule it declares.
+    const std::string judged = cell.judgedAs();
+    const std::string name =
+        MatrixVariants::key(judged) + "/" + cell.scene + "/light" + std::to_string(light);
+    const std::optional<MatrixVariant> variant = MatrixVariants::variantOf(judged);
+    const Rule rule = variant ? variant->rule : ruleOf(judged);
     if (rule == Rule::NotJudged)
-        return {
-            name, "", 0.0, 0.0, ruleName(rule), "not a shadow technique: its image is checked, not judged"};
+        return {name,
+                "",
+                0.0,
+                0.0,
+                accuracyRuleName(rule),
+                "not a shadow technique: its image is checked, not judged"};
     const CellAccuracy& a = cell.lights.at(light);
     AccuracyBound b = a.softReference || rule == Rule::SoftApproximate ? softBound(name, rule, a)
                                                                        : hardBound(name, rule, a);
+    if (variant) b.why += "; " + variant->properties + ": " + variant->why;
     for (const Exception& e : kExceptions)
         if (name == e.cell) b = blackOutBound(b, a, e.why);
     return b;

@@ -18,6 +18,9 @@
 // Under an area light (soft reference) the hard-shadow techniques are all approximations: the metric is
 // the RMSE, bounded by the RMSE of no shadow. A cell whose technique is known not to reach its rule's
 // bound carries an exception with the reason (kExceptions in AccuracyBounds.cpp), shown in the matrix.
+// A technique's matrix variant (raytraced:mode=soft, raytraced:mode=guided: techniques/MatrixVariant.h)
+// is held to the rule it declares, and its reason closes the bound's; its bounds are keyed by
+// MatrixVariants::key ("raytraced.mode=soft/<scene>/light<i>").
 #include <map>
 #include <string>
 #include <vector>
@@ -27,7 +30,7 @@
 namespace sb {
 
 struct AccuracyBound {
-    std::string cell;   ///< "technique/scene/light<i>"
+    std::string cell;   ///< "technique/scene/light<i>", the technique as MatrixVariants::key writes it
     std::string metric; ///< "wrong_pct", "wrong_no_edge_pct", "rmse", "" (not judged)
     double max = 0.0;
     double min = 0.0; ///< the no_shadow rule pins both ends
@@ -48,7 +51,8 @@ public:
     /// results/goldens/bounds.json as written by `bench golden --update`: every bound with its rule,
     /// reason and the value measured when it was written, for review.
     static std::string toJson(const std::vector<AccuracyBound>& bounds, const std::vector<double>& measured);
-    /// Reads bounds.json, keyed by cell "technique/scene/light<i>" (throws sb::Error naming the file).
+    /// Reads bounds.json, keyed by cell "technique/scene/light<i>" (MatrixVariants::key's technique;
+    /// throws sb::Error naming the file).
     static std::map<std::string, AccuracyBound> read(const std::string& path);
 };
 

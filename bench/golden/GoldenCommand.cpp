@@ -13,6 +13,7 @@
 #include "bench/golden/MatrixCheck.h"
 #include "bench/golden/MatrixPage.h"
 #include "bench/golden/MatrixProgress.h"
+#include "bench/golden/MatrixVariants.h"
 #include "bench/lib/images/AccuracyImages.h"
 #include "bench/lib/options/CliParse.h"
 #include "bench/lib/options/DriverOption.h"
@@ -23,7 +24,6 @@
 #include "core/Paths.h"
 #include "core/Strings.h"
 #include "core/Suggestion.h"
-#include "registry/TechniqueRegistry.h"
 
 namespace sb {
 
@@ -179,7 +179,7 @@ std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vecto
     const MatrixCell& golden = goldenCell(cells, glRetained);
     if (golden.refusal == MatrixCell::Refusal::Driver) return "";
     std::ostringstream row;
-    row << "| " << golden.technique << " | " << golden.scene << " | ";
+    row << "| " << MatrixVariants::key(golden.technique) << " | " << golden.scene << " | ";
     if (golden.autoPick)
         row << "chose " << golden.autoPick->spec.substr(0, golden.autoPick->spec.find(':')) << ", ";
     if (!golden.unsupported.empty()) {
@@ -209,7 +209,7 @@ std::string matrixRow(const std::vector<CellVerdict>& verdicts, const std::vecto
 
 /// The row of a technique whose golden cell this driver cannot run and that the page has no row of yet.
 std::string notRunRow(const MatrixCell& golden) {
-    return "| " + golden.technique + " | " + golden.scene + " | not run on the driver " +
+    return "| " + MatrixVariants::key(golden.technique) + " | " + golden.scene + " | not run on the driver " +
            DriverTable::current() + " (" + golden.unsupported + "): bench golden --update --technique " +
            golden.technique + " on a driver that has it writes this row | - |";
 }
@@ -266,9 +266,11 @@ std::vector<std::string> exceptionLines(const MatrixCell& golden) {
     return out;
 }
 
-/// The techniques of the page's rows, in the matrix's order: the registry's, then `auto`.
+/// The keys of the page's rows, in the matrix's order: the registry's techniques, each followed by its
+/// variants, then `auto`.
 std::vector<std::string> pageTechniques() {
-    std::vector<std::string> out = TechniqueRegistry::names();
+    std::vector<std::string> out;
+    for (const std::string& form : MatrixVariants::all()) out.push_back(MatrixVariants::key(form));
     out.push_back(AutoResolver::kName);
     return out;
 }
@@ -302,14 +304,15 @@ int runUpdate(const GoldenCli& cli, const std::vector<std::string>& scenes) {
             }
             if (cells[i].mode != SubmitMode::Retained || cells[i].vulkan()) continue; // one row a technique
             const MatrixCell& golden = goldenCell(cells, cells[i]);
+            const std::string key = MatrixVariants::key(golden.technique);
             const std::string row = matrixRow(verdicts, cells, cells[i]);
             if (!row.empty()) {
-                page.set(golden.technique, golden.scene, row, exceptionLines(golden));
+                page.set(key, golden.scene, row, exceptionLines(golden));
                 written += golden.ran();
-            } else if (page.has(golden.technique, golden.scene)) {
+            } else if (page.has(key, golden.scene)) {
                 ++kept;
             } else {
-                page.set(golden.technique, golden.scene, notRunRow(golden), {});
+                page.set(key, golden.scene, notRunRow(golden), {});
             }
         }
     }
@@ -332,19 +335,30 @@ int GoldenCommand::main(int argc, char** argv) {
   bench golden --check                         every cell (about 30 s of CPU per scene)
   bench golden --check --scene teapot --verbose
   bench golden --update --technique projective  rewrite one technique's goldens, print what changed
+  bench --driver mesa-25.0.7 golden --update --technique raytraced:mode=guided
+                                               one variant's goldens, on the driver that runs it
 
 Each cell: every submission mode's image must equal retained's, the retained image the golden
 (results/goldens/<scene>/<technique>.{visibility,colour}.png), and the accuracy against the Embree
 reference its bound in results/goldens/bounds.json. Exit 1 when a cell fails. An image that no
 longer matches its golden gets pictures of where it differs in --diff-dir, their paths printed
-under the cell (bench/golden/GoldenDiff.h).)");
+under the cell (bench/golden/GoldenDiff.h).
+
+A technique may declare variants (bench --list: its "matrix:" line), forms at other properties
+with cells of their own, named by their spec (raytraced:mode=soft) and keyed by it with ':' as
+'.' (raytraced.mode=soft.visibility.png, bounds "raytraced.mode=soft/<scene>/light0", its own
+row of MATRIX.md). --technique NAME selects a technique with its variants, --technique SPEC one
+variant. An update of some scenes or techniques keeps every other golden, bound and row.)");
     GoldenCli cli;
     std::vector<std::string> scenes, techniques;
     auto* check = app.add_flag("--check", cli.check, "judge every cell (the default)");
     app.add_flag("--update", cli.update, "rewrite goldens and bounds from this build's images")
         ->excludes(check);
     app.add_option("--scene", scenes, "comma-separated built-in scenes (default: all)")->delimiter(',');
-    app.add_option("--technique", techniques, "comma-separated techniques (default: all)")->delimiter(',');
+    app.add_option("--technique", techniques,
+                   "comma-separated techniques, each with the variants it declares (--list: matrix), or "
+                   "one variant by its spec, e.g. raytraced:mode=soft (default: all)")
+        ->delimiter(',');
     app.add_option("--size", cli.matrix.size, "frame size (default 128, the size of the committed goldens)")
         ->check(CLI::Range(16, 1024));
     app.add_option("--dir", cli.dir, "golden folder (default: the source tree's results/goldens)");
@@ -365,10 +379,7 @@ under the cell (bench/golden/GoldenDiff.h).)");
         if (std::find(known.begin(), known.end(), s) == known.end())
             throw Error("--scene " + s + ": not a built-in scene" + Suggestion::didYouMean(s, known) +
                         " (known: " + join(known, ", ") + ")");
-    cli.matrix.techniques = techniques;
-    for (const std::string& t : cli.matrix.techniques)
-        if (t != AutoResolver::kName)
-            TechniqueRegistry::describe(TechniqueSpec{t, {}}); // names it if unknown
+    cli.matrix.techniques = MatrixVariants::select(techniques); // names what is unknown
     if (cli.dir.empty()) cli.dir = defaultGoldenDir();
     std::error_code ec; // --check reads the goldens; --update may write a new folder
     if (!cli.update && !std::filesystem::is_directory(cli.dir, ec))

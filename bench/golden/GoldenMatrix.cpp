@@ -8,6 +8,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "bench/golden/MatrixVariants.h"
 #include "bench/golden/StderrCapture.h"
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/harness/VulkanHarness.h"
@@ -35,11 +36,16 @@ std::string cellName(const std::string& technique, const std::string& scene, Sub
     return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan ? "/vulkan" : "");
 }
 
+/// Whether the technique of `technique` (a cell's: a name or a variant's spec) has a form on `api`.
+bool hasForm(const std::string& technique, Api api) {
+    return TechniqueRegistry::has(MatrixVariants::nameOf(technique), api);
+}
+
 /// Why `technique` has no form on `api`, in the registry's words (its refusal names the APIs that have
 /// one, or a reason of the technique's own).
 std::string noFormReason(const std::string& technique, Api api) {
     try {
-        TechniqueRegistry::create(TechniqueSpec{technique, {}}, api);
+        TechniqueRegistry::create(TechniqueSpec::parse(technique), api);
     } catch (const Error& e) {
         return e.what();
     } catch (const std::exception&) { // a registry row without the form and without words for it
@@ -68,9 +74,8 @@ bool refusedByDriver(MatrixCell& cell, const std::string& refused, const MatrixO
 
 /// Whether any of `techniques` has a GL form (`auto` resolves among them on GL).
 bool anyGlForm(const std::vector<std::string>& techniques) {
-    return std::any_of(techniques.begin(), techniques.end(), [](const std::string& t) {
-        return t == AutoResolver::kName || TechniqueRegistry::has(t, Api::GL);
-    });
+    return std::any_of(techniques.begin(), techniques.end(),
+                       [](const std::string& t) { return t == AutoResolver::kName || hasForm(t, Api::GL); });
 }
 
 /// Renders one cell with its stderr captured, telling the observer before and after.
@@ -91,7 +96,7 @@ void addCell(std::vector<MatrixCell>& cells, const std::string& name, const Matr
 std::vector<std::string> techniquesOf(const MatrixOptions& options) {
     std::vector<std::string> techniques = options.techniques;
     if (techniques.empty()) {
-        techniques = TechniqueRegistry::names();
+        techniques = MatrixVariants::all();
         techniques.push_back(AutoResolver::kName);
     }
     return techniques;
@@ -277,7 +282,7 @@ MatrixCell renderVulkanCell(VulkanHarness& vulkan, AccuracyEvaluator& evaluator,
     cell.mode = vulkan.config().submit;
     cell.api = "vulkan";
     std::unique_ptr<VulkanTechnique> t =
-        TechniqueRegistry::createVulkan(spec ? *spec : TechniqueSpec{technique, {}});
+        TechniqueRegistry::createVulkan(spec ? *spec : TechniqueSpec::parse(technique));
     const size_t errorsBefore = vulkan.context().validationErrors();
     if (refusedByDriver(cell, driverRefusal(t->checkCapabilities(vulkan.context())), options)) return cell;
     vulkan.seekPath(0); // a scene in motion starts each cell at rest
@@ -339,7 +344,7 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
                       const std::string& technique, const std::string& scene, SubmitMode mode,
                       const MatrixOptions& options, std::optional<AutoPick>& autoPick,
                       std::string& autoRefusal) {
-    if (technique != AutoResolver::kName && !TechniqueRegistry::hasVulkan(technique))
+    if (technique != AutoResolver::kName && !hasForm(technique, Api::Vulkan))
         return unsupportedCell(technique, scene, mode, "vulkan", noFormReason(technique, Api::Vulkan),
                                MatrixCell::Refusal::NoForm);
     if (!vulkan) { // no Vulkan device on this driver at all
@@ -454,7 +459,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
             glForms ? std::make_unique<AccuracyEvaluator>(*harnessOwner) : nullptr;
         for (const std::string& technique : techniques)
             addCell(cells, cellName(technique, scene, mode, false), observer, [&] {
-                if (technique != AutoResolver::kName && !TechniqueRegistry::has(technique, Api::GL))
+                if (technique != AutoResolver::kName && !hasForm(technique, Api::GL))
                     return unsupportedCell(technique, scene, mode, "gl", noFormReason(technique, Api::GL),
                                            MatrixCell::Refusal::NoForm);
                 Harness& harness = *harnessOwner;
@@ -462,7 +467,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
                 try {
                     if (technique == AutoResolver::kName)
                         return renderAutoCell(harness, evaluator, pick, refusal, scene, options);
-                    return renderCell(harness, evaluator, technique, TechniqueSpec{technique, {}}, scene,
+                    return renderCell(harness, evaluator, technique, TechniqueSpec::parse(technique), scene,
                                       options);
                 } catch (const std::exception& e) {
                     MatrixCell failed;

@@ -1,8 +1,9 @@
 #pragma once
 // The technique x submission x scene matrix (docs/ARCHITECTURE.md, "Results"): every technique of the
-// registry, in every submission mode, on every built-in scene, rendered small. A scene in motion
-// (aircraft_day) is rendered at frame 5 of an 8-frame path, reached frame by frame. Each cell yields the
-// images that are compared with the retained mode and with the committed golden, and its accuracy
+// registry, and every variant a technique declares (a form at other properties with cells of its own:
+// bench/golden/MatrixVariants.h), in every submission mode, on every built-in scene, rendered small. A scene
+// in motion (aircraft_day) is rendered at frame 5 of an 8-frame path, reached frame by frame. Each cell
+// yields the images that are compared with the retained mode and with the committed golden, and its accuracy
 // against the Embree reference per light. A cell a technique cannot handle is kept with the reason the
 // technique gave (sb::Error with ExitCode::Unsupported from prepare), never dropped silently, and with
 // the kind of refusal (MatrixCell::Refusal): the technique refuses the scene, has no form on the cell's
@@ -47,9 +48,11 @@ struct MatrixCell {
         NoForm, ///< the technique has no form on this cell's API: its golden is its other API's cell
         Driver, ///< the driver lacks a capability the form needs: checked on a driver that has it
     };
+    /// The technique's name, a variant's spec ("raytraced:mode=soft"), or `auto`.
     std::string technique, scene;
     std::optional<AutoPick> autoPick; ///< the `auto` cell: its choice
-    /// The technique whose golden and bound hold the cell: the chosen one for `auto`.
+    /// The form whose golden and bound hold the cell (its technique field; the chosen technique for
+    /// `auto`): MatrixVariants::key of it names the files.
     std::string judgedAs() const;
     SubmitMode mode = SubmitMode::Retained;
     /// "gl", or "vulkan": the API axis. A Vulkan cell is held to the same golden and bound as the GL
@@ -81,10 +84,13 @@ struct MatrixObserver {
 };
 
 struct MatrixOptions {
-    int size = 128;                      ///< square frame size (the committed goldens are 128^2)
-    std::vector<std::string> scenes;     ///< empty: every built-in scene
-    std::vector<std::string> techniques; ///< empty: every registered technique, then `auto`
-    int referenceSamples = 64;           ///< per pixel for area lights
+    int size = 128;                  ///< square frame size (the committed goldens are 128^2)
+    std::vector<std::string> scenes; ///< empty: every built-in scene
+    /// Technique names and variants' specs, each a form of its own (MatrixVariants::select expands a
+    /// name given on the command line); empty: every registered technique, each followed by its
+    /// variants (MatrixVariants::all), then `auto`.
+    std::vector<std::string> techniques;
+    int referenceSamples = 64; ///< per pixel for area lights
     /// -t auto's calibration in the `auto` cells: interleaved timed rounds per candidate, no warm-up
     /// frame. What the cells check does not depend on the timings (any choice is held to its own
     /// golden and bound, and to auto's rule, which reads the effects and the judged error), so two

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bench/golden/GoldenImage.h"
+#include "bench/golden/MatrixVariants.h"
 #include "core/Error.h"
 
 namespace sb {
@@ -145,7 +146,7 @@ void checkAutoPick(const MatrixCell& cell, CellVerdict& v) {
 
 std::string MatrixCheck::goldenPath(const std::string& dir, const std::string& scene,
                                     const std::string& technique, const std::string& kind) {
-    return dir + "/" + scene + "/" + technique + "." + kind + ".png";
+    return dir + "/" + scene + "/" + MatrixVariants::key(technique) + "." + kind + ".png";
 }
 
 CellVerdict MatrixCheck::checkCell(const std::vector<MatrixCell>& cells, size_t index,

@@ -3,7 +3,8 @@
 //   (a) every submission mode's visibility and colour equal the golden cell's (GoldenMatrix::goldenCellOf:
 //       the GL retained cell, or the Vulkan retained cell of a technique with no GL form; the mode and
 //       the API must never change the image), within kModeTolerance;
-//   (b) the image equals the committed golden (results/goldens/<scene>/<technique>.*.png), within
+//   (b) the image equals the committed golden (results/goldens/<scene>/<technique>.*.png, a variant's
+//       file named by MatrixVariants::key: raytraced.mode=soft.*.png), within
 //       kGoldenTolerance, and a golden cell that refuses its scene has no golden (so a technique that
 //       starts refusing a scene is seen, as is one that stops);
 //   (c) every light's accuracy against the Embree reference stays within the committed bound
@@ -57,7 +58,8 @@ public:
     /// between the modes, compared with the retained golden too). Anything more is a changed image.
     static constexpr DiffTolerance kGoldenTolerance{2, 0.005};
 
-    /// The golden of `technique` on `scene`: kind "visibility" or "colour".
+    /// The golden of `technique` (a name, or a variant's spec: its file is named by MatrixVariants::key)
+    /// on `scene`: kind "visibility" or "colour".
     static std::string goldenPath(const std::string& dir, const std::string& scene,
                                   const std::string& technique, const std::string& kind);
     /// Verdicts for the cells of one scene (as GoldenMatrix::renderScene returns them). `bounds` maps

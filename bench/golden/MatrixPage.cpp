@@ -55,7 +55,10 @@ std::string header(int size) {
            "driver whose Vulkan device has the capabilities it needs (the row names the driver where it "
            "is not the system's); *accuracy*: that golden cell (GL retained, else Vulkan retained) against "
            "the Embree reference, per light, and its bound (rules in bench/golden/AccuracyBounds.h). An "
-           "unsupported cell gives the technique's reason.\n\n"
+           "unsupported cell gives the technique's reason. A variant that a technique declares (a form at "
+           "other properties, with the rule it is held to: `bench --list`, its `matrix:` line) has rows of "
+           "its own, named by its spec with ':' as '.' (`raytraced.mode=soft`), as are its goldens and "
+           "bounds.\n\n"
            "| technique | scene | modes | accuracy |\n|---|---|---|---|\n";
 }
 

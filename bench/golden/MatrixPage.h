@@ -18,6 +18,7 @@ public:
     /// The rows and exception lines of the page at `path`; no file gives an empty page. Lines that are
     /// neither (the header, the table's head) are not kept: text() writes them.
     static MatrixPage read(const std::string& path);
+    /// `technique` is a row's key: a technique's name, or a variant's MatrixVariants::key.
     /// Sets the row of `technique` on `scene` ("| technique | scene | modes | accuracy |") and its
     /// exception lines ("- `technique/scene/light0`: why"), replacing what the page had for them.
     void set(const std::string& technique, const std::string& scene, const std::string& row,

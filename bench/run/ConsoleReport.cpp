@@ -171,6 +171,10 @@ void ConsoleReport::printTechniqueList(std::ostream& os) {
             os << "  sweep:    " << join(info.quality, "; ", [](const QualityKnob& k) {
                 return k.property + " " + join(k.values, "/");
             }) << "  (bench accuracy --sweep)\n";
+        if (!info.matrixVariants.empty())
+            os << "  matrix:   variants " << join(info.matrixVariants, ", ", [](const MatrixVariant& v) {
+                return v.properties + " (rule " + accuracyRuleName(v.rule) + ")";
+            }) << ": cells of their own in bench golden, beside the default's\n";
         if (info.properties.empty()) os << "  properties: none\n";
         TextColumns properties("  ");
         for (const PropertyDesc& p : info.properties)

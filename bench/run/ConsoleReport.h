@@ -35,7 +35,8 @@ public:
     /// `bench accuracy`: time against error, one row per configuration.
     static void printAccuracyTable(std::ostream& os,
                                    const std::vector<std::pair<RunResult, AccuracyResult>>& results);
-    /// `bench --list`: techniques with effects, passes, properties (name, type, default, range).
+    /// `bench --list`: techniques with effects, passes, the variants the golden matrix judges in cells of
+    /// their own (techniques/MatrixVariant.h), properties (name, type, default, range).
     static void printTechniqueList(std::ostream& os);
     /// The Vulkan devices the loader sees (indices for --vk-device), or why there are none.
     static void printVulkanDevices(std::ostream& os);

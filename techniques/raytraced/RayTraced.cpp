@@ -46,6 +46,23 @@ std::vector<PropertyDesc> declareProperties() {
     return out;
 }
 
+/// The modes the golden matrix judges beside hard (techniques/MatrixVariant.h), at their default knobs.
+std::vector<MatrixVariant> matrixVariants() {
+    return {
+        {"mode=soft", AccuracyRule::Exact,
+         "a light without extent (a point or a direction: every light of the built-in scenes, none of "
+         "which has a \"shape\") gets the one ray mode=hard traces, so mode=soft's visibility there is "
+         "hard's and is held to hard's rule; under an area light it is judged by its RMSE against the "
+         "reference's soft visibility, as every technique is there"},
+        {"mode=guided", AccuracyRule::Exact,
+         "hard's ray wherever the light's depth map is unsure and the map's decision elsewhere, which can "
+         "be wrong only at sub-texel features, contacts closer than `margin` texels and tight concave "
+         "curves (techniques/raytraced/GuidedRays.h); measured when this rule was set, its image on every "
+         "built-in scene equalled hard's (point lights have no map: all their rays are traced), so it is "
+         "held to hard's exact rule rather than the shadow map's"},
+    };
+}
+
 } // namespace
 
 const NameTable<RayTraced::ModeEntry>& RayTraced::modes() {
@@ -95,7 +112,8 @@ TechniqueInfo RayTraced::declaration() {
                     std::to_string(in.width) + "x" + std::to_string(in.height) + " pixels x (" +
                         std::to_string(kHistoryTexelBytes) + " B x " + std::to_string(kHistoryLayers) +
                         " layers of history)"};
-        }};
+        },
+        .matrixVariants = matrixVariants()};
 }
 
 std::vector<std::string> RayTraced::passes(Mode mode) {
