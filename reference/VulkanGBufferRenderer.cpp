@@ -5,6 +5,7 @@
 #include "techniques/vulkan/VulkanFrameBlock.h"
 #include "techniques/vulkan/VulkanSubmitter.h"
 #include "vk/GraphicsPipeline.h"
+#include "vk/LayerPasses.h"
 #include "vk/ShaderModuleCache.h"
 #include "vk/VulkanContext.h"
 
@@ -148,15 +149,8 @@ void VulkanGBufferRenderer::createRenderPass() {
                          "vkCreateRenderPass (G-buffer)");
 
     const VkImageView views[3] = {mPosition.view(), mPrimitive.view(), mDepth.view()};
-    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    fb.renderPass = mPass;
-    fb.attachmentCount = 3;
-    fb.pAttachments = views;
-    fb.width = uint32_t(mWidth);
-    fb.height = uint32_t(mHeight);
-    fb.layers = 1;
-    VulkanContext::check(vkCreateFramebuffer(mContext.device(), &fb, nullptr, &mFramebuffer),
-                         "vkCreateFramebuffer (G-buffer)");
+    mFramebuffer = LayerPasses::framebuffer(mContext.device(), mPass, views,
+                                            {uint32_t(mWidth), uint32_t(mHeight)}, 1, "G-buffer");
 }
 
 void VulkanGBufferRenderer::createPipeline(ShaderModuleCache& shaders, const VulkanSubmitter& submitter) {
