@@ -26,6 +26,16 @@ struct GBuffer {
     std::vector<uint8_t> backFacing;
 
     size_t size() const { return size_t(width) * size_t(height); }
+    /// Moves shaders/reference/gbuffer.frag's back-face flag (bit 31 of the id it writes: a triangle index
+    /// never reaches it) out of `primitive` into `backFacing`; both renderers' read-backs end with it.
+    void splitBackFaces() {
+        constexpr uint32_t kBackFace = 0x80000000u;
+        backFacing.resize(size());
+        for (size_t i = 0; i < size(); ++i) {
+            backFacing[i] = (primitive[i] & kBackFace) ? 1 : 0;
+            primitive[i] &= ~kBackFace;
+        }
+    }
     bool covered(size_t i) const { return position[i].w > 0.0f; }
     /// 0-based index into Scene::instances for a covered pixel.
     uint32_t instance(size_t i) const { return uint32_t(position[i].w) - 1u; }

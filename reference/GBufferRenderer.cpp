@@ -158,13 +158,7 @@ GBuffer GBufferRenderer::readBack() const {
     g.primitive.resize(g.size());
     mTarget.read(GL_COLOR_ATTACHMENT0, GL_RGBA, GL_FLOAT, g.position.data());
     mTarget.read(GL_COLOR_ATTACHMENT1, GL_RED_INTEGER, GL_UNSIGNED_INT, g.primitive.data());
-    // Bit 31 is the back-face flag (shaders/reference/gbuffer.frag): a triangle index never reaches it.
-    constexpr uint32_t kBackFace = 0x80000000u;
-    g.backFacing.resize(g.size());
-    for (size_t i = 0; i < g.size(); ++i) {
-        g.backFacing[i] = (g.primitive[i] & kBackFace) ? 1 : 0;
-        g.primitive[i] &= ~kBackFace;
-    }
+    g.splitBackFaces();
     return g;
 }
 

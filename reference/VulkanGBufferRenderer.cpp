@@ -5,6 +5,7 @@
 #include "techniques/vulkan/VulkanFrameBlock.h"
 #include "techniques/vulkan/VulkanSubmitter.h"
 #include "vk/GraphicsPipeline.h"
+#include "vk/LayerPasses.h"
 #include "vk/ShaderModuleCache.h"
 #include "vk/VulkanContext.h"
 
@@ -14,8 +15,6 @@ namespace {
 constexpr VkFormat kPositionFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kPrimitiveFormat = VK_FORMAT_R32_UINT;
 constexpr VkImageAspectFlags kDepthStencil = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-/// Bit 31 of the primitive: the back-face flag (shaders/reference/gbuffer.frag).
-constexpr uint32_t kBackFace = 0x80000000u;
 
 VulkanImage colourImage(VulkanContext& context, int width, int height, VkFormat format) {
     VulkanImageDesc d;
@@ -148,15 +147,8 @@ void VulkanGBufferRenderer::createRenderPass() {
                          "vkCreateRenderPass (G-buffer)");
 
     const VkImageView views[3] = {mPosition.view(), mPrimitive.view(), mDepth.view()};
-    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    fb.renderPass = mPass;
-    fb.attachmentCount = 3;
-    fb.pAttachments = views;
-    fb.width = uint32_t(mWidth);
-    fb.height = uint32_t(mHeight);
-    fb.layers = 1;
-    VulkanContext::check(vkCreateFramebuffer(mContext.device(), &fb, nullptr, &mFramebuffer),
-                         "vkCreateFramebuffer (G-buffer)");
+    mFramebuffer = LayerPasses::framebuffer(mContext.device(), mPass, views,
+                                            {uint32_t(mWidth), uint32_t(mHeight)}, 1, "G-buffer");
 }
 
 void VulkanGBufferRenderer::createPipeline(ShaderModuleCache& shaders, const VulkanSubmitter& submitter) {
@@ -216,11 +208,7 @@ GBuffer VulkanGBufferRenderer::render(VulkanSubmitter& submitter, uint32_t frame
     g.primitive.resize(g.size());
     copyRowsFlipped(g.position.data(), mPositionHost.map(), size_t(mWidth) * sizeof(glm::vec4), mHeight);
     copyRowsFlipped(g.primitive.data(), mPrimitiveHost.map(), size_t(mWidth) * sizeof(uint32_t), mHeight);
-    g.backFacing.resize(g.size());
-    for (size_t i = 0; i < g.size(); ++i) {
-        g.backFacing[i] = (g.primitive[i] & kBackFace) ? 1 : 0;
-        g.primitive[i] &= ~kBackFace;
-    }
+    g.splitBackFaces();
     return g;
 }
 

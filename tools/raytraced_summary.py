@@ -204,6 +204,15 @@ def accuracy_figure(summary, metric, path, ylabel):
     plt.close(fig)
 
 
+def section_csv(folder, section):
+    """The path of `section`'s CSV in `folder`, or None (with a line saying so) where it was not run."""
+    path = os.path.join(folder, f"{section}.csv")
+    if os.path.exists(path):
+        return path
+    print(f"_No {section}.csv: section {section} was not run._\n")
+    return None
+
+
 def fit(x_columns, y):
     """Least squares y ~ [1, x...]: coefficients, R^2 and the largest residual relative to y."""
     a = np.column_stack([np.ones(len(y))] + list(x_columns))
@@ -216,10 +225,19 @@ def fit(x_columns, y):
     return coef, r2, float(rel.max()), pred
 
 
+def fit_row(name, model, x_columns, y):
+    """Fits the delta (ms) to `x_columns` and prints the fit's row of the rays table: the constant a in ms,
+    the slopes b, c ... per ray (ns). Returns the coefficients and R^2."""
+    c, r2, largest, _ = fit(x_columns, y)
+    slopes = [f"{chr(ord('b') + i)} {value * 1e6:.3g} ns" for i, value in enumerate(c[1:])]
+    coefficients = ", ".join([f"a {c[0]:.3g} ms"] + slopes)
+    print(f"| {name} | {model} | {coefficients} | {r2:.3f} | {largest:.0%} |")
+    return c, r2
+
+
 def build_section(folder):
-    path = os.path.join(folder, "build.csv")
-    if not os.path.exists(path):
-        print("_No build.csv: section build was not run._\n")
+    path = section_csv(folder, "build")
+    if path is None:
         return
     rows = read(path)
     keys = ["instances", "tess_factor"]
@@ -316,9 +334,8 @@ def paired(rows, keys):
 
 
 def rays_section(folder):
-    path = os.path.join(folder, "rays.csv")
-    if not os.path.exists(path):
-        print("_No rays.csv: section rays was not run._\n")
+    path = section_csv(folder, "rays")
+    if path is None:
         return
     rows = labelled(read(path))
     keys = ["instances", "tess_factor", "width"]
@@ -354,16 +371,9 @@ def rays_section(folder):
         rays = part.rays.to_numpy(float)
         work = rays * np.log2(part.triangles.to_numpy(float))
         y = part.delta.to_numpy(float)
-        c1, r1, e1, _ = fit([work], y)
-        c2, r2, e2, _ = fit([rays], y)
-        c3, r3, e3, _ = fit([rays, work], y)
-        fits[name] = (c1, r1)
-        print(f"| {name} | delta = a + b R log2 T | a {c1[0]:.3g} ms, b {c1[1] * 1e6:.3g} ns | {r1:.3f} | "
-              f"{e1:.0%} |")
-        print(f"| {name} | delta = a + b R | a {c2[0]:.3g} ms, b {c2[1] * 1e6:.3g} ns | {r2:.3f} | "
-              f"{e2:.0%} |")
-        print(f"| {name} | delta = a + b R + c R log2 T | a {c3[0]:.3g} ms, b {c3[1] * 1e6:.3g} ns, "
-              f"c {c3[2] * 1e6:.3g} ns | {r3:.3f} | {e3:.0%} |")
+        fits[name] = fit_row(name, "delta = a + b R log2 T", [work], y)
+        fit_row(name, "delta = a + b R", [rays], y)
+        fit_row(name, "delta = a + b R + c R log2 T", [rays, work], y)
     print("\n(R: rays traced, T: scene triangles; b and c per ray and per ray and tree level.)\n")
     if "all" not in fits:
         return
@@ -388,9 +398,8 @@ def rays_section(folder):
 
 
 def order_section(folder):
-    path = os.path.join(folder, "order.csv")
-    if not os.path.exists(path):
-        print("_No order.csv: section order was not run._\n")
+    path = section_csv(folder, "order")
+    if path is None:
         return
     rows = labelled(read(path))
     rows["side"] = [int(str(sc).split("_")[1]) for sc in rows.scene]
@@ -435,9 +444,8 @@ def order_section(folder):
 
 
 def motion_section(folder):
-    path = os.path.join(folder, "motion.csv")
-    if not os.path.exists(path):
-        print("_No motion.csv: section motion was not run._\n")
+    path = section_csv(folder, "motion")
+    if path is None:
         return
     rows = labelled(read(path))
     p = paired(rows, ["instances"])

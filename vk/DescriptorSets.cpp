@@ -67,39 +67,38 @@ void DescriptorSets::release() {
     mDevice = VK_NULL_HANDLE;
 }
 
-void DescriptorSets::writeBuffer(size_t i, uint32_t binding, VkDescriptorType type, VkBuffer buffer,
-                                 VkDeviceSize range) const {
-    VkDescriptorBufferInfo info{buffer, 0, range};
+VkWriteDescriptorSet DescriptorSets::write(size_t i, uint32_t binding, VkDescriptorType type) const {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = mSets[i];
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = type;
+    return w;
+}
+
+void DescriptorSets::writeImageInfo(size_t i, uint32_t binding, VkDescriptorType type,
+                                    const VkDescriptorImageInfo& info) const {
+    VkWriteDescriptorSet w = write(i, binding, type);
+    w.pImageInfo = &info;
+    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+}
+
+void DescriptorSets::writeBuffer(size_t i, uint32_t binding, VkDescriptorType type, VkBuffer buffer,
+                                 VkDeviceSize range) const {
+    const VkDescriptorBufferInfo info{buffer, 0, range};
+    VkWriteDescriptorSet w = write(i, binding, type);
     w.pBufferInfo = &info;
     vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
 }
 
 void DescriptorSets::writeImage(size_t i, uint32_t binding, VkSampler sampler, VkImageView view,
                                 VkImageLayout layout) const {
-    VkDescriptorImageInfo info{sampler, view, layout};
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = mSets[i];
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    w.pImageInfo = &info;
-    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+    writeImageInfo(i, binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout});
 }
 
 void DescriptorSets::writeStorageImage(size_t i, uint32_t binding, VkImageView view) const {
-    VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = mSets[i];
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    w.pImageInfo = &info;
-    vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
+    writeImageInfo(i, binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                   {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
 }
 
 void DescriptorSets::writeAccelerationStructure(size_t i, uint32_t binding,
@@ -108,12 +107,9 @@ void DescriptorSets::writeAccelerationStructure(size_t i, uint32_t binding,
         VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
     info.accelerationStructureCount = 1;
     info.pAccelerationStructures = &structure;
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    // The structure travels in the chain, not in an info pointer of the write.
+    VkWriteDescriptorSet w = write(i, binding, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR);
     w.pNext = &info;
-    w.dstSet = mSets[i];
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
     vkUpdateDescriptorSets(mDevice, 1, &w, 0, nullptr);
 }
 

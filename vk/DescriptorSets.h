@@ -46,6 +46,12 @@ public:
 
 private:
     void release();
+    /// The write of one descriptor of `type` at binding `binding` of set `i`, pointing at nothing yet:
+    /// each public write adds what it points at (an image, a buffer, a chained structure).
+    VkWriteDescriptorSet write(size_t i, uint32_t binding, VkDescriptorType type) const;
+    /// Writes `info` (a sampler and view, or a storage view, with its layout) as one descriptor of `type`.
+    void writeImageInfo(size_t i, uint32_t binding, VkDescriptorType type,
+                        const VkDescriptorImageInfo& info) const;
     VkDevice mDevice = VK_NULL_HANDLE;
     VkDescriptorPool mPool = VK_NULL_HANDLE;
     std::vector<VkDescriptorSetLayout> mLayouts;

@@ -1,25 +1,66 @@
 #pragma once
-// The pieces of a pass that renders into one layer of an image array and of the pass that samples it:
-// a colour render pass over one attachment, a framebuffer of one view, and the samplers such layers are
-// read through. Used by the techniques' Vulkan forms (the blur of techniques/vulkan/VulkanSeparableBlur,
-// projective's texture, the depth maps of techniques/vulkan/VulkanDepthMaps).
+// The pieces of a pass that renders into the layers of an image array and of the pass that samples it:
+// a render pass of one subpass over a colour and/or a depth attachment, the framebuffers of the layers,
+// and the samplers such layers are read through. Used by the techniques' Vulkan forms (the blur of
+// techniques/vulkan/VulkanSeparableBlur, projective's texture, the depth maps of
+// techniques/vulkan/VulkanDepthMaps and VulkanDepthMapSet, the moment maps of
+// techniques/shadowmap/VulkanMomentMaps).
 #include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
 namespace sb {
 
+class VulkanImage;
+
 class LayerPasses {
 public:
+    /// One attachment of a layer pass: single-sampled, UNDEFINED before the pass (its old contents are
+    /// cleared or overwritten), stencil neither loaded nor kept.
+    struct Attachment {
+        VkFormat format = VK_FORMAT_UNDEFINED;
+        VkAttachmentLoadOp load = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        VkAttachmentStoreOp store = VK_ATTACHMENT_STORE_OP_STORE;
+        VkImageLayout finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    };
+    /// One external dependency of the subpass: what `src` stages and accesses must finish before
+    /// `dst` ones start.
+    struct Barrier {
+        VkPipelineStageFlags srcStages = 0, dstStages = 0;
+        VkAccessFlags srcAccess = 0, dstAccess = 0;
+    };
+    /// A render pass of one subpass: `colour` (attachment 0) and/or `depth` (after it), `before` the
+    /// dependency on what came before the pass, `after` the one of what comes after it.
+    struct PassDesc {
+        std::optional<Attachment> colour, depth;
+        Barrier before, after;
+    };
+    /// The render pass of `desc`. `what` names it in an error. The caller owns it.
+    static VkRenderPass renderPass(VkDevice device, const PassDesc& desc, const char* what);
+
     /// One colour attachment of `format` left SHADER_READ_ONLY for the pass that samples it; `load`
     /// CLEAR (the clear value given at begin) or DONT_CARE (overwritten whole). Dependencies: before,
     /// the previous reads (fragment shader) and writes of the layer; after, the next fragment shader's
     /// reads. `what` names it in an error. The caller owns it.
     static VkRenderPass colourPass(VkDevice device, VkFormat format, VkAttachmentLoadOp load,
                                    const char* what);
-    /// A framebuffer of `view` (`layers` layers: a layered pass writes gl_Layer) at size^2 for `pass`.
-    static VkFramebuffer framebuffer(VkDevice device, VkRenderPass pass, VkImageView view, uint32_t size,
-                                     uint32_t layers, const char* what);
+
+    /// A framebuffer of `views` (in `pass`'s attachment order) at `extent` and `layers` layers (a layered
+    /// pass writes gl_Layer): a layer's, and any other target's (vk/VulkanTargets, the G-buffer of
+    /// reference/VulkanGBufferRenderer, the occluder bake's). `what` names it in an error. The caller
+    /// owns it.
+    static VkFramebuffer framebuffer(VkDevice device, VkRenderPass pass, std::span<const VkImageView> views,
+                                     VkExtent2D extent, uint32_t layers, const char* what);
+    /// A framebuffer per layer of the first `count` layers of `array`, at its size: the layer's view,
+    /// then `shared` where it is given (one depth attachment every layer's pass reuses). The layer views
+    /// stay owned by `array`; the caller owns the framebuffers.
+    static std::vector<VkFramebuffer> layerFramebuffers(VkDevice device, VkRenderPass pass,
+                                                        VulkanImage& array, uint32_t count, const char* what,
+                                                        VkImageView shared = VK_NULL_HANDLE);
+
     /// What a sampler of a layer does at its edges and between texels.
     struct Sampling {
         VkFilter filter = VK_FILTER_LINEAR;

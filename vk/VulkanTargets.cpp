@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "vk/LayerPasses.h"
 #include "vk/VulkanBuffer.h"
 #include "vk/VulkanContext.h"
 
@@ -61,15 +62,9 @@ VulkanTargets::VulkanTargets(VulkanContext& context, int width, int height)
             std::vector<VkImageView> views{mColour.view()};
             if (v == 1) views.push_back(mVisibility.view());
             views.push_back(mDepth.view());
-            VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-            info.renderPass = mLoadPass[v]; // compatible with mClearPass[v]: same formats and samples
-            info.attachmentCount = static_cast<uint32_t>(views.size());
-            info.pAttachments = views.data();
-            info.width = w;
-            info.height = h;
-            info.layers = 1;
-            VulkanContext::check(vkCreateFramebuffer(context.device(), &info, nullptr, &mFramebuffer[v]),
-                                 "vkCreateFramebuffer");
+            // mLoadPass[v] is compatible with mClearPass[v]: the same formats and samples.
+            mFramebuffer[v] =
+                LayerPasses::framebuffer(context.device(), mLoadPass[v], views, {w, h}, 1, "targets");
         }
         // Every attachment lives in its attachment-optimal layout from here on (contents undefined until
         // the first recordClear), so a LOAD pass or a read-back is never given an UNDEFINED image.

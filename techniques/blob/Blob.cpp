@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 
 #include "shading/ShaderLimits.h"
 #include "techniques/Property.h"
@@ -87,6 +88,21 @@ std::optional<ReceiverPlane> Blob::findGround(const Scene& scene) {
     for (const ReceiverPlane& p : ReceiverPlane::find(scene))
         if (p.normal.y >= 0.5f && (!best || p.normal.y > best->normal.y)) best = p;
     return best;
+}
+
+std::optional<ReceiverPlane> Blob::groundOf(const Scene& scene) {
+    std::optional<ReceiverPlane> ground = findGround(scene);
+    if (!ground)
+        std::cerr << "blob: scene '" << scene.name
+                  << "' has no ground plane (a planar instance facing up that receives and casts no shadow): "
+                     "nothing is shadowed\n";
+    return ground;
+}
+
+std::vector<Aabb> Blob::meshBounds(const Scene& scene) {
+    std::vector<Aabb> bounds;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) bounds.push_back(scene.meshBoundsOf(m));
+    return bounds;
 }
 
 std::optional<Blob::Record> Blob::fit(const Aabb& bounds, const ReceiverPlane& ground, const Light& light,

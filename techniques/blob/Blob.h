@@ -37,6 +37,11 @@ struct Blob {
                                      int lightIndex, float opacity, float softness, float fade);
     /// The receiver plane facing most nearly up (normal.y >= 0.5), if any.
     static std::optional<ReceiverPlane> findGround(const Scene& scene);
+    /// findGround, with a line on stderr naming the scene where it has none (nothing is shadowed): what
+    /// both APIs' setScene take.
+    static std::optional<ReceiverPlane> groundOf(const Scene& scene);
+    /// Each mesh's object-space bounds (Scene::meshBoundsOf), as fitAll takes them.
+    static std::vector<Aabb> meshBounds(const Scene& scene);
     /// Every blob of the frame into `out`: per caster (world bounds from its mesh's object-space
     /// `meshBounds`) and shadow-casting light, with the properties' opacity, softness and fade.
     static void fitAll(const Scene& scene, const ReceiverPlane& ground, const std::vector<Aabb>& meshBounds,

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iostream>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -32,13 +31,8 @@ void BlobGL::release() {
 
 void BlobGL::setScene(const Scene& scene) {
     release();
-    mGround = sb::Blob::findGround(scene);
-    if (!mGround)
-        std::cerr << "blob: scene '" << scene.name
-                  << "' has no ground plane (a planar instance facing up that receives and casts no shadow): "
-                     "nothing is shadowed\n";
-    mMeshBounds.clear();
-    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds.push_back(scene.meshBoundsOf(m));
+    mGround = sb::Blob::groundOf(scene);
+    mMeshBounds = sb::Blob::meshBounds(scene);
     mReceiver.upload(mGround ? std::vector<ReceiverPlane>{*mGround} : std::vector<ReceiverPlane>{});
     glCreateVertexArrays(1, &mEmptyVao);
     glCreateBuffers(1, &mBlobBuffer);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <iostream>
 
 #include "core/Error.h"
 #include "shading/ShaderLimits.h"
@@ -26,13 +25,8 @@ void BlobVulkan::release() {
 }
 
 void BlobVulkan::setScene(const Scene& scene) {
-    mGround = Blob::findGround(scene);
-    if (!mGround)
-        std::cerr << "blob: scene '" << scene.name
-                  << "' has no ground plane (a planar instance facing up that receives and casts no shadow): "
-                     "nothing is shadowed\n";
-    mMeshBounds.clear();
-    for (size_t m = 0; m < scene.meshes.size(); ++m) mMeshBounds.push_back(scene.meshBoundsOf(m));
+    mGround = Blob::groundOf(scene);
+    mMeshBounds = Blob::meshBounds(scene);
     mReceiver.setPlanes(mGround ? std::vector<ReceiverPlane>{*mGround} : std::vector<ReceiverPlane>{});
 }
 

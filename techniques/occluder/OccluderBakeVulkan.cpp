@@ -7,6 +7,7 @@
 
 #include "core/Error.h"
 #include "vk/GraphicsPipeline.h"
+#include "vk/LayerPasses.h"
 #include "vk/VulkanBuffer.h"
 #include "vk/VulkanImage.h"
 
@@ -150,15 +151,8 @@ std::vector<uint8_t> OccluderBakeVulkan::bake(VulkanContext& context, ShaderModu
 
     const VkRenderPass pass = createRenderPass(device, stencilFormat);
     const std::array<VkImageView, 2> views{colour.view(), stencil.view()};
-    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    fb.renderPass = pass;
-    fb.attachmentCount = uint32_t(views.size());
-    fb.pAttachments = views.data();
-    fb.width = fb.height = n;
-    fb.layers = 1;
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateFramebuffer(device, &fb, nullptr, &framebuffer),
-                         "vkCreateFramebuffer (occluder bake)");
+    const VkFramebuffer framebuffer =
+        LayerPasses::framebuffer(device, pass, views, {n, n}, 1, "occluder bake");
     const VkPipelineLayout layout = createPipelineLayout(context, {}, sizeof(BakePush));
     const BakePipelines pipelines = createPipelines(context, shaders, pass, layout);
 

@@ -84,9 +84,7 @@ void ProjectiveVulkan::createTextures(VulkanContext& context, uint32_t layers) {
     // One colour attachment cleared to white (lit) and left for the lighting pass to sample.
     mTexturePass =
         LayerPasses::colourPass(mDevice, VK_FORMAT_R8_UNORM, VK_ATTACHMENT_LOAD_OP_CLEAR, "projective");
-    for (uint32_t i = 0; i < layers; ++i)
-        mFramebuffers.push_back(LayerPasses::framebuffer(mDevice, mTexturePass, mArray.layerView(i),
-                                                         uint32_t(mResolution), 1, "projective"));
+    mFramebuffers = LayerPasses::layerFramebuffers(mDevice, mTexturePass, mArray, layers, "projective");
 }
 
 void ProjectiveVulkan::createDescriptors(VulkanContext& context, uint32_t layers) {

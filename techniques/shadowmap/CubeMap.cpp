@@ -45,6 +45,14 @@ TechniqueInfo CubeMap::declaration() {
             }};
 }
 
+std::vector<CubeMap::Cube> CubeMap::cubes(const OmniLightSet& lights) {
+    std::vector<Cube> cubes;
+    for (const OmniLight& o : lights.lights())
+        if (o.kind == OmniMapKind::Omni)
+            cubes.push_back({o.point, CubeFaces(o.point.position, o.point.nearZ, o.point.farZ)});
+    return cubes;
+}
+
 Defines CubeMap::lightingDefines(Defines lit, const PropertySet& p, const OmniLightSet& lights) {
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(lights.shaderLightCount());

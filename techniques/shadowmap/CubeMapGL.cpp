@@ -26,10 +26,7 @@ bool CubeMapGL::layeredAvailable(const Context& context) {
 
 void CubeMapGL::setScene(const Scene& scene) {
     mLights.setScene(scene);
-    mCubeLights.clear();
-    for (const OmniLight& o : mLights.lights())
-        if (o.kind == OmniMapKind::Omni)
-            mCubeLights.push_back({o.point, CubeFaces(o.point.position, o.point.nearZ, o.point.farZ)});
+    mCubeLights = CubeMap::cubes(mLights);
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);
 }
@@ -59,7 +56,7 @@ void CubeMapGL::renderCubesLayered(FrameContext& ctx) {
     mLayeredDepth->use();
     mCubes.beginLayered(); // every cube in the array belongs to a light that casts: clear them all
     for (size_t cube = 0; cube < mCubeLights.size(); ++cube) {
-        const Cube& c = mCubeLights[cube];
+        const CubeMap::Cube& c = mCubeLights[cube];
         const size_t kept = mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
         mCulled += mOmniCulling.casters() - kept;
         if (kept == 0) continue;
@@ -74,7 +71,7 @@ void CubeMapGL::renderCubesLayered(FrameContext& ctx) {
 void CubeMapGL::renderCubesSixPass(FrameContext& ctx) {
     mFaceDepth->use();
     for (size_t cube = 0; cube < mCubeLights.size(); ++cube) {
-        const Cube& c = mCubeLights[cube];
+        const CubeMap::Cube& c = mCubeLights[cube];
         const CubeFaces& faces = c.faces;
         mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
         for (int f = 0; f < CubeFaces::kFaces; ++f) {

@@ -61,11 +61,7 @@ private:
     void renderLighting(FrameContext& ctx);
 
     OmniLightSet mLights;
-    struct Cube {
-        PointLightFit light;
-        CubeFaces faces;
-    };
-    std::vector<Cube> mCubeLights; ///< per point light with a map, in cube order
+    std::vector<CubeMap::Cube> mCubeLights; ///< per point light with a map, in cube order
     InstanceCulling mCulling;
     OmniCulling mOmniCulling;
     DepthLayers mCubes; ///< GL_TEXTURE_CUBE_MAP_ARRAY, layer-face 6 * cube + face

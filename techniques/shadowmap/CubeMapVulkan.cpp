@@ -50,10 +50,7 @@ void CubeMapVulkan::release() {
 
 void CubeMapVulkan::setScene(const Scene& scene) {
     mLights.setScene(scene);
-    mCubeLights.clear();
-    for (const OmniLight& o : mLights.lights())
-        if (o.kind == OmniMapKind::Omni)
-            mCubeLights.push_back({o.point, CubeFaces(o.point.position, o.point.nearZ, o.point.farZ)});
+    mCubeLights = CubeMap::cubes(mLights);
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);
 }
@@ -218,7 +215,7 @@ void CubeMapVulkan::renderCubesLayered(VulkanFrameContext& ctx) {
     // Every cube in the array belongs to a light that casts: the render pass clears them all.
     beginDepthPass(ctx, mCubes, 0, mLayeredDepthPipeline); // the one framebuffer over all
     for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
-        const Cube& c = mCubeLights[cube];
+        const CubeMap::Cube& c = mCubeLights[cube];
         const size_t kept = mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
         mCulled += mOmniCulling.casters() - kept;
         if (kept == 0) continue;
@@ -231,7 +228,7 @@ void CubeMapVulkan::renderCubesLayered(VulkanFrameContext& ctx) {
 
 void CubeMapVulkan::renderCubesSixPass(VulkanFrameContext& ctx) {
     for (size_t cube = 0; cube < mCubeLights.size() && cube < size_t(mCubeCount); ++cube) {
-        const Cube& c = mCubeLights[cube];
+        const CubeMap::Cube& c = mCubeLights[cube];
         mOmniCulling.cullSphere(c.light.position, c.light.farZ, mRange);
         for (int f = 0; f < CubeFaces::kFaces; ++f) {
             beginDepthPass(ctx, mCubes, size_t(CubeFaces::kFaces * int(cube) + f), mFaceDepthPipeline);

@@ -30,6 +30,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/shadowmap/CubeFaces.h"
+#include "techniques/shadowmap/CubeMap.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/vulkan/LitPipelines.h"
@@ -72,11 +73,7 @@ private:
 
     VkDevice mDevice = VK_NULL_HANDLE;
     OmniLightSet mLights;
-    struct Cube {
-        PointLightFit light;
-        CubeFaces faces;
-    };
-    std::vector<Cube> mCubeLights; ///< per point light with a map, in cube order
+    std::vector<CubeMap::Cube> mCubeLights; ///< per point light with a map, in cube order
     InstanceCulling mCulling;
     OmniCulling mOmniCulling;
     std::vector<uint8_t> mKeep, mRange;

@@ -26,55 +26,22 @@ constexpr VkDeviceSize kLightPassBytes = sizeof(glm::mat4) + 2 * sizeof(glm::vec
 /// dropped. Before: the previous frame's reads and blur writes of the layer and the previous layer's
 /// depth writes. After: the blur's and the lighting pass's reads.
 VkRenderPass createPass(VkDevice device, VkFormat colour, VkFormat depth) {
-    VkAttachmentDescription a[2]{};
-    a[0].format = colour;
-    a[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    a[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    a[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    a[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    a[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    a[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    a[0].finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    a[1] = a[0];
-    a[1].format = depth;
-    a[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    a[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription sub{};
-    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    sub.colorAttachmentCount = 1;
-    sub.pColorAttachments = &colourRef;
-    sub.pDepthStencilAttachment = &depthRef;
+    LayerPasses::PassDesc desc;
+    desc.colour = LayerPasses::Attachment{colour, VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
+                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    desc.depth = LayerPasses::Attachment{depth, VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     const VkPipelineStageFlags tests =
         VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    VkSubpassDependency deps[2]{};
-    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    deps[0].dstSubpass = 0;
-    deps[0].srcStageMask =
-        VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | tests;
-    deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | tests;
-    deps[0].srcAccessMask =
-        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    deps[1].srcSubpass = 0;
-    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 2;
-    info.pAttachments = a;
-    info.subpassCount = 1;
-    info.pSubpasses = &sub;
-    info.dependencyCount = 2;
-    info.pDependencies = deps;
-    VkRenderPass pass = VK_NULL_HANDLE;
-    VulkanContext::check(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass (moments)");
-    return pass;
+    desc.before = {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                       tests,
+                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | tests,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
+    desc.after = {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT};
+    return LayerPasses::renderPass(device, desc, "moments");
 }
 } // namespace
 
@@ -132,19 +99,8 @@ void VulkanMomentMaps::createImages(VulkanContext& context) {
     depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
     mDepth = VulkanImage(context, depth);
     mPass = createPass(mDevice, mSettings.format, mDepthFormat);
-    for (uint32_t i = 0; i < layers; ++i) {
-        const VkImageView views[2] = {mMaps.layerView(i), mDepth.view()};
-        VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        info.renderPass = mPass;
-        info.attachmentCount = 2;
-        info.pAttachments = views;
-        info.width = info.height = size;
-        info.layers = 1;
-        VkFramebuffer fb = VK_NULL_HANDLE;
-        VulkanContext::check(vkCreateFramebuffer(mDevice, &info, nullptr, &fb),
-                             "vkCreateFramebuffer (moments)");
-        mFramebuffers.push_back(fb);
-    }
+    // Every layer's pass reuses the one depth attachment: the passes run one after another.
+    mFramebuffers = LayerPasses::layerFramebuffers(mDevice, mPass, mMaps, layers, "moments", mDepth.view());
 }
 
 void VulkanMomentMaps::createDescriptors(VulkanContext& context) {

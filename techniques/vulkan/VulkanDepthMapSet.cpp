@@ -15,8 +15,7 @@ VulkanDepthMapSet::VulkanDepthMapSet(VulkanContext& context, uint32_t size, uint
       mFormat(VulkanDepthMaps::format(context.physicalDevice())) {
     mImage = VulkanDepthMaps::image(context, mFormat, size, layers, cube);
     mPass = VulkanDepthMaps::renderPass(mDevice, mFormat);
-    for (uint32_t i = 0; i < drawn; ++i)
-        mFramebuffers.push_back(VulkanDepthMaps::framebuffer(mDevice, mPass, mImage.layerView(i), size));
+    mFramebuffers = LayerPasses::layerFramebuffers(mDevice, mPass, mImage, drawn, "shadow map");
 }
 
 VulkanDepthMapSet::~VulkanDepthMapSet() {
@@ -66,7 +65,8 @@ size_t VulkanDepthMapSet::addLayeredFramebuffer() {
     info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, mLayers};
     VulkanContext::check(vkCreateImageView(mDevice, &info, nullptr, &mLayersView),
                          "vkCreateImageView (depth map layers)");
-    mFramebuffers.push_back(VulkanDepthMaps::framebuffer(mDevice, mPass, mLayersView, mSize, mLayers));
+    mFramebuffers.push_back(
+        LayerPasses::framebuffer(mDevice, mPass, {&mLayersView, 1}, {mSize, mSize}, mLayers, "shadow map"));
     return mFramebuffers.size() - 1;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The depth maps of the shadow-map family on Vulkan (techniques/shadowmap/DepthLayers.h on GL), put
 // together by VulkanDepthMapSet (the moment maps take the format): the map format, an image of layers
-// cleared to "lit", the render pass a depth layer is drawn with, a layer's framebuffer, and the sampler
-// the lighting pass compares through. Below the technique folders, with VulkanDepthMapSet, so that a
-// technique outside the family renders its light depth maps with the same pieces.
+// cleared to "lit", the render pass a depth layer is drawn with (its framebuffers are vk/LayerPasses'),
+// and the sampler the lighting pass compares through. Below the technique folders, with
+// VulkanDepthMapSet, so that a technique outside the family renders its light depth maps with the same
+// pieces.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
@@ -27,9 +28,6 @@ public:
     /// One depth attachment cleared at the start and left DEPTH_STENCIL_READ_ONLY for the lighting pass,
     /// with the dependencies on the previous frame's reads and this frame's. The caller owns it.
     static VkRenderPass renderPass(VkDevice device, VkFormat format);
-    /// A framebuffer of `view` (`layers` layers: a layered pass writes gl_Layer) at size^2 for `pass`.
-    static VkFramebuffer framebuffer(VkDevice device, VkRenderPass pass, VkImageView view, uint32_t size,
-                                     uint32_t layers = 1);
     /// The lighting pass's sampler: with `compare`, LEQUAL depth compare with LINEAR filtering of the four
     /// results (bilinear PCF); without, NEAREST depths the shader compares. Clamped at the edges.
     static VkSampler sampler(VkDevice device, bool compare);

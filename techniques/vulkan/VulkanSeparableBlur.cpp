@@ -44,11 +44,10 @@ void VulkanSeparableBlur::createTargets(VulkanContext& context, VulkanImage& arr
     mIntermediate = VulkanImage(context, d);
     // Each pass overwrites its target whole: its old contents are not loaded.
     mPass = LayerPasses::colourPass(mDevice, mSettings.format, VK_ATTACHMENT_LOAD_OP_DONT_CARE, "blur");
+    const VkImageView intermediate = mIntermediate.view();
     mIntermediateFramebuffer =
-        LayerPasses::framebuffer(mDevice, mPass, mIntermediate.view(), size, 1, "blur");
-    for (uint32_t i = 0; i < array.desc().layers; ++i)
-        mLayerFramebuffers.push_back(
-            LayerPasses::framebuffer(mDevice, mPass, array.layerView(i), size, 1, "blur"));
+        LayerPasses::framebuffer(mDevice, mPass, {&intermediate, 1}, {size, size}, 1, "blur");
+    mLayerFramebuffers = LayerPasses::layerFramebuffers(mDevice, mPass, array, array.desc().layers, "blur");
 }
 
 void VulkanSeparableBlur::createDescriptors(VulkanContext& context, VulkanImage& array,
