@@ -2,7 +2,8 @@
 // The hard-case table (tests/hard/HardCaseTest.cpp runs the rows of techniques with a GL form on GL,
 // tests/hard/HardCaseVkTest.cpp those with a Vulkan form on Vulkan; a row that names a driver runs in a
 // child process on it, tests/SecondDriver.h): scenes and viewpoints where shadow techniques are known
-// to break, each judged against the exact Embree reference at the same pixels with bounds that must hold.
+// to break, each judged against the exact Embree reference at the same pixels with bounds that must hold,
+// for every light of the scene (the worst light held to them; tests/hard/HardCaseBounds.h).
 // Every technique adds its rows here. Bounds are the measured values on Mesa llvmpipe with headroom, and
 // each says why that number; NaN/Inf/out-of-range counts must be zero everywhere.
 #include <ostream>
@@ -684,6 +685,20 @@ inline const HardCase kHardCases[] = {
      "(0%, 0%): a zero-area triangle in a caster's bottom-level structure: it covers no sample, stops no "
      "ray and puts no NaN in the image",
      0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    {"raytraced_many_lights", "many_lights", "mid", "raytraced:mode=hard", 160, 0.05, 0.01, 5, 5, 5,
+     "(0%, 0% for each of the four lights, 24091 to 24670 samples judged each; no NaN): a fill light "
+     "that casts no shadow (1 everywhere it arrives, no ray), a sun, a point light low beside the casters "
+     "and a spot whose cone cuts the ground off, over a sphere and a box standing on the ground and a "
+     "thin pole: each light's rays and visibility channel (up to four in one lighting pass) as the "
+     "reference traces that light alone; the exact techniques' bounds for the worst light",
+     0.05f, 0.0, 100.0, -1.0, "mesa-25.0.7"},
+    // Every light of a row's scene is judged (tests/hard/HardCaseBounds.h, expectHardCaseLights): the
+    // negative control below must see what a judge of light 0 alone would not.
+    {"none_many_lights", "many_lights", "mid", "none", 160, 100, 100, 1e9, 1e9, 1e9,
+     "negative control (light 0 0%, light 1 2.48%, light 2 25.8%, light 3 2.36% off the edge band, GL and "
+     "Vulkan alike): no shadow is right under the fill light 0, which casts none, and wrong under the "
+     "others; the worst light must be over 10%, which a judge of light 0 alone fails (0%)",
+     0.05f, 10.0},
 };
 
 /// The scene file of a row: tests/hard/scenes/<scene>.json, or a path from the source root.
