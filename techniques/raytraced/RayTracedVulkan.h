@@ -18,10 +18,11 @@
 // visible surface's last in primitive order; lavapipe shades a pixel's fragments in that order (a device
 // that does not would need a depth pre-pass or fragment-shader interlock for the same guarantee).
 //
-// Self-intersection: a ray leaves the surface at the offset of Waechter and Binder, "A Fast and Robust
-// Method for Avoiding Self-Intersection" (Ray Tracing Gems, ch. 6): the interpolated position moved along
-// the geometric normal of the side the camera sees by 256 n_i units in the last place of each coordinate
-// (n_i / 65536 for a coordinate under 1/32 in magnitude): shaders/raytraced/rays.glsl, offsetRayOrigin.
+// Self-intersection: a ray leaves the surface at the interpolated position moved along the geometric
+// normal of the side the camera sees by max(1e-4, 32 sum_i |n_i| spacing(p_i)), the float spacing of each
+// coordinate weighed by the normal's share of it (Waechter and Binder's principle, "A Fast and Robust
+// Method for Avoiding Self-Intersection", Ray Tracing Gems, ch. 6, as one distance along the normal; the
+// Embree reference's rule): shaders/raytraced/rays.glsl, offsetRayOrigin, says why and what it measured.
 // The geometric normal is the plane of the position's screen-space derivatives, so the offset is the
 // triangle's, not the interpolated shading normal's. Rays to point and spot lights stop 2^-12 of the
 // distance short of the light, as the Embree reference's do.

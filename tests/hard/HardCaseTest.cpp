@@ -1,7 +1,8 @@
 // The hard-case table on GL (tests/hard/HardCases.h): each row's technique on a scene where shadows are
-// known to break, judged against the Embree reference, stability included. Rows of techniques without a
-// GL form run on Vulkan only (tests/hard/HardCaseVkTest.cpp); a row that names a driver runs in a child
-// process on it (tests/SecondDriver.h).
+// known to break, judged against the Embree reference for every light of the scene, stability included
+// (light 0's, tests/hard/HardCaseBounds.h). Rows of techniques without a GL form run on Vulkan only
+// (tests/hard/HardCaseVkTest.cpp); a row that names a driver runs in a child process on it
+// (tests/SecondDriver.h).
 #include <string>
 #include <vector>
 
@@ -48,9 +49,8 @@ TEST_P(HardCases, BoundsHold) {
     auto technique = TechniqueRegistry::create(TechniqueSpec::parse(c.technique));
     harness.prepare(*technique);
     AccuracyEvaluator evaluator(harness);
-    const AccuracyResult r =
-        evaluator.evaluate(*technique, test::hardCaseOptions(c, test::HardCaseStability::Judged));
-    test::expectHardCaseBounds(c, r, test::HardCaseStability::Judged, "", evaluator.lastJudged());
+    test::expectHardCaseLights(c, evaluator, *technique, harness.scene().lights.size(),
+                               test::HardCaseStability::Judged);
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, HardCases, ::testing::ValuesIn(glRows()),
