@@ -51,8 +51,12 @@ std::string movingCastersScene() {
 } // namespace
 
 TEST(VirtualGL, ObliqueViewMatchesEmbree) {
+    // A 4096^2 virtual map (1024 pages of 128) and a pool that holds them all: the ground fills the
+    // light's map, and without clipmap levels the far view needs 280 of its pages (at 16384^2 it needs
+    // 3884, more than the default pool of 1024: NOTES-virtual.md). Measured: 0.006% wrong, all on the
+    // one-pixel edge band, 0% off it; bounds: nothing off the edge band beyond 0.01%, 0.1% in all.
     Harness h(test::quickConfig("sphere_plane", "far", 256));
-    auto t = virtualMaps("");
+    auto t = virtualMaps("virtual_resolution=4096:pool_pages=1024");
     h.prepare(*t);
     AccuracyEvaluator evaluator(h);
     AccuracyOptions o;
@@ -66,17 +70,19 @@ TEST(VirtualGL, ObliqueViewMatchesEmbree) {
     EXPECT_EQ(r.sanity.total(), 0u);
     EXPECT_GT(c.needed, 0u);
     EXPECT_EQ(c.dropped, 0u);
-    EXPECT_LE(r.hard.wrongNoEdgePct, 0.05);
-    EXPECT_LE(r.hard.wrongPct, 1.0);
+    EXPECT_LE(r.hard.wrongNoEdgePct, 0.01);
+    EXPECT_LE(r.hard.wrongPct, 0.1);
 }
 
 TEST(VirtualGL, CachedFramesEqualUncachedFramesAlongAMovingPath) {
     const std::string scene = movingCastersScene();
     RunConfig cfg = test::quickConfig(scene, "view", 128);
     cfg.pathFrames = 8;
+    // 4096^2 in 1024 pages, a pool of all of them: nothing is dropped, so every difference would be the
+    // cache's. Measured over the 8 frames: 658 pages drawn with the cache, 2500 without, 346 invalidated.
     Harness cachedRun(cfg), freshRun(cfg);
-    auto cached = virtualMaps("virtual_resolution=4096:pool_pages=256");
-    auto fresh = virtualMaps("virtual_resolution=4096:pool_pages=256:cache=false");
+    auto cached = virtualMaps("virtual_resolution=4096:pool_pages=1024");
+    auto fresh = virtualMaps("virtual_resolution=4096:pool_pages=1024:cache=false");
     cachedRun.prepare(*cached);
     freshRun.prepare(*fresh);
     uint64_t cachedPages = 0, freshPages = 0, invalidated = 0;

@@ -100,7 +100,7 @@ TEST(VirtualPagesTest, SizesThatDoNotTileAreRefusedByName) {
         int resolution, page, pool;
         const char* named;
     };
-    for (const Bad& b : {Bad{16000, 128, 64, "virtual_resolution 16000"}, Bad{1024, 4, 64, "page_size 4"},
+    for (const Bad& b : {Bad{16100, 128, 64, "virtual_resolution 16100"}, Bad{1024, 4, 64, "page_size 4"},
                          Bad{1024, 128, 0, "pool_pages 0"}, Bad{1024, 128, 65, "pool_pages 65"}}) {
         try {
             PageGeometry(b.resolution, b.page, b.pool);
@@ -216,7 +216,8 @@ TEST(VirtualPagesTest, ACasterThatMovesInvalidatesItsOldAndNewPagesOnly) {
 
     VirtualPageCache cache(g);
     frame(cache, downLight(), true, needAll(g));
-    // Caster 0 moves to x = 3 (texels 640 .. 768 -> 639 .. 769: pages 5 .. 6); the receiver moves too.
+    // Caster 0 moves to x = 3: texels 640 .. 768, grown by one to 639 .. 769: pages 4 .. 6 (639 is the
+    // last texel of page 4). The receiver moves too.
     s.instances[0].position.x = 3.0f;
     s.instances[2].position.x = 6.0f;
     s.updateTransforms();
@@ -224,7 +225,8 @@ TEST(VirtualPagesTest, ACasterThatMovesInvalidatesItsOldAndNewPagesOnly) {
     EXPECT_EQ(casters.moved(s, moved), 1u);
     ASSERT_EQ(moved.size(), 2u);
     expectRect(moved[0], rect(3, 3, 4, 4), "old");
-    expectRect(moved[1], rect(5, 3, 6, 4), "new");
+    expectRect(moved[1], rect(4, 3, 6, 4), "new");
+    // Old and new together: columns 3 .. 6 of rows 3 .. 4, 8 pages (column 4 is in both).
     const PageCounts c = frame(cache, downLight(), true, needAll(g), moved);
     EXPECT_EQ(c.invalidated, 8u);
     EXPECT_EQ(c.rendered, 8u);

@@ -2,8 +2,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
 
 namespace sb {

@@ -8,12 +8,12 @@
 #include "scenes/Math.h"
 #include "scenes/ShadowWork.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/PointLightRefusal.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/CascadeSplits.h"
 #include "techniques/shadowmap/Cascaded.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 
 namespace sb {
 

@@ -3,9 +3,9 @@
 #include <cstring>
 
 #include "core/Error.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/Cascaded.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {

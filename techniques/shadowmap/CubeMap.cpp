@@ -1,9 +1,9 @@
 #include "techniques/shadowmap/CubeMap.h"
 
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/CubeFaces.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 
 namespace sb {
 

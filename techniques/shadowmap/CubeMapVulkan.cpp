@@ -5,9 +5,9 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/CubeMap.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/vulkan/ScenePass.h"
 
 namespace sb {

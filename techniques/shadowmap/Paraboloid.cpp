@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 
 namespace sb {
 

@@ -4,8 +4,8 @@
 #include <cstring>
 
 #include "core/Error.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/Paraboloid.h"
 #include "techniques/vulkan/ScenePass.h"
 

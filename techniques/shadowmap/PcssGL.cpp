@@ -8,8 +8,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 

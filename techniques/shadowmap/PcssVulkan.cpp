@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 #include "techniques/vulkan/ScenePass.h"
 

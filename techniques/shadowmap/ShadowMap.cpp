@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "scenes/Math.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 
 namespace sb {

@@ -11,8 +11,8 @@
 
 #include "core/Injection.h"
 #include "scenes/Math.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/DepthPassState.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 

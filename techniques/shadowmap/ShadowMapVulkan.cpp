@@ -5,8 +5,8 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/shadowmap/ShadowMap.h"
 #include "techniques/vulkan/ScenePass.h"
 

@@ -9,9 +9,9 @@
 #include "scenes/LightFit.h"
 #include "scenes/Motion.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/DepthLightingFrame.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/ShadowMapProperties.h"
-#include "techniques/shadowmap/DepthLightingFrame.h"
 #include "techniques/virtual/Virtual.h"
 
 namespace sb {

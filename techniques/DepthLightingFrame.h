@@ -1,7 +1,7 @@
 #pragma once
-// The frame of the two-pass depth-map members (`shadowmap`, `pcss`, `cascaded`, `cubemap`,
-// `paraboloid`), on both APIs: the submit statistics reset, pass "depth", pass "lighting", and the
-// counters made of their statistics. One place, so every member's pass names (TechniqueInfo::passes) and
+// The frame of the two-pass depth-map techniques (the shadow-map family's `shadowmap`, `pcss`,
+// `cascaded`, `cubemap`, `paraboloid`, and `virtual`), on both APIs: the submit statistics reset, pass
+// "depth", pass "lighting", and the counters made of their statistics. One place, so every member's pass names (TechniqueInfo::passes) and
 // its draw_calls and triangles count the same work on GL and on Vulkan.
 #include <functional>
 #include <string>
