@@ -25,7 +25,7 @@ bool CubeMapGL::layeredAvailable(const Context& context) {
 }
 
 void CubeMapGL::setScene(const Scene& scene) {
-    mLights.setScene(scene);
+    mLights.setScene(scene, OmniShape::Cube, int(properties().getInt(P::kResolution)));
     mCubeLights.clear();
     for (const OmniLight& o : mLights.lights())
         if (o.kind == OmniMapKind::Omni)
