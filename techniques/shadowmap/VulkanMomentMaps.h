@@ -50,6 +50,7 @@ public:
 
     /// The light fits; fit() them before compile().
     MomentMapFits& fits() { return mFits; }
+    const MomentMapFits& fits() const { return mFits; }
     /// A scene in motion moved: the fits follow (MomentMapFits::sceneChanged) and the blocks are
     /// rewritten.
     void sceneChanged(const Scene& scene);
