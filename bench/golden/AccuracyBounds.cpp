@@ -38,7 +38,7 @@ constexpr TechniqueRule kRules[] = {
     {"blob", Rule::SoftApproximate},
     {"synthetic", Rule::NotJudged},
     // The shadow-map family: depth maps compared per texel, so exact up to texels and bias like
-    // shadowmap; the filtered members (pcss, vsm, esm) blur edges by a few map texels, which at the
+    // shadowmap; the filtered members (pcss, vsm, esm, evsm, msm) blur edges by a few map texels, which at the
     // matrix's 2048^2 maps over 128^2 frames stays inside the edge band under a point light.
     {"cubemap", Rule::Map},
     {"paraboloid", Rule::Map},
@@ -46,6 +46,8 @@ constexpr TechniqueRule kRules[] = {
     {"pcss", Rule::Map},
     {"vsm", Rule::Map},
     {"esm", Rule::Map},
+    {"evsm", Rule::Map},
+    {"msm", Rule::Map},
     // At its defaults (self=occluder, cast=shadowmap) the casters are shaded by occluder textures, an
     // approximation, so the hybrid as a whole is held to the approximation's rule; HybridGLTest holds
     // each part's pixels to its own technique's.
