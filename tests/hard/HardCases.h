@@ -573,6 +573,26 @@ inline const HardCase kHardCases[] = {
     {"moments_esm_bleeding", "moments_bleeding", "crossing", "esm", 384, 0.05, 0.05, 20, 20, 20,
      "(0%, RMSE 1e-4; 0/0/0): ESM has no such halo: the ground behind the lower plate gets "
      "exp(-c (t - d_B)) ~ 0 whatever the upper plate's share of the region"},
+    // EVSM and MSM (members "moments" too) on the same two constructed overlaps, beside vsm's rows above:
+    // MEASURE_PENDING
+    {"moments_evsm_baseline", "baseline", "top", "evsm", 384, 100, 100, 100, 100, 100, "MEASURE_PENDING"},
+    {"moments_msm_baseline", "baseline", "top", "msm", 384, 100, 100, 100, 100, 100, "MEASURE_PENDING"},
+    {"moments_evsm2_bleeding", "moments_bleeding", "crossing", "evsm:components=2", 384, 100, 100, 100, 100,
+     100, "MEASURE_PENDING"},
+    {"moments_evsm4_bleeding", "moments_bleeding", "crossing", "evsm", 384, 100, 100, 100, 100, 100,
+     "MEASURE_PENDING"},
+    {"moments_msm_bleeding", "moments_bleeding", "crossing", "msm", 384, 100, 100, 100, 100, 100,
+     "MEASURE_PENDING"},
+    {"moments_esm_bleeding_slab", "moments_bleeding_slab", "crossing", "esm", 384, 100, 100, 100, 100, 100,
+     "MEASURE_PENDING"},
+    {"moments_evsm2_bleeding_slab", "moments_bleeding_slab", "crossing", "evsm:components=2", 384, 100, 100,
+     100, 100, 100, "MEASURE_PENDING"},
+    {"moments_evsm4_bleeding_slab", "moments_bleeding_slab", "crossing", "evsm", 384, 100, 100, 100, 100, 100,
+     "MEASURE_PENDING"},
+    {"moments_msm_bleeding_slab", "moments_bleeding_slab", "crossing", "msm", 384, 100, 100, 100, 100, 100,
+     "MEASURE_PENDING"},
+    {"moments_msm_float_bleeding_slab", "moments_bleeding_slab", "crossing", "msm:format=float", 384, 100,
+     100, 100, 100, 100, "MEASURE_PENDING"},
     // ESM at the property's maximum exponent: exp(c d) overflows a float for c d > 88.7, i.e. every depth
     // above 0.18 at c = 500; the log-space filter and lookup never form it (NaN/Inf/out-of-range asserted 0).
     {"moments_esm_max_exponent_baseline", "baseline", "top", "esm:exponent=500", 384, 0.05, 0.01, 3, 3, 3,
