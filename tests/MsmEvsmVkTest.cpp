@@ -111,9 +111,11 @@ constexpr float kBias = 3e-5f;
 
 // The bias pulls the moments towards those of half a unit of mass at 0 and half at 1 (the moments
 // (0.5, 0.5, 0.5, 0.5)), weight alpha, so the reconstruction answers for that slightly wider distribution:
-// away from the step its answer moves by O(alpha / (t - d)^2); 0.05 from the step that is ~0.01 at most.
-// The unorm16 map rounds each stored value to 1/65535 first, which the bias is chosen to absorb.
-constexpr double kMsmTolerance = 0.01;
+// its error grows as the receiver nears a depth of the region. Worked out in float arithmetic on the CPU
+// for these cases when writing the test: 0.0012 at 0.05 behind one depth, 0.0135 at 0.05 behind the
+// farther of two depths 0.2 apart, 0.0102 halfway between them; the unorm16 map's rounding (1/65535 per
+// stored value) moved none of them by more than 1e-4. Bound: 0.02.
+constexpr double kMsmTolerance = 0.02;
 
 TEST_F(MsmEvsmVkTest, MsmOneDepthIsAStepAwayFromIt) {
     const Depths one = {{0.3, 1.0}};
@@ -133,7 +135,8 @@ TEST_F(MsmEvsmVkTest, MsmTwoDepthsAreExactWhereVsmLeaks) {
     // Half the region at 0.3, half at 0.5 (two occluders). VSM's moments: mu = 0.4, sigma^2 = 0.01. A
     // receiver at t = 0.55, just behind the farther occluder, is fully shadowed; Chebyshev's bound reads 0.01
     // / (0.01 + 0.15^2) = 4/13 lit (the light leak). At t = 0.4 (between them, truth half lit) the bound
-    // reads 1 (t <= mu). Four moments determine this distribution: msm answers 0 and 0.5 in front.
+    // reads 1 (t <= mu). Four moments determine this distribution: msm answers 1 and 0.5 in front (visibility
+    // 0 and 0.5).
     const Depths two = {{0.3, 0.5}, {0.5, 0.5}};
     const glm::vec4 b = powerMoments(two);
     const double ts[] = {0.2, 0.4, 0.55, 0.8};
