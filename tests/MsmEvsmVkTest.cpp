@@ -132,11 +132,11 @@ TEST_F(MsmEvsmVkTest, MsmOneDepthIsAStepAwayFromIt) {
 }
 
 TEST_F(MsmEvsmVkTest, MsmTwoDepthsAreExactWhereVsmLeaks) {
-    // Half the region at 0.3, half at 0.5 (two occluders). VSM's moments: mu = 0.4, sigma^2 = 0.01. A
-    // receiver at t = 0.55, just behind the farther occluder, is fully shadowed; Chebyshev's bound reads 0.01
-    // / (0.01 + 0.15^2) = 4/13 lit (the light leak). At t = 0.4 (between them, truth half lit) the bound
-    // reads 1 (t <= mu). Four moments determine this distribution: msm answers 1 and 0.5 in front (visibility
-    // 0 and 0.5).
+    // Half the region at 0.3, half at 0.5 (two occluders). VSM's moments: mu = 0.4, sigma^2 = 0.01.
+    // A receiver at t = 0.55, just behind the farther occluder, is fully shadowed; Chebyshev's bound
+    // reads 0.01 / (0.01 + 0.15^2) = 4/13 lit (the light leak). At t = 0.4 (between them, truth half
+    // lit) the bound reads 1 (t <= mu). Four moments determine this distribution: msm answers 1 and 0.5
+    // in front (visibility 0 and 0.5).
     const Depths two = {{0.3, 0.5}, {0.5, 0.5}};
     const glm::vec4 b = powerMoments(two);
     const double ts[] = {0.2, 0.4, 0.55, 0.8};
