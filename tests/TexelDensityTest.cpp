@@ -24,7 +24,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "bench/golden/AccuracyBounds.h"
 #include "bench/lib/measure/TexelDensity.h"
+#include "registry/TechniqueRegistry.h"
 #include "scenes/LightFit.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/PropertySet.h"
@@ -261,4 +263,25 @@ TEST(TexelDensityTest, SummaryIsTheMedianFifthPercentileAndMinimum) {
     EXPECT_DOUBLE_EQ(s.p5, 5.0);
     EXPECT_DOUBLE_EQ(s.min, 0.0);
     EXPECT_EQ(TexelDensity::summarize({}).samples, 0u);
+}
+
+// Every form of every technique the matrix holds to the map rule (bench/golden/AccuracyBounds.cpp's
+// table: the shadow-map family) answers where its lighting pass looks a point up, so that no member's
+// columns are silently empty; a technique without a map (`volume`) answers nothing. Objects only, no
+// context.
+TEST(TexelDensityTest, EveryFormOfAMapRuleTechniqueReportsItsTexels) {
+    size_t checked = 0;
+    for (const std::string& name : TechniqueRegistry::names()) {
+        MatrixCell cell;
+        cell.technique = name;
+        cell.lights = {CellAccuracy{}};
+        const bool mapRule = AccuracyBounds::derive(cell, 0).rule == "map";
+        for (Api api : {Api::GL, Api::Vulkan}) {
+            if (!TechniqueRegistry::has(name, api)) continue;
+            const std::unique_ptr<Technique> t = TechniqueRegistry::create(TechniqueSpec::parse(name), api);
+            EXPECT_EQ(t->mapTexels() != nullptr, mapRule) << name << " on " << apiName(api);
+            checked += mapRule;
+        }
+    }
+    EXPECT_GE(checked, 18u); // nine map-rule members on both APIs
 }
