@@ -41,6 +41,8 @@
 #include "techniques/shadowmap/VsmVulkan.h"
 #include "techniques/synthetic/SyntheticGL.h"
 #include "techniques/synthetic/SyntheticVulkan.h"
+#include "techniques/virtual/VirtualGL.h"
+#include "techniques/virtual/VirtualVulkan.h"
 #include "techniques/volume/VolumeGL.h"
 #include "techniques/volume/VolumeVulkan.h"
 
@@ -97,6 +99,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"esm", gl<EsmGL>, vulkan<EsmVulkan>},
         {"evsm", gl<EvsmGL>, vulkan<EvsmVulkan>},
         {"msm", gl<MsmGL>, vulkan<MsmVulkan>},
+        // A 16k^2 map in pages, only the needed ones drawn and cached across frames.
+        {"virtual", gl<VirtualGL>, vulkan<VirtualVulkan>},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
         {"occluder", gl<OccluderGL>, vulkan<OccluderVulkan>},
         {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},

@@ -15,10 +15,13 @@
 
 namespace sb {
 
-/// A shaded sample: its world position and the instance it lies on (an index into Scene::instances).
+/// A shaded sample: its world position, the instance it lies on (an index into Scene::instances) and
+/// the surface's normal there (zero where the caller has none): `virtual` picks its map's level from the
+/// receiver's footprint, which the normal gives.
 struct ShadedPoint {
     glm::dvec3 position{0.0};
     uint32_t instance = 0;
+    glm::dvec3 normal{0.0};
 };
 
 /// A point's place in one map of a light.

@@ -95,6 +95,58 @@ TEST(VirtualPagesTest, GeometryOfUe5SizesAndItsAtlas) {
     EXPECT_EQ(PageGeometry(1024, 128, 64).atlasPagesPerSide(), 8); // a perfect square stays one
 }
 
+TEST(VirtualPagesTest, LevelsHalveTheMapAndNumberTheirPagesAfterLevelZeros) {
+    // 16384^2 in pages of 128: 128 pages a side, halving down to one page: 8 levels of 128^2, 64^2,
+    // ... 1^2 pages, 21845 in all (4^8 - 1) / 3; level 1 starts after level 0's 16384 pages.
+    EXPECT_EQ(PageGeometry::maxLevels(16384, 128), 8);
+    EXPECT_EQ(PageGeometry::maxLevels(128 * 96, 128), 6); // 96 = 3 * 2^5: 96, 48, 24, 12, 6, 3
+    EXPECT_EQ(PageGeometry::maxLevels(16100, 128), 0);
+    const PageGeometry g(16384, 128, 1024, 8);
+    EXPECT_EQ(g.pageCount(), 21845u);
+    EXPECT_EQ(g.levelOffset(1), 16384u);
+    EXPECT_EQ(g.levelOffset(2), 16384u + 4096u);
+    EXPECT_EQ(g.levelOffset(7), 21844u);
+    EXPECT_EQ(g.pagesPerSide(3), 16);
+    EXPECT_EQ(g.levelResolution(3), 2048);
+    EXPECT_EQ(g.tableRows(), 171); // 21845 / 128 = 170.7
+    EXPECT_EQ(g.pageIndex(2, {3, 5}), 16384u + 4096u + 5u * 32u + 3u);
+    const PageAddress a = g.address(16384u + 4096u + 5u * 32u + 3u);
+    EXPECT_EQ(a.level, 2);
+    EXPECT_EQ(a.page, glm::ivec2(3, 5));
+    EXPECT_EQ(g.address(21844u).level, 7);
+    // Level 0's pages (5..9, 2..3) lie in level 2's (1..2, 0..0).
+    expectRect(rect(5, 2, 9, 3).atLevel(2), rect(1, 0, 2, 0), "level 2");
+    try {
+        PageGeometry(1024, 128, 64, 5); // 8 pages a side halve to 1 in 4 levels
+        ADD_FAILURE() << "levels 5 was accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::BadInput);
+        EXPECT_NE(std::string(e.what()).find("levels 5"), std::string::npos) << e.what();
+    }
+}
+
+TEST(VirtualPagesTest, MarkingAndInvalidationReachEveryLevel) {
+    // downLight's 16 x 16 world units in 1024 texels, 4 levels (8, 4, 2, 1 pages a side).
+    const PageGeometry g(1024, 128, 85, 4);
+    ASSERT_EQ(g.pageCount(), 85u);
+    const PageMarking marking(g, 1.5f);
+    // (1, 0, -1): level 0's texel 576; at level 2 it is 144 (of 256): page 1 of 2, its footprint
+    // 142.5 .. 145.5 inside it.
+    expectRect(marking.pagesOf(downLight(), {1, 0, -1}, 2), rect(1, 1, 1, 1), "level 2");
+    // The origin at level 1: texel 256 of 512, the corner of four pages.
+    expectRect(marking.pagesOf(downLight(), {0, 0, 0}, 1), rect(1, 1, 2, 2), "level 1 corner");
+    std::vector<uint8_t> needed(g.pageCount(), 0);
+    marking.mark(downLight(), {1, 0, -1}, needed, 3);
+    EXPECT_EQ(needed[84], 1); // level 3's one page
+    // A caster over level 0's pages (3..4, 3..4) invalidates level 1's (1..2, 1..2), level 2's
+    // (0..1, 0..1) and level 3's page: 4 + 4 + 4 + 1 pages.
+    VirtualPageCache cache(g);
+    frame(cache, downLight(), true, needAll(g));
+    const PageCounts c = frame(cache, downLight(), true, needAll(g), {rect(3, 3, 4, 4)});
+    EXPECT_EQ(c.invalidated, 13u);
+    EXPECT_EQ(c.reused, 85u - 13u);
+}
+
 TEST(VirtualPagesTest, SizesThatDoNotTileAreRefusedByName) {
     struct Bad {
         int resolution, page, pool;

@@ -48,6 +48,9 @@ constexpr TechniqueRule kRules[] = {
     {"esm", Rule::Map},
     {"evsm", Rule::Map},
     {"msm", Rule::Map},
+    // Virtual shadow maps: depth pages compared per texel as shadowmap's, at the level whose texels match
+    // the pixel (techniques/virtual/Virtual.h), so the staircase stays in the edge band.
+    {"virtual", Rule::Map},
     // At its defaults (self=occluder, cast=shadowmap) the casters are shaded by occluder textures, an
     // approximation, so the hybrid as a whole is held to the approximation's rule; HybridGLTest holds
     // each part's pixels to its own technique's.

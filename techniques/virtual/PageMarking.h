@@ -20,11 +20,13 @@ class PageMarking {
 public:
     PageMarking(const PageGeometry& geometry, float footprintTexels);
 
-    /// The pages world point `p`'s lookup reads in the map of `lightViewProj` (world -> map clip, GL
-    /// conventions).
-    PageRect pagesOf(const glm::mat4& lightViewProj, const glm::vec3& p) const;
-    /// Marks pagesOf(p) in `needed` (a byte per page, PageGeometry's numbering).
-    void mark(const glm::mat4& lightViewProj, const glm::vec3& p, std::vector<uint8_t>& needed) const;
+    /// The pages of level `level` world point `p`'s lookup reads in the map of `lightViewProj` (world ->
+    /// map clip, GL conventions): its texel there is level 0's divided by 2^level, the footprint in
+    /// that level's texels.
+    PageRect pagesOf(const glm::mat4& lightViewProj, const glm::vec3& p, int level = 0) const;
+    /// Marks pagesOf(p, level) in `needed` (a byte per page, PageGeometry's numbering).
+    void mark(const glm::mat4& lightViewProj, const glm::vec3& p, std::vector<uint8_t>& needed,
+              int level = 0) const;
 
 private:
     PageGeometry mGeometry;

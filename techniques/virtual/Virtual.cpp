@@ -1,5 +1,6 @@
 #include "techniques/virtual/Virtual.h"
 
+#include <algorithm>
 #include <string>
 
 #include "techniques/Property.h"
@@ -18,8 +19,16 @@ std::vector<PropertyDesc> declareProperties() {
         integer(Virtual::kVirtualResolution, "16384", 128, 16384,
                 "width and height of the virtual map (texels): a multiple of page_size"),
         integer(Virtual::kPageSize, "128", 8, 1024, "width and height of a page (texels)"),
-        integer(Virtual::kPoolPages, "1024", 1, 16384,
-                "slots of the physical pool (pages that can hold depth at once)"),
+        integer(Virtual::kPoolPages, "1024", 1, 4096,
+                "slots of the physical pool (pages that can hold depth at once): an atlas of "
+                "ceil(sqrt(pool_pages))^2 pages, 64 KiB each at page_size 128"),
+        integer(Virtual::kLevels, "0", 0, 15,
+                "mip levels of the virtual map, each half the previous one's texels a side in pages of the "
+                "same size; a receiver reads the level whose texels are nearest its pixel's footprint "
+                "(0: every level, down to a single page)"),
+        real(Virtual::kLodBias, "0", -8, 8,
+             "added to log2 of level 0's texels per pixel before it picks the level (negative: sharper, "
+             "more pages)"),
         flag(Virtual::kCache, "true",
              "keep pages' depth across frames until the light or a caster over them moves"),
         P::biasConstant(
@@ -33,8 +42,11 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Virtual::declaration() {
     return {.name = "virtual",
-            .description = "virtual shadow maps: a 16k map in pages, only the pages visible receivers read "
-                           "drawn, kept across frames until something over them moves",
+            .description = "virtual shadow maps: a 16k map in 128^2 pages backed by a pool, only the pages "
+                           "visible receivers read drawn (imageAtomicMin), at the mip level of their pixel, "
+                           "kept across frames until the light or a caster over them moves (Epic Games, "
+                           "Unreal Engine 5 documentation, Virtual Shadow Maps, the sections on pages and "
+                           "caching; Sakmary et al., Virtual Shadow Maps, GPU Zen 3, ch. 12)",
             .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers,
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
             .passes = {"depth", "lighting"},
@@ -47,8 +59,11 @@ TechniqueInfo Virtual::declaration() {
 }
 
 PageGeometry Virtual::geometry(const PropertySet& p) {
-    return PageGeometry(int(p.getInt(kVirtualResolution)), int(p.getInt(kPageSize)),
-                        int(p.getInt(kPoolPages)));
+    const int resolution = int(p.getInt(kVirtualResolution));
+    const int page = int(p.getInt(kPageSize));
+    const int levels = int(p.getInt(kLevels));
+    return PageGeometry(resolution, page, int(p.getInt(kPoolPages)),
+                        levels == 0 ? std::max(1, PageGeometry::maxLevels(resolution, page)) : levels);
 }
 
 float Virtual::footprintTexels(const PropertySet& p) {
@@ -56,12 +71,13 @@ float Virtual::footprintTexels(const PropertySet& p) {
 }
 
 void Virtual::addPageDefines(const PropertySet& p, Defines& d) {
-    const PageGeometry g = geometry(p);
-    d["VIRTUAL_RESOLUTION"] = std::to_string(g.virtualResolution());
-    d["PAGE_SIZE"] = std::to_string(g.pageSize());
-    d["ATLAS_PAGES"] = std::to_string(g.atlasPagesPerSide());
-    d["FOOTPRINT"] = std::to_string(footprintTexels(p)); // "1.000000": a float literal
     d["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+}
+
+Virtual::PageUniforms Virtual::pageUniforms(const PropertySet& p) {
+    const PageGeometry g = geometry(p);
+    return {glm::ivec4(g.virtualResolution(), g.pageSize(), g.atlasPagesPerSide(), g.levels()),
+            glm::vec2(footprintTexels(p), float(p.getFloat(kLodBias)))};
 }
 
 } // namespace sb

@@ -4,8 +4,10 @@
 // directional light's map of virtual_resolution^2 texels in pages of page_size^2, only the pages a
 // visible receiver reads backed by a slot of a physical pool (a 2D atlas) and drawn; with `cache` a page
 // keeps its depth across frames until the light or a caster over it moves. The declaration (techniques/
-// TechniqueInfo.h) its forms take. Not in the registry yet: the first slice (VirtualGL) is driven by
-// its test alone.
+// TechniqueInfo.h) its forms take: VirtualGL and VirtualVulkan (the atomic path), registered as
+// `virtual`.
+#include <glm/glm.hpp>
+
 #include "shading/Defines.h"
 #include "techniques/PropertySet.h"
 #include "techniques/TechniqueInfo.h"
@@ -18,15 +20,26 @@ struct Virtual {
     static constexpr const char* kPageSize = "page_size";
     static constexpr const char* kPoolPages = "pool_pages";
     static constexpr const char* kCache = "cache";
+    static constexpr const char* kLevels = "levels";
+    static constexpr const char* kLodBias = "lod_bias";
 
     static TechniqueInfo declaration();
-    /// The sizes `p` asks for (refused by name when they do not tile: PageGeometry).
+    /// The sizes `p` asks for (refused by name when they do not tile: PageGeometry); `levels` 0 is every
+    /// level PageGeometry::maxLevels allows.
     static PageGeometry geometry(const PropertySet& p);
     /// How far around a receiver's texel its lookup reads, in texels: pcf x pcf nearest taps one texel
     /// apart reach (pcf - 1) / 2 each side, plus one for rounding. The marking rule's footprint.
     static float footprintTexels(const PropertySet& p);
-    /// The sizes and the kernel as the shaders' defines (shaders/virtual/page_table.glsl).
+    /// The kernel as the shaders' define (PCF_SIZE): the sizes are uniforms (pageUniforms), so that a
+    /// size costs no program.
     static void addPageDefines(const PropertySet& p, Defines& d);
+    /// shaders/virtual/page_table.glsl's uniforms: geometry = (virtual resolution, page size, atlas pages
+    /// a side, levels), lod = (footprintTexels, lod_bias).
+    struct PageUniforms {
+        glm::ivec4 geometry{0};
+        glm::vec2 lod{0.0f};
+    };
+    static PageUniforms pageUniforms(const PropertySet& p);
 };
 
 } // namespace sb

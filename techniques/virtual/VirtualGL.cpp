@@ -6,9 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/Error.h"
-#include "scenes/LightFit.h"
 #include "scenes/Motion.h"
-#include "shading/ShaderLimits.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/ShadowMapProperties.h"
@@ -22,31 +20,27 @@ using P = ShadowMapProperties;
 constexpr GLint kLightViewProjLocation = 8;
 constexpr GLint kLightMatrixLocation = 10;    // mark.frag, lighting.frag: bias * viewProj
 constexpr GLint kMarkLocation = 14;           // mark.frag: 0 in the depth draw, 1 in the marking draw
-constexpr GLint kBiasLocation = 10;           // page_depth.frag: (constant, slope)
+constexpr GLint kBiasLocation = 16;           // page_depth.frag: (constant, slope)
+constexpr GLint kLevelLocation = 17;          // page_depth.frag: the level drawn
+constexpr GLint kPageGeometryLocation = 20;   // page_table.glsl: sizes
+constexpr GLint kPageLodLocation = 21;        // page_table.glsl: footprint, lod bias
 constexpr uint32_t kClearDepth = 0x3f800000u; // floatBitsToUint(1.0): nothing drawn, lit
 
-GLuint r32uiTexture(int size) {
+GLuint r32uiTexture(int width, int height) {
     GLuint t = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &t);
-    glTextureStorage2D(t, 1, GL_R32UI, size, size);
+    glTextureStorage2D(t, 1, GL_R32UI, width, height);
     // Integer textures are read with texelFetch; NEAREST keeps them complete.
     glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     return t;
 }
 
-/// The clip-space crop that takes the pages [x0, x1] of row y to [-1, 1]^2: what the run's casters are
-/// culled against (never drawn with: the pages are drawn in the whole map's coordinates).
-glm::mat4 cropToRun(const PageGeometry& g, int x0, int x1, int y) {
-    const float n = float(g.pagesPerSide());
-    const glm::vec2 lo(2.0f * float(x0) / n - 1.0f, 2.0f * float(y) / n - 1.0f);
-    const glm::vec2 hi(2.0f * float(x1 + 1) / n - 1.0f, 2.0f * float(y + 1) / n - 1.0f);
-    glm::mat4 crop(1.0f);
-    crop[0][0] = 2.0f / (hi.x - lo.x);
-    crop[1][1] = 2.0f / (hi.y - lo.y);
-    crop[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
-    crop[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
-    return crop;
+/// page_table.glsl's uniforms into the program in use.
+void setPageUniforms(const PropertySet& p) {
+    const Virtual::PageUniforms u = Virtual::pageUniforms(p);
+    glUniform4iv(kPageGeometryLocation, 1, glm::value_ptr(u.geometry));
+    glUniform2fv(kPageLodLocation, 1, glm::value_ptr(u.lod));
 }
 
 void requireLimit(GLenum what, const char* name, int needed) {
@@ -76,51 +70,26 @@ void VirtualGL::release() {
 }
 
 void VirtualGL::setScene(const Scene& scene) {
-    mLight = -1;
-    for (size_t i = 0; i < scene.lights.size() && i < size_t(kMaxLights); ++i) {
-        const Light& l = scene.lights[i];
-        if (!l.castsShadows) continue;
-        if (l.type != LightType::Directional)
-            throw Error("virtual: light " + std::to_string(i) + " is a " + lightTypeName(l.type) +
-                            " light; this first form maps directional lights only",
-                        ExitCode::Unsupported);
-        if (mLight >= 0)
-            throw Error("virtual: lights " + std::to_string(mLight) + " and " + std::to_string(i) +
-                            " both cast shadows; this first form maps one light",
-                        ExitCode::Unsupported);
-        mLight = int(i);
-    }
-    mCache.emplace(Virtual::geometry(properties()));
+    mMaps.setScene(scene, properties());
     mCulling.setScene(scene);
-    mMoved.clear();
-    fitLight(scene);
-}
-
-void VirtualGL::fitLight(const Scene& scene) {
-    if (mLight < 0) return;
-    mLightViewProj = fitLightViewProjection(scene, scene.lights[size_t(mLight)], {LightFitBounds::Scene});
-    mCasters.reset(scene, mLightViewProj, mCache->geometry(), 1.0f);
 }
 
 void VirtualGL::sceneChanged(const Scene& scene, uint32_t changes) {
     if (changes & kCastersMoved) mCulling.instancesMoved(scene);
-    if (changes & kLightsMoved)
-        fitLight(scene); // a new transform: beginFrame drops every page
-    else if (changes & kCastersMoved)
-        mCasters.moved(scene, mMoved);
+    mMaps.sceneChanged(scene, changes);
 }
 
 void VirtualGL::compile(const CompileContext& ctx) {
     release();
     const PropertySet& p = properties();
-    const PageGeometry& g = mCache->geometry();
+    const PageGeometry& g = mMaps.geometry();
     requireLimit(GL_MAX_VIEWPORT_DIMS, "GL_MAX_VIEWPORT_DIMS", g.virtualResolution());
     requireLimit(GL_MAX_FRAMEBUFFER_WIDTH, "GL_MAX_FRAMEBUFFER_WIDTH", g.virtualResolution());
     requireLimit(GL_MAX_FRAMEBUFFER_HEIGHT, "GL_MAX_FRAMEBUFFER_HEIGHT", g.virtualResolution());
     requireLimit(GL_MAX_TEXTURE_SIZE, "GL_MAX_TEXTURE_SIZE", g.atlasResolution());
-    mRequests = r32uiTexture(g.pagesPerSide());
-    mTable = r32uiTexture(g.pagesPerSide());
-    mAtlas = r32uiTexture(g.atlasResolution());
+    mRequests = r32uiTexture(g.pagesPerSide(), g.tableRows());
+    mTable = r32uiTexture(g.pagesPerSide(), g.tableRows());
+    mAtlas = r32uiTexture(g.atlasResolution(), g.atlasResolution());
     const uint32_t zero = 0;
     glClearTexImage(mTable, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glCreateFramebuffers(1, &mEmptyFbo);
@@ -138,7 +107,7 @@ void VirtualGL::compile(const CompileContext& ctx) {
     Defines lit = ctx.defines();
     lit.insert(pages.begin(), pages.end());
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, ctx.scene.lights.size()));
-    lit["MAPPED_LIGHT"] = std::to_string(mLight);
+    lit["MAPPED_LIGHT"] = std::to_string(mMaps.light());
     setPermutationKey(mMarkProgram->key() + "|" + mPageProgram->key() + "|" +
                       mLighting.compile(ctx, {"common/scene.vert", "virtual/lighting.frag", ""}, lit));
 }
@@ -148,7 +117,8 @@ void VirtualGL::markPages(FrameContext& ctx) {
     glClearTexImage(mRequests, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     ctx.targets.bind();
     mMarkProgram->use();
-    const glm::mat4 shadow = FlatLightFits::textureBias() * mLightViewProj;
+    setPageUniforms(properties());
+    const glm::mat4 shadow = FlatLightFits::textureBias() * mMaps.lightViewProj();
     glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(shadow));
     glBindImageTexture(0, mRequests, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT); // the clear before the stores
@@ -170,66 +140,60 @@ void VirtualGL::markPages(FrameContext& ctx) {
 }
 
 void VirtualGL::allocatePages() {
-    const PageGeometry& g = mCache->geometry();
-    mWords.resize(g.pageCount());
+    const PageGeometry& g = mMaps.geometry();
+    mWords.resize(size_t(g.pagesPerSide()) * size_t(g.tableRows()));
     glGetTextureImage(mRequests, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(mWords.size() * 4),
                       mWords.data());
-    mNeeded.assign(g.pageCount(), 0);
-    for (size_t i = 0; i < mWords.size(); ++i) mNeeded[i] = mWords[i] != 0 ? 1 : 0;
-    mCache->beginFrame(mLightViewProj, properties().getBool(Virtual::kCache));
-    mCache->invalidate(mMoved);
-    mMoved.clear();
-    mCache->allocate(mNeeded);
-    mCache->packTable(mWords);
-    glTextureSubImage2D(mTable, 0, 0, 0, g.pagesPerSide(), g.pagesPerSide(), GL_RED_INTEGER, GL_UNSIGNED_INT,
+    // The marks are read before allocate() writes the table into the same words.
+    const std::vector<uint32_t> marks = mWords;
+    mMaps.allocate(marks.data(), properties().getBool(Virtual::kCache), mWords);
+    glTextureSubImage2D(mTable, 0, 0, 0, g.pagesPerSide(), g.tableRows(), GL_RED_INTEGER, GL_UNSIGNED_INT,
                         mWords.data());
-    for (uint32_t page : mCache->renderList()) {
-        const glm::ivec2 o = g.atlasOrigin(mCache->table().slot(page));
+    for (uint32_t page : mMaps.cache().renderList()) {
+        const glm::ivec2 o = g.atlasOrigin(mMaps.cache().table().slot(page));
         glClearTexSubImage(mAtlas, 0, o.x, o.y, 0, g.pageSize(), g.pageSize(), 1, GL_RED_INTEGER,
                            GL_UNSIGNED_INT, &kClearDepth);
     }
 }
 
 void VirtualGL::renderPages(FrameContext& ctx) {
-    const PageGeometry& g = mCache->geometry();
+    const PageGeometry& g = mMaps.geometry();
     const PropertySet& p = properties();
     glBindFramebuffer(GL_FRAMEBUFFER, mEmptyFbo);
-    glViewport(0, 0, g.virtualResolution(), g.virtualResolution());
     glEnable(GL_SCISSOR_TEST);
     glEnable(GL_DEPTH_CLAMP); // casters nearer the light than the fit's near side still shadow
     mPageProgram->use();
-    glUniformMatrix4fv(kLightViewProjLocation, 1, GL_FALSE, glm::value_ptr(mLightViewProj));
+    setPageUniforms(p);
+    glUniformMatrix4fv(kLightViewProjLocation, 1, GL_FALSE, glm::value_ptr(mMaps.lightViewProj()));
     glUniform2f(kBiasLocation, float(p.getFloat(P::kBiasConstant)), float(p.getFloat(P::kBiasSlope)));
     glBindImageTexture(0, mAtlas, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glBindTextureUnit(1, mTable);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    const std::vector<uint32_t>& pages = mCache->renderList();
-    for (size_t i = 0; i < pages.size();) {
-        // A run: pages of one row with consecutive numbers (the list is in page order).
-        size_t j = i + 1;
-        while (j < pages.size() && pages[j] == pages[j - 1] + 1 &&
-               g.pageCoord(pages[j]).y == g.pageCoord(pages[i]).y)
-            ++j;
-        const glm::ivec2 first = g.pageCoord(pages[i]);
-        const int count = int(j - i);
-        glScissor(first.x * g.pageSize(), first.y * g.pageSize(), count * g.pageSize(), g.pageSize());
-        const glm::mat4 run = cropToRun(g, first.x, first.x + count - 1, first.y) * mLightViewProj;
-        mCulling.cull(run, DrawSet::Casters, CullPlanes::SidesAndFar, mKeep);
-        ctx.submitter.drawCulled(DrawSet::Casters, {mLightViewProj, true}, mKeep);
-        i = j;
+    int viewportLevel = -1;
+    for (const PageRun& run : mMaps.runs()) {
+        if (run.level != viewportLevel) {
+            viewportLevel = run.level;
+            glViewport(0, 0, g.levelResolution(run.level), g.levelResolution(run.level));
+            glUniform1i(kLevelLocation, run.level);
+        }
+        glScissor(run.first.x * g.pageSize(), run.first.y * g.pageSize(), run.count * g.pageSize(),
+                  g.pageSize());
+        mCulling.cull(run.crop(g) * mMaps.lightViewProj(), DrawSet::Casters, CullPlanes::SidesAndFar, mKeep);
+        ctx.submitter.drawCulled(DrawSet::Casters, {mMaps.lightViewProj(), true}, mKeep);
     }
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_SCISSOR_TEST);
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glBindTextureUnit(1, 0);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT); // the atomics before the lighting pass's fetches
-    mCache->rendered();
+    mMaps.rendered();
 }
 
 void VirtualGL::renderLighting(FrameContext& ctx) {
     ctx.targets.bind();
     mLighting.program().use();
-    const glm::mat4 shadow = FlatLightFits::textureBias() * mLightViewProj;
+    setPageUniforms(properties());
+    const glm::mat4 shadow = FlatLightFits::textureBias() * mMaps.lightViewProj();
     glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(shadow));
     glBindTextureUnit(0, mAtlas);
     glBindTextureUnit(1, mTable);
@@ -239,19 +203,17 @@ void VirtualGL::renderLighting(FrameContext& ctx) {
 }
 
 void VirtualGL::execute(FrameContext& ctx) {
+    mMaps.texels().setCamera(ctx.proj * ctx.view, {ctx.targets.width(), ctx.targets.height()});
     const SubmitStats s = DepthLightingFrame::run(
         ctx,
         [&] {
-            if (mLight < 0) return;
+            if (mMaps.light() < 0) return;
             markPages(ctx);
             allocatePages();
             renderPages(ctx);
         },
         [&] { renderLighting(ctx); });
-    const PageGeometry& g = mCache->geometry();
-    const PageCounts& c = mCache->counts();
-    mCounters = DepthLightingFrame::counters(s, double(c.rendered) * g.pageSize() * g.pageSize(), {});
-    for (auto& kv : c.toCounters()) mCounters.push_back(kv);
+    mCounters = mMaps.counters(s);
 }
 
 } // namespace sb

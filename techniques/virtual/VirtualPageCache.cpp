@@ -25,9 +25,12 @@ void VirtualPageCache::beginFrame(const glm::mat4& lightViewProj, bool cache) {
 }
 
 void VirtualPageCache::invalidate(const std::vector<PageRect>& rects) {
-    for (const PageRect& r : rects)
-        for (int y = r.lo.y; y <= r.hi.y; ++y)
-            for (int x = r.lo.x; x <= r.hi.x; ++x) drop(mGeometry.pageIndex({x, y}));
+    for (const PageRect& base : rects)
+        for (int level = 0; level < mGeometry.levels(); ++level) {
+            const PageRect r = base.atLevel(level);
+            for (int y = r.lo.y; y <= r.hi.y; ++y)
+                for (int x = r.lo.x; x <= r.hi.x; ++x) drop(mGeometry.pageIndex(level, {x, y}));
+        }
 }
 
 const std::vector<uint32_t>& VirtualPageCache::allocate(const std::vector<uint8_t>& needed) {

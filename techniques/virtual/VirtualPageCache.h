@@ -35,7 +35,8 @@ public:
     /// dropped first (none counted as invalidated: there is no cache); with it true only a transform that
     /// differs from the last frame's drops them, counted as invalidated where they were valid.
     void beginFrame(const glm::mat4& lightViewProj, bool cache);
-    /// The pages in `rects` lose their content: unmapped, slots freed, counted where they were valid.
+    /// The pages in `rects` (level 0's pages) lose their content on every level (the pages of level l
+    /// that hold them): unmapped, slots freed, counted where they were valid.
     void invalidate(const std::vector<PageRect>& rects);
     /// Maps the frame's `needed` pages (a byte per page) and returns the ones to draw, in page order.
     const std::vector<uint32_t>& allocate(const std::vector<uint8_t>& needed);

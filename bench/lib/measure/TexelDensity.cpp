@@ -30,16 +30,18 @@ glm::dmat2 TexelDensity::screenJacobian(const glm::mat4& cameraViewProj, glm::iv
 std::optional<double> TexelDensity::texelsPerPixel(const MapTexels& maps, size_t light, const ShadedPoint& at,
                                                    const glm::dvec3& normal, const glm::mat4& cameraViewProj,
                                                    glm::ivec2 size) {
-    const std::optional<MapPoint> here = maps.texel(light, at, at.position);
-    if (!here) return std::nullopt;
     const glm::dvec3 n = glm::normalize(normal);
+    ShadedPoint sample = at;
+    sample.normal = n;
+    const std::optional<MapPoint> here = maps.texel(light, sample, at.position);
+    if (!here) return std::nullopt;
     const glm::dvec3 u = glm::normalize(glm::cross(n, glm::dvec3(anyPerpendicularUp(glm::vec3(n)))));
     const glm::dvec3 v = glm::cross(n, u);
     const double screenArea =
         std::abs(glm::determinant(screenJacobian(cameraViewProj, size, at.position, u, v)));
     if (!(screenArea > 0.0) || !std::isfinite(screenArea)) return std::nullopt; // seen edge-on
     const double h = kStepPixels / std::sqrt(screenArea);
-    auto texelAt = [&](const glm::dvec3& q) { return maps.texel(light, at, q)->texel; };
+    auto texelAt = [&](const glm::dvec3& q) { return maps.texel(light, sample, q)->texel; };
     const glm::dvec2 du = (texelAt(at.position + h * u) - texelAt(at.position - h * u)) / (2.0 * h);
     const glm::dvec2 dv = (texelAt(at.position + h * v) - texelAt(at.position - h * v)) / (2.0 * h);
     const double texelArea = std::abs(glm::determinant(glm::dmat2(du, dv)));
