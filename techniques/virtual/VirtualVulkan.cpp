@@ -307,34 +307,29 @@ void VirtualVulkan::recordPages(VulkanFrameContext& ctx) {
     memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    if (!mMaps.runs().empty()) {
-        const uint32_t side = uint32_t(g.virtualResolution());
+    VulkanPush push;
+    push.vec = glm::vec4(float(properties().getFloat(P::kBiasConstant)),
+                         float(properties().getFloat(P::kBiasSlope)), 0.0f, 0.0f);
+    const VkDescriptorSet set = mSets.set(0);
+    for (const PageRun& run : mMaps.runs()) {
+        // A render pass per run whose render area is the run: lavapipe works over the render area, and a
+        // pass over the whole 16k^2 framebuffer cost seconds a frame with many draws.
+        const VkRect2D area{{run.first.x * g.pageSize(), run.first.y * g.pageSize()},
+                            {uint32_t(run.count * g.pageSize()), uint32_t(g.pageSize())}};
         VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         begin.renderPass = mPagePass;
         begin.framebuffer = mPageFramebuffer;
-        begin.renderArea = {{0, 0}, {side, side}};
+        begin.renderArea = area;
         vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPages);
         ctx.frame.bind(cmd, mLayout, ctx.frameOffset);
-        const VkDescriptorSet set = mSets.set(0);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, 1, 1, &set, 0, nullptr);
-        VulkanPush push;
-        push.vec = glm::vec4(float(properties().getFloat(P::kBiasConstant)),
-                             float(properties().getFloat(P::kBiasSlope)), 0.0f, 0.0f);
-        int level = -1;
-        for (const PageRun& run : mMaps.runs()) {
-            if (run.level != level) {
-                level = run.level;
-                setViewport(cmd, uint32_t(g.levelResolution(level)), uint32_t(g.levelResolution(level)));
-                push.ints.y = level;
-            }
-            setScissor(cmd, run.first.x * g.pageSize(), run.first.y * g.pageSize(), run.count * g.pageSize(),
-                       g.pageSize());
-            mCulling.cull(run.crop(g) * mMaps.lightViewProj(), DrawSet::Casters, CullPlanes::SidesAndFar,
-                          mKeep);
-            ctx.submitter.drawCulled(cmd, mLayout, DrawSet::Casters, {mMaps.lightViewProj(), true}, false,
-                                     mKeep, push);
-        }
+        setViewport(cmd, uint32_t(g.levelResolution(run.level)), uint32_t(g.levelResolution(run.level)));
+        setScissor(cmd, area.offset.x, area.offset.y, int(area.extent.width), int(area.extent.height));
+        push.ints.y = run.level;
+        mCulling.cull(run.crop(g) * mMaps.lightViewProj(), DrawSet::Casters, CullPlanes::SidesAndFar, mKeep);
+        ctx.submitter.drawCulled(cmd, mLayout, DrawSet::Casters, {mMaps.lightViewProj(), true}, false, mKeep,
+                                 push);
         vkCmdEndRenderPass(cmd);
     }
     mMaps.rendered();
