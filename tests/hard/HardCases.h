@@ -78,6 +78,20 @@ inline const HardCase kHardCases[] = {
     {"shadowmap_edge_closeup", "edge_closeup", "edge", "shadowmap", 384, 0.3, 0.01, 3, 3, 3,
      "(0.085%, none off the edge; 0.90/0.87/1.0): 0.44 units across 384 px puts a 1 mm texel on ~1 px, so "
      "the map's staircase is the edge band's error and nothing else"},
+    // Virtual shadow maps (`virtual`, techniques/virtual/README.md), measured 2026-12-07 on llvmpipe (wrong
+    // %, off the edge band; camera gain / light gain / flicker): each pixel reads the level whose texels
+    // are about its size, each PCF tap through its own page.
+    {"virtual_page_seams", "edge_closeup", "edge", "virtual:page_size=16:pcf=3", 384, 0.7, 0.01, 4, 3, 3.2,
+     "(0.237%, 0.0027% off the edge; 1.35/1/1.06) [shadowmap 0.085%, 0%]: pages of 16 texels put a seam "
+     "every 16 texels across the shadow's edge, and the 3 x 3 kernel straddles them, each tap reading its "
+     "own page: nothing off the edge band but 4 pixels, no seam line"},
+    {"virtual_grazing_89", "grazing_89", "side", "virtual", 384, 0.05, 0.02, 20, 20, 150,
+     "(0 wrong; 0/0/0): the ground at n.L = 0.017, its texels stretched along the light: the page shader's "
+     "slope bias (glPolygonOffset's formula applied to the atomic's depth) keeps it free of acne",
+     0.0f},
+    {"virtual_contact_point_sun_low", "contact_point_sun", "low", "virtual", 384, 0.45, 0.02, 3.5, 3, 3.8,
+     "(0.147%, 0.0059% off the edge; 1.15/0/1.26): a box and a sphere touching the ground: the bias leaks a "
+     "few pixels at the contacts at the level the pixels pick, as shadowmap's do"},
     {"shadowmap_large_coordinates", "large_coordinates", "top", "shadowmap", 384, 0.15, 0.075, 5, 100, 6,
      "(0.039%, 0.025% off edge; Vulkan 0.054%, 0.020%; camera gain 2.0, light gain 67 = 67 px vs 1, "
      "flicker 1.8): at 1e5 float spacing is 7.8 mm, 8x the map texel, so light-space depth is quantised "
