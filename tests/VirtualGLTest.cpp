@@ -19,6 +19,7 @@
 #include "VirtualScenes.h"
 #include "bench/lib/harness/Harness.h"
 #include "bench/lib/measure/AccuracyEvaluator.h"
+#include "core/Error.h"
 #include "techniques/virtual/VirtualGL.h"
 
 using namespace sb;
@@ -98,4 +99,16 @@ TEST(VirtualGL, CachedFramesEqualUncachedFramesAlongAMovingPath) {
               << "; invalidated " << invalidated << "\n";
     EXPECT_LT(cachedPages, freshPages);
     EXPECT_GT(invalidated, 0u) << "the casters moved over cached pages: some must have been invalidated";
+}
+
+TEST(VirtualGL, TheSparsePathIsRefusedOnGl) {
+    Harness h(test::quickConfig("sphere_plane", "far", 32));
+    auto t = virtualMaps("path=sparse");
+    try {
+        h.prepare(*t);
+        ADD_FAILURE() << "path=sparse was accepted on GL";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::Unsupported);
+        EXPECT_NE(std::string(e.what()).find("atomic path only"), std::string::npos) << e.what();
+    }
 }

@@ -29,6 +29,11 @@ std::vector<PropertyDesc> declareProperties() {
         real(Virtual::kLodBias, "0", -8, 8,
              "added to log2 of level 0's texels per pixel before it picks the level (negative: sharper, "
              "more pages)"),
+        choice(
+            Virtual::kPath, "atomic", {"atomic", "sparse"},
+            "atomic: pages in slots of an atlas, written with imageAtomicMin (both APIs); sparse: the "
+            "virtual map one sparse-resident Vulkan image, pages bound to memory (Vulkan, where the device "
+            "has sparse residency; refused naming what it lacks)"),
         flag(Virtual::kCache, "true",
              "keep pages' depth across frames until the light or a caster over them moves"),
         P::biasConstant(

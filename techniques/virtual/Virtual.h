@@ -22,6 +22,7 @@ struct Virtual {
     static constexpr const char* kCache = "cache";
     static constexpr const char* kLevels = "levels";
     static constexpr const char* kLodBias = "lod_bias";
+    static constexpr const char* kPath = "path";
 
     static TechniqueInfo declaration();
     /// The sizes `p` asks for (refused by name when they do not tile: PageGeometry); `levels` 0 is every
@@ -40,6 +41,8 @@ struct Virtual {
         glm::vec2 lod{0.0f};
     };
     static PageUniforms pageUniforms(const PropertySet& p);
+    /// Whether `p` asks for the sparse-residency path (path=sparse: Vulkan's; NOTES-virtual.md).
+    static bool sparse(const PropertySet& p) { return p.getEnum(kPath) == "sparse"; }
 };
 
 } // namespace sb

@@ -82,6 +82,10 @@ void VirtualGL::sceneChanged(const Scene& scene, uint32_t changes) {
 void VirtualGL::compile(const CompileContext& ctx) {
     release();
     const PropertySet& p = properties();
+    if (Virtual::sparse(p))
+        throw Error("virtual: path=sparse binds pages of a sparse-resident Vulkan image; the GL form has the "
+                    "atomic path only (path=atomic, or --api vulkan)",
+                    ExitCode::Unsupported);
     const PageGeometry& g = mMaps.geometry();
     requireLimit(GL_MAX_VIEWPORT_DIMS, "GL_MAX_VIEWPORT_DIMS", g.virtualResolution());
     requireLimit(GL_MAX_FRAMEBUFFER_WIDTH, "GL_MAX_FRAMEBUFFER_WIDTH", g.virtualResolution());

@@ -45,6 +45,9 @@ public:
     const PageCounts& pageCounts() const { return mMaps.counts(); }
 
 private:
+    /// path=sparse: what the device lacks for sparse residency, each by name; where it lacks nothing, that
+    /// the sparse path is not built yet. Always a refusal.
+    std::string sparseRefusal(const VulkanContext& context) const;
     void release();
     void createResources(const VulkanCompileContext& ctx);
     void createPipelines(const VulkanCompileContext& ctx);
