@@ -1,6 +1,6 @@
 // `virtual`'s lighting pass: the mapped light's visibility through the virtual map at the level
-// pageLevel(pageLod(t)) picks (shaders/virtual/page_table.glsl, as the marking pass did), PCF_SIZE x
-// PCF_SIZE nearest taps one texel of that level apart, each through its own page's word, so a kernel
+// pageLevel(pageLod(t)) picks (shaders/virtual/page_table.glsl, as the marking pass did), pcf x pcf
+// nearest taps one texel of that level apart, each through its own page's word, so a kernel
 // across a page seam reads both pages (the marking footprint made sure both are there). A tap outside the map or on a page
 // without a slot reads lit. The compare is `shadowmap`'s LEQUAL: lit where the receiver's depth is at
 // most the stored one.
@@ -34,14 +34,15 @@ float tap(vec2 t, float z, int level) {
     return z <= uintBitsToFloat(stored) ? 1.0 : 0.0;
 }
 
-float visibility(vec3 p, vec2 t, int level) {
-    if (p.z > 1.0) return 1.0;
+float visibility(vec4 c, vec3 p, vec2 t, int level) {
+    if (c.w <= 0.0 || p.z > 1.0) return 1.0; // behind a spot light, or beyond the map's far plane
     vec2 tl = t / float(1 << level);
-    const float half_ = 0.5 * float(PCF_SIZE - 1);
+    int n = pcfSize();
+    float half_ = 0.5 * float(n - 1);
     float sum = 0.0;
-    for (int y = 0; y < PCF_SIZE; ++y)
-        for (int x = 0; x < PCF_SIZE; ++x) sum += tap(tl + vec2(x, y) - half_, p.z, level);
-    return sum / float(PCF_SIZE * PCF_SIZE);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) sum += tap(tl + vec2(x, y) - half_, p.z, level);
+    return sum / float(n * n);
 }
 
 void main() {
@@ -55,7 +56,7 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = i == MAPPED_LIGHT && shadowApplies(i, vColorId) ? visibility(p, t, level) : 1.0;
+        vis[i] = i == MAPPED_LIGHT && shadowApplies(i, vColorId) ? visibility(c, p, t, level) : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

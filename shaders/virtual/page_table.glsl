@@ -5,7 +5,7 @@
 // starts at atlas texel (s mod atlas side, s / atlas side) * page size (PageGeometry::atlasOrigin).
 // The sizes are uniforms, not defines (Virtual::pageUniforms), so that a size costs no program:
 // uPageGeometry = (virtual resolution, page size, atlas pages a side, levels), uPageLod = (the marking
-// footprint in texels, lod_bias).
+// footprint in texels, lod_bias, the PCF kernel's width, 0).
 #ifdef VULKAN
 // Set 1 (techniques/virtual/VirtualVulkan.h): what GL sets by location, in one block.
 layout(std140, set = 1, binding = 0) uniform VirtualBlock {
@@ -16,7 +16,7 @@ layout(std140, set = 1, binding = 0) uniform VirtualBlock {
 };
 #else
 layout(location = 20) uniform ivec4 uPageGeometry;
-layout(location = 21) uniform vec2 uPageLod;
+layout(location = 21) uniform vec4 uPageLod;
 #endif
 const uint kPageMapped = 0x80000000u;
 const uint kPageRender = 0x40000000u;
@@ -53,6 +53,11 @@ ivec2 tableTexel(int level, ivec2 page) {
 float pageLod(vec2 t) {
     float texelsPerPixel = max(length(dFdx(t)), length(dFdy(t)));
     return log2(max(texelsPerPixel, 1e-20)) + uPageLod.y;
+}
+
+/// Taps a side of the lighting pass's kernel (pcf).
+int pcfSize() {
+    return int(uPageLod.z);
 }
 
 int pageLevel(float lod) {

@@ -75,14 +75,10 @@ float Virtual::footprintTexels(const PropertySet& p) {
     return 0.5f * float(p.getInt(P::kPcf) - 1) + 1.0f;
 }
 
-void Virtual::addPageDefines(const PropertySet& p, Defines& d) {
-    d["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
-}
-
 Virtual::PageUniforms Virtual::pageUniforms(const PropertySet& p) {
     const PageGeometry g = geometry(p);
     return {glm::ivec4(g.virtualResolution(), g.pageSize(), g.atlasPagesPerSide(), g.levels()),
-            glm::vec2(footprintTexels(p), float(p.getFloat(kLodBias)))};
+            glm::vec4(footprintTexels(p), float(p.getFloat(kLodBias)), float(p.getInt(P::kPcf)), 0.0f)};
 }
 
 } // namespace sb

@@ -1,14 +1,13 @@
 #pragma once
 // `virtual`: virtual shadow maps with a page cache (Epic's UE5 documentation "Virtual Shadow Maps";
 // Sakmary, Ryan, Hall, Lustri, "Virtual Shadow Maps", GPU Zen 3; NOTES-virtual.md holds the design). A
-// directional light's map of virtual_resolution^2 texels in pages of page_size^2, only the pages a
+// directional or spot light's map of virtual_resolution^2 texels in pages of page_size^2, only the pages a
 // visible receiver reads backed by a slot of a physical pool (a 2D atlas) and drawn; with `cache` a page
 // keeps its depth across frames until the light or a caster over it moves. The declaration (techniques/
 // TechniqueInfo.h) its forms take: VirtualGL and VirtualVulkan (the atomic path), registered as
 // `virtual`.
 #include <glm/glm.hpp>
 
-#include "shading/Defines.h"
 #include "techniques/PropertySet.h"
 #include "techniques/TechniqueInfo.h"
 #include "techniques/virtual/PageGeometry.h"
@@ -31,14 +30,12 @@ struct Virtual {
     /// How far around a receiver's texel its lookup reads, in texels: pcf x pcf nearest taps one texel
     /// apart reach (pcf - 1) / 2 each side, plus one for rounding. The marking rule's footprint.
     static float footprintTexels(const PropertySet& p);
-    /// The kernel as the shaders' define (PCF_SIZE): the sizes are uniforms (pageUniforms), so that a
-    /// size costs no program.
-    static void addPageDefines(const PropertySet& p, Defines& d);
     /// shaders/virtual/page_table.glsl's uniforms: geometry = (virtual resolution, page size, atlas pages
-    /// a side, levels), lod = (footprintTexels, lod_bias).
+    /// a side, levels), lod = (footprintTexels, lod_bias, pcf, 0). Uniforms, not defines: no size or
+    /// kernel costs a program (the permutation test's axes stay the scene's).
     struct PageUniforms {
         glm::ivec4 geometry{0};
-        glm::vec2 lod{0.0f};
+        glm::vec4 lod{0.0f};
     };
     static PageUniforms pageUniforms(const PropertySet& p);
     /// Whether `p` asks for the sparse-residency path (path=sparse: Vulkan's; NOTES-virtual.md).

@@ -40,7 +40,7 @@ GLuint r32uiTexture(int width, int height) {
 void setPageUniforms(const PropertySet& p) {
     const Virtual::PageUniforms u = Virtual::pageUniforms(p);
     glUniform4iv(kPageGeometryLocation, 1, glm::value_ptr(u.geometry));
-    glUniform2fv(kPageLodLocation, 1, glm::value_ptr(u.lod));
+    glUniform4fv(kPageLodLocation, 1, glm::value_ptr(u.lod));
 }
 
 void requireLimit(GLenum what, const char* name, int needed) {
@@ -100,16 +100,10 @@ void VirtualGL::compile(const CompileContext& ctx) {
     glNamedFramebufferParameteri(mEmptyFbo, GL_FRAMEBUFFER_DEFAULT_WIDTH, g.virtualResolution());
     glNamedFramebufferParameteri(mEmptyFbo, GL_FRAMEBUFFER_DEFAULT_HEIGHT, g.virtualResolution());
 
-    Defines pages;
-    Virtual::addPageDefines(p, pages);
-    Defines mark = ctx.defines();
-    mark.insert(pages.begin(), pages.end());
-    mMarkProgram = &ctx.programs.get({"common/scene.vert", "virtual/mark.frag", ""}, mark);
-    Defines depth = ctx.submitter.defines();
-    depth.insert(pages.begin(), pages.end());
-    mPageProgram = &ctx.programs.get({"common/depth.vert", "virtual/page_depth.frag", ""}, depth);
+    mMarkProgram = &ctx.programs.get({"common/scene.vert", "virtual/mark.frag", ""}, ctx.defines());
+    mPageProgram =
+        &ctx.programs.get({"common/depth.vert", "virtual/page_depth.frag", ""}, ctx.submitter.defines());
     Defines lit = ctx.defines();
-    lit.insert(pages.begin(), pages.end());
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, ctx.scene.lights.size()));
     lit["MAPPED_LIGHT"] = std::to_string(mMaps.light());
     setPermutationKey(mMarkProgram->key() + "|" + mPageProgram->key() + "|" +

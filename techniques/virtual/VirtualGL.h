@@ -1,5 +1,5 @@
 #pragma once
-// `virtual` on GL (NOTES-virtual.md): one directional light that casts shadows (others are refused,
+// `virtual` on GL (NOTES-virtual.md): one directional or spot light that casts shadows (others refused,
 // ExitCode::Unsupported, naming the light: VirtualMaps), the atomic path (EEVEE-Next's: casters
 // rasterized in the virtual map's coordinates into a framebuffer with no attachments, each fragment
 // writing its depth into its page's slot of the atlas with imageAtomicMin, shaders/virtual/

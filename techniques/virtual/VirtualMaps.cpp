@@ -28,11 +28,12 @@ void VirtualMaps::setScene(const Scene& scene, const PropertySet& p) {
     for (size_t i = 0; i < scene.lights.size() && i < size_t(kMaxLights); ++i) {
         const Light& l = scene.lights[i];
         if (!l.castsShadows) continue;
-        if (l.type != LightType::Directional)
-            throw Error("virtual: light " + std::to_string(i) + " is a " + lightTypeName(l.type) +
-                            " light; virtual maps directional lights only (spot and point lights: a "
-                            "16k map per spot or six per point light, not built)",
-                        ExitCode::Unsupported);
+        if (l.type == LightType::Point)
+            throw Error(
+                "virtual: light " + std::to_string(i) +
+                    " is a point light; virtual maps directional and spot lights (a point light's six "
+                    "16k faces are not built)",
+                ExitCode::Unsupported);
         if (mLight >= 0)
             throw Error("virtual: lights " + std::to_string(mLight) + " and " + std::to_string(i) +
                             " both cast shadows; virtual maps one light (a page table per light, not built)",

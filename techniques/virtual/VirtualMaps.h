@@ -1,7 +1,8 @@
 #pragma once
 // What `virtual`'s GL and Vulkan forms share (NOTES-virtual.md, "Passes"), as CascadedMaps is for
-// `cascaded`'s: which light has a map (one directional light that casts shadows; the rest refused by
-// name), its transform (fitted once to the whole scene, LightFitBounds::Scene, and refitted only when
+// `cascaded`'s: which light has a map (one directional or spot light that casts shadows; a point light
+// or a second shadowed light refused by name), its transform (a directional light's fitted once to the
+// whole scene, LightFitBounds::Scene; a spot light's its cone, scenes/LightFit.h), refitted only when
 // the light moves, so that moving casters and a moving camera leave it, and the cache, alone), the page
 // cache, the casters' footprints for invalidation, the CPU allocation from the GPU's marks, the runs of
 // pages the depth pass draws and the frame's counters. The forms only record: they draw what this
@@ -35,8 +36,8 @@ struct PageRun {
 
 class VirtualMaps {
 public:
-    /// Picks the mapped light of `scene` (throws sb::Error(Unsupported) naming a point or spot light
-    /// that casts shadows, or a second directional one), makes the cache of `p`'s sizes and fits.
+    /// Picks the mapped light of `scene` (throws sb::Error(Unsupported) naming a point light that casts
+    /// shadows, or a second shadowed light), makes the cache of `p`'s sizes and fits.
     void setScene(const Scene& scene, const PropertySet& p);
     /// A moved light refits the map (the next frame drops every page); moved casters queue their old
     /// and new pages for the next frame's invalidation.

@@ -236,10 +236,7 @@ void VirtualVulkan::createResources(const VulkanCompileContext& ctx) {
 }
 
 void VirtualVulkan::createPipelines(const VulkanCompileContext& ctx) {
-    Defines pages;
-    Virtual::addPageDefines(properties(), pages);
-    Defines mark = ctx.defines();
-    mark.insert(pages.begin(), pages.end());
+    const Defines mark = ctx.defines();
     std::string key = "virtual-mark|";
     GraphicsPipelineDesc d = scenePipeline(ctx, "common/scene.vert", "virtual/mark.frag", mark, mLayout, key);
     d.colourAttachments = 0;
@@ -248,8 +245,7 @@ void VirtualVulkan::createPipelines(const VulkanCompileContext& ctx) {
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.depthWrite = false;
     mMarkEqual = ctx.pipelines.get(key + "|equal", d);
-    Defines depth = ctx.submitter.defines();
-    depth.insert(pages.begin(), pages.end());
+    const Defines depth = ctx.submitter.defines();
     std::string pageKey = "virtual-pages|";
     GraphicsPipelineDesc p =
         scenePipeline(ctx, "common/depth.vert", "virtual/page_depth.frag", depth, mLayout, pageKey);
@@ -259,7 +255,6 @@ void VirtualVulkan::createPipelines(const VulkanCompileContext& ctx) {
     p.renderPass = mPagePass;
     mPages = ctx.pipelines.get(pageKey + (p.depthClamp ? "|clamp" : ""), p);
     Defines lit = ctx.defines();
-    lit.insert(pages.begin(), pages.end());
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, ctx.scene.lights.size()));
     lit["MAPPED_LIGHT"] = std::to_string(mMaps.light());
     setPermutationKey(definesKey(mark) + "|" + definesKey(depth) + "|" +
@@ -282,11 +277,10 @@ void VirtualVulkan::writeBlock() {
     const glm::mat4 m[2] = {VulkanFrameBlock::depthFromGl() * mMaps.lightViewProj(),
                             FlatLightFits::textureBias() * mMaps.lightViewProj()};
     const Virtual::PageUniforms u = Virtual::pageUniforms(properties());
-    const glm::vec4 lod(u.lod, 0.0f, 0.0f);
     char* base = static_cast<char*>(mBlock.map());
     std::memcpy(base, m, sizeof m);
     std::memcpy(base + 128, &u.geometry, sizeof u.geometry);
-    std::memcpy(base + 144, &lod, sizeof lod);
+    std::memcpy(base + 144, &u.lod, sizeof u.lod);
 }
 
 void VirtualVulkan::markAndAllocate(VulkanFrameContext& ctx) {
