@@ -417,6 +417,10 @@ void VulkanContext::createDevice() {
     // raytraced's ray counter: one atomic add per fragment that traced (techniques/raytraced/)
     enabled.fragmentStoresAndAtomics = available.fragmentStoresAndAtomics;
     mFragmentStoresAndAtomics = available.fragmentStoresAndAtomics == VK_TRUE;
+    // virtual's path=sparse: its map one sparse-resident image (techniques/virtual/VirtualVulkan.h)
+    enabled.sparseBinding = available.sparseBinding;
+    enabled.sparseResidencyImage2D = available.sparseResidencyImage2D;
+    mSparseResidency = available.sparseBinding == VK_TRUE && available.sparseResidencyImage2D == VK_TRUE;
     mDepthBounds = available.depthBounds == VK_TRUE;
     mOcclusionQueryPrecise = available.occlusionQueryPrecise == VK_TRUE;
     mDepthClamp = available.depthClamp == VK_TRUE;

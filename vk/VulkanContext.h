@@ -88,6 +88,8 @@ public:
     bool occlusionQueryPrecise() const { return mOcclusionQueryPrecise; }
     /// Fragment-stage stores and atomics (raytraced's exact ray counter).
     bool fragmentStoresAndAtomics() const { return mFragmentStoresAndAtomics; }
+    /// sparseBinding and sparseResidencyImage2D, both enabled (virtual's path=sparse).
+    bool sparseResidency() const { return mSparseResidency; }
     /// Whether ray queries are on: the three extensions and three features above, all enabled.
     bool rayQuery() const { return mRayQuery; }
     /// The acceleration-structure entry points; every pointer is null unless rayQuery().
@@ -153,6 +155,7 @@ private:
     bool mDepthBounds = false;
     bool mOcclusionQueryPrecise = false;
     bool mFragmentStoresAndAtomics = false;
+    bool mSparseResidency = false;
     bool mRayQuery = false;
     RayQueryFunctions mRayQueryFunctions;
     std::vector<std::string> mMissingRayQueryFeatures;

@@ -30,7 +30,11 @@ float tap(vec2 t, float z, int level) {
     ivec2 texel = ivec2(floor(t));
     uint word = texelFetch(uPageTable, tableTexel(level, texel / pageSize()), 0).r;
     if ((word & kPageMapped) == 0u) return 1.0;
+#ifdef VIRTUAL_SPARSE
+    uint stored = texelFetch(uAtlas, texel, level).r; // path=sparse: the map itself, its levels as mips
+#else
     uint stored = texelFetch(uAtlas, atlasOrigin(word & kPageSlotMask) + texel % pageSize(), 0).r;
+#endif
     return z <= uintBitsToFloat(stored) ? 1.0 : 0.0;
 }
 

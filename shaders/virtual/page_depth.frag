@@ -30,5 +30,10 @@ void main() {
     uint word = texelFetch(uPageTable, tableTexel(uLevel, texel / pageSize()), 0).r;
     if ((word & kPageRender) == 0u) return;
     z = clamp(z + uBias.y * slope + uBias.x * exp2(-24.0), 0.0, 1.0);
+#ifdef VIRTUAL_SPARSE
+    // path=sparse: uAtlas is this level of the sparse-resident map, the page bound to its slot's memory.
+    imageAtomicMin(uAtlas, texel, floatBitsToUint(z));
+#else
     imageAtomicMin(uAtlas, atlasOrigin(word & kPageSlotMask) + texel % pageSize(), floatBitsToUint(z));
+#endif
 }

@@ -32,8 +32,9 @@ std::vector<PropertyDesc> declareProperties() {
         choice(
             Virtual::kPath, "atomic", {"atomic", "sparse"},
             "atomic: pages in slots of an atlas, written with imageAtomicMin (both APIs); sparse: the "
-            "virtual map one sparse-resident Vulkan image, pages bound to memory (Vulkan, where the device "
-            "has sparse residency; refused naming what it lacks)"),
+            "virtual map one sparse-resident Vulkan image, its levels as mips, each page bound to its slot's "
+            "memory (Vulkan, where the device has sparse residency: lavapipe 25.0.7; refused naming what it "
+            "lacks)"),
         flag(Virtual::kCache, "true",
              "keep pages' depth across frames until the light or a caster over them moves"),
         P::biasConstant(

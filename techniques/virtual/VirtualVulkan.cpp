@@ -31,13 +31,13 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkAccessFlags 
     vkCmdPipelineBarrier(cmd, src, dst, 0, 1, &b, 0, nullptr, 0, nullptr);
 }
 
-void toGeneral(VkCommandBuffer cmd, VkImage image) {
+void toGeneral(VkCommandBuffer cmd, VkImage image, uint32_t levels = 1) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = image;
-    b.subresourceRange = kColour;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, 1};
     b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0,
@@ -85,6 +85,17 @@ void VirtualVulkan::release() {
     mSampler = VK_NULL_HANDLE;
     mSets = DescriptorSets();
     for (VulkanImage* image : {&mRequests, &mTable, &mAtlas, &mViewDepth}) *image = VulkanImage();
+    for (VkImageView view : mLevelViews) vkDestroyImageView(mDevice, view, nullptr);
+    mLevelViews.clear();
+    vkDestroyImageView(mDevice, mSparseView, nullptr);
+    vkDestroyImage(mDevice, mSparseImage, nullptr);
+    vkFreeMemory(mDevice, mSparseMemory, nullptr);
+    vkDestroyFence(mDevice, mBindFence, nullptr);
+    mSparseView = VK_NULL_HANDLE;
+    mSparseImage = VK_NULL_HANDLE;
+    mSparseMemory = VK_NULL_HANDLE;
+    mBindFence = VK_NULL_HANDLE;
+    mBound.clear();
     for (VulkanBuffer* buffer : {&mMarks, &mTableWords, &mClearPage, &mBlock}) *buffer = VulkanBuffer();
     mDevice = VK_NULL_HANDLE;
 }
@@ -118,20 +129,16 @@ std::string VirtualVulkan::sparseRefusal(const VulkanContext& context) const {
         lacks.emplace_back("sparse R32_UINT storage images (no sparse format properties)");
     } else {
         const VkExtent3D block = formats[0].imageGranularity;
-        if (page % block.width != 0 || page % block.height != 0)
-            lacks.push_back("a sparse block that tiles page_size " + std::to_string(page) +
-                            " (the device's is " + std::to_string(block.width) + "x" +
+        if (page != block.width || page != block.height)
+            lacks.push_back("a sparse block of page_size " + std::to_string(page) +
+                            " texels a side (the device's is " + std::to_string(block.width) + "x" +
                             std::to_string(block.height) + ")");
     }
-    if (!lacks.empty())
-        return name() + ":path=sparse needs " + join(lacks, " and ") + " (not available on " +
-               context.info().name + ", Vulkan " + context.info().apiVersion + "); path=atomic runs here";
-    return name() + ":path=sparse: " + context.info().name +
-           " has sparseBinding, sparseResidencyImage2D, a sparse-binding queue and R32_UINT sparse blocks "
-           "that "
-           "tile a page, but the sparse path's page binding and drawing are not built yet "
-           "(NOTES-virtual.md); "
-           "path=atomic runs here";
+    if (lacks.empty() && !context.sparseResidency())
+        lacks.emplace_back("a device created with sparseBinding and sparseResidencyImage2D");
+    if (lacks.empty()) return "";
+    return name() + ":path=sparse needs " + join(lacks, " and ") + " (not available on " +
+           context.info().name + ", Vulkan " + context.info().apiVersion + "); path=atomic runs here";
 }
 
 std::string VirtualVulkan::checkCapabilities(const VulkanContext& context) const {
@@ -163,14 +170,101 @@ void VirtualVulkan::sceneChanged(const Scene& scene, uint32_t changes) {
     mMaps.sceneChanged(scene, changes);
 }
 
+void VirtualVulkan::createSparseMap(VulkanContext& context) {
+    const PageGeometry& g = mMaps.geometry();
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = VK_IMAGE_CREATE_SPARSE_BINDING_BIT | VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = VK_FORMAT_R32_UINT;
+    info.extent = {uint32_t(g.virtualResolution()), uint32_t(g.virtualResolution()), 1};
+    info.mipLevels = uint32_t(g.levels());
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VulkanContext::check(vkCreateImage(mDevice, &info, nullptr, &mSparseImage),
+                         "vkCreateImage (virtual sparse)");
+    VkMemoryRequirements req{};
+    vkGetImageMemoryRequirements(mDevice, mSparseImage, &req);
+    // A page is one sparse block (sparseRefusal made sure): slot s's memory is block s of the pool.
+    mPageBytes =
+        std::max<VkDeviceSize>(req.alignment, VkDeviceSize(g.pageSize()) * VkDeviceSize(g.pageSize()) * 4);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = mPageBytes * VkDeviceSize(g.poolPages());
+    alloc.memoryTypeIndex = context.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VulkanContext::check(vkAllocateMemory(mDevice, &alloc, nullptr, &mSparseMemory),
+                         "vkAllocateMemory (virtual pool)");
+    auto view = [&](uint32_t level, uint32_t count) {
+        VkImageViewCreateInfo v{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        v.image = mSparseImage;
+        v.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        v.format = VK_FORMAT_R32_UINT;
+        v.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, count, 0, 1};
+        VkImageView out = VK_NULL_HANDLE;
+        VulkanContext::check(vkCreateImageView(mDevice, &v, nullptr, &out),
+                             "vkCreateImageView (virtual sparse)");
+        return out;
+    };
+    mSparseView = view(0, uint32_t(g.levels()));
+    for (int l = 0; l < g.levels(); ++l) mLevelViews.push_back(view(uint32_t(l), 1));
+    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VulkanContext::check(vkCreateFence(mDevice, &fence, nullptr, &mBindFence), "vkCreateFence (virtual)");
+    mBound.assign(g.pageCount(), PageTable::kNoSlot);
+}
+
+void VirtualVulkan::bindPages() {
+    const PageGeometry& g = mMaps.geometry();
+    const PageTable& table = mMaps.cache().table();
+    const uint32_t side = uint32_t(g.pageSize());
+    // Unbinds first, then binds, each batch waited for: a slot handed from one page to another this
+    // frame must leave the old page before it backs the new one (the image is not aliased).
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<VkSparseImageMemoryBind> binds;
+        for (uint32_t page = 0; page < g.pageCount(); ++page) {
+            const uint32_t want = table.mapped(page) ? table.slot(page) : PageTable::kNoSlot;
+            if (want == mBound[page]) continue;
+            const bool unbind = mBound[page] != PageTable::kNoSlot;
+            if ((pass == 0) != unbind) continue;
+            const PageAddress a = g.address(page);
+            VkSparseImageMemoryBind b{};
+            b.subresource = {VK_IMAGE_ASPECT_COLOR_BIT, uint32_t(a.level), 0};
+            b.offset = {a.page.x * int(side), a.page.y * int(side), 0};
+            b.extent = {side, side, 1};
+            if (pass == 0) {
+                mBound[page] = PageTable::kNoSlot;
+            } else {
+                b.memory = mSparseMemory;
+                b.memoryOffset = VkDeviceSize(want) * mPageBytes;
+                mBound[page] = want;
+            }
+            binds.push_back(b);
+        }
+        if (binds.empty()) continue;
+        const VkSparseImageMemoryBindInfo image{mSparseImage, uint32_t(binds.size()), binds.data()};
+        VkBindSparseInfo info{VK_STRUCTURE_TYPE_BIND_SPARSE_INFO};
+        info.imageBindCount = 1;
+        info.pImageBinds = &image;
+        VulkanContext::check(vkQueueBindSparse(mContext->queue(), 1, &info, mBindFence), "vkQueueBindSparse");
+        VulkanContext::check(vkWaitForFences(mDevice, 1, &mBindFence, VK_TRUE, UINT64_MAX),
+                             "vkWaitForFences");
+        VulkanContext::check(vkResetFences(mDevice, 1, &mBindFence), "vkResetFences");
+    }
+}
+
 void VirtualVulkan::createResources(const VulkanCompileContext& ctx) {
     VulkanContext& context = ctx.context;
     const PageGeometry& g = mMaps.geometry();
     constexpr VkImageUsageFlags transfer = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     mRequests = r32ui(context, g.pagesPerSide(), g.tableRows(), VK_IMAGE_USAGE_STORAGE_BIT | transfer);
     mTable = r32ui(context, g.pagesPerSide(), g.tableRows(), VK_IMAGE_USAGE_SAMPLED_BIT | transfer);
-    mAtlas = r32ui(context, g.atlasResolution(), g.atlasResolution(),
-                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | transfer);
+    mSparse = Virtual::sparse(properties());
+    if (mSparse)
+        createSparseMap(context);
+    else
+        mAtlas = r32ui(context, g.atlasResolution(), g.atlasResolution(),
+                       VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | transfer);
     VulkanImageDesc depth;
     mViewExtent = {uint32_t(ctx.targets.width()), uint32_t(ctx.targets.height())};
     depth.width = mViewExtent.width;
@@ -180,7 +274,8 @@ void VirtualVulkan::createResources(const VulkanCompileContext& ctx) {
     depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
     mViewDepth = VulkanImage(context, depth);
     context.submitNow([&](VkCommandBuffer cmd) {
-        for (const VulkanImage* image : {&mRequests, &mTable, &mAtlas}) toGeneral(cmd, image->image());
+        for (const VulkanImage* image : {&mRequests, &mTable}) toGeneral(cmd, image->image());
+        toGeneral(cmd, mSparse ? mSparseImage : mAtlas.image(), mSparse ? uint32_t(g.levels()) : 1u);
         const VkClearColorValue zero{};
         vkCmdClearColorImage(cmd, mTable.image(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &kColour);
     });
@@ -195,18 +290,23 @@ void VirtualVulkan::createResources(const VulkanCompileContext& ctx) {
     using D = DescriptorSets;
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-    mSets = DescriptorSets(mDevice,
-                           {{D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, both),
-                             D::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, fragment),
-                             D::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, fragment),
-                             D::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
-                             D::binding(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment)}},
-                           "virtual");
-    mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mBlock.buffer(), mBlock.size());
-    mSets.writeStorageImage(0, 1, mRequests.view());
-    mSets.writeStorageImage(0, 2, mAtlas.view());
-    mSets.writeImage(0, 3, mSampler, mAtlas.view(), VK_IMAGE_LAYOUT_GENERAL);
-    mSets.writeImage(0, 4, mSampler, mTable.view(), VK_IMAGE_LAYOUT_GENERAL);
+    // One set on the atomic path; on the sparse path one per level, identical but for binding 2, the
+    // level the page pass writes (a storage view is of one level).
+    const DescriptorSets::Bindings bindings = {
+        D::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, both),
+        D::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, fragment),
+        D::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, fragment),
+        D::binding(3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
+        D::binding(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment)};
+    const size_t sets = mSparse ? size_t(g.levels()) : 1;
+    mSets = DescriptorSets(mDevice, std::vector<DescriptorSets::Bindings>(sets, bindings), "virtual");
+    for (size_t i = 0; i < sets; ++i) {
+        mSets.writeBuffer(i, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mBlock.buffer(), mBlock.size());
+        mSets.writeStorageImage(i, 1, mRequests.view());
+        mSets.writeStorageImage(i, 2, mSparse ? mLevelViews[i] : mAtlas.view());
+        mSets.writeImage(i, 3, mSampler, mSparse ? mSparseView : mAtlas.view(), VK_IMAGE_LAYOUT_GENERAL);
+        mSets.writeImage(i, 4, mSampler, mTable.view(), VK_IMAGE_LAYOUT_GENERAL);
+    }
     mLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
 
     // The marking pass: the view's depth, then the marks' stores; after it the marks are copied out.
@@ -245,7 +345,8 @@ void VirtualVulkan::createPipelines(const VulkanCompileContext& ctx) {
     d.depthCompare = VK_COMPARE_OP_EQUAL;
     d.depthWrite = false;
     mMarkEqual = ctx.pipelines.get(key + "|equal", d);
-    const Defines depth = ctx.submitter.defines();
+    Defines depth = ctx.submitter.defines();
+    if (mSparse) depth["VIRTUAL_SPARSE"] = "";
     std::string pageKey = "virtual-pages|";
     GraphicsPipelineDesc p =
         scenePipeline(ctx, "common/depth.vert", "virtual/page_depth.frag", depth, mLayout, pageKey);
@@ -255,6 +356,7 @@ void VirtualVulkan::createPipelines(const VulkanCompileContext& ctx) {
     p.renderPass = mPagePass;
     mPages = ctx.pipelines.get(pageKey + (p.depthClamp ? "|clamp" : ""), p);
     Defines lit = ctx.defines();
+    if (mSparse) lit["VIRTUAL_SPARSE"] = "";
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, ctx.scene.lights.size()));
     lit["MAPPED_LIGHT"] = std::to_string(mMaps.light());
     setPermutationKey(definesKey(mark) + "|" + definesKey(depth) + "|" +
@@ -320,6 +422,7 @@ void VirtualVulkan::markAndAllocate(VulkanFrameContext& ctx) {
     });
     mMaps.allocate(static_cast<const uint32_t*>(mMarks.map()), properties().getBool(Virtual::kCache), mWords);
     std::memcpy(mTableWords.map(), mWords.data(), mWords.size() * 4);
+    if (mSparse) bindPages();
 }
 
 void VirtualVulkan::recordPages(VulkanFrameContext& ctx) {
@@ -334,24 +437,28 @@ void VirtualVulkan::recordPages(VulkanFrameContext& ctx) {
     vkCmdCopyBufferToImage(cmd, mTableWords.buffer(), mTable.image(), VK_IMAGE_LAYOUT_GENERAL, 1, &table);
     std::vector<VkBufferImageCopy> clears;
     for (uint32_t page : mMaps.cache().renderList()) {
-        const glm::ivec2 o = g.atlasOrigin(mMaps.cache().table().slot(page));
+        // The atomic path clears the page's slot in the atlas; the sparse path the page itself, at its
+        // level of the map (its slot's memory bound there).
+        const PageAddress a = g.address(page);
+        const glm::ivec2 o =
+            mSparse ? a.page * g.pageSize() : g.atlasOrigin(mMaps.cache().table().slot(page));
         VkBufferImageCopy c{};
-        c.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        c.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mSparse ? uint32_t(a.level) : 0u, 0, 1};
         c.imageOffset = {o.x, o.y, 0};
         c.imageExtent = {uint32_t(g.pageSize()), uint32_t(g.pageSize()), 1};
         clears.push_back(c);
     }
     if (!clears.empty())
-        vkCmdCopyBufferToImage(cmd, mClearPage.buffer(), mAtlas.image(), VK_IMAGE_LAYOUT_GENERAL,
-                               uint32_t(clears.size()), clears.data());
+        vkCmdCopyBufferToImage(cmd, mClearPage.buffer(), mSparse ? mSparseImage : mAtlas.image(),
+                               VK_IMAGE_LAYOUT_GENERAL, uint32_t(clears.size()), clears.data());
     memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     VulkanPush push;
     push.vec = glm::vec4(float(properties().getFloat(P::kBiasConstant)),
                          float(properties().getFloat(P::kBiasSlope)), 0.0f, 0.0f);
-    const VkDescriptorSet set = mSets.set(0);
     for (const PageRun& run : mMaps.runs()) {
+        const VkDescriptorSet set = mSets.set(mSparse ? size_t(run.level) : 0); // sparse: the level's view
         // A render pass per run whose render area is the run: lavapipe works over the render area, and a
         // pass over the whole 16k^2 framebuffer cost seconds a frame with many draws.
         const VkRect2D area{{run.first.x * g.pageSize(), run.first.y * g.pageSize()},

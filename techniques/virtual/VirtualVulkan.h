@@ -13,7 +13,10 @@
 // without attachments of virtual_resolution^2, the casters of each run under its scissor, each fragment
 // an imageAtomicMin into the atlas), and the lighting pass. Every image stays in the general layout.
 // Needs fragmentStoresAndAtomics and a framebuffer and viewport of virtual_resolution texels; a device
-// without them is refused naming what is missing.
+// without them is refused naming what is missing. path=sparse: the map one sparse-resident R32_UINT
+// image (levels as mips) instead of the atlas, each page bound to its slot's block of one pool
+// allocation by vkQueueBindSparse (the table's changes each frame), written and read at its own texels
+// (shaders/virtual/*'s VIRTUAL_SPARSE); refused where the device lacks sparse residency (sparseRefusal).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -45,10 +48,14 @@ public:
     const PageCounts& pageCounts() const { return mMaps.counts(); }
 
 private:
-    /// path=sparse: what the device lacks for sparse residency, each by name; where it lacks nothing, that
-    /// the sparse path is not built yet. Always a refusal.
+    /// path=sparse: what the device lacks for sparse residency, each by name; "" where it has it all.
     std::string sparseRefusal(const VulkanContext& context) const;
     void release();
+    /// path=sparse: the map as one sparse-resident R32_UINT image, its levels as mips, and the pool as one
+    /// allocation of pool_pages blocks; a storage view per level, a sampled view of all.
+    void createSparseMap(VulkanContext& context);
+    /// path=sparse: the table's changes since the last frame as sparse binds (unbinds first), waited for.
+    void bindPages();
     void createResources(const VulkanCompileContext& ctx);
     void createPipelines(const VulkanCompileContext& ctx);
     void writeBlock();
@@ -78,6 +85,14 @@ private:
     VkPipeline mMarkDepth = VK_NULL_HANDLE, mMarkEqual = VK_NULL_HANDLE, mPages = VK_NULL_HANDLE; ///< cached
     LitPipelines mLighting;
     VkExtent2D mViewExtent{0, 0};
+    bool mSparse = false;
+    VkImage mSparseImage = VK_NULL_HANDLE;
+    VkDeviceMemory mSparseMemory = VK_NULL_HANDLE;
+    VkImageView mSparseView = VK_NULL_HANDLE;
+    std::vector<VkImageView> mLevelViews;
+    VkFence mBindFence = VK_NULL_HANDLE;
+    VkDeviceSize mPageBytes = 0;
+    std::vector<uint32_t> mBound; ///< per page: the slot whose memory is bound to it, or PageTable::kNoSlot
     Counters mCounters;
 };
 
