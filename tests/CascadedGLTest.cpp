@@ -9,6 +9,10 @@
 //      view spans every cascade;
 //  (c) a long, low view down a street of `city`: against the reference, cascaded gets fewer pixels
 //      wrong than shadowmap near the camera and over the whole image;
+//  (d) fit=sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps): the GPU reduction of
+//      the depth pre-pass equals the min and max the CPU finds in the same depth image read back
+//      (exact: both compare the stored floats), and the splits bracket every pixel the lighting pass
+//      drew, no wider than their padding;
 //  and the refusals (point lights) and spot lights as shadowmap does them.
 #include <algorithm>
 #include <cmath>
@@ -23,6 +27,7 @@
 #include "bench/lib/measure/AccuracyEvaluator.h"
 #include "core/Error.h"
 #include "scenes/Math.h"
+#include "techniques/shadowmap/CascadeSplits.h"
 #include "techniques/shadowmap/CascadedGL.h"
 
 using namespace sb;
@@ -51,6 +56,7 @@ Frame render(Harness& h, GlTechnique& t) {
 std::unique_ptr<CascadedGL> cascaded(const std::string& props) {
     auto t = std::make_unique<CascadedGL>();
     if (!props.empty()) t->properties().apply(TechniqueSpec::parse("cascaded:" + props).properties);
+    t->propertiesApplied(); // as the registry's create does: fit=sdsm's passes
     return t;
 }
 
@@ -419,6 +425,76 @@ TEST(CascadedGL, IdenticalCascadesShareOneMap) {
     std::cout << "city top: wrong " << r.hard.wrongPct << "%, off edge " << r.hard.wrongNoEdgePct << "%\n";
     // The one map's staircase on the edge band (measured below); nothing off it.
     EXPECT_LE(r.hard.wrongNoEdgePct, 0.01);
+}
+
+/// The pre-pass's depth texture of `t`'s last frame, read back (GL_FLOAT: the stored 32-bit floats).
+std::vector<float> readPrePass(const CascadedGL& t, int width, int height) {
+    std::vector<float> depth(size_t(width) * size_t(height));
+    glGetTextureImage(t.depthRange().depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      GLsizei(depth.size() * sizeof(float)), depth.data());
+    return depth;
+}
+
+struct SdsmView {
+    const char* scene;
+    const char* camera;
+};
+const SdsmView kSdsmViews[] = {{"sphere_plane", "top"}, {"city", "mid"}, {"aircraft", "mid"}};
+
+TEST(CascadedSdsm, ReductionEqualsTheCpuMinMaxOfTheSameDepthImage) {
+    for (const SdsmView& v : kSdsmViews) {
+        Harness h(test::quickConfig(v.scene, v.camera, 200));
+        auto t = cascaded("fit=sdsm:resolution=256");
+        test::renderOnce(h, *t);
+        const std::vector<float> depth = readPrePass(*t, h.targets().width(), h.targets().height());
+        float lo = 1.0f, hi = 0.0f;
+        size_t covered = 0;
+        for (float d : depth)
+            if (d < 1.0f) {
+                lo = std::min(lo, d);
+                hi = std::max(hi, d);
+                ++covered;
+            }
+        const glm::vec2 gpu = t->depthRange().latestWindowRange();
+        std::cout << v.scene << " " << v.camera << ": " << covered << " covered pixels, window depth [" << lo
+                  << ", " << hi << "]\n";
+        ASSERT_GT(covered, 0u) << v.scene;
+        // The same stored floats, min and max: no tolerance.
+        EXPECT_EQ(gpu.x, lo) << v.scene << " " << v.camera;
+        EXPECT_EQ(gpu.y, hi) << v.scene << " " << v.camera;
+    }
+}
+
+TEST(CascadedSdsm, SplitsBracketEveryPixelTheLightingPassDrew) {
+    for (const SdsmView& v : kSdsmViews) {
+        Harness h(test::quickConfig(v.scene, v.camera, 200));
+        auto t = cascaded("fit=sdsm:resolution=256");
+        const test::RenderedFrame f = test::renderOnce(h, *t);
+        // The view depth of every pixel the lighting pass drew, from its own depth buffer: independent of
+        // the pre-pass and the reduction.
+        double lo = 1e30, hi = -1e30;
+        for (const glm::vec4& p : f.world) {
+            if (p.w == 0.0f) continue;
+            const double d = -double((h.view() * glm::vec4(glm::vec3(p), 1.0f)).z);
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+        ASSERT_LT(lo, hi) << v.scene;
+        const std::vector<float>& s = t->splits();
+        ASSERT_EQ(s.size(), 5u);
+        // The harness's depth buffer is 24-bit: its depths round to 2^-24 of the window range, which
+        // near the far end of a 1:1000 perspective is worth up to ~1e-3 relative; the padding is 1% of
+        // the interval plus 1e-5 of far, so the splits must still hold every pixel.
+        std::cout << v.scene << " " << v.camera << ": pixels at view depth [" << lo << ", " << hi
+                  << "], splits [" << s.front() << ", " << s.back() << "]\n";
+        EXPECT_LE(s.front(), lo * (1.0 + 1e-3)) << v.scene;
+        EXPECT_GE(s.back(), hi * (1.0 - 1e-3)) << v.scene;
+        // No wider than the padding (2% of the interval plus 2e-5 of far) and the depth rounding.
+        const double far = CascadeSplits::nearFar(h.projection()).y;
+        EXPECT_LE(double(s.back()) - double(s.front()), 1.02 * (hi - lo) + 2e-5 * far + 2e-3 * hi) << v.scene;
+        EXPECT_EQ(test::counter(f.counters, "depth_min"),
+                  double(CascadeSplits::viewDepths(t->depthRange().windowRange(), h.projection()).x));
+    }
 }
 
 } // namespace

@@ -1,5 +1,8 @@
 #include "techniques/shadowmap/Cascaded.h"
 
+#include <algorithm>
+#include <string>
+
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
 
@@ -15,8 +18,12 @@ std::vector<PropertyDesc> declareProperties() {
         P::resolution("2048", "width and height of each cascade's map (texels)"),
         integer(Cascaded::kCascades, "4", 1, Cascaded::kMaxCascades,
                 "slices of the view frustum, one map each (directional lights)"),
+        choice(Cascaded::kFit, Cascaded::kFitPractical, {Cascaded::kFitPractical, Cascaded::kFitSdsm},
+               "where the splits go: practical (Zhang et al. 2006, weighted by lambda, over the receivers' "
+               "depths) or sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps: the "
+               "logarithmic split of the min and max view depth a depth pre-pass finds, reduced on the GPU)"),
         real(Cascaded::kLambda, "0.75", 0, 1,
-             "practical split weight: 0 uniform, 1 logarithmic (Zhang et al. 2006)"),
+             "practical split weight: 0 uniform, 1 logarithmic (Zhang et al. 2006); fit=sdsm ignores it"),
         flag(Cascaded::kStabilize, "true",
              "bounding-sphere extent snapped to whole texels (no shimmer) instead of the tight box"),
         real(Cascaded::kBlend, "0.1", 0, 1,
@@ -31,12 +38,13 @@ std::vector<PropertyDesc> declareProperties() {
 
 TechniqueInfo Cascaded::declaration() {
     return {.name = "cascaded",
-            .description = "cascaded shadow maps: the view frustum split into slices (practical split), "
-                           "one stable map per slice",
+            .description = "cascaded shadow maps: the view frustum split into slices (practical split, or "
+                           "fit=sdsm: Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps, its "
+                           "z-partitioning of the view's own min and max depth), one stable map per slice",
             .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
                        Effect::MultipleLights,
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
+            .passes = passes(false),
             .properties = declareProperties(),
             // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
             .quality =
@@ -47,9 +55,26 @@ TechniqueInfo Cascaded::declaration() {
                     P::pcfSweep(),
                 },
             .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, uint64_t(p.getInt(kCascades)),
-                                  in);
+                ResourceEstimate e =
+                    squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, uint64_t(p.getInt(kCascades)), in);
+                if (!sampleDistribution(p)) return e;
+                // fit=sdsm's pre-pass: one 32-bit float depth texel per pixel (its two 8-byte answer
+                // buffers are below the estimate's resolution).
+                const uint64_t pixels = uint64_t(std::max(0, in.width)) * uint64_t(std::max(0, in.height));
+                e.bytes += pixels * kDepthTexelBytes;
+                e.how += " + " + std::to_string(in.width) + "x" + std::to_string(in.height) +
+                         " pixels x 4 B (fit=sdsm's depth pre-pass)";
+                return e;
             }};
+}
+
+bool Cascaded::sampleDistribution(const PropertySet& p) {
+    return p.getEnum(kFit) == kFitSdsm;
+}
+
+std::vector<std::string> Cascaded::passes(bool sampleDistribution) {
+    if (sampleDistribution) return {"depth_range", "depth", "lighting"};
+    return {"depth", "lighting"};
 }
 
 } // namespace sb

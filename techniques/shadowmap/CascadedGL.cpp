@@ -23,8 +23,13 @@ constexpr GLint kSlotLayerLocation = 32;  // likewise
 
 CascadedGL::CascadedGL() : GlTechnique(Cascaded::declaration()) {}
 
+void CascadedGL::propertiesApplied() {
+    mutableInfo().passes = Cascaded::passes(Cascaded::sampleDistribution(properties()));
+}
+
 void CascadedGL::setScene(const Scene& scene) {
     mPlan.setScene(scene, int(properties().getInt(Cascaded::kCascades)));
+    mRange.reset();
 }
 
 void CascadedGL::compile(const CompileContext& ctx) {
@@ -32,6 +37,7 @@ void CascadedGL::compile(const CompileContext& ctx) {
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), mPlan.slotCount(), false);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    if (Cascaded::sampleDistribution(p)) mRange.compile(ctx.programs, base);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
     setPermutationKey(
@@ -72,14 +78,17 @@ void CascadedGL::renderLighting(FrameContext& ctx) {
 }
 
 void CascadedGL::execute(FrameContext& ctx) {
+    glm::vec2 samples(1.0f, 0.0f); // fit=sdsm: the reduction's view-depth interval
+    std::function<void()> depthRange;
+    if (Cascaded::sampleDistribution(properties())) depthRange = [&] { samples = mRange.run(ctx); };
     const SubmitStats s = DepthLightingFrame::run(
         ctx,
         [&] {
-            mPlan.fit(ctx.view, ctx.proj, properties(), mMaps.size());
+            mPlan.fit(ctx.view, ctx.proj, properties(), mMaps.size(), samples);
             renderDepth(ctx);
         },
-        [&] { renderLighting(ctx); });
-    mCounters = mPlan.counters(s, mMaps.size(), ctx.scene);
+        [&] { renderLighting(ctx); }, depthRange);
+    mCounters = mPlan.counters(s, mMaps.size(), ctx.scene, properties());
 }
 
 } // namespace sb

@@ -22,13 +22,21 @@ public:
     /// program computes none (every light unshadowed or no receiver: common/lighting.glsl). `FrameCtx` is
     /// either API's frame context (techniques/gl/GlTechnique.h, techniques/vulkan/VulkanTechnique.h):
     /// both have the scene, a submitter with resetStats()/stats() and a pass timer with begin()/skip().
+    /// `depthRange`, where given (`cascaded` fit=sdsm), runs first in pass "depth_range" (skipped with the
+    /// depth pass).
     template <typename FrameCtx>
     static SubmitStats run(FrameCtx& ctx, const std::function<void()>& depth,
-                           const std::function<void()>& lighting) {
+                           const std::function<void()>& lighting,
+                           const std::function<void()>& depthRange = {}) {
         ctx.submitter.resetStats();
         if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+            if (depthRange) ctx.passes.skip("depth_range", reason);
             ctx.passes.skip("depth", reason);
         } else {
+            if (depthRange) {
+                ctx.passes.begin("depth_range");
+                depthRange();
+            }
             ctx.passes.begin("depth");
             depth();
         }
