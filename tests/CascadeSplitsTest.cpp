@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "techniques/ViewDepth.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/CascadeSplits.h"
 
@@ -287,18 +288,20 @@ TEST(CascadeFit, RadiusRoundsUpByAtMostOneThirtySecond) {
 
 } // namespace
 
-// fit=sdsm: the window depths the reduction returns back to view depth. The closed form of GL's
-// perspective window depth, w(d) = f (d - n) / (d (f - n)), is the independent answer; orthographic is
-// linear, w(d) = (d - n) / (f - n). 1e-4 relative: float projection entries (as NearFarFromTheProjection)
-// and the float window depth, whose ulp near 1 is worth 6e-4 of view depth at d = f = 100.
-TEST(CascadeSplits, ViewDepthsInvertTheWindowDepth) {
+// fit=sdsm: the window depths the reduction returns back to view depth (techniques/ViewDepth.h, the view
+// depth pre-pass's neutral half; here beside the splits it feeds, not in an executable of its own). The
+// closed form of GL's perspective window depth, w(d) = f (d - n) / (d (f - n)), is the independent answer;
+// orthographic is linear, w(d) = (d - n) / (f - n). 1e-4 relative: float projection entries (as
+// NearFarFromTheProjection) and the float window depth, whose ulp near 1 is worth 6e-4 of view depth at d = f
+// = 100.
+TEST(ViewDepth, ViewDepthsInvertTheWindowDepth) {
     const float n = 1.0f, f = 100.0f;
     const glm::mat4 persp = glm::perspective(glm::radians(50.0f), 1.25f, n, f);
     const glm::mat4 ortho = glm::ortho(-4.0f, 4.0f, -3.0f, 3.0f, n, f);
     for (double d : {1.0, 4.0, 25.0, 100.0}) {
         const float wp = float(f * (d - n) / (d * (f - n))), wo = float((d - n) / (f - n));
-        const glm::vec2 p = CascadeSplits::viewDepths({wp, wp}, persp);
-        const glm::vec2 o = CascadeSplits::viewDepths({wo, wo}, ortho);
+        const glm::vec2 p = ViewDepth::viewDepths({wp, wp}, persp);
+        const glm::vec2 o = ViewDepth::viewDepths({wo, wo}, ortho);
         EXPECT_NEAR(p.x, d, 1e-4 * d) << "perspective, depth " << d;
         EXPECT_NEAR(o.y, d, 1e-4 * d) << "orthographic, depth " << d;
     }

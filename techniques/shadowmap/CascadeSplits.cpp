@@ -53,16 +53,6 @@ glm::vec2 CascadeSplits::pad(float lo, float hi, glm::vec2 nearFar) {
     return {n, std::max(f, n * (1.0f + 1e-6f))};
 }
 
-glm::vec2 CascadeSplits::viewDepths(glm::vec2 window, const glm::mat4& proj) {
-    const double a = proj[2][2], b = proj[3][2];
-    glm::vec2 out;
-    for (int i = 0; i < 2; ++i) {
-        const double z = 2.0 * double(window[i]) - 1.0;
-        out[i] = proj[2][3] != 0.0f ? float(b / (z + a)) : float((b - z) / a);
-    }
-    return out;
-}
-
 std::vector<float> CascadeSplits::sampleDistribution(glm::vec2 samples, glm::vec2 nearFar, int count) {
     const glm::vec2 range = samples.x > samples.y ? nearFar : pad(samples.x, samples.y, nearFar);
     return practical(range.x, range.y, count, 1.0f);

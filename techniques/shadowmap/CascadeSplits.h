@@ -43,12 +43,6 @@ public:
     static glm::vec2 clipToReceivers(glm::vec2 nearFar, const glm::mat4& view, const glm::mat4& proj,
                                      const std::vector<Aabb>& receivers);
 
-    /// The view depths (x near, y far; positive) of window depths `window` in [0, 1] (GL's default depth
-    /// range; Vulkan's with the harness's depthFromGl projection is the same) under `proj` (perspective:
-    /// b / (z_ndc + a); orthographic: (b - z_ndc) / a, z_ndc = 2 window - 1). Monotonic: the min and max
-    /// of the window depths are those of the view depths.
-    static glm::vec2 viewDepths(glm::vec2 window, const glm::mat4& proj);
-
     /// The sample distribution split: `samples` (the view depths of the nearest and farthest pixel)
     /// padded as clipToReceivers pads the receivers' interval and kept within `nearFar`, then split
     /// logarithmically into `count` cascades (practical with lambda = 1). An empty interval (x > y: no

@@ -1,10 +1,10 @@
 #include "techniques/shadowmap/Cascaded.h"
 
-#include <algorithm>
 #include <string>
 
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
+#include "techniques/ViewDepth.h"
 
 namespace sb {
 
@@ -58,12 +58,10 @@ TechniqueInfo Cascaded::declaration() {
                 ResourceEstimate e =
                     squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, uint64_t(p.getInt(kCascades)), in);
                 if (!sampleDistribution(p)) return e;
-                // fit=sdsm's pre-pass: one 32-bit float depth texel per pixel (its two 8-byte answer
-                // buffers are below the estimate's resolution).
-                const uint64_t pixels = uint64_t(std::max(0, in.width)) * uint64_t(std::max(0, in.height));
-                e.bytes += pixels * kDepthTexelBytes;
-                e.how += " + " + std::to_string(in.width) + "x" + std::to_string(in.height) +
-                         " pixels x 4 B (fit=sdsm's depth pre-pass)";
+                // fit=sdsm's view depth pre-pass (its two 8-byte answer buffers are below the estimate's
+                // resolution).
+                e.bytes += ViewDepth::bytes(in.width, in.height);
+                e.how += " + " + ViewDepth::describe(in.width, in.height, "fit=sdsm");
                 return e;
             }};
 }

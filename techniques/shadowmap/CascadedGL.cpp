@@ -37,7 +37,10 @@ void CascadedGL::compile(const CompileContext& ctx) {
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), mPlan.slotCount(), false);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
-    if (Cascaded::sampleDistribution(p)) mRange.compile(ctx.programs, base);
+    if (Cascaded::sampleDistribution(p)) {
+        mViewDepth.compile(ctx.programs, base);
+        mRange.compile(ctx.programs);
+    }
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
     setPermutationKey(
@@ -80,7 +83,11 @@ void CascadedGL::renderLighting(FrameContext& ctx) {
 void CascadedGL::execute(FrameContext& ctx) {
     glm::vec2 samples(1.0f, 0.0f); // fit=sdsm: the reduction's view-depth interval
     std::function<void()> depthRange;
-    if (Cascaded::sampleDistribution(properties())) depthRange = [&] { samples = mRange.run(ctx); };
+    if (Cascaded::sampleDistribution(properties()))
+        depthRange = [&] {
+            mViewDepth.render(ctx);
+            samples = mRange.run(mViewDepth);
+        };
     const SubmitStats s = DepthLightingFrame::run(
         ctx,
         [&] {

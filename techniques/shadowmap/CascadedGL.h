@@ -23,9 +23,9 @@
 // 1.68x with the default 0.1).
 //
 // fit=sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps, I3D) adds pass
-// "depth_range" before "depth": a depth pre-pass of the camera's view reduced on the GPU to its min and max
-// depth (techniques/shadowmap/DepthRangeGL.h, read back one frame late), whose interval the splits
-// divide logarithmically (CascadeSplits::sampleDistribution).
+// "depth_range" before "depth": the view depth pre-pass (techniques/gl/ViewDepthGL.h) reduced on the GPU
+// to its min and max depth (techniques/shadowmap/DepthRangeGL.h, read back one frame late), whose
+// interval the splits divide logarithmically (CascadeSplits::sampleDistribution).
 //
 // Spot lights get one perspective map fitted as `shadowmap` does (scenes/LightFit.h); point lights
 // need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
@@ -42,6 +42,7 @@
 
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
+#include "techniques/gl/ViewDepthGL.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/Cascaded.h"
 #include "techniques/shadowmap/CascadedMaps.h"
@@ -64,7 +65,8 @@ public:
     /// the last frame: what the tests compare against closed forms.
     const std::vector<float>& splits() const { return mPlan.splits(); }
     const std::vector<Cascade>& cascades(size_t light) const { return mPlan.cascades(light); }
-    /// fit=sdsm: the pre-pass and reduction (its depth texture and last answer, for the tests).
+    /// fit=sdsm: the view depth pre-pass and its reduction (for the tests).
+    const ViewDepthGL& viewDepth() const { return mViewDepth; }
     const DepthRangeGL& depthRange() const { return mRange; }
 
 private:
@@ -73,7 +75,8 @@ private:
 
     CascadedMaps mPlan;            ///< lights, slots, fits and the depth pass's plan (both APIs')
     DepthLayers mMaps{"cascaded"}; ///< GL_TEXTURE_2D_ARRAY, one layer per slot
-    DepthRangeGL mRange;           ///< fit=sdsm: the view's depth range (pass "depth_range")
+    ViewDepthGL mViewDepth;        ///< fit=sdsm: the view's depth (pass "depth_range")
+    DepthRangeGL mRange;           ///< fit=sdsm: its min and max, one frame late
     std::vector<uint8_t> mKeep;    ///< the depth pass's mask, reused per map
     const Program* mDepthProgram = nullptr;
     LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)

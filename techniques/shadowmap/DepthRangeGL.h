@@ -1,11 +1,10 @@
 #pragma once
 // The depth range of the camera's view on GL, what `cascaded` fit=sdsm splits (Lauritzen, Salvi and Lefohn
 // 2011, Sample Distribution Shadow Maps, I3D: z-partitions fitted to the min and max depth of the frame's
-// own samples). The harness renders nothing of the camera's view before a technique's shadow passes, so
-// this draws a depth-only pre-pass of every instance with the camera's matrices into a 32-bit float depth
-// texture of the frame's size (common/depth.vert with the camera's view-projection), then reduces it with
-// a compute shader (GL 4.3; shaders/shadowmap/depth_range.comp, which the Vulkan form compiles too) into a
-// two-uint buffer: the min and max window depth of the covered pixels, exactly.
+// own samples). It reduces the frame's view depth pre-pass (techniques/gl/ViewDepthGL.h, which the
+// technique renders first) with a compute shader (GL 4.3; shaders/shadowmap/depth_range.comp, which the
+// Vulkan form compiles too) into a two-uint buffer: the min and max window depth of the covered texels,
+// exactly.
 //
 // Read-back with one frame of latency: frame k's reduction goes into one of two buffers with a fence, and
 // frame k fits its cascades to frame k-1's answer, whose fence has long signalled (the harness waits for
@@ -19,7 +18,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/ProgramCache.h"
-#include "techniques/gl/GlTechnique.h"
+#include "techniques/gl/ViewDepthGL.h"
 
 namespace sb {
 
@@ -30,35 +29,29 @@ public:
     DepthRangeGL(const DepthRangeGL&) = delete;
     DepthRangeGL& operator=(const DepthRangeGL&) = delete;
 
-    /// The pre-pass's and the reduction's programs (`submitterDefines`: the scene draw's instancing).
-    void compile(ProgramCache& programs, const Defines& submitterDefines);
+    /// The reduction's program.
+    void compile(ProgramCache& programs);
     /// Forgets the answers of earlier frames (a new scene): the next frame reads its own.
     void reset() { mFrames = 0; }
-    /// Pre-pass and reduction of this frame; returns the view-depth interval (x near, y far; x > y when
-    /// no pixel is covered) to fit this frame's cascades to: the last frame's, or this one's on the
-    /// first frame. Leaves the frame's targets unbound.
-    glm::vec2 run(const FrameContext& ctx);
+    /// Reduces `depth` as this frame rendered it; returns the view-depth interval (x near, y far; x > y
+    /// when no texel is covered) to fit this frame's cascades to: the last frame's, or this one's on the
+    /// first frame.
+    glm::vec2 run(const ViewDepthGL& depth);
 
     /// The window depths (x min, y max) of the answer run() returned last (x > y: none covered).
     glm::vec2 windowRange() const { return mWindow; }
-    /// The window depths the reduction found in depthTexture() as it is now (the last frame's pre-pass;
-    /// waits for that reduction): what the tests compare with the texture read back.
+    /// The window depths the reduction found in the last frame's pre-pass (waits for that reduction):
+    /// what the tests compare with the texture read back.
     glm::vec2 latestWindowRange() const;
-    /// The pre-pass's depth texture (GL_DEPTH_COMPONENT32F, the frame's size): what the tests read back.
-    GLuint depthTexture() const { return mTexture; }
 
 private:
-    void allocate(int width, int height);
+    void allocate();
     void release();
-    void prePass(const FrameContext& ctx);
-    void reduce(size_t buffer);
+    void reduce(const ViewDepthGL& depth, size_t buffer);
     /// Buffer `buffer`'s answer in window depths, once its fence has signalled.
     glm::vec2 readWindow(size_t buffer) const;
 
-    const Program* mDepthProgram = nullptr;
-    const Program* mReduceProgram = nullptr;
-    GLuint mTexture = 0, mFbo = 0;
-    int mWidth = 0, mHeight = 0;
+    const Program* mProgram = nullptr;
     std::array<GLuint, 2> mBuffers{}; ///< the reduction's answer, frame by frame alternately
     std::array<GLsync, 2> mFences{};  ///< signalled when that buffer's reduction has finished
     std::array<glm::mat4, 2> mProj{}; ///< the projection that buffer's depths were rendered with
