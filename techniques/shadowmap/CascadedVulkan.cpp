@@ -29,6 +29,10 @@ CascadedVulkan::~CascadedVulkan() {
     release();
 }
 
+void CascadedVulkan::propertiesApplied() {
+    mutableInfo().passes = Cascaded::passes(Cascaded::sampleDistribution(properties()));
+}
+
 void CascadedVulkan::release() {
     if (!mDevice) return;
     vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
@@ -42,6 +46,7 @@ void CascadedVulkan::release() {
 
 void CascadedVulkan::setScene(const Scene& scene) {
     mPlan.setScene(scene, int(properties().getInt(Cascaded::kCascades)));
+    mRange.reset();
 }
 
 void CascadedVulkan::createDescriptors(VulkanContext& context) {
@@ -93,12 +98,6 @@ void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
 void CascadedVulkan::compile(const VulkanCompileContext& ctx) {
     release();
     mDevice = ctx.context.device();
-    // The reduction's GLSL (shaders/shadowmap/depth_range.comp) has its Vulkan bindings, but this form
-    // has no pre-pass and compute dispatch yet (NOTES-sdsm.md): refuse rather than split practically.
-    if (Cascaded::sampleDistribution(properties()))
-        throw Error("cascaded: fit=sdsm has no Vulkan form yet (its depth pre-pass and reduction run on GL "
-                    "only); run it with --api gl",
-                    ExitCode::Unsupported);
     if (!ctx.context.depthClamp())
         throw Error("cascaded: the Vulkan device '" + ctx.context.info().name +
                         "' has no depthClamp (GL_DEPTH_CLAMP of the depth pass, which keeps casters nearer "
@@ -109,6 +108,10 @@ void CascadedVulkan::compile(const VulkanCompileContext& ctx) {
     mMaps = VulkanDepthMapSet(ctx.context, uint32_t(mSize), uint32_t(mSlots), uint32_t(mSlots));
     createDescriptors(ctx.context);
     createPipelines(ctx);
+    if (Cascaded::sampleDistribution(properties())) {
+        mViewDepth.compile(ctx);
+        mRange.compile(ctx, mViewDepth);
+    }
 }
 
 void CascadedVulkan::drawMap(VulkanFrameContext& ctx, size_t slot) {
@@ -126,8 +129,8 @@ void CascadedVulkan::drawMap(VulkanFrameContext& ctx, size_t slot) {
     vkCmdEndRenderPass(ctx.cmd);
 }
 
-void CascadedVulkan::renderDepth(VulkanFrameContext& ctx) {
-    mPlan.fit(ctx.view, ctx.proj, properties(), mSize);
+void CascadedVulkan::renderDepth(VulkanFrameContext& ctx, glm::vec2 samples) {
+    mPlan.fit(ctx.view, ctx.proj, properties(), mSize, samples);
     mPlan.planDepth(mKeep, [&](size_t slot) { drawMap(ctx, slot); });
 }
 
@@ -150,12 +153,17 @@ void CascadedVulkan::writeLightingBlock() {
 }
 
 void CascadedVulkan::execute(VulkanFrameContext& ctx) {
+    glm::vec2 samples(1.0f, 0.0f); // fit=sdsm: the reduction's view-depth interval
+    std::function<void()> depthRange;
+    if (Cascaded::sampleDistribution(properties()))
+        depthRange = [&] { samples = mRange.run(ctx, mViewDepth); };
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); },
+        ctx, [&] { renderDepth(ctx, samples); },
         [&] {
             writeLightingBlock();
             mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
-        });
+        },
+        depthRange);
     mCounters = mPlan.counters(s, mSize, ctx.scene, properties());
 }
 
