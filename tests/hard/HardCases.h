@@ -501,6 +501,21 @@ inline const HardCase kHardCases[] = {
     {"cascaded_transition_top", "cascade_transition", "top", "cascaded", 384, 0.015, 0.01, 3, 3, 3,
      "(0.0047%, 0%; 1.06/0/1.00): the same scene from 150 above, every receiver at nearly one depth: the "
      "splits are close together and the cascades alike; no seam where they meet"},
+    // fit=sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps, I3D) on the same scene's
+    // camera "closeup": 2.7 above the ground, a 12 degree lens on a patch ~0.6 wide across the wall
+    // shadow's edge, the ground's far corners ~30 deep. The practical split spans the receivers' [0.05, 30]
+    // and puts the patch in a cascade [2.1, 4.7] deep; sdsm splits the patch's own [2.71, 2.87]. At 256^2
+    // per cascade (so that practical's texels show). Measured 2026-12-07 on llvmpipe and lavapipe
+    // (Mesa 22.3.6).
+    {"cascaded_closeup", "cascade_transition", "closeup", "cascaded:resolution=256", 384, 1.9, 1.2, 5, 3, 3,
+     "(0.629%, 0.395% off the edge, false shadow 0.335%; 1.19/0.57/1.00, the same on Vulkan): the patch's "
+     "cascade is 2.6 deep, its texels cover several pixels and the staircase leaves the edge band"},
+    {"cascaded_closeup_sdsm", "cascade_transition", "closeup", "cascaded:resolution=256:fit=sdsm", 384, 0.5,
+     0.02, 5, 3, 3,
+     "(0.164%, 0.0055% off the edge, false shadow 0.084%; 1.10/1.05/1.00, the same on Vulkan): slices 0.04 "
+     "deep, the staircase inside the edge band; both bounds lie below practical's measured error (the row "
+     "above), so sdsm must keep its gain; the stability gains, with the splits fitted one frame late to "
+     "the drifting camera's depths, stay practical's"},
     // pcss (Fernando 2005, Percentage-Closer Soft Shadows) and shadowmap's normal-offset and
     // receiver-plane biases, measured 2026-12-02 on llvmpipe in parentheses (wrong %, off the edge band;
     // camera gain / light gain / flicker); ~3x headroom. Against a soft reference (pcss_contact's 5 degree
