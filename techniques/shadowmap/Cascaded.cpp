@@ -54,16 +54,21 @@ TechniqueInfo Cascaded::declaration() {
                     {kLambda, {"0", "0.25", "0.5", "0.75", "1"}},
                     P::pcfSweep(),
                 },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                ResourceEstimate e =
-                    squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, uint64_t(p.getInt(kCascades)), in);
-                if (!sampleDistribution(p)) return e;
-                // fit=sdsm's view depth pre-pass (its two 8-byte answer buffers are below the estimate's
-                // resolution).
-                e.bytes += ViewDepth::bytes(in.width, in.height);
-                e.how += " + " + ViewDepth::describe(in.width, in.height, "fit=sdsm");
-                return e;
-            }};
+            .resources =
+                [](const PropertySet& p, const ResourceInputs& in) {
+                    ResourceEstimate e = squareMaps(p.getInt(P::kResolution), kDepthTexelBytes,
+                                                    uint64_t(p.getInt(kCascades)), in);
+                    if (!sampleDistribution(p)) return e;
+                    // fit=sdsm's view depth pre-pass (its two 8-byte answer buffers are below the estimate's
+                    // resolution).
+                    e.bytes += ViewDepth::bytes(in.width, in.height);
+                    e.how += " + " + ViewDepth::describe(in.width, in.height, "fit=sdsm");
+                    return e;
+                },
+            .matrixVariants = {{std::string(kFit) + "=" + kFitSdsm, AccuracyRule::Map,
+                                "the same cascades, maps, filter and bias as fit=practical, only their "
+                                "splits fitted to the view's own depth range: a shadow map, held to the "
+                                "shadow map's rule"}}};
 }
 
 bool Cascaded::sampleDistribution(const PropertySet& p) {
