@@ -43,6 +43,11 @@ struct Case {
     /// blends round the last bit of the sum differently on about 1.7% of the pixels (measured 430 of
     /// 25,600 on the exceptions scene), never by more than one step.
     double colourFraction = 0.005;
+    /// Pixels whose visibility may differ by rounding (at most one half-float step), as a fraction: 0.5%
+    /// but for msm, whose umbra is not 0 but the moment bias's remainder (about 2e-5, where the half-float
+    /// target's steps are 6e-8): the two compilers' last bits show on every umbra pixel of a large
+    /// shadow (measured 527 of 25,600 under the spot light, none by more than 1.5e-6 in the umbra).
+    double roundingFraction = 0.005;
 };
 void PrintTo(const Case& c, std::ostream* os) {
     *os << c.name;
@@ -112,12 +117,17 @@ const Case kCases[] = {
     {"esm_exceptions", "exceptions", "far", "esm"},
     // evsm and msm: vsm's bound (per warp) and the Hamburger reconstruction divide by differences of nearly
     // equal filtered sums too; measured 13 and 5 pixels (evsm), 57 (msm, aircraft) differing by rounding.
-    // msm under the spot light differs in ~500 pixels by up to 1e-3 and 4-19 change sides, over the rule's
-    // 0.5%: left out, open in NOTES-msm.md.
+    // msm under the spot light: 19 pixels of 25,600 (0.074%, unorm16; 4 with the float map) on one arc of
+    // the sphere's penumbra differ by up to 0.022, where the filter region holds the sphere's and the
+    // ground's nearly equal depths and the Hamburger solve's 3x3 Hankel matrix is nearly singular: the
+    // receiver's interpolated distance to the light, rounded differently by the two compilers (making
+    // the solve `precise` changes none of them), moves the reconstruction there. Bounded at 0.1%.
     {"evsm_aircraft", "aircraft", "far", "evsm", SubmitMode::Retained, "", 0.0005},
     {"evsm_spot_components2", "sphere_plane", "far", "evsm:resolution=512:components=2", SubmitMode::Retained,
      "spot", 0.0005},
     {"msm_aircraft", "aircraft", "far", "msm", SubmitMode::Retained, "", 0.0005},
+    {"msm_spot", "sphere_plane", "far", "msm:resolution=512", SubmitMode::Retained, "spot", 0.001, 0.005,
+     0.03},
     {"reference_aircraft", "aircraft", "far", "reference"},
     {"reference_point_light_instanced", "point_light", "far", "reference", SubmitMode::Instanced},
     {"reference_sphere_plane_spot", "sphere_plane", "far", "reference", SubmitMode::Retained, "spot"},
@@ -274,7 +284,8 @@ TEST_P(GlVulkanImage, SamePixelsOnBothApis) {
 
     EXPECT_LE(double(colourOff), c.colourFraction * double(pixels))
         << "pixels whose colour differs (any amount)";
-    EXPECT_LE(visibilityOff, pixels / 200) << "pixels whose visibility differs (any amount)";
+    EXPECT_LE(double(visibilityOff), c.roundingFraction * double(pixels))
+        << "pixels whose visibility differs (any amount)";
     RecordProperty("colour_pixels_differing", int(colourOff));
     RecordProperty("visibility_pixels_differing", int(visibilityOff));
     std::cout << c.name << ": " << colourOff << " pixels differ in colour, " << visibilityOff
