@@ -27,6 +27,13 @@ public:
     /// caller binds the targets (or its next pass's framebuffer) again.
     void render(const FrameContext& ctx);
 
+    /// The texture unit a lighting pass reads it from (shaders/common/contact_shadow.glsl's uViewDepth):
+    /// above the units the family's maps take (0 and 1).
+    static constexpr GLuint kLightingUnit = 7;
+    /// Binds texture() to kLightingUnit for a lighting pass, and unbinds it after.
+    void bindForLighting() const { glBindTextureUnit(kLightingUnit, mTexture); }
+    static void unbindForLighting() { glBindTextureUnit(kLightingUnit, 0); }
+
     /// The depth texture (GL_DEPTH_COMPONENT32F, NEAREST, the frame's size; 0 before the first render).
     GLuint texture() const { return mTexture; }
     int width() const { return mWidth; }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/ViewDepth.h"
@@ -14,7 +15,7 @@ namespace {
 
 /// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
 std::vector<PropertyDesc> declareProperties() {
-    return {
+    std::vector<PropertyDesc> out = {
         P::resolution("2048", "width and height of each cascade's map (texels)"),
         integer(Cascaded::kCascades, "4", 1, Cascaded::kMaxCascades,
                 "slices of the view frustum, one map each (directional lights)"),
@@ -32,6 +33,9 @@ std::vector<PropertyDesc> declareProperties() {
         P::biasSlope(),
         P::pcf("PCF kernel width: pcf x pcf hardware-compare taps one texel apart"),
     };
+    const std::vector<PropertyDesc> contact = ContactShadows::properties();
+    out.insert(out.end(), contact.begin(), contact.end());
+    return out;
 }
 
 } // namespace
@@ -44,7 +48,7 @@ TechniqueInfo Cascaded::declaration() {
             .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
                        Effect::MultipleLights,
             .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = passes(false),
+            .passes = {"depth", "lighting"},
             .properties = declareProperties(),
             // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
             .quality =
@@ -75,9 +79,17 @@ bool Cascaded::sampleDistribution(const PropertySet& p) {
     return p.getEnum(kFit) == kFitSdsm;
 }
 
-std::vector<std::string> Cascaded::passes(bool sampleDistribution) {
-    if (sampleDistribution) return {"depth_range", "depth", "lighting"};
-    return {"depth", "lighting"};
+bool Cascaded::viewDepth(const PropertySet& p) {
+    return sampleDistribution(p) || ContactShadows::enabled(p);
+}
+
+const char* Cascaded::viewDepthPass(const PropertySet& p) {
+    return sampleDistribution(p) ? "depth_range" : ContactShadows::kPass;
+}
+
+std::vector<std::string> Cascaded::passes(const PropertySet& p) {
+    if (!viewDepth(p)) return {"depth", "lighting"};
+    return {viewDepthPass(p), "depth", "lighting"};
 }
 
 } // namespace sb

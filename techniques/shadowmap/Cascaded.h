@@ -29,8 +29,14 @@ struct Cascaded {
     static TechniqueInfo declaration();
     /// Whether `p` selects the sample distribution fit (fit=sdsm).
     static bool sampleDistribution(const PropertySet& p);
-    /// The passes of a form: {"depth_range", "depth", "lighting"} for fit=sdsm, else {"depth", "lighting"}.
-    static std::vector<std::string> passes(bool sampleDistribution);
+    /// The passes of a form: {"depth_range", "depth", "lighting"} for fit=sdsm (its pre-pass serves
+    /// contact=on too), {"view_depth", "depth", "lighting"} for contact=on alone, else {"depth",
+    /// "lighting"}.
+    static std::vector<std::string> passes(const PropertySet& p);
+    /// Whether a form draws the view depth pre-pass: fit=sdsm or contact=on.
+    static bool viewDepth(const PropertySet& p);
+    /// The name of the first pass, which draws it: "depth_range" (fit=sdsm) or "view_depth".
+    static const char* viewDepthPass(const PropertySet& p);
 };
 
 } // namespace sb

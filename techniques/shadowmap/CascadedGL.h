@@ -75,7 +75,7 @@ private:
 
     CascadedMaps mPlan;            ///< lights, slots, fits and the depth pass's plan (both APIs')
     DepthLayers mMaps{"cascaded"}; ///< GL_TEXTURE_2D_ARRAY, one layer per slot
-    ViewDepthGL mViewDepth;        ///< fit=sdsm: the view's depth (pass "depth_range")
+    ViewDepthGL mViewDepth;        ///< fit=sdsm and contact=on: the view's depth (their first pass)
     DepthRangeGL mRange;           ///< fit=sdsm: its min and max, one frame late
     std::vector<uint8_t> mKeep;    ///< the depth pass's mask, reused per map
     const Program* mDepthProgram = nullptr;

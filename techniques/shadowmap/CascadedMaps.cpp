@@ -1,5 +1,7 @@
 #include "techniques/shadowmap/CascadedMaps.h"
 
+#include "techniques/ContactShadows.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cstring>
@@ -178,6 +180,7 @@ Defines CascadedMaps::lightingDefines(Defines lit, const PropertySet& p) const {
     lit["LIGHT_SLOTS"] = slots.empty() ? "0" : slots;
     if (p.getInt(Cascaded::kCascades) > 1 && p.getFloat(Cascaded::kBlend) > 0.0) lit["BLEND"] = "";
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    ContactShadows::addDefines(p, lit);
     return lit;
 }
 

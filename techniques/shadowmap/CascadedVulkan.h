@@ -66,7 +66,7 @@ private:
     VkPipelineLayout mDepthLayout = VK_NULL_HANDLE, mLightingLayout = VK_NULL_HANDLE;
     VkPipeline mDepthPipeline = VK_NULL_HANDLE;
     LitPipelines mLighting;     ///< the lighting pass (non-receivers apart where they can be)
-    ViewDepthVulkan mViewDepth; ///< fit=sdsm: the view's depth (pass "depth_range")
+    ViewDepthVulkan mViewDepth; ///< fit=sdsm and contact=on: the view's depth (their first pass)
     DepthRangeVulkan mRange;    ///< fit=sdsm: its min and max, one frame late
     Counters mCounters;
 };

@@ -45,6 +45,9 @@ void ViewDepthVulkan::release() {
     mPass = VK_NULL_HANDLE;
     mPipeline = VK_NULL_HANDLE;
     mSet = DescriptorSets();
+    mLightingSet = DescriptorSets();
+    vkDestroySampler(mDevice, mSampler, nullptr);
+    mSampler = VK_NULL_HANDLE;
     mMatrix = VulkanBuffer();
     mImage = VulkanImage();
     mDevice = VK_NULL_HANDLE;
@@ -98,6 +101,20 @@ void ViewDepthVulkan::compile(const VulkanCompileContext& ctx) {
     desc.colourAttachments = 0;
     desc.renderPass = mPass;
     mPipeline = ctx.pipelines.get(key, desc);
+
+    LayerPasses::Sampling nearest;
+    nearest.filter = VK_FILTER_NEAREST;
+    mSampler = LayerPasses::sampler(mDevice, nearest, "view depth pre-pass");
+    mLightingSet = DescriptorSets(mDevice,
+                                  {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                                            VK_SHADER_STAGE_FRAGMENT_BIT)}},
+                                  "view depth pre-pass");
+    mLightingSet.writeImage(0, 0, mSampler, mImage.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+}
+
+void ViewDepthVulkan::bindForLighting(VkCommandBuffer cmd, VkPipelineLayout layout) const {
+    const VkDescriptorSet set = mLightingSet.set(0);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kLightingSet, 1, &set, 0, nullptr);
 }
 
 void ViewDepthVulkan::record(const VulkanFrameContext& ctx, VkCommandBuffer cmd) {

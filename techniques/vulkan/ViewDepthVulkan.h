@@ -36,6 +36,14 @@ public:
     /// frame ends), outside a render pass; the image is then readable by compute and fragment shaders.
     void record(const VulkanFrameContext& ctx, VkCommandBuffer cmd);
 
+    /// The set a lighting pass reads it through (shaders/common/contact_shadow.glsl's uViewDepth: set
+    /// kLightingSet, binding 0, a NEAREST sampler): its layout goes into the pipeline layout at that
+    /// index, and bindForLighting binds it there before the pass (outside the render pass; binding the
+    /// lower sets of the same layout after it leaves it bound).
+    static constexpr uint32_t kLightingSet = 2;
+    VkDescriptorSetLayout lightingSetLayout() const { return mLightingSet.layout(0); }
+    void bindForLighting(VkCommandBuffer cmd, VkPipelineLayout layout) const;
+
     VkImage image() const { return mImage.image(); }
     VkImageView view() const { return mImage.view(); } ///< sampled in DEPTH_STENCIL_READ_ONLY_OPTIMAL
     uint32_t width() const { return mWidth; }
@@ -54,6 +62,8 @@ private:
     VkFramebuffer mFramebuffer = VK_NULL_HANDLE;
     VulkanBuffer mMatrix; ///< LightPass: the camera's view-projection (host-visible)
     DescriptorSets mSet;  ///< set 1 of common/depth.vert
+    VkSampler mSampler = VK_NULL_HANDLE;
+    DescriptorSets mLightingSet; ///< a lighting pass's view of the image
     VkPipelineLayout mLayout = VK_NULL_HANDLE;
     VkPipeline mPipeline = VK_NULL_HANDLE; ///< owned by the pipeline cache
     glm::mat4 mProj{1.0f};

@@ -516,6 +516,33 @@ inline const HardCase kHardCases[] = {
      "deep, the staircase inside the edge band; both bounds lie below practical's measured error (the row "
      "above), so sdsm must keep its gain; the stability gains, with the splits fitted one frame late to "
      "the drifting camera's depths, stay practical's"},
+    // Screen-space contact shadows (techniques/ContactShadows.h, `contact`): contact_point_sun's box standing
+    // on the ground and sphere resting on it, from the low camera, with a bias far too large on purpose
+    // (512^2, bias 2000 / 32): the map's surfaces move away from the light and it leaks under the feet.
+    // The first row is the leak the harness must see; the second marches 1 world unit in 16 steps towards
+    // the light through the view's depth and must close part of it. Measured 2026-12-07 on llvmpipe and
+    // lavapipe (Mesa 22.3.6).
+    {"shadowmap_contact_leak", "contact_point_sun", "low",
+     "shadowmap:resolution=512:bias_slope=32:bias_constant=2000", 384, 1.3, 0.32, 5, 3, 3,
+     "negative control (0.433%, 0.105% off the edge band; Vulkan 0.431%, 0.104%; 0.95/0.75/1.00): light "
+     "under the box's corners and around the sphere's contact, the bias's peter panning",
+     0.05f, 0.05},
+    {"shadowmap_contact_leak_contact", "contact_point_sun", "low",
+     "shadowmap:resolution=512:bias_slope=32:bias_constant=2000:contact=true:contact_length=1:contact_steps="
+     "16",
+     384, 0.4, 0.06, 5, 3, 3,
+     "(0.316%, 0.029% off the edge band, false shadow 0.016% against the row above's 0.0035%; Vulkan "
+     "0.313%, 0.028%; 0.95/0.75/1.07): the march finds the box and the sphere a step or two towards the "
+     "light and darkens what the map leaves lit, at the price of a few guesses behind the sphere's rim; "
+     "both bounds lie below the row above's measured error, so the march must keep its gain"},
+    {"cascaded_contact_leak_sdsm_contact", "contact_point_sun", "low",
+     "cascaded:resolution=512:bias_slope=32:bias_constant=2000:fit=sdsm:contact=true:contact_length=1:"
+     "contact_steps=16",
+     384, 0.45, 0.1, 5, 3, 3,
+     "(0.361%, 0.054% off the edge band; Vulkan 0.359%, 0.053%; 0.90/0/1.07; without contact 0.519%, "
+     "0.166%): cascaded's "
+     "one view depth pre-pass serves both fit=sdsm's reduction and the march (pass depth_range); both "
+     "bounds lie below the error without the march"},
     // pcss (Fernando 2005, Percentage-Closer Soft Shadows) and shadowmap's normal-offset and
     // receiver-plane biases, measured 2026-12-02 on llvmpipe in parentheses (wrong %, off the edge band;
     // camera gain / light gain / flicker); ~3x headroom. Against a soft reference (pcss_contact's 5 degree
