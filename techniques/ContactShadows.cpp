@@ -1,7 +1,5 @@
 #include "techniques/ContactShadows.h"
 
-#include "shading/GlslLiteral.h"
-
 namespace sb {
 
 std::vector<PropertyDesc> ContactShadows::properties() {
@@ -21,8 +19,10 @@ bool ContactShadows::enabled(const PropertySet& p) {
 void ContactShadows::addDefines(const PropertySet& p, Defines& defines) {
     if (!enabled(p)) return;
     defines["SB_CONTACT_SHADOWS"] = "1";
-    defines["SB_CONTACT_STEPS"] = std::to_string(p.getInt(kSteps));
-    defines["SB_CONTACT_LENGTH"] = glslFloat(float(p.getFloat(kLength)));
+}
+
+glm::vec4 ContactShadows::block(const PropertySet& p) {
+    return {float(p.getFloat(kLength)), float(p.getInt(kSteps)), 0.0f, 0.0f};
 }
 
 std::vector<std::string> ContactShadows::passes(const PropertySet& p, std::vector<std::string> passes) {

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "shading/Defines.h"
 #include "techniques/Property.h"
 #include "techniques/PropertySet.h"
@@ -44,9 +46,12 @@ struct ContactShadows {
     static std::vector<PropertyDesc> properties();
     /// Whether `p` (of a technique that declares properties()) turns the march on.
     static bool enabled(const PropertySet& p);
-    /// SB_CONTACT_SHADOWS, SB_CONTACT_STEPS and SB_CONTACT_LENGTH into the lighting pass's defines when
-    /// enabled; nothing otherwise (the program is the one without the march).
+    /// SB_CONTACT_SHADOWS into the lighting pass's defines when enabled; nothing otherwise (the program is
+    /// the one without the march).
     static void addDefines(const PropertySet& p, Defines& defines);
+    /// The march's uniform block (contact_shadow.glsl's ContactBlock: x contact_length, y contact_steps):
+    /// uniforms, so that a length or a step count is no program permutation of its own.
+    static glm::vec4 block(const PropertySet& p);
     /// `passes` with kPass first when enabled.
     static std::vector<std::string> passes(const PropertySet& p, std::vector<std::string> passes);
 };

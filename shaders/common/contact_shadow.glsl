@@ -1,5 +1,5 @@
 // Screen-space contact shadows (techniques/ContactShadows.h: what the knobs are, and why): a march of
-// SB_CONTACT_STEPS points along SB_CONTACT_LENGTH world units from the shaded point towards light i, each
+// contact_steps points along contact_length world units from the shaded point towards light i, each
 // projected with the camera's view-projection into the view depth pre-pass (techniques/gl/ViewDepthGL.h,
 // techniques/vulkan/ViewDepthVulkan.h: the frame's size, the targets' rows); a point the view's depth lies
 // in front of (by more than a rounding margin, by less than the march's length) is behind a surface, and
@@ -7,10 +7,18 @@
 // Included by every lighting pass of the shadow-map family; without SB_CONTACT_SHADOWS it adds nothing
 // and contactLimited(i, v, p, n) is v. Needs common/frame.glsl and common/lighting.glsl (toLight) first.
 #ifdef SB_CONTACT_SHADOWS
+// The march's length and steps are uniforms, not defines: they change no program (no permutation per
+// value); x = contact_length (world units), y = contact_steps (ContactShadows::block).
 #ifdef VULKAN
 layout(set = 2, binding = 0) uniform sampler2D uViewDepth;
+layout(std140, set = 2, binding = 1) uniform ContactBlock {
+    vec4 uContact;
+};
 #else
 layout(binding = 7) uniform sampler2D uViewDepth; // techniques/gl/ViewDepthGL.h's texture
+layout(std140, binding = 1) uniform ContactBlock {
+    vec4 uContact;
+};
 #endif
 
 // The view depth (positive) of window depth w under the frame's projection: its ndc z is 2w - 1 on GL and
@@ -28,14 +36,15 @@ float contactViewDepth(float w) {
 // 0 when the march from worldPos (normal n) towards light i meets a surface of the view's depth, else 1.
 float contactShadow(int i, vec3 worldPos, vec3 n) {
     const vec3 l = toLight(i, worldPos);
-    float len = SB_CONTACT_LENGTH;
+    const int steps = int(uContact.y);
+    float len = uContact.x;
     if (isPositional(i)) len = min(len, distance(uLightPos[i].xyz, worldPos));
-    const float step = len / float(SB_CONTACT_STEPS);
+    const float step = len / float(steps);
     // Half a step off the surface along its normal: a tessellated curve's own facets, a step away, lie
     // within that of its tangent plane.
     const vec3 start = worldPos + n * (0.5 * step);
     const ivec2 size = textureSize(uViewDepth, 0);
-    for (int k = 1; k <= SB_CONTACT_STEPS; ++k) {
+    for (int k = 1; k <= steps; ++k) {
         const vec3 q = start + l * (step * float(k));
         const vec4 clip = uViewProj * vec4(q, 1.0);
         if (clip.w <= 0.0) break;

@@ -18,6 +18,8 @@ void ViewDepthGL::compile(ProgramCache& programs, const Defines& submitterDefine
 }
 
 void ViewDepthGL::release() {
+    if (mBlock) glDeleteBuffers(1, &mBlock);
+    mBlock = 0;
     if (mFbo) glDeleteFramebuffers(1, &mFbo);
     if (mTexture) glDeleteTextures(1, &mTexture);
     mFbo = mTexture = 0;
@@ -43,6 +45,21 @@ void ViewDepthGL::allocate(int width, int height) {
     mWidth = width;
     mHeight = height;
     ++mAllocations;
+}
+
+void ViewDepthGL::bindForLighting(const glm::vec4& block) {
+    if (!mBlock) {
+        glCreateBuffers(1, &mBlock);
+        glNamedBufferStorage(mBlock, sizeof block, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    glNamedBufferSubData(mBlock, 0, sizeof block, &block);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightingBlock, mBlock);
+    glBindTextureUnit(kLightingUnit, mTexture);
+}
+
+void ViewDepthGL::unbindForLighting() {
+    glBindTextureUnit(kLightingUnit, 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightingBlock, 0);
 }
 
 void ViewDepthGL::render(const FrameContext& ctx) {

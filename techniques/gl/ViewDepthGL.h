@@ -28,11 +28,14 @@ public:
     void render(const FrameContext& ctx);
 
     /// The texture unit a lighting pass reads it from (shaders/common/contact_shadow.glsl's uViewDepth):
-    /// above the units the family's maps take (0 and 1).
+    /// above the units the family's maps take (0 and 1); and the uniform-buffer binding of the block the
+    /// reading pass takes beside it (its ContactBlock: above the frame block's 0).
     static constexpr GLuint kLightingUnit = 7;
-    /// Binds texture() to kLightingUnit for a lighting pass, and unbinds it after.
-    void bindForLighting() const { glBindTextureUnit(kLightingUnit, mTexture); }
-    static void unbindForLighting() { glBindTextureUnit(kLightingUnit, 0); }
+    static constexpr GLuint kLightingBlock = 1;
+    /// Binds texture() to kLightingUnit and `block` (16 bytes: ContactShadows::block) to kLightingBlock
+    /// for a lighting pass; unbindForLighting after it.
+    void bindForLighting(const glm::vec4& block);
+    static void unbindForLighting();
 
     /// The depth texture (GL_DEPTH_COMPONENT32F, NEAREST, the frame's size; 0 before the first render).
     GLuint texture() const { return mTexture; }
@@ -51,6 +54,7 @@ private:
 
     const Program* mProgram = nullptr;
     GLuint mTexture = 0, mFbo = 0;
+    GLuint mBlock = 0; ///< the lighting pass's 16-byte block
     int mWidth = 0, mHeight = 0;
     glm::mat4 mProj{1.0f};
     uint64_t mAllocations = 0;

@@ -76,7 +76,7 @@ void CascadedGL::renderLighting(FrameContext& ctx) {
     glUniform1iv(kSlotLayerLocation, GLsizei(mPlan.slotLayer().size()), mPlan.slotLayer().data());
     glBindTextureUnit(0, mMaps.texture());
     const bool contact = ContactShadows::enabled(properties());
-    if (contact) mViewDepth.bindForLighting();
+    if (contact) mViewDepth.bindForLighting(ContactShadows::block(properties()));
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
     if (contact) ViewDepthGL::unbindForLighting();
     glBindTextureUnit(0, 0);

@@ -168,7 +168,8 @@ void CascadedVulkan::execute(VulkanFrameContext& ctx) {
         ctx, [&] { renderDepth(ctx, samples); },
         [&] {
             writeLightingBlock();
-            if (ContactShadows::enabled(p)) mViewDepth.bindForLighting(ctx.cmd, mLightingLayout);
+            if (ContactShadows::enabled(p))
+                mViewDepth.bindForLighting(ctx.cmd, mLightingLayout, ContactShadows::block(p));
             mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
         },
         viewDepth, Cascaded::viewDepthPass(p));

@@ -106,7 +106,7 @@ void ShadowMapGL::renderLighting(FrameContext& ctx) {
     }
     glBindTextureUnit(0, mMaps.texture());
     const bool contact = ContactShadows::enabled(properties());
-    if (contact) mViewDepth.bindForLighting();
+    if (contact) mViewDepth.bindForLighting(ContactShadows::block(properties()));
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
     if (contact) ViewDepthGL::unbindForLighting();
     glBindTextureUnit(0, 0);

@@ -131,7 +131,8 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
 }
 
 void ShadowMapVulkan::renderLighting(VulkanFrameContext& ctx) {
-    if (ContactShadows::enabled(properties())) mViewDepth.bindForLighting(ctx.cmd, mLightingLayout);
+    if (ContactShadows::enabled(properties()))
+        mViewDepth.bindForLighting(ctx.cmd, mLightingLayout, ContactShadows::block(properties()));
     mLighting.draw(ctx, mLightingLayout, mSets.set(0));
 }
 

@@ -46,6 +46,7 @@ void ViewDepthVulkan::release() {
     mPipeline = VK_NULL_HANDLE;
     mSet = DescriptorSets();
     mLightingSet = DescriptorSets();
+    mLightingBlock = VulkanBuffer();
     vkDestroySampler(mDevice, mSampler, nullptr);
     mSampler = VK_NULL_HANDLE;
     mMatrix = VulkanBuffer();
@@ -105,14 +106,21 @@ void ViewDepthVulkan::compile(const VulkanCompileContext& ctx) {
     LayerPasses::Sampling nearest;
     nearest.filter = VK_FILTER_NEAREST;
     mSampler = LayerPasses::sampler(mDevice, nearest, "view depth pre-pass");
-    mLightingSet = DescriptorSets(mDevice,
-                                  {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                                            VK_SHADER_STAGE_FRAGMENT_BIT)}},
-                                  "view depth pre-pass");
+    using D = DescriptorSets;
+    mLightingSet = DescriptorSets(
+        mDevice,
+        {{D::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT),
+          D::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)}},
+        "view depth pre-pass");
     mLightingSet.writeImage(0, 0, mSampler, mImage.view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    mLightingBlock = VulkanBuffer(ctx.context, sizeof(glm::vec4), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    mLightingSet.writeBuffer(0, 1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, mLightingBlock.buffer(),
+                             sizeof(glm::vec4));
 }
 
-void ViewDepthVulkan::bindForLighting(VkCommandBuffer cmd, VkPipelineLayout layout) const {
+void ViewDepthVulkan::bindForLighting(VkCommandBuffer cmd, VkPipelineLayout layout,
+                                      const glm::vec4& block) const {
+    std::memcpy(mLightingBlock.map(), &block, sizeof block);
     const VkDescriptorSet set = mLightingSet.set(0);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kLightingSet, 1, &set, 0, nullptr);
 }

@@ -36,13 +36,15 @@ public:
     /// frame ends), outside a render pass; the image is then readable by compute and fragment shaders.
     void record(const VulkanFrameContext& ctx, VkCommandBuffer cmd);
 
-    /// The set a lighting pass reads it through (shaders/common/contact_shadow.glsl's uViewDepth: set
-    /// kLightingSet, binding 0, a NEAREST sampler): its layout goes into the pipeline layout at that
-    /// index, and bindForLighting binds it there before the pass (outside the render pass; binding the
-    /// lower sets of the same layout after it leaves it bound).
+    /// The set a lighting pass reads it through (shaders/common/contact_shadow.glsl: set kLightingSet,
+    /// uViewDepth at binding 0 through a NEAREST sampler, its 16-byte ContactBlock at binding 1): its
+    /// layout goes into the pipeline layout at that index, and bindForLighting writes `block`
+    /// (ContactShadows::block; the previous frame's fence was waited for) and binds the set there before
+    /// the pass (outside the render pass; binding the lower sets of the same layout after it leaves it
+    /// bound).
     static constexpr uint32_t kLightingSet = 2;
     VkDescriptorSetLayout lightingSetLayout() const { return mLightingSet.layout(0); }
-    void bindForLighting(VkCommandBuffer cmd, VkPipelineLayout layout) const;
+    void bindForLighting(VkCommandBuffer cmd, VkPipelineLayout layout, const glm::vec4& block) const;
 
     VkImage image() const { return mImage.image(); }
     VkImageView view() const { return mImage.view(); } ///< sampled in DEPTH_STENCIL_READ_ONLY_OPTIMAL
@@ -63,7 +65,8 @@ private:
     VulkanBuffer mMatrix; ///< LightPass: the camera's view-projection (host-visible)
     DescriptorSets mSet;  ///< set 1 of common/depth.vert
     VkSampler mSampler = VK_NULL_HANDLE;
-    DescriptorSets mLightingSet; ///< a lighting pass's view of the image
+    DescriptorSets mLightingSet; ///< a lighting pass's view of the image and its block
+    VulkanBuffer mLightingBlock; ///< ContactBlock (host-visible)
     VkPipelineLayout mLayout = VK_NULL_HANDLE;
     VkPipeline mPipeline = VK_NULL_HANDLE; ///< owned by the pipeline cache
     glm::mat4 mProj{1.0f};
