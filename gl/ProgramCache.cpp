@@ -31,7 +31,8 @@ std::string infoLog(GLuint object, bool isProgram) {
 }
 
 std::string cacheKey(const ShaderSources& sources, const Defines& defines) {
-    return sources.vertex + "|" + sources.fragment + "|" + sources.geometry + "|" + fullDefinesKey(defines);
+    return sources.vertex + "|" + sources.fragment + "|" + sources.geometry + "|" + sources.compute + "|" +
+           fullDefinesKey(defines);
 }
 
 /// Compiles one stage; throws with the log mapped back to file:line through the #line table.

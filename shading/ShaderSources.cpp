@@ -5,6 +5,7 @@
 namespace sb {
 
 std::vector<std::pair<ShaderStage, const std::string*>> ShaderSources::stages() const {
+    if (!compute.empty()) return {{ShaderStage::Compute, &compute}};
     std::vector<std::pair<ShaderStage, const std::string*>> out = {{ShaderStage::Vertex, &vertex}};
     if (!geometry.empty()) out.emplace_back(ShaderStage::Geometry, &geometry);
     if (!fragment.empty()) out.emplace_back(ShaderStage::Fragment, &fragment);
@@ -22,6 +23,7 @@ std::string ShaderSources::programName() const {
 }
 
 std::string ShaderSources::describe() const {
+    if (!compute.empty()) return "compute '" + compute + "'";
     std::string text = "vertex '" + vertex + "'";
     if (!fragment.empty()) text += ", fragment '" + fragment + "'";
     if (!geometry.empty()) text += ", geometry '" + geometry + "'";

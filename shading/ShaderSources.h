@@ -13,8 +13,10 @@ struct ShaderSources {
     std::string vertex;   ///< path relative to shaders/, e.g. "shadowmap/lighting.vert"
     std::string fragment; ///< may be "" for depth-only programs
     std::string geometry; ///< optional
+    std::string compute;  ///< a compute program: this stage alone (vertex and fragment left "")
 
-    /// The stages present, in pipeline order (vertex, geometry, fragment), each with its file.
+    /// The stages present, in pipeline order (vertex, geometry, fragment; or compute alone), each with
+    /// its file.
     std::vector<std::pair<ShaderStage, const std::string*>> stages() const;
     /// "common-scene.vert+shadowmap-lighting.frag": the files in pipeline order, '/' as '-', joined by '+'.
     std::string programName() const;

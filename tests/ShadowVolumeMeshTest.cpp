@@ -709,3 +709,27 @@ TEST(ShadowVolumeMeshTest, NonFinitePositionIsAnError) {
     const Mesh bad = triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 3});
     EXPECT_THROW(ShadowVolumeMesh{bad}, std::runtime_error);
 }
+
+TEST(ShadowVolumeMeshTest, NeighboursTraverseEachEdgeTheOtherWay) {
+    // The GPU silhouette paths' adjacency: on a closed mesh every directed edge a -> b of a face has a
+    // neighbour traversing b -> a, whose neighbour across that edge is the face again.
+    for (const auto& [name, mesh] : closedMeshes()) {
+        const ShadowVolumeMesh m(mesh);
+        const std::vector<uint32_t> nb = m.neighbours();
+        const std::vector<uint32_t>& faces = m.faces();
+        ASSERT_EQ(nb.size(), faces.size()) << name;
+        for (size_t f = 0; f < m.faceCount(); ++f)
+            for (size_t k = 0; k < 3; ++k) {
+                const uint32_t g = nb[3 * f + k];
+                ASSERT_NE(g, ShadowVolumeMesh::kNoFace) << name << " face " << f;
+                const uint32_t a = faces[3 * f + k], b = faces[3 * f + (k + 1) % 3];
+                int found = 0;
+                for (size_t j = 0; j < 3; ++j)
+                    if (faces[3 * g + j] == b && faces[3 * g + (j + 1) % 3] == a) {
+                        ++found;
+                        EXPECT_EQ(nb[3 * g + j], uint32_t(f)) << name << " face " << f;
+                    }
+                EXPECT_EQ(found, 1) << name << " face " << f << " edge " << k;
+            }
+    }
+}

@@ -6,11 +6,20 @@
 //    silhouette is found here instead of on the CPU. The test uses the plane, not this vertex's
 //    position: all vertices of a face get the same inputs and agree even when the light grazes it.
 // FINITE (section 9.6.1): extrude by the light's range instead of to infinity.
+// GPU_SILHOUETTES (extrusion=geometry): the vertices of triangles with adjacency, passed on in object
+// space with their face's normal and first vertex to volume/silhouette.geom.
 #include "common/frame.glsl"
 
 #ifdef VS_EXTRUSION
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec4 aFacePlane;
+#elif defined(GPU_SILHOUETTES)
+layout(location = 0) in vec4 aPosition;
+layout(location = 1) in vec4 aNormal;
+layout(location = 2) in vec4 aFirst;
+layout(location = 0) out vec3 vPosition;
+layout(location = 1) out vec3 vNormal;
+layout(location = 2) out vec3 vFirst;
 #else
 layout(location = 0) in vec4 aPosition;
 #endif
@@ -27,17 +36,14 @@ layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) o
 layout(location = 2) uniform float uRange;       // FINITE: object-space extrusion length
 #endif
 
-
-vec4 extrude(vec3 p) {
-    vec3 away = p * uLightObject.w - uLightObject.xyz; // from the light through p (Listing 9-3)
-#ifdef FINITE
-    return vec4(p + normalize(away) * uRange, 1.0);
-#else
-    return vec4(away, 0.0);
-#endif
-}
+#include "volume/extrude.glsl"
 
 void main() {
+#ifdef GPU_SILHOUETTES
+    vPosition = aPosition.xyz;
+    vNormal = aNormal.xyz;
+    vFirst = aFirst.xyz;
+#else
 #ifdef VS_EXTRUSION
     // Listing 9-5 in plane form: dot(N, L.xyz - P0 L.w) = dot(N, L.xyz) - L.w dot(N, P0).
     bool back = dot(aFacePlane.xyz, uLightObject.xyz) - uLightObject.w * aFacePlane.w < 0.0;
@@ -46,4 +52,5 @@ void main() {
     vec4 p = aPosition.w == 0.0 ? extrude(aPosition.xyz) : aPosition;
 #endif
     gl_Position = uViewProj * (uModel * p);
+#endif
 }

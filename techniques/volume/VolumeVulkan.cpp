@@ -211,12 +211,28 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     setPermutationKey(definesKey(scene) + volumeKeys + state);
 }
 
+std::string VolumeVulkan::checkCapabilities(const VulkanContext& context) const {
+    std::string missing = VulkanTechnique::checkCapabilities(context);
+    if (!missing.empty()) return missing;
+    if (VolumePlanner::readSettings(properties()).extrusion != VolumePlanner::Extrusion::Mesh ||
+        context.hasDeviceExtension("VK_EXT_mesh_shader"))
+        return "";
+    return "volume: extrusion=mesh needs the device extension VK_EXT_mesh_shader (not available on " +
+           context.info().name + ", Vulkan " + context.info().apiVersion +
+           "); the driver entry mesa-25.0.7 has it: --driver mesa-25.0.7";
+}
+
 void VolumeVulkan::compile(const VulkanCompileContext& ctx) {
     release();
     mContext = &ctx.context;
     mDevice = ctx.context.device();
     mPlanner.setSettings(VolumePlanner::readSettings(properties()));
     const VolumePlanner::Settings& settings = mPlanner.settings();
+    // The GPU silhouette paths exist on GL only so far (techniques/volume/README.md).
+    if (settings.gpuSilhouettes())
+        throw Error("volume: extrusion=geometry, compute and mesh are not built on Vulkan yet (GL has "
+                    "geometry and compute): unsupported here, skipped",
+                    ExitCode::Unsupported);
     if (settings.depthBounds && !ctx.context.depthBounds())
         throw Error("volume: depth_bounds needs the depthBounds feature, which '" + ctx.context.info().name +
                         "' does not offer: unsupported here, skipped (run without depth_bounds=true)",

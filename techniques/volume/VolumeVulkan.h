@@ -49,6 +49,9 @@ public:
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    /// extrusion=mesh needs VK_EXT_mesh_shader: one line naming it, the device and the driver entry
+    /// that offers it (Mesa 25.0.7's lavapipe, --driver mesa-25.0.7).
+    std::string checkCapabilities(const VulkanContext& context) const override;
 
 private:
     struct MeshGpu {

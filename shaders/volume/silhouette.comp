@@ -1,0 +1,79 @@
+// `volume` extrusion=compute: the chapter's closed-mesh volume (techniques/volume/ShadowVolumeMesh.h,
+// buildVolume) built per face, one invocation each, as indices into the caster's doubled vertex buffer
+// (w = 1 copies, then the w = 0 copies at + uVertexCount that volume/extrude.vert sends to infinity).
+// Each invocation reserves its indices with one atomicAdd on its draw's indirect command's count, so
+// the marking pass draws exactly what was built (glDrawElementsIndirect), and adds its triangles to
+// the frame's device count (uTriangles, read by VolumeGL a frame or two later).
+layout(local_size_x = 64) in;
+
+#include "volume/silhouette.glsl"
+
+layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) or (towards light, 0)
+layout(location = 3) uniform uint uFlags;       // techniques/volume/GpuVolumeFlags.h
+layout(location = 4) uniform uint uFaceCount;
+layout(location = 5) uniform uint uDraw;        // this caster's command in uCommands
+layout(location = 6) uniform uint uVertexCount; // n: the w = 0 copies' offset
+
+layout(std430, binding = 0) buffer Count {
+    uint uTriangles;
+};
+struct Face {
+    uvec4 vertices;   // welded indices, counter-clockwise
+    uvec4 neighbours; // the face across (v0, v1), (v1, v2), (v2, v0)
+    vec4 normal;      // unnormalised, as ShadowVolumeMesh::faceNormals
+    vec4 first;       // the face's first vertex
+};
+layout(std430, binding = 1) readonly buffer Faces {
+    Face uFaces[];
+};
+layout(std430, binding = 2) writeonly buffer Indices {
+    uint uIndices[];
+};
+// glDrawElementsIndirect's commands, 5 uints each: count, instanceCount, firstIndex, baseVertex,
+// baseInstance. count starts at 0 and grows here; firstIndex is this caster's region.
+layout(std430, binding = 3) buffer Commands {
+    uint uCommands[];
+};
+
+bool back(uint f) {
+    return backFacing(uFaces[f].normal.xyz, uFaces[f].first.xyz, uLightObject);
+}
+
+void main() {
+    const uint f = gl_GlobalInvocationID.x;
+    if (f >= uFaceCount) return;
+    const bool isBack = back(f);
+    const uvec3 v = uFaces[f].vertices.xyz;
+    const bool cap = isBack ? (uFlags & SV_DARK_CAP) != 0u : (uFlags & SV_LIGHT_CAP) != 0u;
+    uint silhouette = 0u; // bit k: edge k is a silhouette this face owns
+    if (isBack && (uFlags & SV_SIDES) != 0u)
+        for (uint k = 0u; k < 3u; ++k)
+            if (!back(uFaces[f].neighbours[k])) silhouette |= 1u << k;
+    const uint sides = bitCount(silhouette);
+    const uint triangles = (cap ? 1u : 0u) + sides * sideTriangles(uFlags);
+    if (triangles == 0u) return;
+    atomicAdd(uTriangles, triangles);
+    uint at = uCommands[5u * uDraw + 2u] + atomicAdd(uCommands[5u * uDraw], 3u * triangles);
+    const uint n = uVertexCount;
+    if (cap) {
+        const uint offset = isBack ? n : 0u;
+        uIndices[at++] = v.x + offset;
+        uIndices[at++] = v.y + offset;
+        uIndices[at++] = v.z + offset;
+    }
+    for (uint k = 0u; k < 3u; ++k) {
+        if ((silhouette & (1u << k)) == 0u) continue;
+        const uint a = v[k], b = v[(k + 1u) % 3u];
+        // ShadowVolumeMesh's pushSide: (a, b, b'), (a, b', a'), or (a, b, any w = 0 vertex).
+        uIndices[at++] = a;
+        uIndices[at++] = b;
+        if ((uFlags & SV_DIRECTIONAL) != 0u) {
+            uIndices[at++] = n;
+            continue;
+        }
+        uIndices[at++] = b + n;
+        uIndices[at++] = a;
+        uIndices[at++] = b + n;
+        uIndices[at++] = a + n;
+    }
+}
