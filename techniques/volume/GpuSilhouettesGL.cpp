@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/volume/SilhouetteInputs.h"
+
 namespace sb {
 
 namespace {
@@ -12,8 +14,6 @@ constexpr GLint kLightLocation = 1, kFlagsLocation = 3, kFaceCountLocation = 4, 
                 kVertexCountLocation = 6;
 constexpr GLuint kCountBinding = 0, kFacesBinding = 1, kIndicesBinding = 2, kCommandsBinding = 3;
 constexpr GLuint kLocalSize = 64;
-/// The most indices one face builds: its cap (3) and a side on each edge (2 triangles, 6 indices).
-constexpr size_t kIndicesPerFace = 3 + 3 * 6;
 constexpr size_t kCommandWords = 5; ///< glDrawElementsIndirect's command
 } // namespace
 
@@ -76,7 +76,7 @@ void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
     for (size_t i = 0; i < draws.size(); ++i) {
         mCommandData[i * kCommandWords + 1] = 1; // instanceCount
         mCommandData[i * kCommandWords + 2] = uint32_t(first);
-        first += kIndicesPerFace * buffers.mesh(draws[i].caster->mesh).mesh->faceCount();
+        first += SilhouetteInputs::kMaxIndicesPerFace * buffers.mesh(draws[i].caster->mesh).mesh->faceCount();
     }
     reserve(mIndices, mIndexCapacity, std::max<size_t>(1, first) * sizeof(uint32_t));
     reserve(mCommands, mCommandCapacity, mCommandData.size() * sizeof(uint32_t));

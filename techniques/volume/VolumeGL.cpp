@@ -177,7 +177,8 @@ void VolumeGL::markShadows(int lightIndex) {
         }
         if (extrusion == Extrusion::Geometry) {
             glUniform1ui(kFlagsLocation, d.gpuFlags);
-            glDrawArrays(GL_TRIANGLES_ADJACENCY, 0, GLsizei(6 * gpu.mesh->faceCount()));
+            glDrawArrays(GL_TRIANGLES_ADJACENCY, 0,
+                         GLsizei(SilhouetteInputs::kVerticesPerFace * gpu.mesh->faceCount()));
             continue;
         }
         if (d.capCount) glDrawElements(GL_TRIANGLES, GLsizei(d.capCount), GL_UNSIGNED_INT, nullptr);

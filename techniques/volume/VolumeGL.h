@@ -43,6 +43,7 @@
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/volume/GpuSilhouettesGL.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
+#include "techniques/volume/SilhouetteInputs.h"
 #include "techniques/volume/Volume.h"
 #include "techniques/volume/VolumeGeometry.h"
 #include "techniques/volume/VolumeMeshBuffers.h"

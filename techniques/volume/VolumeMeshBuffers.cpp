@@ -4,6 +4,8 @@
 
 #include <glm/glm.hpp>
 
+#include "techniques/volume/SilhouetteInputs.h"
+
 namespace sb {
 
 VolumeMeshBuffers::~VolumeMeshBuffers() {
@@ -72,44 +74,15 @@ void uploadExtrusion(VolumeMeshBuffers::Gpu& g, OpenEdgePolicy policy) {
     g.extrusionSideIndices = GLsizei(m.sideIndices.size());
 }
 
-/// The face across each directed edge, or the face itself where there is none (an open edge: the
-/// face then sees itself across it and never builds a side there).
-uint32_t across(const std::vector<uint32_t>& neighbours, size_t face, size_t k) {
-    const uint32_t other = neighbours[3 * face + k];
-    return other == ShadowVolumeMesh::kNoFace ? uint32_t(face) : other;
-}
-
 void uploadAdjacency(VolumeMeshBuffers::Gpu& g) {
-    // Per face 6 vertices of 3 vec4 (position w = 1, normal, first vertex): slot 2k its vertex k with
-    // its own face's data, slot 2k + 1 the vertex of the face across edge (k, k + 1) that is not on
-    // the edge, with that face's data (GL_TRIANGLES_ADJACENCY's layout).
-    const ShadowVolumeMesh& m = *g.mesh;
-    const std::vector<uint32_t> neighbours = m.neighbours();
-    const std::vector<uint32_t>& faces = m.faces();
-    const std::vector<glm::vec3>& p = m.positions();
-    auto faceData = [&](std::vector<glm::vec4>& out, uint32_t vertex, size_t face) {
-        out.emplace_back(p[vertex], 1.0f);
-        out.emplace_back(m.faceNormals()[face], 0.0f);
-        out.emplace_back(p[faces[3 * face]], 1.0f);
-    };
-    std::vector<glm::vec4> data;
-    data.reserve(m.faceCount() * 18);
-    for (size_t f = 0; f < m.faceCount(); ++f)
-        for (size_t k = 0; k < 3; ++k) {
-            faceData(data, faces[3 * f + k], f);
-            const uint32_t other = across(neighbours, f, k);
-            const uint32_t a = faces[3 * f + k], b = faces[3 * f + (k + 1) % 3];
-            uint32_t opposite = faces[3 * other];
-            for (size_t j = 0; j < 3; ++j)
-                if (faces[3 * other + j] != a && faces[3 * other + j] != b) opposite = faces[3 * other + j];
-            faceData(data, opposite, other);
-        }
+    const std::vector<glm::vec4> data = SilhouetteInputs::adjacencyVertices(*g.mesh);
+    constexpr GLsizei kStride = SilhouetteInputs::kVec4PerVertex * sizeof(glm::vec4);
     glCreateVertexArrays(1, &g.adjacencyVao);
     glCreateBuffers(1, &g.adjacencyVbo);
     glNamedBufferStorage(g.adjacencyVbo, GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(glm::vec4)),
                          data.data(), 0);
-    glVertexArrayVertexBuffer(g.adjacencyVao, 0, g.adjacencyVbo, 0, GLsizei(3 * sizeof(glm::vec4)));
-    for (GLuint a : {0u, 1u, 2u}) {
+    glVertexArrayVertexBuffer(g.adjacencyVao, 0, g.adjacencyVbo, 0, kStride);
+    for (GLuint a = 0; a < GLuint(SilhouetteInputs::kVec4PerVertex); ++a) {
         glEnableVertexArrayAttrib(g.adjacencyVao, a);
         glVertexArrayAttribFormat(g.adjacencyVao, a, 4, GL_FLOAT, GL_FALSE, GLuint(a * sizeof(glm::vec4)));
         glVertexArrayAttribBinding(g.adjacencyVao, a, 0);
@@ -117,24 +90,9 @@ void uploadAdjacency(VolumeMeshBuffers::Gpu& g) {
 }
 
 void uploadFaces(VolumeMeshBuffers::Gpu& g) {
-    // shaders/volume/silhouette.comp's Face: uvec4 vertices, uvec4 neighbours, vec4 normal, vec4 first.
-    const ShadowVolumeMesh& m = *g.mesh;
-    const std::vector<uint32_t> neighbours = m.neighbours();
-    const std::vector<uint32_t>& faces = m.faces();
-    struct Face {
-        glm::uvec4 vertices, neighbours;
-        glm::vec4 normal, first;
-    };
-    std::vector<Face> data(m.faceCount());
-    for (size_t f = 0; f < m.faceCount(); ++f) {
-        data[f].vertices = {faces[3 * f], faces[3 * f + 1], faces[3 * f + 2], 0u};
-        data[f].neighbours = {across(neighbours, f, 0), across(neighbours, f, 1), across(neighbours, f, 2),
-                              0u};
-        data[f].normal = glm::vec4(m.faceNormals()[f], 0.0f);
-        data[f].first = glm::vec4(m.positions()[faces[3 * f]], 1.0f);
-    }
+    const std::vector<SilhouetteFace> data = SilhouetteInputs::faces(*g.mesh);
     glCreateBuffers(1, &g.faceBuffer);
-    glNamedBufferStorage(g.faceBuffer, GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(Face)),
+    glNamedBufferStorage(g.faceBuffer, GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(SilhouetteFace)),
                          data.data(), 0);
 }
 
