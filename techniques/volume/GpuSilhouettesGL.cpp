@@ -51,6 +51,8 @@ void GpuSilhouettesGL::reserve(GLuint buffer, size_t& capacity, size_t bytes) {
 }
 
 void GpuSilhouettesGL::beginFrame() {
+    // Last frame's shader atomics are ordered before this clear.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const GLuint zero = 0;
     glClearNamedBufferSubData(mCount, GL_R32UI, 0, sizeof(GLuint), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
@@ -98,8 +100,9 @@ void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
         glUniform1ui(kVertexCountLocation, gpu.mesh->vertexCount());
         glDispatchCompute((faces + kLocalSize - 1) / kLocalSize, 1, 1);
     }
-    // The indices feed the vertex fetch, the counts the indirect draws.
-    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    // The indices feed the vertex fetch, the counts the indirect draws; the next light's upload of
+    // the commands comes after these atomics.
+    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands);
 }
 
