@@ -229,12 +229,12 @@ void VolumePlanner::collectDraws(const Light& light, const View& view, FrameStat
         const MeshInfo& mesh = mMeshes[c.mesh];
         if (mSettings.gpuSilhouettes()) {
             // buildVolume's request as bits; the device builds and counts the volume.
-            using namespace GpuVolumeFlags;
+            namespace F = GpuVolumeFlags;
             const bool directional = mSettings.directional && lw.w == 0.0f && !finite;
-            d.gpuFlags = (d.zfail && !cull.lightCap ? kLightCap : 0u) |
-                         (d.zfail && !cull.darkCap && !directional ? kDarkCap : 0u) |
-                         (cull.sides ? 0u : kSides) | (directional ? kDirectional : 0u);
-            if (!(d.gpuFlags & (kLightCap | kDarkCap | kSides))) continue;
+            d.gpuFlags = (d.zfail && !cull.lightCap ? F::kLightCap : 0u) |
+                         (d.zfail && !cull.darkCap && !directional ? F::kDarkCap : 0u) |
+                         (cull.sides ? 0u : F::kSides) | (directional ? F::kDirectional : 0u);
+            if (!(d.gpuFlags & (F::kLightCap | F::kDarkCap | F::kSides))) continue;
         } else if (mSettings.vertexExtrusion) {
             // Light and dark caps are the same triangles here (the shader decides which each is).
             const bool caps = d.zfail && !(cull.lightCap && cull.darkCap);
