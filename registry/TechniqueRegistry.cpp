@@ -27,6 +27,10 @@
 #include "techniques/shadowmap/CubeMapVulkan.h"
 #include "techniques/shadowmap/EsmGL.h"
 #include "techniques/shadowmap/EsmVulkan.h"
+#include "techniques/shadowmap/EvsmGL.h"
+#include "techniques/shadowmap/EvsmVulkan.h"
+#include "techniques/shadowmap/MsmGL.h"
+#include "techniques/shadowmap/MsmVulkan.h"
 #include "techniques/shadowmap/ParaboloidGL.h"
 #include "techniques/shadowmap/ParaboloidVulkan.h"
 #include "techniques/shadowmap/PcssGL.h"
@@ -91,6 +95,8 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"pcss", gl<PcssGL>, vulkan<PcssVulkan>},
         {"vsm", gl<VsmGL>, vulkan<VsmVulkan>},
         {"esm", gl<EsmGL>, vulkan<EsmVulkan>},
+        {"evsm", gl<EvsmGL>, vulkan<EvsmVulkan>},
+        {"msm", gl<MsmGL>, vulkan<MsmVulkan>},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},
         {"occluder", gl<OccluderGL>, vulkan<OccluderVulkan>},
         {"proxy", gl<ProxyGL>, vulkan<ProxyVulkan>},

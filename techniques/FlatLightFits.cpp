@@ -29,6 +29,7 @@ void FlatLightFits::setScene(const Scene& scene, const std::string& technique, c
     mViewProj.clear();
     mShadowMatrix.clear();
     mCastsShadows.clear();
+    mResolution = resolution;
     const bool recount = !(scene.motion && mCoverageCounted);
     if (recount) mCoverage = {};
     const size_t count = std::min<size_t>(scene.lights.size(), kMaxLights);
@@ -62,6 +63,12 @@ float FlatLightFits::farthestW(const glm::mat4& lightViewProj, const Aabb& bound
         for (const glm::vec3& c : bounds.corners())
             w = std::max(w, std::abs((lightViewProj * glm::vec4(c, 1.0f)).w));
     return w;
+}
+
+std::optional<MapPoint> FlatLightFits::texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const {
+    if (light >= size() || !castsShadow(light) || !looksUp(mShadowMatrix[light], at.position))
+        return std::nullopt;
+    return MapPoint{0, mResolution, projectedTexel(mShadowMatrix[light], mResolution, q)};
 }
 
 size_t FlatLightFits::shadowed() const {

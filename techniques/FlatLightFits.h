@@ -20,6 +20,7 @@
 #include "scenes/MapCoverage.h"
 #include "scenes/Scene.h"
 #include "shading/ShaderLimits.h"
+#include "techniques/MapTexels.h"
 #include "techniques/PropertySet.h"
 
 namespace sb {
@@ -33,7 +34,7 @@ struct ViewCull {
     std::vector<float> margins; ///< per light, world units
 };
 
-class FlatLightFits {
+class FlatLightFits final : public MapTexels {
 public:
     /// World size of one texel of a map of `resolution` texels rendered with `lightViewProj`, at
     /// light-space w = 1: row r of an orthographic proj * view is (2 / extent_r) times a unit axis, and
@@ -64,6 +65,11 @@ public:
                   PointLights points);
 
     size_t size() const { return mViewProj.size(); }
+    /// The maps' resolution (setScene's).
+    int resolution() const { return mResolution; }
+    /// Light `light`'s one map (map 0), where lighting.frag looks `at` up (MapTexels). pcss's blocker search
+    /// also reads a little past the map's edge; its samples there are left out.
+    std::optional<MapPoint> texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const override;
     /// The shadowed lights' maps together: texels the casters cover, and all their texels
     /// (counter_map_covered_pct).
     const MapCoverage& coverage() const { return mCoverage; }
@@ -86,6 +92,7 @@ private:
     std::vector<glm::mat4> mViewProj;
     std::vector<glm::mat4> mShadowMatrix;
     std::vector<uint8_t> mCastsShadows; ///< per light
+    int mResolution = 0;
     MapCoverage mCoverage;
     bool mCoverageCounted = false; ///< a scene in motion counts once (setScene)
 };

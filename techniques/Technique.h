@@ -16,6 +16,8 @@
 
 namespace sb {
 
+class MapTexels;
+
 class Technique {
 public:
     explicit Technique(TechniqueInfo info);
@@ -45,6 +47,10 @@ public:
     virtual void propertiesApplied() {}
     /// Counters of the last executed frame.
     virtual Counters counters() const { return {}; }
+    /// Where the last executed frame's lighting pass looked world points up in its shadow maps
+    /// (techniques/MapTexels.h; the accuracy judge's texels per pixel); null for a technique that reads no
+    /// shadow map.
+    virtual const MapTexels* mapTexels() const { return nullptr; }
     /// Sorted, '|'-joined keys of the programs compile() selected: the permutation logged per row.
     const std::string& permutationKey() const { return mPermutationKey; }
 

@@ -107,6 +107,14 @@ const Case kCases[] = {
     {"esm_spot", "sphere_plane", "far", "esm:resolution=512:exponent=80", SubmitMode::Retained, "spot"},
     {"esm_teapot", "teapot", "far", "esm"},
     {"esm_exceptions", "exceptions", "far", "esm"},
+    // evsm and msm: vsm's bound (per warp) and the Hamburger reconstruction divide by differences of nearly
+    // equal filtered sums too; measured 13 and 5 pixels (evsm), 57 (msm, aircraft) differing by rounding.
+    // msm under the spot light differs in ~500 pixels by up to 1e-3 and 4-19 change sides, over the rule's
+    // 0.5%: left out, open in NOTES-msm.md.
+    {"evsm_aircraft", "aircraft", "far", "evsm", SubmitMode::Retained, "", 0.0005},
+    {"evsm_spot_components2", "sphere_plane", "far", "evsm:resolution=512:components=2", SubmitMode::Retained,
+     "spot", 0.0005},
+    {"msm_aircraft", "aircraft", "far", "msm", SubmitMode::Retained, "", 0.0005},
     {"reference_aircraft", "aircraft", "far", "reference"},
     {"reference_point_light_instanced", "point_light", "far", "reference", SubmitMode::Instanced},
     {"reference_sphere_plane_spot", "sphere_plane", "far", "reference", SubmitMode::Retained, "spot"},

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "PaintedCell.h"
 #include "TestSupport.h"
 #include "bench/golden/AccuracyBounds.h"
 #include "bench/golden/GoldenImage.h"
@@ -111,17 +112,7 @@ TEST(MatrixVariants, ANameSelectsItsVariantsAndASpecOneVariant) {
 /// A 16x16 one-light frame, the left `shadowed` columns in shadow, judged wrong off the edge band on
 /// 0.1% of the samples (inside the exact rule's 0.5%).
 void paint(MatrixCell& cell, int shadowed) {
-    cell.visibility = {kSize, kSize, 1, std::vector<uint8_t>(kSize * kSize)};
-    cell.colour = {kSize, kSize, 3, std::vector<uint8_t>(kSize * kSize * 3)};
-    cell.visibilityFloat.assign(kSize * kSize, 1.0f);
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const size_t p = size_t(y * kSize + x);
-            const bool dark = x < shadowed;
-            cell.visibility.pixels[p] = dark ? 0 : 255;
-            cell.visibilityFloat[p] = dark ? 0.0f : 1.0f;
-            for (int c = 0; c < 3; ++c) cell.colour.pixels[p * 3 + size_t(c)] = dark ? 20 : 200;
-        }
+    test::paintColumns(cell, kSize, shadowed);
     CellAccuracy light;
     light.noShadowPct = 10.0;
     light.hard.wrongPct = 1.0;

@@ -50,6 +50,10 @@ const EllipseCase kEllipseCases[] = {
     {"esm_exponent500_immediate", "esm:exponent=500", SubmitMode::Immediate},
     {"esm_blur0_no_background", "esm:blur=0:receiver_background=false", SubmitMode::Retained},
     {"esm_blur32_res256", "esm:blur=32:resolution=256", SubmitMode::Retained},
+    {"evsm_default", "evsm", SubmitMode::Retained},
+    {"evsm_components2_instanced", "evsm:components=2", SubmitMode::Instanced},
+    {"msm_default", "msm", SubmitMode::Retained},
+    {"msm_float_blur9", "msm:format=float:blur=9", SubmitMode::Retained},
     // exp(-2 (t - d_occ)) is 0.20..0.26 inside this ellipse (EsmInterior checks the values): too light.
     {"negative_esm_exponent2", "esm:exponent=2", SubmitMode::Retained, true},
 };
@@ -294,7 +298,8 @@ TEST_P(MomentSpot, ShadowsTheGroundUnderTheSphere) {
     EXPECT_EQ(wrong, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Moments, MomentSpot, ::testing::Values("vsm", "esm", "esm:exponent=500"),
+INSTANTIATE_TEST_SUITE_P(Moments, MomentSpot,
+                         ::testing::Values("vsm", "esm", "esm:exponent=500", "evsm", "msm"),
                          [](const auto& p) {
                              std::string n = p.param;
                              std::replace_if(
@@ -329,7 +334,8 @@ TEST(MomentShadows, NonCastersInTheBackgroundShadowNothing) {
                "near": 1, "far": 100}],
   "effects": ["hard_shadows"]
 })");
-    for (const char* spec : {"vsm", "esm", "esm:exponent=500", "vsm:receiver_background=false"}) {
+    for (const char* spec :
+         {"vsm", "esm", "esm:exponent=500", "vsm:receiver_background=false", "evsm", "msm"}) {
         const test::RenderedFrame f = test::renderSpec(scene, "top", 256, spec);
         int strip = 0, stripDark = 0, plate = 0, plateDark = 0, sphereShadow = 0, sphereShadowLit = 0;
         for (size_t i = 0; i < f.world.size(); ++i) {
@@ -357,7 +363,7 @@ TEST(MomentShadows, NonCastersInTheBackgroundShadowNothing) {
 }
 
 TEST(MomentShadows, PointLightIsRefusedNamingTheOmniTechniques) {
-    for (const char* name : {"vsm", "esm"}) {
+    for (const char* name : {"vsm", "esm", "evsm", "msm"}) {
         RunConfig cfg = test::quickConfig("sphere_plane", "top", 64);
         cfg.sceneOptions.lightType = LightType::Point;
         Harness h(cfg);

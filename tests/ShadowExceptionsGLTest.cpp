@@ -132,8 +132,8 @@ TEST(ShadowExceptions, TheBoxTopIsShadowedWhenItReceives) {
     // shadows the floor only, nor projective, whose casters are drawn unshadowed).
     const std::string scene = writeScene("control", true, kTwoLights);
     Harness h(test::quickConfig(scene, "view", kSize));
-    for (const std::string name :
-         {"shadowmap", "cascaded", "pcss", "vsm", "esm", "cubemap", "paraboloid", "volume", "reference"}) {
+    for (const std::string name : {"shadowmap", "cascaded", "pcss", "vsm", "esm", "evsm", "msm", "cubemap",
+                                   "paraboloid", "volume", "reference"}) {
         SCOPED_TRACE(name);
         std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));
         const Judged j = judge(test::renderOnce(h, *t));
@@ -147,10 +147,10 @@ TEST(ShadowExceptions, ALightThatCastsNoShadowRunsNoShadowPass) {
     Harness h(test::quickConfig(scene, "view", kSize));
     // The passes each technique leaves out of such a frame (TechniqueInfo::passes names them).
     const std::vector<std::pair<std::string, std::vector<std::string>>> expected = {
-        {"shadowmap", {"depth"}},           {"cascaded", {"depth"}},    {"pcss", {"depth"}},
-        {"vsm", {"depth", "blur"}},         {"esm", {"depth", "blur"}}, {"cubemap", {"depth"}},
-        {"paraboloid", {"depth"}},          {"volume", {"mark"}},       {"planar", {"shadows"}},
-        {"projective", {"texture", "blur"}}};
+        {"shadowmap", {"depth"}},   {"cascaded", {"depth"}},    {"pcss", {"depth"}},
+        {"vsm", {"depth", "blur"}}, {"esm", {"depth", "blur"}}, {"evsm", {"depth", "blur"}},
+        {"msm", {"depth", "blur"}}, {"cubemap", {"depth"}},     {"paraboloid", {"depth"}},
+        {"volume", {"mark"}},       {"planar", {"shadows"}},    {"projective", {"texture", "blur"}}};
     for (const auto& [name, passes] : expected) {
         SCOPED_TRACE(name);
         std::unique_ptr<GlTechnique> t = TechniqueRegistry::create(TechniqueSpec::parse(specOf(name)));

@@ -17,12 +17,14 @@ namespace sb::test {
 
 class ComputeKernel {
 public:
-    /// Compiles `shader` (a path from the source tree's root) with `defines`, for `buffers` storage
-    /// buffers and a push block of `pushBytes` (0: none). `label` names the descriptor sets in errors.
+    /// Compiles `shader` (a path from `root`, by default the source tree's root) with `defines`, for
+    /// `buffers` storage buffers and a push block of `pushBytes` (0: none). `label` names the descriptor
+    /// sets in errors. A fixture whose includes are written from shaders/ (as the techniques' shaders
+    /// include each other) passes a root holding links to the folders it needs.
     ComputeKernel(VulkanContext& context, const std::string& shader, const Defines& defines, uint32_t buffers,
-                  uint32_t pushBytes, const char* label)
-        : mContext(context), mCache(context, SB_SOURCE_DIR),
-          mSets(context.device(), {bindings(buffers)}, label), mPushBytes(pushBytes) {
+                  uint32_t pushBytes, const char* label, const std::string& root = SB_SOURCE_DIR)
+        : mContext(context), mCache(context, root), mSets(context.device(), {bindings(buffers)}, label),
+          mPushBytes(pushBytes) {
         const VkShaderModule module = mCache.get(shader, defines, ShaderStage::Compute);
         const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
         const VkDescriptorSetLayout setLayout = mSets.layout(0);

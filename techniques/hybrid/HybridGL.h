@@ -51,6 +51,8 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override;
+    /// Each instance's role's technique's (HybridMapTexels).
+    const MapTexels* mapTexels() const override { return &mMapTexels; }
 
 private:
     /// One role: its technique, the instances it shades and the names its passes are recorded under.
@@ -60,6 +62,7 @@ private:
 
     Factory mCreate;
     std::vector<Part> mParts; ///< self, then cast
+    HybridMapTexels<Part> mMapTexels{mParts};
     const Scene* mScene = nullptr;
     Counters mCounters;
 };

@@ -11,6 +11,7 @@
 #include "core/Error.h"
 #include "scenes/DrawSet.h"
 #include "scenes/Scene.h"
+#include "techniques/MapTexels.h"
 #include "techniques/PassRouter.h"
 #include "techniques/hybrid/Hybrid.h"
 
@@ -72,6 +73,25 @@ private:
                         "', which it does not declare",
                     ExitCode::Failure);
     }
+};
+
+/// A hybrid's map lookups (Technique::mapTexels): an instance's are its role's technique's, none where that
+/// technique reads no map. Holds the parts by reference: the hybrid owns both.
+template <class Part>
+class HybridMapTexels final : public MapTexels {
+public:
+    explicit HybridMapTexels(const std::vector<Part>& parts) : mParts(parts) {}
+    std::optional<MapPoint> texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const override {
+        for (const Part& part : mParts) {
+            if (at.instance >= part.scope.size() || !part.scope[at.instance]) continue;
+            const MapTexels* maps = part.technique->mapTexels();
+            return maps ? maps->texel(light, at, q) : std::nullopt;
+        }
+        return std::nullopt;
+    }
+
+private:
+    const std::vector<Part>& mParts;
 };
 
 /// What a hybrid declares once its parts are made: the combined effects, the parts' capabilities, and

@@ -39,6 +39,8 @@ public:
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    /// Each instance's role's technique's (HybridMapTexels).
+    const MapTexels* mapTexels() const override { return &mMapTexels; }
 
 private:
     using Part = HybridPart<VulkanTechnique, VulkanSubmitter>;
@@ -48,7 +50,8 @@ private:
 
     Factory mCreate;
     std::vector<Part> mParts; ///< self, then cast
-    std::string mMissing;     ///< why the parts could not be made ("" when they are)
+    HybridMapTexels<Part> mMapTexels{mParts};
+    std::string mMissing; ///< why the parts could not be made ("" when they are)
     Counters mCounters;
 };
 

@@ -51,6 +51,7 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mPlan; }
 
     /// The split distances (view depth, cascades + 1) and the cascades of directional light `light` of
     /// the last frame: what the tests compare against closed forms.

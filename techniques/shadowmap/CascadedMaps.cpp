@@ -60,6 +60,8 @@ void CascadedMaps::setScene(const Scene& scene, int cascades) {
 
 void CascadedMaps::fit(const glm::mat4& view, const glm::mat4& proj, const PropertySet& p, int resolution) {
     const int n = int(p.getInt(Cascaded::kCascades));
+    mView = view;
+    mResolution = resolution;
     const glm::vec2 range =
         CascadeSplits::clipToReceivers(CascadeSplits::nearFar(proj), view, proj, mReceivers);
     mSplits = CascadeSplits::practical(range.x, range.y, n, float(p.getFloat(Cascaded::kLambda)));
@@ -86,6 +88,19 @@ void CascadedMaps::fit(const glm::mat4& view, const glm::mat4& proj, const Prope
     }
     for (size_t i = 0; i < mSlotViewProj.size(); ++i)
         mSlotShadow[i] = FlatLightFits::textureBias() * mSlotViewProj[i];
+}
+
+std::optional<MapPoint> CascadedMaps::texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const {
+    if (light >= mLights.size() || !mLights[light].castsShadows || mSplits.size() < 2) return std::nullopt;
+    const LightMaps& m = mLights[light];
+    int c = 0;
+    if (m.directional) { // as visibility() in cascaded_lighting.frag: splitFar[k] is mSplits[k + 1]
+        const float viewDepth = float(-(glm::dmat4(mView) * glm::dvec4(at.position, 1.0)).z);
+        for (int k = 0; k + 1 < m.slots; ++k) c += viewDepth > mSplits[size_t(k) + 1] ? 1 : 0;
+    }
+    const size_t slot = size_t(m.firstSlot + c);
+    if ((mEmptySlots & (1u << slot)) != 0 || !looksUp(mSlotShadow[slot], at.position)) return std::nullopt;
+    return MapPoint{c, mResolution, projectedTexel(mSlotShadow[slot], mResolution, q)};
 }
 
 void CascadedMaps::shareIdenticalFits(const LightMaps& m) {

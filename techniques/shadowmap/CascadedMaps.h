@@ -13,6 +13,7 @@
 #include "scenes/InstanceCulling.h"
 #include "scenes/Scene.h"
 #include "shading/Defines.h"
+#include "techniques/MapTexels.h"
 #include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
@@ -20,7 +21,7 @@
 
 namespace sb {
 
-class CascadedMaps {
+class CascadedMaps final : public MapTexels {
 public:
     /// The lighting pass's per-cascade values (cascaded_lighting.frag's uSplitFar, uBandStart, uBandScale).
     struct SplitValues {
@@ -53,6 +54,12 @@ public:
     const std::vector<int>& slotLayer() const { return mSlotLayer; }
     uint32_t emptySlots() const { return mEmptySlots; } ///< bit per slot: no caster in its map, lit
 
+    /// The slot cascaded_lighting.frag looks `at` up in (MapTexels): a directional light's cascade c (map
+    /// c), the first whose far split lies beyond `at`'s view depth in the last fit()'s camera, or a spot
+    /// light's one map (map 0); none in an empty slot. In a blend band the pass also reads cascade c + 1,
+    /// whose texels are larger: the answer is cascade c's.
+    std::optional<MapPoint> texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const override;
+
 private:
     /// A shadowed light: its slots and how they are fitted.
     struct LightMaps {
@@ -70,6 +77,8 @@ private:
     std::vector<LightMaps> mLights;
     std::vector<Aabb> mReceivers; ///< world bounds of every receiving instance
     std::vector<float> mSplits;   ///< this frame's split distances (view depth)
+    glm::mat4 mView{1.0f};        ///< this frame's camera (fit()), for a sample's view depth
+    int mResolution = 0;          ///< this frame's maps' resolution (fit())
     std::vector<float> mFitStart; ///< where each cascade's fit starts (its blend band included)
     // Per slot (a light's cascade, or a spot light's one map; slot i may use layer i at most):
     std::vector<glm::mat4> mSlotViewProj; ///< world -> the map's clip space

@@ -25,7 +25,7 @@ bool CubeMapGL::layeredAvailable(const Context& context) {
 }
 
 void CubeMapGL::setScene(const Scene& scene) {
-    mLights.setScene(scene);
+    mLights.setScene(scene, OmniShape::Cube, int(properties().getInt(P::kResolution)));
     mCubeLights = CubeMap::cubes(mLights);
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);

@@ -49,6 +49,7 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mLights; }
 
     /// Whether a context can render the faces in one layered pass (a geometry shader writing gl_Layer
     /// of a cube map array with 18 output vertices): GL 3.2 and up.

@@ -49,7 +49,7 @@ void CubeMapVulkan::release() {
 }
 
 void CubeMapVulkan::setScene(const Scene& scene) {
-    mLights.setScene(scene);
+    mLights.setScene(scene, OmniShape::Cube, int(properties().getInt(P::kResolution)));
     mCubeLights = CubeMap::cubes(mLights);
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);

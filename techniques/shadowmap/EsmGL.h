@@ -47,6 +47,7 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mMaps.fits(); }
     /// The depth array (R32F, log-space filtered depth per light) after the last frame's blur: for tests.
     GLuint depthTexture() const { return mMaps.texture(); }
     const FilterableShadowMaps& maps() const { return mMaps; }

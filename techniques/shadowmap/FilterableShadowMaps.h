@@ -1,7 +1,8 @@
 #pragma once
-// The depth pass that filterable shadow maps share (`vsm` and `esm`) on GL (the fits, the culling and the
-// counters both APIs share are techniques/shadowmap/MomentMapFits.h): per light one layer of a colour
-// texture array (RG32F moments for VSM, R32F depth for ESM) holding what the technique's program writes
+// The depth pass that filterable shadow maps share (`vsm`, `esm`, `evsm`, `msm`) on GL (the fits, the
+// culling and the counters both APIs share are techniques/shadowmap/MomentMapFits.h): per light one layer
+// of a colour texture array (RG32F moments for VSM, R32F depth for ESM, RG32F or RGBA32F warped moments for
+// EVSM, RGBA16 or RGBA32F four moments for MSM) holding what the technique's program writes
 // from each caster fragment, rendered with a depth buffer (one renderbuffer for all layers) so the nearest
 // caster wins, and cleared to "no occluder" (depth 1) first.
 //
@@ -86,7 +87,7 @@ public:
     MomentMapFits& fits() { return mFits; }
     const MomentMapFits& fits() const { return mFits; }
     /// (Re)allocates the array, the depth renderbuffer and the framebuffers when the size or format
-    /// changed. `format`: GL_RG32F or GL_R32F. Bilinear filtering, clamp to edge.
+    /// changed. `format`: GL_RG32F, GL_R32F, GL_RGBA32F or GL_RGBA16. Bilinear filtering, clamp to edge.
     void allocate(int resolution, GLenum format);
 
     /// The depth pass: binds `program` (which must write the light's moments to colour 0), and per light

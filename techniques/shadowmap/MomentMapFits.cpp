@@ -191,6 +191,13 @@ void MomentMapFits::fit(const Scene& scene, int resolution, int marginTexels) {
     mCoverageCounted = true;
 }
 
+std::optional<MapPoint> MomentMapFits::texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const {
+    if (light >= mShadowMatrix.size() || !castsShadow(light) || mFitResolution <= 0) return std::nullopt;
+    const glm::mat4& shadow = mShadowMatrix[light];
+    if (!looksUp(shadow, at.position, double(marginUv(mFitResolution)), false)) return std::nullopt;
+    return MapPoint{0, mFitResolution, projectedTexel(shadow, mFitResolution, q)};
+}
+
 MomentMapFits::LightDraws MomentMapFits::cull(size_t light, const Scene& scene,
                                               const glm::mat4& cameraViewProj, std::vector<uint8_t>& keep,
                                               std::vector<uint8_t>& keepBackground, size_t& culled) const {

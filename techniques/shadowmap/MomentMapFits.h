@@ -15,13 +15,14 @@
 #include "scenes/LightFit.h"
 #include "scenes/MapCoverage.h"
 #include "scenes/Scene.h"
+#include "techniques/MapTexels.h"
 #include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
 
 namespace sb {
 
-class MomentMapFits {
+class MomentMapFits final : public MapTexels {
 public:
     explicit MomentMapFits(std::string owner) : mOwner(std::move(owner)) {}
 
@@ -76,6 +77,10 @@ public:
 
     /// The shadowed lights' maps together: texels the casters cover, and all their texels.
     const MapCoverage& coverage() const { return mCoverage; }
+
+    /// Light `light`'s one map (map 0) at the last fit()'s resolution, where light_depth.glsl's
+    /// mapCoordinate looks `at` up: inside the margin (MapTexels).
+    std::optional<MapPoint> texel(size_t light, const ShadedPoint& at, const glm::dvec3& q) const override;
 
     /// The frame's counters on either API: draw_calls, triangles, shadow_map_texels, lights_unshadowed,
     /// blur_texels, casters_culled, map_covered_pct.

@@ -25,7 +25,7 @@ constexpr GLuint kMapUnit = 0;           // shadowmap/omni_lighting.glsl, parabo
 ParaboloidGL::ParaboloidGL() : GlTechnique(Paraboloid::declaration()) {}
 
 void ParaboloidGL::setScene(const Scene& scene) {
-    mLights.setScene(scene);
+    mLights.setScene(scene, OmniShape::Paraboloid, int(properties().getInt(P::kResolution)));
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);
     mSplitting.setScene(scene);

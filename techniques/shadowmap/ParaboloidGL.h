@@ -60,6 +60,7 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mLights; }
 
 private:
     void renderDepth(FrameContext& ctx);

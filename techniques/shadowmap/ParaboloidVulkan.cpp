@@ -53,7 +53,7 @@ void ParaboloidVulkan::release() {
 }
 
 void ParaboloidVulkan::setScene(const Scene& scene) {
-    mLights.setScene(scene);
+    mLights.setScene(scene, OmniShape::Paraboloid, int(properties().getInt(P::kResolution)));
     mCulling.setScene(scene);
     mOmniCulling.setScene(scene);
     mSplitting.setScene(scene);

@@ -57,6 +57,7 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mLights; }
 
     /// Per light: Pcss::LightParams (techniques/shadowmap/Pcss.h), shared with the Vulkan form.
     using LightParams = Pcss::LightParams;

@@ -32,6 +32,7 @@ public:
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mLights; }
 
 private:
     void release();

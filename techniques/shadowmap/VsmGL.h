@@ -47,6 +47,7 @@ public:
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
+    const MapTexels* mapTexels() const override { return &mMaps.fits(); }
     /// The moments array (RG32F, one layer per light) after the last frame's blur: for tests.
     GLuint momentsTexture() const { return mMaps.texture(); }
     const FilterableShadowMaps& maps() const { return mMaps; }

@@ -1,10 +1,10 @@
 #pragma once
-// The filterable shadow maps of `vsm` and `esm` on Vulkan (techniques/shadowmap/FilterableShadowMaps.h on
-// GL, whose header describes the method): the same fits, culling and counters (MomentMapFits), the
-// same shaders (shadowmap/moments.vert, moments.frag, the technique's lighting shader, their `#ifdef
-// VULKAN` blocks) and the same formats: per light a layer of a colour array (RG32F moments or R32F depth,
-// bilinear, clamp to edge) rendered over one depth attachment shared by the layers (X8_D24, GL's
-// 24-bit renderbuffer) and blurred by VulkanSeparableBlur.
+// The filterable shadow maps of `vsm`, `esm`, `evsm` and `msm` on Vulkan
+// (techniques/shadowmap/FilterableShadowMaps.h on GL, whose header describes the method): the same fits,
+// culling and counters (MomentMapFits), the same shaders (shadowmap/moments.vert, moments.frag, the
+// technique's lighting shader, their `#ifdef VULKAN` blocks) and the same formats: per light a layer of a
+// colour array (the member's format, bilinear, clamp to edge) rendered over one depth attachment
+// shared by the layers (X8_D24, GL's 24-bit renderbuffer) and blurred by VulkanSeparableBlur.
 //
 // A light's pass is one render pass that clears its layer to "no occluder" and, where a caster reaches
 // its frustum, draws with the receiver background the non-casters (a GREATER pipeline over depth
@@ -31,12 +31,14 @@ namespace sb {
 
 class VulkanMomentMaps {
 public:
-    /// What differs between `vsm` and `esm`.
+    /// What differs between the members (`vsm`, `esm`, `evsm`, `msm`).
     struct Settings {
-        VkFormat format = VK_FORMAT_UNDEFINED; ///< R32G32_SFLOAT (moments) or R32_SFLOAT (depth)
+        /// R32G32_SFLOAT (vsm, evsm), R32_SFLOAT (esm), R32G32B32A32_SFLOAT (evsm, msm) or
+        /// R16G16B16A16_UNORM (msm)
+        VkFormat format = VK_FORMAT_UNDEFINED;
         int resolution = 0;
-        Defines depthDefines;         ///< moments.frag's (the submitter's, VSM)
-        std::string lightingFragment; ///< "shadowmap/vsm.frag", "shadowmap/esm.frag"
+        Defines depthDefines;         ///< moments.frag's (the submitter's, VSM, EVSM_EXPONENTS, MSM)
+        std::string lightingFragment; ///< "shadowmap/vsm.frag", "esm.frag", "evsm.frag", "msm.frag"
         Defines lightingDefines;      ///< the lighting pass's (LIGHT_COUNT is added)
         glm::vec2 params{0.0f};       ///< the lighting block's two floats after the margin
         glm::vec4 clear{1.0f};        ///< a layer's "no occluder" value
@@ -50,6 +52,7 @@ public:
 
     /// The light fits; fit() them before compile().
     MomentMapFits& fits() { return mFits; }
+    const MomentMapFits& fits() const { return mFits; }
     /// A scene in motion moved: the fits follow (MomentMapFits::sceneChanged) and the blocks are
     /// rewritten.
     void sceneChanged(const Scene& scene);

@@ -71,13 +71,14 @@ bool lightArrives(const Light& light, const glm::vec3& p) {
 } // namespace
 
 AccuracyEvaluator::Sample AccuracyEvaluator::judgeFrame(Technique& technique, const AccuracyOptions& o,
-                                                        TraceStats* stats) {
+                                                        TraceStats* stats, GBuffer* gbuffer) {
     mHarness.renderFrame(technique);
-    return judgeVisibility(mHarness.readVisibility(), o, stats);
+    return judgeVisibility(mHarness.readVisibility(), o, stats, gbuffer);
 }
 
 AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> visibilityRgba,
-                                                             const AccuracyOptions& o, TraceStats* stats) {
+                                                             const AccuracyOptions& o, TraceStats* stats,
+                                                             GBuffer* gbuffer) {
     const Scene& scene = mHarness.scene();
     followCasters(); // the reference traces the scene as this frame drew it
     Sample s;
@@ -95,7 +96,27 @@ AccuracyEvaluator::Sample AccuracyEvaluator::judgeVisibility(std::vector<float> 
         s.mask[i] = glm::dot(mTracer->seenNormalAt(g, i), towardsLight(light, p)) > o.nDotLThreshold &&
                     lightArrives(light, p);
     }
+    if (gbuffer) *gbuffer = g;
     return s;
+}
+
+TexelDensity::Summary AccuracyEvaluator::texelDensity(const MapTexels& maps, const AccuracyOptions& o,
+                                                      const Sample& judged, const GBuffer& g) const {
+    const Scene& scene = mHarness.scene();
+    const glm::mat4 viewProj = mHarness.projection() * mHarness.view();
+    const glm::ivec2 size(mHarness.config().width, mHarness.config().height);
+    std::vector<double> values;
+    for (size_t i = 0; i < g.size(); ++i) {
+        if (!judged.mask[i]) continue;
+        const uint32_t instance = g.instance(i);
+        // A non-receiver's lighting looks no map up (shadowApplies, common/lighting.glsl).
+        if (instance >= scene.instances.size() || !scene.instances[instance].receivesShadow) continue;
+        const ShadedPoint at{glm::dvec3(glm::vec3(g.position[i])), instance};
+        if (const std::optional<double> t = TexelDensity::texelsPerPixel(
+                maps, size_t(o.light), at, glm::dvec3(mTracer->seenNormalAt(g, i)), viewProj, size))
+            values.push_back(*t);
+    }
+    return TexelDensity::summarize(std::move(values));
 }
 
 namespace {
@@ -206,9 +227,12 @@ void AccuracyEvaluator::measureStability(Technique& technique, const AccuracyOpt
 AccuracyResult AccuracyEvaluator::evaluate(Technique& technique, const AccuracyOptions& o) {
     AccuracyResult r = start(o);
     mHarness.seekPath(0); // a scene in motion: the first frame of the path (nothing for a static one)
-    const Sample base = judgeFrame(technique, o, &r.reference);
+    GBuffer g;
+    const Sample base = judgeFrame(technique, o, &r.reference, &g);
     score(base, o, r);
     keepJudged(base);
+    // Before the perturbations below re-fit the technique's maps: the judged frame's.
+    if (const MapTexels* maps = technique.mapTexels()) r.texels = texelDensity(*maps, o, base, g);
     if (mHarness.moving())
         measurePath(technique, o, r); // perturbing one frame of a moving scene would measure its motion
     else if (o.stability)
@@ -314,6 +338,10 @@ void AccuracyResult::appendColumns(CsvRow& row) const {
     row.emplace_back(col::kAccPathChangesReference, path ? std::to_string(path->changesReference) : "");
     row.emplace_back(col::kAccPathFalseChanges, path ? std::to_string(path->falseChanges) : "");
     row.emplace_back(col::kAccPathFlicker, path ? csvNumber(path->flicker) : "");
+    const bool mapped = texels.samples != 0;
+    row.emplace_back(col::kAccTexelsPerPixelP50, mapped ? csvNumber(texels.p50) : "");
+    row.emplace_back(col::kAccTexelsPerPixelP5, mapped ? csvNumber(texels.p5) : "");
+    row.emplace_back(col::kAccTexelsPerPixelMin, mapped ? csvNumber(texels.min) : "");
     add(col::kRefSamples, reference.samplesPerPixel);
     add(col::kRefNoiseBound, reference.noiseBound);
     add(col::kRefRays, double(reference.rays));

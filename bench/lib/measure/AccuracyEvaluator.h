@@ -14,7 +14,11 @@
 //     normal turned towards the camera, ReferenceTracer::seenNormalAt);
 //  4. metrics (reference/AccuracyMetrics.h): false-shadow/false-light rates, with and without the
 //     1-px band around reference edges; RMSE, mean and max error;
-//  5. stability: perturbation gain for a 0.25 px camera shift and for a 0.01 degree light turn
+//  5. texels per pixel (bench/lib/measure/TexelDensity.h), for a technique that reads shadow maps
+//     (Technique::mapTexels): at the judged samples of receiving instances that its lighting pass looks up
+//     in a map, the map's texels per screen pixel through the receiver's plane, from the G-buffer and
+//     the technique's light-space mapping on the CPU (nothing rendered);
+//  6. stability: perturbation gain for a 0.25 px camera shift and for a 0.01 degree light turn
 //     (technique changes / max(1, reference changes)), and flicker over a short camera drift (the
 //     same ratio summed over kDriftSteps steps of 0.5 px).
 // A scene in motion (scenes/Motion.h) is judged along its path instead of perturbed: at kPathSamples
@@ -32,6 +36,7 @@
 #include <vector>
 
 #include "bench/lib/harness/MeasuredHarness.h"
+#include "bench/lib/measure/TexelDensity.h"
 #include "bench/lib/output/CsvWriter.h"
 #include "reference/AccuracyMetrics.h"
 #include "reference/EmbreeScene.h"
@@ -69,6 +74,9 @@ struct AccuracyResult {
         double flicker = 0.0; ///< falseChanges / max(1, changesReference)
     };
     std::optional<Path> path;
+    /// Shadow-map texels per pixel over the judged samples a map shades (samples 0: none, or a technique
+    /// without a map, or a judgement of a read-back alone: the columns are empty).
+    TexelDensity::Summary texels;
     TraceStats reference;
     /// The columns of this result (appended to the timing row of the same configuration).
     void appendColumns(CsvRow& row) const;
@@ -96,11 +104,17 @@ public:
         std::vector<uint8_t> mask;
         std::vector<float> techniqueRgba; ///< the whole read-back, for the numeric sanity check
     };
-    Sample judgeFrame(Technique& technique, const AccuracyOptions& options, TraceStats* stats);
+    /// With `gbuffer`, the G-buffer the samples were judged at is left there.
+    Sample judgeFrame(Technique& technique, const AccuracyOptions& options, TraceStats* stats,
+                      GBuffer* gbuffer = nullptr);
     /// The same judgement of a visibility read-back (RGBA per pixel, rows bottom-up, the harness's size
     /// and current camera) against this harness's G-buffer and reference.
     Sample judgeVisibility(std::vector<float> visibilityRgba, const AccuracyOptions& options,
-                           TraceStats* stats);
+                           TraceStats* stats, GBuffer* gbuffer = nullptr);
+    /// Texels per pixel (step 5 above) of `maps` for the options' light at the samples `judged` marks on
+    /// `g` (this harness's size and current camera).
+    TexelDensity::Summary texelDensity(const MapTexels& maps, const AccuracyOptions& options,
+                                       const Sample& judged, const GBuffer& g) const;
     /// The frame the last evaluate() or evaluateVisibility() scored (its hard, soft and sanity metrics
     /// are this frame's: a moving scene's first path point), without the RGBA read-back; null before
     /// the first. `bench accuracy --images` draws it (bench/lib/images/AccuracyImages.h).

@@ -201,6 +201,21 @@ const std::vector<ColumnInfo> kColumns = {
     {col::kAccPathFlicker, "ratio", ColumnType::Number, kAccuracy,
      "temporal flicker: `acc_path_false_changes` / max(1, `acc_path_changes_reference`); 0 is none, 1 as "
      "many false changes as the motion's own"},
+    {col::kAccTexelsPerPixelP50, "ratio", ColumnType::Number, kAccuracy,
+     "shadow-map texels per screen pixel, median over the judged samples the technique's lighting pass looks "
+     "up in a map (of the judged light, `acc_light`; receivers only; outside the map's area or depth range "
+     "left out): t = sqrt(abs(det J)), J the Jacobian from screen pixels to map texels through the "
+     "receiver's "
+     "tangent plane, from the G-buffer and the technique's light-space mapping on the CPU "
+     "(bench/lib/measure/TexelDensity.h); 1 / t is the aliasing error m of Lloyd et al., \"Warping and "
+     "Partitioning for Low Error Shadow Maps\" (EGSR 2006) and \"Logarithmic Perspective Shadow Maps\" "
+     "(ACM TOG 2008), the sections defining m: below 1 a texel covers more than a pixel (undersampling); "
+     "empty for a technique without a shadow map (volume, planar, raytraced ...) or when no judged sample "
+     "is looked up in one"},
+    {col::kAccTexelsPerPixelP5, "ratio", ColumnType::Number, kAccuracy,
+     "the same, 5th percentile: the undersampled end (m's 95th percentile)"},
+    {col::kAccTexelsPerPixelMin, "ratio", ColumnType::Number, kAccuracy,
+     "the same, minimum: the worst-sampled judged sample (m's maximum)"},
     {col::kRefSamples, "count", ColumnType::Number, kAccuracy, "reference samples per pixel"},
     {col::kRefNoiseBound, "", ColumnType::Number, kAccuracy,
      "95% half-width of a soft reference pixel at its worst (0 for hard)"},
