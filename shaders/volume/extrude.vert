@@ -23,19 +23,7 @@ layout(location = 2) out vec3 vFirst;
 #else
 layout(location = 0) in vec4 aPosition;
 #endif
-#ifdef VULKAN
-// Per draw in the push constants (techniques/volume/VolumeVulkan.h): the model matrix, the object-space
-// light in vec and the FINITE extrusion length's bits in ints.y.
-#include "common/push.glsl"
-#define uModel uPush.model
-#define uLightObject uPush.vec
-#define uRange intBitsToFloat(uPush.ints.y)
-#else
-layout(location = 0) uniform mat4 uModel;
-layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) or (towards light, 0)
-layout(location = 2) uniform float uRange;       // FINITE: object-space extrusion length
-#endif
-
+#include "volume/draw.glsl"
 #include "volume/extrude.glsl"
 
 void main() {

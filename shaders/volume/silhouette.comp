@@ -3,16 +3,32 @@
 // (w = 1 copies, then the w = 0 copies at + uVertexCount that volume/extrude.vert sends to infinity).
 // Each invocation reserves its indices with one atomicAdd on its draw's indirect command's count, so
 // the marking pass draws exactly what was built (glDrawElementsIndirect), and adds its triangles to
-// the frame's device count (uTriangles, read by VolumeGL a frame or two later).
+// the frame's device count (uTriangles, read back after the measured frames). Storage bindings 0-3 of
+// set 0 on both APIs.
 layout(local_size_x = 64) in;
 
 #include "volume/silhouette.glsl"
 
+#ifdef VULKAN
+// techniques/volume/GpuSilhouettesVulkan.cpp's SilhouettePush: the same values as GL's uniforms.
+layout(push_constant) uniform SilhouettePush {
+    vec4 light;
+    uint flags, faceCount, draw, vertexCount, faceBase;
+} uPush;
+#define uLightObject uPush.light
+#define uFlags uPush.flags
+#define uFaceCount uPush.faceCount
+#define uDraw uPush.draw
+#define uVertexCount uPush.vertexCount
+#define uFaceBase uPush.faceBase
+#else
 layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) or (towards light, 0)
 layout(location = 3) uniform uint uFlags;       // techniques/volume/GpuVolumeFlags.h
 layout(location = 4) uniform uint uFaceCount;
 layout(location = 5) uniform uint uDraw;        // this caster's command in uCommands
 layout(location = 6) uniform uint uVertexCount; // n: the w = 0 copies' offset
+layout(location = 7) uniform uint uFaceBase;    // this mesh's first face in uFaces
+#endif
 
 layout(std430, binding = 0) buffer Count {
     uint uTriangles;
@@ -35,20 +51,22 @@ layout(std430, binding = 3) buffer Commands {
     uint uCommands[];
 };
 
+// Face f of this mesh (its faces and neighbours are numbered from 0; Vulkan keeps every mesh's faces in
+// one buffer, GL one buffer per mesh at base 0).
 bool back(uint f) {
-    return backFacing(uFaces[f].normal.xyz, uFaces[f].first.xyz, uLightObject);
+    return backFacing(uFaces[uFaceBase + f].normal.xyz, uFaces[uFaceBase + f].first.xyz, uLightObject);
 }
 
 void main() {
     const uint f = gl_GlobalInvocationID.x;
     if (f >= uFaceCount) return;
     const bool isBack = back(f);
-    const uvec3 v = uFaces[f].vertices.xyz;
+    const uvec3 v = uFaces[uFaceBase + f].vertices.xyz;
     const bool cap = isBack ? (uFlags & SV_DARK_CAP) != 0u : (uFlags & SV_LIGHT_CAP) != 0u;
     uint silhouette = 0u; // bit k: edge k is a silhouette this face owns
     if (isBack && (uFlags & SV_SIDES) != 0u)
         for (uint k = 0u; k < 3u; ++k)
-            if (!back(uFaces[f].neighbours[k])) silhouette |= 1u << k;
+            if (!back(uFaces[uFaceBase + f].neighbours[k])) silhouette |= 1u << k;
     const uint sides = bitCount(silhouette);
     const uint triangles = (cap ? 1u : 0u) + sides * sideTriangles(uFlags);
     if (triangles == 0u) return;

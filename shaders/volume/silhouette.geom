@@ -5,7 +5,7 @@
 // (2k, 2k + 2) in the face across it, with that face's normal and first vertex. So each face's
 // classification is computed from the same numbers wherever it is needed: the face and its neighbours
 // agree on every edge, and exactly one of a silhouette edge's two faces (the back one) emits its side.
-// The triangles emitted are counted on the device (uCount, read by VolumeGL a frame or two later).
+// The triangles emitted are counted on the device (uTriangles, read back after the measured frames).
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 21) out;
 
@@ -16,12 +16,13 @@ layout(location = 0) in vec3 vPosition[];
 layout(location = 1) in vec3 vNormal[];
 layout(location = 2) in vec3 vFirst[];
 
-layout(location = 0) uniform mat4 uModel;
-layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) or (towards light, 0)
-layout(location = 2) uniform float uRange;       // FINITE: object-space extrusion length
-layout(location = 3) uniform uint uFlags;        // techniques/volume/GpuVolumeFlags.h
+#include "volume/draw.glsl"
 
+#ifdef VULKAN
+layout(std430, set = 1, binding = 0) buffer Count {
+#else
 layout(std430, binding = 0) buffer Count {
+#endif
     uint uTriangles; // this frame's volume triangles (techniques/volume/VolumeGL.h)
 };
 

@@ -11,7 +11,7 @@ namespace sb {
 namespace {
 // shaders/volume/silhouette.comp's uniforms and bindings.
 constexpr GLint kLightLocation = 1, kFlagsLocation = 3, kFaceCountLocation = 4, kDrawLocation = 5,
-                kVertexCountLocation = 6;
+                kVertexCountLocation = 6, kFaceBaseLocation = 7;
 constexpr GLuint kCountBinding = 0, kFacesBinding = 1, kIndicesBinding = 2, kCommandsBinding = 3;
 constexpr GLuint kLocalSize = 64;
 constexpr size_t kCommandWords = 5; ///< glDrawElementsIndirect's command
@@ -85,6 +85,7 @@ void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
     glNamedBufferSubData(mCommands, 0, GLsizeiptr(mCommandData.size() * sizeof(uint32_t)),
                          mCommandData.data());
     program.use();
+    glUniform1ui(kFaceBaseLocation, 0); // one face buffer per mesh
     bindCount();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding, mIndices);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCommandsBinding, mCommands);

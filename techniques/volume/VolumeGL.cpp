@@ -293,10 +293,7 @@ void VolumeGL::execute(FrameContext& ctx) {
 
 Counters VolumeGL::counters() const {
     if (!mPlanner.settings().gpuSilhouettes()) return mCounters;
-    Counters out = mCounters;
-    for (auto& [name, value] : out)
-        if (name == "volume_triangles") value = mSilhouettes.readTriangles();
-    return out;
+    return VolumePlanner::withDeviceTriangles(mCounters, mSilhouettes.readTriangles());
 }
 
 } // namespace sb

@@ -138,7 +138,7 @@ void VolumePlanner::checkGpuSilhouettes(const Scene& scene) const {
                         std::to_string(mesh->openEdgeCount()) +
                         " open edges after welding; the GPU silhouette paths (extrusion=geometry, compute, "
                         "mesh) build the chapter's closed-mesh volume only: use extrusion=cpu or vertex",
-                    ExitCode::BadInput);
+                    ExitCode::Unsupported);
     }
 }
 
@@ -283,6 +283,12 @@ Counters VolumePlanner::counters(const FrameStats& stats, const SubmitStats& s,
     // The vertex-shader path finds silhouettes on the GPU: there is no count to report.
     if (mSettings.extrusion == Extrusion::Cpu) out.emplace_back("silhouette_edges", stats.silhouetteEdges);
     return out;
+}
+
+Counters VolumePlanner::withDeviceTriangles(Counters counters, double triangles) {
+    for (auto& [name, value] : counters)
+        if (name == "volume_triangles") value = triangles;
+    return counters;
 }
 
 } // namespace sb

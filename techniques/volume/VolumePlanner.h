@@ -105,8 +105,10 @@ public:
     void setMeshes(std::vector<MeshInfo> meshes) { mMeshes = std::move(meshes); }
     /// open_edges=refuse and an open caster mesh: sb::Error(BadInput) naming it.
     void checkClosed(const Scene& scene) const;
-    /// A GPU silhouette path and an open caster mesh: sb::Error(BadInput) naming it (those paths build
-    /// the chapter's closed-mesh volume only; the CPU and vertex paths handle open meshes).
+    /// A GPU silhouette path and an open caster mesh: sb::Error(Unsupported) naming it (those paths build
+    /// the chapter's closed-mesh volume only; the CPU and vertex paths handle open meshes). Unsupported,
+    /// not bad input: the form cannot draw this scene, as vsm cannot light a point light
+    /// (techniques/PointLightRefusal.h), and the golden matrix lists such a cell with this reason.
     void checkGpuSilhouettes(const Scene& scene) const;
     /// Mesh bounds, whether the scene has non-receivers, and the casters (placeCasters).
     void setScene(const Scene& scene);
@@ -138,6 +140,8 @@ public:
     /// silhouette paths' volume_triangles is 0 here: the technique replaces it with the device's count.
     Counters counters(const FrameStats& stats, const SubmitStats& submitted,
                       std::optional<double> stencilSamples) const;
+    /// `counters` with volume_triangles replaced by `triangles`, the device's count (GPU silhouettes).
+    static Counters withDeviceTriangles(Counters counters, double triangles);
 
 private:
     Settings mSettings;
