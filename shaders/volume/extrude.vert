@@ -6,8 +6,8 @@
 //    silhouette is found here instead of on the CPU. The test uses the plane, not this vertex's
 //    position: all vertices of a face get the same inputs and agree even when the light grazes it.
 // FINITE (section 9.6.1): extrude by the light's range instead of to infinity.
-// GPU_SILHOUETTES (extrusion=geometry): the vertices of triangles with adjacency, passed on in object
-// space with their face's normal and first vertex to volume/silhouette.geom.
+// GPU_SILHOUETTES (extrusion=geometry): the vertices of triangles with adjacency, projected as they are
+// and extruded, passed on with their face's normal and first vertex to volume/silhouette.geom.
 #include "common/frame.glsl"
 
 #ifdef VS_EXTRUSION
@@ -17,7 +17,7 @@ layout(location = 1) in vec4 aFacePlane;
 layout(location = 0) in vec4 aPosition;
 layout(location = 1) in vec4 aNormal;
 layout(location = 2) in vec4 aFirst;
-layout(location = 0) out vec3 vPosition;
+layout(location = 0) out vec4 vExtruded; // the extruded copy, projected
 layout(location = 1) out vec3 vNormal;
 layout(location = 2) out vec3 vFirst;
 #else
@@ -27,18 +27,19 @@ layout(location = 0) in vec4 aPosition;
 #include "volume/extrude.glsl"
 
 void main() {
-#ifdef GPU_SILHOUETTES
-    vPosition = aPosition.xyz;
-    vNormal = aNormal.xyz;
-    vFirst = aFirst.xyz;
-#else
 #ifdef VS_EXTRUSION
     // Listing 9-5 in plane form: dot(N, L.xyz - P0 L.w) = dot(N, L.xyz) - L.w dot(N, P0).
     bool back = dot(aFacePlane.xyz, uLightObject.xyz) - uLightObject.w * aFacePlane.w < 0.0;
     vec4 p = back ? extrude(aPosition) : vec4(aPosition, 1.0);
+#elif defined(GPU_SILHOUETTES)
+    // The face's own vertex (w = 1) and its extruded copy, both projected here as the CPU path's
+    // vertex shader projects them (the geometry shader only chooses among them).
+    vec4 p = aPosition;
+    vExtruded = uViewProj * (uModel * extrude(aPosition.xyz));
+    vNormal = aNormal.xyz;
+    vFirst = aFirst.xyz;
 #else
     vec4 p = aPosition.w == 0.0 ? extrude(aPosition.xyz) : aPosition;
 #endif
     gl_Position = uViewProj * (uModel * p);
-#endif
 }

@@ -9,10 +9,9 @@
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 21) out;
 
-#include "common/frame.glsl"
 #include "volume/silhouette.glsl"
 
-layout(location = 0) in vec3 vPosition[];
+layout(location = 0) in vec4 vExtruded[]; // volume/extrude.vert: the extruded copy, projected
 layout(location = 1) in vec3 vNormal[];
 layout(location = 2) in vec3 vFirst[];
 
@@ -26,10 +25,8 @@ layout(std430, binding = 0) buffer Count {
     uint uTriangles; // this frame's volume triangles (techniques/volume/VolumeGL.h)
 };
 
-#include "volume/extrude.glsl"
-
-void emit(vec4 p) {
-    gl_Position = uViewProj * (uModel * p);
+void emit(vec4 clip) {
+    gl_Position = clip;
     EmitVertex();
 }
 
@@ -43,21 +40,23 @@ void triangle(vec4 a, vec4 b, vec4 c) {
 void main() {
     const bool back = backFacing(vNormal[0], vFirst[0], uLightObject);
     uint emitted = 0u;
-    vec4 p[3] = vec4[3](vec4(vPosition[0], 1.0), vec4(vPosition[2], 1.0), vec4(vPosition[4], 1.0));
+    // Nothing is projected here: volume/extrude.vert projected each vertex and its extruded copy as the
+    // CPU path's vertex shader projects them, and this stage only chooses among them.
+    const vec4 c[3] = vec4[3](gl_in[0].gl_Position, gl_in[2].gl_Position, gl_in[4].gl_Position);
+    const vec4 e[3] = vec4[3](vExtruded[0], vExtruded[2], vExtruded[4]);
     if (!back && (uFlags & SV_LIGHT_CAP) != 0u) {
-        triangle(p[0], p[1], p[2]);
+        triangle(c[0], c[1], c[2]);
         ++emitted;
     } else if (back && (uFlags & SV_DARK_CAP) != 0u) {
-        triangle(extrude(p[0].xyz), extrude(p[1].xyz), extrude(p[2].xyz));
+        triangle(e[0], e[1], e[2]);
         ++emitted;
     }
     if (back && (uFlags & SV_SIDES) != 0u) {
         for (int k = 0; k < 3; ++k) {
             if (backFacing(vNormal[2 * k + 1], vFirst[2 * k + 1], uLightObject)) continue;
-            const vec4 a = p[k], b = p[(k + 1) % 3];
-            const vec4 bInf = extrude(b.xyz);
-            triangle(a, b, bInf);
-            if ((uFlags & SV_DIRECTIONAL) == 0u) triangle(a, bInf, extrude(a.xyz));
+            const int next = (k + 1) % 3;
+            triangle(c[k], c[next], e[next]);
+            if ((uFlags & SV_DIRECTIONAL) == 0u) triangle(c[k], e[next], e[k]);
             emitted += sideTriangles(uFlags);
         }
     }
