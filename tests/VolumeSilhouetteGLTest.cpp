@@ -1,5 +1,5 @@
 // `volume`'s GPU silhouette paths (extrusion=geometry: a geometry shader on triangles with adjacency;
-// extrusion=compute: a compute shader writing indices drawn indirectly) against the CPU path
+// extrusion=compute: a compute shader writing vertices drawn indirectly) against the CPU path
 // (extrusion=cpu, ShadowVolumeMesh::buildVolume, the independent answer). On every closed built-in
 // mesh, with a point and a directional light and z-fail forced as well as the per-caster default, the
 // device's volume triangle count (cleared every frame: the second frame's, read back after it) must

@@ -1,5 +1,5 @@
 // `volume`'s GPU silhouette paths on Vulkan (extrusion=geometry: silhouette.geom on triangles with
-// adjacency; extrusion=compute: silhouette.comp writing indices drawn with vkCmdDrawIndexedIndirect)
+// adjacency; extrusion=compute: silhouette.comp writing vertices drawn with vkCmdDrawIndirect)
 // against Vulkan's CPU path (extrusion=cpu, ShadowVolumeMesh::buildVolume, the independent answer), with
 // the validation layer on. On one scene holding every closed built-in mesh (one Vulkan frame per form
 // covers them all: GL's test takes them one by one), with a point and a directional light, by default

@@ -11,10 +11,10 @@ namespace sb {
 namespace {
 // shaders/volume/silhouette.comp's uniforms and bindings.
 constexpr GLint kLightLocation = 1, kFlagsLocation = 3, kFaceCountLocation = 4, kDrawLocation = 5,
-                kVertexCountLocation = 6, kFaceBaseLocation = 7;
-constexpr GLuint kCountBinding = 0, kFacesBinding = 1, kIndicesBinding = 2, kCommandsBinding = 3;
+                kApexLocation = 6, kFaceBaseLocation = 7;
+constexpr GLuint kCountBinding = 0, kFacesBinding = 1, kVerticesBinding = 2, kCommandsBinding = 3;
 constexpr GLuint kLocalSize = 64;
-constexpr size_t kCommandWords = 5; ///< glDrawElementsIndirect's command
+constexpr size_t kCommandWords = 4; ///< glDrawArraysIndirect's command
 } // namespace
 
 GpuSilhouettesGL::~GpuSilhouettesGL() {
@@ -24,23 +24,30 @@ GpuSilhouettesGL::~GpuSilhouettesGL() {
 void GpuSilhouettesGL::release() {
     if (mCount) glDeleteBuffers(1, &mCount);
     mCount = 0;
-    if (mIndices) glDeleteBuffers(1, &mIndices);
+    if (mVertices) glDeleteBuffers(1, &mVertices);
     if (mCommands) glDeleteBuffers(1, &mCommands);
-    mIndices = mCommands = 0;
-    mIndexCapacity = mCommandCapacity = 0;
+    if (mVao) glDeleteVertexArrays(1, &mVao);
+    mVertices = mCommands = mVao = 0;
+    mVertexCapacity = mCommandCapacity = 0;
 }
 
-void GpuSilhouettesGL::create(VolumeMeshBuffers& buffers, bool compute) {
+void GpuSilhouettesGL::create(bool compute) {
     release();
     glCreateBuffers(1, &mCount);
     const GLuint zero = 0;
     glNamedBufferStorage(mCount, sizeof(GLuint), &zero, GL_DYNAMIC_STORAGE_BIT);
     if (!compute) return;
-    glCreateBuffers(1, &mIndices);
+    glCreateBuffers(1, &mVertices);
     glCreateBuffers(1, &mCommands);
-    reserve(mIndices, mIndexCapacity, 4);
+    reserve(mVertices, mVertexCapacity, sizeof(glm::vec4));
     reserve(mCommands, mCommandCapacity, kCommandWords * sizeof(uint32_t));
-    buffers.setElementBuffer(mIndices);
+    // extrude.vert's aPosition (location 0): the doubled buffer's layout, one vec4 per vertex. The
+    // buffer's storage is respecified as it grows (reserve()), its name and so this binding kept.
+    glCreateVertexArrays(1, &mVao);
+    glEnableVertexArrayAttrib(mVao, 0);
+    glVertexArrayAttribFormat(mVao, 0, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(mVao, 0, 0);
+    glVertexArrayVertexBuffer(mVao, 0, mVertices, 0, sizeof(glm::vec4));
 }
 
 void GpuSilhouettesGL::reserve(GLuint buffer, size_t& capacity, size_t bytes) {
@@ -72,22 +79,23 @@ double GpuSilhouettesGL::readTriangles() const {
 
 void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
                                const VolumeMeshBuffers& buffers, const Program& program) {
-    // Each caster's region holds the most its faces can build; its command starts with no indices.
+    // Each caster's region holds the most its faces can build; its command starts with no vertices.
     mCommandData.assign(std::max<size_t>(1, draws.size()) * kCommandWords, 0u);
     size_t first = 0;
     for (size_t i = 0; i < draws.size(); ++i) {
         mCommandData[i * kCommandWords + 1] = 1; // instanceCount
         mCommandData[i * kCommandWords + 2] = uint32_t(first);
-        first += SilhouetteInputs::kMaxIndicesPerFace * buffers.mesh(draws[i].caster->mesh).mesh->faceCount();
+        first +=
+            SilhouetteInputs::kMaxVerticesPerFace * buffers.mesh(draws[i].caster->mesh).mesh->faceCount();
     }
-    reserve(mIndices, mIndexCapacity, std::max<size_t>(1, first) * sizeof(uint32_t));
+    reserve(mVertices, mVertexCapacity, std::max<size_t>(1, first) * sizeof(glm::vec4));
     reserve(mCommands, mCommandCapacity, mCommandData.size() * sizeof(uint32_t));
     glNamedBufferSubData(mCommands, 0, GLsizeiptr(mCommandData.size() * sizeof(uint32_t)),
                          mCommandData.data());
     program.use();
     glUniform1ui(kFaceBaseLocation, 0); // one face buffer per mesh
     bindCount();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding, mIndices);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVerticesBinding, mVertices);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCommandsBinding, mCommands);
     for (size_t i = 0; i < draws.size(); ++i) {
         const VolumePlanner::Draw& d = draws[i];
@@ -98,18 +106,18 @@ void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
         glUniform1ui(kFlagsLocation, d.gpuFlags);
         glUniform1ui(kFaceCountLocation, faces);
         glUniform1ui(kDrawLocation, GLuint(i));
-        glUniform1ui(kVertexCountLocation, gpu.mesh->vertexCount());
+        glUniform4fv(kApexLocation, 1, glm::value_ptr(SilhouetteInputs::apex(*gpu.mesh)));
         glDispatchCompute((faces + kLocalSize - 1) / kLocalSize, 1, 1);
     }
-    // The indices feed the vertex fetch, the counts the indirect draws; the next light's upload of
+    // The vertices feed the vertex fetch, the counts the indirect draws; the next light's upload of
     // the commands comes after these atomics.
-    glMemoryBarrier(GL_ELEMENT_ARRAY_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands);
 }
 
 void GpuSilhouettesGL::drawIndirect(size_t i) const {
-    glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(i * kCommandWords * sizeof(uint32_t)));
+    glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(i * kCommandWords * sizeof(uint32_t)));
 }
 
 } // namespace sb

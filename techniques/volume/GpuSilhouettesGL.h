@@ -5,8 +5,9 @@
 //    at the start of each frame and read back only when the counters are asked for (after the measured
 //    frames, untimed): no measured frame waits on it, and the count is the last frame's, exactly;
 //  - extrusion=compute: per light, one dispatch per caster (shaders/volume/silhouette.comp) writes the
-//    caster's volume as indices into its region of one index buffer and its count into its indirect
-//    command; the marking pass then draws each with glDrawElementsIndirect.
+//    caster's volume as vertices into its region of one vertex buffer and their number into its
+//    indirect command; the marking pass then draws each with glDrawArraysIndirect from this class's
+//    vertex array (no indices: the order the device builds in changes no count).
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -24,9 +25,9 @@ public:
     GpuSilhouettesGL(const GpuSilhouettesGL&) = delete;
     GpuSilhouettesGL& operator=(const GpuSilhouettesGL&) = delete;
 
-    /// Creates the buffers (needs a context); with `compute` also the compute path's index buffer,
-    /// which the doubled VAOs of `buffers` then draw from.
-    void create(VolumeMeshBuffers& buffers, bool compute);
+    /// Creates the buffers (needs a context); with `compute` also the compute path's vertex buffer and
+    /// the vertex array that draws from it.
+    void create(bool compute);
     /// Clears the count for this frame.
     void beginFrame();
     /// Binds the count at storage binding 0 (the geometry shader's, before its draws).
@@ -39,7 +40,9 @@ public:
     /// (shaders/volume/silhouette.comp) and leaves the commands bound for drawIndirect().
     void extract(const std::vector<VolumePlanner::Draw>& draws, const VolumeMeshBuffers& buffers,
                  const Program& program);
-    /// Draw `i` of the last extract(): its volume from the caster's doubled VAO (bound by the caller).
+    /// The vertex array of the extracted volumes (extrusion=compute), for the marking draws.
+    GLuint vertexArray() const { return mVao; }
+    /// Draw `i` of the last extract(), with vertexArray() bound.
     void drawIndirect(size_t i) const;
 
 private:
@@ -48,8 +51,8 @@ private:
     static void reserve(GLuint buffer, size_t& capacity, size_t bytes);
 
     GLuint mCount = 0;
-    GLuint mIndices = 0, mCommands = 0;
-    size_t mIndexCapacity = 0, mCommandCapacity = 0;
+    GLuint mVertices = 0, mCommands = 0, mVao = 0;
+    size_t mVertexCapacity = 0, mCommandCapacity = 0;
     std::vector<uint32_t> mCommandData; ///< per-frame scratch: the commands' initial values
 };
 

@@ -11,15 +11,15 @@ namespace sb {
 namespace {
 /// shaders/volume/silhouette.comp's SilhouettePush.
 struct SilhouettePush {
-    glm::vec4 light{0.0f};
-    uint32_t flags = 0, faceCount = 0, draw = 0, vertexCount = 0, faceBase = 0;
+    glm::vec4 light{0.0f}, apex{0.0f};
+    uint32_t flags = 0, faceCount = 0, draw = 0, faceBase = 0;
 };
-static_assert(sizeof(SilhouettePush) == 36, "silhouette.comp's push block");
+static_assert(sizeof(SilhouettePush) == 48, "silhouette.comp's push block");
 // silhouette.comp's storage bindings (set 0), as on GL.
-constexpr uint32_t kCountBinding = 0, kFacesBinding = 1, kIndicesBinding = 2, kCommandsBinding = 3;
+constexpr uint32_t kCountBinding = 0, kFacesBinding = 1, kVerticesBinding = 2, kCommandsBinding = 3;
 constexpr uint32_t kLocalSize = 64;
-constexpr size_t kCommandWords = 5; ///< VkDrawIndexedIndirectCommand
-static_assert(sizeof(VkDrawIndexedIndirectCommand) == kCommandWords * sizeof(uint32_t));
+constexpr size_t kCommandWords = 4; ///< VkDrawIndirectCommand
+static_assert(sizeof(VkDrawIndirectCommand) == kCommandWords * sizeof(uint32_t));
 
 DescriptorSets::Bindings storageBindings(uint32_t count, VkShaderStageFlags stages) {
     DescriptorSets::Bindings out;
@@ -34,12 +34,12 @@ void GpuSilhouettesVulkan::release() {
     mSets = DescriptorSets();
     mAdjacency.clear();
     mFaces = VulkanBuffer();
-    mIndices = VulkanBuffer();
+    mVertices = VulkanBuffer();
     mCommands = VulkanBuffer();
     mCount = VulkanBuffer();
     mFaceBase.clear();
     mFaceCount.clear();
-    mVertexCount.clear();
+    mApex.clear();
 }
 
 void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
@@ -67,13 +67,13 @@ void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
     std::vector<SilhouetteFace> faces;
     mFaceBase.assign(meshes.size(), 0);
     mFaceCount.assign(meshes.size(), 0);
-    mVertexCount.assign(meshes.size(), 0);
+    mApex.assign(meshes.size(), glm::vec4(0.0f));
     for (size_t m = 0; m < meshes.size(); ++m) {
         if (!meshes[m]) continue;
         const std::vector<SilhouetteFace> f = SilhouetteInputs::faces(*meshes[m]);
         mFaceBase[m] = uint32_t(faces.size());
         mFaceCount[m] = uint32_t(f.size());
-        mVertexCount[m] = meshes[m]->vertexCount();
+        mApex[m] = SilhouetteInputs::apex(*meshes[m]);
         faces.insert(faces.end(), f.begin(), f.end());
     }
     if (faces.empty()) faces.resize(1);
@@ -89,16 +89,16 @@ void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
                         {mSets.layout(0)}, sizeof(SilhouettePush));
 }
 
-void GpuSilhouettesVulkan::reserve(size_t indices, size_t commands) {
+void GpuSilhouettesVulkan::reserve(size_t vertices, size_t commands) {
     // Geometric growth: a frame with a few more casters in range does not reallocate. The last frame
     // that used the old buffers has finished (the harness waited for its fence).
-    const VkDeviceSize indexBytes = indices * sizeof(uint32_t), commandBytes = commands * sizeof(uint32_t);
-    if (indexBytes > mIndices.size()) {
-        mIndices =
-            VulkanBuffer(*mContext, std::max(indexBytes, 2 * mIndices.size()),
-                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, nullptr);
-        mSets.writeBuffer(0, kIndicesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mIndices.buffer(),
-                          mIndices.size());
+    const VkDeviceSize vertexBytes = vertices * sizeof(glm::vec4), commandBytes = commands * sizeof(uint32_t);
+    if (vertexBytes > mVertices.size()) {
+        mVertices =
+            VulkanBuffer(*mContext, std::max(vertexBytes, 2 * mVertices.size()),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, nullptr);
+        mSets.writeBuffer(0, kVerticesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mVertices.buffer(),
+                          mVertices.size());
     }
     if (commandBytes > mCommands.size()) {
         mCommands = VulkanBuffer(*mContext, std::max(commandBytes, 2 * mCommands.size()),
@@ -116,40 +116,42 @@ void GpuSilhouettesVulkan::extract(VkCommandBuffer cmd, const std::vector<Volume
     // Each draw's region holds the most its caster's faces can build; its command starts with none.
     size_t first = 0;
     for (const VolumePlanner::Draw& d : draws)
-        first += SilhouetteInputs::kMaxIndicesPerFace * mFaceCount[d.caster->mesh];
+        first += SilhouetteInputs::kMaxVerticesPerFace * mFaceCount[d.caster->mesh];
     reserve(std::max<size_t>(1, first), std::max<size_t>(1, draws.size()) * kCommandWords);
-    auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(mCommands.map());
+    auto* commands = static_cast<VkDrawIndirectCommand*>(mCommands.map());
     first = 0;
     for (size_t i = 0; i < draws.size(); ++i) {
-        commands[i] = {0u, 1u, uint32_t(first), 0, 0u};
-        first += SilhouetteInputs::kMaxIndicesPerFace * mFaceCount[draws[i].caster->mesh];
+        commands[i] = {0u, 1u, uint32_t(first), 0u};
+        first += SilhouetteInputs::kMaxVerticesPerFace * mFaceCount[draws[i].caster->mesh];
     }
     mPipeline.bind(cmd, {mSets.set(0)});
     for (size_t i = 0; i < draws.size(); ++i) {
         const VolumePlanner::Draw& d = draws[i];
         const uint32_t mesh = d.caster->mesh;
         if (!mFaceCount[mesh]) continue;
-        const SilhouettePush push{d.lightObject, d.gpuFlags,         mFaceCount[mesh],
-                                  uint32_t(i),   mVertexCount[mesh], mFaceBase[mesh]};
+        const SilhouettePush push{d.lightObject,    mApex[mesh], d.gpuFlags,
+                                  mFaceCount[mesh], uint32_t(i), mFaceBase[mesh]};
         mPipeline.push(cmd, &push);
         vkCmdDispatch(cmd, (mFaceCount[mesh] + kLocalSize - 1) / kLocalSize, 1, 1);
     }
-    // The indices feed the index fetch, the counts the indirect draws.
+    // The vertices feed the vertex fetch, the counts the indirect draws.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_INDEX_READ_BIT;
+    barrier.dstAccessMask = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                          VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0, 1,
                          &barrier, 0, nullptr, 0, nullptr);
 }
 
-void GpuSilhouettesVulkan::bindIndices(VkCommandBuffer cmd) const {
-    vkCmdBindIndexBuffer(cmd, mIndices.buffer(), 0, VK_INDEX_TYPE_UINT32);
+void GpuSilhouettesVulkan::bindVertices(VkCommandBuffer cmd) const {
+    const VkDeviceSize zero = 0;
+    const VkBuffer buffer = mVertices.buffer();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &zero);
 }
 
 void GpuSilhouettesVulkan::drawIndirect(VkCommandBuffer cmd, size_t i) const {
-    vkCmdDrawIndexedIndirect(cmd, mCommands.buffer(), i * sizeof(VkDrawIndexedIndirectCommand), 1,
-                             sizeof(VkDrawIndexedIndirectCommand));
+    vkCmdDrawIndirect(cmd, mCommands.buffer(), i * sizeof(VkDrawIndirectCommand), 1,
+                      sizeof(VkDrawIndirectCommand));
 }
 
 void GpuSilhouettesVulkan::endFrame(VkCommandBuffer cmd) const {

@@ -9,9 +9,9 @@
 //    the marking pipelines' layout (the count, seen by the geometry stage);
 //  - extrusion=compute: every mesh's faces in one storage buffer (each mesh from its own first face), a
 //    compute pipeline (vk/ComputePipeline.h), and per frame, before any render pass, one dispatch per
-//    draw of every light, each writing its caster's volume as indices into its own region of one index
-//    buffer and their number into its VkDrawIndexedIndirectCommand; the marking passes then draw each
-//    with vkCmdDrawIndexedIndirect from the caster's doubled vertex buffer.
+//    draw of every light, each writing its caster's volume as vertices into its own region of one vertex
+//    buffer and their number into its VkDrawIndirectCommand; the marking passes then draw each with
+//    vkCmdDrawIndirect from that buffer (no indices: the order the device builds in changes no count).
 #include <vector>
 
 #include "techniques/volume/VolumePlanner.h"
@@ -41,11 +41,11 @@ public:
     /// Zeroes the count for the frame being recorded (the previous frame has finished).
     void beginFrame();
     /// extrusion=compute: records, outside any render pass, every draw's volume (`draws`: the frame's,
-    /// every light's) and the barrier that orders the indices and counts before the draws read them.
+    /// every light's) and the barrier that orders the vertices and counts before the draws read them.
     void extract(VkCommandBuffer cmd, const std::vector<VolumePlanner::Draw>& draws);
-    /// extrusion=compute: binds the index buffer the extraction wrote (the doubled vertex buffers' indices).
-    void bindIndices(VkCommandBuffer cmd) const;
-    /// extrusion=compute: draw `i` of the last extract(), from its caster's doubled vertex buffer.
+    /// extrusion=compute: binds the vertex buffer the extraction wrote (vertex binding 0).
+    void bindVertices(VkCommandBuffer cmd) const;
+    /// extrusion=compute: draw `i` of the last extract(), from bindVertices()' buffer.
     void drawIndirect(VkCommandBuffer cmd, size_t i) const;
     /// After the frame's last pass, outside any render pass: the count's additions made visible to the
     /// host, which reads it after the frame's fence.
@@ -54,9 +54,9 @@ public:
     double readTriangles() const;
 
 private:
-    /// Grows the compute path's index and command buffers to hold `indices` and `commands` words and
-    /// points the set's bindings at them.
-    void reserve(size_t indices, size_t commands);
+    /// Grows the compute path's vertex and command buffers to hold `vertices` vec4 and `commands` words
+    /// and points the set's bindings at them.
+    void reserve(size_t vertices, size_t commands);
 
     VulkanContext* mContext = nullptr;
     bool mCompute = false;
@@ -64,8 +64,9 @@ private:
     DescriptorSets mSets; ///< geometry: the count; compute: count, faces, indices, commands
     std::vector<VulkanBuffer> mAdjacency;
     // extrusion=compute
-    VulkanBuffer mFaces, mIndices, mCommands;
-    std::vector<uint32_t> mFaceBase, mFaceCount, mVertexCount; ///< per scene mesh
+    VulkanBuffer mFaces, mVertices, mCommands;
+    std::vector<uint32_t> mFaceBase, mFaceCount; ///< per scene mesh
+    std::vector<glm::vec4> mApex;                ///< per scene mesh: SilhouetteInputs::apex
     ComputePipeline mPipeline;
 };
 

@@ -36,7 +36,7 @@ void VolumeGL::setScene(const Scene& scene) {
                      .adjacency = settings.extrusion == Extrusion::Geometry,
                      .faces = settings.extrusion == Extrusion::Compute},
                     settings.policy);
-    if (settings.gpuSilhouettes()) mSilhouettes.create(mBuffers, settings.extrusion == Extrusion::Compute);
+    if (settings.gpuSilhouettes()) mSilhouettes.create(settings.extrusion == Extrusion::Compute);
     std::vector<VolumePlanner::MeshInfo> meshes(mBuffers.size());
     for (size_t m = 0; m < mBuffers.size(); ++m) {
         const VolumeMeshBuffers::Gpu& gpu = mBuffers.mesh(m);
@@ -160,6 +160,7 @@ void VolumeGL::markShadows(int lightIndex) {
         if (d.caster->mesh != boundMesh) {
             glBindVertexArray(extrusion == Extrusion::Vertex     ? gpu.extrusionVao
                               : extrusion == Extrusion::Geometry ? gpu.adjacencyVao
+                              : extrusion == Extrusion::Compute  ? mSilhouettes.vertexArray()
                                                                  : gpu.doubledVao);
             boundMesh = d.caster->mesh;
         }

@@ -98,11 +98,6 @@ void uploadFaces(VolumeMeshBuffers::Gpu& g) {
 
 } // namespace
 
-void VolumeMeshBuffers::setElementBuffer(GLuint buffer) {
-    for (Gpu& g : mMeshes)
-        if (g.doubledVao) glVertexArrayElementBuffer(g.doubledVao, buffer);
-}
-
 void VolumeMeshBuffers::upload(const Scene& scene, Forms forms, OpenEdgePolicy policy) {
     release();
     glCreateBuffers(1, &mStream);

@@ -25,7 +25,7 @@ public:
         GLuint extrusionVao = 0, extrusionVbo = 0, extrusionIbo = 0;
         GLsizei extrusionCapIndices = 0, extrusionSideIndices = 0; ///< sides start after the caps
         GLuint adjacencyVao = 0, adjacencyVbo = 0; ///< extrusion=geometry: 6 vertices per face
-        GLuint faceBuffer = 0;                     ///< extrusion=compute: 64 bytes per face
+        GLuint faceBuffer = 0;                     ///< extrusion=compute: 96 bytes per face (SilhouetteFace)
     };
     /// Which forms upload() builds besides the doubled buffer.
     struct Forms {
@@ -42,9 +42,6 @@ public:
     /// Prepares every mesh a shadow-casting instance uses, with `forms`; the vertex-shader mesh is
     /// built for `policy` (two sheets for open meshes under multiplicity).
     void upload(const Scene& scene, Forms forms, OpenEdgePolicy policy);
-    /// extrusion=compute: the doubled VAOs draw their indices from `buffer` (the compute shader's
-    /// output) instead of the CPU stream.
-    void setElementBuffer(GLuint buffer);
     const Gpu& mesh(size_t index) const { return mMeshes[index]; }
     size_t size() const { return mMeshes.size(); }
 

@@ -28,7 +28,7 @@ public:
     enum class Far { Infinite, DepthClamp, Finite };
     /// Where silhouettes are found: on the CPU per caster (the chapter), in the vertex shader
     /// (McGuire-Hughes), or per face on the GPU in a geometry shader (triangles with adjacency), a
-    /// compute shader (indices into the doubled buffer, drawn indirectly) or a mesh shader (Vulkan).
+    /// compute shader (copies of the doubled buffer's vertices, drawn indirectly) or a mesh shader (Vulkan).
     enum class Extrusion { Cpu, Vertex, Geometry, Compute, Mesh };
     struct Settings {
         Mode mode = Mode::Auto;

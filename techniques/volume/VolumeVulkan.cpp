@@ -440,7 +440,7 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
                         VK_QUERY_CONTROL_PRECISE_BIT);
     if (extrusion == Extrusion::Cpu && mStream)
         vkCmdBindIndexBuffer(cmd, mStream.buffer(), 0, VK_INDEX_TYPE_UINT32);
-    if (extrusion == Extrusion::Compute) mSilhouettes.bindIndices(cmd);
+
     int counting = -1;
     uint32_t boundMesh = UINT32_MAX;
     const LightDraws& range = mLightDraws[size_t(lightIndex)];
@@ -451,7 +451,10 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mMark[finite][counting].get(ctx.targets));
         }
         const MeshGpu& gpu = mMeshes[d.caster->mesh];
-        if (d.caster->mesh != boundMesh) {
+        if (extrusion == Extrusion::Compute) {
+            if (boundMesh == UINT32_MAX) mSilhouettes.bindVertices(cmd); // every caster's volume
+            boundMesh = 0;
+        } else if (d.caster->mesh != boundMesh) {
             const VkDeviceSize zero = 0;
             const VkBuffer vb = extrusion == Extrusion::Vertex     ? gpu.extrusionVertices.buffer()
                                 : extrusion == Extrusion::Geometry ? mSilhouettes.adjacency(d.caster->mesh)
