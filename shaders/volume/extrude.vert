@@ -6,6 +6,7 @@
 //    silhouette is found here instead of on the CPU. The test uses the plane, not this vertex's
 //    position: all vertices of a face get the same inputs and agree even when the light grazes it.
 // FINITE (section 9.6.1): extrude by the light's range instead of to infinity.
+// PULLED (extrusion=compute): the doubled buffer's entries, fetched by the compute shader's choice.
 // GPU_SILHOUETTES (extrusion=geometry): the vertices of triangles with adjacency, projected as they are
 // and extruded, passed on with their face's normal and first vertex to volume/silhouette.geom.
 #include "common/frame.glsl"
@@ -20,6 +21,26 @@ layout(location = 2) in vec4 aFirst;
 layout(location = 0) out vec4 vExtruded; // the extruded copy, projected
 layout(location = 1) out vec3 vNormal;
 layout(location = 2) out vec3 vFirst;
+#elif defined(PULLED)
+// extrusion=compute: vertex i is the doubled entry uVertices[i] (volume/silhouette.comp's output), fetched
+// here instead of by the vertex input (drawn without indices, see that file).
+#ifdef VULKAN
+layout(std430, set = 1, binding = 0) readonly buffer Vertices {
+    uint uVertices[];
+};
+layout(std430, set = 1, binding = 1) readonly buffer Doubled {
+    vec4 uDoubled[]; // every caster mesh's doubled entries (techniques/volume/GpuSilhouettesVulkan.h)
+};
+#define VERTEX_ID gl_VertexIndex
+#else
+layout(std430, binding = 2) readonly buffer Vertices {
+    uint uVertices[];
+};
+layout(std430, binding = 4) readonly buffer Doubled {
+    vec4 uDoubled[]; // the caster mesh's doubled vertex buffer
+};
+#define VERTEX_ID gl_VertexID
+#endif
 #else
 layout(location = 0) in vec4 aPosition;
 #endif
@@ -39,6 +60,9 @@ void main() {
     vNormal = aNormal.xyz;
     vFirst = aFirst.xyz;
 #else
+#ifdef PULLED
+    const vec4 aPosition = uDoubled[uVertices[VERTEX_ID]];
+#endif
     vec4 p = aPosition.w == 0.0 ? extrude(aPosition.xyz) : aPosition;
 #endif
     gl_Position = uViewProj * (uModel * p);

@@ -11,8 +11,10 @@ namespace sb {
 namespace {
 // shaders/volume/silhouette.comp's uniforms and bindings.
 constexpr GLint kLightLocation = 1, kFlagsLocation = 3, kFaceCountLocation = 4, kDrawLocation = 5,
-                kApexLocation = 6, kFaceBaseLocation = 7;
+                kVertexCountLocation = 6, kFaceBaseLocation = 7, kVertexBaseLocation = 8;
 constexpr GLuint kCountBinding = 0, kFacesBinding = 1, kVerticesBinding = 2, kCommandsBinding = 3;
+/// volume/extrude.vert under PULLED: the caster mesh's doubled vertex buffer.
+constexpr GLuint kDoubledBinding = 4;
 constexpr GLuint kLocalSize = 64;
 constexpr size_t kCommandWords = 4; ///< glDrawArraysIndirect's command
 } // namespace
@@ -39,15 +41,10 @@ void GpuSilhouettesGL::create(bool compute) {
     if (!compute) return;
     glCreateBuffers(1, &mVertices);
     glCreateBuffers(1, &mCommands);
-    reserve(mVertices, mVertexCapacity, sizeof(glm::vec4));
+    reserve(mVertices, mVertexCapacity, sizeof(uint32_t));
     reserve(mCommands, mCommandCapacity, kCommandWords * sizeof(uint32_t));
-    // extrude.vert's aPosition (location 0): the doubled buffer's layout, one vec4 per vertex. The
-    // buffer's storage is respecified as it grows (reserve()), its name and so this binding kept.
+    // No vertex input: extrude.vert under PULLED fetches its vertex from storage buffers.
     glCreateVertexArrays(1, &mVao);
-    glEnableVertexArrayAttrib(mVao, 0);
-    glVertexArrayAttribFormat(mVao, 0, 4, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(mVao, 0, 0);
-    glVertexArrayVertexBuffer(mVao, 0, mVertices, 0, sizeof(glm::vec4));
 }
 
 void GpuSilhouettesGL::reserve(GLuint buffer, size_t& capacity, size_t bytes) {
@@ -88,12 +85,13 @@ void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
         first +=
             SilhouetteInputs::kMaxVerticesPerFace * buffers.mesh(draws[i].caster->mesh).mesh->faceCount();
     }
-    reserve(mVertices, mVertexCapacity, std::max<size_t>(1, first) * sizeof(glm::vec4));
+    reserve(mVertices, mVertexCapacity, std::max<size_t>(1, first) * sizeof(uint32_t));
     reserve(mCommands, mCommandCapacity, mCommandData.size() * sizeof(uint32_t));
     glNamedBufferSubData(mCommands, 0, GLsizeiptr(mCommandData.size() * sizeof(uint32_t)),
                          mCommandData.data());
     program.use();
-    glUniform1ui(kFaceBaseLocation, 0); // one face buffer per mesh
+    glUniform1ui(kFaceBaseLocation, 0);   // one face buffer per mesh
+    glUniform1ui(kVertexBaseLocation, 0); // and one doubled buffer
     bindCount();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVerticesBinding, mVertices);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCommandsBinding, mCommands);
@@ -106,14 +104,17 @@ void GpuSilhouettesGL::extract(const std::vector<VolumePlanner::Draw>& draws,
         glUniform1ui(kFlagsLocation, d.gpuFlags);
         glUniform1ui(kFaceCountLocation, faces);
         glUniform1ui(kDrawLocation, GLuint(i));
-        glUniform4fv(kApexLocation, 1, glm::value_ptr(SilhouetteInputs::apex(*gpu.mesh)));
+        glUniform1ui(kVertexCountLocation, gpu.mesh->vertexCount());
         glDispatchCompute((faces + kLocalSize - 1) / kLocalSize, 1, 1);
     }
-    // The vertices feed the vertex fetch, the counts the indirect draws; the next light's upload of
+    // The vertex shader reads the entries, the indirect draws the counts; the next light's upload of
     // the commands comes after these atomics.
-    glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
-                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands);
+}
+
+void GpuSilhouettesGL::bindCaster(GLuint doubled) const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDoubledBinding, doubled);
 }
 
 void GpuSilhouettesGL::drawIndirect(size_t i) const {

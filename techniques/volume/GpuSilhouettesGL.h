@@ -5,9 +5,10 @@
 //    at the start of each frame and read back only when the counters are asked for (after the measured
 //    frames, untimed): no measured frame waits on it, and the count is the last frame's, exactly;
 //  - extrusion=compute: per light, one dispatch per caster (shaders/volume/silhouette.comp) writes the
-//    caster's volume as vertices into its region of one vertex buffer and their number into its
-//    indirect command; the marking pass then draws each with glDrawArraysIndirect from this class's
-//    vertex array (no indices: the order the device builds in changes no count).
+//    caster's volume as the doubled entries of its vertices into its region of one buffer and their
+//    number into its indirect command; the marking pass then draws each with glDrawArraysIndirect, the
+//    vertex shader fetching each vertex's entry (no indices: the order the device builds in changes no
+//    count).
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -25,8 +26,8 @@ public:
     GpuSilhouettesGL(const GpuSilhouettesGL&) = delete;
     GpuSilhouettesGL& operator=(const GpuSilhouettesGL&) = delete;
 
-    /// Creates the buffers (needs a context); with `compute` also the compute path's vertex buffer and
-    /// the vertex array that draws from it.
+    /// Creates the buffers (needs a context); with `compute` also the compute path's output and an
+    /// empty vertex array to draw with.
     void create(bool compute);
     /// Clears the count for this frame.
     void beginFrame();
@@ -40,9 +41,11 @@ public:
     /// (shaders/volume/silhouette.comp) and leaves the commands bound for drawIndirect().
     void extract(const std::vector<VolumePlanner::Draw>& draws, const VolumeMeshBuffers& buffers,
                  const Program& program);
-    /// The vertex array of the extracted volumes (extrusion=compute), for the marking draws.
+    /// The vertex array of the marking draws (extrusion=compute): no attributes.
     GLuint vertexArray() const { return mVao; }
-    /// Draw `i` of the last extract(), with vertexArray() bound.
+    /// Binds caster mesh buffer `doubled` where volume/extrude.vert under PULLED fetches from.
+    void bindCaster(GLuint doubled) const;
+    /// Draw `i` of the last extract(), with vertexArray() bound and its caster's bindCaster().
     void drawIndirect(size_t i) const;
 
 private:

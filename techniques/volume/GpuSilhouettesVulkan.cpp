@@ -11,12 +11,14 @@ namespace sb {
 namespace {
 /// shaders/volume/silhouette.comp's SilhouettePush.
 struct SilhouettePush {
-    glm::vec4 light{0.0f}, apex{0.0f};
-    uint32_t flags = 0, faceCount = 0, draw = 0, faceBase = 0;
+    glm::vec4 light{0.0f};
+    uint32_t flags = 0, faceCount = 0, draw = 0, vertexCount = 0, faceBase = 0, vertexBase = 0;
 };
-static_assert(sizeof(SilhouettePush) == 48, "silhouette.comp's push block");
+static_assert(sizeof(SilhouettePush) == 40, "silhouette.comp's push block");
 // silhouette.comp's storage bindings (set 0), as on GL.
 constexpr uint32_t kCountBinding = 0, kFacesBinding = 1, kVerticesBinding = 2, kCommandsBinding = 3;
+// Set 1 of the marking pipelines: the geometry path's count, or volume/extrude.vert's (PULLED) entries.
+constexpr uint32_t kMarkCountBinding = 0, kMarkVerticesBinding = 0, kMarkDoubledBinding = 1;
 constexpr uint32_t kLocalSize = 64;
 constexpr size_t kCommandWords = 4; ///< VkDrawIndirectCommand
 static_assert(sizeof(VkDrawIndirectCommand) == kCommandWords * sizeof(uint32_t));
@@ -32,14 +34,17 @@ DescriptorSets::Bindings storageBindings(uint32_t count, VkShaderStageFlags stag
 void GpuSilhouettesVulkan::release() {
     mPipeline = ComputePipeline();
     mSets = DescriptorSets();
+    mMarkSets = DescriptorSets();
     mAdjacency.clear();
     mFaces = VulkanBuffer();
+    mDoubled = VulkanBuffer();
     mVertices = VulkanBuffer();
     mCommands = VulkanBuffer();
     mCount = VulkanBuffer();
     mFaceBase.clear();
     mFaceCount.clear();
-    mApex.clear();
+    mVertexBase.clear();
+    mVertexCount.clear();
 }
 
 void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
@@ -47,13 +52,14 @@ void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
     release();
     mContext = &ctx.context;
     mCompute = compute;
+    const VkDevice device = ctx.context.device();
     mCount = VulkanBuffer(ctx.context, sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     std::memset(mCount.map(), 0, sizeof(uint32_t));
     if (!compute) {
-        mSets = DescriptorSets(ctx.context.device(), {storageBindings(1, VK_SHADER_STAGE_GEOMETRY_BIT)},
-                               "volume silhouettes");
-        mSets.writeBuffer(0, kCountBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mCount.buffer(),
-                          mCount.size());
+        mMarkSets =
+            DescriptorSets(device, {storageBindings(1, VK_SHADER_STAGE_GEOMETRY_BIT)}, "volume silhouettes");
+        mMarkSets.writeBuffer(0, kMarkCountBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mCount.buffer(),
+                              mCount.size());
         mAdjacency.resize(meshes.size());
         for (size_t m = 0; m < meshes.size(); ++m) {
             if (!meshes[m]) continue;
@@ -63,26 +69,37 @@ void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
         }
         return;
     }
-    // Every mesh's faces in one buffer, each mesh from its own first face.
+    // Every mesh's faces in one buffer and its doubled entries in another, each mesh from its own base.
     std::vector<SilhouetteFace> faces;
+    std::vector<glm::vec4> doubled;
     mFaceBase.assign(meshes.size(), 0);
     mFaceCount.assign(meshes.size(), 0);
-    mApex.assign(meshes.size(), glm::vec4(0.0f));
+    mVertexBase.assign(meshes.size(), 0);
+    mVertexCount.assign(meshes.size(), 0);
     for (size_t m = 0; m < meshes.size(); ++m) {
         if (!meshes[m]) continue;
         const std::vector<SilhouetteFace> f = SilhouetteInputs::faces(*meshes[m]);
         mFaceBase[m] = uint32_t(faces.size());
         mFaceCount[m] = uint32_t(f.size());
-        mApex[m] = SilhouetteInputs::apex(*meshes[m]);
         faces.insert(faces.end(), f.begin(), f.end());
+        const std::vector<glm::vec4> d = meshes[m]->doubledVertices();
+        mVertexBase[m] = uint32_t(doubled.size());
+        mVertexCount[m] = meshes[m]->vertexCount();
+        doubled.insert(doubled.end(), d.begin(), d.end());
     }
     if (faces.empty()) faces.resize(1);
+    if (doubled.empty()) doubled.resize(1, glm::vec4(0.0f));
     mFaces = VulkanBuffer(ctx.context, faces.size() * sizeof(SilhouetteFace),
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, faces.data());
-    mSets = DescriptorSets(ctx.context.device(), {storageBindings(4, VK_SHADER_STAGE_COMPUTE_BIT)},
-                           "volume silhouettes");
+    mDoubled = VulkanBuffer(ctx.context, doubled.size() * sizeof(glm::vec4),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, doubled.data());
+    mSets = DescriptorSets(device, {storageBindings(4, VK_SHADER_STAGE_COMPUTE_BIT)}, "volume silhouettes");
     mSets.writeBuffer(0, kCountBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mCount.buffer(), mCount.size());
     mSets.writeBuffer(0, kFacesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mFaces.buffer(), mFaces.size());
+    mMarkSets =
+        DescriptorSets(device, {storageBindings(2, VK_SHADER_STAGE_VERTEX_BIT)}, "volume silhouettes");
+    mMarkSets.writeBuffer(0, kMarkDoubledBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mDoubled.buffer(),
+                          mDoubled.size());
     reserve(1, kCommandWords);
     mPipeline =
         ComputePipeline(ctx.context, ctx.shaders.get("volume/silhouette.comp", {}, ShaderStage::Compute),
@@ -92,13 +109,14 @@ void GpuSilhouettesVulkan::create(const VulkanCompileContext& ctx,
 void GpuSilhouettesVulkan::reserve(size_t vertices, size_t commands) {
     // Geometric growth: a frame with a few more casters in range does not reallocate. The last frame
     // that used the old buffers has finished (the harness waited for its fence).
-    const VkDeviceSize vertexBytes = vertices * sizeof(glm::vec4), commandBytes = commands * sizeof(uint32_t);
+    const VkDeviceSize vertexBytes = vertices * sizeof(uint32_t), commandBytes = commands * sizeof(uint32_t);
     if (vertexBytes > mVertices.size()) {
-        mVertices =
-            VulkanBuffer(*mContext, std::max(vertexBytes, 2 * mVertices.size()),
-                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, nullptr);
+        mVertices = VulkanBuffer(*mContext, std::max(vertexBytes, 2 * mVertices.size()),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, nullptr);
         mSets.writeBuffer(0, kVerticesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mVertices.buffer(),
                           mVertices.size());
+        mMarkSets.writeBuffer(0, kMarkVerticesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, mVertices.buffer(),
+                              mVertices.size());
     }
     if (commandBytes > mCommands.size()) {
         mCommands = VulkanBuffer(*mContext, std::max(commandBytes, 2 * mCommands.size()),
@@ -129,24 +147,18 @@ void GpuSilhouettesVulkan::extract(VkCommandBuffer cmd, const std::vector<Volume
         const VolumePlanner::Draw& d = draws[i];
         const uint32_t mesh = d.caster->mesh;
         if (!mFaceCount[mesh]) continue;
-        const SilhouettePush push{d.lightObject,    mApex[mesh], d.gpuFlags,
-                                  mFaceCount[mesh], uint32_t(i), mFaceBase[mesh]};
+        const SilhouettePush push{d.lightObject,      d.gpuFlags,      mFaceCount[mesh], uint32_t(i),
+                                  mVertexCount[mesh], mFaceBase[mesh], mVertexBase[mesh]};
         mPipeline.push(cmd, &push);
         vkCmdDispatch(cmd, (mFaceCount[mesh] + kLocalSize - 1) / kLocalSize, 1, 1);
     }
-    // The vertices feed the vertex fetch, the counts the indirect draws.
+    // The vertex shader reads the entries, the indirect draws the counts.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
+    barrier.dstAccessMask = VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0, 1,
+                         VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT, 0, 1,
                          &barrier, 0, nullptr, 0, nullptr);
-}
-
-void GpuSilhouettesVulkan::bindVertices(VkCommandBuffer cmd) const {
-    const VkDeviceSize zero = 0;
-    const VkBuffer buffer = mVertices.buffer();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &zero);
 }
 
 void GpuSilhouettesVulkan::drawIndirect(VkCommandBuffer cmd, size_t i) const {

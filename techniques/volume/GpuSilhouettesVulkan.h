@@ -7,11 +7,12 @@
 //    fence) and read when the counters are asked for, after the frame's fence: the last frame's, exactly;
 //  - extrusion=geometry: per caster mesh its triangles with adjacency in a vertex buffer, and set 1 of
 //    the marking pipelines' layout (the count, seen by the geometry stage);
-//  - extrusion=compute: every mesh's faces in one storage buffer (each mesh from its own first face), a
-//    compute pipeline (vk/ComputePipeline.h), and per frame, before any render pass, one dispatch per
-//    draw of every light, each writing its caster's volume as vertices into its own region of one vertex
-//    buffer and their number into its VkDrawIndirectCommand; the marking passes then draw each with
-//    vkCmdDrawIndirect from that buffer (no indices: the order the device builds in changes no count).
+//  - extrusion=compute: every mesh's faces in one storage buffer and its doubled entries in another
+//    (each mesh from its own base), a compute pipeline (vk/ComputePipeline.h), and per frame, before any
+//    render pass, one dispatch per draw of every light, each writing the doubled entries of its caster's
+//    volume's vertices into its own region of one buffer and their number into its
+//    VkDrawIndirectCommand; the marking passes then draw each with vkCmdDrawIndirect, the vertex shader
+//    fetching each vertex's entry (set 1; no indices: the order the device builds in changes no count).
 #include <vector>
 
 #include "techniques/volume/VolumePlanner.h"
@@ -32,9 +33,11 @@ public:
                 bool compute);
     void release();
 
-    /// extrusion=geometry: set 1 of the marking pipelines (the count at binding 0, geometry stage).
-    VkDescriptorSetLayout countLayout() const { return mSets.layout(0); }
-    VkDescriptorSet countSet() const { return mSets.set(0); }
+    /// Set 1 of the marking pipelines: extrusion=geometry the count (binding 0, geometry stage),
+    /// extrusion=compute the extracted entries and every mesh's doubled entries (bindings 0 and 1,
+    /// vertex stage; volume/extrude.vert under PULLED).
+    VkDescriptorSetLayout markLayout() const { return mMarkSets.layout(0); }
+    VkDescriptorSet markSet() const { return mMarkSets.set(0); }
     /// extrusion=geometry: mesh `mesh`'s triangles with adjacency (SilhouetteInputs::adjacencyVertices).
     VkBuffer adjacency(size_t mesh) const { return mAdjacency[mesh].buffer(); }
 
@@ -43,9 +46,7 @@ public:
     /// extrusion=compute: records, outside any render pass, every draw's volume (`draws`: the frame's,
     /// every light's) and the barrier that orders the vertices and counts before the draws read them.
     void extract(VkCommandBuffer cmd, const std::vector<VolumePlanner::Draw>& draws);
-    /// extrusion=compute: binds the vertex buffer the extraction wrote (vertex binding 0).
-    void bindVertices(VkCommandBuffer cmd) const;
-    /// extrusion=compute: draw `i` of the last extract(), from bindVertices()' buffer.
+    /// extrusion=compute: draw `i` of the last extract(), with markSet() bound.
     void drawIndirect(VkCommandBuffer cmd, size_t i) const;
     /// After the frame's last pass, outside any render pass: the count's additions made visible to the
     /// host, which reads it after the frame's fence.
@@ -54,19 +55,19 @@ public:
     double readTriangles() const;
 
 private:
-    /// Grows the compute path's vertex and command buffers to hold `vertices` vec4 and `commands` words
-    /// and points the set's bindings at them.
+    /// Grows the compute path's output and command buffers to hold `vertices` and `commands` words
+    /// and points the sets' bindings at them.
     void reserve(size_t vertices, size_t commands);
 
     VulkanContext* mContext = nullptr;
     bool mCompute = false;
     VulkanBuffer mCount;
-    DescriptorSets mSets; ///< geometry: the count; compute: count, faces, indices, commands
+    DescriptorSets mSets;     ///< compute: count, faces, output, commands
+    DescriptorSets mMarkSets; ///< set 1 of the marking pipelines (markLayout())
     std::vector<VulkanBuffer> mAdjacency;
     // extrusion=compute
-    VulkanBuffer mFaces, mVertices, mCommands;
-    std::vector<uint32_t> mFaceBase, mFaceCount; ///< per scene mesh
-    std::vector<glm::vec4> mApex;                ///< per scene mesh: SilhouetteInputs::apex
+    VulkanBuffer mFaces, mDoubled, mVertices, mCommands;
+    std::vector<uint32_t> mFaceBase, mFaceCount, mVertexBase, mVertexCount; ///< per scene mesh
     ComputePipeline mPipeline;
 };
 

@@ -45,14 +45,8 @@ std::vector<SilhouetteFace> SilhouetteInputs::faces(const ShadowVolumeMesh& mesh
                              0u};
         out[f].normal = glm::vec4(mesh.faceNormals()[f], 0.0f);
         out[f].first = glm::vec4(mesh.positions()[faces[3 * f]], 1.0f);
-        out[f].second = glm::vec4(mesh.positions()[faces[3 * f + 1]], 1.0f);
-        out[f].third = glm::vec4(mesh.positions()[faces[3 * f + 2]], 1.0f);
     }
     return out;
-}
-
-glm::vec4 SilhouetteInputs::apex(const ShadowVolumeMesh& mesh) {
-    return mesh.positions().empty() ? glm::vec4(0.0f) : glm::vec4(mesh.positions()[0], 0.0f);
 }
 
 } // namespace sb

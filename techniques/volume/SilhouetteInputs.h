@@ -7,7 +7,7 @@
 //    2k is the face's vertex k with the face's own data, slot 2k + 1 the vertex opposite edge
 //    (k, k + 1) in the face across it, with that face's data;
 //  - face records for shaders/volume/silhouette.comp (std430: uvec4 vertices, uvec4 neighbours, vec4
-//    normal, then the face's three corners as vec4 with w = 1).
+//    normal, vec4 first vertex).
 // Where an edge has no face across (open meshes, which the GPU paths refuse) the face stands across
 // from itself and so never builds a side there.
 #include <vector>
@@ -19,13 +19,12 @@
 namespace sb {
 
 struct SilhouetteFace {
-    glm::uvec4 vertices{0u};             ///< welded indices, counter-clockwise, w unused
-    glm::uvec4 neighbours{0u};           ///< the face across (v0, v1), (v1, v2), (v2, v0), w unused
-    glm::vec4 normal{0.0f};              ///< ShadowVolumeMesh::faceNormals, w = 0
-    glm::vec4 first{0.0f};               ///< the face's first vertex, w = 1
-    glm::vec4 second{0.0f}, third{0.0f}; ///< its other two, w = 1 (the compute path copies the corners)
+    glm::uvec4 vertices{0u};   ///< welded indices, counter-clockwise, w unused
+    glm::uvec4 neighbours{0u}; ///< the face across (v0, v1), (v1, v2), (v2, v0), w unused
+    glm::vec4 normal{0.0f};    ///< ShadowVolumeMesh::faceNormals, w = 0
+    glm::vec4 first{0.0f};     ///< the face's first vertex, w = 1
 };
-static_assert(sizeof(SilhouetteFace) == 96, "std430 layout of shaders/volume/silhouette.comp's Face");
+static_assert(sizeof(SilhouetteFace) == 64, "std430 layout of shaders/volume/silhouette.comp's Face");
 
 struct SilhouetteInputs {
     /// 18 vec4 per face (6 vertices of 3 vec4), GL_TRIANGLES_ADJACENCY's order.
@@ -33,9 +32,6 @@ struct SilhouetteInputs {
     static constexpr int kVec4PerVertex = 3, kVerticesPerFace = 6;
     /// One record per face.
     static std::vector<SilhouetteFace> faces(const ShadowVolumeMesh& mesh);
-    /// The directional sides' third vertex in the compute path: the mesh's vertex 0 with w = 0, the
-    /// CPU's index n (ShadowVolumeMesh's pushSide), whose extrusion FINITE volumes depend on.
-    static glm::vec4 apex(const ShadowVolumeMesh& mesh);
     /// The most vertices the compute path writes for one face: its cap and a side (6) on each edge.
     static constexpr size_t kMaxVerticesPerFace = 3 + 3 * 6;
 };

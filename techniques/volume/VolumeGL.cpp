@@ -71,6 +71,7 @@ void VolumeGL::compile(const CompileContext& ctx) {
     mLightProgram = &ctx.programs.get({"common/scene.vert", "volume/light.frag", ""}, scene);
     Defines volume;
     if (settings.vertexExtrusion) volume["VS_EXTRUSION"] = "";
+    if (settings.extrusion == VolumePlanner::Extrusion::Compute) volume["PULLED"] = "";
     const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
     if (geometry) volume["GPU_SILHOUETTES"] = "";
     const ShaderSources volumeSources{"volume/extrude.vert", "volume/stencil.frag",
@@ -162,6 +163,7 @@ void VolumeGL::markShadows(int lightIndex) {
                               : extrusion == Extrusion::Geometry ? gpu.adjacencyVao
                               : extrusion == Extrusion::Compute  ? mSilhouettes.vertexArray()
                                                                  : gpu.doubledVao);
+            if (extrusion == Extrusion::Compute) mSilhouettes.bindCaster(gpu.doubledVbo);
             boundMesh = d.caster->mesh;
         }
         glUniformMatrix4fv(kModelLocation, 1, GL_FALSE, glm::value_ptr(d.caster->model));

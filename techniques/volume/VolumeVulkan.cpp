@@ -173,6 +173,7 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     if (settings.vertexExtrusion) volume["VS_EXTRUSION"] = "";
     const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
     if (geometry) volume["GPU_SILHOUETTES"] = "";
+    if (settings.extrusion == VolumePlanner::Extrusion::Compute) volume["PULLED"] = "";
     const ShaderSources volumeSources{"volume/extrude.vert", "volume/stencil.frag",
                                       geometry ? "volume/silhouette.geom" : ""};
     std::string volumeKeys;
@@ -228,7 +229,7 @@ void VolumeVulkan::describeVolumeInput(GraphicsPipelineDesc& d) const {
                         {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, vec4},
                         {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 2 * vec4}};
         d.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY;
-    } else {
+    } else if (settings.extrusion != VolumePlanner::Extrusion::Compute) { // compute: pulled, no input
         d.bindings = {{0, vec4, VK_VERTEX_INPUT_RATE_VERTEX}};
         d.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
     }
@@ -261,9 +262,10 @@ void VolumeVulkan::createSilhouettes(const VulkanCompileContext& ctx) {
     std::vector<const ShadowVolumeMesh*> meshes(mMeshes.size(), nullptr);
     for (size_t m = 0; m < mMeshes.size(); ++m) meshes[m] = mMeshes[m].mesh.get();
     mSilhouettes.create(ctx, meshes, !geometry);
-    if (!geometry) return;
-    mMarkPushStages = kPushStages | VK_SHADER_STAGE_GEOMETRY_BIT;
-    mMarkLayout = createPipelineLayout(ctx.context, {ctx.frame.setLayout(), mSilhouettes.countLayout()},
+    // The marking pipelines' own layout: set 1 the silhouettes' (the count, or the extracted entries),
+    // and for the geometry shader push constants in its stage too.
+    mMarkPushStages = geometry ? kPushStages | VK_SHADER_STAGE_GEOMETRY_BIT : kPushStages;
+    mMarkLayout = createPipelineLayout(ctx.context, {ctx.frame.setLayout(), mSilhouettes.markLayout()},
                                        sizeof(VulkanPush), mMarkPushStages);
 }
 
@@ -429,9 +431,9 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
     const VkPipelineLayout layout = mMarkLayout ? mMarkLayout : mLayout;
     const VkShaderStageFlags pushStages = mMarkLayout ? mMarkPushStages : kPushStages;
     ctx.frame.bind(cmd, layout, frame);
-    if (extrusion == Extrusion::Geometry) {
-        const VkDescriptorSet count = mSilhouettes.countSet();
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &count, 0, nullptr);
+    if (mMarkLayout) {
+        const VkDescriptorSet set = mSilhouettes.markSet();
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
     }
     setDepthBounds(cmd, lightIndex);
     const uint32_t slot = uint32_t(mQueryFrame % 2);
@@ -451,10 +453,7 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mMark[finite][counting].get(ctx.targets));
         }
         const MeshGpu& gpu = mMeshes[d.caster->mesh];
-        if (extrusion == Extrusion::Compute) {
-            if (boundMesh == UINT32_MAX) mSilhouettes.bindVertices(cmd); // every caster's volume
-            boundMesh = 0;
-        } else if (d.caster->mesh != boundMesh) {
+        if (extrusion != Extrusion::Compute && d.caster->mesh != boundMesh) { // compute: set 1 has them
             const VkDeviceSize zero = 0;
             const VkBuffer vb = extrusion == Extrusion::Vertex     ? gpu.extrusionVertices.buffer()
                                 : extrusion == Extrusion::Geometry ? mSilhouettes.adjacency(d.caster->mesh)

@@ -112,8 +112,8 @@ private:
     ScenePipeline mLight[2];   ///< [stencil test]
     ScenePipeline mMark[2][2]; ///< [finite][zfail]
     GpuSilhouettesVulkan mSilhouettes;
-    /// extrusion=geometry's marking pipelines: set 1 the count, push constants also in the geometry
-    /// stage (mLayout elsewhere).
+    /// The GPU silhouette paths' marking pipelines: set 1 GpuSilhouettesVulkan::markLayout(), push
+    /// constants also in the geometry stage for extrusion=geometry (mLayout for the others).
     VkPipelineLayout mMarkLayout = VK_NULL_HANDLE;
     VkShaderStageFlags mMarkPushStages = 0;
     bool mDepthBounds = false; ///< depth_bounds on a device with the depthBounds feature
