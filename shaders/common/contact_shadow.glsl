@@ -2,10 +2,11 @@
 // contact_steps points along contact_length world units from the shaded point towards light i, each
 // projected with the camera's view-projection into the view depth pre-pass (techniques/gl/ViewDepthGL.h,
 // techniques/vulkan/ViewDepthVulkan.h: the frame's size, the targets' rows); a point the view's depth lies
-// in front of (by more than a rounding margin, by less than the march's length) is behind a surface, and
-// the light is blocked. As Unreal Engine's contact shadows and Filament's screen-space contact shadows.
-// Included by every lighting pass of the shadow-map family; without SB_CONTACT_SHADOWS it adds nothing
-// and contactLimited(i, v, p, n) is v. Needs common/frame.glsl and common/lighting.glsl (toLight) first.
+// in front of (by more than a rounding margin, by less than two steps) is behind a surface, and the light
+// is blocked. As Unreal Engine's contact shadows and Filament's screen-space contact shadows. Included by
+// the lighting passes of the members that declare `contact` (techniques/ContactShadows.h says which);
+// without SB_CONTACT_SHADOWS it adds nothing and contactLimited(i, v, p, n) is v. Needs common/frame.glsl
+// and common/lighting.glsl (toLight) first.
 #ifdef SB_CONTACT_SHADOWS
 // The march's length and steps are uniforms, not defines: they change no program (no permutation per
 // value); x = contact_length (world units), y = contact_steps (ContactShadows::block).
