@@ -25,20 +25,18 @@
 #include "techniques/shadowmap/CascadedVulkan.h"
 #include "techniques/shadowmap/CubeMapGL.h"
 #include "techniques/shadowmap/CubeMapVulkan.h"
-#include "techniques/shadowmap/EsmGL.h"
-#include "techniques/shadowmap/EsmVulkan.h"
-#include "techniques/shadowmap/EvsmGL.h"
-#include "techniques/shadowmap/EvsmVulkan.h"
-#include "techniques/shadowmap/MsmGL.h"
-#include "techniques/shadowmap/MsmVulkan.h"
+#include "techniques/shadowmap/Esm.h"
+#include "techniques/shadowmap/Evsm.h"
+#include "techniques/shadowmap/MomentMapGL.h"
+#include "techniques/shadowmap/MomentMapVulkan.h"
+#include "techniques/shadowmap/Msm.h"
 #include "techniques/shadowmap/ParaboloidGL.h"
 #include "techniques/shadowmap/ParaboloidVulkan.h"
 #include "techniques/shadowmap/PcssGL.h"
 #include "techniques/shadowmap/PcssVulkan.h"
 #include "techniques/shadowmap/ShadowMapGL.h"
 #include "techniques/shadowmap/ShadowMapVulkan.h"
-#include "techniques/shadowmap/VsmGL.h"
-#include "techniques/shadowmap/VsmVulkan.h"
+#include "techniques/shadowmap/Vsm.h"
 #include "techniques/synthetic/SyntheticGL.h"
 #include "techniques/synthetic/SyntheticVulkan.h"
 #include "techniques/virtual/VirtualGL.h"
@@ -84,6 +82,15 @@ template <typename T>
 std::unique_ptr<VulkanTechnique> vulkan() {
     return std::make_unique<T>();
 }
+/// A filterable shadow map's forms: one GL and one Vulkan class over the member's kind.
+template <MomentMapKind (*Kind)()>
+std::unique_ptr<GlTechnique> momentsGl() {
+    return std::make_unique<MomentMapGL>(Kind());
+}
+template <MomentMapKind (*Kind)()>
+std::unique_ptr<VulkanTechnique> momentsVulkan() {
+    return std::make_unique<MomentMapVulkan>(Kind());
+}
 
 const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
     // The one table of techniques. Order is the order of --list and of "all".
@@ -95,10 +102,10 @@ const std::vector<TechniqueRegistry::Entry>& TechniqueRegistry::entries() {
         {"paraboloid", gl<ParaboloidGL>, vulkan<ParaboloidVulkan>},
         {"cascaded", gl<CascadedGL>, vulkan<CascadedVulkan>},
         {"pcss", gl<PcssGL>, vulkan<PcssVulkan>},
-        {"vsm", gl<VsmGL>, vulkan<VsmVulkan>},
-        {"esm", gl<EsmGL>, vulkan<EsmVulkan>},
-        {"evsm", gl<EvsmGL>, vulkan<EvsmVulkan>},
-        {"msm", gl<MsmGL>, vulkan<MsmVulkan>},
+        {"vsm", momentsGl<&Vsm::kind>, momentsVulkan<&Vsm::kind>},
+        {"esm", momentsGl<&Esm::kind>, momentsVulkan<&Esm::kind>},
+        {"evsm", momentsGl<&Evsm::kind>, momentsVulkan<&Evsm::kind>},
+        {"msm", momentsGl<&Msm::kind>, momentsVulkan<&Msm::kind>},
         // A 16k^2 map in pages, only the needed ones drawn and cached across frames.
         {"virtual", gl<VirtualGL>, vulkan<VirtualVulkan>},
         {"volume", gl<VolumeGL>, vulkan<VolumeVulkan>},

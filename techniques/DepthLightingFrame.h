@@ -22,13 +22,22 @@ public:
     /// program computes none (every light unshadowed or no receiver: common/lighting.glsl). `FrameCtx` is
     /// either API's frame context (techniques/gl/GlTechnique.h, techniques/vulkan/VulkanTechnique.h):
     /// both have the scene, a submitter with resetStats()/stats() and a pass timer with begin()/skip().
+    /// `first`, where given, runs first in pass `firstPass` (skipped with the depth pass): the view depth
+    /// pre-pass of `cascaded` fit=sdsm with its reduction ("depth_range") or of contact shadows
+    /// ("view_depth", techniques/ContactShadows.h).
     template <typename FrameCtx>
     static SubmitStats run(FrameCtx& ctx, const std::function<void()>& depth,
-                           const std::function<void()>& lighting) {
+                           const std::function<void()>& lighting, const std::function<void()>& first = {},
+                           const char* firstPass = "depth_range") {
         ctx.submitter.resetStats();
         if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+            if (first) ctx.passes.skip(firstPass, reason);
             ctx.passes.skip("depth", reason);
         } else {
+            if (first) {
+                ctx.passes.begin(firstPass);
+                first();
+            }
             ctx.passes.begin("depth");
             depth();
         }

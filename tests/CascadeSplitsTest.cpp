@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "techniques/ViewDepth.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/CascadeSplits.h"
 
@@ -286,3 +287,42 @@ TEST(CascadeFit, RadiusRoundsUpByAtMostOneThirtySecond) {
 }
 
 } // namespace
+
+// fit=sdsm: the window depths the reduction returns back to view depth (techniques/ViewDepth.h, the view
+// depth pre-pass's neutral half; here beside the splits it feeds, not in an executable of its own). The
+// closed form of GL's perspective window depth, w(d) = f (d - n) / (d (f - n)), is the independent answer;
+// orthographic is linear, w(d) = (d - n) / (f - n). 1e-4 relative: float projection entries (as
+// NearFarFromTheProjection) and the float window depth, whose ulp near 1 is worth 6e-4 of view depth at d = f
+// = 100.
+TEST(ViewDepth, ViewDepthsInvertTheWindowDepth) {
+    const float n = 1.0f, f = 100.0f;
+    const glm::mat4 persp = glm::perspective(glm::radians(50.0f), 1.25f, n, f);
+    const glm::mat4 ortho = glm::ortho(-4.0f, 4.0f, -3.0f, 3.0f, n, f);
+    for (double d : {1.0, 4.0, 25.0, 100.0}) {
+        const float wp = float(f * (d - n) / (d * (f - n))), wo = float((d - n) / (f - n));
+        const glm::vec2 p = ViewDepth::viewDepths({wp, wp}, persp);
+        const glm::vec2 o = ViewDepth::viewDepths({wo, wo}, ortho);
+        EXPECT_NEAR(p.x, d, 1e-4 * d) << "perspective, depth " << d;
+        EXPECT_NEAR(o.y, d, 1e-4 * d) << "orthographic, depth " << d;
+    }
+}
+
+// The sample distribution split of a known interval: samples [2, 32] within [0.1, 1000], padded by
+// 1% of 30 plus 1e-5 of 1000 = 0.31 to [1.69, 32.31], then C_i = 1.69 (32.31 / 1.69)^(i / 4), worked out
+// to 8 digits: 1.69, 3.5338594, 7.3894452, 15.451633, 32.31. No sample (min > max): the log split of
+// the camera's [0.1, 1000], 10^(i - 1).
+TEST(CascadeSplits, SampleDistributionSplitsTheSampledInterval) {
+    const std::vector<float> s = CascadeSplits::sampleDistribution({2.0f, 32.0f}, {0.1f, 1000.0f}, 4);
+    const double expected[] = {1.69, 3.5338594, 7.3894452, 15.4516334, 32.31};
+    ASSERT_EQ(s.size(), 5u);
+    // float arithmetic of the padding and the power: a few ulps, 1e-6 relative.
+    for (size_t i = 0; i < s.size(); ++i) EXPECT_NEAR(s[i], expected[i], 1e-6 * expected[i]) << "i " << i;
+    const std::vector<float> none = CascadeSplits::sampleDistribution({1.0f, 0.0f}, {0.1f, 1000.0f}, 4);
+    const double log10[] = {0.1, 1, 10, 100, 1000};
+    ASSERT_EQ(none.size(), 5u);
+    for (size_t i = 0; i < none.size(); ++i) EXPECT_NEAR(none[i], log10[i], 5e-7 * log10[i]) << "i " << i;
+    // A sampled interval beyond the camera's is clamped to it.
+    const std::vector<float> wide = CascadeSplits::sampleDistribution({0.05f, 2000.0f}, {0.1f, 1000.0f}, 2);
+    EXPECT_EQ(wide.front(), 0.1f);
+    EXPECT_EQ(wide.back(), 1000.0f);
+}

@@ -19,7 +19,8 @@
 //   - contexts: the defaults, and each representative of each kept axis alone (pairs: an axis that
 //     matters only once another is off its default, such as blur only with projectors, is found);
 //   - repeated until nothing changes; then the cross product of the kept axes' representatives, the
-//     exceptions axis excepted: it is crossed with each other kept axis in pairs (see finalConfigs).
+//     exceptions, contact and fit axes excepted: each is crossed with each other kept axis in pairs
+//     (see crossedInPairs and finalConfigs).
 // Every program those configurations select is dumped (ProgramCache::setDumpDirectory, what
 // bench --dump-shaders does), deduplicated by content, and each distinct stage goes through
 // glslangValidator in its default mode: OpenGL GLSL validation with the profile of the #version line.
@@ -362,26 +363,37 @@ std::vector<Config> crossProduct(const std::vector<Axis>& kept) {
     return out;
 }
 
-/// The final configurations: every combination of the kept axes' values, except the exceptions axis,
-/// which is crossed with each other kept axis in pairs (the rest at defaults). Its defines only remove
-/// terms from a lighting loop, so they meet each other axis's source text in a pair; crossing them with
-/// the whole product tripled the compiles (9566 configurations, 7 minutes on 2 cores) for nothing new.
+/// The axes crossed with each other kept axis in pairs only (the rest at defaults), not with the whole
+/// product. The exceptions axis: its defines only remove terms from a lighting loop, so they meet each
+/// other axis's source text in a pair; crossing them with the whole product tripled the compiles (9566
+/// configurations, 7 minutes on 2 cores) for nothing new. `contact` (techniques/ContactShadows.h): its
+/// define adds one function (shaders/common/contact_shadow.glsl, reading the frame block and the light's
+/// kind) and one call around the visibility, text another axis meets in a pair; crossed whole it doubled
+/// shadowmap's compiles (4991 programs, 530 s on 2 loaded cores). `fit` (cascaded's fit=sdsm): it adds
+/// two programs of their own (the view depth pre-pass, with the submitter's defines only, and the
+/// depth-range reduction, with none) and leaves the lighting program as it is.
+bool crossedInPairs(const std::string& axis) {
+    return axis == "exceptions" || axis == "contact" || axis == "fit";
+}
+
+/// The final configurations: every combination of the kept axes' values, except the crossedInPairs
+/// axes, each of whose values is crossed with each value of every other kept axis in pairs.
 std::vector<Config> finalConfigs(const std::vector<Axis>& kept) {
-    std::vector<Axis> crossed;
-    const Axis* exceptions = nullptr;
-    for (const Axis& a : kept) {
-        if (a.name == "exceptions")
-            exceptions = &a;
-        else
-            crossed.push_back(a);
-    }
+    std::vector<Axis> crossed, paired;
+    for (const Axis& a : kept) (crossedInPairs(a.name) ? paired : crossed).push_back(a);
     std::vector<Config> out = crossProduct(crossed);
-    if (!exceptions) return out;
-    for (size_t e = 1; e < exceptions->values.size(); ++e) {
-        out.push_back({{exceptions->name, exceptions->values[e]}});
-        for (const Axis& a : crossed)
-            for (size_t i = 1; i < a.values.size(); ++i)
-                out.push_back({{exceptions->name, exceptions->values[e]}, {a.name, a.values[i]}});
+    for (size_t p = 0; p < paired.size(); ++p) {
+        const Axis& pa = paired[p];
+        for (size_t e = 1; e < pa.values.size(); ++e) {
+            out.push_back({{pa.name, pa.values[e]}});
+            for (const Axis& a : crossed)
+                for (size_t i = 1; i < a.values.size(); ++i)
+                    out.push_back({{pa.name, pa.values[e]}, {a.name, a.values[i]}});
+            // The paired axes with each other, each pair once.
+            for (size_t q = p + 1; q < paired.size(); ++q)
+                for (size_t i = 1; i < paired[q].values.size(); ++i)
+                    out.push_back({{pa.name, pa.values[e]}, {paired[q].name, paired[q].values[i]}});
+        }
     }
     return out;
 }

@@ -17,6 +17,7 @@
 #include "core/Paths.h"
 #include "scenes/MeshGenerators.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
+#include "techniques/volume/SilhouetteInputs.h"
 
 using namespace sb;
 
@@ -708,4 +709,54 @@ TEST(ShadowVolumeMeshTest, NonFinitePositionIsAnError) {
     EXPECT_THROW(ShadowVolumeMesh{mesh}, std::runtime_error);
     const Mesh bad = triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 3});
     EXPECT_THROW(ShadowVolumeMesh{bad}, std::runtime_error);
+}
+
+TEST(ShadowVolumeMeshTest, NeighboursTraverseEachEdgeTheOtherWay) {
+    // The GPU silhouette paths' adjacency: on a closed mesh every directed edge a -> b of a face has a
+    // neighbour traversing b -> a, whose neighbour across that edge is the face again.
+    for (const auto& [name, mesh] : closedMeshes()) {
+        const ShadowVolumeMesh m(mesh);
+        const std::vector<uint32_t> nb = m.neighbours();
+        const std::vector<uint32_t>& faces = m.faces();
+        ASSERT_EQ(nb.size(), faces.size()) << name;
+        for (size_t f = 0; f < m.faceCount(); ++f)
+            for (size_t k = 0; k < 3; ++k) {
+                const uint32_t g = nb[3 * f + k];
+                ASSERT_NE(g, ShadowVolumeMesh::kNoFace) << name << " face " << f;
+                const uint32_t a = faces[3 * f + k], b = faces[3 * f + (k + 1) % 3];
+                int found = 0;
+                for (size_t j = 0; j < 3; ++j)
+                    if (faces[3 * g + j] == b && faces[3 * g + (j + 1) % 3] == a) {
+                        ++found;
+                        EXPECT_EQ(nb[3 * g + j], uint32_t(f)) << name << " face " << f;
+                    }
+                EXPECT_EQ(found, 1) << name << " face " << f << " edge " << k;
+            }
+    }
+}
+
+TEST(ShadowVolumeMeshTest, SilhouetteInputsCarryEachFacesOwnPlaneData) {
+    // Triangles with adjacency: slot 2k + 1 is the vertex of the face across edge k that is not on the
+    // edge, with that face's normal and first vertex, so the geometry shader classifies a neighbour from
+    // the numbers it classifies that face itself by. The compute path's records agree with them.
+    const ShadowVolumeMesh m(MeshGenerators::box(glm::vec3(1.0f, 0.5f, 2.0f), 2));
+    const std::vector<glm::vec4> adj = SilhouetteInputs::adjacencyVertices(m);
+    const std::vector<SilhouetteFace> faces = SilhouetteInputs::faces(m);
+    ASSERT_EQ(adj.size(), m.faceCount() * 18);
+    ASSERT_EQ(faces.size(), m.faceCount());
+    const auto& p = m.positions();
+    for (size_t f = 0; f < m.faceCount(); ++f) {
+        const glm::vec4* v = &adj[18 * f];
+        for (size_t k = 0; k < 3; ++k) {
+            const uint32_t a = m.faces()[3 * f + k], b = m.faces()[3 * f + (k + 1) % 3];
+            EXPECT_EQ(glm::vec3(v[6 * k]), p[a]);
+            EXPECT_EQ(glm::vec3(v[6 * k + 1]), m.faceNormals()[f]);
+            const uint32_t g = faces[f].neighbours[int(k)];
+            EXPECT_NE(g, uint32_t(f));
+            EXPECT_EQ(glm::vec3(v[6 * k + 4]), m.faceNormals()[g]) << f << " " << k;
+            EXPECT_EQ(glm::vec3(v[6 * k + 5]), glm::vec3(faces[g].first));
+            const glm::vec3 opposite(v[6 * k + 3]);
+            EXPECT_TRUE(opposite != p[a] && opposite != p[b]) << f << " " << k;
+        }
+    }
 }

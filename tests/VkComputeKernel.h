@@ -1,13 +1,15 @@
 #pragma once
 // A compute fixture of the Vulkan tests: one compute shader of the source tree (compiled from the root,
 // so that it may include the shaders the techniques compile, not copies), storage buffers at bindings
-// 0..n-1 of set 0 and one push-constant block, dispatched with its results made visible to the host.
-// The tests that check a GLSL piece on lavapipe against an answer computed on the CPU use it.
+// 0..n-1 of set 0 and one push-constant block (vk/ComputePipeline.h), dispatched with its results made
+// visible to the host. The tests that check a GLSL piece on lavapipe against an answer computed on the CPU
+// use it.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "TestPaths.h"
+#include "vk/ComputePipeline.h"
 #include "vk/DescriptorSets.h"
 #include "vk/ShaderModuleCache.h"
 #include "vk/VulkanBuffer.h"
@@ -24,31 +26,8 @@ public:
     ComputeKernel(VulkanContext& context, const std::string& shader, const Defines& defines, uint32_t buffers,
                   uint32_t pushBytes, const char* label, const std::string& root = SB_SOURCE_DIR)
         : mContext(context), mCache(context, root), mSets(context.device(), {bindings(buffers)}, label),
-          mPushBytes(pushBytes) {
-        const VkShaderModule module = mCache.get(shader, defines, ShaderStage::Compute);
-        const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
-        const VkDescriptorSetLayout setLayout = mSets.layout(0);
-        VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-        layout.setLayoutCount = 1;
-        layout.pSetLayouts = &setLayout;
-        layout.pushConstantRangeCount = pushBytes ? 1u : 0u;
-        layout.pPushConstantRanges = &range;
-        VulkanContext::check(vkCreatePipelineLayout(context.device(), &layout, nullptr, &mLayout),
-                             "vkCreatePipelineLayout");
-        VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-        info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-        info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        info.stage.module = module;
-        info.stage.pName = "main";
-        info.layout = mLayout;
-        VulkanContext::check(
-            vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &mPipeline),
-            "vkCreateComputePipelines");
-    }
-    ~ComputeKernel() {
-        vkDestroyPipeline(mContext.device(), mPipeline, nullptr);
-        vkDestroyPipelineLayout(mContext.device(), mLayout, nullptr);
-    }
+          mPipeline(context, mCache.get(shader, defines, ShaderStage::Compute), {mSets.layout(0)},
+                    pushBytes) {}
     ComputeKernel(const ComputeKernel&) = delete;
     ComputeKernel& operator=(const ComputeKernel&) = delete;
 
@@ -59,11 +38,8 @@ public:
             mSets.writeBuffer(0, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]->buffer(),
                               buffers[i]->size());
         mContext.submitNow([&](VkCommandBuffer cmd) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline);
-            const VkDescriptorSet set = mSets.set(0);
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, 0, 1, &set, 0, nullptr);
-            if (mPushBytes)
-                vkCmdPushConstants(cmd, mLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, mPushBytes, push);
+            mPipeline.bind(cmd, {mSets.set(0)});
+            mPipeline.push(cmd, push);
             vkCmdDispatch(cmd, groups, 1, 1);
             VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -85,9 +61,7 @@ private:
     VulkanContext& mContext;
     ShaderModuleCache mCache; ///< rooted at the source tree
     DescriptorSets mSets;
-    uint32_t mPushBytes = 0;
-    VkPipelineLayout mLayout = VK_NULL_HANDLE;
-    VkPipeline mPipeline = VK_NULL_HANDLE;
+    ComputePipeline mPipeline;
 };
 
 } // namespace sb::test

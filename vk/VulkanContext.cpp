@@ -404,6 +404,9 @@ void VulkanContext::createDevice() {
     enabled.depthClamp = available.depthClamp;
     enabled.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
     enabled.geometryShader = available.geometryShader; // GraphicsPipelineDesc::geometry (volume extrusion)
+    // volume's extrusion=geometry: its geometry shader adds the triangles it emits to a storage buffer
+    // (enabled wherever offered: VolumeVulkan asks the physical device)
+    enabled.vertexPipelineStoresAndAtomics = available.vertexPipelineStoresAndAtomics;
     enabled.imageCubeArray = available.imageCubeArray; // samplerCubeArrayShadow (cubemap's lighting pass)
     // gl_ClipDistance: paraboloid's cut at each half's plane, occluder's bake (one side of the
     // cross-section's plane) and planar's guards

@@ -6,6 +6,7 @@
 // one texel apart (bilinear), as `shadowmap`. A spot light has one layer (a perspective map).
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -83,7 +84,9 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = shadowApplies(i, vColorId) ? visibility(i, vWorldPos, viewDepth) : 1.0;
+        vis[i] = shadowApplies(i, vColorId)
+                     ? contactLimited(i, visibility(i, vWorldPos, viewDepth), vWorldPos, n)
+                     : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -11,9 +11,11 @@
 // Biases: NORMAL_OFFSET moves the lookup position along the surface normal by uNormalOffset world-space
 // texels of the map, scaled by (1 - n.l) (Holbert 2011, Saying Goodbye to Shadow Acne, GDC 2011; Holbert
 // 2010, Normal Offset Shadows); RECEIVER_PLANE compares each tap with the receiver plane's depth there
-// (Isidoro 2006, shadowmap/receiver_plane.glsl).
+// (Isidoro 2006, shadowmap/receiver_plane.glsl). SB_CONTACT_SHADOWS: common/contact_shadow.glsl's march
+// darkens what the map's bias leaves lit under a caster's foot.
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/receiver_plane.glsl"
 
 in vec3 vWorldPos;
@@ -143,7 +145,8 @@ void main() {
 #else
         vec2 slope = vec2(0.0);
 #endif
-        vis[i] = shadowApplies(i, vColorId) ? visibility(i, coord, slope) : 1.0;
+        vis[i] = shadowApplies(i, vColorId) ? contactLimited(i, visibility(i, coord, slope), vWorldPos, n)
+                                            : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -6,43 +6,63 @@
 //    silhouette is found here instead of on the CPU. The test uses the plane, not this vertex's
 //    position: all vertices of a face get the same inputs and agree even when the light grazes it.
 // FINITE (section 9.6.1): extrude by the light's range instead of to infinity.
+// PULLED (extrusion=compute): the doubled buffer's entries, fetched by the compute shader's choice.
+// GPU_SILHOUETTES (extrusion=geometry): the vertices of triangles with adjacency, projected as they are
+// and extruded, passed on with their face's normal and first vertex to volume/silhouette.geom.
 #include "common/frame.glsl"
 
 #ifdef VS_EXTRUSION
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec4 aFacePlane;
+#elif defined(GPU_SILHOUETTES)
+layout(location = 0) in vec4 aPosition;
+layout(location = 1) in vec4 aNormal;
+layout(location = 2) in vec4 aFirst;
+layout(location = 0) out vec4 vExtruded; // the extruded copy, projected
+layout(location = 1) out vec3 vNormal;
+layout(location = 2) out vec3 vFirst;
+#elif defined(PULLED)
+// extrusion=compute: vertex i is the doubled entry uVertices[i] (volume/silhouette.comp's output), fetched
+// here instead of by the vertex input (drawn without indices, see that file).
+#ifdef VULKAN
+layout(std430, set = 1, binding = 0) readonly buffer Vertices {
+    uint uVertices[];
+};
+layout(std430, set = 1, binding = 1) readonly buffer Doubled {
+    vec4 uDoubled[]; // every caster mesh's doubled entries (techniques/volume/GpuSilhouettesVulkan.h)
+};
+#define VERTEX_ID gl_VertexIndex
+#else
+layout(std430, binding = 2) readonly buffer Vertices {
+    uint uVertices[];
+};
+layout(std430, binding = 4) readonly buffer Doubled {
+    vec4 uDoubled[]; // the caster mesh's doubled vertex buffer
+};
+#define VERTEX_ID gl_VertexID
+#endif
 #else
 layout(location = 0) in vec4 aPosition;
 #endif
-#ifdef VULKAN
-// Per draw in the push constants (techniques/volume/VolumeVulkan.h): the model matrix, the object-space
-// light in vec and the FINITE extrusion length's bits in ints.y.
-#include "common/push.glsl"
-#define uModel uPush.model
-#define uLightObject uPush.vec
-#define uRange intBitsToFloat(uPush.ints.y)
-#else
-layout(location = 0) uniform mat4 uModel;
-layout(location = 1) uniform vec4 uLightObject; // object space: (position, 1) or (towards light, 0)
-layout(location = 2) uniform float uRange;       // FINITE: object-space extrusion length
-#endif
-
-
-vec4 extrude(vec3 p) {
-    vec3 away = p * uLightObject.w - uLightObject.xyz; // from the light through p (Listing 9-3)
-#ifdef FINITE
-    return vec4(p + normalize(away) * uRange, 1.0);
-#else
-    return vec4(away, 0.0);
-#endif
-}
+#include "volume/draw.glsl"
+#include "volume/extrude.glsl"
 
 void main() {
 #ifdef VS_EXTRUSION
     // Listing 9-5 in plane form: dot(N, L.xyz - P0 L.w) = dot(N, L.xyz) - L.w dot(N, P0).
     bool back = dot(aFacePlane.xyz, uLightObject.xyz) - uLightObject.w * aFacePlane.w < 0.0;
     vec4 p = back ? extrude(aPosition) : vec4(aPosition, 1.0);
+#elif defined(GPU_SILHOUETTES)
+    // The face's own vertex (w = 1) and its extruded copy, both projected here as the CPU path's
+    // vertex shader projects them (the geometry shader only chooses among them).
+    vec4 p = aPosition;
+    vExtruded = uViewProj * (uModel * extrude(aPosition.xyz));
+    vNormal = aNormal.xyz;
+    vFirst = aFirst.xyz;
 #else
+#ifdef PULLED
+    const vec4 aPosition = uDoubled[uVertices[VERTEX_ID]];
+#endif
     vec4 p = aPosition.w == 0.0 ? extrude(aPosition.xyz) : aPosition;
 #endif
     gl_Position = uViewProj * (uModel * p);

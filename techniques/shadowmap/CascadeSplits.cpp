@@ -42,11 +42,20 @@ glm::vec2 CascadeSplits::clipToReceivers(glm::vec2 nearFar, const glm::mat4& vie
         }
     }
     if (lo > hi) return nearFar;
-    const float pad = 0.01f * (hi - lo) + 1e-5f * nearFar.y;
-    const float n = std::clamp(lo - pad, nearFar.x, nearFar.y);
-    float f = std::clamp(hi + pad, nearFar.x, nearFar.y);
+    return pad(lo, hi, nearFar);
+}
+
+glm::vec2 CascadeSplits::pad(float lo, float hi, glm::vec2 nearFar) {
+    const float margin = 0.01f * (hi - lo) + 1e-5f * nearFar.y;
+    const float n = std::clamp(lo - margin, nearFar.x, nearFar.y);
+    float f = std::clamp(hi + margin, nearFar.x, nearFar.y);
     f = std::max(f, std::min(nearFar.y, n + 1e-4f * nearFar.y));
     return {n, std::max(f, n * (1.0f + 1e-6f))};
+}
+
+std::vector<float> CascadeSplits::sampleDistribution(glm::vec2 samples, glm::vec2 nearFar, int count) {
+    const glm::vec2 range = samples.x > samples.y ? nearFar : pad(samples.x, samples.y, nearFar);
+    return practical(range.x, range.y, count, 1.0f);
 }
 
 } // namespace sb

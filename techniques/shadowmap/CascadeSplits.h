@@ -10,6 +10,12 @@
 // scene would put every split but the first into empty space, and a near plane of 1 under a camera
 // 150 above the nearest roof would spend the first splits on air. Pure math: no GL, no scene state
 // beyond the boxes it is given.
+//
+// fit=sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps, I3D: its z-partitioning of
+// the tight depth range) clips [n, f] instead to the min and max depth of the pixels the camera sees,
+// which a depth pre-pass and a GPU reduction find (shaders/shadowmap/depth_range.comp), and splits that
+// interval logarithmically (lambda = 1): with the range tight, the log split's starvation of the far end
+// that the practical scheme's uniform part guards against is gone, the paper's argument for it.
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -36,6 +42,17 @@ public:
     /// kept at least 1e-4 x far thick. With no receiver in view the camera's own interval is returned.
     static glm::vec2 clipToReceivers(glm::vec2 nearFar, const glm::mat4& view, const glm::mat4& proj,
                                      const std::vector<Aabb>& receivers);
+
+    /// The sample distribution split: `samples` (the view depths of the nearest and farthest pixel)
+    /// padded as clipToReceivers pads the receivers' interval and kept within `nearFar`, then split
+    /// logarithmically into `count` cascades (practical with lambda = 1). An empty interval (x > y: no
+    /// pixel covered) splits `nearFar` instead.
+    static std::vector<float> sampleDistribution(glm::vec2 samples, glm::vec2 nearFar, int count);
+
+    /// [lo, hi] padded by 1% of its length plus 1e-5 of the far distance on both sides, clamped to
+    /// `nearFar` and kept at least 1e-4 x far thick: what a split interval found from samples or boxes
+    /// needs so that its end pixels lie inside, not on, its ends.
+    static glm::vec2 pad(float lo, float hi, glm::vec2 nearFar);
 };
 
 } // namespace sb

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -23,8 +24,13 @@ constexpr GLint kSlotLayerLocation = 32;  // likewise
 
 CascadedGL::CascadedGL() : GlTechnique(Cascaded::declaration()) {}
 
+void CascadedGL::propertiesApplied() {
+    mutableInfo().passes = Cascaded::passes(properties());
+}
+
 void CascadedGL::setScene(const Scene& scene) {
     mPlan.setScene(scene, int(properties().getInt(Cascaded::kCascades)));
+    mRange.reset();
 }
 
 void CascadedGL::compile(const CompileContext& ctx) {
@@ -32,6 +38,8 @@ void CascadedGL::compile(const CompileContext& ctx) {
     mMaps.allocate(GL_TEXTURE_2D_ARRAY, int(p.getInt(P::kResolution)), mPlan.slotCount(), false);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    if (Cascaded::viewDepth(p)) mViewDepth.compile(ctx.programs, base);
+    if (Cascaded::sampleDistribution(p)) mRange.compile(ctx.programs);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
     setPermutationKey(
@@ -67,19 +75,31 @@ void CascadedGL::renderLighting(FrameContext& ctx) {
                        glm::value_ptr(mPlan.slotShadow()[0]));
     glUniform1iv(kSlotLayerLocation, GLsizei(mPlan.slotLayer().size()), mPlan.slotLayer().data());
     glBindTextureUnit(0, mMaps.texture());
+    const bool contact = ContactShadows::enabled(properties());
+    if (contact) mViewDepth.bindForLighting(ContactShadows::block(properties()));
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
+    if (contact) ViewDepthGL::unbindForLighting();
     glBindTextureUnit(0, 0);
 }
 
 void CascadedGL::execute(FrameContext& ctx) {
+    const PropertySet& p = properties();
+    glm::vec2 samples(1.0f, 0.0f); // fit=sdsm: the reduction's view-depth interval
+    // The view depth pre-pass, once for both readers: fit=sdsm's reduction and contact=on's march.
+    std::function<void()> viewDepth;
+    if (Cascaded::viewDepth(p))
+        viewDepth = [&] {
+            mViewDepth.render(ctx);
+            if (Cascaded::sampleDistribution(p)) samples = mRange.run(mViewDepth);
+        };
     const SubmitStats s = DepthLightingFrame::run(
         ctx,
         [&] {
-            mPlan.fit(ctx.view, ctx.proj, properties(), mMaps.size());
+            mPlan.fit(ctx.view, ctx.proj, properties(), mMaps.size(), samples);
             renderDepth(ctx);
         },
-        [&] { renderLighting(ctx); });
-    mCounters = mPlan.counters(s, mMaps.size(), ctx.scene);
+        [&] { renderLighting(ctx); }, viewDepth, Cascaded::viewDepthPass(p));
+    mCounters = mPlan.counters(s, mMaps.size(), ctx.scene, properties());
 }
 
 } // namespace sb

@@ -22,6 +22,11 @@
 // band's second lookup is paid by every fragment (city overview: 1.15x shadowmap's frame with blend=0,
 // 1.68x with the default 0.1).
 //
+// fit=sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps, I3D) adds pass
+// "depth_range" before "depth": the view depth pre-pass (techniques/gl/ViewDepthGL.h) reduced on the GPU
+// to its min and max depth (techniques/shadowmap/DepthRangeGL.h, read back one frame late), whose
+// interval the splits divide logarithmically (CascadeSplits::sampleDistribution).
+//
 // Spot lights get one perspective map fitted as `shadowmap` does (scenes/LightFit.h); point lights
 // need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
 //
@@ -37,16 +42,19 @@
 
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
+#include "techniques/gl/ViewDepthGL.h"
 #include "techniques/shadowmap/CascadeFit.h"
 #include "techniques/shadowmap/Cascaded.h"
 #include "techniques/shadowmap/CascadedMaps.h"
 #include "techniques/shadowmap/DepthLayers.h"
+#include "techniques/shadowmap/DepthRangeGL.h"
 
 namespace sb {
 
 class CascadedGL final : public GlTechnique {
 public:
     CascadedGL();
+    void propertiesApplied() override; ///< fit=sdsm's pass "depth_range"
     void setScene(const Scene& scene) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
@@ -57,6 +65,9 @@ public:
     /// the last frame: what the tests compare against closed forms.
     const std::vector<float>& splits() const { return mPlan.splits(); }
     const std::vector<Cascade>& cascades(size_t light) const { return mPlan.cascades(light); }
+    /// fit=sdsm: the view depth pre-pass and its reduction (for the tests).
+    const ViewDepthGL& viewDepth() const { return mViewDepth; }
+    const DepthRangeGL& depthRange() const { return mRange; }
 
 private:
     void renderDepth(FrameContext& ctx);
@@ -64,6 +75,8 @@ private:
 
     CascadedMaps mPlan;            ///< lights, slots, fits and the depth pass's plan (both APIs')
     DepthLayers mMaps{"cascaded"}; ///< GL_TEXTURE_2D_ARRAY, one layer per slot
+    ViewDepthGL mViewDepth;        ///< fit=sdsm and contact=on: the view's depth (their first pass)
+    DepthRangeGL mRange;           ///< fit=sdsm: its min and max, one frame late
     std::vector<uint8_t> mKeep;    ///< the depth pass's mask, reused per map
     const Program* mDepthProgram = nullptr;
     LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)

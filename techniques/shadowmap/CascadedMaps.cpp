@@ -1,5 +1,7 @@
 #include "techniques/shadowmap/CascadedMaps.h"
 
+#include "techniques/ContactShadows.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cstring>
@@ -58,17 +60,24 @@ void CascadedMaps::setScene(const Scene& scene, int cascades) {
     mCulling.setScene(scene);
 }
 
-void CascadedMaps::fit(const glm::mat4& view, const glm::mat4& proj, const PropertySet& p, int resolution) {
+void CascadedMaps::fit(const glm::mat4& view, const glm::mat4& proj, const PropertySet& p, int resolution,
+                       glm::vec2 samples) {
     const int n = int(p.getInt(Cascaded::kCascades));
     mView = view;
     mResolution = resolution;
-    const glm::vec2 range =
-        CascadeSplits::clipToReceivers(CascadeSplits::nearFar(proj), view, proj, mReceivers);
-    mSplits = CascadeSplits::practical(range.x, range.y, n, float(p.getFloat(Cascaded::kLambda)));
+    mSamples = samples;
+    if (Cascaded::sampleDistribution(p)) {
+        mSplits = CascadeSplits::sampleDistribution(samples, CascadeSplits::nearFar(proj), n);
+    } else {
+        const glm::vec2 clipped =
+            CascadeSplits::clipToReceivers(CascadeSplits::nearFar(proj), view, proj, mReceivers);
+        mSplits = CascadeSplits::practical(clipped.x, clipped.y, n, float(p.getFloat(Cascaded::kLambda)));
+    }
+    const float nearest = mSplits.front();
     // Cascade c is looked up from mSplits[c] on, but blends in over the last `blend` of cascade c - 1:
     // its map must cover that band too.
     const float blend = float(p.getFloat(Cascaded::kBlend));
-    mFitStart.assign(size_t(n), range.x);
+    mFitStart.assign(size_t(n), nearest);
     for (int c = 1; c < n; ++c)
         mFitStart[size_t(c)] = mSplits[size_t(c)] - blend * (mSplits[size_t(c)] - mSplits[size_t(c) - 1]);
     const bool stable = p.getBool(Cascaded::kStabilize);
@@ -171,19 +180,26 @@ Defines CascadedMaps::lightingDefines(Defines lit, const PropertySet& p) const {
     lit["LIGHT_SLOTS"] = slots.empty() ? "0" : slots;
     if (p.getInt(Cascaded::kCascades) > 1 && p.getFloat(Cascaded::kBlend) > 0.0) lit["BLEND"] = "";
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
+    ContactShadows::addDefines(p, lit);
     return lit;
 }
 
-Counters CascadedMaps::counters(const SubmitStats& s, int resolution, const Scene& scene) const {
+Counters CascadedMaps::counters(const SubmitStats& s, int resolution, const Scene& scene,
+                                const PropertySet& p) const {
     double cascades = 0.0;
     for (const LightMaps& m : mLights) cascades += m.directional ? m.slots : 0;
     // Texels of the maps drawn this frame: shared and empty cascades draw none.
     const double res = double(resolution);
-    return DepthLightingFrame::counters(
-        s, res * res * double(mMapsRendered),
-        {{"cascades", cascades},
-         {"casters_culled", double(mCulled)},
-         {"lights_unshadowed", double(ShadowWork::unshadowedLights(scene, mLights.size()))}});
+    std::vector<std::pair<std::string, double>> extra = {
+        {"cascades", cascades},
+        {"casters_culled", double(mCulled)},
+        {"lights_unshadowed", double(ShadowWork::unshadowedLights(scene, mLights.size()))}};
+    if (Cascaded::sampleDistribution(p)) {
+        const bool covered = mSamples.x <= mSamples.y;
+        extra.emplace_back("depth_min", covered ? double(mSamples.x) : 0.0);
+        extra.emplace_back("depth_max", covered ? double(mSamples.y) : 0.0);
+    }
+    return DepthLightingFrame::counters(s, res * res * double(mMapsRendered), std::move(extra));
 }
 
 } // namespace sb

@@ -34,7 +34,10 @@ public:
     /// Slots of every light (at least 1: GLSL has no empty arrays); layer i of the depth array is slot i's.
     int slotCount() const;
     /// This frame's splits and fits for the camera (view, proj; GL conventions), maps of `resolution`^2.
-    void fit(const glm::mat4& view, const glm::mat4& proj, const PropertySet& p, int resolution);
+    /// fit=sdsm: `samples` is the view-depth interval of the pixels the depth pre-pass covered (x > y:
+    /// none), the reduction's answer (CascadeSplits::sampleDistribution splits it); practical ignores it.
+    void fit(const glm::mat4& view, const glm::mat4& proj, const PropertySet& p, int resolution,
+             glm::vec2 samples = glm::vec2(1.0f, 0.0f));
     /// The depth pass: for each map to draw this frame, its casters culled into `keep` and `draw(slot)`
     /// called (its layer is the slot). Empty and shared slots are marked, not drawn. Returns maps drawn.
     int planDepth(std::vector<uint8_t>& keep, const std::function<void(size_t slot)>& draw);
@@ -44,8 +47,9 @@ public:
     /// lights' slots, the cascade count, blending and the PCF width.
     Defines lightingDefines(Defines scene, const PropertySet& p) const;
     /// The counters of a frame, on both APIs: DepthLightingFrame's over the maps drawn at `resolution`,
-    /// then cascades, casters culled and lights unshadowed.
-    Counters counters(const SubmitStats& s, int resolution, const Scene& scene) const;
+    /// then cascades, casters culled and lights unshadowed; fit=sdsm adds the view-depth interval the
+    /// reduction found (depth_min, depth_max; 0 and 0 when no pixel was covered).
+    Counters counters(const SubmitStats& s, int resolution, const Scene& scene, const PropertySet& p) const;
 
     const std::vector<float>& splits() const { return mSplits; }
     const std::vector<Cascade>& cascades(size_t light) const { return mLights[light].cascades; }
@@ -75,11 +79,12 @@ private:
     void shareIdenticalFits(const LightMaps& m);
 
     std::vector<LightMaps> mLights;
-    std::vector<Aabb> mReceivers; ///< world bounds of every receiving instance
-    std::vector<float> mSplits;   ///< this frame's split distances (view depth)
-    glm::mat4 mView{1.0f};        ///< this frame's camera (fit()), for a sample's view depth
-    int mResolution = 0;          ///< this frame's maps' resolution (fit())
-    std::vector<float> mFitStart; ///< where each cascade's fit starts (its blend band included)
+    std::vector<Aabb> mReceivers;   ///< world bounds of every receiving instance
+    std::vector<float> mSplits;     ///< this frame's split distances (view depth)
+    glm::vec2 mSamples{1.0f, 0.0f}; ///< fit=sdsm: the view-depth interval the frame was split from
+    glm::mat4 mView{1.0f};          ///< this frame's camera (fit()), for a sample's view depth
+    int mResolution = 0;            ///< this frame's maps' resolution (fit())
+    std::vector<float> mFitStart;   ///< where each cascade's fit starts (its blend band included)
     // Per slot (a light's cascade, or a spot light's one map; slot i may use layer i at most):
     std::vector<glm::mat4> mSlotViewProj; ///< world -> the map's clip space
     std::vector<glm::mat4> mSlotShadow;   ///< bias * viewProj (to [0, 1] texture space)

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/Error.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/Cascaded.h"
@@ -29,6 +30,10 @@ CascadedVulkan::~CascadedVulkan() {
     release();
 }
 
+void CascadedVulkan::propertiesApplied() {
+    mutableInfo().passes = Cascaded::passes(properties());
+}
+
 void CascadedVulkan::release() {
     if (!mDevice) return;
     vkDestroyPipelineLayout(mDevice, mDepthLayout, nullptr);
@@ -42,6 +47,7 @@ void CascadedVulkan::release() {
 
 void CascadedVulkan::setScene(const Scene& scene) {
     mPlan.setScene(scene, int(properties().getInt(Cascaded::kCascades)));
+    mRange.reset();
 }
 
 void CascadedVulkan::createDescriptors(VulkanContext& context) {
@@ -83,7 +89,10 @@ void CascadedVulkan::createPipelines(const VulkanCompileContext& ctx) {
     // Lighting pass: the GL form's defines, permutation for permutation.
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = mPlan.lightingDefines(ctx.defines(), p);
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    // contact=on: the view depth's set as set 2 (ViewDepthVulkan::kLightingSet).
+    std::vector<VkDescriptorSetLayout> sets{mSets.layout(kLightingSet)};
+    if (ContactShadows::enabled(p)) sets.push_back(mViewDepth.lightingSetLayout());
+    mLightingLayout = createScenePipelineLayout(ctx, sets);
     const std::string litPermutation =
         mLighting.build(ctx, "common/scene.vert", "shadowmap/cascaded_lighting.frag", lit, mLightingLayout,
                         "cascaded-lighting|");
@@ -102,6 +111,8 @@ void CascadedVulkan::compile(const VulkanCompileContext& ctx) {
     mSlots = mPlan.slotCount();
     mMaps = VulkanDepthMapSet(ctx.context, uint32_t(mSize), uint32_t(mSlots), uint32_t(mSlots));
     createDescriptors(ctx.context);
+    if (Cascaded::viewDepth(properties())) mViewDepth.compile(ctx); // before the lighting pipeline's layout
+    if (Cascaded::sampleDistribution(properties())) mRange.compile(ctx, mViewDepth);
     createPipelines(ctx);
 }
 
@@ -120,8 +131,8 @@ void CascadedVulkan::drawMap(VulkanFrameContext& ctx, size_t slot) {
     vkCmdEndRenderPass(ctx.cmd);
 }
 
-void CascadedVulkan::renderDepth(VulkanFrameContext& ctx) {
-    mPlan.fit(ctx.view, ctx.proj, properties(), mSize);
+void CascadedVulkan::renderDepth(VulkanFrameContext& ctx, glm::vec2 samples) {
+    mPlan.fit(ctx.view, ctx.proj, properties(), mSize, samples);
     mPlan.planDepth(mKeep, [&](size_t slot) { drawMap(ctx, slot); });
 }
 
@@ -144,13 +155,25 @@ void CascadedVulkan::writeLightingBlock() {
 }
 
 void CascadedVulkan::execute(VulkanFrameContext& ctx) {
+    const PropertySet& p = properties();
+    glm::vec2 samples(1.0f, 0.0f); // fit=sdsm: the reduction's view-depth interval
+    // The view depth pre-pass, once for both readers: fit=sdsm's reduction (which records it, the first
+    // frame's in a submission of its own) and contact=on's march.
+    std::function<void()> viewDepth;
+    if (Cascaded::sampleDistribution(p))
+        viewDepth = [&] { samples = mRange.run(ctx, mViewDepth); };
+    else if (ContactShadows::enabled(p))
+        viewDepth = [&] { mViewDepth.record(ctx, ctx.cmd); };
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); },
+        ctx, [&] { renderDepth(ctx, samples); },
         [&] {
             writeLightingBlock();
+            if (ContactShadows::enabled(p))
+                mViewDepth.bindForLighting(ctx.cmd, mLightingLayout, ContactShadows::block(p));
             mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
-        });
-    mCounters = mPlan.counters(s, mSize, ctx.scene);
+        },
+        viewDepth, Cascaded::viewDepthPass(p));
+    mCounters = mPlan.counters(s, mSize, ctx.scene, properties());
 }
 
 } // namespace sb

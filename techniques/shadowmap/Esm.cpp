@@ -48,4 +48,17 @@ TechniqueInfo Esm::declaration() {
             }};
 }
 
+MomentMapKind Esm::kind() {
+    return {
+        .declaration = &Esm::declaration,
+        .format = [](const PropertySet&) { return MomentMapKind::Format::R32F; },
+        .depthDefines = [](const PropertySet&, Defines&) {},
+        .lightingDefines = [](const PropertySet&, Defines&) {},
+        .lightingFragment = "shadowmap/esm.frag",
+        .params = [](const PropertySet& p) -> std::vector<float> { return {float(p.getFloat(kExponent))}; },
+        // d = 1.
+        .noOccluder = [](const PropertySet&) { return glm::vec4(1.0f, 0.0f, 0.0f, 0.0f); },
+        .logSpaceExponent = [](const PropertySet& p) { return float(p.getFloat(kExponent)); }};
+}
+
 } // namespace sb

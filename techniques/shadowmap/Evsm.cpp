@@ -84,4 +84,20 @@ TechniqueInfo Evsm::declaration() {
             }};
 }
 
+MomentMapKind Evsm::kind() {
+    return {.declaration = &Evsm::declaration,
+            .format =
+                [](const PropertySet& p) {
+                    return negativeWarp(p) ? MomentMapKind::Format::RGBA32F : MomentMapKind::Format::RG32F;
+                },
+            .depthDefines = &Evsm::addDefines,
+            .lightingDefines = &Evsm::addDefines,
+            .lightingFragment = "shadowmap/evsm.frag",
+            .params = [](const PropertySet& p) -> std::vector<float> {
+                return {float(p.getFloat(kMinVariance)), float(p.getFloat(kBleedReduction))};
+            },
+            .noOccluder = &Evsm::noOccluder,
+            .logSpaceExponent = [](const PropertySet&) { return 0.0f; }};
+}
+
 } // namespace sb

@@ -73,4 +73,20 @@ TechniqueInfo Msm::declaration() {
             }};
 }
 
+MomentMapKind Msm::kind() {
+    return {.declaration = &Msm::declaration,
+            .format =
+                [](const PropertySet& p) {
+                    return quantized(p) ? MomentMapKind::Format::RGBA16Unorm : MomentMapKind::Format::RGBA32F;
+                },
+            .depthDefines = &Msm::addDefines,
+            .lightingDefines = &Msm::addDefines,
+            .lightingFragment = "shadowmap/msm.frag",
+            .params = [](const PropertySet& p) -> std::vector<float> {
+                return {float(p.getFloat(kMomentBias)), float(p.getFloat(kBleedReduction))};
+            },
+            .noOccluder = &Msm::noOccluder,
+            .logSpaceExponent = [](const PropertySet&) { return 0.0f; }};
+}
+
 } // namespace sb

@@ -4,10 +4,12 @@
 #include <cmath>
 
 #include "scenes/Math.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
+#include "techniques/ViewDepth.h"
 #include "techniques/shadowmap/PoissonDisk.h"
 
 namespace sb {
@@ -39,7 +41,7 @@ std::vector<glm::vec2> kernelTaps(const std::string& kernel, int taps, float rad
 
 /// The knobs, one maker call each (techniques/Property.h): what --list shows and -t name:k=v sets.
 std::vector<PropertyDesc> declareProperties() {
-    return {
+    std::vector<PropertyDesc> out = {
         P::resolution("2048", "shadow map width and height (texels)"),
         P::biasConstant(),
         P::biasSlope(),
@@ -62,6 +64,9 @@ std::vector<PropertyDesc> declareProperties() {
         LightFitProperties::fit("map", "spot lights take their cone"),
         LightFitProperties::fitMargin(),
     };
+    const std::vector<PropertyDesc> contact = ContactShadows::properties();
+    out.insert(out.end(), contact.begin(), contact.end());
+    return out;
 }
 
 } // namespace
@@ -88,7 +93,11 @@ TechniqueInfo ShadowMap::declaration() {
                     {kReceiverPlane, {"false", "true"}},
                 },
             .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
+                ResourceEstimate e = squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
+                if (!ContactShadows::enabled(p)) return e;
+                e.bytes += ViewDepth::bytes(in.width, in.height);
+                e.how += " + " + ViewDepth::describe(in.width, in.height, "contact");
+                return e;
             }};
 }
 
@@ -130,6 +139,7 @@ Defines ShadowMap::lightingDefines(Defines lit, const PropertySet& p, int layers
         lit[kernel == "poisson" ? "KERNEL_POISSON" : "KERNEL_ROTATED_GRID"] = "";
     if (float(p.getFloat(kNormalOffset)) > 0.0f) lit["NORMAL_OFFSET"] = ""; // as the forms read it
     if (p.getBool(kReceiverPlane)) lit["RECEIVER_PLANE"] = "";
+    ContactShadows::addDefines(p, lit);
     return lit;
 }
 

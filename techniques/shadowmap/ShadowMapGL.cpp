@@ -11,6 +11,7 @@
 
 #include "core/Injection.h"
 #include "scenes/Math.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -29,6 +30,10 @@ constexpr GLint kKernelLocation = 20; // uKernel[64]
 } // namespace
 
 ShadowMapGL::ShadowMapGL() : GlTechnique(ShadowMap::declaration()) {}
+
+void ShadowMapGL::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), ShadowMap::declaration().passes);
+}
 
 void ShadowMapGL::setScene(const Scene& scene) {
     mLights.setScene(scene, "shadowmap", properties());
@@ -54,6 +59,7 @@ void ShadowMapGL::compile(const CompileContext& ctx) {
     mDrawAllIntoMap = injected(Injection::NoCasterCulling);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    if (ContactShadows::enabled(p)) mViewDepth.compile(ctx.programs, base);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = ShadowMap::lightingDefines(ctx.defines(), p, layers);
     mKernel = ShadowMap::kernelOffsets(p);
@@ -99,13 +105,18 @@ void ShadowMapGL::renderLighting(FrameContext& ctx) {
         glUniform2fv(kKernelLocation, GLsizei(mKernel.size()), glm::value_ptr(mKernel[0]));
     }
     glBindTextureUnit(0, mMaps.texture());
+    const bool contact = ContactShadows::enabled(properties());
+    if (contact) mViewDepth.bindForLighting(ContactShadows::block(properties()));
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
+    if (contact) ViewDepthGL::unbindForLighting();
     glBindTextureUnit(0, 0);
 }
 
 void ShadowMapGL::execute(FrameContext& ctx) {
+    std::function<void()> viewDepth;
+    if (ContactShadows::enabled(properties())) viewDepth = [&] { mViewDepth.render(ctx); };
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, viewDepth, ContactShadows::kPass);
     mCounters = ShadowMap::counters(s, mMaps.size(), mLights, mCulled);
 }
 

@@ -33,6 +33,7 @@
 #include "techniques/FlatLightFits.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
+#include "techniques/gl/ViewDepthGL.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/ShadowMap.h"
 
@@ -41,6 +42,7 @@ namespace sb {
 class ShadowMapGL final : public GlTechnique {
 public:
     ShadowMapGL();
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void setScene(const Scene& scene) override;
     /// The light fits, the culling bounds and what depends on the fits (texel sizes, cull margins).
     void sceneChanged(const Scene& scene, uint32_t changes) override;
@@ -67,7 +69,8 @@ private:
     bool mCull = true;              ///< leave out casters whose shadow cannot reach the view
     ViewCull mView;                 ///< for mCull: the lights, the receivers, the margins
     const Program* mDepthProgram = nullptr;
-    LitPrograms mLighting; ///< the lighting pass's programs (non-receivers apart where they can be)
+    LitPrograms mLighting;  ///< the lighting pass's programs (non-receivers apart where they can be)
+    ViewDepthGL mViewDepth; ///< contact=on: the view's depth the lighting pass marches
     Counters mCounters;
 };
 

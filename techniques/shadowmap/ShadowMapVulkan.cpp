@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/ShadowMap.h"
@@ -91,6 +92,10 @@ void ShadowMapVulkan::writeLightingBlock(float targetHeight) {
     mDepth.writeLights(mLights);
 }
 
+void ShadowMapVulkan::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), ShadowMap::declaration().passes);
+}
+
 void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     release();
     mDevice = ctx.context.device();
@@ -110,7 +115,11 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     mCull = p.getBool(ShadowMap::kCull);
     fitTexels(ctx.scene);
     writeLightingBlock(float(ctx.targets.height()));
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
+    const bool contact = ContactShadows::enabled(p);
+    if (contact) mViewDepth.compile(ctx);
+    mLightingLayout = createScenePipelineLayout(
+        ctx, contact ? std::vector<VkDescriptorSetLayout>{mSets.layout(0), mViewDepth.lightingSetLayout()}
+                     : std::vector<VkDescriptorSetLayout>{mSets.layout(0)});
     setPermutationKey(definesKey(base) + "|" +
                       mLighting.build(ctx, "common/scene.vert", "shadowmap/lighting.frag", lit,
                                       mLightingLayout, "shadowmap-lighting|"));
@@ -122,12 +131,16 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
 }
 
 void ShadowMapVulkan::renderLighting(VulkanFrameContext& ctx) {
+    if (ContactShadows::enabled(properties()))
+        mViewDepth.bindForLighting(ctx.cmd, mLightingLayout, ContactShadows::block(properties()));
     mLighting.draw(ctx, mLightingLayout, mSets.set(0));
 }
 
 void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {
+    std::function<void()> viewDepth;
+    if (ContactShadows::enabled(properties())) viewDepth = [&] { mViewDepth.record(ctx, ctx.cmd); };
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, viewDepth, ContactShadows::kPass);
     mCounters = ShadowMap::counters(s, mSize, mLights, mCulled);
 }
 

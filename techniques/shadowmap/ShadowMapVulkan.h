@@ -16,6 +16,7 @@
 #include "scenes/InstanceCulling.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/vulkan/LitPipelines.h"
+#include "techniques/vulkan/ViewDepthVulkan.h"
 #include "techniques/vulkan/VulkanFlatDepthPass.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
@@ -27,6 +28,7 @@ class ShadowMapVulkan final : public VulkanTechnique {
 public:
     ShadowMapVulkan();
     ~ShadowMapVulkan() override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void setScene(const Scene& scene) override;
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
@@ -53,6 +55,7 @@ private:
     DescriptorSets mSets;        ///< the lighting pass's set 1
     VkPipelineLayout mLightingLayout = VK_NULL_HANDLE;
     LitPipelines mLighting;
+    ViewDepthVulkan mViewDepth; ///< contact=on: the view's depth the lighting pass marches
 
     std::vector<glm::vec2> mKernel;
     std::vector<float> mTexelWorld;

@@ -54,4 +54,18 @@ TechniqueInfo Vsm::declaration() {
             }};
 }
 
+MomentMapKind Vsm::kind() {
+    return {.declaration = &Vsm::declaration,
+            .format = [](const PropertySet&) { return MomentMapKind::Format::RG32F; },
+            .depthDefines = [](const PropertySet&, Defines& d) { d["VSM"] = ""; },
+            .lightingDefines = [](const PropertySet&, Defines&) {},
+            .lightingFragment = "shadowmap/vsm.frag",
+            .params = [](const PropertySet& p) -> std::vector<float> {
+                return {float(p.getFloat(kMinVariance)), float(p.getFloat(kBleedReduction))};
+            },
+            // The moments of d = 1.
+            .noOccluder = [](const PropertySet&) { return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f); },
+            .logSpaceExponent = [](const PropertySet&) { return 0.0f; }};
+}
+
 } // namespace sb

@@ -211,6 +211,18 @@ std::vector<glm::vec4> ShadowVolumeMesh::doubledVertices() const {
     return out;
 }
 
+std::vector<uint32_t> ShadowVolumeMesh::neighbours() const {
+    std::vector<uint32_t> out(mFaceEdges.size(), kNoFace);
+    for (size_t s = 0; s < mFaceEdges.size(); ++s) {
+        const Edge& e = mEdges[mFaceEdges[s] & ~kReversed];
+        // A face traversing v1 -> v0 faces face0 across the edge, one traversing v0 -> v1 face1. On an
+        // open edge (one face, or more than two) the partner may be missing or the face itself.
+        const uint32_t other = (mFaceEdges[s] & kReversed) ? e.face0 : e.face1;
+        out[s] = other == uint32_t(s / 3) ? kNoFace : other;
+    }
+    return out;
+}
+
 void ShadowVolumeMesh::classifyFaces(const glm::vec4& light, std::vector<uint8_t>& out) const {
     out.resize(faceCount());
     const glm::vec3 l(light);

@@ -110,6 +110,10 @@ public:
     /// mesh with open edges adds the reversed twin of every face, so that the surface is closed and
     /// every crack gets its side (the vertex-shader counterpart of buildVolume's multiplicity).
     ExtrusionMesh buildExtrusionMesh(OpenEdgePolicy policy = OpenEdgePolicy::Closed) const;
+    /// 3 per face, for its directed edges (f0 -> f1, f1 -> f2, f2 -> f0): the face across that edge
+    /// (traversing it the other way), kNoFace where there is none. The GPU silhouette paths' adjacency:
+    /// a face finds the silhouette edges it owns from its own and its neighbours' classification.
+    std::vector<uint32_t> neighbours() const;
     /// (N, dot(N, P0)) of face f.
     glm::vec4 facePlane(size_t f) const;
 

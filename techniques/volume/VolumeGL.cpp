@@ -13,6 +13,8 @@ namespace sb {
 namespace {
 // shaders/volume/extrude.vert and light.frag
 constexpr GLint kModelLocation = 0, kLightLocation = 1, kRangeLocation = 2, kLightIndexLocation = 12;
+// shaders/volume/silhouette.geom
+constexpr GLint kFlagsLocation = 3;
 // shaders/volume/ambient.frag
 constexpr GLint kLitRectLocation = 13, kDepthRangeLocation = 17;
 } // namespace
@@ -28,7 +30,13 @@ void VolumeGL::setScene(const Scene& scene) {
     mPlanner.setSettings(VolumePlanner::readSettings(properties()));
     const VolumePlanner::Settings& settings = mPlanner.settings();
     mScene = &scene;
-    mBuffers.upload(scene, settings.vertexExtrusion, settings.policy);
+    using Extrusion = VolumePlanner::Extrusion;
+    mBuffers.upload(scene,
+                    {.extrusion = settings.vertexExtrusion,
+                     .adjacency = settings.extrusion == Extrusion::Geometry,
+                     .faces = settings.extrusion == Extrusion::Compute},
+                    settings.policy);
+    if (settings.gpuSilhouettes()) mSilhouettes.create(settings.extrusion == Extrusion::Compute);
     std::vector<VolumePlanner::MeshInfo> meshes(mBuffers.size());
     for (size_t m = 0; m < mBuffers.size(); ++m) {
         const VolumeMeshBuffers::Gpu& gpu = mBuffers.mesh(m);
@@ -36,6 +44,7 @@ void VolumeGL::setScene(const Scene& scene) {
     }
     mPlanner.setMeshes(std::move(meshes));
     mPlanner.checkClosed(scene);
+    mPlanner.checkGpuSilhouettes(scene);
     mPlanner.setScene(scene);
 }
 
@@ -53,18 +62,31 @@ void VolumeGL::compile(const CompileContext& ctx) {
         throw Error("volume: depth_bounds needs GL_EXT_depth_bounds_test, which '" + ctx.context.renderer +
                         "' does not expose: unsupported here, skipped (run without depth_bounds=true)",
                     ExitCode::Unsupported);
+    if (settings.extrusion == VolumePlanner::Extrusion::Mesh)
+        throw Error("volume: extrusion=mesh needs VK_EXT_mesh_shader, which GL does not have: unsupported "
+                    "here (run with --api vulkan --driver mesa-25.0.7)",
+                    ExitCode::Unsupported);
     Defines scene = withLightKinds(ctx.submitter.defines(), ctx.scene);
     mAmbientProgram = &ctx.programs.get({"common/scene.vert", "volume/ambient.frag", ""}, scene);
     mLightProgram = &ctx.programs.get({"common/scene.vert", "volume/light.frag", ""}, scene);
     Defines volume;
     if (settings.vertexExtrusion) volume["VS_EXTRUSION"] = "";
-    mVolumeProgram = &ctx.programs.get({"volume/extrude.vert", "volume/stencil.frag", ""}, volume);
+    if (settings.extrusion == VolumePlanner::Extrusion::Compute) volume["PULLED"] = "";
+    const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
+    if (geometry) volume["GPU_SILHOUETTES"] = "";
+    const ShaderSources volumeSources{"volume/extrude.vert", "volume/stencil.frag",
+                                      geometry ? "volume/silhouette.geom" : ""};
+    mVolumeProgram = &ctx.programs.get(volumeSources, volume);
     volume["FINITE"] = "";
     mFiniteProgram = settings.finiteVolumes || settings.boundedVolumes
-                         ? &ctx.programs.get({"volume/extrude.vert", "volume/stencil.frag", ""}, volume)
+                         ? &ctx.programs.get(volumeSources, volume)
                          : nullptr;
+    mSilhouetteProgram = settings.extrusion == VolumePlanner::Extrusion::Compute
+                             ? &ctx.programs.get({.compute = "volume/silhouette.comp"}, {})
+                             : nullptr;
     std::string key = mAmbientProgram->key() + "|" + mLightProgram->key() + "|" + mVolumeProgram->key();
     if (mFiniteProgram) key += "|" + mFiniteProgram->key();
+    if (mSilhouetteProgram) key += "|compute";
     setPermutationKey(key);
     if (!mFrameUniforms) mFrameUniforms = std::make_unique<FrameUniforms>();
     if (!mQueries[0][0])
@@ -91,7 +113,8 @@ void VolumeGL::renderAmbient(FrameContext& ctx, int lights) {
 
 void VolumeGL::collectDraws(const Light& light, const View& view, FrameStats& stats) {
     mPlanner.collectDraws(light, view, stats);
-    if (!mPlanner.settings().vertexExtrusion) mBuffers.streamIndices(mPlanner.stream());
+    if (mPlanner.settings().extrusion == VolumePlanner::Extrusion::Cpu)
+        mBuffers.streamIndices(mPlanner.stream());
 }
 
 void VolumeGL::setStencilCounting(bool zfail) const {
@@ -119,26 +142,46 @@ void VolumeGL::markShadows(int lightIndex) {
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xff);
     const bool finite = mPlanner.finiteFor(light);
-    const bool vertexExtrusion = mPlanner.settings().vertexExtrusion;
+    using Extrusion = VolumePlanner::Extrusion;
+    const Extrusion extrusion = mPlanner.settings().extrusion;
+    if (extrusion == Extrusion::Compute)
+        mSilhouettes.extract(mPlanner.draws(), mBuffers, *mSilhouetteProgram);
+    if (extrusion == Extrusion::Geometry) mSilhouettes.bindCount();
     const Program* program = finite ? mFiniteProgram : mVolumeProgram;
     program->use();
     const GLuint query = mQueries[mQueryFrame % 2][size_t(lightIndex)];
     glBeginQuery(GL_SAMPLES_PASSED, query);
     int counting = -1;
     uint32_t boundMesh = UINT32_MAX;
-    for (const Draw& d : mPlanner.draws()) {
+    const std::vector<Draw>& draws = mPlanner.draws();
+    for (size_t i = 0; i < draws.size(); ++i) {
+        const Draw& d = draws[i];
         if (int(d.zfail) != counting) setStencilCounting(d.zfail), counting = int(d.zfail);
         const VolumeMeshBuffers::Gpu& gpu = mBuffers.mesh(d.caster->mesh);
         if (d.caster->mesh != boundMesh) {
-            glBindVertexArray(vertexExtrusion ? gpu.extrusionVao : gpu.doubledVao);
+            glBindVertexArray(extrusion == Extrusion::Vertex     ? gpu.extrusionVao
+                              : extrusion == Extrusion::Geometry ? gpu.adjacencyVao
+                              : extrusion == Extrusion::Compute  ? mSilhouettes.vertexArray()
+                                                                 : gpu.doubledVao);
+            if (extrusion == Extrusion::Compute) mSilhouettes.bindCaster(gpu.doubledVbo);
             boundMesh = d.caster->mesh;
         }
         glUniformMatrix4fv(kModelLocation, 1, GL_FALSE, glm::value_ptr(d.caster->model));
         glUniform4fv(kLightLocation, 1, glm::value_ptr(d.lightObject));
         if (finite) glUniform1f(kRangeLocation, d.extrusion / d.caster->scale);
-        if (!vertexExtrusion) {
+        if (extrusion == Extrusion::Cpu) {
             glDrawElements(GL_TRIANGLES, GLsizei(d.count), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(size_t(d.first) * sizeof(uint32_t)));
+            continue;
+        }
+        if (extrusion == Extrusion::Compute) {
+            mSilhouettes.drawIndirect(i);
+            continue;
+        }
+        if (extrusion == Extrusion::Geometry) {
+            glUniform1ui(kFlagsLocation, d.gpuFlags);
+            glDrawArrays(GL_TRIANGLES_ADJACENCY, 0,
+                         GLsizei(SilhouetteInputs::kVerticesPerFace * gpu.mesh->faceCount()));
             continue;
         }
         if (d.capCount) glDrawElements(GL_TRIANGLES, GLsizei(d.capCount), GL_UNSIGNED_INT, nullptr);
@@ -147,6 +190,7 @@ void VolumeGL::markShadows(int lightIndex) {
                            reinterpret_cast<const void*>(size_t(gpu.extrusionCapIndices) * sizeof(uint32_t)));
     }
     glEndQuery(GL_SAMPLES_PASSED);
+    if (extrusion == Extrusion::Compute) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     mQueriesIssued[mQueryFrame % 2] = std::max(mQueriesIssued[mQueryFrame % 2], lightIndex + 1);
     glBindVertexArray(0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -214,6 +258,7 @@ void VolumeGL::execute(FrameContext& ctx) {
     ctx.passes.begin("ambient");
     renderAmbient(ctx, lights);
     readStencilQuery();
+    if (settings.gpuSilhouettes()) mSilhouettes.beginFrame();
     FrameStats stats;
     for (int i = 0; i < lights; ++i) {
         const Light& light = mScene->lights[size_t(i)];
@@ -247,6 +292,11 @@ void VolumeGL::execute(FrameContext& ctx) {
     glDepthMask(GL_TRUE);
 
     mCounters = mPlanner.counters(stats, ctx.submitter.stats(), mStencilSamples);
+}
+
+Counters VolumeGL::counters() const {
+    if (!mPlanner.settings().gpuSilhouettes()) return mCounters;
+    return VolumePlanner::withDeviceTriangles(mCounters, mSilhouettes.readTriangles());
 }
 
 } // namespace sb

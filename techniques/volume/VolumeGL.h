@@ -41,7 +41,9 @@
 
 #include "techniques/gl/FrameUniforms.h"
 #include "techniques/gl/GlTechnique.h"
+#include "techniques/volume/GpuSilhouettesGL.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
+#include "techniques/volume/SilhouetteInputs.h"
 #include "techniques/volume/Volume.h"
 #include "techniques/volume/VolumeGeometry.h"
 #include "techniques/volume/VolumeMeshBuffers.h"
@@ -58,7 +60,8 @@ public:
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
-    Counters counters() const override { return mCounters; }
+    /// The GPU silhouette paths' volume_triangles is read back from the device here (untimed).
+    Counters counters() const override;
 
     /// The camera projection with its far plane moved to infinity (Listing 9-2 plus the epsilon guard),
     /// from a glm::perspective-style matrix. Public for tests.
@@ -87,7 +90,9 @@ private:
     const Program* mAmbientProgram = nullptr;
     const Program* mLightProgram = nullptr;
     const Program* mVolumeProgram = nullptr;
-    const Program* mFiniteProgram = nullptr; ///< finite_volumes: extrusion by the light range
+    const Program* mFiniteProgram = nullptr;     ///< finite_volumes: extrusion by the light range
+    const Program* mSilhouetteProgram = nullptr; ///< extrusion=compute: shaders/volume/silhouette.comp
+    GpuSilhouettesGL mSilhouettes; ///< extrusion=geometry and compute: device count, compute's buffers
     bool mHasDepthBounds = false;
 
     // Per-frame scratch, kept to avoid allocation in the measured frames.

@@ -4,6 +4,8 @@
 
 #include <glm/glm.hpp>
 
+#include "techniques/volume/SilhouetteInputs.h"
+
 namespace sb {
 
 VolumeMeshBuffers::~VolumeMeshBuffers() {
@@ -17,6 +19,9 @@ void VolumeMeshBuffers::release() {
         glDeleteVertexArrays(1, &g.extrusionVao);
         glDeleteBuffers(1, &g.extrusionVbo);
         glDeleteBuffers(1, &g.extrusionIbo);
+        glDeleteVertexArrays(1, &g.adjacencyVao);
+        glDeleteBuffers(1, &g.adjacencyVbo);
+        glDeleteBuffers(1, &g.faceBuffer);
     }
     mMeshes.clear();
     if (mStream) glDeleteBuffers(1, &mStream);
@@ -69,9 +74,31 @@ void uploadExtrusion(VolumeMeshBuffers::Gpu& g, OpenEdgePolicy policy) {
     g.extrusionSideIndices = GLsizei(m.sideIndices.size());
 }
 
+void uploadAdjacency(VolumeMeshBuffers::Gpu& g) {
+    const std::vector<glm::vec4> data = SilhouetteInputs::adjacencyVertices(*g.mesh);
+    constexpr GLsizei kStride = SilhouetteInputs::kVec4PerVertex * sizeof(glm::vec4);
+    glCreateVertexArrays(1, &g.adjacencyVao);
+    glCreateBuffers(1, &g.adjacencyVbo);
+    glNamedBufferStorage(g.adjacencyVbo, GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(glm::vec4)),
+                         data.data(), 0);
+    glVertexArrayVertexBuffer(g.adjacencyVao, 0, g.adjacencyVbo, 0, kStride);
+    for (GLuint a = 0; a < GLuint(SilhouetteInputs::kVec4PerVertex); ++a) {
+        glEnableVertexArrayAttrib(g.adjacencyVao, a);
+        glVertexArrayAttribFormat(g.adjacencyVao, a, 4, GL_FLOAT, GL_FALSE, GLuint(a * sizeof(glm::vec4)));
+        glVertexArrayAttribBinding(g.adjacencyVao, a, 0);
+    }
+}
+
+void uploadFaces(VolumeMeshBuffers::Gpu& g) {
+    const std::vector<SilhouetteFace> data = SilhouetteInputs::faces(*g.mesh);
+    glCreateBuffers(1, &g.faceBuffer);
+    glNamedBufferStorage(g.faceBuffer, GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(SilhouetteFace)),
+                         data.data(), 0);
+}
+
 } // namespace
 
-void VolumeMeshBuffers::upload(const Scene& scene, bool extrusion, OpenEdgePolicy policy) {
+void VolumeMeshBuffers::upload(const Scene& scene, Forms forms, OpenEdgePolicy policy) {
     release();
     glCreateBuffers(1, &mStream);
     mMeshes.resize(scene.meshes.size());
@@ -83,7 +110,9 @@ void VolumeMeshBuffers::upload(const Scene& scene, bool extrusion, OpenEdgePolic
         Gpu& g = mMeshes[i];
         g.mesh = std::make_unique<ShadowVolumeMesh>(scene.meshes[i]);
         uploadDoubled(g, mStream);
-        if (extrusion) uploadExtrusion(g, policy);
+        if (forms.extrusion) uploadExtrusion(g, policy);
+        if (forms.adjacency) uploadAdjacency(g);
+        if (forms.faces) uploadFaces(g);
     }
 }
 

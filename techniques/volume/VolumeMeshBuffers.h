@@ -3,7 +3,10 @@
 // ShadowVolumeMesh (welded, with adjacency), the doubled vertex buffer (w = 1 and w = 0 copies) in a
 // VAO whose element buffer is one shared stream buffer that the CPU path refills every frame, and the
 // McGuire-Hughes extrusion mesh (positions + face planes, caps then sides in a static index buffer)
-// for the vertex-shader path.
+// for the vertex-shader path; for the GPU silhouette paths, the faces as triangles with adjacency
+// (extrusion=geometry: 6 vertices per face, each with the normal and first vertex of the face it stands
+// for, see shaders/volume/silhouette.geom) or as a storage buffer of faces with their neighbours
+// (extrusion=compute, shaders/volume/silhouette.comp).
 #include <memory>
 #include <vector>
 
@@ -21,6 +24,14 @@ public:
         GLuint doubledVao = 0, doubledVbo = 0;
         GLuint extrusionVao = 0, extrusionVbo = 0, extrusionIbo = 0;
         GLsizei extrusionCapIndices = 0, extrusionSideIndices = 0; ///< sides start after the caps
+        GLuint adjacencyVao = 0, adjacencyVbo = 0; ///< extrusion=geometry: 6 vertices per face
+        GLuint faceBuffer = 0;                     ///< extrusion=compute: 96 bytes per face (SilhouetteFace)
+    };
+    /// Which forms upload() builds besides the doubled buffer.
+    struct Forms {
+        bool extrusion = false; ///< the McGuire-Hughes mesh (extrusion=vertex)
+        bool adjacency = false; ///< triangles with adjacency (extrusion=geometry)
+        bool faces = false;     ///< the face storage buffer (extrusion=compute)
     };
 
     VolumeMeshBuffers() = default;
@@ -28,9 +39,9 @@ public:
     VolumeMeshBuffers(const VolumeMeshBuffers&) = delete;
     VolumeMeshBuffers& operator=(const VolumeMeshBuffers&) = delete;
 
-    /// Prepares every mesh a shadow-casting instance uses. `extrusion`: also the vertex-shader mesh,
+    /// Prepares every mesh a shadow-casting instance uses, with `forms`; the vertex-shader mesh is
     /// built for `policy` (two sheets for open meshes under multiplicity).
-    void upload(const Scene& scene, bool extrusion, OpenEdgePolicy policy);
+    void upload(const Scene& scene, Forms forms, OpenEdgePolicy policy);
     const Gpu& mesh(size_t index) const { return mMeshes[index]; }
     size_t size() const { return mMeshes.size(); }
 

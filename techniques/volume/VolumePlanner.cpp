@@ -35,8 +35,9 @@ std::vector<PropertyDesc> VolumePlanner::declareProperties() {
     return {
         choice(kMode, "auto", {"zfail", "zpass", "auto"},
                "stencil counting: z-fail with caps, z-pass without, or per caster (occlusion pyramid)"),
-        choice(kExtrusion, "cpu", {"cpu", "vertex"},
-               "silhouettes on the CPU per caster (chapter) or in the vertex shader (McGuire-Hughes)"),
+        choice(kExtrusion, "cpu", {"cpu", "vertex", "geometry", "compute", "mesh"},
+               "silhouettes on the CPU per caster (chapter), in the vertex shader (McGuire-Hughes), or per "
+               "face in a geometry, compute or mesh (Vulkan) shader, counted on the device"),
         choice(kFar, "infinite", {"infinite", "depth_clamp", "finite"},
                "far plane at infinity, depth clamping, or the camera's (negative control)"),
         choice(kOpenEdges, "multiplicity", {"multiplicity", "refuse"},
@@ -59,7 +60,13 @@ VolumePlanner::Settings VolumePlanner::readSettings(const PropertySet& p) {
     s.mode = mode == "zfail" ? Mode::ZFail : mode == "zpass" ? Mode::ZPass : Mode::Auto;
     const std::string& far = p.getEnum(kFar);
     s.far = far == "depth_clamp" ? Far::DepthClamp : far == "finite" ? Far::Finite : Far::Infinite;
-    s.vertexExtrusion = p.getEnum(kExtrusion) == "vertex";
+    const std::string& extrusion = p.getEnum(kExtrusion);
+    s.extrusion = extrusion == "vertex"     ? Extrusion::Vertex
+                  : extrusion == "geometry" ? Extrusion::Geometry
+                  : extrusion == "compute"  ? Extrusion::Compute
+                  : extrusion == "mesh"     ? Extrusion::Mesh
+                                            : Extrusion::Cpu;
+    s.vertexExtrusion = s.extrusion == Extrusion::Vertex;
     s.policy =
         p.getEnum(kOpenEdges) == "multiplicity" ? OpenEdgePolicy::Multiplicity : OpenEdgePolicy::Closed;
     s.directional = p.getBool(kDirectional);
@@ -119,6 +126,19 @@ void VolumePlanner::checkClosed(const Scene& scene) const {
                         "volumes of open meshes leak streaks, GPU Gems 9.1.1); use the default "
                         "open_edges=multiplicity, or make the instance not cast",
                     ExitCode::BadInput);
+    }
+}
+
+void VolumePlanner::checkGpuSilhouettes(const Scene& scene) const {
+    if (!mSettings.gpuSilhouettes()) return;
+    for (size_t m = 0; m < mMeshes.size(); ++m) {
+        const ShadowVolumeMesh* mesh = mMeshes[m].mesh;
+        if (!mesh || mesh->closed()) continue;
+        throw Error("volume: caster mesh '" + scene.meshes[m].name + "' has " +
+                        std::to_string(mesh->openEdgeCount()) +
+                        " open edges after welding; the GPU silhouette paths (extrusion=geometry, compute, "
+                        "mesh) build the chapter's closed-mesh volume only: use extrusion=cpu or vertex",
+                    ExitCode::Unsupported);
     }
 }
 
@@ -207,7 +227,15 @@ void VolumePlanner::collectDraws(const Light& light, const View& view, FrameStat
         if (mSettings.frustumCull) cull = VolumeGeometry::cullVolume(view.frustum, c.bounds, lw);
         if (finite) cull.darkCap = false; // the finite dark cap is near the scene, not at infinity
         const MeshInfo& mesh = mMeshes[c.mesh];
-        if (mSettings.vertexExtrusion) {
+        if (mSettings.gpuSilhouettes()) {
+            // buildVolume's request as bits; the device builds and counts the volume.
+            namespace F = GpuVolumeFlags;
+            const bool directional = mSettings.directional && lw.w == 0.0f && !finite;
+            d.gpuFlags = (d.zfail && !cull.lightCap ? F::kLightCap : 0u) |
+                         (d.zfail && !cull.darkCap && !directional ? F::kDarkCap : 0u) |
+                         (cull.sides ? 0u : F::kSides) | (directional ? F::kDirectional : 0u);
+            if (!(d.gpuFlags & (F::kLightCap | F::kDarkCap | F::kSides))) continue;
+        } else if (mSettings.vertexExtrusion) {
             // Light and dark caps are the same triangles here (the shader decides which each is).
             const bool caps = d.zfail && !(cull.lightCap && cull.darkCap);
             d.capCount = caps ? mesh.capIndices : 0;
@@ -253,8 +281,14 @@ Counters VolumePlanner::counters(const FrameStats& stats, const SubmitStats& s,
     if (stencilSamples) out.emplace_back("stencil_samples_passed", *stencilSamples);
     out.emplace_back("lights_unshadowed", stats.unshadowedLights);
     // The vertex-shader path finds silhouettes on the GPU: there is no count to report.
-    if (!mSettings.vertexExtrusion) out.emplace_back("silhouette_edges", stats.silhouetteEdges);
+    if (mSettings.extrusion == Extrusion::Cpu) out.emplace_back("silhouette_edges", stats.silhouetteEdges);
     return out;
+}
+
+Counters VolumePlanner::withDeviceTriangles(Counters counters, double triangles) {
+    for (auto& [name, value] : counters)
+        if (name == "volume_triangles") value = triangles;
+    return counters;
 }
 
 } // namespace sb

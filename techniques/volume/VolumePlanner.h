@@ -16,6 +16,7 @@
 #include "techniques/PropertySet.h"
 #include "techniques/Submission.h"
 #include "techniques/TechniqueInfo.h"
+#include "techniques/volume/GpuVolumeFlags.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
 #include "techniques/volume/VolumeGeometry.h"
 
@@ -25,9 +26,20 @@ class VolumePlanner {
 public:
     enum class Mode { ZFail, ZPass, Auto };
     enum class Far { Infinite, DepthClamp, Finite };
+    /// Where silhouettes are found: on the CPU per caster (the chapter), in the vertex shader
+    /// (McGuire-Hughes), or per face on the GPU in a geometry shader (triangles with adjacency), a
+    /// compute shader (copies of the doubled buffer's vertices, drawn indirectly) or a mesh shader (Vulkan).
+    enum class Extrusion { Cpu, Vertex, Geometry, Compute, Mesh };
     struct Settings {
         Mode mode = Mode::Auto;
         Far far = Far::Infinite;
+        Extrusion extrusion = Extrusion::Cpu;
+        /// The GPU per-face paths (geometry, compute, mesh): the same volume as the CPU's, built on the
+        /// device, its triangles counted there.
+        bool gpuSilhouettes() const {
+            return extrusion == Extrusion::Geometry || extrusion == Extrusion::Compute ||
+                   extrusion == Extrusion::Mesh;
+        }
         bool vertexExtrusion = false, directional = true, rangeCull = true, frustumCull = true,
              scissor = true, finiteVolumes = false, boundedVolumes = true, depthBounds = false;
         OpenEdgePolicy policy = OpenEdgePolicy::Multiplicity;
@@ -48,6 +60,9 @@ public:
         uint32_t sideCount = 0; ///< vertex path: sides, after the mesh's caps
         float extrusion = 0;    ///< world-space extrusion length of a finite volume (range or bounded)
         bool zfail = true;
+        /// GPU silhouette paths: what the device builds (VolumeRequest's caps, cap culling, sides and
+        /// directional form, as GpuVolumeFlags bits); the device counts the triangles.
+        uint32_t gpuFlags = 0;
     };
     struct FrameStats {
         double silhouetteEdges = 0, volumeTriangles = 0, rangeCulled = 0, capsCulled = 0, zpass = 0,
@@ -90,6 +105,11 @@ public:
     void setMeshes(std::vector<MeshInfo> meshes) { mMeshes = std::move(meshes); }
     /// open_edges=refuse and an open caster mesh: sb::Error(BadInput) naming it.
     void checkClosed(const Scene& scene) const;
+    /// A GPU silhouette path and an open caster mesh: sb::Error(Unsupported) naming it (those paths build
+    /// the chapter's closed-mesh volume only; the CPU and vertex paths handle open meshes). Unsupported,
+    /// not bad input: the form cannot draw this scene, as vsm cannot light a point light
+    /// (techniques/PointLightRefusal.h), and the golden matrix lists such a cell with this reason.
+    void checkGpuSilhouettes(const Scene& scene) const;
     /// Mesh bounds, whether the scene has non-receivers, and the casters (placeCasters).
     void setScene(const Scene& scene);
     /// The casters and the scene's bounds from where the scene's instances stand.
@@ -109,15 +129,19 @@ public:
     /// Light `light`'s region; depth bounds only when asked for and `depthBoundsAvailable`.
     LightRegion regionOf(const Light& light, const glm::mat4& cameraView, const View& view,
                          const glm::mat4& proj, bool depthBoundsAvailable) const;
-    /// Builds the draws of `light` (CPU silhouettes into stream()), z-fail first, and counts them.
+    /// Builds the draws of `light` (CPU silhouettes into stream()), z-fail first, and counts them (the
+    /// GPU silhouette paths' volume triangles are counted on the device, not here).
     void collectDraws(const Light& light, const View& view, FrameStats& stats);
     const std::vector<Draw>& draws() const { return mDraws; }
     const std::vector<uint32_t>& stream() const { return mStream; }
 
     /// The technique's counters in GL's order; stencil_samples_passed only where `stencilSamples` is
-    /// given, silhouette_edges only for the CPU path (the vertex path has no count to report).
+    /// given, silhouette_edges only for the CPU path (the vertex path has no count to report). The GPU
+    /// silhouette paths' volume_triangles is 0 here: the technique replaces it with the device's count.
     Counters counters(const FrameStats& stats, const SubmitStats& submitted,
                       std::optional<double> stencilSamples) const;
+    /// `counters` with volume_triangles replaced by `triangles`, the device's count (GPU silhouettes).
+    static Counters withDeviceTriangles(Counters counters, double triangles);
 
 private:
     Settings mSettings;

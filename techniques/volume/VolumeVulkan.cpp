@@ -5,8 +5,10 @@
 
 #include "core/Error.h"
 #include "scenes/Motion.h"
+#include "techniques/volume/SilhouetteInputs.h"
 #include "techniques/volume/Volume.h"
 #include "techniques/vulkan/ScenePass.h"
+#include "vk/PipelineLayout.h"
 
 namespace sb {
 
@@ -46,6 +48,9 @@ VolumeVulkan::~VolumeVulkan() {
 void VolumeVulkan::release() {
     if (!mDevice) return;
     vkDestroyPipelineLayout(mDevice, mLayout, nullptr);
+    vkDestroyPipelineLayout(mDevice, mMarkLayout, nullptr);
+    mMarkLayout = VK_NULL_HANDLE;
+    mSilhouettes.release();
     vkDestroyQueryPool(mDevice, mSamples, nullptr);
     mSamples = VK_NULL_HANDLE;
     mQueriesIssued = {};
@@ -80,6 +85,7 @@ void VolumeVulkan::setScene(const Scene& scene) {
     mUploaded = false;
     mPlanner.setMeshes(std::move(infos));
     mPlanner.checkClosed(scene);
+    mPlanner.checkGpuSilhouettes(scene);
     mPlanner.setScene(scene);
 }
 
@@ -165,25 +171,23 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     // Marking: the volumes, no colour, depth LESS without writes, two-sided wrapping stencil counts.
     Defines volume;
     if (settings.vertexExtrusion) volume["VS_EXTRUSION"] = "";
+    const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
+    if (geometry) volume["GPU_SILHOUETTES"] = "";
+    if (settings.extrusion == VolumePlanner::Extrusion::Compute) volume["PULLED"] = "";
+    const ShaderSources volumeSources{"volume/extrude.vert", "volume/stencil.frag",
+                                      geometry ? "volume/silhouette.geom" : ""};
     std::string volumeKeys;
     for (int finite = 0; finite < 2; ++finite) {
         if (finite && !(settings.finiteVolumes || settings.boundedVolumes)) continue;
         if (finite) volume["FINITE"] = "";
         for (int zfail = 0; zfail < 2; ++zfail) {
             GraphicsPipelineDesc d;
-            const ShaderModules modules =
-                ctx.shaders.get(ShaderSources{"volume/extrude.vert", "volume/stencil.frag", ""}, volume);
+            const ShaderModules modules = ctx.shaders.get(volumeSources, volume);
             d.vertex = modules.vertex;
+            d.geometry = modules.geometry;
             d.fragment = modules.fragment;
-            if (settings.vertexExtrusion) {
-                d.bindings = {{0, 2 * sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
-                d.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
-                                {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(sizeof(glm::vec4))}};
-            } else {
-                d.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
-                d.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-            }
-            d.layout = mLayout;
+            describeVolumeInput(d);
+            d.layout = mMarkLayout ? mMarkLayout : mLayout;
             d.depthClamp = clamp;
             d.depthWrite = false;
             d.depthCompare = VK_COMPARE_OP_LESS;
@@ -203,12 +207,77 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
                     stencilOps(VK_COMPARE_OP_ALWAYS, VK_STENCIL_OP_DECREMENT_AND_WRAP, VK_STENCIL_OP_KEEP);
             }
             key = "volume-mark" + state + "zfail=" + std::to_string(zfail) +
-                  "|volume/extrude.vert+volume/stencil.frag[" + definesKey(volume) + "]";
+                  "|volume/extrude.vert+volume/stencil.frag" + (geometry ? "+volume/silhouette.geom" : "") +
+                  "[" + definesKey(volume) + "]";
             mMark[finite][zfail].build(ctx.pipelines, key, d, ctx.targets);
         }
         volumeKeys += "|" + definesKey(volume);
     }
     setPermutationKey(definesKey(scene) + volumeKeys + state);
+}
+
+void VolumeVulkan::describeVolumeInput(GraphicsPipelineDesc& d) const {
+    constexpr uint32_t vec4 = sizeof(glm::vec4);
+    const VolumePlanner::Settings& settings = mPlanner.settings();
+    if (settings.vertexExtrusion) {
+        d.bindings = {{0, 2 * vec4, VK_VERTEX_INPUT_RATE_VERTEX}};
+        d.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, vec4}};
+    } else if (settings.extrusion == VolumePlanner::Extrusion::Geometry) {
+        // SilhouetteInputs::adjacencyVertices: position, the face's normal and first vertex per vertex.
+        d.bindings = {{0, SilhouetteInputs::kVec4PerVertex * vec4, VK_VERTEX_INPUT_RATE_VERTEX}};
+        d.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
+                        {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, vec4},
+                        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 2 * vec4}};
+        d.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY;
+    } else if (settings.extrusion != VolumePlanner::Extrusion::Compute) { // compute: pulled, no input
+        d.bindings = {{0, vec4, VK_VERTEX_INPUT_RATE_VERTEX}};
+        d.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
+    }
+}
+
+void VolumeVulkan::createSilhouettes(const VulkanCompileContext& ctx) {
+    const VolumePlanner::Settings& settings = mPlanner.settings();
+    if (!settings.gpuSilhouettes()) return;
+    const std::string& device = ctx.context.info().name;
+    if (settings.extrusion == VolumePlanner::Extrusion::Mesh)
+        throw Error("volume: extrusion=mesh is not built on Vulkan yet (geometry and compute are): "
+                    "unsupported here, skipped",
+                    ExitCode::Unsupported);
+    const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
+    if (geometry) {
+        // The geometry shader counts what it emits in a storage buffer: stores in a pre-rasterisation
+        // stage. VulkanContext enables both features wherever the device offers them.
+        VkPhysicalDeviceFeatures features{};
+        vkGetPhysicalDeviceFeatures(ctx.context.physicalDevice(), &features);
+        for (const auto& [offered, name] :
+             {std::pair{features.geometryShader, "geometryShader"},
+              std::pair{features.vertexPipelineStoresAndAtomics, "vertexPipelineStoresAndAtomics"}})
+            if (!offered)
+                throw Error(std::string("volume: extrusion=geometry needs the ") + name +
+                                " feature, which '" + device +
+                                "' does not offer: unsupported here, skipped (run with "
+                                "extrusion=compute)",
+                            ExitCode::Unsupported);
+    }
+    std::vector<const ShadowVolumeMesh*> meshes(mMeshes.size(), nullptr);
+    for (size_t m = 0; m < mMeshes.size(); ++m) meshes[m] = mMeshes[m].mesh.get();
+    mSilhouettes.create(ctx, meshes, !geometry);
+    // The marking pipelines' own layout: set 1 the silhouettes' (the count, or the extracted entries),
+    // and for the geometry shader push constants in its stage too.
+    mMarkPushStages = geometry ? kPushStages | VK_SHADER_STAGE_GEOMETRY_BIT : kPushStages;
+    mMarkLayout = createPipelineLayout(ctx.context, {ctx.frame.setLayout(), mSilhouettes.markLayout()},
+                                       sizeof(VulkanPush), mMarkPushStages);
+}
+
+std::string VolumeVulkan::checkCapabilities(const VulkanContext& context) const {
+    std::string missing = VulkanTechnique::checkCapabilities(context);
+    if (!missing.empty()) return missing;
+    if (VolumePlanner::readSettings(properties()).extrusion != VolumePlanner::Extrusion::Mesh ||
+        context.hasDeviceExtension("VK_EXT_mesh_shader"))
+        return "";
+    return "volume: extrusion=mesh needs the device extension VK_EXT_mesh_shader (not available on " +
+           context.info().name + ", Vulkan " + context.info().apiVersion +
+           "); the driver entry mesa-25.0.7 has it: --driver mesa-25.0.7";
 }
 
 void VolumeVulkan::compile(const VulkanCompileContext& ctx) {
@@ -235,6 +304,7 @@ void VolumeVulkan::compile(const VulkanCompileContext& ctx) {
     if (!mUploaded) uploadMeshes(ctx.context);
     createDescriptors(ctx.context);
     mLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
+    createSilhouettes(ctx);
     buildPipelines(ctx);
     if (ctx.context.occlusionQueryPrecise()) {
         VkQueryPoolCreateInfo pool{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
@@ -355,14 +425,24 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
     if (scissor.extent.width && scissor.extent.height) vkCmdClearAttachments(cmd, 1, &clear, 1, &rect);
 
     const int finite = mPlanner.finiteFor(light) ? 1 : 0;
-    ctx.frame.bind(cmd, mLayout, frame);
+    using Extrusion = VolumePlanner::Extrusion;
+    const Extrusion extrusion = settings.extrusion;
+    // The marking pipelines' layout: mLayout, or the geometry path's with the count as set 1.
+    const VkPipelineLayout layout = mMarkLayout ? mMarkLayout : mLayout;
+    const VkShaderStageFlags pushStages = mMarkLayout ? mMarkPushStages : kPushStages;
+    ctx.frame.bind(cmd, layout, frame);
+    if (mMarkLayout) {
+        const VkDescriptorSet set = mSilhouettes.markSet();
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
+    }
     setDepthBounds(cmd, lightIndex);
     const uint32_t slot = uint32_t(mQueryFrame % 2);
     if (mSamples)
         vkCmdBeginQuery(cmd, mSamples, slot * uint32_t(kMaxLights) + uint32_t(lightIndex),
                         VK_QUERY_CONTROL_PRECISE_BIT);
-    if (!settings.vertexExtrusion && mStream)
+    if (extrusion == Extrusion::Cpu && mStream)
         vkCmdBindIndexBuffer(cmd, mStream.buffer(), 0, VK_INDEX_TYPE_UINT32);
+
     int counting = -1;
     uint32_t boundMesh = UINT32_MAX;
     const LightDraws& range = mLightDraws[size_t(lightIndex)];
@@ -373,10 +453,11 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mMark[finite][counting].get(ctx.targets));
         }
         const MeshGpu& gpu = mMeshes[d.caster->mesh];
-        if (d.caster->mesh != boundMesh) {
+        if (extrusion != Extrusion::Compute && d.caster->mesh != boundMesh) { // compute: set 1 has them
             const VkDeviceSize zero = 0;
-            const VkBuffer vb =
-                settings.vertexExtrusion ? gpu.extrusionVertices.buffer() : gpu.doubled.buffer();
+            const VkBuffer vb = extrusion == Extrusion::Vertex     ? gpu.extrusionVertices.buffer()
+                                : extrusion == Extrusion::Geometry ? mSilhouettes.adjacency(d.caster->mesh)
+                                                                   : gpu.doubled.buffer();
             vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &zero);
             if (settings.vertexExtrusion)
                 vkCmdBindIndexBuffer(cmd, gpu.extrusionIndices.buffer(), 0, VK_INDEX_TYPE_UINT32);
@@ -386,9 +467,18 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
         push.model = d.caster->model;
         push.vec = d.lightObject;
         if (finite) push.ints.y = floatBits(d.extrusion / d.caster->scale);
-        vkCmdPushConstants(cmd, mLayout, kPushStages, 0, sizeof push, &push);
-        if (!settings.vertexExtrusion) {
+        push.ints.z = int32_t(d.gpuFlags);
+        vkCmdPushConstants(cmd, layout, pushStages, 0, sizeof push, &push);
+        if (extrusion == Extrusion::Cpu) {
             vkCmdDrawIndexed(cmd, d.count, 1, d.first, 0, 0);
+            continue;
+        }
+        if (extrusion == Extrusion::Compute) {
+            mSilhouettes.drawIndirect(cmd, k);
+            continue;
+        }
+        if (extrusion == Extrusion::Geometry) {
+            vkCmdDraw(cmd, uint32_t(SilhouetteInputs::kVerticesPerFace * gpu.mesh->faceCount()), 1, 0, 0);
             continue;
         }
         if (d.capCount) vkCmdDrawIndexed(cmd, d.capCount, 1, 0, 0, 0);
@@ -444,8 +534,12 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
     collectFrame(ctx, view, lights, stats);
     writeAmbientBlock(lights, height);
 
-    // Outside the passes' render passes: the queries are reset before the marking passes reuse them.
+    // Outside the passes' render passes: the queries are reset before the marking passes reuse them,
+    // and the compute path builds every light's volumes.
     readStencilQueries(ctx.cmd);
+    const VolumePlanner::Settings& settings = mPlanner.settings();
+    if (settings.gpuSilhouettes()) mSilhouettes.beginFrame();
+    if (settings.extrusion == VolumePlanner::Extrusion::Compute) mSilhouettes.extract(ctx.cmd, mDraws);
     // The ambient and light passes cull alike (one view for both): the light passes' EQUAL test finds
     // the surfaces the ambient pass left. The volumes are not the submitter's: both faces.
     const CullView sceneView{proj * ctx.view, false};
@@ -466,9 +560,15 @@ void VolumeVulkan::execute(VulkanFrameContext& ctx) {
         renderLight(ctx, frame, i, scissor);
     }
     ctx.submitter.setCullView(nullptr, true);
+    if (settings.gpuSilhouettes()) mSilhouettes.endFrame(ctx.cmd);
     ++mQueryFrame;
     mCounters = mPlanner.counters(stats, ctx.submitter.stats(),
                                   mSamples ? std::optional<double>(mStencilSamples) : std::nullopt);
+}
+
+Counters VolumeVulkan::counters() const {
+    if (!mPlanner.settings().gpuSilhouettes()) return mCounters;
+    return VolumePlanner::withDeviceTriangles(mCounters, mSilhouettes.readTriangles());
 }
 
 } // namespace sb

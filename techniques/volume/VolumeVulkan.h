@@ -32,6 +32,7 @@
 #include <memory>
 #include <vector>
 
+#include "techniques/volume/GpuSilhouettesVulkan.h"
 #include "techniques/volume/ShadowVolumeMesh.h"
 #include "techniques/volume/VolumePlanner.h"
 #include "techniques/vulkan/VulkanTechnique.h"
@@ -48,7 +49,11 @@ public:
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
-    Counters counters() const override { return mCounters; }
+    /// The GPU silhouette paths' volume_triangles is the device's count of the last frame.
+    Counters counters() const override;
+    /// extrusion=mesh needs VK_EXT_mesh_shader: one line naming it, the device and the driver entry
+    /// that offers it (Mesa 25.0.7's lavapipe, --driver mesa-25.0.7).
+    std::string checkCapabilities(const VulkanContext& context) const override;
 
 private:
     struct MeshGpu {
@@ -67,6 +72,12 @@ private:
     void uploadMeshes(VulkanContext& context);
     void createDescriptors(VulkanContext& context);
     void buildPipelines(const VulkanCompileContext& ctx);
+    /// extrusion=geometry and compute: refuses a device without what they need (ExitCode::Unsupported),
+    /// then builds their inputs and, for geometry, the marking pipelines' layout.
+    void createSilhouettes(const VulkanCompileContext& ctx);
+    /// The marking pass's vertex input: the doubled buffer (CPU, compute), the McGuire-Hughes mesh
+    /// (vertex) or the triangles with adjacency (geometry).
+    void describeVolumeInput(GraphicsPipelineDesc& d) const;
     /// Per light the planner's draws, the CPU path's indices gathered into one frame stream.
     void collectFrame(const VulkanFrameContext& ctx, const VolumePlanner::View& view, int lights,
                       VolumePlanner::FrameStats& stats);
@@ -100,6 +111,11 @@ private:
     ScenePipeline mAmbient;
     ScenePipeline mLight[2];   ///< [stencil test]
     ScenePipeline mMark[2][2]; ///< [finite][zfail]
+    GpuSilhouettesVulkan mSilhouettes;
+    /// The GPU silhouette paths' marking pipelines: set 1 GpuSilhouettesVulkan::markLayout(), push
+    /// constants also in the geometry stage for extrusion=geometry (mLayout for the others).
+    VkPipelineLayout mMarkLayout = VK_NULL_HANDLE;
+    VkShaderStageFlags mMarkPushStages = 0;
     bool mDepthBounds = false; ///< depth_bounds on a device with the depthBounds feature
 
     /// Occlusion queries of the marking passes: [slot * kMaxLights + light], two slots (null without

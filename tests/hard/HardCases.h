@@ -137,6 +137,13 @@ inline const HardCase kHardCases[] = {
      "light exactly along -Y: box sides have N.L = 0 and classify as light-facing, the volume stays closed"},
     {"volume_axis_light", "volume_axis_light", "oblique", "volume", 384, 0.05, 0.01, 5, 5, 5,
      "the same with every optimisation on (directional form: sides converge on one point)"},
+    {"volume_axis_light_geometry", "volume_axis_light", "oblique", "volume:extrusion=geometry", 384, 0.05,
+     0.01, 5, 5, 5,
+     "(0% on GL and Vulkan) the same in a geometry shader: the sides' N.L is exactly 0 there too (the "
+     "classification is `precise`, the CPU's operations in the CPU's order), so they are light-facing and "
+     "no side is lost"},
+    {"volume_axis_light_compute", "volume_axis_light", "oblique", "volume:extrusion=compute", 384, 0.05, 0.01,
+     5, 5, 5, "(0% on GL and Vulkan) the same in a compute shader"},
     {"volume_open_mesh_multiplicity", "volume_open_mesh", "top", "volume:open_edges=multiplicity", 384, 0.05,
      0.01, 5, 5, 5, "the open teapot (128 open edges): per-edge multiplicities give closed volumes, exact"},
     {"volume_open_mesh_vertex", "volume_open_mesh", "top", "volume:open_edges=multiplicity:extrusion=vertex",
@@ -161,6 +168,16 @@ inline const HardCase kHardCases[] = {
      "are lit; every eye is in shadow, so auto must choose z-fail"},
     {"volume_jack_o_lantern_vertex", "scenes/data/jack_o_lantern.json", "mid", "volume:extrusion=vertex", 384,
      0.05, 0.01, 5, 20, 5, "(0.005%, 0%) the same with vertex-shader extrusion"},
+    {"volume_jack_o_lantern_geometry", "scenes/data/jack_o_lantern.json", "mid", "volume:extrusion=geometry",
+     384, 0.05, 0.01, 5, 20, 5,
+     "(0.020%, 0.0057% off the edge; camera gain 1.45; Vulkan 0.0077%, 0.0014%) the same with the "
+     "silhouette found per face in a geometry shader; the CPU's 15804 triangles (counted on the device), "
+     "yet 15 edge pixels differ from the CPU path's image on llvmpipe (cause not found: projecting every "
+     "vertex in the vertex shader, the geometry shader only choosing, changed nothing)"},
+    {"volume_jack_o_lantern_compute", "scenes/data/jack_o_lantern.json", "mid", "volume:extrusion=compute",
+     384, 0.05, 0.01, 5, 20, 5,
+     "(0.0056%, 0.0014%; Vulkan 0.0021%, 0%: the CPU path's numbers, its image bit for bit) the same with "
+     "the volume's indices written per face by a compute shader and drawn indirectly"},
     {"volume_jack_o_lantern_zpass", "scenes/data/jack_o_lantern.json", "mid", "volume:mode=zpass", 384, 100,
      100, 1e9, 1e9, 1e9,
      "negative control (99.99% wrong): the eye is inside the lantern's volume, so z-pass is off by one "
@@ -515,6 +532,48 @@ inline const HardCase kHardCases[] = {
     {"cascaded_transition_top", "cascade_transition", "top", "cascaded", 384, 0.015, 0.01, 3, 3, 3,
      "(0.0047%, 0%; 1.06/0/1.00): the same scene from 150 above, every receiver at nearly one depth: the "
      "splits are close together and the cascades alike; no seam where they meet"},
+    // fit=sdsm (Lauritzen, Salvi and Lefohn 2011, Sample Distribution Shadow Maps, I3D) on the same scene's
+    // camera "closeup": 2.7 above the ground, a 12 degree lens on a patch ~0.6 wide across the wall
+    // shadow's edge, the ground's far corners ~30 deep. The practical split spans the receivers' [0.05, 30]
+    // and puts the patch in a cascade [2.1, 4.7] deep; sdsm splits the patch's own [2.71, 2.87]. At 256^2
+    // per cascade (so that practical's texels show). Measured 2026-12-07 on llvmpipe and lavapipe
+    // (Mesa 22.3.6).
+    {"cascaded_closeup", "cascade_transition", "closeup", "cascaded:resolution=256", 384, 1.9, 1.2, 5, 3, 3,
+     "(0.629%, 0.395% off the edge, false shadow 0.335%; 1.19/0.57/1.00, the same on Vulkan): the patch's "
+     "cascade is 2.6 deep, its texels cover several pixels and the staircase leaves the edge band"},
+    {"cascaded_closeup_sdsm", "cascade_transition", "closeup", "cascaded:resolution=256:fit=sdsm", 384, 0.5,
+     0.02, 5, 3, 3,
+     "(0.164%, 0.0055% off the edge, false shadow 0.084%; 1.10/1.05/1.00, the same on Vulkan): slices 0.04 "
+     "deep, the staircase inside the edge band; both bounds lie below practical's measured error (the row "
+     "above), so sdsm must keep its gain; the stability gains, with the splits fitted one frame late to "
+     "the drifting camera's depths, stay practical's"},
+    // Screen-space contact shadows (techniques/ContactShadows.h, `contact`): contact_point_sun's box standing
+    // on the ground and sphere resting on it, from the low camera, with a bias far too large on purpose
+    // (512^2, bias 2000 / 32): the map's surfaces move away from the light and it leaks under the feet.
+    // The first row is the leak the harness must see; the second marches 1 world unit in 16 steps towards
+    // the light through the view's depth and must close part of it. Measured 2026-12-07 on llvmpipe and
+    // lavapipe (Mesa 22.3.6).
+    {"shadowmap_contact_leak", "contact_point_sun", "low",
+     "shadowmap:resolution=512:bias_slope=32:bias_constant=2000", 384, 1.3, 0.32, 5, 3, 3,
+     "negative control (0.433%, 0.105% off the edge band; Vulkan 0.431%, 0.104%; 0.95/0.75/1.00): light "
+     "under the box's corners and around the sphere's contact, the bias's peter panning",
+     0.05f, 0.05},
+    {"shadowmap_contact_leak_contact", "contact_point_sun", "low",
+     "shadowmap:resolution=512:bias_slope=32:bias_constant=2000:contact=true:contact_length=1:contact_steps="
+     "16",
+     384, 0.4, 0.06, 5, 3, 3,
+     "(0.316%, 0.029% off the edge band, false shadow 0.016% against the row above's 0.0035%; Vulkan "
+     "0.313%, 0.028%; 0.95/0.75/1.07): the march finds the box and the sphere a step or two towards the "
+     "light and darkens what the map leaves lit, at the price of a few guesses behind the sphere's rim; "
+     "both bounds lie below the row above's measured error, so the march must keep its gain"},
+    {"cascaded_contact_leak_sdsm_contact", "contact_point_sun", "low",
+     "cascaded:resolution=512:bias_slope=32:bias_constant=2000:fit=sdsm:contact=true:contact_length=1:"
+     "contact_steps=16",
+     384, 0.45, 0.1, 5, 3, 3,
+     "(0.361%, 0.054% off the edge band; Vulkan 0.359%, 0.053%; 0.90/0/1.07; without contact 0.519%, "
+     "0.166%): cascaded's "
+     "one view depth pre-pass serves both fit=sdsm's reduction and the march (pass depth_range); both "
+     "bounds lie below the error without the march"},
     // pcss (Fernando 2005, Percentage-Closer Soft Shadows) and shadowmap's normal-offset and
     // receiver-plane biases, measured 2026-12-02 on llvmpipe in parentheses (wrong %, off the edge band;
     // camera gain / light gain / flicker); ~3x headroom. Against a soft reference (pcss_contact's 5 degree
