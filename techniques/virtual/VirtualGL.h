@@ -12,8 +12,11 @@
 //
 // Needs GL 4.5 (image load/store, framebuffers without attachments, glClearTexSubImage) and a viewport
 // and framebuffer of virtual_resolution texels: a context with smaller limits is refused naming them.
-// The view's depth is drawn here for the marks; where a shared depth pre-pass exists, the marking
-// would read it instead (NOTES-virtual.md, "The view's depth").
+// The view's depth is drawn here by the marking program itself rather than read from the shared pre-pass
+// (techniques/gl/ViewDepthGL.h): the marking's EQUAL re-draw must meet depths written by the same vertex
+// program, as GLSL's invariance holds only within one program; a depth from common/depth.vert a bit off
+// would leave a visible pixel's pages unmarked. Its level comes from the rasterized footprint's
+// derivatives, as the lighting pass's does, which a full-screen pass over a depth image could not repeat.
 #include <cstdint>
 #include <vector>
 
