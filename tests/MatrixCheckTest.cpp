@@ -18,6 +18,7 @@
 #include "bench/golden/GoldenMatrix.h"
 #include "bench/golden/MatrixCheck.h"
 #include "bench/golden/MatrixPage.h"
+#include "scenes/SceneLoader.h"
 
 using namespace sb;
 
@@ -181,6 +182,34 @@ TEST(MatrixPage, AnUpdateOfSomeRowsKeepsTheOthersInOrder) {
                     "- `a/s2/light1`: a's exception on s2\n");
     EXPECT_NE(text.find("at 128x128"), std::string::npos);
     EXPECT_EQ(text.find("old header"), std::string::npos);
+}
+
+} // namespace
+
+namespace {
+
+// The matrix draws the heavy scenes with fewer layout instances (MatrixOptions::maxTriangles). Hand
+// count: aircraft holds a 512-triangle ground and 200 aircraft of 2624 triangles, so (262144 - 512) /
+// 2624 = 99.7 keeps 99; teapot a 512-triangle ground and 200 teapots of 4096: 63.9 keeps 63;
+// synthetic_triangles 256 spheres of 3968 and nothing else: 66.06 keeps 66. A scene under the budget
+// (city) keeps its own, and every cut scene lands at most one instance under the budget.
+TEST(MatrixScenes, HeavyScenesDrawTheirLayoutCutToTheTriangleBudget) {
+    const MatrixOptions options;
+    ASSERT_EQ(options.maxTriangles, size_t(262144));
+    const std::map<std::string, uint32_t> expected = {
+        {"aircraft", 99}, {"teapot", 63}, {"synthetic_triangles", 66}};
+    for (const auto& [name, count] : expected) {
+        const std::optional<uint32_t> n = GoldenMatrix::layoutInstances(SceneLoader::load(name), options);
+        ASSERT_TRUE(n.has_value()) << name;
+        EXPECT_EQ(*n, count) << name;
+        SceneOptions cut;
+        cut.instances = *n;
+        const Scene drawn = SceneLoader::load(name, cut);
+        EXPECT_LE(drawn.totalTriangles(), options.maxTriangles) << name;
+        cut.instances = *n + 1;
+        EXPECT_GT(SceneLoader::load(name, cut).totalTriangles(), options.maxTriangles) << name;
+    }
+    EXPECT_FALSE(GoldenMatrix::layoutInstances(SceneLoader::load("city"), options).has_value());
 }
 
 } // namespace

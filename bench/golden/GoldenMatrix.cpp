@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -31,6 +32,16 @@ constexpr int kPathFrames = 8;
 constexpr uint64_t kPathStep = 5;
 /// The Vulkan axis: the two submission modes Vulkan has (immediate and display lists are GL's own).
 constexpr SubmitMode kVulkanModes[] = {SubmitMode::Retained, SubmitMode::Instanced};
+
+/// One cell's run configuration on either API: a frame of `scene` from its matrix camera at the matrix's
+/// size, its path's frames where it moves, its layout cut to the matrix's triangles.
+RunConfig cellConfig(const std::string& name, const Scene& scene, const std::string& camera, SubmitMode mode,
+                     const MatrixOptions& options) {
+    RunConfig config = RunConfig::oneFrame(name, camera, options.size, mode);
+    if (scene.motion) config.pathFrames = kPathFrames;
+    config.sceneOptions.instances = GoldenMatrix::layoutInstances(scene, options);
+    return config;
+}
 
 std::string cellName(const std::string& technique, const std::string& scene, SubmitMode mode, bool vulkan) {
     return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan ? "/vulkan" : "");
@@ -364,16 +375,15 @@ MatrixCell vulkanCell(VulkanHarness* vulkan, AccuracyEvaluator* evaluator, const
 }
 
 /// The Vulkan axis of one scene (GoldenMatrix::renderScene).
-void renderVulkanCells(const std::string& scene, const std::string& camera, bool moves,
+void renderVulkanCells(const std::string& scene, const Scene& loaded, const std::string& camera,
                        const std::vector<std::string>& techniques, const MatrixOptions& options,
                        const MatrixObserver& observer, std::vector<MatrixCell>& cells) {
     std::optional<AutoPick> autoPick; // -t auto's Vulkan choice, resolved on the first mode's harness
     std::string autoRefusal;          // or why nothing qualifies
     for (SubmitMode mode : kVulkanModes) {
-        RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
+        RunConfig config = cellConfig(scene, loaded, camera, mode, options);
         config.api = RunConfig::Api::Vulkan;
         config.vulkan.validation = true;
-        if (moves) config.pathFrames = kPathFrames;
         std::unique_ptr<VulkanHarness> vulkan;
         std::string refusal;
         try {
@@ -438,6 +448,18 @@ std::string GoldenMatrix::cameraFor(const Scene& s) {
     return s.cameras.front().name;
 }
 
+std::optional<uint32_t> GoldenMatrix::layoutInstances(const Scene& s, const MatrixOptions& options) {
+    const size_t total = s.totalTriangles(), layout = s.countLayoutInstances();
+    if (total <= options.maxTriangles || layout == 0) return std::nullopt;
+    size_t layoutTriangles = 0;
+    for (const Instance& i : s.instances)
+        if (i.fromLayout && i.mesh < s.meshes.size()) layoutTriangles += s.meshes[i.mesh].triangleCount();
+    const size_t placed = total - layoutTriangles;
+    const double room = options.maxTriangles > placed ? double(options.maxTriangles - placed) : 0.0;
+    const double perInstance = double(layoutTriangles) / double(layout);
+    return uint32_t(std::clamp(std::floor(room / perInstance), 1.0, double(layout)));
+}
+
 size_t GoldenMatrix::cellsPerScene(const MatrixOptions& options) {
     return techniquesOf(options).size() * (std::size(kAllSubmitModes) + std::size(kVulkanModes));
 }
@@ -452,8 +474,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
     std::string refusal;          // or why nothing qualifies
     const bool glForms = anyGlForm(techniques); // else no GL harness: every GL cell is a NoForm cell
     for (SubmitMode mode : modesRetainedFirst()) {
-        RunConfig config = RunConfig::oneFrame(scene, camera, options.size, mode);
-        if (loaded.motion) config.pathFrames = kPathFrames;
+        const RunConfig config = cellConfig(scene, loaded, camera, mode, options);
         std::unique_ptr<Harness> harnessOwner = glForms ? std::make_unique<Harness>(config) : nullptr;
         std::unique_ptr<AccuracyEvaluator> evaluatorOwner =
             glForms ? std::make_unique<AccuracyEvaluator>(*harnessOwner) : nullptr;
@@ -479,7 +500,7 @@ std::vector<MatrixCell> GoldenMatrix::renderScene(const std::string& scene, cons
                 }
             });
     }
-    renderVulkanCells(scene, camera, bool(loaded.motion), techniques, options, observer, cells);
+    renderVulkanCells(scene, loaded, camera, techniques, options, observer, cells);
     return cells;
 }
 

@@ -91,6 +91,11 @@ struct MatrixOptions {
     /// variants (MatrixVariants::all), then `auto`.
     std::vector<std::string> techniques;
     int referenceSamples = 64; ///< per pixel for area lights
+    /// A scene with more triangles than this draws fewer of its layout's instances, in proportion
+    /// (aircraft's 200 aircraft: 99; teapot's 200 teapots: 63; synthetic_triangles' 256 spheres: 66).
+    /// Those scenes are sized for the performance studies; the matrix's checks (modes agree, goldens,
+    /// bounds) touch the same code paths at a quarter of the triangles and take a third of the time.
+    size_t maxTriangles = size_t(1) << 18;
     /// -t auto's calibration in the `auto` cells: interleaved timed rounds per candidate, no warm-up
     /// frame. What the cells check does not depend on the timings (any choice is held to its own
     /// golden and bound, and to auto's rule, which reads the effects and the judged error), so two
@@ -128,6 +133,10 @@ public:
     /// Each cell's stderr is captured into MatrixCell::warnings.
     static std::vector<MatrixCell> renderScene(const std::string& scene, const MatrixOptions& options,
                                                const MatrixObserver& observer = {});
+    /// The layout instances a scene's cells draw (RunConfig::sceneOptions.instances): nullopt, the scene's
+    /// own, where it holds at most MatrixOptions::maxTriangles triangles, else its layout's count cut in
+    /// proportion until it does (at least one). The instances the scene places by hand are all kept.
+    static std::optional<uint32_t> layoutInstances(const Scene& scene, const MatrixOptions& options);
     /// How many cells renderScene returns for one scene: every technique (options.techniques, or the
     /// registry's and `auto`) in every GL submission mode and Vulkan's two.
     static size_t cellsPerScene(const MatrixOptions& options);

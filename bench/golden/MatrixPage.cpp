@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "bench/golden/GoldenMatrix.h"
 #include "core/Paths.h"
 
 namespace sb {
@@ -45,8 +46,11 @@ std::string header(int size) {
     return "# The technique x submission x scene matrix\n\nWritten by `bench golden --update` "
            "(bench/golden/); checked by `bench golden --check` and tests/MatrixGLTest.cpp. Each row is one "
            "technique on one built-in scene at " +
-           n + "x" + n +
-           ", its camera `mid` where the scene has one. *modes*: the submission modes whose cell passes "
+           n + "x" + n + ", its camera `mid` where the scene has one, its layout cut to at most " +
+           std::to_string(MatrixOptions{}.maxTriangles) +
+           " triangles in proportion (bench/golden/GoldenMatrix.h, MatrixOptions::maxTriangles: aircraft, "
+           "teapot and synthetic_triangles draw 99 of 200, 63 of 200 and 66 of 256 instances). *modes*: "
+           "the submission modes whose cell passes "
            "every check (image equal to retained's and to the golden, accuracy within the bound), then the "
            "Vulkan axis: the technique on Vulkan (lavapipe) in retained and instanced submission, each "
            "image held to the GL retained cell's and to the same golden, the retained one to the same "
