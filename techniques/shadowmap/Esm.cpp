@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/Esm.h"
 
+#include "techniques/ContactShadows.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -30,22 +31,23 @@ std::vector<PropertyDesc> declareProperties() {
 } // namespace
 
 TechniqueInfo Esm::declaration() {
-    return {.name = "esm",
-            .description = "exponential shadow maps: filtered exp(c d), filtered in log space",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "blur", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    {kBlur, {"0", "3", "5", "9"}},
-                    {kExponent, {"10", "40", "80", "160", "500"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(kResolution), 4, 1, in, 4 + kDepthTexelBytes);
-            }};
+    return ContactShadows::declare(
+        {.name = "esm",
+         .description = "exponential shadow maps: filtered exp(c d), filtered in log space",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "blur", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 {kBlur, {"0", "3", "5", "9"}},
+                 {kExponent, {"10", "40", "80", "160", "500"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             return squareMaps(p.getInt(kResolution), 4, 1, in, 4 + kDepthTexelBytes);
+         }});
 }
 
 MomentMapKind Esm::kind() {

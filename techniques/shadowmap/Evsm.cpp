@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "shading/GlslLiteral.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -61,27 +62,27 @@ glm::vec4 Evsm::noOccluder(const PropertySet& p) {
 }
 
 TechniqueInfo Evsm::declaration() {
-    return {.name = "evsm",
-            .description =
-                "exponential variance shadow maps: filtered moments of exponentially warped depth, "
-                "Chebyshev's bound per warp (Lauritzen and McCool 2008, Layered Variance Shadow "
-                "Maps, GI, the section on the exponential warp)",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "blur", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    {kBlur, {"0", "3", "5", "9"}},
-                    {kComponents, {"2", "4"}},
-                    {kExponentPositive, {"5", "20", "40"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                const uint64_t texel = uint64_t(channels(p)) * 4;
-                return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
-            }};
+    return ContactShadows::declare(
+        {.name = "evsm",
+         .description = "exponential variance shadow maps: filtered moments of exponentially warped depth, "
+                        "Chebyshev's bound per warp (Lauritzen and McCool 2008, Layered Variance Shadow "
+                        "Maps, GI, the section on the exponential warp)",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "blur", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 {kBlur, {"0", "3", "5", "9"}},
+                 {kComponents, {"2", "4"}},
+                 {kExponentPositive, {"5", "20", "40"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             const uint64_t texel = uint64_t(channels(p)) * 4;
+             return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
+         }});
 }
 
 MomentMapKind Evsm::kind() {

@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/Msm.h"
 
+#include "techniques/ContactShadows.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -53,24 +54,25 @@ glm::vec4 Msm::noOccluder(const PropertySet& p) {
 }
 
 TechniqueInfo Msm::declaration() {
-    return {.name = "msm",
-            .description = "moment shadow maps: four filtered moments of depth, the Hamburger reconstruction "
-                           "in the lighting pass (Peters and Klein 2015, Moment Shadow Mapping, I3D)",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "blur", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    {kBlur, {"0", "3", "5", "9"}},
-                    {kFormat, {"unorm16", "float"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                const uint64_t texel = uint64_t(texelBytes(p));
-                return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
-            }};
+    return ContactShadows::declare(
+        {.name = "msm",
+         .description = "moment shadow maps: four filtered moments of depth, the Hamburger reconstruction "
+                        "in the lighting pass (Peters and Klein 2015, Moment Shadow Mapping, I3D)",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "blur", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 {kBlur, {"0", "3", "5", "9"}},
+                 {kFormat, {"unorm16", "float"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             const uint64_t texel = uint64_t(texelBytes(p));
+             return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
+         }});
 }
 
 MomentMapKind Msm::kind() {

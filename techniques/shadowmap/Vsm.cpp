@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/Vsm.h"
 
+#include "techniques/ContactShadows.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -36,22 +37,23 @@ std::vector<PropertyDesc> declareProperties() {
 } // namespace
 
 TechniqueInfo Vsm::declaration() {
-    return {.name = "vsm",
-            .description = "variance shadow maps: filtered moments, Chebyshev's bound in the lighting pass",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "blur", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    {kBlur, {"0", "3", "5", "9"}},
-                    {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(kResolution), 8, 1, in, 8 + kDepthTexelBytes);
-            }};
+    return ContactShadows::declare(
+        {.name = "vsm",
+         .description = "variance shadow maps: filtered moments, Chebyshev's bound in the lighting pass",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "blur", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 {kBlur, {"0", "3", "5", "9"}},
+                 {kBleedReduction, {"0", "0.2", "0.4", "0.6"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             return squareMaps(p.getInt(kResolution), 8, 1, in, 8 + kDepthTexelBytes);
+         }});
 }
 
 MomentMapKind Vsm::kind() {
