@@ -1,37 +1,26 @@
 #include "techniques/shadowmap/Vsm.h"
 
 #include "techniques/ContactShadows.h"
-#include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
-#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 
 namespace {
 
 std::vector<PropertyDesc> declareProperties() {
-    return {
-        integer(Vsm::kResolution, "1024", 16, 8192, "moment map width and height (texels)"),
-        integer(Vsm::kBlur, "3", 0, ShadowMapProperties::kMaxBlurWidth,
-                "separable Gaussian kernel width in texels (sigma = width / 4; 0 or 1 = no blur)"),
-        flag(Vsm::kReceiverBackground, "true",
-             "non-casters drawn behind the casters as the map's background (the farthest per texel): the "
-             "filter sees the receiver, not the far plane, beside an occluder's edge"),
-        flag(Vsm::kCull, "true",
-             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
-             "blur's reach)"),
-        real(Vsm::kMinVariance, "1e-06", 0, 0.01,
-             "lower bound of the filtered variance (linear depth in [0, 1], squared): against the "
-             "bound's numeric acne"),
-        real(Vsm::kBleedReduction, "0.2", 0, 0.99,
-             "light-bleeding reduction: linstep(amount, 1, p_max) removes the bound's [0, amount] tail; "
-             "it trades light leaks for darkened soft edges: two plates overlapping in the map leak "
-             "0.78% of pixels at 0 and 0.2, 0 at 0.5; a plate 0.3 above the ground 4.7% at 0, 4.2% at "
-             "0.2, 2.9% at 0.5, 0 only at 0.9; aircraft's false shadow 0.25% at 0.2, 0.58% at 0.5 "
-             "(techniques/shadowmap/README.md)"),
-        LightFitProperties::fit("map", "spot lights take their cone"),
-        LightFitProperties::fitMargin(),
-    };
+    return MomentMapKind::properties(
+        "moment map", "", {},
+        {
+            real(Vsm::kMinVariance, "1e-06", 0, 0.01,
+                 "lower bound of the filtered variance (linear depth in [0, 1], squared): against the "
+                 "bound's numeric acne"),
+            real(Vsm::kBleedReduction, "0.2", 0, 0.99,
+                 "light-bleeding reduction: linstep(amount, 1, p_max) removes the bound's [0, amount] tail; "
+                 "it trades light leaks for darkened soft edges: two plates overlapping in the map leak "
+                 "0.78% of pixels at 0 and 0.2, 0 at 0.5; a plate 0.3 above the ground 4.7% at 0, 4.2% at "
+                 "0.2, 2.9% at 0.5, 0 only at 0.9; aircraft's false shadow 0.25% at 0.2, 0.58% at 0.5 "
+                 "(techniques/shadowmap/README.md)"),
+        });
 }
 
 } // namespace
