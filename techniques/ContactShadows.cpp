@@ -1,5 +1,9 @@
 #include "techniques/ContactShadows.h"
 
+#include <utility>
+
+#include "techniques/ViewDepth.h"
+
 namespace sb {
 
 std::vector<PropertyDesc> ContactShadows::properties() {
@@ -29,6 +33,19 @@ std::vector<std::string> ContactShadows::passes(const PropertySet& p, std::vecto
     if (!enabled(p)) return passes;
     passes.insert(passes.begin(), kPass);
     return passes;
+}
+
+TechniqueInfo ContactShadows::declare(TechniqueInfo info) {
+    const std::vector<PropertyDesc> contact = properties();
+    info.properties.insert(info.properties.end(), contact.begin(), contact.end());
+    info.resources = [own = std::move(info.resources)](const PropertySet& p, const ResourceInputs& in) {
+        ResourceEstimate e = own(p, in);
+        if (!enabled(p)) return e;
+        e.bytes += ViewDepth::bytes(in.width, in.height);
+        e.how += " + " + ViewDepth::describe(in.width, in.height, "contact");
+        return e;
+    };
+    return info;
 }
 
 } // namespace sb

@@ -17,11 +17,17 @@
 // screen-space method's one guess). The light is then blocked (visibility 0) for that pixel; the map's
 // answer is kept where it is darker.
 //
-// Which members have it: `shadowmap` and `cascaded` (GL and Vulkan; cascaded with fit=sdsm draws one view
-// depth pre-pass for both readers). Measured on contact_point_sun's low camera with a deliberately large
-// bias (tests/hard/HardCases.h, shadowmap_contact_leak*, cascaded_contact_leak_sdsm_contact): shadowmap
-// 0.105% of the pixels wrong off the edge band without, 0.029% with contact_length=1, contact_steps=16;
-// cascaded:fit=sdsm 0.166% and 0.054%; at shadowmap's defaults the error is the same with and without.
+// Which members have it: every map member, GL and Vulkan: `shadowmap`, `cascaded` (with fit=sdsm one view
+// depth pre-pass for both readers), `pcss`, `cubemap`, `paraboloid`, `vsm`, `esm`, `evsm` and `msm`. The
+// forms' wiring has one home per API: techniques/gl/ContactShadowsGL.h, techniques/vulkan/
+// ContactShadowsVulkan.h (cascaded keeps its own view depth, shared with fit=sdsm). Measured on
+// contact_point_sun's low camera with a deliberately large bias (tests/hard/HardCases.h,
+// shadowmap_contact_leak*, cascaded_contact_leak_sdsm_contact): shadowmap 0.105% of the pixels wrong off the
+// edge band without, 0.029% with contact_length=1, contact_steps=16; cascaded:fit=sdsm 0.166% and 0.054%; at
+// shadowmap's defaults the error is the same with and without. pcss as shadowmap (0.102% -> 0.028%);
+// cubemap and paraboloid under a point light (contact_point_lamp) 1.000% -> 0.761% and 1.996% -> 1.580%;
+// the moment maps, which have no bias, have no leak there and the march adds none off the edge band
+// (rows pcss_contact_leak_contact ... msm_contact).
 
 #include <string>
 #include <vector>
@@ -31,6 +37,7 @@
 #include "shading/Defines.h"
 #include "techniques/Property.h"
 #include "techniques/PropertySet.h"
+#include "techniques/TechniqueInfo.h"
 
 namespace sb {
 
@@ -54,6 +61,10 @@ struct ContactShadows {
     static glm::vec4 block(const PropertySet& p);
     /// `passes` with kPass first when enabled.
     static std::vector<std::string> passes(const PropertySet& p, std::vector<std::string> passes);
+    /// A member's declaration with contact: properties() after its own, and its resource estimate
+    /// grown by the view depth (ViewDepth::bytes) when enabled. One home for what every member adds
+    /// (`cascaded` counts its view depth itself: fit=sdsm shares it).
+    static TechniqueInfo declare(TechniqueInfo info);
 };
 
 } // namespace sb

@@ -130,4 +130,21 @@ VkSampler LayerPasses::sampler(VkDevice device, const Sampling& sampling, const 
     return sampler;
 }
 
+void LayerPasses::beginDepthPass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer,
+                                 VkExtent2D extent, float clearDepth) {
+    VkClearValue clear{};
+    clear.depthStencil = {clearDepth, 0};
+    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    info.renderPass = pass;
+    info.framebuffer = framebuffer;
+    info.renderArea.extent = extent;
+    info.clearValueCount = 1;
+    info.pClearValues = &clear;
+    vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
+    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
 } // namespace sb

@@ -61,6 +61,13 @@ public:
                                                         VulkanImage& array, uint32_t count, const char* what,
                                                         VkImageView shared = VK_NULL_HANDLE);
 
+    /// Records the start of `pass` (a depth-only pass: its one attachment the depth) over `framebuffer`,
+    /// the depth cleared to `clearDepth` over all of `extent`, and sets the viewport (depth range [0, 1])
+    /// and scissor to `extent`: what every depth pass over a whole layer (VulkanDepthMapSet's, the view
+    /// depth pre-pass's) begins with. The caller records its draws and ends the pass.
+    static void beginDepthPass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer,
+                               VkExtent2D extent, float clearDepth);
+
     /// What a sampler of a layer does at its edges and between texels.
     struct Sampling {
         VkFilter filter = VK_FILTER_LINEAR;

@@ -9,6 +9,7 @@
 // (GL_TEXTURE_CUBE_MAP_SEAMLESS), so bilinear footprints and PCF taps cross face edges.
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/omni_lighting.glsl"
 
 #ifdef OMNI_MAPS

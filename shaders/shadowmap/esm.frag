@@ -10,6 +10,7 @@
 // finite and in [0, 1] at every exponent (exp(c d) itself overflows a float from c d = 88.7 on).
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/esm.glsl"
 #include "shadowmap/light_depth.glsl"
 
@@ -61,7 +62,9 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = shadowApplies(i, vColorId) ? visibility(i, vShadowCoord[i]) : 1.0;
+        vis[i] = shadowApplies(i, vColorId)
+                     ? contactLimited(i, visibility(i, vShadowCoord[i]), vWorldPos, n)
+                     : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -5,6 +5,7 @@
 // light-bleeding reduction. EVSM_EXPONENTS is vec2(c+, c-), as in the depth pass (shadowmap/moments.frag).
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/evsm.glsl"
 #include "shadowmap/light_depth.glsl"
 
@@ -56,7 +57,9 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = shadowApplies(i, vColorId) ? visibility(i, vShadowCoord[i]) : 1.0;
+        vis[i] = shadowApplies(i, vColorId)
+                     ? contactLimited(i, visibility(i, vShadowCoord[i]), vWorldPos, n)
+                     : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -5,6 +5,7 @@
 // (shadowmap/vsm.glsl; 0 by default: the four moments' bound is tight where vsm's two leak).
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/light_depth.glsl"
 #include "shadowmap/msm.glsl"
 #include "shadowmap/vsm.glsl"
@@ -54,7 +55,9 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = shadowApplies(i, vColorId) ? visibility(i, vShadowCoord[i]) : 1.0;
+        vis[i] = shadowApplies(i, vColorId)
+                     ? contactLimited(i, visibility(i, vShadowCoord[i]), vWorldPos, n)
+                     : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -1,10 +1,11 @@
-// The lighting pass shared by `cubemap` and `paraboloid` (included after common/frame.glsl and
-// common/lighting.glsl): per light, the visibility from its map (Williams 1978), times its
-// unshadowed term. uMap[i] = (kind, layer): MAP_NONE (lit: no map, e.g. a point light whose range
-// reaches no caster), MAP_FLAT (the spot or directional map of `shadowmap`, in the 2D depth array
-// uFlatMaps at `layer`) or MAP_OMNI (the point light's omni map; omniVisibility() is the including
-// technique's, defined after this file). PCF_SIZE x PCF_SIZE taps, one texel apart, each a
-// hardware depth compare with bilinear filtering of the comparison results.
+// The lighting pass shared by `cubemap` and `paraboloid` (included after common/frame.glsl,
+// common/lighting.glsl and common/contact_shadow.glsl, whose contactLimited is the `contact` march): per
+// light, the visibility from its map (Williams 1978), times its unshadowed term. uMap[i] = (kind, layer):
+// MAP_NONE (lit: no map, e.g. a point light whose range reaches no caster), MAP_FLAT (the spot or
+// directional map of `shadowmap`, in the 2D depth array uFlatMaps at `layer`) or MAP_OMNI (the point
+// light's omni map; omniVisibility() is the including technique's, defined after this file). PCF_SIZE x
+// PCF_SIZE taps, one texel apart, each a hardware depth compare with bilinear filtering of the comparison
+// results.
 #define MAP_NONE 0
 #define MAP_FLAT 1
 #define MAP_OMNI 2
@@ -72,7 +73,7 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = shadowApplies(i, vColorId) ? lightVisibility(i) : 1.0;
+        vis[i] = shadowApplies(i, vColorId) ? contactLimited(i, lightVisibility(i), vWorldPos, n) : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

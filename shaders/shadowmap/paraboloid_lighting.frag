@@ -6,6 +6,7 @@
 // also holds the spot and directional maps. PCF taps step one texel in map space.
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/omni_lighting.glsl"
 #include "shadowmap/paraboloid_frame.glsl"
 

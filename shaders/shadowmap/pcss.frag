@@ -9,6 +9,7 @@
 // compares with the receiver plane's depth at the tap (Isidoro 2006, shadowmap/receiver_plane.glsl).
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/receiver_plane.glsl"
 
 in vec3 vWorldPos;
@@ -115,7 +116,8 @@ void main() {
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec4 coord = vShadowCoord[i];
         vec2 slope = receiverSlope(coord.xyz / coord.w); // before any branch: derivatives
-        vis[i] = shadowApplies(i, vColorId) ? pcss(i, coord, slope) : 1.0;
+        vis[i] = shadowApplies(i, vColorId) ? contactLimited(i, pcss(i, coord, slope), vWorldPos, n)
+                                            : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

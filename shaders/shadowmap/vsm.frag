@@ -8,6 +8,7 @@
 // bound's [0, amount] tail (where overlapping occluders leave a halo) and rescales the rest.
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "shadowmap/light_depth.glsl"
 #include "shadowmap/vsm.glsl"
 
@@ -53,7 +54,9 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = shadowApplies(i, vColorId) ? visibility(i, vShadowCoord[i]) : 1.0;
+        vis[i] = shadowApplies(i, vColorId)
+                     ? contactLimited(i, visibility(i, vShadowCoord[i]), vWorldPos, n)
+                     : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

@@ -1,5 +1,6 @@
 #include "techniques/shadowmap/CubeMap.h"
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -26,23 +27,24 @@ std::vector<PropertyDesc> declareProperties() {
 } // namespace
 
 TechniqueInfo CubeMap::declaration() {
-    return {.name = "cubemap",
-            .description = "omnidirectional shadow mapping: a depth cube map per point light",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {P::kResolution, {"256", "512", "1024", "2048"}},
-                    P::pcfSweep(),
-                    P::biasConstantSweep(),
-                    P::biasSlopeSweep(),
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, CubeFaces::kFaces, in);
-            }};
+    return ContactShadows::declare(
+        {.name = "cubemap",
+         .description = "omnidirectional shadow mapping: a depth cube map per point light",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {P::kResolution, {"256", "512", "1024", "2048"}},
+                 P::pcfSweep(),
+                 P::biasConstantSweep(),
+                 P::biasSlopeSweep(),
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, CubeFaces::kFaces, in);
+         }});
 }
 
 std::vector<CubeMap::Cube> CubeMap::cubes(const OmniLightSet& lights) {
@@ -59,6 +61,7 @@ Defines CubeMap::lightingDefines(Defines lit, const PropertySet& p, const OmniLi
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
     if (lights.flatCount() > 0) lit["FLAT_MAPS"] = "";
     if (lights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    ContactShadows::addDefines(p, lit);
     return lit;
 }
 

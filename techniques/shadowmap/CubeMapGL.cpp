@@ -3,6 +3,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -24,6 +25,10 @@ bool CubeMapGL::layeredAvailable(const Context& context) {
     return context.glMajor > 3 || (context.glMajor == 3 && context.glMinor >= 2);
 }
 
+void CubeMapGL::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), CubeMap::declaration().passes);
+}
+
 void CubeMapGL::setScene(const Scene& scene) {
     mLights.setScene(scene, OmniShape::Cube, int(properties().getInt(P::kResolution)));
     mCubeLights = CubeMap::cubes(mLights);
@@ -40,6 +45,7 @@ void CubeMapGL::compile(const CompileContext& ctx) {
 
     const Defines base = ctx.submitter.defines();
     mFaceDepth = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    mContact.compile(p, ctx.programs, base);
     mLayeredDepth =
         mLayered ? &ctx.programs.get(
                        {"shadowmap/cube_depth.vert", "common/depth.frag", "shadowmap/cube_depth.geom"}, base)
@@ -113,7 +119,9 @@ void CubeMapGL::renderLighting(FrameContext& ctx) {
     if (!mFlat.empty()) glBindTextureUnit(kFlatUnit, mFlat.texture());
     if (!mCubes.empty()) glBindTextureUnit(kCubeUnit, mCubes.texture());
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // bilinear footprints and PCF taps cross face edges
+    mContact.bind();
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
+    mContact.unbind();
     glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glBindTextureUnit(kFlatUnit, 0);
     glBindTextureUnit(kCubeUnit, 0);
@@ -121,7 +129,8 @@ void CubeMapGL::renderLighting(FrameContext& ctx) {
 
 void CubeMapGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, mContact.prePass(ctx),
+        ContactShadows::kPass);
     mCounters =
         CubeMap::counters(s, int(properties().getInt(P::kResolution)), mLights, mFacesRendered, mCulled);
 }

@@ -30,6 +30,7 @@
 #include <epoxy/gl.h>
 
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/CubeFaces.h"
@@ -46,6 +47,7 @@ public:
     /// The declaration (name, effects, passes, properties, quality knobs), shared with the Vulkan form
     /// (CubeMapVulkan.h).
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
@@ -56,6 +58,7 @@ public:
     static bool layeredAvailable(const Context& context);
 
 private:
+    ContactShadowsGL mContact; ///< contact=on: the view depth pre-pass and its binding
     void renderDepth(FrameContext& ctx);
     void renderCubesLayered(FrameContext& ctx);
     void renderCubesSixPass(FrameContext& ctx);

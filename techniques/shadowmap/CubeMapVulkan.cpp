@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/CubeMap.h"
@@ -46,6 +47,10 @@ void CubeMapVulkan::release() {
     mCubes = VulkanDepthMapSet();
     mFlat = VulkanDepthMapSet();
     mLightingBlock = VulkanBuffer();
+}
+
+void CubeMapVulkan::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), CubeMap::declaration().passes);
 }
 
 void CubeMapVulkan::setScene(const Scene& scene) {
@@ -180,7 +185,8 @@ void CubeMapVulkan::compile(const VulkanCompileContext& ctx) {
     // Lighting pass: the GL technique's defines, permutation for permutation.
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = CubeMap::lightingDefines(ctx.defines(), p, mLights);
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    mContact.compile(p, ctx);
+    mLightingLayout = createScenePipelineLayout(ctx, mContact.lightingSets({mSets.layout(kLightingSet)}));
     const std::string litPermutation = mLighting.build(
         ctx, "common/scene.vert", "shadowmap/cube_lighting.frag", lit, mLightingLayout, "cubemap-lighting|");
     std::string key = definesKey(base) + "|" + litPermutation;
@@ -267,7 +273,11 @@ void CubeMapVulkan::execute(VulkanFrameContext& ctx) {
     mFacesRendered = 0;
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); },
-        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet)); });
+        [&] {
+            mContact.bind(ctx.cmd, mLightingLayout);
+            mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
+        },
+        mContact.prePass(ctx), ContactShadows::kPass);
     mCounters = CubeMap::counters(s, mSize, mLights, mFacesRendered, mCulled);
 }
 

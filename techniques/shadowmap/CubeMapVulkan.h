@@ -33,6 +33,7 @@
 #include "techniques/shadowmap/CubeMap.h"
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
+#include "techniques/vulkan/ContactShadowsVulkan.h"
 #include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
@@ -46,12 +47,14 @@ public:
     CubeMapVulkan();
     ~CubeMapVulkan() override;
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void compile(const VulkanCompileContext& ctx) override;
     void execute(VulkanFrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
     const MapTexels* mapTexels() const override { return &mLights; }
 
 private:
+    ContactShadowsVulkan mContact; ///< contact=on: the view depth pre-pass and its set 2
     void release();
     void createMaps(VulkanContext& context);
     void createDescriptors(VulkanContext& context);

@@ -3,43 +3,35 @@
 #include <cmath>
 
 #include "shading/GlslLiteral.h"
-#include "techniques/LightFitProperties.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/Property.h"
-#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 
 namespace {
 
 std::vector<PropertyDesc> declareProperties() {
-    return {
-        integer(Evsm::kResolution, "1024", 16, 8192, "moment map width and height (texels)"),
-        integer(Evsm::kBlur, "3", 0, ShadowMapProperties::kMaxBlurWidth,
-                "separable Gaussian kernel width in texels (sigma = width / 4; 0 or 1 = no blur)"),
-        choice(Evsm::kComponents, "4", {"2", "4"},
-               "2: the positive warp exp(c+ d) alone (RG32F); 4: with the negative warp -exp(-c- d) too "
-               "(RGBA32F), the lit fraction the smaller of the two bounds (Lauritzen and McCool 2008, "
-               "Layered Variance Shadow Maps, the section on the exponential warp)"),
-        real(Evsm::kExponentPositive, "40", 1, Evsm::kMaxExponent,
-             "c+ of the positive warp exp(c+ d), d linear depth in [0, 1]: larger separates the depths "
-             "behind an occluder further (less light leaking); at most 42 so exp(2 c+) fits a float"),
-        real(Evsm::kExponentNegative, "5", 1, Evsm::kMaxExponent,
-             "c- of the negative warp -exp(-c- d) (components=4 only): the paper's 32-bit pair is c+ = 40, "
-             "c- = 5"),
-        flag(Evsm::kReceiverBackground, "true",
-             "non-casters drawn behind the casters as the map's background (the farthest per texel): the "
-             "filter sees the receiver, not the far plane, beside an occluder's edge"),
-        flag(Evsm::kCull, "true",
-             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
-             "blur's reach)"),
-        real(Evsm::kMinVariance, "1e-06", 0, 0.01,
-             "lower bound of the filtered variance on linear depth in [0, 1], squared, scaled into each "
-             "warped space by the warp's slope at the receiver, squared"),
-        real(Evsm::kBleedReduction, "0.2", 0, 0.99,
-             "light-bleeding reduction as vsm's: linstep(amount, 1, p_max) on the smaller bound"),
-        LightFitProperties::fit("map", "spot lights take their cone"),
-        LightFitProperties::fitMargin(),
-    };
+    return MomentMapKind::properties(
+        "moment map", "",
+        {
+            choice(Evsm::kComponents, "4", {"2", "4"},
+                   "2: the positive warp exp(c+ d) alone (RG32F); 4: with the negative warp -exp(-c- d) too "
+                   "(RGBA32F), the lit fraction the smaller of the two bounds (Lauritzen and McCool 2008, "
+                   "Layered Variance Shadow Maps, the section on the exponential warp)"),
+            real(Evsm::kExponentPositive, "40", 1, Evsm::kMaxExponent,
+                 "c+ of the positive warp exp(c+ d), d linear depth in [0, 1]: larger separates the depths "
+                 "behind an occluder further (less light leaking); at most 42 so exp(2 c+) fits a float"),
+            real(Evsm::kExponentNegative, "5", 1, Evsm::kMaxExponent,
+                 "c- of the negative warp -exp(-c- d) (components=4 only): the paper's 32-bit pair is c+ = "
+                 "40, c- = 5"),
+        },
+        {
+            real(Evsm::kMinVariance, "1e-06", 0, 0.01,
+                 "lower bound of the filtered variance on linear depth in [0, 1], squared, scaled into each "
+                 "warped space by the warp's slope at the receiver, squared"),
+            real(Evsm::kBleedReduction, "0.2", 0, 0.99,
+                 "light-bleeding reduction as vsm's: linstep(amount, 1, p_max) on the smaller bound"),
+        });
 }
 
 } // namespace
@@ -61,27 +53,27 @@ glm::vec4 Evsm::noOccluder(const PropertySet& p) {
 }
 
 TechniqueInfo Evsm::declaration() {
-    return {.name = "evsm",
-            .description =
-                "exponential variance shadow maps: filtered moments of exponentially warped depth, "
-                "Chebyshev's bound per warp (Lauritzen and McCool 2008, Layered Variance Shadow "
-                "Maps, GI, the section on the exponential warp)",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "blur", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    {kBlur, {"0", "3", "5", "9"}},
-                    {kComponents, {"2", "4"}},
-                    {kExponentPositive, {"5", "20", "40"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                const uint64_t texel = uint64_t(channels(p)) * 4;
-                return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
-            }};
+    return ContactShadows::declare(
+        {.name = "evsm",
+         .description = "exponential variance shadow maps: filtered moments of exponentially warped depth, "
+                        "Chebyshev's bound per warp (Lauritzen and McCool 2008, Layered Variance Shadow "
+                        "Maps, GI, the section on the exponential warp)",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "blur", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 {kBlur, {"0", "3", "5", "9"}},
+                 {kComponents, {"2", "4"}},
+                 {kExponentPositive, {"5", "20", "40"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             const uint64_t texel = uint64_t(channels(p)) * 4;
+             return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
+         }});
 }
 
 MomentMapKind Evsm::kind() {

@@ -6,6 +6,7 @@
 
 #include "core/Error.h"
 #include "scenes/ShadowWork.h"
+#include "techniques/ContactShadows.h"
 
 namespace sb {
 
@@ -104,13 +105,20 @@ void FilterableShadowMaps::setLightingUniforms() const {
 
 Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& depth, const glm::vec4& clear,
                                            SeparableBlur& blur, const LitPrograms& lighting,
-                                           const std::function<void()>& setUniforms) {
+                                           const std::function<void()>& setUniforms,
+                                           ContactShadowsGL& contact) {
     ctx.submitter.resetStats();
     double blurTexels = 0.0;
+    const std::function<void()> viewDepth = contact.prePass(ctx);
     if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+        if (viewDepth) ctx.passes.skip(ContactShadows::kPass, reason);
         ctx.passes.skip("depth", reason);
         ctx.passes.skip("blur", reason);
     } else {
+        if (viewDepth) {
+            ctx.passes.begin(ContactShadows::kPass);
+            viewDepth();
+        }
         ctx.passes.begin("depth");
         render(ctx, depth, clear);
         if (blur.radius() > 0) {
@@ -126,7 +134,9 @@ Counters FilterableShadowMaps::renderFrame(FrameContext& ctx, const Program& dep
     setLightingUniforms();
     setUniforms();
     glBindTextureUnit(0, texture());
+    contact.bind();
     lighting.draw(ctx.submitter, cameraCullView(ctx));
+    contact.unbind();
     glBindTextureUnit(0, 0);
     return mFits.counters(ctx.submitter.stats(), resolution(), blurTexels, castersCulled());
 }

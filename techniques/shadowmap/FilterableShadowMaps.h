@@ -59,6 +59,7 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/gl/SeparableBlur.h"
@@ -99,13 +100,15 @@ public:
     /// Sets the lighting program's uniforms: shadow matrices and depth parameters of every light.
     void setLightingUniforms() const;
     /// One frame of a moment technique (`vsm`, `esm`, which differ only in programs, blur mode and the
-    /// lighting's own uniforms): resets the submit stats; pass "depth", render() with `depth` and
-    /// `clear`; pass "blur", `blur` over the layers a caster reached; pass "lighting", the frame targets
-    /// bound, `lighting`'s program used, setLightingUniforms(), `setUniforms` for the technique's own,
-    /// the maps on unit 0, everything drawn (LitPrograms::draw). Returns the frame's counters
+    /// lighting's own uniforms): resets the submit stats; with contact on, pass "view_depth", `contact`'s
+    /// pre-pass (techniques/gl/ContactShadowsGL.h); pass "depth", render() with `depth` and `clear`; pass
+    /// "blur", `blur` over the layers a caster reached; pass "lighting", the frame targets bound,
+    /// `lighting`'s program used, setLightingUniforms(), `setUniforms` for the technique's own, the maps on
+    /// unit 0, `contact` bound, everything drawn (LitPrograms::draw). Returns the frame's counters
     /// (MomentMapFits::counters).
     Counters renderFrame(FrameContext& ctx, const Program& depth, const glm::vec4& clear, SeparableBlur& blur,
-                         const LitPrograms& lighting, const std::function<void()>& setUniforms);
+                         const LitPrograms& lighting, const std::function<void()>& setUniforms,
+                         ContactShadowsGL& contact);
 
     int layers() const { return mLayers; }
     int resolution() const { return mResolution; }

@@ -1,5 +1,7 @@
 #include "techniques/shadowmap/MomentMapGL.h"
 
+#include "techniques/ContactShadows.h"
+
 namespace sb {
 
 namespace {
@@ -27,6 +29,10 @@ GLenum glFormat(MomentMapKind::Format f) {
 MomentMapGL::MomentMapGL(const MomentMapKind& kind)
     : GlTechnique(kind.declaration()), mKind(kind), mMaps(kind.declaration().name) {}
 
+void MomentMapGL::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), mKind.declaration().passes);
+}
+
 void MomentMapGL::setScene(const Scene& scene) {
     mMaps.fits().setScene(scene, properties());
 }
@@ -43,8 +49,10 @@ void MomentMapGL::compile(const CompileContext& ctx) {
     Defines depth = ctx.submitter.defines();
     mKind.depthDefines(p, depth);
     mDepthProgram = &ctx.programs.get({"shadowmap/moments.vert", "shadowmap/moments.frag", ""}, depth);
+    mContact.compile(p, ctx.programs, ctx.submitter.defines());
     Defines lit = ctx.defines();
     mKind.lightingDefines(p, lit);
+    ContactShadows::addDefines(p, lit);
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mMaps.layers());
     std::string key = mDepthProgram->key() + "|" +
@@ -64,9 +72,12 @@ void MomentMapGL::compile(const CompileContext& ctx) {
 
 void MomentMapGL::execute(FrameContext& ctx) {
     const std::vector<float> params = mKind.params(properties());
-    mCounters = mMaps.renderFrame(ctx, *mDepthProgram, mKind.noOccluder(properties()), mBlur, mLighting, [&] {
-        for (size_t i = 0; i < params.size(); ++i) glUniform1f(kFirstParamLocation + GLint(i), params[i]);
-    });
+    mCounters = mMaps.renderFrame(
+        ctx, *mDepthProgram, mKind.noOccluder(properties()), mBlur, mLighting,
+        [&] {
+            for (size_t i = 0; i < params.size(); ++i) glUniform1f(kFirstParamLocation + GLint(i), params[i]);
+        },
+        mContact);
 }
 
 } // namespace sb

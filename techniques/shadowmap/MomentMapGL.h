@@ -9,6 +9,7 @@
 //              space for esm; 0 = none: the pass exists but does no GL work);
 //   "lighting" the kind's fragment shader on the bilinearly filtered moments.
 // Point lights need an omni map (`cubemap`, `paraboloid`): refused with ExitCode::Unsupported.
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/gl/SeparableBlur.h"
@@ -21,6 +22,7 @@ class MomentMapGL final : public GlTechnique {
 public:
     explicit MomentMapGL(const MomentMapKind& kind);
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     /// The light fits and the maps' fit to the receivers follow the scene (FilterableShadowMaps).
     void sceneChanged(const Scene& scene, uint32_t) override { mMaps.fits().sceneChanged(scene); }
     void compile(const CompileContext& ctx) override;
@@ -36,7 +38,8 @@ private:
     FilterableShadowMaps mMaps;
     SeparableBlur mBlur;
     const Program* mDepthProgram = nullptr;
-    LitPrograms mLighting; ///< the lighting pass (non-receivers apart where they can be)
+    LitPrograms mLighting;     ///< the lighting pass (non-receivers apart where they can be)
+    ContactShadowsGL mContact; ///< contact=on: the view depth pre-pass and its binding
     Counters mCounters;
 };
 

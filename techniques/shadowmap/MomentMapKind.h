@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "shading/Defines.h"
+#include "techniques/Property.h"
 #include "techniques/PropertySet.h"
 #include "techniques/TechniqueInfo.h"
 
@@ -32,6 +33,15 @@ struct MomentMapKind {
     static constexpr const char* kCull = "cull";
     static constexpr const char* kReceiverBackground = "receiver_background";
     static constexpr const char* kResolution = "resolution";
+
+    /// The members' property declarations, written once, in the order every member lists them:
+    /// resolution, blur, `afterBlur` (the kind's own that come before the shared pair), receiver_background,
+    /// cull, `afterCull` (the kind's own after it), fit, fit_margin (LightFitProperties). The help texts'
+    /// only differences are words: `map` names what resolution sizes ("moment map", esm's "depth map"),
+    /// `blurOver` what the blur filters where it says so (esm's ", over exp(c d)"; else empty).
+    static std::vector<PropertyDesc> properties(const char* map, const char* blurOver,
+                                                std::vector<PropertyDesc> afterBlur,
+                                                std::vector<PropertyDesc> afterCull);
 
     TechniqueInfo (*declaration)() = nullptr;
     Format (*format)(const PropertySet&) = nullptr;

@@ -1,5 +1,7 @@
 #include "techniques/shadowmap/MomentMapVulkan.h"
 
+#include "techniques/ContactShadows.h"
+
 namespace sb {
 
 namespace {
@@ -24,6 +26,10 @@ VkFormat vulkanFormat(MomentMapKind::Format f) {
 MomentMapVulkan::MomentMapVulkan(const MomentMapKind& kind)
     : VulkanTechnique(kind.declaration()), mKind(kind), mMaps(kind.declaration().name) {}
 
+void MomentMapVulkan::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), mKind.declaration().passes);
+}
+
 void MomentMapVulkan::setScene(const Scene& scene) {
     mMaps.fits().setScene(scene, properties());
 }
@@ -43,6 +49,7 @@ void MomentMapVulkan::compile(const VulkanCompileContext& ctx) {
     s.lightingFragment = mKind.lightingFragment;
     s.lightingDefines = ctx.defines();
     mKind.lightingDefines(p, s.lightingDefines);
+    ContactShadows::addDefines(p, s.lightingDefines);
     const std::vector<float> params = mKind.params(p);
     for (size_t i = 0; i < params.size() && i < 2; ++i) s.params[int(i)] = params[i];
     s.clear = mKind.noOccluder(p);
@@ -50,6 +57,7 @@ void MomentMapVulkan::compile(const VulkanCompileContext& ctx) {
     s.blur = {.width = int(p.getInt(MomentMapKind::kBlur)),
               .logSpace = exponent > 0.0f,
               .exponent = exponent > 0.0f ? exponent : 1.0f};
+    mMaps.contact().compile(p, ctx);
     setPermutationKey(mMaps.compile(ctx, s));
 }
 

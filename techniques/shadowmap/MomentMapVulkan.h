@@ -13,6 +13,7 @@ class MomentMapVulkan final : public VulkanTechnique {
 public:
     explicit MomentMapVulkan(const MomentMapKind& kind);
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     /// The light fits and the blocks follow the scene (VulkanMomentMaps::sceneChanged).
     void sceneChanged(const Scene& scene, uint32_t) override { mMaps.sceneChanged(scene); }
     void compile(const VulkanCompileContext& ctx) override;

@@ -1,38 +1,30 @@
 #include "techniques/shadowmap/Msm.h"
 
-#include "techniques/LightFitProperties.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/Property.h"
-#include "techniques/ShadowMapProperties.h"
 
 namespace sb {
 
 namespace {
 
 std::vector<PropertyDesc> declareProperties() {
-    return {
-        integer(Msm::kResolution, "1024", 16, 8192, "moment map width and height (texels)"),
-        integer(Msm::kBlur, "3", 0, ShadowMapProperties::kMaxBlurWidth,
-                "separable Gaussian kernel width in texels (sigma = width / 4; 0 or 1 = no blur)"),
-        choice(Msm::kFormat, "unorm16", {"unorm16", "float"},
-               "unorm16: the four moments through the paper's quantisation transform into RGBA16 unorm, 64 "
-               "bits per texel (Peters and Klein 2015, Moment Shadow Mapping, the section on quantization); "
-               "float: the raw moments in RGBA32F, 128 bits"),
-        real(Msm::kMomentBias, "3e-05", 0, 0.01,
-             "alpha of the moment bias b' = (1 - alpha) b + alpha (0.5, 0.5, 0.5, 0.5) before the Hamburger "
-             "reconstruction (the paper's value for the 64-bit map): keeps the moments' Hankel matrix "
-             "positive definite after filtering and rounding"),
-        flag(Msm::kReceiverBackground, "true",
-             "non-casters drawn behind the casters as the map's background (the farthest per texel): the "
-             "filter sees the receiver, not the far plane, beside an occluder's edge"),
-        flag(Msm::kCull, "true",
-             "leave out of each light's map the casters whose shadow cannot reach the view (grown by the "
-             "blur's reach)"),
-        real(Msm::kBleedReduction, "0", 0, 0.99,
-             "light-bleeding reduction as vsm's, linstep(amount, 1, visibility); 0: the four moments' bound "
-             "is tight for two depths, where vsm's leaks"),
-        LightFitProperties::fit("map", "spot lights take their cone"),
-        LightFitProperties::fitMargin(),
-    };
+    return MomentMapKind::properties(
+        "moment map", "",
+        {
+            choice(Msm::kFormat, "unorm16", {"unorm16", "float"},
+                   "unorm16: the four moments through the paper's quantisation transform into RGBA16 unorm, "
+                   "64 bits per texel (Peters and Klein 2015, Moment Shadow Mapping, the section on "
+                   "quantization); float: the raw moments in RGBA32F, 128 bits"),
+            real(Msm::kMomentBias, "3e-05", 0, 0.01,
+                 "alpha of the moment bias b' = (1 - alpha) b + alpha (0.5, 0.5, 0.5, 0.5) before the "
+                 "Hamburger reconstruction (the paper's value for the 64-bit map): keeps the moments' Hankel "
+                 "matrix positive definite after filtering and rounding"),
+        },
+        {
+            real(Msm::kBleedReduction, "0", 0, 0.99,
+                 "light-bleeding reduction as vsm's, linstep(amount, 1, visibility); 0: the four moments' "
+                 "bound is tight for two depths, where vsm's leaks"),
+        });
 }
 
 } // namespace
@@ -53,24 +45,25 @@ glm::vec4 Msm::noOccluder(const PropertySet& p) {
 }
 
 TechniqueInfo Msm::declaration() {
-    return {.name = "msm",
-            .description = "moment shadow maps: four filtered moments of depth, the Hamburger reconstruction "
-                           "in the lighting pass (Peters and Klein 2015, Moment Shadow Mapping, I3D)",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "blur", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    {kBlur, {"0", "3", "5", "9"}},
-                    {kFormat, {"unorm16", "float"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                const uint64_t texel = uint64_t(texelBytes(p));
-                return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
-            }};
+    return ContactShadows::declare(
+        {.name = "msm",
+         .description = "moment shadow maps: four filtered moments of depth, the Hamburger reconstruction "
+                        "in the lighting pass (Peters and Klein 2015, Moment Shadow Mapping, I3D)",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "blur", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 {kBlur, {"0", "3", "5", "9"}},
+                 {kFormat, {"unorm16", "float"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             const uint64_t texel = uint64_t(texelBytes(p));
+             return squareMaps(p.getInt(kResolution), texel, 1, in, texel + kDepthTexelBytes);
+         }});
 }
 
 MomentMapKind Msm::kind() {

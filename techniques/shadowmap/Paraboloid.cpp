@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -30,23 +31,24 @@ std::vector<PropertyDesc> declareProperties() {
 } // namespace
 
 TechniqueInfo Paraboloid::declaration() {
-    return {.name = "paraboloid",
-            .description = "dual-paraboloid shadow maps: two hemispherical depth maps per point light",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {P::kResolution, {"512", "1024", "2048", "4096"}},
-                    P::pcfSweep(),
-                    P::biasConstantSweep(),
-                    P::biasSlopeSweep(),
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 2, in);
-            }};
+    return ContactShadows::declare(
+        {.name = "paraboloid",
+         .description = "dual-paraboloid shadow maps: two hemispherical depth maps per point light",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {P::kResolution, {"512", "1024", "2048", "4096"}},
+                 P::pcfSweep(),
+                 P::biasConstantSweep(),
+                 P::biasSlopeSweep(),
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 2, in);
+         }});
 }
 
 float Paraboloid::beyondRim(int resolution, int pcf) {
@@ -67,6 +69,7 @@ Defines Paraboloid::lightingDefines(Defines lit, const PropertySet& p, const Omn
     lit["PCF_SIZE"] = std::to_string(p.getInt(P::kPcf));
     if (lights.flatCount() > 0) lit["FLAT_MAPS"] = "";
     if (lights.omniCount() > 0) lit["OMNI_MAPS"] = "";
+    ContactShadows::addDefines(p, lit);
     return lit;
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -24,6 +25,10 @@ constexpr GLuint kMapUnit = 0;           // shadowmap/omni_lighting.glsl, parabo
 
 ParaboloidGL::ParaboloidGL() : GlTechnique(Paraboloid::declaration()) {}
 
+void ParaboloidGL::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), Paraboloid::declaration().passes);
+}
+
 void ParaboloidGL::setScene(const Scene& scene) {
     mLights.setScene(scene, OmniShape::Paraboloid, int(properties().getInt(P::kResolution)));
     mCulling.setScene(scene);
@@ -37,6 +42,7 @@ void ParaboloidGL::compile(const CompileContext& ctx) {
                    false);
     const Defines base = ctx.submitter.defines();
     mFlatDepth = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    mContact.compile(p, ctx.programs, base);
     mParaboloidDepth = &ctx.programs.get({"shadowmap/paraboloid_depth.vert", "common/depth.frag", ""}, base);
     // Compiled whether or not `split` uses it: the sources compile() selects stay the same for both
     // values, so the knob adds no shader permutation to build or test.
@@ -112,13 +118,16 @@ void ParaboloidGL::renderLighting(FrameContext& ctx) {
     mLighting.program().use();
     setOmniLightingUniforms(mLights, flatBase(), 2);
     if (!mMaps.empty()) glBindTextureUnit(kMapUnit, mMaps.texture());
+    mContact.bind();
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
+    mContact.unbind();
     glBindTextureUnit(kMapUnit, 0);
 }
 
 void ParaboloidGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, mContact.prePass(ctx),
+        ContactShadows::kPass);
     mCounters = Paraboloid::counters(s, mMaps.size(), mMaps.layers(), mLights, mHemispheresRendered, mCulled,
                                      mSplitDrawn);
 }

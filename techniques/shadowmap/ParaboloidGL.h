@@ -43,6 +43,7 @@
 #include <epoxy/gl.h>
 
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
@@ -57,12 +58,14 @@ class ParaboloidGL final : public GlTechnique {
 public:
     ParaboloidGL();
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void compile(const CompileContext& ctx) override;
     void execute(FrameContext& ctx) override;
     Counters counters() const override { return mCounters; }
     const MapTexels* mapTexels() const override { return &mLights; }
 
 private:
+    ContactShadowsGL mContact; ///< contact=on: the view depth pre-pass and its binding
     void renderDepth(FrameContext& ctx);
     void renderHemispheres(FrameContext& ctx);
     /// Draws mKeep's casters into the bound half: through the splitting geometry stage those whose

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/Error.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/Paraboloid.h"
@@ -50,6 +51,10 @@ void ParaboloidVulkan::release() {
     mFlatDepth = mParaboloidDepth = mSplitDepth = VK_NULL_HANDLE; // owned by the pipeline cache
     mMaps = VulkanDepthMapSet();
     mLightingBlock = VulkanBuffer();
+}
+
+void ParaboloidVulkan::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), Paraboloid::declaration().passes);
 }
 
 void ParaboloidVulkan::setScene(const Scene& scene) {
@@ -184,7 +189,8 @@ void ParaboloidVulkan::compile(const VulkanCompileContext& ctx) {
     // Lighting pass: the GL technique's defines, permutation for permutation.
     // The depth passes have no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = Paraboloid::lightingDefines(ctx.defines(), p, mLights);
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    mContact.compile(p, ctx);
+    mLightingLayout = createScenePipelineLayout(ctx, mContact.lightingSets({mSets.layout(kLightingSet)}));
     const std::string litPermutation =
         mLighting.build(ctx, "common/scene.vert", "shadowmap/paraboloid_lighting.frag", lit, mLightingLayout,
                         "paraboloid-lighting|");
@@ -255,7 +261,11 @@ void ParaboloidVulkan::execute(VulkanFrameContext& ctx) {
     mHemispheresRendered = 0;
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { renderDepth(ctx); },
-        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet)); });
+        [&] {
+            mContact.bind(ctx.cmd, mLightingLayout);
+            mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
+        },
+        mContact.prePass(ctx), ContactShadows::kPass);
     mCounters = Paraboloid::counters(s, mLayers > 0 ? mSize : 0, mLayers, mLights, mHemispheresRendered,
                                      mCulled, mSplitDrawn);
 }

@@ -28,6 +28,7 @@
 #include "techniques/shadowmap/OmniCulling.h"
 #include "techniques/shadowmap/OmniLightSet.h"
 #include "techniques/shadowmap/ParaboloidSplitting.h"
+#include "techniques/vulkan/ContactShadowsVulkan.h"
 #include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanDepthMapSet.h"
 #include "techniques/vulkan/VulkanTechnique.h"
@@ -41,6 +42,7 @@ public:
     ParaboloidVulkan();
     ~ParaboloidVulkan() override;
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     /// As the GL form (the whole setScene: lights refitted, casters' bounds and edges), then the slots
     /// and the lighting block rewritten: a scene in motion moved the fits.
     void sceneChanged(const Scene& scene, uint32_t changes) override;
@@ -50,6 +52,7 @@ public:
     const MapTexels* mapTexels() const override { return &mLights; }
 
 private:
+    ContactShadowsVulkan mContact; ///< contact=on: the view depth pre-pass and its set 2
     void release();
     void checkFeatures(const VulkanContext& context) const;
     void createDescriptors(VulkanContext& context);

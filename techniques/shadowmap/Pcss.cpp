@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/LightFitProperties.h"
 #include "techniques/Property.h"
 #include "techniques/ShadowMapProperties.h"
@@ -67,26 +68,27 @@ std::vector<PropertyDesc> declareProperties() {
 } // namespace
 
 TechniqueInfo Pcss::declaration() {
-    return {.name = "pcss",
-            .description = "percentage-closer soft shadows: blocker search, penumbra estimate, PCF over "
-                           "it (a light with no extent gets a 1 degree emitter: counter "
-                           "light_size_defaulted); penumbra width -5% to +9% of the closed form on thin "
-                           "edges, +39% on a 1-thick box edge (techniques/shadowmap/README.md)",
-            .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
-                       Effect::NonPlanarReceivers | Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
-            .properties = declareProperties(),
-            .quality =
-                {
-                    {P::kResolution, {"512", "1024", "2048", "4096"}},
-                    {kBlockerTaps, {"4", "8", "16", "32"}},
-                    {kFilterTaps, {"8", "16", "32", "64"}},
-                    {kLightSize, {"0", "0.05", "0.2", "0.5"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
-            }};
+    return ContactShadows::declare(
+        {.name = "pcss",
+         .description = "percentage-closer soft shadows: blocker search, penumbra estimate, PCF over "
+                        "it (a light with no extent gets a 1 degree emitter: counter "
+                        "light_size_defaulted); penumbra width -5% to +9% of the closed form on thin "
+                        "edges, +39% on a 1-thick box edge (techniques/shadowmap/README.md)",
+         .effects = Effect::HardShadows | Effect::SoftShadows | Effect::SelfShadowing |
+                    Effect::NonPlanarReceivers | Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "lighting"},
+         .properties = declareProperties(),
+         .quality =
+             {
+                 {P::kResolution, {"512", "1024", "2048", "4096"}},
+                 {kBlockerTaps, {"4", "8", "16", "32"}},
+                 {kFilterTaps, {"8", "16", "32", "64"}},
+                 {kLightSize, {"0", "0.05", "0.2", "0.5"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
+         }});
 }
 
 Pcss::LightParams Pcss::lightParams(const Scene& scene, const Light& light, const glm::mat4& lightViewProj,

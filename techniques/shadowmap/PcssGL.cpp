@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/DepthPassState.h"
@@ -33,6 +34,10 @@ PcssGL::PcssGL() : GlTechnique(Pcss::declaration()) {}
 PcssGL::~PcssGL() {
     if (mSearchSampler) glDeleteSamplers(1, &mSearchSampler);
     if (mCompareSampler) glDeleteSamplers(1, &mCompareSampler);
+}
+
+void PcssGL::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), Pcss::declaration().passes);
 }
 
 void PcssGL::setScene(const Scene& scene) {
@@ -85,9 +90,11 @@ void PcssGL::compile(const CompileContext& ctx) {
 
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
+    mContact.compile(p, ctx.programs, base);
     Defines lit = ctx.defines(); // the depth pass has no shadow to apply
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(layers);
+    ContactShadows::addDefines(p, lit);
     setPermutationKey(mDepthProgram->key() + "|" +
                       mLighting.compile(ctx, {"common/scene.vert", "shadowmap/pcss.frag", ""}, lit));
 }
@@ -125,7 +132,9 @@ void PcssGL::renderLighting(FrameContext& ctx) {
     glBindTextureUnit(kCompareUnit, mMaps.texture());
     glBindSampler(kSearchUnit, mSearchSampler);
     glBindSampler(kCompareUnit, mCompareSampler);
+    mContact.bind();
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
+    mContact.unbind();
     glBindSampler(kSearchUnit, 0);
     glBindSampler(kCompareUnit, 0);
     glBindTextureUnit(kSearchUnit, 0);
@@ -134,7 +143,8 @@ void PcssGL::renderLighting(FrameContext& ctx) {
 
 void PcssGL::execute(FrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); });
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, mContact.prePass(ctx),
+        ContactShadows::kPass);
     mCounters = Pcss::counters(s, mMaps.size(), mLights, mCulled, mBlockerKernel.size(), mFilterKernel.size(),
                                mParams);
 }

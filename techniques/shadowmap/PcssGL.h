@@ -40,6 +40,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/FlatLightFits.h"
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/shadowmap/DepthLayers.h"
@@ -52,6 +53,7 @@ public:
     PcssGL();
     ~PcssGL() override;
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     /// The light fits, the culling bounds and each light's size in map texels follow the scene.
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
@@ -63,6 +65,7 @@ public:
     using LightParams = Pcss::LightParams;
 
 private:
+    ContactShadowsGL mContact;              ///< contact=on: the view depth pre-pass and its binding
     void fitLightSizes(const Scene& scene); ///< mParams for the current fits and light_size
     void renderDepth(FrameContext& ctx);
     void renderLighting(FrameContext& ctx);

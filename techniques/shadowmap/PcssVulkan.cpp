@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/ShadowMapProperties.h"
 #include "techniques/shadowmap/PoissonDisk.h"
@@ -45,6 +46,10 @@ void PcssVulkan::release() {
     mSets = DescriptorSets();
     mLightingLayout = VK_NULL_HANDLE;
     mDepth = VulkanFlatDepthPass();
+}
+
+void PcssVulkan::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), Pcss::declaration().passes);
 }
 
 void PcssVulkan::setScene(const Scene& scene) {
@@ -128,7 +133,9 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
     Defines lit = ctx.defines();
     lit["SHADOW_MAP"] = "";
     lit["LIGHT_COUNT"] = std::to_string(mLayers);
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
+    ContactShadows::addDefines(p, lit);
+    mContact.compile(p, ctx);
+    mLightingLayout = createScenePipelineLayout(ctx, mContact.lightingSets({mSets.layout(0)}));
     const std::string litPermutation = mLighting.build(ctx, "common/scene.vert", "shadowmap/pcss.frag", lit,
                                                        mLightingLayout, "pcss-lighting|");
     setPermutationKey(definesKey(base) + "|" + litPermutation);
@@ -137,7 +144,11 @@ void PcssVulkan::compile(const VulkanCompileContext& ctx) {
 void PcssVulkan::execute(VulkanFrameContext& ctx) {
     const SubmitStats s = DepthLightingFrame::run(
         ctx, [&] { mCulled = mDepth.record(ctx, mLights, mCulling); },
-        [&] { mLighting.draw(ctx, mLightingLayout, mSets.set(0)); });
+        [&] {
+            mContact.bind(ctx.cmd, mLightingLayout);
+            mLighting.draw(ctx, mLightingLayout, mSets.set(0));
+        },
+        mContact.prePass(ctx), ContactShadows::kPass);
     mCounters =
         Pcss::counters(s, mSize, mLights, mCulled, mBlockerKernel.size(), mFilterKernel.size(), mParams);
 }

@@ -17,6 +17,7 @@
 #include "scenes/InstanceCulling.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/shadowmap/Pcss.h"
+#include "techniques/vulkan/ContactShadowsVulkan.h"
 #include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanFlatDepthPass.h"
 #include "techniques/vulkan/VulkanTechnique.h"
@@ -30,6 +31,7 @@ public:
     PcssVulkan();
     ~PcssVulkan() override;
     void setScene(const Scene& scene) override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     /// As PcssGL: the light fits, the culling bounds and each light's parameters follow the scene.
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
@@ -38,6 +40,7 @@ public:
     const MapTexels* mapTexels() const override { return &mLights; }
 
 private:
+    ContactShadowsVulkan mContact; ///< contact=on: the view depth pre-pass and its set 2
     void release();
     void createDescriptors(VulkanContext& context);
     void fitLightSizes(const Scene& scene); ///< mParams for the current fits and light_size

@@ -64,41 +64,36 @@ std::vector<PropertyDesc> declareProperties() {
         LightFitProperties::fit("map", "spot lights take their cone"),
         LightFitProperties::fitMargin(),
     };
-    const std::vector<PropertyDesc> contact = ContactShadows::properties();
-    out.insert(out.end(), contact.begin(), contact.end());
     return out;
 }
 
 } // namespace
 
 TechniqueInfo ShadowMap::declaration() {
-    return {.name = "shadowmap",
-            .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
-                       Effect::MultipleLights,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
-            .properties = declareProperties(),
-            // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
-            .quality =
-                {
-                    {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
-                    P::pcfSweep(),
-                    P::biasConstantSweep(),
-                    P::biasSlopeSweep(),
-                    {kKernel, {"grid", "poisson", "rotated_grid"}},
-                    {kTaps, {"8", "16", "32"}},
-                    {kRadius, {"1", "1.5", "3"}},
-                    {kNormalOffset, {"0", "1", "2", "4"}},
-                    {kReceiverPlane, {"false", "true"}},
-                },
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                ResourceEstimate e = squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
-                if (!ContactShadows::enabled(p)) return e;
-                e.bytes += ViewDepth::bytes(in.width, in.height);
-                e.how += " + " + ViewDepth::describe(in.width, in.height, "contact");
-                return e;
-            }};
+    return ContactShadows::declare(
+        {.name = "shadowmap",
+         .description = "two-pass shadow mapping: depth from each light, compare in the lighting pass",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers |
+                    Effect::MultipleLights,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "lighting"},
+         .properties = declareProperties(),
+         // What `bench accuracy --sweep` walks, one knob at a time around the defaults.
+         .quality =
+             {
+                 {P::kResolution, {"256", "512", "1024", "2048", "4096"}},
+                 P::pcfSweep(),
+                 P::biasConstantSweep(),
+                 P::biasSlopeSweep(),
+                 {kKernel, {"grid", "poisson", "rotated_grid"}},
+                 {kTaps, {"8", "16", "32"}},
+                 {kRadius, {"1", "1.5", "3"}},
+                 {kNormalOffset, {"0", "1", "2", "4"}},
+                 {kReceiverPlane, {"false", "true"}},
+             },
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
+         }});
 }
 
 std::vector<glm::vec2> ShadowMap::kernelOffsets(const PropertySet& p) {

@@ -59,7 +59,7 @@ void ShadowMapGL::compile(const CompileContext& ctx) {
     mDrawAllIntoMap = injected(Injection::NoCasterCulling);
     Defines base = ctx.submitter.defines();
     mDepthProgram = &ctx.programs.get({"common/depth.vert", "common/depth.frag", ""}, base);
-    if (ContactShadows::enabled(p)) mViewDepth.compile(ctx.programs, base);
+    mContact.compile(p, ctx.programs, base);
     // The depth pass has no shadow to apply: only the lighting pass takes the scene's exceptions.
     const Defines lit = ShadowMap::lightingDefines(ctx.defines(), p, layers);
     mKernel = ShadowMap::kernelOffsets(p);
@@ -105,18 +105,16 @@ void ShadowMapGL::renderLighting(FrameContext& ctx) {
         glUniform2fv(kKernelLocation, GLsizei(mKernel.size()), glm::value_ptr(mKernel[0]));
     }
     glBindTextureUnit(0, mMaps.texture());
-    const bool contact = ContactShadows::enabled(properties());
-    if (contact) mViewDepth.bindForLighting(ContactShadows::block(properties()));
+    mContact.bind();
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
-    if (contact) ViewDepthGL::unbindForLighting();
+    mContact.unbind();
     glBindTextureUnit(0, 0);
 }
 
 void ShadowMapGL::execute(FrameContext& ctx) {
-    std::function<void()> viewDepth;
-    if (ContactShadows::enabled(properties())) viewDepth = [&] { mViewDepth.render(ctx); };
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, viewDepth, ContactShadows::kPass);
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, mContact.prePass(ctx),
+        ContactShadows::kPass);
     mCounters = ShadowMap::counters(s, mMaps.size(), mLights, mCulled);
 }
 

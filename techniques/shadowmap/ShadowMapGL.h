@@ -31,9 +31,9 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/FlatLightFits.h"
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
-#include "techniques/gl/ViewDepthGL.h"
 #include "techniques/shadowmap/DepthLayers.h"
 #include "techniques/shadowmap/ShadowMap.h"
 
@@ -69,8 +69,8 @@ private:
     bool mCull = true;              ///< leave out casters whose shadow cannot reach the view
     ViewCull mView;                 ///< for mCull: the lights, the receivers, the margins
     const Program* mDepthProgram = nullptr;
-    LitPrograms mLighting;  ///< the lighting pass's programs (non-receivers apart where they can be)
-    ViewDepthGL mViewDepth; ///< contact=on: the view's depth the lighting pass marches
+    LitPrograms mLighting;     ///< the lighting pass's programs (non-receivers apart where they can be)
+    ContactShadowsGL mContact; ///< contact=on: the view depth pre-pass and its binding
     Counters mCounters;
 };
 

@@ -115,11 +115,8 @@ void ShadowMapVulkan::compile(const VulkanCompileContext& ctx) {
     mCull = p.getBool(ShadowMap::kCull);
     fitTexels(ctx.scene);
     writeLightingBlock(float(ctx.targets.height()));
-    const bool contact = ContactShadows::enabled(p);
-    if (contact) mViewDepth.compile(ctx);
-    mLightingLayout = createScenePipelineLayout(
-        ctx, contact ? std::vector<VkDescriptorSetLayout>{mSets.layout(0), mViewDepth.lightingSetLayout()}
-                     : std::vector<VkDescriptorSetLayout>{mSets.layout(0)});
+    mContact.compile(p, ctx);
+    mLightingLayout = createScenePipelineLayout(ctx, mContact.lightingSets({mSets.layout(0)}));
     setPermutationKey(definesKey(base) + "|" +
                       mLighting.build(ctx, "common/scene.vert", "shadowmap/lighting.frag", lit,
                                       mLightingLayout, "shadowmap-lighting|"));
@@ -131,16 +128,14 @@ void ShadowMapVulkan::renderDepth(VulkanFrameContext& ctx) {
 }
 
 void ShadowMapVulkan::renderLighting(VulkanFrameContext& ctx) {
-    if (ContactShadows::enabled(properties()))
-        mViewDepth.bindForLighting(ctx.cmd, mLightingLayout, ContactShadows::block(properties()));
+    mContact.bind(ctx.cmd, mLightingLayout);
     mLighting.draw(ctx, mLightingLayout, mSets.set(0));
 }
 
 void ShadowMapVulkan::execute(VulkanFrameContext& ctx) {
-    std::function<void()> viewDepth;
-    if (ContactShadows::enabled(properties())) viewDepth = [&] { mViewDepth.record(ctx, ctx.cmd); };
     const SubmitStats s = DepthLightingFrame::run(
-        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, viewDepth, ContactShadows::kPass);
+        ctx, [&] { renderDepth(ctx); }, [&] { renderLighting(ctx); }, mContact.prePass(ctx),
+        ContactShadows::kPass);
     mCounters = ShadowMap::counters(s, mSize, mLights, mCulled);
 }
 

@@ -15,8 +15,8 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/FlatLightFits.h"
+#include "techniques/vulkan/ContactShadowsVulkan.h"
 #include "techniques/vulkan/LitPipelines.h"
-#include "techniques/vulkan/ViewDepthVulkan.h"
 #include "techniques/vulkan/VulkanFlatDepthPass.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
@@ -55,7 +55,7 @@ private:
     DescriptorSets mSets;        ///< the lighting pass's set 1
     VkPipelineLayout mLightingLayout = VK_NULL_HANDLE;
     LitPipelines mLighting;
-    ViewDepthVulkan mViewDepth; ///< contact=on: the view's depth the lighting pass marches
+    ContactShadowsVulkan mContact; ///< contact=on: the view depth pre-pass and its set 2
 
     std::vector<glm::vec2> mKernel;
     std::vector<float> mTexelWorld;

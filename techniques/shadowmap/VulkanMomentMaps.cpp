@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "scenes/ShadowWork.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/vulkan/ScenePass.h"
 #include "techniques/vulkan/VulkanDepthMaps.h"
 #include "vk/LayerPasses.h"
@@ -166,7 +167,7 @@ void VulkanMomentMaps::createPipelines(const VulkanCompileContext& ctx) {
     Defines lit = mSettings.lightingDefines;
     lit["SHADOW_MAP"] = ""; // common/scene.vert: vShadowCoord[i] = uShadowMatrix[i] * world
     lit["LIGHT_COUNT"] = std::to_string(mLayers);
-    mLightingLayout = createScenePipelineLayout(ctx, {mSets.layout(kLightingSet)});
+    mLightingLayout = createScenePipelineLayout(ctx, mContact.lightingSets({mSets.layout(kLightingSet)}));
     const std::string litPermutation = mLighting.build(ctx, "common/scene.vert", mSettings.lightingFragment,
                                                        lit, mLightingLayout, mOwner + "-lighting|");
     mKey = definesKey(mSettings.depthDefines) + "|" + litPermutation;
@@ -248,10 +249,16 @@ void VulkanMomentMaps::render(VulkanFrameContext& ctx) {
 Counters VulkanMomentMaps::renderFrame(VulkanFrameContext& ctx) {
     ctx.submitter.resetStats();
     double blurTexels = 0.0;
+    const std::function<void()> viewDepth = mContact.prePass(ctx);
     if (const char* reason = ShadowWork::noneNeeded(ctx.scene)) {
+        if (viewDepth) ctx.passes.skip(ContactShadows::kPass, reason);
         ctx.passes.skip("depth", reason);
         ctx.passes.skip("blur", reason);
     } else {
+        if (viewDepth) {
+            ctx.passes.begin(ContactShadows::kPass);
+            viewDepth();
+        }
         ctx.passes.begin("depth");
         render(ctx);
         if (mBlur.radius() > 0) {
@@ -262,6 +269,7 @@ Counters VulkanMomentMaps::renderFrame(VulkanFrameContext& ctx) {
         }
     }
     ctx.passes.begin("lighting");
+    mContact.bind(ctx.cmd, mLightingLayout);
     mLighting.draw(ctx, mLightingLayout, mSets.set(kLightingSet));
     return mFits.counters(ctx.submitter.stats(), mSettings.resolution, blurTexels, mCulled);
 }

@@ -14,12 +14,14 @@
 // (ShadowMapBlock: shadow matrices, depth parameters, the margin and the technique's two parameters),
 // all written in compile() and when the scene moves: a frame writes no descriptor.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "techniques/shadowmap/MomentMapFits.h"
+#include "techniques/vulkan/ContactShadowsVulkan.h"
 #include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanSeparableBlur.h"
 #include "techniques/vulkan/VulkanTechnique.h"
@@ -52,6 +54,9 @@ public:
 
     /// The light fits; fit() them before compile().
     MomentMapFits& fits() { return mFits; }
+    /// Contact shadows (techniques/vulkan/ContactShadowsVulkan.h): compile() it before compile(); the
+    /// lighting pipeline takes its set, and renderFrame() its pre-pass (pass "view_depth") and binding.
+    ContactShadowsVulkan& contact() { return mContact; }
     const MomentMapFits& fits() const { return mFits; }
     /// A scene in motion moved: the fits follow (MomentMapFits::sceneChanged) and the blocks are
     /// rewritten.
@@ -74,6 +79,7 @@ private:
 
     std::string mOwner;
     MomentMapFits mFits;
+    ContactShadowsVulkan mContact;
     Settings mSettings;
     VkDevice mDevice = VK_NULL_HANDLE;
     int mLayers = 0;

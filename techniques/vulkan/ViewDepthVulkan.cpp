@@ -130,19 +130,7 @@ void ViewDepthVulkan::record(const VulkanFrameContext& ctx, VkCommandBuffer cmd)
     const glm::mat4 m = VulkanFrameBlock::clipFromGl() * ctx.proj * ctx.view;
     std::memcpy(mMatrix.map(), &m, sizeof m); // the previous frame's fence was waited for
     mProj = ctx.proj;
-    VkClearValue clear{};
-    clear.depthStencil = {ViewDepth::kClear, 0};
-    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    info.renderPass = mPass;
-    info.framebuffer = mFramebuffer;
-    info.renderArea.extent = {mWidth, mHeight};
-    info.clearValueCount = 1;
-    info.pClearValues = &clear;
-    vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(mWidth), float(mHeight), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {mWidth, mHeight}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    LayerPasses::beginDepthPass(cmd, mPass, mFramebuffer, {mWidth, mHeight}, ViewDepth::kClear);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline);
     ctx.frame.bind(cmd, mLayout, ctx.frameOffset);
     const VkDescriptorSet set = mSet.set(0);

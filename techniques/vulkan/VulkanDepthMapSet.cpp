@@ -108,19 +108,7 @@ std::string VulkanDepthMapSet::biasKey(const PropertySet& properties) {
 }
 
 void VulkanDepthMapSet::begin(VkCommandBuffer cmd, size_t index) const {
-    VkClearValue clear{};
-    clear.depthStencil = {1.0f, 0};
-    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    info.renderPass = mPass;
-    info.framebuffer = mFramebuffers[index];
-    info.renderArea.extent = {mSize, mSize};
-    info.clearValueCount = 1;
-    info.pClearValues = &clear;
-    vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
-    const VkViewport viewport{0.0f, 0.0f, float(mSize), float(mSize), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {mSize, mSize}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    LayerPasses::beginDepthPass(cmd, mPass, mFramebuffers[index], {mSize, mSize}, 1.0f);
 }
 
 } // namespace sb
