@@ -6,6 +6,7 @@
 // most the stored one.
 #include "common/frame.glsl"
 #include "common/lighting.glsl"
+#include "common/contact_shadow.glsl"
 #include "virtual/page_table.glsl"
 
 in vec3 vWorldPos;
@@ -60,7 +61,9 @@ void main() {
     vec3 light = ambientLight();
     vec4 vis = vec4(1.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vis[i] = i == MAPPED_LIGHT && shadowApplies(i, vColorId) ? visibility(c, p, t, level) : 1.0;
+        vis[i] = i == MAPPED_LIGHT && shadowApplies(i, vColorId)
+                     ? contactLimited(i, visibility(c, p, t, level), vWorldPos, n)
+                     : 1.0;
         light += vis[i] * lightTerm(i, vWorldPos, n);
     }
     oColor = vec4(vColorId.rgb * light, 1.0);

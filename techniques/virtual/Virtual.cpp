@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "techniques/ContactShadows.h"
 #include "techniques/Property.h"
 #include "techniques/ResourceEstimate.h"
 #include "techniques/ShadowMapProperties.h"
@@ -47,21 +48,22 @@ std::vector<PropertyDesc> declareProperties() {
 } // namespace
 
 TechniqueInfo Virtual::declaration() {
-    return {.name = "virtual",
-            .description = "virtual shadow maps: a 16k map in 128^2 pages backed by a pool, only the pages "
-                           "visible receivers read drawn (imageAtomicMin), at the mip level of their pixel, "
-                           "kept across frames until the light or a caster over them moves (Epic Games, "
-                           "Unreal Engine 5 documentation, Virtual Shadow Maps, the sections on pages and "
-                           "caching; Sakmary et al., Virtual Shadow Maps, GPU Zen 3, ch. 12)",
-            .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers,
-            .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
-            .passes = {"depth", "lighting"},
-            .properties = declareProperties(),
-            .quality = {P::pcfSweep(), P::biasConstantSweep(), P::biasSlopeSweep()},
-            .resources = [](const PropertySet& p, const ResourceInputs& in) {
-                const PageGeometry g = geometry(p);
-                return squareMaps(g.atlasResolution(), kDepthTexelBytes, 1, in);
-            }};
+    return ContactShadows::declare(
+        {.name = "virtual",
+         .description = "virtual shadow maps: a 16k map in 128^2 pages backed by a pool, only the pages "
+                        "visible receivers read drawn (imageAtomicMin), at the mip level of their pixel, "
+                        "kept across frames until the light or a caster over them moves (Epic Games, "
+                        "Unreal Engine 5 documentation, Virtual Shadow Maps, the sections on pages and "
+                        "caching; Sakmary et al., Virtual Shadow Maps, GPU Zen 3, ch. 12)",
+         .effects = Effect::HardShadows | Effect::SelfShadowing | Effect::NonPlanarReceivers,
+         .capabilities = {{Api::GL, "GL 4.5", 4, 5, ""}},
+         .passes = {"depth", "lighting"},
+         .properties = declareProperties(),
+         .quality = {P::pcfSweep(), P::biasConstantSweep(), P::biasSlopeSweep()},
+         .resources = [](const PropertySet& p, const ResourceInputs& in) {
+             const PageGeometry g = geometry(p);
+             return squareMaps(g.atlasResolution(), kDepthTexelBytes, 1, in);
+         }});
 }
 
 PageGeometry Virtual::geometry(const PropertySet& p) {

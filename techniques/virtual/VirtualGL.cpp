@@ -7,6 +7,7 @@
 
 #include "core/Error.h"
 #include "scenes/Motion.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/ShadowMapProperties.h"
@@ -69,6 +70,10 @@ void VirtualGL::release() {
     mEmptyFbo = 0;
 }
 
+void VirtualGL::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), Virtual::declaration().passes);
+}
+
 void VirtualGL::setScene(const Scene& scene) {
     mMaps.setScene(scene, properties());
     mCulling.setScene(scene);
@@ -103,7 +108,9 @@ void VirtualGL::compile(const CompileContext& ctx) {
     mMarkProgram = &ctx.programs.get({"common/scene.vert", "virtual/mark.frag", ""}, ctx.defines());
     mPageProgram =
         &ctx.programs.get({"common/depth.vert", "virtual/page_depth.frag", ""}, ctx.submitter.defines());
+    mContact.compile(p, ctx.programs, ctx.submitter.defines());
     Defines lit = ctx.defines();
+    ContactShadows::addDefines(p, lit);
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, ctx.scene.lights.size()));
     lit["MAPPED_LIGHT"] = std::to_string(mMaps.light());
     setPermutationKey(mMarkProgram->key() + "|" + mPageProgram->key() + "|" +
@@ -195,7 +202,9 @@ void VirtualGL::renderLighting(FrameContext& ctx) {
     glUniformMatrix4fv(kLightMatrixLocation, 1, GL_FALSE, glm::value_ptr(shadow));
     glBindTextureUnit(0, mAtlas);
     glBindTextureUnit(1, mTable);
+    mContact.bind();
     mLighting.draw(ctx.submitter, cameraCullView(ctx));
+    mContact.unbind();
     glBindTextureUnit(0, 0);
     glBindTextureUnit(1, 0);
 }
@@ -210,7 +219,7 @@ void VirtualGL::execute(FrameContext& ctx) {
             allocatePages();
             renderPages(ctx);
         },
-        [&] { renderLighting(ctx); });
+        [&] { renderLighting(ctx); }, mContact.prePass(ctx), ContactShadows::kPass);
     mCounters = mMaps.counters(s);
 }
 

@@ -23,6 +23,7 @@
 #include <epoxy/gl.h>
 
 #include "scenes/InstanceCulling.h"
+#include "techniques/gl/ContactShadowsGL.h"
 #include "techniques/gl/GlTechnique.h"
 #include "techniques/gl/LitPrograms.h"
 #include "techniques/virtual/VirtualMaps.h"
@@ -33,6 +34,7 @@ class VirtualGL final : public GlTechnique {
 public:
     VirtualGL();
     ~VirtualGL() override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void setScene(const Scene& scene) override;
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const CompileContext& ctx) override;
@@ -60,6 +62,7 @@ private:
     const Program* mMarkProgram = nullptr;
     const Program* mPageProgram = nullptr;
     LitPrograms mLighting;
+    ContactShadowsGL mContact; ///< contact=on: the view depth pre-pass and its binding
     Counters mCounters;
 };
 

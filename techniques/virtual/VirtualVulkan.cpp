@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "core/Strings.h"
 #include "scenes/Motion.h"
+#include "techniques/ContactShadows.h"
 #include "techniques/DepthLightingFrame.h"
 #include "techniques/FlatLightFits.h"
 #include "techniques/ShadowMapProperties.h"
@@ -160,6 +161,10 @@ std::string VirtualVulkan::checkCapabilities(const VulkanContext& context) const
            ", Vulkan " + context.info().apiVersion + ")";
 }
 
+void VirtualVulkan::propertiesApplied() {
+    mutableInfo().passes = ContactShadows::passes(properties(), Virtual::declaration().passes);
+}
+
 void VirtualVulkan::setScene(const Scene& scene) {
     mMaps.setScene(scene, properties());
     mCulling.setScene(scene);
@@ -307,7 +312,8 @@ void VirtualVulkan::createResources(const VulkanCompileContext& ctx) {
         mSets.writeImage(i, 3, mSampler, mSparse ? mSparseView : mAtlas.view(), VK_IMAGE_LAYOUT_GENERAL);
         mSets.writeImage(i, 4, mSampler, mTable.view(), VK_IMAGE_LAYOUT_GENERAL);
     }
-    mLayout = createScenePipelineLayout(ctx, {mSets.layout(0)});
+    mContact.compile(properties(), ctx);
+    mLayout = createScenePipelineLayout(ctx, mContact.lightingSets({mSets.layout(0)}));
 
     // The marking pass: the view's depth, then the marks' stores; after it the marks are copied out.
     LayerPasses::PassDesc mark;
@@ -357,6 +363,7 @@ void VirtualVulkan::createPipelines(const VulkanCompileContext& ctx) {
     mPages = ctx.pipelines.get(pageKey + (p.depthClamp ? "|clamp" : ""), p);
     Defines lit = ctx.defines();
     if (mSparse) lit["VIRTUAL_SPARSE"] = "";
+    ContactShadows::addDefines(properties(), lit);
     lit["LIGHT_COUNT"] = std::to_string(std::max<size_t>(1, ctx.scene.lights.size()));
     lit["MAPPED_LIGHT"] = std::to_string(mMaps.light());
     setPermutationKey(definesKey(mark) + "|" + definesKey(depth) + "|" +
@@ -492,7 +499,11 @@ void VirtualVulkan::execute(VulkanFrameContext& ctx) {
             markAndAllocate(ctx);
             recordPages(ctx);
         },
-        [&] { mLighting.draw(ctx, mLayout, mSets.set(0)); });
+        [&] {
+            mContact.bind(ctx.cmd, mLayout);
+            mLighting.draw(ctx, mLayout, mSets.set(0));
+        },
+        mContact.prePass(ctx), ContactShadows::kPass);
     mCounters = mMaps.counters(s);
 }
 

@@ -25,6 +25,7 @@
 
 #include "scenes/InstanceCulling.h"
 #include "techniques/virtual/VirtualMaps.h"
+#include "techniques/vulkan/ContactShadowsVulkan.h"
 #include "techniques/vulkan/LitPipelines.h"
 #include "techniques/vulkan/VulkanTechnique.h"
 #include "vk/DescriptorSets.h"
@@ -38,6 +39,7 @@ public:
     VirtualVulkan();
     ~VirtualVulkan() override;
     std::string checkCapabilities(const VulkanContext& context) const override;
+    void propertiesApplied() override; ///< contact=on's pass "view_depth"
     void setScene(const Scene& scene) override;
     void sceneChanged(const Scene& scene, uint32_t changes) override;
     void compile(const VulkanCompileContext& ctx) override;
@@ -84,6 +86,7 @@ private:
     VkFramebuffer mMarkFramebuffer = VK_NULL_HANDLE, mPageFramebuffer = VK_NULL_HANDLE;
     VkPipeline mMarkDepth = VK_NULL_HANDLE, mMarkEqual = VK_NULL_HANDLE, mPages = VK_NULL_HANDLE; ///< cached
     LitPipelines mLighting;
+    ContactShadowsVulkan mContact; ///< contact=on: the view depth pre-pass and its set 2
     VkExtent2D mViewExtent{0, 0};
     bool mSparse = false;
     VkImage mSparseImage = VK_NULL_HANDLE;
