@@ -35,9 +35,11 @@ class VulkanContext;
 
 class GpuSilhouettesVulkan {
 public:
-    /// Faces per workgroup of volume/silhouette.mesh: 7 vertices and at most 7 triangles each, so 224
-    /// of each per workgroup (lavapipe of Mesa 25.0.7 offers 256).
-    static constexpr uint32_t kFacesPerGroup = 32;
+    /// Faces per workgroup of volume/silhouette.mesh: at most 7 vertices and 7 triangles each, so 56 of
+    /// each per workgroup (lavapipe of Mesa 25.0.7 offers 256). 8 (one invocation per lane of
+    /// llvmpipe's 256-bit vectors) was the fastest tried there, side by side on aircraft x40 at 160x160:
+    /// wall time 56 ms at 8 faces, 64 at 16, 71 at 4, 76 at 32 (one run each, noisy shared machine).
+    static constexpr uint32_t kFacesPerGroup = 8;
     /// The defines volume/silhouette.mesh is built with (FACES_PER_GROUP).
     static Defines meshDefines();
     /// What the mesh path needs of `context` that it lacks (the meshShader feature, its output and
