@@ -83,6 +83,8 @@ GLenum glStage(ShaderStage stage) {
         return GL_FRAGMENT_SHADER;
     case ShaderStage::Compute:
         return GL_COMPUTE_SHADER;
+    case ShaderStage::Mesh: // VK_EXT_mesh_shader's stage: no GL program has one
+        throw Error("gl: a mesh shader stage is Vulkan only", ExitCode::Unsupported);
     }
     return GL_NONE;
 }

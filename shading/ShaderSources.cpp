@@ -6,7 +6,11 @@ namespace sb {
 
 std::vector<std::pair<ShaderStage, const std::string*>> ShaderSources::stages() const {
     if (!compute.empty()) return {{ShaderStage::Compute, &compute}};
-    std::vector<std::pair<ShaderStage, const std::string*>> out = {{ShaderStage::Vertex, &vertex}};
+    std::vector<std::pair<ShaderStage, const std::string*>> out;
+    if (!mesh.empty())
+        out.emplace_back(ShaderStage::Mesh, &mesh);
+    else
+        out.emplace_back(ShaderStage::Vertex, &vertex);
     if (!geometry.empty()) out.emplace_back(ShaderStage::Geometry, &geometry);
     if (!fragment.empty()) out.emplace_back(ShaderStage::Fragment, &fragment);
     return out;
@@ -24,7 +28,7 @@ std::string ShaderSources::programName() const {
 
 std::string ShaderSources::describe() const {
     if (!compute.empty()) return "compute '" + compute + "'";
-    std::string text = "vertex '" + vertex + "'";
+    std::string text = mesh.empty() ? "vertex '" + vertex + "'" : "mesh '" + mesh + "'";
     if (!fragment.empty()) text += ", fragment '" + fragment + "'";
     if (!geometry.empty()) text += ", geometry '" + geometry + "'";
     return text;

@@ -14,9 +14,11 @@ struct ShaderSources {
     std::string fragment; ///< may be "" for depth-only programs
     std::string geometry; ///< optional
     std::string compute;  ///< a compute program: this stage alone (vertex and fragment left "")
+    /// A mesh pipeline (Vulkan, VK_EXT_mesh_shader): this stage instead of vertex (left "") and geometry.
+    std::string mesh;
 
-    /// The stages present, in pipeline order (vertex, geometry, fragment; or compute alone), each with
-    /// its file.
+    /// The stages present, in pipeline order (vertex, geometry, fragment; mesh, fragment; or compute
+    /// alone), each with its file.
     std::vector<std::pair<ShaderStage, const std::string*>> stages() const;
     /// "common-scene.vert+shadowmap-lighting.frag": the files in pipeline order, '/' as '-', joined by '+'.
     std::string programName() const;

@@ -14,6 +14,7 @@ constexpr StageNames kStages[] = {
     {ShaderStage::Geometry, "SB_GEOMETRY_SHADER", "geometry", "geometry.geom"},
     {ShaderStage::Fragment, "SB_FRAGMENT_SHADER", "fragment", "fragment.frag"},
     {ShaderStage::Compute, "SB_COMPUTE_SHADER", "compute", "compute.comp"},
+    {ShaderStage::Mesh, "SB_MESH_SHADER", "mesh", "mesh.mesh"},
 };
 
 const StageNames& namesOf(ShaderStage stage) {

@@ -17,6 +17,7 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     };
     addStage(VK_SHADER_STAGE_VERTEX_BIT, desc.vertex);
     addStage(VK_SHADER_STAGE_GEOMETRY_BIT, desc.geometry);
+    addStage(VK_SHADER_STAGE_MESH_BIT_EXT, desc.mesh);
     addStage(VK_SHADER_STAGE_FRAGMENT_BIT, desc.fragment);
 
     VkPipelineVertexInputStateCreateInfo vertexInput{
@@ -109,8 +110,9 @@ VkPipeline createGraphicsPipeline(VulkanContext& context, const GraphicsPipeline
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     info.stageCount = static_cast<uint32_t>(stages.size());
     info.pStages = stages.data();
-    info.pVertexInputState = &vertexInput;
-    info.pInputAssemblyState = &assembly;
+    // A mesh pipeline has neither state (the spec ignores them; null says so).
+    info.pVertexInputState = desc.mesh ? nullptr : &vertexInput;
+    info.pInputAssemblyState = desc.mesh ? nullptr : &assembly;
     info.pViewportState = &viewport;
     info.pRasterizationState = &raster;
     info.pMultisampleState = &multisample;

@@ -15,6 +15,10 @@ struct GraphicsPipelineDesc {
     VkShaderModule vertex = VK_NULL_HANDLE;
     VkShaderModule fragment = VK_NULL_HANDLE; ///< VK_NULL_HANDLE: depth only
     VkShaderModule geometry = VK_NULL_HANDLE;
+    /// A mesh pipeline (VK_EXT_mesh_shader, the meshShader feature): this stage instead of vertex and
+    /// geometry (both left null); bindings, attributes and topology are then ignored (no vertex input
+    /// or input assembly state: the mesh shader makes its primitives).
+    VkShaderModule mesh = VK_NULL_HANDLE;
     std::vector<VkVertexInputBindingDescription> bindings;
     std::vector<VkVertexInputAttributeDescription> attributes;
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;

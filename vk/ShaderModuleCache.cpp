@@ -48,6 +48,8 @@ EShLanguage language(ShaderStage stage) {
         return EShLangGeometry;
     case ShaderStage::Compute:
         return EShLangCompute;
+    case ShaderStage::Mesh:
+        return EShLangMesh;
     }
     throw Error("vulkan: unknown shader stage", ExitCode::Failure);
 }
@@ -115,6 +117,7 @@ ShaderModules ShaderModuleCache::get(const ShaderSources& sources, const Defines
         const VkShaderModule module = get(*file, defines, stage);
         (stage == ShaderStage::Vertex     ? modules.vertex
          : stage == ShaderStage::Geometry ? modules.geometry
+         : stage == ShaderStage::Mesh     ? modules.mesh
                                           : modules.fragment) = module;
     }
     return modules;

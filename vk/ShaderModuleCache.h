@@ -5,10 +5,11 @@
 // instead of the compatibility profile; glslang targeting Vulkan predefines VULKAN, so a shader keeps
 // one source and puts its Vulkan-only layout (push constants, descriptor sets) in small `#ifdef VULKAN`
 // blocks. A stage that enables GL_EXT_ray_query (`#extension GL_EXT_ray_query : require`, which needs
-// GLSL 460) is compiled as "#version 460"; every stage targets Vulkan 1.2 and SPIR-V 1.5, which ray queries
-// need (SPIR-V 1.4 or later). Compile errors throw sb::Error(Failure) naming the file and line as the GL
-// cache does. With a dump directory (bench --dump-shaders DIR) every stage handed out is written as compiled,
-// in the GL cache's layout (shading/ShaderDump.h).
+// GLSL 460) is compiled as "#version 460"; a mesh stage (ShaderStage::Mesh, GL_EXT_mesh_shader) stays 450;
+// every stage targets Vulkan 1.2 and SPIR-V 1.5, which ray queries need (SPIR-V 1.4 or later). Compile errors
+// throw sb::Error(Failure) naming the file and line as the GL cache does. With a dump directory (bench
+// --dump-shaders DIR) every stage handed out is written as compiled, in the GL cache's layout
+// (shading/ShaderDump.h).
 #include <map>
 #include <memory>
 #include <string>
@@ -28,7 +29,8 @@ class VulkanContext;
 
 /// The modules of one pipeline's stages (VK_NULL_HANDLE where the sources have none).
 struct ShaderModules {
-    VkShaderModule vertex = VK_NULL_HANDLE, geometry = VK_NULL_HANDLE, fragment = VK_NULL_HANDLE;
+    VkShaderModule vertex = VK_NULL_HANDLE, geometry = VK_NULL_HANDLE, fragment = VK_NULL_HANDLE,
+                   mesh = VK_NULL_HANDLE;
 };
 
 class ShaderModuleCache {

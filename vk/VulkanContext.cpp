@@ -380,6 +380,22 @@ bool VulkanContext::offersRayQuery() {
     return mMissingRayQueryFeatures.empty();
 }
 
+bool VulkanContext::offersMeshShader() {
+    mMeshProperties = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_PROPERTIES_EXT};
+    if (!hasDeviceExtension(VK_EXT_MESH_SHADER_EXTENSION_NAME) || mProperties.apiVersion < VK_API_VERSION_1_2)
+        return false;
+    VkPhysicalDeviceMeshShaderFeaturesEXT mesh{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &mesh;
+    vkGetPhysicalDeviceFeatures2(mPhysical, &features);
+    if (!mesh.meshShader) return false;
+    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    properties.pNext = &mMeshProperties;
+    vkGetPhysicalDeviceProperties2(mPhysical, &properties);
+    mMeshProperties.pNext = nullptr;
+    return true;
+}
+
 bool VulkanContext::hasDeviceExtension(const std::string& name) const {
     return std::find(mDeviceExtensions.begin(), mDeviceExtensions.end(), name) != mDeviceExtensions.end();
 }
@@ -440,30 +456,54 @@ void VulkanContext::createDevice() {
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
     info.pEnabledFeatures = &enabled;
-    // Ray queries: the extensions and a features chain, only where the device offers all of them (with
-    // the chain, the core features travel in VkPhysicalDeviceFeatures2 instead of pEnabledFeatures).
+    // Ray queries and mesh shaders: the extensions and a features chain, each only where the device
+    // offers all of it (with a chain, the core features travel in VkPhysicalDeviceFeatures2 instead of
+    // pEnabledFeatures). A device offering neither is created exactly as before.
     mRayQuery = offersRayQuery();
+    mMeshShader = offersMeshShader();
+    std::vector<const char*> extensions;
     VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
     VkPhysicalDeviceAccelerationStructureFeaturesKHR structures{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
     VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceMeshShaderFeaturesEXT mesh{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT};
     VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features2.features = enabled;
+    void** tail = &features2.pNext; // where the next structure of the chain goes
     if (mRayQuery) {
         rayQuery.rayQuery = VK_TRUE;
         structures.accelerationStructure = VK_TRUE;
         structures.pNext = &rayQuery;
         vulkan12.bufferDeviceAddress = VK_TRUE;
         vulkan12.pNext = &structures;
-        features2.features = enabled;
-        features2.pNext = &vulkan12;
+        *tail = &vulkan12;
+        tail = &rayQuery.pNext;
+        extensions.assign(kRayQueryExtensions.begin(), kRayQueryExtensions.end());
+    }
+    if (mMeshShader) { // volume's extrusion=mesh: the mesh stage only (no task shader is used)
+        mesh.meshShader = VK_TRUE;
+        *tail = &mesh;
+        tail = &mesh.pNext;
+        extensions.push_back(VK_EXT_MESH_SHADER_EXTENSION_NAME);
+    }
+    if (features2.pNext) {
         info.pNext = &features2;
         info.pEnabledFeatures = nullptr;
-        info.enabledExtensionCount = uint32_t(kRayQueryExtensions.size());
-        info.ppEnabledExtensionNames = kRayQueryExtensions.data();
+        info.enabledExtensionCount = uint32_t(extensions.size());
+        info.ppEnabledExtensionNames = extensions.data();
     }
     check(vkCreateDevice(mPhysical, &info, nullptr, &mDevice), "vkCreateDevice");
     vkGetDeviceQueue(mDevice, mQueueFamily, 0, &mQueue);
     if (mRayQuery) mRayQueryFunctions = RayQueryFunctions::load(mDevice);
+    if (mMeshShader) {
+        mCmdDrawMeshTasks = reinterpret_cast<PFN_vkCmdDrawMeshTasksEXT>(
+            vkGetDeviceProcAddr(mDevice, "vkCmdDrawMeshTasksEXT"));
+        if (!mCmdDrawMeshTasks)
+            throw Error("vulkan: device '" + mInfo.name +
+                            "' offers VK_EXT_mesh_shader but returns no "
+                            "vkCmdDrawMeshTasksEXT",
+                        ExitCode::Failure);
+    }
 
     VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;

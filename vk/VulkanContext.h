@@ -19,6 +19,11 @@
 // is created exactly as before, so no other technique runs on a device configured differently. rayQuery()
 // says whether they are on, and then rayQueryFunctions() holds the extension's entry points.
 //
+// Mesh shaders (volume's extrusion=mesh): VK_EXT_mesh_shader with its meshShader feature, enabled only
+// where the device offers both (lavapipe of Mesa 25.0.7 does, 22.3.6 does not), as ray queries are;
+// meshShader() says whether it is on, meshShaderProperties() holds the device's limits and
+// cmdDrawMeshTasks() the draw (vkCmdDrawMeshTasksEXT, fetched from the device).
+//
 // Validation: with `validation` on, the Khronos validation layer (VK_LAYER_KHRONOS_validation) is enabled
 // and a VK_EXT_debug_utils messenger records every message of severity warning or error. Tests run with
 // it on and require validationErrors() == 0; timed runs leave it off (the layer's checks would be
@@ -100,6 +105,12 @@ public:
     /// The features ray queries need that the device lacks although it offers the extensions
     /// ("accelerationStructure", "rayQuery", "bufferDeviceAddress"); empty where it has them all.
     const std::vector<std::string>& missingRayQueryFeatures() const { return mMissingRayQueryFeatures; }
+    /// Whether VK_EXT_mesh_shader and its meshShader feature are on (the device offers both).
+    bool meshShader() const { return mMeshShader; }
+    /// The device's mesh shader limits (zeroed unless meshShader()).
+    const VkPhysicalDeviceMeshShaderPropertiesEXT& meshShaderProperties() const { return mMeshProperties; }
+    /// vkCmdDrawMeshTasksEXT; null unless meshShader().
+    PFN_vkCmdDrawMeshTasksEXT cmdDrawMeshTasks() const { return mCmdDrawMeshTasks; }
     /// Whether the physical device offers device extension `name` ("VK_KHR_ray_query").
     bool hasDeviceExtension(const std::string& name) const;
 
@@ -136,6 +147,8 @@ private:
     /// Whether the device offers every extension and feature of ray queries (fills
     /// mMissingRayQueryFeatures); false without querying features where an extension is missing.
     bool offersRayQuery();
+    /// Whether the device offers VK_EXT_mesh_shader with the meshShader feature (fills mMeshProperties).
+    bool offersMeshShader();
     void destroy(); ///< releases whatever was created (the destructor, and a constructor that throws)
 
     VkInstance mInstance = VK_NULL_HANDLE;
@@ -158,6 +171,9 @@ private:
     bool mSparseResidency = false;
     bool mRayQuery = false;
     RayQueryFunctions mRayQueryFunctions;
+    bool mMeshShader = false;
+    VkPhysicalDeviceMeshShaderPropertiesEXT mMeshProperties{};
+    PFN_vkCmdDrawMeshTasksEXT mCmdDrawMeshTasks = nullptr;
     std::vector<std::string> mMissingRayQueryFeatures;
     std::vector<std::string> mMessages;
     size_t mErrors = 0;

@@ -39,12 +39,6 @@ layout(location = 8) uniform uint uVertexBase;  // this mesh's first doubled ent
 layout(std430, binding = 0) buffer Count {
     uint uTriangles;
 };
-struct Face {
-    uvec4 vertices;   // welded indices, counter-clockwise
-    uvec4 neighbours; // the face across (v0, v1), (v1, v2), (v2, v0)
-    vec4 normal;      // unnormalised, as ShadowVolumeMesh::faceNormals
-    vec4 first;       // the face's first vertex
-};
 layout(std430, binding = 1) readonly buffer Faces {
     Face uFaces[];
 };

@@ -21,6 +21,14 @@ bool backFacing(vec3 n, vec3 p0, vec4 light) {
     return d < 0.0;
 }
 
+// silhouette.comp's and silhouette.mesh's face record (techniques/volume/SilhouetteInputs.h, std430).
+struct Face {
+    uvec4 vertices;   // welded indices, counter-clockwise
+    uvec4 neighbours; // the face across (v0, v1), (v1, v2), (v2, v0)
+    vec4 normal;      // unnormalised, as ShadowVolumeMesh::faceNormals
+    vec4 first;       // the face's first vertex
+};
+
 // Triangles a face contributes: its cap (1 or 0) and 2 per side (1 directional).
 uint sideTriangles(uint flags) {
     return (flags & SV_DIRECTIONAL) != 0u ? 1u : 2u;

@@ -174,8 +174,15 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
     const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
     if (geometry) volume["GPU_SILHOUETTES"] = "";
     if (settings.extrusion == VolumePlanner::Extrusion::Compute) volume["PULLED"] = "";
-    const ShaderSources volumeSources{"volume/extrude.vert", "volume/stencil.frag",
-                                      geometry ? "volume/silhouette.geom" : ""};
+    // extrusion=mesh: volume/silhouette.mesh instead of the vertex stage (no vertex input).
+    const bool mesh = settings.extrusion == VolumePlanner::Extrusion::Mesh;
+    if (mesh) volume = GpuSilhouettesVulkan::meshDefines();
+    ShaderSources volumeSources{"volume/extrude.vert", "volume/stencil.frag",
+                                geometry ? "volume/silhouette.geom" : ""};
+    if (mesh) {
+        volumeSources.vertex.clear();
+        volumeSources.mesh = "volume/silhouette.mesh";
+    }
     std::string volumeKeys;
     for (int finite = 0; finite < 2; ++finite) {
         if (finite && !(settings.finiteVolumes || settings.boundedVolumes)) continue;
@@ -186,6 +193,7 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
             d.vertex = modules.vertex;
             d.geometry = modules.geometry;
             d.fragment = modules.fragment;
+            d.mesh = modules.mesh;
             describeVolumeInput(d);
             d.layout = mMarkLayout ? mMarkLayout : mLayout;
             d.depthClamp = clamp;
@@ -207,8 +215,8 @@ void VolumeVulkan::buildPipelines(const VulkanCompileContext& ctx) {
                     stencilOps(VK_COMPARE_OP_ALWAYS, VK_STENCIL_OP_DECREMENT_AND_WRAP, VK_STENCIL_OP_KEEP);
             }
             key = "volume-mark" + state + "zfail=" + std::to_string(zfail) +
-                  "|volume/extrude.vert+volume/stencil.frag" + (geometry ? "+volume/silhouette.geom" : "") +
-                  "[" + definesKey(volume) + "]";
+                  (mesh ? "|volume/silhouette.mesh" : "|volume/extrude.vert") + "+volume/stencil.frag" +
+                  (geometry ? "+volume/silhouette.geom" : "") + "[" + definesKey(volume) + "]";
             mMark[finite][zfail].build(ctx.pipelines, key, d, ctx.targets);
         }
         volumeKeys += "|" + definesKey(volume);
@@ -229,7 +237,8 @@ void VolumeVulkan::describeVolumeInput(GraphicsPipelineDesc& d) const {
                         {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, vec4},
                         {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 2 * vec4}};
         d.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY;
-    } else if (settings.extrusion != VolumePlanner::Extrusion::Compute) { // compute: pulled, no input
+    } else if (settings.extrusion != VolumePlanner::Extrusion::Compute &&
+               settings.extrusion != VolumePlanner::Extrusion::Mesh) { // compute: pulled; mesh: no input
         d.bindings = {{0, vec4, VK_VERTEX_INPUT_RATE_VERTEX}};
         d.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
     }
@@ -239,10 +248,17 @@ void VolumeVulkan::createSilhouettes(const VulkanCompileContext& ctx) {
     const VolumePlanner::Settings& settings = mPlanner.settings();
     if (!settings.gpuSilhouettes()) return;
     const std::string& device = ctx.context.info().name;
-    if (settings.extrusion == VolumePlanner::Extrusion::Mesh)
-        throw Error("volume: extrusion=mesh is not built on Vulkan yet (geometry and compute are): "
-                    "unsupported here, skipped",
-                    ExitCode::Unsupported);
+    const bool mesh = settings.extrusion == VolumePlanner::Extrusion::Mesh;
+    if (mesh) {
+        size_t maxFaces = 0;
+        for (const MeshGpu& g : mMeshes)
+            if (g.mesh) maxFaces = std::max(maxFaces, g.mesh->faceCount());
+        const std::string problem = GpuSilhouettesVulkan::meshShaderProblem(ctx.context, maxFaces);
+        if (!problem.empty())
+            throw Error("volume: extrusion=mesh needs " + problem +
+                            ": unsupported here, skipped (run with extrusion=compute)",
+                        ExitCode::Unsupported);
+    }
     const bool geometry = settings.extrusion == VolumePlanner::Extrusion::Geometry;
     if (geometry) {
         // The geometry shader counts what it emits in a storage buffer: stores in a pre-rasterisation
@@ -261,10 +277,12 @@ void VolumeVulkan::createSilhouettes(const VulkanCompileContext& ctx) {
     }
     std::vector<const ShadowVolumeMesh*> meshes(mMeshes.size(), nullptr);
     for (size_t m = 0; m < mMeshes.size(); ++m) meshes[m] = mMeshes[m].mesh.get();
-    mSilhouettes.create(ctx, meshes, !geometry);
-    // The marking pipelines' own layout: set 1 the silhouettes' (the count, or the extracted entries),
-    // and for the geometry shader push constants in its stage too.
-    mMarkPushStages = geometry ? kPushStages | VK_SHADER_STAGE_GEOMETRY_BIT : kPushStages;
+    mSilhouettes.create(ctx, meshes, settings.extrusion);
+    // The marking pipelines' own layout: set 1 the silhouettes' (the count, the extracted entries, or
+    // the mesh shader's inputs), and for the geometry or mesh shader push constants in its stage too.
+    mMarkPushStages = geometry ? kPushStages | VK_SHADER_STAGE_GEOMETRY_BIT
+                      : mesh   ? kPushStages | VK_SHADER_STAGE_MESH_BIT_EXT
+                               : kPushStages;
     mMarkLayout = createPipelineLayout(ctx.context, {ctx.frame.setLayout(), mSilhouettes.markLayout()},
                                        sizeof(VulkanPush), mMarkPushStages);
 }
@@ -453,7 +471,8 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mMark[finite][counting].get(ctx.targets));
         }
         const MeshGpu& gpu = mMeshes[d.caster->mesh];
-        if (extrusion != Extrusion::Compute && d.caster->mesh != boundMesh) { // compute: set 1 has them
+        if (extrusion != Extrusion::Compute && extrusion != Extrusion::Mesh &&
+            d.caster->mesh != boundMesh) { // compute, mesh: set 1 has them
             const VkDeviceSize zero = 0;
             const VkBuffer vb = extrusion == Extrusion::Vertex     ? gpu.extrusionVertices.buffer()
                                 : extrusion == Extrusion::Geometry ? mSilhouettes.adjacency(d.caster->mesh)
@@ -468,6 +487,7 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
         push.vec = d.lightObject;
         if (finite) push.ints.y = floatBits(d.extrusion / d.caster->scale);
         push.ints.z = int32_t(d.gpuFlags);
+        push.ints.w = int32_t(d.caster->mesh); // extrusion=mesh: the mesh's bases (volume/silhouette.mesh)
         vkCmdPushConstants(cmd, layout, pushStages, 0, sizeof push, &push);
         if (extrusion == Extrusion::Cpu) {
             vkCmdDrawIndexed(cmd, d.count, 1, d.first, 0, 0);
@@ -475,6 +495,10 @@ void VolumeVulkan::markShadows(VulkanFrameContext& ctx, uint32_t frame, int ligh
         }
         if (extrusion == Extrusion::Compute) {
             mSilhouettes.drawIndirect(cmd, k);
+            continue;
+        }
+        if (extrusion == Extrusion::Mesh) {
+            mSilhouettes.drawMesh(cmd, d.caster->mesh);
             continue;
         }
         if (extrusion == Extrusion::Geometry) {

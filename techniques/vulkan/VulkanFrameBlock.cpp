@@ -26,12 +26,14 @@ VulkanFrameBlock::VulkanFrameBlock(VulkanContext& context) : mDevice(context.dev
     mStride = context.uniformStride(sizeof(FrameUniformData));
     mBuffer = VulkanBuffer(context, VkDeviceSize(mStride) * kSlots, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 
-    mSets =
-        DescriptorSets(mDevice,
-                       {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
-                                                 VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
-                                                     VK_SHADER_STAGE_FRAGMENT_BIT)}},
-                       "frame block");
+    // The mesh stage (volume's extrusion=mesh) only where the device has it on: a stage flag of a
+    // feature not enabled is invalid.
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
+                                      VK_SHADER_STAGE_FRAGMENT_BIT |
+                                      (context.meshShader() ? VK_SHADER_STAGE_MESH_BIT_EXT : 0);
+    mSets = DescriptorSets(mDevice,
+                           {{DescriptorSets::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, stages)}},
+                           "frame block");
     mSets.writeBuffer(0, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, mBuffer.buffer(),
                       sizeof(FrameUniformData));
 }
