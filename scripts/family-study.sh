@@ -18,7 +18,8 @@
 #             bias (512^2, 2000 / 32) and at each member's default bias, contact_point_sun (low) and
 #             contact_point_lamp (low), and its time side by side          contact_*.csv/.txt
 #   moments   light leak on the constructed overlaps (moments_bleeding, moments_bleeding_slab, camera
-#             crossing) and the time against vsm side by side on aircraft  moments_*.csv/.txt
+#             crossing), evsm's positive exponent swept on the slab, and the time against vsm side by
+#             side on aircraft                                             moments_*.csv/.txt
 # memory.txt: each configuration's resource estimate (techniques/ResourceEstimate.h), read from the
 # --max-memory-gib refusal, which names it (exit 2 on purpose; one aircraft at 16x16 keeps the scene and
 # the frame targets under the 1 MiB limit, so only the technique's maps exceed it).
@@ -138,9 +139,15 @@ section_contact() {
 section_moments() {
     local m=(-t vsm -t esm -t evsm:components=2 -t evsm -t msm -t msm:format=float)
     for s in moments_bleeding moments_bleeding_slab; do
-        run "moments_$s" accuracy "${m[@]}" --scene "$hard/$s.json" --camera crossing --size 384x384 \
+        run "moments_${s#moments_}" accuracy "${m[@]}" --scene "$hard/$s.json" --camera crossing --size 384x384 \
             --frames 3 --warmup 1 --no-stability
     done
+    # Where evsm's positive warp stops separating the slab's depths: c+ from 1 up to its default 40.
+    run moments_exponent accuracy -t evsm:components=2:exponent_positive=1 \
+        -t evsm:components=2:exponent_positive=2.5 -t evsm:components=2:exponent_positive=5 \
+        -t evsm:components=2:exponent_positive=10 -t evsm:components=2:exponent_positive=20 \
+        -t evsm:components=2:exponent_positive=40 --scene "$hard/moments_bleeding_slab.json" --camera crossing \
+        --size 384x384 --frames 3 --warmup 1 --no-stability
     run moments_cost "${m[@]}" --scene aircraft --instances 50 --size 512x512 --frames 10 --warmup 3 \
         "${timed[@]}"
 }
