@@ -13,7 +13,8 @@
 #   virtual   virtual (cache on and off) against cascaded at 4096^2 x 4 and its default: pages and the
 #             memory estimates, static (aircraft) and in motion (aircraft_day: the sun and the flight;
 #             results/family/scenes/aircraft_flight.json: the flight alone), accuracy and time side by
-#             side                                                        virtual_*.csv/.txt, memory.txt
+#             side; then virtual at lod_bias -2 (the cascades' texels per pixel) against the 4096^2
+#             cascades, static and in flight, and its path accuracy       virtual_*.csv/.txt, memory.txt
 #   contact   contact=true:contact_length=1:contact_steps=16 on and off, at the hard-case table's large
 #             bias (512^2, 2000 / 32) and at each member's default bias, contact_point_sun (low) and
 #             contact_point_lamp (low), and its time side by side          contact_*.csv/.txt
@@ -118,6 +119,13 @@ section_virtual() {
         --frames 10 --warmup 3 --path-frames 60 "${timed[@]}"
     run virtual_accuracy accuracy -t virtual -t cascaded:resolution=4096 -t cascaded --scene aircraft_day \
         --size 512x512 --frames 5 --warmup 2 --path-frames 60 --no-stability
+    # virtual at lod_bias -2, the texels per pixel of 4096^2 cascades (section lod), against them.
+    local vs=(-t virtual:lod_bias=-2 -t virtual:lod_bias=-2:cache=false -t cascaded:resolution=4096)
+    run virtual_sharp_static "${vs[@]}" --scene aircraft --size 512x512 --frames 10 --warmup 3 "${timed[@]}"
+    run virtual_sharp_flight "${vs[@]}" --scene results/family/scenes/aircraft_flight.json --size 512x512 \
+        --frames 10 --warmup 3 --path-frames 60 "${timed[@]}"
+    run virtual_sharp_accuracy accuracy -t virtual:lod_bias=-2 --scene aircraft_day --size 512x512 --frames 5 \
+        --warmup 2 --path-frames 60 --no-stability
 }
 
 section_contact() {
