@@ -142,6 +142,10 @@ section_contact() {
         --size 384x384 --frames 3 --warmup 1 --no-stability
     run contact_cost -t shadowmap -t "shadowmap:${on#:}" -t cascaded -t "cascaded:${on#:}" -t virtual \
         -t "virtual:${on#:}" --scene aircraft --instances 50 --size 512x512 --frames 10 --warmup 3 "${timed[@]}"
+    run contact_cost_pcss -t pcss -t "pcss:${on#:}" --scene aircraft --instances 50 --size 512x512 --frames 10 \
+        --warmup 3 "${timed[@]}"
+    run contact_cost_omni -t cubemap -t "cubemap:${on#:}" -t paraboloid -t "paraboloid:${on#:}" \
+        --scene point_light --size 512x512 --frames 10 --warmup 3 "${timed[@]}"
 }
 
 section_moments() {
