@@ -17,7 +17,8 @@
 #             cascades, static and in flight, and its path accuracy       virtual_*.csv/.txt, memory.txt
 #   contact   contact=true:contact_length=1:contact_steps=16 on and off, at the hard-case table's large
 #             bias (512^2, 2000 / 32) and at each member's default bias, contact_point_sun (low) and
-#             contact_point_lamp (low), and its time side by side          contact_*.csv/.txt
+#             contact_point_lamp (low), and its time side by side (aircraft x50, point_light)
+#                                                                          contact_*.csv/.txt
 #   moments   light leak on the constructed overlaps (moments_bleeding, moments_bleeding_slab, camera
 #             crossing), evsm's positive exponent swept on the slab, and the time against vsm side by
 #             side on aircraft                                             moments_*.csv/.txt
