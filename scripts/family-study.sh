@@ -80,6 +80,7 @@ members=(-t shadowmap -t cubemap -t paraboloid -t cascaded -t cascaded:fit=sdsm 
     -t evsm -t evsm:components=2 -t msm -t msm:format=float -t virtual)
 
 section_accuracy() {
+    local s
     for s in aircraft city; do
         run "accuracy_$s" accuracy "${members[@]}" --scene "$s" --size 512x512 --frames 5 --warmup 2 \
             --no-stability
@@ -89,6 +90,7 @@ section_accuracy() {
 # virtual's level choice sharpened (lod_bias -1, -2: texels 2x, 4x smaller a side than a pixel's
 # footprint), to set against the flat maps' texels per pixel.
 section_lod() {
+    local s
     for s in aircraft city; do
         run "accuracy_lod_$s" accuracy -t virtual:lod_bias=-1 -t virtual:lod_bias=-2 --scene "$s" \
             --size 512x512 --frames 5 --warmup 2 --no-stability
@@ -150,6 +152,7 @@ section_contact() {
 }
 
 section_moments() {
+    local s
     local m=(-t vsm -t esm -t evsm:components=2 -t evsm -t msm -t msm:format=float)
     for s in moments_bleeding moments_bleeding_slab; do
         run "moments_${s#moments_}" accuracy "${m[@]}" --scene "$hard/$s.json" --camera crossing --size 384x384 \
