@@ -25,6 +25,10 @@ struct MatrixVariant {
     /// Why the rule holds for this form, in a sentence: it closes the reason of each of its bounds
     /// (results/goldens/bounds.json, MATRIX.md).
     std::string why;
+    /// Non-empty: the variant has no GL form (it needs what only Vulkan offers), in a sentence. Its GL
+    /// cells are then cells of no form with this reason, and its Vulkan retained cell holds its golden
+    /// and bound, as for a technique with no GL form (bench/golden/GoldenMatrix.h).
+    std::string glRefusal;
 };
 
 } // namespace sb

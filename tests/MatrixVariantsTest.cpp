@@ -73,7 +73,22 @@ TEST(MatrixVariants, RaytracedHasSoftAndGuidedCellsAtTheExactRule) {
     EXPECT_EQ(MatrixVariants::variantOf("raytraced:mode=soft")->rule, AccuracyRule::Exact);
     EXPECT_EQ(MatrixVariants::variantOf("raytraced:mode=guided")->rule, AccuracyRule::Exact);
     // Most techniques have none.
-    EXPECT_EQ(MatrixVariants::of("shadowmap"), std::vector<std::string>{"shadowmap"});
+    EXPECT_EQ(MatrixVariants::of("pcss"), std::vector<std::string>{"pcss"});
+}
+
+// The variants only Vulkan has (MatrixVariant::glRefusal): their GL cells are cells of no form, with the
+// reason; every other variant has a GL form where its technique has one.
+TEST(MatrixVariants, SparsePagesAndMeshShadersAreVulkanOnlyVariants) {
+    EXPECT_EQ(MatrixVariants::of("shadowmap"),
+              (std::vector<std::string>{"shadowmap", "shadowmap:contact=true"}));
+    EXPECT_TRUE(MatrixVariants::variantOf("shadowmap:contact=true")->glRefusal.empty());
+    EXPECT_NE(MatrixVariants::variantOf("virtual:path=sparse")->glRefusal.find("sparse residency"),
+              std::string::npos);
+    EXPECT_EQ(MatrixVariants::variantOf("virtual:path=sparse")->rule, AccuracyRule::Map);
+    EXPECT_NE(MatrixVariants::variantOf("volume:extrusion=mesh")->glRefusal.find("mesh shaders"),
+              std::string::npos);
+    EXPECT_EQ(MatrixVariants::variantOf("volume:extrusion=mesh")->rule, AccuracyRule::Exact);
+    EXPECT_TRUE(MatrixVariants::variantOf("volume:extrusion=compute")->glRefusal.empty());
 }
 
 TEST(MatrixVariants, KeysAreFileNamesAndTableCells) {

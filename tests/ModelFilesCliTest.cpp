@@ -81,10 +81,10 @@ TEST(ModelFilesCli, ListNamesEveryTechnique) {
     // The tests below walk this list: it must hold every technique (the shadow-map family after
     // shadowmap), the reference and the calibration workloads, in the registry's order.
     EXPECT_EQ(listedTechniques(),
-              (std::vector<std::string>{"none",   "shadowmap", "cubemap",   "paraboloid", "cascaded",
-                                        "pcss",   "vsm",       "esm",       "evsm",       "msm",
-                                        "volume", "occluder",  "proxy",     "planar",     "projective",
-                                        "blob",   "hybrid",    "raytraced", "reference",  "synthetic"}));
+              (std::vector<std::string>{
+                  "none",   "shadowmap",  "cubemap", "paraboloid", "cascaded",  "pcss",      "vsm",
+                  "esm",    "evsm",       "msm",     "virtual",    "volume",    "occluder",  "proxy",
+                  "planar", "projective", "blob",    "hybrid",     "raytraced", "reference", "synthetic"}));
     EXPECT_EQ(techniquesWithoutGlForm(), std::vector<std::string>{"raytraced"});
 }
 

@@ -47,14 +47,23 @@ std::string cellName(const std::string& technique, const std::string& scene, Sub
     return technique + "/" + scene + "/" + submitModeName(mode) + (vulkan ? "/vulkan" : "");
 }
 
+/// A variant's reason for having no GL form (MatrixVariant::glRefusal), empty for every other form.
+std::string glRefusalOf(const std::string& technique) {
+    if (technique == AutoResolver::kName) return "";
+    const std::optional<MatrixVariant> v = MatrixVariants::variantOf(technique);
+    return v ? v->glRefusal : "";
+}
+
 /// Whether the technique of `technique` (a cell's: a name or a variant's spec) has a form on `api`.
 bool hasForm(const std::string& technique, Api api) {
+    if (api == Api::GL && !glRefusalOf(technique).empty()) return false;
     return TechniqueRegistry::has(MatrixVariants::nameOf(technique), api);
 }
 
 /// Why `technique` has no form on `api`, in the registry's words (its refusal names the APIs that have
 /// one, or a reason of the technique's own).
 std::string noFormReason(const std::string& technique, Api api) {
+    if (api == Api::GL && !glRefusalOf(technique).empty()) return glRefusalOf(technique);
     try {
         TechniqueRegistry::create(TechniqueSpec::parse(technique), api);
     } catch (const Error& e) {

@@ -91,9 +91,16 @@ TechniqueInfo ShadowMap::declaration() {
                  {kNormalOffset, {"0", "1", "2", "4"}},
                  {kReceiverPlane, {"false", "true"}},
              },
-         .resources = [](const PropertySet& p, const ResourceInputs& in) {
-             return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
-         }});
+         .resources =
+             [](const PropertySet& p, const ResourceInputs& in) {
+                 return squareMaps(p.getInt(P::kResolution), kDepthTexelBytes, 1, in);
+             },
+         // One member with the family's screen-space contact shadows (techniques/ContactShadows.h): the
+         // others share its wiring (ContactShadowsGL/Vulkan) and have rows in the hard-case table.
+         .matrixVariants = {{std::string(ContactShadows::kContact) + "=true", AccuracyRule::Map,
+                             "the map's lookup, darkened where a short march through the view's depth meets "
+                             "a blocker first: at the default bias it closes no leak and adds a few guesses "
+                             "at contacts, so it is held to the map rule"}}});
 }
 
 std::vector<glm::vec2> ShadowMap::kernelOffsets(const PropertySet& p) {

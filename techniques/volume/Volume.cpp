@@ -16,7 +16,10 @@ std::vector<MatrixVariant> matrixVariants() {
         "and visibility are volume's and it is held to volume's exact rule; a scene with an open "
         "caster mesh is refused (unsupported: the path builds closed-mesh volumes only)";
     return {{"extrusion=geometry", AccuracyRule::Exact, std::string("a geometry shader ") + why},
-            {"extrusion=compute", AccuracyRule::Exact, std::string("a compute shader ") + why}};
+            {"extrusion=compute", AccuracyRule::Exact, std::string("a compute shader ") + why},
+            {"extrusion=mesh", AccuracyRule::Exact, std::string("a mesh shader ") + why,
+             "GL has no mesh shaders: extrusion=mesh is a Vulkan form (VK_EXT_mesh_shader), judged on "
+             "the driver that offers it"}};
 }
 
 } // namespace
