@@ -26,14 +26,14 @@ namespace fs = std::filesystem;
 namespace {
 
 // One technique on the smallest built-in scene: each golden run is a few seconds.
-const std::string kCells = " --technique none,shadowmap --scene sphere_plane";
+const std::string kCells = " --technique none,pcss --scene sphere_plane";
 
-/// A scratch golden folder holding the committed goldens of none and shadowmap on sphere_plane and the
+/// A scratch golden folder holding the committed goldens of none and pcss on sphere_plane and the
 /// committed bounds.
 std::string goldenCopy(const std::string& dir) {
     const fs::path from = fs::path(SB_SOURCE_DIR) / "results" / "goldens";
     fs::create_directories(fs::path(dir) / "sphere_plane");
-    for (const char* technique : {"none", "shadowmap"})
+    for (const char* technique : {"none", "pcss"})
         for (const char* kind : {"visibility", "colour"}) {
             const std::string name = std::string("sphere_plane/") + technique + "." + kind + ".png";
             fs::copy_file(from / name, fs::path(dir) / name);
@@ -125,11 +125,11 @@ TEST(GoldenFilesCli, AnUnreadableGoldenFailsItsCellAndUpdateReplacesIt) {
     test::writeFile(cut, test::readFile(cut).substr(0, 100));
     const std::string bench = std::string(SB_BENCH_BINARY) + " golden --dir " + dir;
 
-    // --check: none's cells fail naming each file and why, shadowmap's still pass, exit 1 (a failed check).
+    // --check: none's cells fail naming each file and why, pcss's still pass, exit 1 (a failed check).
     const test::CommandResult check =
         test::runCommand("(" + bench + " --check --verbose" + kCells + " 2>" + dir + "/../stderr.txt)");
     EXPECT_EQ(check.exitCode, 1) << check.output;
-    EXPECT_EQ(linesWith(check.output, "shadowmap/sphere_plane/retained: ok").size(), 1u) << check.output;
+    EXPECT_EQ(linesWith(check.output, "pcss/sphere_plane/retained: ok").size(), 1u) << check.output;
     EXPECT_EQ(linesWith(check.output, "none/sphere_plane/retained: FAILED").size(), 1u) << check.output;
     EXPECT_FALSE(linesWith(check.output, "'" + emptied + "': not a PNG file").empty()) << check.output;
     EXPECT_FALSE(linesWith(check.output, "'" + cut + "': truncated").empty()) << check.output;
