@@ -31,7 +31,13 @@ float contactViewDepth(float w) {
 #else
     const float z = 2.0 * w - 1.0;
 #endif
-    return uProj[2][3] != 0.0 ? uProj[3][2] / (z + uProj[2][2]) : (uProj[3][2] - z) / uProj[2][2];
+    // Both, then a select: no branch on the frame block alone inside the march. lavapipe specializes a
+    // branch whose condition reads only uniform blocks into a shader variant it compiles while the frame
+    // executes, and Mesa 22.3.6 never frees that variant (LeakSanitizer reported one per lighting
+    // pipeline; Mesa 25.0.7 caches and frees its variants). The value not selected may be infinite; unused.
+    const float perspective = uProj[3][2] / (z + uProj[2][2]);
+    const float orthographic = (uProj[3][2] - z) / uProj[2][2];
+    return uProj[2][3] != 0.0 ? perspective : orthographic;
 }
 
 // 0 when the march from worldPos (normal n) towards light i meets a surface of the view's depth, else 1.
